@@ -1,0 +1,73 @@
+// casteljau/canvas.hpp: the drawing-backend face of casteljau.
+//
+// A Canvas draws onto a Pixmap it does not own: a current transform (user space -> pixel space)
+// with save()/restore(), a rectangular device clip, and fills of Paths with a Paint under a fill
+// rule. Every fill walks the pipeline: Path --transform--> flatten --> rasterize (exact area) -->
+// composite (source-over of premultiplied colour x coverage).
+// Thread-safety: a Canvas and its Pixmap belong to one thread at a time.
+#pragma once
+
+#include <vector>
+
+#include "casteljau/geometry.hpp"
+#include "casteljau/paint.hpp"
+#include "casteljau/path.hpp"
+#include "casteljau/raster.hpp"
+
+namespace casteljau {
+
+struct Paint {
+    Color color = Color::black();
+    double opacity = 1.0;        // multiplies the colour's alpha
+    bool linear_blend = false;   // blend coverage in linear light (gamma-correct) instead of sRGB
+
+    static Paint solid(Color c) { Paint p; p.color = c; return p; }
+};
+
+// Source-over of `paint` x coverage onto one row of premultiplied pixels (exposed for tests and
+// for callers that rasterize themselves). `dst` points at pixel x of the row.
+void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, const Paint& paint);
+
+class Canvas {
+public:
+    explicit Canvas(Pixmap& target);
+
+    Pixmap& target() { return *target_; }
+    int width() const { return target_->width(); }
+    int height() const { return target_->height(); }
+
+    // State stack: transform and clip.
+    void save();
+    void restore();  // no-op when nothing was saved
+    const Affine& transform() const { return state_.transform; }
+    void set_transform(const Affine& m) { state_.transform = m; }
+    void concat(const Affine& m) { state_.transform = state_.transform * m; }  // m applies first
+    void translate(double tx, double ty) { concat(Affine::translate(tx, ty)); }
+    void scale(double sx, double sy) { concat(Affine::scale(sx, sy)); }
+    void rotate(double radians) { concat(Affine::rotate(radians)); }
+    // Intersects the clip with the pixel bounds of `r` mapped by the current transform.
+    void clip_rect(const Rect& r);
+    const IRect& clip() const { return state_.clip; }
+
+    FillOptions& fill_options() { return fill_options_; }  // tolerance, exactness
+
+    void clear(Color c);
+    void fill_path(const Path& path, const Paint& paint, FillRule rule = FillRule::NonZero);
+    // Composites an A8 mask (pixel space, the current transform is not applied) with `paint`.
+    void fill_mask(const Mask& mask, const Paint& paint);
+
+    Rasterizer& rasterizer() { return raster_; }
+
+private:
+    struct State {
+        Affine transform;
+        IRect clip;
+    };
+    Pixmap* target_;
+    State state_;
+    std::vector<State> stack_;
+    FillOptions fill_options_;
+    Rasterizer raster_;
+};
+
+}  // namespace casteljau

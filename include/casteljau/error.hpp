@@ -1,0 +1,42 @@
+// casteljau/error.hpp: the one exception type the library throws at its API boundaries.
+//
+// Every failure that reaches a caller (parsing, I/O, limits, invalid arguments) is a casteljau::Error
+// with a kind and a one-line message. Hot loops never throw; they are guarded by checks made before
+// they start. Thread-safety: plain value type.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace casteljau {
+
+enum class ErrorKind {
+    InvalidArgument,  // a caller passed a value outside the documented domain (bad usage)
+    Parse,            // text input (path data, colour, SVG, JSON, numbers) is malformed
+    InvalidData,      // input parsed but its content is unusable (NaN, negative size, ...)
+    Limit,            // input exceeds a documented limit (canvas size, path size, nesting depth)
+    Io,               // a file could not be read or written
+    Font,             // FreeType or HarfBuzz refused a font
+};
+
+class Error : public std::runtime_error {
+public:
+    Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+    ErrorKind kind() const noexcept { return kind_; }
+
+private:
+    ErrorKind kind_;
+};
+
+// Documented limits, shared by the library and the CLI (README.md "Limits" lists them).
+namespace limits {
+inline constexpr int kMaxCanvasDimension = 32768;            // pixels per side
+inline constexpr long long kMaxCanvasPixels = 268435456LL;   // 2^28 pixels = 1 GiB of RGBA8
+inline constexpr std::size_t kMaxPathPoints = 1u << 24;      // points in one Path
+inline constexpr std::size_t kMaxFlattenedSegments = 1u << 26;  // line segments after flattening
+inline constexpr int kMaxFlattenDepth = 16;                  // subdivision depth per curve
+inline constexpr int kMaxNestingDepth = 64;                  // SVG element / group nesting
+inline constexpr double kMaxCoordinate = 1e15;               // |coordinate| after transform
+}  // namespace limits
+
+}  // namespace casteljau

@@ -1,0 +1,44 @@
+// casteljau/flatten.hpp: curves to polylines by recursive de Casteljau subdivision.
+//
+// Every curve is split at t = 1/2 until a bound that provably keeps curve and chord within
+// `tolerance` pixels holds (see src/path/flatten.cpp for the bound and its derivation), using an
+// explicit stack with a depth limit (limits::kMaxFlattenDepth), so cusps, loops, coincident control
+// points and huge values cannot recurse without end. Flattening happens after the transform, so the
+// tolerance is in pixels. Non-finite input is rejected with Error(InvalidData).
+// Thread-safety: free functions; no shared state.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "casteljau/geometry.hpp"
+#include "casteljau/path.hpp"
+
+namespace casteljau {
+
+// Default flattening tolerance in pixels; chosen by measurement (BENCHMARKS.md, "Tolerance").
+inline constexpr double kDefaultTolerance = 0.05;
+
+// A flattened path: the points of all contours, with contour i spanning
+// points[contour_ends[i-1] .. contour_ends[i]). Contours are open polylines; a fill closes them.
+struct Polyline {
+    std::vector<Point> points;
+    std::vector<std::uint32_t> contour_ends;
+    // Per contour: whether the source contour was explicitly closed (matters to strokes only).
+    std::vector<bool> closed;
+
+    void clear() { points.clear(); contour_ends.clear(); closed.clear(); }
+    std::size_t contour_count() const { return contour_ends.size(); }
+};
+
+// Flattens `path` mapped by `m` into `out` (cleared first). Throws Error(InvalidData) for a
+// non-finite point or transform, Error(Limit) beyond limits::kMaxFlattenedSegments.
+void flatten(const Path& path, const Affine& m, double tolerance, Polyline& out);
+
+// The a-priori flatness bound used for each curve kind: the maximum distance between the curve and
+// its chord is at most this value (exposed for tests).
+double flatness_bound_quad(Point p0, Point p1, Point p2);
+double flatness_bound_cubic(Point p0, Point p1, Point p2, Point p3);
+double flatness_bound_conic(Point p0, Point p1, Point p2, double w);
+
+}  // namespace casteljau
