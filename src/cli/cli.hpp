@@ -1,0 +1,34 @@
+// The command-line front end: shared declarations for the subcommand files.
+//
+// Each subcommand lives in its own file src/cli/cmd_NAME.cpp and exposes one registration
+// function, declared here and called from main.cpp, that adds a CLI11 subcommand and its callback.
+// Callbacks report bad data by throwing casteljau::Error (exit 1) and bad usage by throwing
+// cli::UsageError (exit 2); main.cpp prints the one-line "casteljau: error: ..." message.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "casteljau/geometry.hpp"
+#include "casteljau/paint.hpp"
+
+namespace casteljau::cli {
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Parsing helpers shared by commands; each throws UsageError with the option's name.
+Color parse_color_option(const std::string& option, const std::string& text);
+// "WxH" -> width, height (positive integers within the canvas limits).
+void parse_size_option(const std::string& option, const std::string& text, int& width, int& height);
+// "a b c d e f" (spaces or commas) -> Affine.
+Affine parse_affine_option(const std::string& option, const std::string& text);
+// Reads a whole input file ("-" reads standard input) as text; throws Error(Io).
+std::string read_text_input(const std::string& path);
+
+void register_path(CLI::App& app);
+void register_svg(CLI::App& app);
+
+}  // namespace casteljau::cli
