@@ -149,7 +149,8 @@ void dash_polyline(const Polyline& in, std::span<const double> pattern, double o
     start = 0;
     for (std::size_t c = 0; c < in.contour_count(); ++c) {
         const std::size_t end = in.contour_ends[c];
-        if (end > start)
+        // A lone move (one point, not closed) has nothing to dash.
+        if (end - start > 1 || (end > start && in.closed[c]))
             d.contour(std::span<const Point>(in.points.data() + start, end - start), in.closed[c], pos);
         start = end;
     }

@@ -204,6 +204,8 @@ private:
         total_ += pts.size() + 1;
         if (total_ > limits::kMaxPathPoints)
             throw Error(ErrorKind::Limit, "stroke: outline exceeds the path size limit");
+        for (const Point& p : pts)
+            if (!p.is_finite()) throw Error(ErrorKind::Limit, "stroke: outline coordinates overflow");
         out_.move_to(pts[0]);
         for (std::size_t i = 1; i < pts.size(); ++i)
             if (!(pts[i] == pts[i - 1])) out_.line_to(pts[i]);
@@ -266,7 +268,7 @@ Path stroke(const Path& path, const StrokeStyle& style, const Affine& m, double 
     if (!(style.width > 0) || path.empty()) return out;
 
     Polyline flat;
-    flatten_user(path, tol, flat);
+    flatten(path, Affine{}, tol, flat);
     if (pattern.empty()) {
         stroke_polyline(flat, {}, style, tol, out);
     } else {
@@ -287,7 +289,7 @@ Path dash(const Path& path, std::span<const double> dashes, double offset, const
 
     Polyline flat, dashed;
     std::vector<Point> dirs;
-    flatten_user(path, tol, flat);
+    flatten(path, Affine{}, tol, flat);
     const Polyline* src = &flat;
     if (!pattern.empty()) {
         dash_polyline(flat, pattern, offset, dashed, dirs);
@@ -297,7 +299,7 @@ Path dash(const Path& path, std::span<const double> dashes, double offset, const
     std::size_t start = 0;
     for (std::size_t c = 0; c < src->contour_count(); ++c) {
         const std::size_t end = src->contour_ends[c];
-        if (end > start) {
+        if (end - start > 1 || (end > start && src->closed[c])) {  // lone moves are dropped
             out.move_to(src->points[start]);
             for (std::size_t i = start + 1; i < end; ++i) out.line_to(src->points[i]);
             if (src->closed[c]) out.close();

@@ -1,6 +1,7 @@
 // Stroke stage, internal interface shared by src/stroke/*.cpp (not installed).
 //
-// stroke() = validate -> flatten in user space -> [dash the polylines] -> outline each polyline.
+// stroke() = validate -> flatten in user space (casteljau::flatten with the identity transform and
+// the user-space tolerance) -> [dash the polylines] -> outline each polyline.
 // Polylines use casteljau::Polyline (flatten.hpp); a contour of the dashed output may carry a
 // direction hint, used for the caps of zero-length dashes.
 #pragma once
@@ -19,10 +20,6 @@ double user_tolerance(const Affine& m, double tolerance_px);
 
 // Throws Error(InvalidData) when the path has a non-finite point or weight.
 void check_finite(const Path& path);
-
-// Flattens `path` in user space (identity transform) with tolerance `tol` into `out`.
-// Keeps contours of a single point when they were closed (move + close), and drops lone moves.
-void flatten_user(const Path& path, double tol, Polyline& out);
 
 // The effective dash pattern: `dashes` doubled when its count is odd; empty when there is no dashing
 // (empty, a negative value, or all zero). Throws Error(InvalidData) for a non-finite value.
