@@ -426,6 +426,38 @@ TEST_CASE("stroke: width <= 0 gives nothing, bad input throws", "[stroke]") {
     CHECK(kind_of([&] { (void)dash(line({0, 0}, {1e6, 0}), tiny, 0); }) == int(ErrorKind::Limit));
 }
 
+TEST_CASE("stroke: hostile but finite inputs finish with finite output or a clear error", "[stroke]") {
+    auto all_finite = [](const Path& p) {
+        for (Point q : p.points())
+            if (!q.is_finite()) return false;
+        return true;
+    };
+    Path c;
+    c.add_circle({0, 0}, 50);
+    c.move_to(0, 0).cubic_to({100, 100}, {-100, 100}, {0, 0});  // a loop with a cusp-like end
+    c.move_to(5, 5).close();
+    for (LineCap cap : {LineCap::Butt, LineCap::Round, LineCap::Square}) {
+        for (LineJoin join : {LineJoin::Miter, LineJoin::MiterClip, LineJoin::Round, LineJoin::Bevel}) {
+            StrokeStyle st = style(3, cap, join, 0.5);  // limit below 1: treated as 1
+            CHECK(all_finite(stroke(c, st, Affine::scale(1e-300))));
+            CHECK(all_finite(stroke(c, st, Affine{0, 0, 0, 0, 0, 0})));  // singular transform
+            st.dashes = {7, 3, 0};
+            st.dash_offset = -1e300;
+            CHECK(all_finite(stroke(c, st)));
+            CHECK(all_finite(stroke(c.transformed(Affine::scale(1e14)), style(1e14, cap, join), Affine::scale(1e-14))));
+        }
+    }
+    // A tolerance far below double precision: the flattening depth limit and the arc step limit
+    // (65536 steps per turn) bound the work.
+    CHECK(all_finite(stroke(c, style(3, LineCap::Round, LineJoin::Round), {}, 1e-300)));
+    try {
+        const Path huge = stroke(line({0, 0}, {1, 1}), style(1e308, LineCap::Round, LineJoin::Miter));
+        CHECK(all_finite(huge));
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::Limit);
+    }
+}
+
 TEST_CASE("stroke: curves are flattened in user space with tolerance_px / max_scale", "[stroke]") {
     Path c;
     c.add_circle({0, 0}, 50);

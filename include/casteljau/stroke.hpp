@@ -31,8 +31,9 @@
 //   at every contour. On a closed contour the last and first dashes become one dash when the pattern
 //   is "on" where the contour wraps around, and a contour that is "on" throughout stays closed.
 //   Zero-length dashes are kept, so (0, d) with Round caps draws dots; Square caps of such dashes
-//   follow the path direction. Distances are measured on the flattened path, whose length is at most
-//   tolerance-related amounts shorter than the curve's.
+//   follow the path direction. Dash lengths are measured along the flattened path, whose chords are
+//   slightly shorter than the curve (on a circle of radius r flattened with user tolerance t, by a
+//   relative amount of at most t / 3r).
 // Errors: a non-finite point, transform or style value (width, miter_limit, dash values, offset)
 // throws Error(InvalidData); a tolerance that is not a positive finite number throws
 // Error(InvalidArgument); more than limits::kMaxDashes dashes or limits::kMaxPathPoints output
