@@ -163,3 +163,29 @@ TEST_CASE("svg: bad files exit 1 with one line and write nothing", "[cli][svg]")
     CHECK(run_cli("svg " + shell_quote((in / "huge.svg").string())).status == 2);  // missing -o
     CHECK(dir_is_empty(outdir));
 }
+
+TEST_CASE("path: --stroke draws the stroke outline over the fill", "[cli][stroke]") {
+    const fs::path d = scratch_dir("path-stroke");
+    const std::string out = (d / "s.png").string();
+    // A horizontal line from x = 2 to 8 at y = 5, width 2: rows 4 and 5, columns 2..7 covered.
+    REQUIRE(run_cli("path 'M2 5 H8' --size 10x10 --fill none --stroke blue --stroke-width 2 -o " + shell_quote(out)).status == 0);
+    const Pixmap pm = read_png(out);
+    CHECK(pm.pixel(4, 4) == PremulPixel{0, 0, 255, 255});
+    CHECK(pm.pixel(4, 5) == PremulPixel{0, 0, 255, 255});
+    CHECK(pm.pixel(4, 3).a == 0);
+    CHECK(pm.pixel(1, 4).a == 0);
+    CHECK(run_cli("path 'M2 5 H8' --size 10x10 --stroke blue --dash '1 x' -o " + shell_quote(out)).status == 2);
+}
+
+TEST_CASE("svg: strokes with width, caps and opacity", "[cli][svg][stroke]") {
+    const fs::path d = scratch_dir("svg-stroke");
+    write_text(d / "a.svg",
+               "<svg xmlns='http://www.w3.org/2000/svg' width='20' height='20'>"
+               "<line x1='4' y1='10' x2='16' y2='10' stroke='#00ff00' stroke-width='4' stroke-linecap='square'/></svg>");
+    REQUIRE(run_cli("svg " + shell_quote((d / "a.svg").string()) + " -o " + shell_quote((d / "a.png").string())).status == 0);
+    const Pixmap pm = read_png((d / "a.png").string());
+    CHECK(pm.pixel(2, 9) == PremulPixel{0, 255, 0, 255});   // square cap extends 2 px
+    CHECK(pm.pixel(17, 11) == PremulPixel{0, 255, 0, 255});
+    CHECK(pm.pixel(10, 7).a == 0);
+    CHECK(pm.pixel(10, 13).a == 0);
+}
