@@ -318,6 +318,12 @@ TEST_CASE("B-spline: to Path is exact for cubics", "[spline]") {
     CHECK(p.verbs().size() == 3);  // move + 2 cubics
     CHECK(p.verbs()[1] == Verb::Cubic);
     CHECK(p.points().back() == Point{60, 10});
+    // Random splines stay one contour (piece ends are shared exactly).
+    std::mt19937 rng(114);
+    for (int rep = 0; rep < 50; ++rep) {
+        const auto r = BSpline<Point>(3, random_points<Point>(rng, 12), random_knots(rng, 3, 12, rep % 2 == 0));
+        CHECK(to_path(r).contour_count() == 1);
+    }
 }
 
 // ---- interpolating splines ----------------------------------------------------------------------

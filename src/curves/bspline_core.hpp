@@ -94,6 +94,10 @@ std::vector<std::vector<T>> spans_to_bezier(int p, std::size_t n, std::span<cons
             for (int r = 0; r < p; ++r) x[static_cast<std::size_t>(r)] = r < p - i ? U[k] : U[k + 1];
             piece[static_cast<std::size_t>(i)] = de_boor_blossom<T>(p, U, k, x.data(), get);
         }
+        // Where the knot's multiplicity is at most p the curve is continuous, so the piece starts
+        // exactly where the previous one ended (the two blossoms differ only by rounding); this
+        // keeps Paths built from the pieces in one contour.
+        if (!out.empty() && std::count(U.begin(), U.end(), U[k]) <= p) piece.front() = out.back().back();
         out.push_back(std::move(piece));
     }
     return out;

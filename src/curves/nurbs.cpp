@@ -43,7 +43,12 @@ template <CurvePoint P>
 RationalBezier<P>::RationalBezier(const Bezier<P>& curve)
     : points_(curve.points().begin(), curve.points().end()), weights_(curve.points().size(), 1.0) {}
 
-template <CurvePoint P> P RationalBezier<P>::eval(double t) const { return derivative(0, t); }
+template <CurvePoint P> P RationalBezier<P>::eval(double t) const {
+    // The ends exactly (the homogeneous route would give w P / w, off by rounding).
+    if (t == 0) return points_.front();
+    if (t == 1) return points_.back();
+    return derivative(0, t);
+}
 
 template <CurvePoint P> P RationalBezier<P>::derivative(int k, double t) const {
     if (k < 0) throw Error(ErrorKind::InvalidArgument, "derivative order must be >= 0, got " + std::to_string(k));
