@@ -538,3 +538,9 @@ TEST_CASE("Bezier: bad input gives clear errors", "[bezier]") {
     CHECK(kind_of([&] { c.blossom(std::vector<double>{0.5}); }) == ErrorKind::InvalidArgument);
     CHECK(kind_of([] { bernstein_to_power_matrix(65); }) == ErrorKind::InvalidArgument);
 }
+
+TEST_CASE("Bezier: bounds of huge coordinates report the overflow clearly (regression)", "[bezier]") {
+    const Bezier<Point> huge{{0, 0}, {1e308, 1e308}, {-1e308, 0}, {5, 5}};
+    CHECK(huge.eval(0.5).is_finite());
+    CHECK_THROWS_WITH(huge.bounds(), "Bezier curve: coordinates too large (the derivative overflows)");
+}

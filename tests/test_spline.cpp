@@ -517,4 +517,9 @@ TEST_CASE("Splines: bad input gives clear errors", "[spline]") {
     CHECK(kind_of([&] { natural_spline<Point>(std::vector<Point>{{0, 0}, {0, 0}, {1, 1}}, Parametrization::ChordLength); }) ==
           ErrorKind::InvalidData);
     CHECK(kind_of([&] { hermite_eval(Point{}, Point{}, Point{}, Point{}, 2.0); }) == ErrorKind::InvalidArgument);
+    // Regression: an overflowing construction names the spline, not an internal Bézier point.
+    CHECK_THROWS_WITH(natural_spline<Point>(std::vector<Point>{{0, 0}, {1e308, 0}, {-1e308, 0}}),
+                      "natural spline: coordinates too large (the construction overflows)");
+    CHECK(kind_of([&] { catmull_rom_spline<Point>(std::vector<Point>{{-1e308, 0}, {1e308, 0}, {-1e308, 0}}); }) ==
+          ErrorKind::InvalidData);
 }

@@ -244,6 +244,9 @@ template <CurvePoint P> std::vector<double> Bezier<P>::extrema(int axis) const {
     std::array<double, kBuf> c{};
     for (int i = 0; i < n; ++i)
         c[static_cast<std::size_t>(i)] = coord(points_[static_cast<std::size_t>(i) + 1], axis) - coord(points_[static_cast<std::size_t>(i)], axis);
+    for (int i = 0; i < n; ++i)
+        if (!std::isfinite(c[static_cast<std::size_t>(i)]))
+            throw Error(ErrorKind::InvalidData, "Bezier curve: coordinates too large (the derivative overflows)");
     std::vector<double> roots = bernstein_roots(std::span<const double>(c.data(), static_cast<std::size_t>(n)));
     std::erase_if(roots, [](double t) { return !(t > 0 && t < 1); });
     return roots;

@@ -24,6 +24,13 @@ template <CurvePoint P> void validate_through_points(std::span<const P> pts, std
             throw Error(ErrorKind::InvalidData, std::string(what) + " point " + std::to_string(i) + " is not finite");
 }
 
+// A cubic piece, with a clear error when the construction overflowed (huge coordinates).
+template <CurvePoint P> Bezier<P> piece(const P& a, const P& b, const P& c, const P& d, const char* what) {
+    if (!a.is_finite() || !b.is_finite() || !c.is_finite() || !d.is_finite())
+        throw Error(ErrorKind::InvalidData, std::string(what) + ": coordinates too large (the construction overflows)");
+    return Bezier<P>({a, b, c, d});
+}
+
 void check_finite_param(double v, const char* name) {
     if (!std::isfinite(v)) throw Error(ErrorKind::InvalidArgument, std::string(name) + " must be finite, got " + num(v));
 }
@@ -49,7 +56,8 @@ std::vector<Bezier<P>> tangent_spline(std::span<const P> pts, EndCondition ends,
     out.reserve(static_cast<std::size_t>(last - first));
     for (long i = first; i < last; ++i) {
         const P p0 = neighbour(pts, i, ends), p1 = neighbour(pts, i + 1, ends);
-        out.push_back(hermite_to_bezier(p0, out_tangent(i), p1, in_tangent(i + 1)));
+        const P m0 = out_tangent(i), m1 = in_tangent(i + 1);
+        out.push_back(piece(p0, p0 + m0 / 3.0, p1 - m1 / 3.0, p1, what));
     }
     return out;
 }
@@ -81,7 +89,8 @@ std::vector<Bezier<P>> hermite_spline(std::span<const P> points, std::span<const
     validate_through_points(tangents, 2, "Hermite spline tangents");
     std::vector<Bezier<P>> out;
     for (std::size_t i = 0; i + 1 < points.size(); ++i)
-        out.push_back(hermite_to_bezier(points[i], tangents[i], points[i + 1], tangents[i + 1]));
+        out.push_back(piece(points[i], points[i] + tangents[i] / 3.0, points[i + 1] - tangents[i + 1] / 3.0, points[i + 1],
+                            "Hermite spline"));
     return out;
 }
 
@@ -162,7 +171,7 @@ template <CurvePoint P> std::vector<Bezier<P>> natural_spline(std::span<const P>
         const P D = (points[i + 1] - points[i]) / h[i];
         const P d0 = D - (M[i] * 2.0 + M[i + 1]) * (h[i] / 6);
         const P d1 = D + (M[i] + M[i + 1] * 2.0) * (h[i] / 6);
-        out.push_back(Bezier<P>({points[i], points[i] + d0 * (h[i] / 3), points[i + 1] - d1 * (h[i] / 3), points[i + 1]}));
+        out.push_back(piece(points[i], points[i] + d0 * (h[i] / 3), points[i + 1] - d1 * (h[i] / 3), points[i + 1], "natural spline"));
     }
     return out;
 }
