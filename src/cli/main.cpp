@@ -15,6 +15,8 @@ int main(int argc, char** argv) {
     // Subcommands: one registration function per src/cli/cmd_*.cpp file.
     cli::register_path(app);
     cli::register_svg(app);
+    cli::register_bezier(app);
+    cli::register_spline(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
