@@ -148,7 +148,10 @@ inline void tag_cell(Strip& s, std::uint64_t* tags, std::size_t base, int k, int
             ok = f_then_l ? harmless_bend_and_piece(f, l, e, k, row) : harmless_bend_and_piece(l, f, e, k, row);
         }
         if (ok) {
-            tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(3) << kTagCountShift);
+            // The tag holds two ids; keep the pair whose dropped member is a neighbour along the
+            // contour of a kept one, so that marking can recover it (see below).
+            const std::uint64_t keep = (chained && !(t & kTagChain)) ? first : last;
+            tags[k] = me | (keep << kTagPrevShift) | (std::uint64_t(3) << kTagCountShift);
             return;
         }
     }
@@ -157,6 +160,14 @@ inline void tag_cell(Strip& s, std::uint64_t* tags, std::size_t base, int k, int
     log_edge(s, base + k, last);
     log_edge(s, base + k, (t >> kTagPrevShift) & kTagIdMask);
     log_edge(s, base + k, me);
+    if (count == 3) {
+        // A third piece was dropped from the tag: it is a contour neighbour of a kept one.
+        for (const std::uint64_t kept : {last, (t >> kTagPrevShift) & kTagIdMask}) {
+            const Edge& n = s.edges[kept - 1];
+            if (n.prev >= 0) log_edge(s, base + k, static_cast<std::uint64_t>(n.prev) + 1);
+            if (n.next >= 0) log_edge(s, base + k, static_cast<std::uint64_t>(n.next) + 1);
+        }
+    }
 }
 
 }  // namespace
