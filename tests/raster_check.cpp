@@ -71,7 +71,7 @@ Comparison compare(const Rendered& actual, const ref::CoverageGrid& reference) {
     const IRect& a = actual.window;
     const IRect& b = reference.bounds;
     const IRect u{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
-    double sum = 0;
+    double sum = 0, sum_all = 0;
     bool first = true;
     for (int y = u.y0; y < u.y1; ++y) {
         for (int x = u.x0; x < u.x1; ++x) {
@@ -79,6 +79,7 @@ Comparison compare(const Rendered& actual, const ref::CoverageGrid& reference) {
             const int av = actual.at(x, y);
             const double err = std::abs(av - 255.0 * rv);
             ++c.pixels;
+            sum_all += err;
             const bool edge = (rv > 1e-12 && rv < 1 - 1e-12) || (av != 0 && av != 255) || err > 0.5;
             if (edge) {
                 ++c.edge_pixels;
@@ -96,16 +97,17 @@ Comparison compare(const Rendered& actual, const ref::CoverageGrid& reference) {
         }
     }
     c.mean_err = c.edge_pixels ? sum / static_cast<double>(c.edge_pixels) : 0.0;
+    c.mean_all = c.pixels ? sum_all / static_cast<double>(c.pixels) : 0.0;
     return c;
 }
 
 std::string Comparison::text() const {
-    char buf[320];
+    char buf[400];
     std::snprintf(buf, sizeof buf,
-                  "max %.4f/255, mean %.4f/255 over %zu edge pixels (%zu compared, %zu not correctly rounded); "
-                  "worst pixel (%d, %d): actual %d, reference %.6f (= %.3f/255)",
-                  max_err, mean_err, edge_pixels, pixels, misrounded, worst_x, worst_y, worst_actual, worst_ref,
-                  worst_ref * 255.0);
+                  "max %.4f/255, mean %.4f/255 over all %zu pixels, mean %.4f/255 over %zu edge pixels "
+                  "(%zu not correctly rounded); worst pixel (%d, %d): actual %d, reference %.6f (= %.3f/255)",
+                  max_err, mean_all, pixels, mean_err, edge_pixels, misrounded, worst_x, worst_y, worst_actual,
+                  worst_ref, worst_ref * 255.0);
     return buf;
 }
 

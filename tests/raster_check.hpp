@@ -35,6 +35,7 @@ Rendered render(Rasterizer& r, const Path& path, const Affine& m, const FillOpti
 struct Comparison {
     double max_err = 0;              // in 1/255 units, over every pixel of the union of both rects
     double mean_err = 0;             // mean over edge pixels (see below)
+    double mean_all = 0;             // mean over every compared pixel
     std::size_t pixels = 0;          // pixels compared
     std::size_t edge_pixels = 0;     // reference strictly inside (0, 1), or actual not 0/255, or err > 0.5
     std::size_t misrounded = 0;      // pixels with err > 0.5 + 1e-3 (not the correctly rounded value)
