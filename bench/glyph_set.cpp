@@ -135,6 +135,7 @@ void DiffStats::add(const Coverage& a, const Coverage& b) {
             sum += d;
             max = std::max(max, d);
             if (d > 1) ++over1;
+            if (d != 0) ++changed;
         }
     }
     pixels += static_cast<std::size_t>(x1 - x0) * static_cast<std::size_t>(y1 - y0);
@@ -145,6 +146,7 @@ void DiffStats::merge(const DiffStats& o) {
     pixels += o.pixels;
     max = std::max(max, o.max);
     over1 += o.over1;
+    changed += o.changed;
 }
 
 }  // namespace bench

