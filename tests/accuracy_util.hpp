@@ -1,0 +1,85 @@
+// tests/accuracy_util.hpp: shared steps of the accuracy, fill-rule and golden tests: render with
+// the rasterizer under test, compute the independent reference, compare, and keep running totals
+// for a final report. Test-only; uses Catch2 assertions.
+#pragma once
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "raster_check.hpp"
+#include "reference_area.hpp"
+
+namespace casteljau::testing {
+
+// Polygons are exact: the acceptance bound is 1/255 per pixel; correct rounding of the exact area
+// gives 0.5/255, which the rasterizer is also held to up to float noise (kRoundedErr).
+inline constexpr double kPolygonMaxErr = 1.0;
+inline constexpr double kRoundedErr = 0.51;
+// Curves at the default tolerance against the finely flattened reference (issue 2 acceptance):
+// max over every pixel, and mean over every pixel of the shape's pixel bounds (the compared
+// rectangle is always the shape's bounds plus at most a few pixels, never an arbitrary canvas).
+inline constexpr double kCurveMaxErr = 8.0;
+inline constexpr double kCurveMeanErr = 0.5;
+
+// Worst case seen over a series of comparisons, for a WARN line at the end of a test.
+struct Worst {
+    Comparison c;
+    std::string label;
+    std::size_t count = 0, misrounded = 0;
+    double mean_max = 0, edge_mean_max = 0;  // the largest per-case means (all pixels, edge pixels)
+    void add(const Comparison& x, const std::string& what) {
+        ++count;
+        misrounded += x.misrounded;
+        mean_max = std::max(mean_max, x.mean_all);
+        edge_mean_max = std::max(edge_mean_max, x.mean_err);
+        if (count == 1 || x.max_err > c.max_err) {
+            c = x;
+            label = what;
+        }
+    }
+    std::string text() const {
+        return std::to_string(count) + " cases; largest per-case mean " + std::to_string(mean_max) +
+               "/255 (over edge pixels only: " + std::to_string(edge_mean_max) + "/255); pixels not correctly rounded: " + std::to_string(misrounded) + "; worst case: " + label + ": " +
+               c.text();
+    }
+};
+
+// Renders the contours (given in user space, mapped by m) with `opts` inside `clip`, compares with
+// the slab reference of the transformed contours, checks the sink contract, the polygon bound
+// (REQUIRE) and correct rounding (CHECK).
+inline Comparison check_polygons(Rasterizer& r, const ref::Contours& user, const Affine& m, const FillOptions& opts,
+                                 const IRect& clip, const std::string& what) {
+    const Rendered out = render(r, ref::to_path(user), m, opts, clip);
+    const ref::CoverageGrid truth = ref::slab_area(ref::transformed(user, m), opts.rule, clip);
+    const Comparison c = compare(out, truth);
+    INFO(what << (opts.rule == FillRule::NonZero ? " [nonzero]" : " [even-odd]") << ": " << c.text());
+    REQUIRE(out.contract_violation.empty());
+    REQUIRE(out.nonzero_outside_window == 0);
+    REQUIRE(c.max_err <= kPolygonMaxErr);
+    CHECK(c.max_err <= kRoundedErr);
+    return c;
+}
+
+inline Comparison check_polygons(Rasterizer& r, const ref::Contours& pixel_space, FillRule rule, const IRect& clip,
+                                 const std::string& what) {
+    FillOptions o;
+    o.rule = rule;
+    return check_polygons(r, pixel_space, Affine::identity(), o, clip, what);
+}
+
+// Curved path at `opts.tolerance` against the finely flattened reference: max and mean bounds.
+inline Comparison check_curves(Rasterizer& r, const Path& path, const Affine& m, const FillOptions& opts,
+                               const IRect& clip, const std::string& what) {
+    const Rendered out = render(r, path, m, opts, clip);
+    const ref::CoverageGrid truth = ref::path_reference(path, m, opts.rule, clip);
+    const Comparison c = compare(out, truth);
+    INFO(what << (opts.rule == FillRule::NonZero ? " [nonzero]" : " [even-odd]") << ": " << c.text());
+    REQUIRE(out.contract_violation.empty());
+    REQUIRE(out.nonzero_outside_window == 0);
+    CHECK(c.max_err <= kCurveMaxErr);
+    CHECK(c.mean_all <= kCurveMeanErr);
+    return c;
+}
+
+}  // namespace casteljau::testing
