@@ -45,7 +45,7 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
         if (!f) throw Error(ErrorKind::InvalidArgument, "draw_text: the layout has a null font");
     const Affine M = canvas.transform() * Affine::translate(origin.x, origin.y);
     if (!M.is_finite()) throw Error(ErrorKind::InvalidData, "draw_text: the canvas transform is not finite");
-    GlyphCache local(8u << 20);
+    GlyphCache local(8u << 20, options.tolerance);
     GlyphCache& gc = cache ? *cache : local;
 
     const double device_size = layout.size * M.a;
@@ -66,6 +66,15 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
         }
         return;
     }
+    if (!(options.tolerance >= 1e-4 && options.tolerance <= 10))
+        throw Error(ErrorKind::InvalidArgument, "draw_text: tolerance must be in [1e-4, 10] px");
+    const double saved_tolerance = canvas.fill_options().tolerance;
+    canvas.fill_options().tolerance = options.tolerance;
+    struct Restore {
+        Canvas& c;
+        double t;
+        ~Restore() { c.fill_options().tolerance = t; }
+    } restore_tolerance{canvas, saved_tolerance};
     for (const PositionedGlyph& g : layout.glyphs) {
         const Font& font = *layout.fonts[g.font];
         const Path& outline = gc.outline(font, g.glyph);

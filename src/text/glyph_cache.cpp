@@ -60,6 +60,7 @@ constexpr std::size_t kEntryOverhead = 96;
 
 struct GlyphCache::Impl {
     std::size_t max_bytes;
+    FillOptions fill;
     std::unordered_map<MaskKey, Mask, MaskKeyHash> masks;
     std::unordered_map<OutlineKey, Path, OutlineKeyHash> outlines;
     std::unordered_map<const void*, std::weak_ptr<const int>> fonts;  // lifetime tokens seen
@@ -92,13 +93,19 @@ struct GlyphCache::Impl {
     }
 };
 
-GlyphCache::GlyphCache(std::size_t max_bytes) : impl_(std::make_unique<Impl>()) { impl_->max_bytes = max_bytes; }
+GlyphCache::GlyphCache(std::size_t max_bytes, double tolerance) : impl_(std::make_unique<Impl>()) {
+    if (!(tolerance >= 1e-4 && tolerance <= 10))
+        throw Error(ErrorKind::InvalidArgument, "glyph cache: tolerance must be in [1e-4, 10] px");
+    impl_->max_bytes = max_bytes;
+    impl_->fill.tolerance = tolerance;
+}
 GlyphCache::~GlyphCache() = default;
 GlyphCache::GlyphCache(GlyphCache&&) noexcept = default;
 GlyphCache& GlyphCache::operator=(GlyphCache&&) noexcept = default;
 
 void GlyphCache::clear() { impl_->clear(); }
 std::size_t GlyphCache::max_bytes() const { return impl_->max_bytes; }
+double GlyphCache::tolerance() const { return impl_->fill.tolerance; }
 const GlyphCacheStats& GlyphCache::stats() const { return impl_->stats; }
 
 const Mask& GlyphCache::mask(const Font& font, std::uint32_t glyph, double size, int sub_x, int sub_y, int steps,
@@ -122,7 +129,7 @@ const Mask& GlyphCache::mask(const Font& font, std::uint32_t glyph, double size,
     if (!c.scratch.empty()) {
         const Affine to_pixels = font.glyph_transform(size, {static_cast<double>(sub_x) / steps,
                                                              static_cast<double>(sub_y) / steps});
-        m = raster.fill_mask(c.scratch, to_pixels);
+        m = raster.fill_mask(c.scratch, to_pixels, c.fill);
     }
     const std::size_t bytes = m.data.size() + kEntryOverhead;
     if (c.stats.bytes + bytes > c.max_bytes && !c.masks.empty()) {
