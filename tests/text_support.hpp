@@ -79,6 +79,12 @@ public:
     // Coverage of `glyph` at `size` px (a multiple of 1/64) with its origin at `origin` (pixel
     // space, y down; coordinates multiples of 1/64), over the glyph's pixel bounds.
     Gray render(std::uint32_t glyph, double size, casteljau::Point origin) {
+        return render(glyph, size, casteljau::Affine{1, 0, 0, -1, origin.x, origin.y});
+    }
+
+    // Same with any transform `m` from the glyph's scaled outline (pixels, y UP, origin at 0) to
+    // pixel space (y down): FreeType applies m's linear part (16.16) and its translation (26.6).
+    Gray render(std::uint32_t glyph, double size, const casteljau::Affine& m) {
         const FT_F26Dot6 sz = static_cast<FT_F26Dot6>(std::lround(size * 64));
         if (FT_Set_Char_Size(face_, sz, sz, 72, 72)) throw std::runtime_error("FT_Set_Char_Size");
         if (FT_Load_Glyph(face_, glyph, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP))
@@ -86,21 +92,28 @@ public:
         FT_Outline* o = &face_->glyph->outline;
         Gray g;
         if (o->n_points == 0) return g;
-        // Glyph (x, y-up) -> pixel (origin.x + x, origin.y - y). FreeType's bitmap has row 0 at the
-        // top with y up, so bitmap coordinates are (X - x0, rows - (Y - y0)).
+        // Bounds in pixel space from the transformed control box.
         FT_BBox box;
         FT_Outline_Get_CBox(o, &box);
-        const double ox = origin.x, oy = origin.y;
-        const int x0 = static_cast<int>(std::floor(ox + box.xMin / 64.0)) - 1;
-        const int x1 = static_cast<int>(std::ceil(ox + box.xMax / 64.0)) + 1;
-        const int y0 = static_cast<int>(std::floor(oy - box.yMax / 64.0)) - 1;
-        const int y1 = static_cast<int>(std::ceil(oy - box.yMin / 64.0)) + 1;
+        casteljau::Rect r = casteljau::transform_bounds(
+            m, {box.xMin / 64.0, box.yMin / 64.0, box.xMax / 64.0, box.yMax / 64.0});
+        const int x0 = static_cast<int>(std::floor(r.x0)) - 1, x1 = static_cast<int>(std::ceil(r.x1)) + 1;
+        const int y0 = static_cast<int>(std::floor(r.y0)) - 1, y1 = static_cast<int>(std::ceil(r.y1)) + 1;
         const int w = x1 - x0, h = y1 - y0;
         g.bounds = {x0, y0, x1, y1};
         g.data.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
-        FT_Outline_Translate(o, std::lround((ox - x0) * 64), std::lround((h - oy + y0) * 64));
-        FT_Bitmap bm;
-        bm = FT_Bitmap{};
+        // FreeType's bitmap has row 0 at the top with y up: bitmap coordinates are
+        // (X - x0, h - (Y - y0)) for pixel-space (X, Y) = m(x, y).
+        if (!(m.a == 1 && m.b == 0 && m.c == 0 && m.d == -1)) {
+            FT_Matrix mat;
+            mat.xx = static_cast<FT_Fixed>(std::lround(m.a * 65536.0));
+            mat.xy = static_cast<FT_Fixed>(std::lround(m.c * 65536.0));
+            mat.yx = static_cast<FT_Fixed>(std::lround(-m.b * 65536.0));
+            mat.yy = static_cast<FT_Fixed>(std::lround(-m.d * 65536.0));
+            FT_Outline_Transform(o, &mat);
+        }
+        FT_Outline_Translate(o, std::lround((m.e - x0) * 64), std::lround((h + y0 - m.f) * 64));
+        FT_Bitmap bm = FT_Bitmap{};
         bm.rows = static_cast<unsigned>(h);
         bm.width = static_cast<unsigned>(w);
         bm.pitch = w;
@@ -115,7 +128,7 @@ public:
     // the pixel grid: exact-area coverage of FreeType's flattening at k times finer resolution, so
     // FreeType's own flattening error (up to 1/16 px for conics, more for cubics) shrinks k-fold.
     Gray render_supersampled(std::uint32_t glyph, double size, casteljau::Point origin, int k) {
-        const Gray big = render(glyph, size * k, {origin.x * k, origin.y * k});
+        const Gray big = render(glyph, size * k, casteljau::Point{origin.x * k, origin.y * k});
         Gray g;
         if (big.bounds.empty()) return g;
         auto fdiv = [k](int v) { return v >= 0 ? v / k : -((-v + k - 1) / k); };
@@ -180,19 +193,28 @@ DiffStats compare_coverage(const A& a, const B& b) {
     return s;
 }
 
-// The reference picture of a layout: every glyph rendered by FreeType (unhinted, at the exact
-// position draw_text would use after rounding to 1/steps px) and composited source-over with the
-// same composite_span. `ft` holds one FreeType renderer per layout font (same variation).
+// The reference picture of a layout: every glyph rendered by FreeType (unhinted) and composited
+// source-over with the same composite_span. With `transform` null: each glyph origin rounded to
+// 1/steps px as draw_text's cached path does; otherwise glyphs are placed exactly under
+// transform x translate(origin) (draw_text's outline path). `ft` holds one FreeType renderer per
+// layout font (same variation).
 inline casteljau::Pixmap reference_text_image(const casteljau::TextLayout& layout, std::vector<FtRenderer*> ft,
                                               int width, int height, casteljau::Point origin,
                                               casteljau::Color background, const casteljau::Paint& paint,
-                                              int steps = 4) {
+                                              int steps = 4, const casteljau::Affine* transform = nullptr) {
     casteljau::Pixmap pm(width, height);
     pm.fill(background);
     for (const auto& g : layout.glyphs) {
-        const double px = std::round((g.position.x + origin.x) * steps) / steps;
-        const double py = std::round((g.position.y + origin.y) * steps) / steps;
-        const Gray gr = ft[g.font]->render(g.glyph, layout.size, {px, py});
+        Gray gr;
+        if (!transform) {
+            const double px = std::round((g.position.x + origin.x) * steps) / steps;
+            const double py = std::round((g.position.y + origin.y) * steps) / steps;
+            gr = ft[g.font]->render(g.glyph, layout.size, casteljau::Point{px, py});
+        } else {
+            const casteljau::Affine m = *transform * casteljau::Affine::translate(origin.x + g.position.x, origin.y + g.position.y) *
+                                        casteljau::Affine::scale(1, -1);
+            gr = ft[g.font]->render(g.glyph, layout.size, m);
+        }
         for (int y = std::max(gr.bounds.y0, 0); y < std::min(gr.bounds.y1, height); ++y) {
             const int x0 = std::max(gr.bounds.x0, 0), x1 = std::min(gr.bounds.x1, width);
             if (x0 >= x1) continue;
