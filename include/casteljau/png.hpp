@@ -15,14 +15,24 @@
 
 namespace casteljau {
 
+// Un-premultiplies exactly (straight = round(p * 255 / a)), so that decode_png(encode_png(p))
+// returns p for every valid premultiplied pixmap. Throws Error(InvalidArgument) for an empty Pixmap.
 std::vector<std::uint8_t> encode_png(const Pixmap& pixmap);
-Pixmap decode_png(std::span<const std::uint8_t> bytes);  // any PNG colour type/bit depth -> RGBA8
+// Any PNG colour type and bit depth (palette, tRNS, grey, 16-bit, interlaced) -> RGBA8, then
+// premultiplied. No gamma or colour conversion is applied (gAMA/cHRM/sRGB/iCCP are ignored).
+// Throws Error(InvalidData) for empty, truncated or corrupt data, Error(Limit) when the declared
+// size exceeds casteljau::limits (checked before any pixel memory is allocated).
+Pixmap decode_png(std::span<const std::uint8_t> bytes);
 
 // Throws Error(Io) when the file cannot be written/read, Error(InvalidData) for a corrupt PNG.
 void write_png(const Pixmap& pixmap, const std::string& path);
 Pixmap read_png(const std::string& path);
 
-// Writes bytes to `path` through a temporary file + rename. Throws Error(Io).
+// Writes bytes to `path` through a temporary file (mkstemp, same folder) + fsync + rename, so the
+// destination is either untouched or completely replaced. An existing file keeps its permission
+// bits; a new one gets 0666 minus the umask. A symbolic link is followed (its target is replaced);
+// a device or FIFO (/dev/null, /dev/stdout) is written directly. Throws Error(Io) naming the path
+// and the system's reason, after removing the temporary file.
 void write_file_atomic(const std::string& path, std::span<const std::uint8_t> bytes);
 // Reads a whole file. Throws Error(Io) naming the path and the reason.
 std::vector<std::uint8_t> read_file(const std::string& path);

@@ -1,9 +1,138 @@
-// Internal: flattening with culling, used by the rasterizer.
+// Internal: the flattener itself, templated on where its points go, so the rasterizer can stream
+// points straight into edge building while the public flatten() fills a Polyline. The bound and
+// its derivation are documented at the top of flatten.cpp.
 #pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "casteljau/error.hpp"
 #include "casteljau/flatten.hpp"
 
 namespace casteljau {
+
+namespace flatten_detail {
+
+// The same bounds squared (no square root in the loop; an overflow to infinity only subdivides).
+inline double sq(Point v) { return v.x * v.x + v.y * v.y; }
+inline double bound2_quad(Point p0, Point p1, Point p2) { return 0.0625 * sq(p0 - p1 * 2 + p2); }
+inline double bound2_cubic(Point p0, Point p1, Point p2, Point p3) {
+    return 0.5625 * std::max(sq(p0 - p1 * 2 + p2), sq(p1 - p2 * 2 + p3));
+}
+inline double bound2_conic(Point p0, Point p1, Point p2, double w) {
+    const double k = w / (1 + w);
+    return k * k * sq(p1 - (p0 * 0.5 + p2 * 0.5));
+}
+
+// Midpoint written so that it cannot overflow for finite inputs.
+inline Point mid(Point a, Point b) { return {a.x * 0.5 + b.x * 0.5, a.y * 0.5 + b.y * 0.5}; }
+
+template <class Sink>
+struct Flattener {
+    const Affine& m;
+    double tol2;       // tolerance squared
+    const Rect* cull;  // when set, curves whose control box misses it become their chord
+    Sink& out;
+
+    void emit(Point p) { out.point(p); }
+    void finish_contour() { out.end(); }
+
+    bool culled(std::initializer_list<Point> pts) const {
+        if (!cull) return false;
+        double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+        for (Point p : pts) {
+            x0 = std::min(x0, p.x); x1 = std::max(x1, p.x);
+            y0 = std::min(y0, p.y); y1 = std::max(y1, p.y);
+        }
+        return x1 < cull->x0 || x0 > cull->x1 || y1 < cull->y0 || y0 > cull->y1;
+    }
+
+    void move(Point p) { out.begin(m(p)); }
+    void line(Point, Point p) { emit(m(p)); }
+    void close(Point, Point) { out.mark_closed(); }
+
+    void quad(Point a, Point b, Point c) {
+        const Point p0 = m(a), p1 = m(b), p2 = m(c);
+        if (culled({p0, p1, p2})) return emit(p2);
+        struct Q { Point p0, p1, p2; int depth; };
+        Q stack[limits::kMaxFlattenDepth + 2];
+        int n = 0;
+        stack[n++] = {p0, p1, p2, 0};
+        while (n > 0) {
+            const Q q = stack[--n];
+            if (q.depth >= limits::kMaxFlattenDepth || !(bound2_quad(q.p0, q.p1, q.p2) > tol2)) {
+                emit(q.p2);
+                continue;
+            }
+            const Point l1 = mid(q.p0, q.p1), r1 = mid(q.p1, q.p2), c = mid(l1, r1);
+            stack[n++] = {c, r1, q.p2, q.depth + 1};   // right half, processed second
+            stack[n++] = {q.p0, l1, c, q.depth + 1};   // left half first
+        }
+    }
+
+    void cubic(Point a, Point b, Point c, Point d) {
+        const Point p0 = m(a), p1 = m(b), p2 = m(c), p3 = m(d);
+        if (culled({p0, p1, p2, p3})) return emit(p3);
+        struct C { Point p0, p1, p2, p3; int depth; };
+        C stack[limits::kMaxFlattenDepth + 2];
+        int n = 0;
+        stack[n++] = {p0, p1, p2, p3, 0};
+        while (n > 0) {
+            const C q = stack[--n];
+            if (q.depth >= limits::kMaxFlattenDepth || !(bound2_cubic(q.p0, q.p1, q.p2, q.p3) > tol2)) {
+                emit(q.p3);
+                continue;
+            }
+            // de Casteljau at t = 1/2: three rounds of midpoints.
+            const Point a1 = mid(q.p0, q.p1), b1 = mid(q.p1, q.p2), c1 = mid(q.p2, q.p3);
+            const Point a2 = mid(a1, b1), b2 = mid(b1, c1);
+            const Point a3 = mid(a2, b2);
+            stack[n++] = {a3, b2, c1, q.p3, q.depth + 1};
+            stack[n++] = {q.p0, a1, a2, a3, q.depth + 1};
+        }
+    }
+
+    void conic(Point a, Point b, Point c, double w) {
+        const Point p0 = m(a), p1 = m(b), p2 = m(c);
+        if (culled({p0, p1, p2})) return emit(p2);
+        struct K { Point p0, p1, p2; double w; int depth; };
+        K stack[limits::kMaxFlattenDepth + 2];
+        int n = 0;
+        stack[n++] = {p0, p1, p2, w, 0};
+        while (n > 0) {
+            const K q = stack[--n];
+            if (q.depth >= limits::kMaxFlattenDepth || !(bound2_conic(q.p0, q.p1, q.p2, q.w) > tol2)) {
+                emit(q.p2);
+                continue;
+            }
+            // Rational de Casteljau at t = 1/2 in homogeneous coordinates, renormalised.
+            const double s = 1.0 / (1.0 + q.w);
+            const Point l1 = (q.p0 + q.p1 * q.w) * s, r1 = (q.p1 * q.w + q.p2) * s;
+            const Point c = mid(l1, r1);
+            const double w2 = std::sqrt(0.5 * (1.0 + q.w));
+            stack[n++] = {c, r1, q.p2, w2, q.depth + 1};
+            stack[n++] = {q.p0, l1, c, w2, q.depth + 1};
+        }
+    }
+};
+
+}  // namespace flatten_detail
+
+// Validates a flatten call: finite transform, points and weights (also after the transform),
+// a positive tolerance. Throws Error.
+void check_flatten_input(const Path& path, const Affine& m, double tolerance);
+
+// Flattens `path` mapped by `m` into `sink`, which receives begin(p) for each contour start,
+// point(p) for each following polyline vertex, mark_closed() for an explicit close and end().
+template <class Sink>
+void flatten_into(const Path& path, const Affine& m, double tolerance, const Rect* cull, Sink& sink) {
+    flatten_detail::Flattener<Sink> f{m, tolerance * tolerance, cull, sink};
+    path.visit(f);
+    f.finish_contour();
+}
+
 // As flatten(), but a curve whose transformed control points all lie outside `cull` (when given) is
 // replaced by its chord: outside the clip rectangle only a segment's end points matter to coverage.
 void flatten_culled(const Path& path, const Affine& m, double tolerance, const Rect* cull, Polyline& out);
+
 }  // namespace casteljau

@@ -1,18 +1,28 @@
-// Raster stage, accumulation: walks one clipped edge through the cells of a strip.
+// Raster stage, accumulation: walks one edge through the cells of a strip.
 //
 // For every row the edge crosses, the piece of the edge inside that row has a signed height d
 // (positive going down) and runs from xa to xb. Cell k receives in acc[k] the area between the
 // piece and the cell's right side (weighted by d), and acc[k + 1] the rest of the piece's height
-// in that cell; a prefix sum along the row then yields, for every pixel, the signed area of the
-// shape inside it (the winding-weighted coverage). This is the cover/area scheme of FreeType's
-// gray rasterizer and font-rs, written for a dense per-strip buffer.
+// in that cell; a prefix sum along the row then yields, for every pixel, the integral of the
+// winding number over it (the cover/area scheme of FreeType's gray rasterizer and font-rs, on a
+// dense per-strip buffer).
 //
-// Tagging (exact_overlaps): each touched cell remembers the last edge that touched it. A second
-// edge in the same cell is harmless only when the two are consecutive edges of one contour that
-// meet inside the cell (the vertex is in the cell's closure) and at most two such edges share it:
-// then the edges form one simple polyline through the cell and the winding numbers inside it lie
-// in one unit interval, where accumulation is exact. Every other multi-edge cell is marked and
-// later recomputed exactly (exact_cell.cpp). The test is independent of the order edges arrive in.
+// Marking (exact_overlaps). Plain accumulation is exact in a cell whose winding numbers lie in one
+// unit interval. Each cell remembers the last two edges that touched it and decides, when a
+// second edge arrives, whether the pair is harmless:
+//   - consecutive edges of one contour meeting at a vertex inside the cell (a polyline bend), or
+//   - two edge pieces that do not meet inside the cell and cross it such that the regions on the
+//     far sides of both have the same winding number (a stem: one edge up, one down). Seen from
+//     inside, the side of a directed edge where the cross product with the edge is negative has a
+//     winding number one higher; the middle region is on the other piece's side of each piece, so
+//     the outer regions agree exactly when each piece's midpoint lies on the same-signed side of
+//     the other piece.
+// A third piece continuing such a polyline is accepted when it does not meet the first one.
+// Anything more, or any other pair, marks the cell; every edge touching a marked cell is logged
+// for the exact recomputation (exact_cell.cpp). A piece that ends inside a cell always brings its
+// neighbour along the contour into the cell too, so a provisional "harmless" verdict on a pair
+// whose piece ends inside is always revisited by that third edge. The verdicts do not depend on
+// the order in which edges arrive.
 #include <algorithm>
 #include <cmath>
 
@@ -22,60 +32,184 @@ namespace casteljau::raster {
 
 namespace {
 
-// Cell (row, col) holding an end point (px, py) of an edge, seen from the edge heading to (qx, qy):
-// the same cell the walk below attributes that end of the edge to.
+inline int ifloor(double v) {
+    const int i = static_cast<int>(v);
+    return i > v ? i - 1 : i;
+}
+inline int iceil(double v) {
+    const int i = static_cast<int>(v);
+    return i < v ? i + 1 : i;
+}
+
+// Cell (row, col) holding the end point (px, py) of an edge that heads towards (qx, qy): the same
+// cell the walk below attributes that end of the edge to.
 inline void end_cell(double px, double py, double qx, double qy, int& row, int& col) {
-    row = qy > py ? static_cast<int>(std::floor(py)) : static_cast<int>(std::ceil(py)) - 1;
-    col = qx < px ? static_cast<int>(std::ceil(px)) - 1 : static_cast<int>(std::floor(px));
+    row = qy > py ? ifloor(py) : (qy < py ? iceil(py) - 1 : ifloor(py));
+    col = qx < px ? iceil(px) - 1 : ifloor(px);
+}
+
+inline double orient(double ax, double ay, double bx, double by, double cx, double cy) {
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+
+// Do closed segments ab and cd share a point?
+bool segments_meet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+    const double d1 = orient(cx, cy, dx, dy, ax, ay), d2 = orient(cx, cy, dx, dy, bx, by);
+    const double d3 = orient(ax, ay, bx, by, cx, cy), d4 = orient(ax, ay, bx, by, dx, dy);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+    auto on = [](double px, double py, double qx, double qy, double rx, double ry) {
+        return std::min(px, qx) <= rx && rx <= std::max(px, qx) && std::min(py, qy) <= ry && ry <= std::max(py, qy);
+    };
+    return (d1 == 0 && on(cx, cy, dx, dy, ax, ay)) || (d2 == 0 && on(cx, cy, dx, dy, bx, by)) ||
+           (d3 == 0 && on(ax, ay, bx, by, cx, cy)) || (d4 == 0 && on(ax, ay, bx, by, dx, dy));
+}
+
+// Is the pair of edges a, b harmless in cell (col, row)? See the comment at the top of the file.
+bool harmless_pair(const Edge& a, const Edge& b, int col, int row) {
+    double ax, ay, bx, by, cx, cy, dx, dy;
+    if (!cell_portion(a, col, row, ax, ay, bx, by)) return true;  // a only grazes the cell
+    if (!cell_portion(b, col, row, cx, cy, dx, dy)) return true;
+    if (segments_meet(ax, ay, bx, by, cx, cy, dx, dy)) return false;
+    // Directions are those of the edges (cell_portion keeps them).
+    const double s1 = orient(ax, ay, bx, by, 0.5 * (cx + dx), 0.5 * (cy + dy));
+    const double s2 = orient(cx, cy, dx, dy, 0.5 * (ax + bx), 0.5 * (ay + by));
+    return (s1 > 0 && s2 > 0) || (s1 < 0 && s2 < 0);
+}
+
+inline void log_edge(Strip& s, std::size_t cell, std::uint64_t id_plus_one) {
+    if (id_plus_one) s.log->push_back({static_cast<std::uint32_t>(cell), static_cast<std::uint32_t>(id_plus_one - 1)});
+}
+
+// Checks and updates the tag of cell k of a row for edge `id`.
+inline void tag_cell(Strip& s, std::uint64_t* tags, std::size_t base, int k, int row, std::uint32_t id,
+                     const Edge& e, bool first_cell, bool last_cell) {
+    const std::uint64_t t = tags[k];
+    const std::uint64_t me = id + 1;
+    if (t == 0) {
+        tags[k] = me | (std::uint64_t(1) << kTagCountShift);
+        return;
+    }
+    if (t & kTagMarked) {
+        log_edge(s, base + k, me);
+        return;
+    }
+    const std::uint64_t last = t & kTagIdMask;
+    const unsigned count = static_cast<unsigned>(t >> kTagCountShift) & 3u;
+    const std::int64_t other = static_cast<std::int64_t>(last) - 1;
+    const bool chained = (first_cell && e.prev == other) || (last_cell && e.next == other);
+    if (count == 1) {
+        if (chained || harmless_pair(s.edges[other], e, k, row)) {
+            tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(2) << kTagCountShift) | (chained ? kTagChain : 0);
+            return;
+        }
+    } else if (count == 2 && chained && (t & kTagChain)) {
+        // A third piece of one polyline through the cell: still one simple curve unless it meets
+        // the first piece (the second is its neighbour).
+        const std::uint64_t first = (t >> kTagPrevShift) & kTagIdMask;
+        double ax, ay, bx, by, cx, cy, dx, dy;
+        if (!cell_portion(s.edges[first - 1], k, row, ax, ay, bx, by) || !cell_portion(e, k, row, cx, cy, dx, dy) ||
+            !segments_meet(ax, ay, bx, by, cx, cy, dx, dy)) {
+            tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(3) << kTagCountShift);
+            return;
+        }
+    }
+    tags[k] = t | kTagMarked;
+    s.marked->push_back(static_cast<std::uint32_t>(base + k));
+    log_edge(s, base + k, last);
+    log_edge(s, base + k, (t >> kTagPrevShift) & kTagIdMask);
+    log_edge(s, base + k, me);
 }
 
 }  // namespace
 
-// Checks and updates the tag of cell k in a row for edge `me` (id + 1).
-inline void tag_cell(std::uint32_t* tags, int k, std::uint32_t me, bool chained_if_prev, bool chained_if_next,
-                     const Edge& e, std::size_t index, std::vector<std::uint32_t>& marked_cells) {
-    const std::uint32_t t = tags[k];
-    if (t == 0) {
-        tags[k] = me | (1u << kTagCountShift);
+bool cell_portion(const Edge& e, double cx, double ry, double& ax, double& ay, double& bx, double& by) {
+    // Liang-Barsky clip of the segment to the closed square, keeping the edge's direction.
+    double t0 = 0, t1 = 1;
+    const double dx = e.x1 - e.x0, dy = e.y1 - e.y0;
+    auto clip = [&](double p, double q) {  // p t <= q
+        if (p == 0) return q >= 0;
+        const double r = q / p;
+        if (p < 0) {
+            if (r > t1) return false;
+            if (r > t0) t0 = r;
+        } else {
+            if (r < t0) return false;
+            if (r < t1) t1 = r;
+        }
+        return true;
+    };
+    if (!clip(-dx, e.x0 - cx) || !clip(dx, cx + 1 - e.x0) || !clip(-dy, e.y0 - ry) || !clip(dy, ry + 1 - e.y0))
+        return false;
+    ax = e.x0 + dx * t0;
+    ay = e.y0 + dy * t0;
+    bx = e.x0 + dx * t1;
+    by = e.y0 + dy * t1;
+    return t1 > t0 || (dx == 0 && dy == 0);
+}
+
+namespace {
+
+// Adds a piece of height d (signed) running from xa to xb inside one row to the row's cells
+// [i0, i1] (and the spill cell i1 + 1). Returns nothing; see the file comment for the scheme.
+inline void deposit(float* acc, double xa, double xb, double d, int& i0_out, int& i1_out) {
+    const double xl = xa < xb ? xa : xb, xr = xa < xb ? xb : xa;
+    const int i0 = static_cast<int>(xl);  // xl >= 0: truncation is floor
+    int i1 = static_cast<int>(xr);
+    if (i1 > i0 && i1 == xr) --i1;        // xr on a cell boundary belongs to the cell on its left
+    i0_out = i0;
+    i1_out = i1;
+    if (i0 == i1) {
+        const double a = d * ((i0 + 1) - 0.5 * (xl + xr));
+        acc[i0] += static_cast<float>(a);
+        acc[i0 + 1] += static_cast<float>(d - a);
         return;
     }
-    const std::uint32_t other = (t & kTagIdMask) - 1;
-    const std::uint32_t count = (t & kTagCountMask) >> kTagCountShift;
-    const bool chained = (chained_if_prev && e.prev >= 0 && other == static_cast<std::uint32_t>(e.prev)) ||
-                         (chained_if_next && e.next >= 0 && other == static_cast<std::uint32_t>(e.next));
-    std::uint32_t marked = t & kTagMarked;
-    if ((!chained || count >= 2) && !marked) {
-        marked = kTagMarked;
-        marked_cells.push_back(static_cast<std::uint32_t>(index));
+    const double hpx = d / (xr - xl);  // height of the piece per unit of x
+    double len = (i0 + 1) - xl;
+    double h = hpx * len;
+    double a = h * 0.5 * len;
+    const float half = static_cast<float>(hpx * 0.5);
+    acc[i0] += static_cast<float>(a);
+    if (i1 == i0 + 1) {
+        acc[i0 + 1] += static_cast<float>(h - a);
+    } else {
+        acc[i0 + 1] += static_cast<float>(h - a) + half;
+        for (int k = i0 + 2; k < i1; ++k) acc[k] += 2 * half;
+        acc[i1] += half;
     }
-    tags[k] = marked | (std::min(count + 1, 3u) << kTagCountShift) | me;
+    len = xr - i1;
+    h = hpx * len;
+    a = h * (1 - 0.5 * len);
+    acc[i1] += static_cast<float>(a);
+    acc[i1 + 1] += static_cast<float>(h - a);
 }
+
+}  // namespace
 
 void accumulate_edge(const Edge& e, std::uint32_t id, Strip& s) {
     double x0 = e.x0, y0 = e.y0, x1 = e.x1, y1 = e.y1;
+    if (y0 == y1) {
+        // Horizontal: tags only, and only inside a row (on a row boundary it separates two rows,
+        // not two regions of one cell).
+        if (!s.tags) return;
+        const int fy = ifloor(y0);
+        if (fy == y0 || y0 < s.y0 || y0 >= s.y0 + s.rows) return;
+        const int local = fy - s.y0;
+        const double xl = std::min(x0, x1), xr = std::max(x0, x1);
+        const int i0 = ifloor(xl);
+        const int i1 = std::max(i0, iceil(xr) - 1);
+        const int c0 = x1 > x0 ? i0 : i1, c1 = x1 > x0 ? i1 : i0;
+        std::uint64_t* tags = s.tags + static_cast<std::size_t>(local) * s.stride;
+        const std::size_t base = static_cast<std::size_t>(local) * s.stride;
+        for (int k = i0; k <= i1; ++k) tag_cell(s, tags, base, k, fy, id, e, k == c0, k == c1);
+        s.row_min[local] = std::min(s.row_min[local], i0);
+        s.row_max[local] = std::max(s.row_max[local], i1);
+        return;
+    }
     int start_row = -1, start_col = -1, end_row = -1, end_col = -1;
     if (s.tags) {
-        if (y0 == y1) {
-            // Horizontal edge: tags only, and only when it lies inside a row (on a row boundary it
-            // separates two rows, not two regions of one cell).
-            const double fy = std::floor(y0);
-            if (fy == y0 || y0 < s.y0 || y0 >= s.y0 + s.rows) return;
-            const int local = static_cast<int>(fy) - s.y0;
-            const double xl = std::min(x0, x1), xr = std::max(x0, x1);
-            const int i0 = static_cast<int>(xl);
-            const int i1 = std::max(i0, static_cast<int>(std::ceil(xr)) - 1);
-            const int c0 = x1 > x0 ? i0 : i1, c1 = x1 > x0 ? i1 : i0;  // start and end cells
-            std::uint32_t* tags = s.tags + static_cast<std::size_t>(local) * s.stride;
-            const std::size_t base = static_cast<std::size_t>(local) * s.stride;
-            for (int k = i0; k <= i1; ++k) tag_cell(tags, k, id + 1, k == c0, k == c1, e, base + k, *s.marked);
-            s.row_min[local] = std::min(s.row_min[local], i0);
-            s.row_max[local] = std::max(s.row_max[local], i1);
-            return;
-        }
         end_cell(x0, y0, x1, y1, start_row, start_col);
         end_cell(x1, y1, x0, y0, end_row, end_col);
-    } else if (y0 == y1) {
-        return;
     }
     double dir = 1;
     if (y0 > y1) {
@@ -85,54 +219,35 @@ void accumulate_edge(const Edge& e, std::uint32_t id, Strip& s) {
     }
     const double top = s.y0, bottom = s.y0 + s.rows;
     if (y1 <= top || y0 >= bottom) return;
-    const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
     const double dxdy = (x1 - x0) / (y1 - y0);
-    const double ya = std::max(y0, top), yb = std::min(y1, bottom);
-    const int r_end = static_cast<int>(std::ceil(yb));
-    const std::uint32_t me = id + 1;
-    for (int r = static_cast<int>(std::floor(ya)); r < r_end; ++r) {
-        const double ry0 = std::max(ya, static_cast<double>(r));
-        const double ry1 = std::min(yb, r + 1.0);
-        if (!(ry1 > ry0)) continue;
-        const double xa = std::clamp(x0 + (ry0 - y0) * dxdy, xlo, xhi);
-        const double xb = std::clamp(x0 + (ry1 - y0) * dxdy, xlo, xhi);
-        const double d = dir * (ry1 - ry0);
-        const double xl = std::min(xa, xb), xr = std::max(xa, xb);
-        const int i0 = static_cast<int>(xl);  // xl >= 0, so truncation is floor
-        int i1 = xr > xl ? static_cast<int>(std::ceil(xr)) - 1 : i0;
-        if (i1 < i0) i1 = i0;
+    const double xlo = x0 < x1 ? x0 : x1, xhi = x0 < x1 ? x1 : x0;
+    const double ya = y0 > top ? y0 : top, yb = y1 < bottom ? y1 : bottom;
+    const int r_first = static_cast<int>(ya);  // ya >= 0
+    int r_last = static_cast<int>(yb);
+    if (r_last == yb) --r_last;
+    double x = ya == y0 ? x0 : std::clamp(x0 + (ya - y0) * dxdy, xlo, xhi);
+    double y = ya;
+    for (int r = r_first; r <= r_last; ++r) {
+        const double ynext = r == r_last ? yb : r + 1.0;
+        const double xnext = ynext == y1 ? x1 : std::clamp(x0 + (ynext - y0) * dxdy, xlo, xhi);
         const int local = r - s.y0;
-        float* acc = s.acc + static_cast<std::size_t>(local) * s.stride;
-        if (i0 == i1) {
-            const double a = d * ((i0 + 1) - 0.5 * (xl + xr));
-            acc[i0] += static_cast<float>(a);
-            acc[i0 + 1] += static_cast<float>(d - a);
-        } else {
-            const double hpx = d / (xr - xl);  // height of the piece per unit of x
-            double len = (i0 + 1) - xl;
-            double h = hpx * len;
-            double a = h * 0.5 * len;
-            acc[i0] += static_cast<float>(a);
-            acc[i0 + 1] += static_cast<float>(h - a);
-            const float half = static_cast<float>(hpx * 0.5);
-            for (int k = i0 + 1; k < i1; ++k) {
-                acc[k] += half;
-                acc[k + 1] += half;
-            }
-            len = xr - i1;
-            h = hpx * len;
-            a = h * (1 - 0.5 * len);
-            acc[i1] += static_cast<float>(a);
-            acc[i1 + 1] += static_cast<float>(h - a);
-        }
-        s.row_min[local] = std::min(s.row_min[local], i0);
-        s.row_max[local] = std::max(s.row_max[local], i1 + 1);
-
-        if (!s.tags) continue;
-        std::uint32_t* tags = s.tags + static_cast<std::size_t>(local) * s.stride;
         const std::size_t base = static_cast<std::size_t>(local) * s.stride;
-        for (int k = i0; k <= i1; ++k)
-            tag_cell(tags, k, me, r == start_row && k == start_col, r == end_row && k == end_col, e, base + k, *s.marked);
+        int i0, i1;
+        deposit(s.acc + base, x, xnext, dir * (ynext - y), i0, i1);
+        if (i0 < s.row_min[local]) s.row_min[local] = i0;
+        if (i1 + 1 > s.row_max[local]) s.row_max[local] = i1 + 1;
+        if (s.tags) {
+            std::uint64_t* tags = s.tags + base;
+            for (int k = i0; k <= i1; ++k) {
+                if (tags[k] == 0) {  // first touch: the common case
+                    tags[k] = (id + 1) | (std::uint64_t(1) << kTagCountShift);
+                    continue;
+                }
+                tag_cell(s, tags, base, k, r, id, e, r == start_row && k == start_col, r == end_row && k == end_col);
+            }
+        }
+        x = xnext;
+        y = ynext;
     }
 }
 

@@ -1,13 +1,19 @@
-// Raster stage, exact cells: the coverage of one pixel computed exactly from the edges in it.
+// Raster stage, exact cells: the coverage of one marked pixel computed exactly.
 //
-// Accumulation yields f(integral of w) where the truth is the integral of f(w) (f: the fill rule
-// applied to the winding number w). For a marked cell we compute the integral directly: cut the
-// cell into horizontal slabs at every y where the picture changes (end points of edge pieces,
-// crossings of the pieces inside the cell, and the y where an edge enters the cell from the left),
-// so that inside a slab no two pieces cross and each spans the whole slab. Within a slab the
-// winding number just left of the cell is constant (W: the signed count of pieces lying left of the
-// cell there), and walking right it changes by each inside piece's direction; the area of each
-// region between consecutive pieces is a trapezoid. Sum f(w) x area.
+// Accumulation yields f(integral of w) where the truth is the integral of f(w) (w: the winding
+// number, f: the fill rule). For a marked cell we know the integral A of w over the cell (from the
+// accumulation) and every edge that passes through the open cell (logged while accumulating).
+//   1. Clip those edges to the cell and cut the cell into horizontal slabs at every y where the
+//      picture changes (piece end points, crossings of pieces, horizontal pieces), so that inside a
+//      slab the pieces do not cross and the regions between consecutive pieces are trapezoids.
+//   2. Inside the open cell, w(p) = W0 + L(p), where L(p) counts the signed crossings of the
+//      segment from a fixed interior reference point r to p by the cell's pieces (the segment
+//      stays inside the cell, so no other edge can cross it), and W0 = w(r) is unknown. Crossing
+//      a directed piece towards the side where the cross product with it is negative raises w by
+//      one (y down).
+//   3. A = W0 + sum(L x area) fixes W0 (an integer: rounded), and the coverage is
+//      sum(f(W0 + L) x area).
+// Only the cell's own edges are needed, never the rest of its row.
 #include <algorithm>
 #include <cmath>
 
@@ -17,61 +23,47 @@ namespace casteljau::raster {
 
 namespace {
 
-inline double fill_value(int w, FillRule rule) {
+inline double fill_value(long w, FillRule rule) {
     return rule == FillRule::NonZero ? (w != 0 ? 1.0 : 0.0) : ((w & 1) ? 1.0 : 0.0);
 }
 
+inline double orient(double ax, double ay, double bx, double by, double px, double py) {
+    return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+}
+
+struct Piece {
+    double ax, ay, bx, by;  // in the edge's direction
+};
+
+// Reference points inside the unit cell, tried in order until one is in general position.
+constexpr double kRef[4][2] = {{0.5012345, 0.4987654}, {0.3141593, 0.7182818}, {0.6931472, 0.2718282},
+                               {0.1414214, 0.8660254}};
+
 }  // namespace
 
-double exact_cell_coverage(const std::vector<RowPiece>& pieces, double cx, double ry, FillRule rule,
-                           ExactScratch& sc) {
+double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& ids, double cx, double ry,
+                           double integral, FillRule rule, ExactScratch& sc) {
     const double cr = cx + 1, rb = ry + 1;
-    sc.left.clear();
     sc.inside.clear();
     sc.breaks.clear();
+    sc.regions.clear();
     sc.breaks.push_back(ry);
     sc.breaks.push_back(rb);
-    for (const RowPiece& p : pieces) {
-        const double xmin = std::min(p.x0, p.x1), xmax = std::max(p.x0, p.x1);
-        if (xmin >= cr) continue;  // at or right of the cell's right side: no effect inside
-        if (xmax <= cx) {          // entirely left (or on the left side): a constant contribution
-            sc.left.push_back({p.y0, p.y1, 0, 0, p.dir});
-            sc.breaks.push_back(p.y0);
-            sc.breaks.push_back(p.y1);
-            continue;
-        }
-        if (p.x0 == p.x1) {  // vertical, strictly inside the cell
-            sc.inside.push_back({p.y0, p.y1, p.x0, p.x0, p.dir});
-            sc.breaks.push_back(p.y0);
-            sc.breaks.push_back(p.y1);
-            continue;
-        }
-        // x(y) = p.x0 + (y - p.y0) k; find the y-intervals with x <= cx and cx < x < cr.
-        const double k = (p.x1 - p.x0) / (p.y1 - p.y0);
-        const double yl = p.y0 + (cx - p.x0) / k;  // y where x == cx
-        const double yr = p.y0 + (cr - p.x0) / k;  // y where x == cr
-        double lya, lyb, iya, iyb;
-        if (k > 0) {
-            lya = p.y0; lyb = std::min(yl, p.y1);
-            iya = std::max(yl, p.y0); iyb = std::min(yr, p.y1);
-        } else {
-            lya = std::max(yl, p.y0); lyb = p.y1;
-            iya = std::max(yr, p.y0); iyb = std::min(yl, p.y1);
-        }
-        if (lyb > lya) {
-            sc.left.push_back({lya, lyb, 0, 0, p.dir});
-            sc.breaks.push_back(lya);
-            sc.breaks.push_back(lyb);
-        }
-        if (iyb > iya) {
-            const double xa = std::clamp(p.x0 + (iya - p.y0) * k, cx, cr);
-            const double xb = std::clamp(p.x0 + (iyb - p.y0) * k, cx, cr);
-            sc.inside.push_back({iya, iyb, xa, xb, p.dir});
-            sc.breaks.push_back(iya);
-            sc.breaks.push_back(iyb);
-        }
+    // Pieces inside the closed cell; `inside` keeps them as (ya, yb, xa, xb, dir) for the slabs
+    // (top to bottom) and `pieces` in the edge's direction for the crossing counts.
+    thread_local std::vector<Piece> pieces;
+    pieces.clear();
+    for (std::uint32_t id : ids) {
+        double ax, ay, bx, by;
+        if (!cell_portion(edges[id], cx, ry, ax, ay, bx, by)) continue;
+        if (ax == bx && ay == by) continue;
+        pieces.push_back({ax, ay, bx, by});
+        sc.breaks.push_back(ay);
+        sc.breaks.push_back(by);
+        if (ay == by) continue;  // horizontal: a slab boundary, no slab of its own
+        if (ay < by) sc.inside.push_back({ay, by, ax, bx, 1});
+        else sc.inside.push_back({by, ay, bx, ax, -1});
     }
-    // Crossings of inside pieces.
     const std::size_t n = sc.inside.size();
     for (std::size_t i = 0; i < n; ++i) {
         const auto& a = sc.inside[i];
@@ -81,39 +73,71 @@ double exact_cell_coverage(const std::vector<RowPiece>& pieces, double cx, doubl
             const double lo = std::max(a.ya, b.ya), hi = std::min(a.yb, b.yb);
             if (!(hi > lo)) continue;
             const double kb = (b.xb - b.xa) / (b.yb - b.ya);
-            if (ka == kb) continue;  // parallel (or coincident): no single crossing
-            // a.xa + (y - a.ya) ka == b.xa + (y - b.ya) kb
+            if (ka == kb) continue;
             const double y = (b.xa - a.xa + a.ya * ka - b.ya * kb) / (ka - kb);
             if (y > lo && y < hi) sc.breaks.push_back(y);
         }
     }
     std::sort(sc.breaks.begin(), sc.breaks.end());
-    double coverage = 0;
+
+    // Reference point in general position: on no piece's line through an end point.
+    double rx = cx + kRef[0][0], ryy = ry + kRef[0][1];
+    for (const auto& ref : kRef) {
+        rx = cx + ref[0];
+        ryy = ry + ref[1];
+        bool ok = true;
+        for (const Piece& p : pieces)
+            if (orient(p.ax, p.ay, p.bx, p.by, rx, ryy) == 0) { ok = false; break; }
+        if (ok) break;
+    }
+    auto winding_offset = [&](double px, double py) {
+        int l = 0;
+        for (const Piece& p : pieces) {
+            const double o1 = orient(p.ax, p.ay, p.bx, p.by, rx, ryy);
+            const double o2 = orient(p.ax, p.ay, p.bx, p.by, px, py);
+            if ((o1 < 0) == (o2 < 0) || o2 == 0) continue;
+            const double o3 = orient(rx, ryy, px, py, p.ax, p.ay);
+            const double o4 = orient(rx, ryy, px, py, p.bx, p.by);
+            if ((o3 < 0 && o4 < 0) || (o3 > 0 && o4 > 0)) continue;
+            // The segment r -> p crosses the piece: into its negative side raises w.
+            l += o2 < 0 ? 1 : -1;
+        }
+        return l;
+    };
+
+    double sum_l = 0;
     for (std::size_t bi = 0; bi + 1 < sc.breaks.size(); ++bi) {
         const double y0 = std::max(sc.breaks[bi], ry), y1 = std::min(sc.breaks[bi + 1], rb);
         if (!(y1 > y0)) continue;
         const double ym = 0.5 * (y0 + y1), h = y1 - y0;
-        int w = 0;
-        for (const auto& l : sc.left)
-            if (l.ya < ym && ym < l.yb) w += l.dir;
         sc.active.clear();
         for (const auto& p : sc.inside) {
             if (!(p.ya < ym && ym < p.yb)) continue;
             const double k = (p.xb - p.xa) / (p.yb - p.ya);
             sc.active.push_back({std::clamp(p.xa + (y0 - p.ya) * k, cx, cr), std::clamp(p.xa + (y1 - p.ya) * k, cx, cr),
-                                 p.xa + (ym - p.ya) * k, p.dir});
+                                 std::clamp(p.xa + (ym - p.ya) * k, cx, cr), p.dir});
         }
         std::sort(sc.active.begin(), sc.active.end(),
-                  [](const ExactScratch::Cross& a, const ExactScratch::Cross& b) { return a.xm < b.xm; });
-        double px0 = cx, px1 = cx;
-        for (const auto& a : sc.active) {
-            coverage += fill_value(w, rule) * h * 0.5 * ((a.x0 + a.x1) - (px0 + px1));
-            w += a.dir;
-            px0 = a.x0;
-            px1 = a.x1;
+                  [](const ExactScratch::Cross& u, const ExactScratch::Cross& v) { return u.xm < v.xm; });
+        double px0 = cx, px1 = cx, pxm = cx;
+        const std::size_t na = sc.active.size();
+        for (std::size_t i = 0; i <= na; ++i) {
+            const double nx0 = i < na ? sc.active[i].x0 : cr, nx1 = i < na ? sc.active[i].x1 : cr;
+            const double nxm = i < na ? sc.active[i].xm : cr;
+            const double area = h * 0.5 * ((nx0 + nx1) - (px0 + px1));
+            if (area > 0 && nxm > pxm) {
+                const int l = winding_offset(0.5 * (pxm + nxm), ym);
+                sc.regions.push_back({l, area});
+                sum_l += l * area;
+            }
+            px0 = nx0;
+            px1 = nx1;
+            pxm = nxm;
         }
-        coverage += fill_value(w, rule) * h * 0.5 * ((cr + cr) - (px0 + px1));
     }
+    const long w0 = std::lround(integral - sum_l);
+    double coverage = 0;
+    for (const auto& r : sc.regions) coverage += fill_value(w0 + r.b, rule) * r.area;
     return std::clamp(coverage, 0.0, 1.0);
 }
 

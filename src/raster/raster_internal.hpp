@@ -1,5 +1,6 @@
 // Internal types of the raster stage, shared by its files:
-//   rasterizer.cpp  clip edges to the target, bucket them into strips, drive the stages below
+//   rasterizer.cpp  flatten straight into edges (clipping them when the shape leaves the target),
+//                   split the shape's bounds into strips, drive the stages below, deliver rows
 //   accumulate.cpp  walk each edge through the cells of a strip: cover/area into a dense buffer,
 //                   and mark the cells where plain accumulation may be inexact
 //   exact_cell.cpp  exact coverage of a marked cell from the edges inside it
@@ -13,20 +14,28 @@
 
 namespace casteljau::raster {
 
-// An edge after clipping, in coordinates local to the shape's pixel bounds (double precision).
-// prev/next link edges that share an end point along a contour (-1: none). An edge never has
-// y0 == y1 (horizontal edges carry no coverage and are dropped).
+// An edge in coordinates local to the shape's pixel bounds (double precision). prev/next link
+// edges that share an end point along a contour (-1: none). Horizontal edges (y0 == y1) carry no
+// coverage but are kept: they separate winding regions inside the cells they cross.
 struct Edge {
     double x0, y0, x1, y1;
     std::int32_t prev, next;
 };
 
-// Tag word per cell: which edge touched it last, how many chained edges touch it, and whether it
-// is already marked for exact recomputation.
-inline constexpr std::uint32_t kTagIdMask = (1u << 29) - 1;
-inline constexpr std::uint32_t kTagCountShift = 29;
-inline constexpr std::uint32_t kTagCountMask = 3u << kTagCountShift;
-inline constexpr std::uint32_t kTagMarked = 1u << 31;
+// Tag word per cell: the last two edges that touched it, how many edges touched it (saturating at
+// 3) and whether it is marked for exact recomputation.
+inline constexpr std::uint64_t kTagIdMask = (std::uint64_t(1) << 29) - 1;
+inline constexpr int kTagPrevShift = 29;
+inline constexpr int kTagCountShift = 58;
+inline constexpr std::uint64_t kTagChain = std::uint64_t(1) << 62;   // the two pieces are one polyline
+inline constexpr std::uint64_t kTagMarked = std::uint64_t(1) << 63;
+
+// (cell, edge) pairs recorded for marked cells: every edge that touches a marked cell is logged.
+struct CellEdge {
+    std::uint32_t cell;
+    std::uint32_t edge;
+    bool operator<(const CellEdge& o) const { return cell != o.cell ? cell < o.cell : edge < o.edge; }
+};
 
 // One strip of rows [y0, y0 + rows) of the shape's bounds, `width` cells wide (plus 2 spill cells).
 struct Strip {
@@ -35,32 +44,36 @@ struct Strip {
     int width = 0;
     std::size_t stride = 0;          // cells per row in acc/tags (width + 2)
     float* acc = nullptr;            // cover/area accumulation
-    std::uint32_t* tags = nullptr;   // nullptr when exact overlaps are off
+    std::uint64_t* tags = nullptr;   // nullptr when exact overlaps are off
     int* row_min = nullptr;          // first touched cell per row (INT_MAX when untouched)
     int* row_max = nullptr;          // last touched cell per row (-1 when untouched)
-    std::vector<std::uint32_t>* marked = nullptr;  // cell indices (row * stride + col) to recompute
+    const Edge* edges = nullptr;     // all edges (tags refer to them by index)
+    std::vector<std::uint32_t>* marked = nullptr;  // marked cells (row * stride + col)
+    std::vector<CellEdge>* log = nullptr;          // edges touching marked cells
 };
 
 // Walks edge `e` (index `id`) through the strip's rows and cells.
 void accumulate_edge(const Edge& e, std::uint32_t id, Strip& s);
 
-// A piece of an edge inside one row, y0 < y1, dir = +1 for edges going down (y increasing).
-struct RowPiece {
-    double x0, y0, x1, y1;
-    int dir;
-};
+// The part of `e` inside the closed cell [cx, cx + 1] x [ry, ry + 1]; false when there is none.
+bool cell_portion(const Edge& e, double cx, double ry, double& ax, double& ay, double& bx, double& by);
 
-// Exact coverage in [0, 1] of cell [cx, cx + 1] x [ry, ry + 1] under `rule`, given every piece of
-// the row's edges (only those reaching left of cx + 1 matter). `scratch` is reused storage.
 struct ExactScratch {
+    std::vector<std::uint32_t> ids;
     std::vector<double> breaks;
     struct Part { double ya, yb, xa, xb; int dir; };
-    std::vector<Part> left, inside;
+    std::vector<Part> inside;
     struct Cross { double x0, x1, xm; int dir; };
     std::vector<Cross> active;
+    struct Region { int b; double area; };
+    std::vector<Region> regions;
 };
-double exact_cell_coverage(const std::vector<RowPiece>& pieces, double cx, double ry, FillRule rule,
-                           ExactScratch& scratch);
+
+// Exact coverage in [0, 1] of cell [cx, cx + 1] x [ry, ry + 1] under `rule`. `ids` lists every edge
+// that passes through the open cell (more are harmless); `integral` is the accumulated signed area of the cell
+// (the integral of the winding number over it), which fixes the winding number's unknown offset.
+double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& ids, double cx, double ry,
+                           double integral, FillRule rule, ExactScratch& scratch);
 
 // 8-bit coverage of an accumulated signed area under the fill rule: nonzero min(|a|, 1), even-odd
 // the distance of |a| to the nearest even integer; rounded to nearest.

@@ -1,11 +1,13 @@
-// Raster stage, driver: clip edges to the target, split the shape's bounds into strips, accumulate,
-// recompute marked cells exactly, and hand rows of 8-bit coverage to the sink.
+// Raster stage, driver: flatten straight into edges, split the shape's bounds into strips,
+// accumulate, resolve marked cells exactly, and hand rows of 8-bit coverage to the sink.
 //
-// Clipping (double precision, before anything becomes a cell coordinate): edges above or below the
-// target are dropped, the parts of edges left of it are moved onto its left side (only their height
-// matters there: they add cover to column 0), and the parts right of it are dropped (pixels only
-// see edges to their left). So coordinates of any finite size are safe; cell coordinates are at
-// most the target's size.
+// Two ways in. When the transformed control points of the path lie inside the target (glyphs,
+// most shapes) the flattener's points go straight into edges in coordinates local to the shape's
+// pixel bounds, with no clipping. Otherwise every edge is clipped in double precision before it
+// becomes a cell coordinate: edges above or below the target are dropped, the parts of edges left
+// of it are moved onto its left side (only their height matters there: they add cover to column
+// 0), and the parts right of it are dropped (pixels only see edges to their left). So coordinates
+// of any finite size are safe and cell coordinates never exceed the target's size.
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -22,14 +24,45 @@ using raster::Edge;
 
 namespace {
 
-// Upper bound on cells in one strip buffer: 2^18 cells = 1 MiB of float + 1 MiB of tags.
+// Upper bound on cells in one strip buffer: 2^18 cells = 1 MiB of float + 2 MiB of tags.
 constexpr std::size_t kMaxStripCells = std::size_t(1) << 18;
 
-struct EdgeBuilder {
+// Receives flattened points (flatten_into's sink interface) and builds edges, clipping them to
+// [0, W] x [0, H] when kClip (coordinates relative to the target), else taking them as they are.
+template <bool kClip>
+struct EdgeSink {
     std::vector<Edge>& edges;
-    double W, H;
+    double W = 0, H = 0;
     bool clipped_right = false;
-    std::size_t contour_first = 0;  // index of the contour's first edge
+    std::size_t contour_first = 0;
+    Point start{}, cur{};
+    bool open = false;
+
+    void begin(Point p) {
+        end();
+        start = cur = p;
+        open = true;
+    }
+    void point(Point p) {
+        if constexpr (kClip) add_clipped(cur, p);
+        else push(cur.x, cur.y, p.x, p.y);
+        cur = p;
+    }
+    void mark_closed() {}
+    void end() {
+        if (!open) return;
+        point(start);  // fills close every contour
+        if (edges.size() > contour_first + 1) {
+            Edge& first = edges[contour_first];
+            Edge& last = edges.back();
+            if (last.x1 == first.x0 && last.y1 == first.y0) {
+                last.next = static_cast<std::int32_t>(contour_first);
+                first.prev = static_cast<std::int32_t>(edges.size() - 1);
+            }
+        }
+        contour_first = edges.size();
+        open = false;
+    }
 
     void push(double x0, double y0, double x1, double y1) {
         if (y0 == y1 && x0 == x1) return;
@@ -47,18 +80,15 @@ struct EdgeBuilder {
         edges.push_back(e);
     }
 
-    // Clips the edge p -> q against [0, W] x [0, H] as described at the top of this file.
-    void add(Point p, Point q) {
+    void add_clipped(Point p, Point q) {
         if (p.y == q.y) {
-            // Horizontal: no coverage of its own, but it separates winding regions inside the
-            // cells it crosses, so it takes part in the multi-edge test. Keep its part in [0, W].
+            // Horizontal: keeps its part in [0, W] (it separates winding regions in its cells).
             if (p.y <= 0 || p.y >= H) return;
             const double xa = std::clamp(p.x, 0.0, W), xb = std::clamp(q.x, 0.0, W);
             if (xa != xb) push(xa, p.y, xb, q.y);
             return;
         }
         if (std::max(p.y, q.y) <= 0 || std::min(p.y, q.y) >= H) return;
-        // Clip in y (keep the direction of travel).
         auto at_y = [&](double y) { return p.x + (q.x - p.x) * ((y - p.y) / (q.y - p.y)); };
         Point a = p, b = q;
         if (a.y < 0) a = {at_y(0), 0};
@@ -75,46 +105,25 @@ struct EdgeBuilder {
             return;
         }
         auto at_x = [&](double x) { return a.y + (b.y - a.y) * ((x - a.x) / (b.x - a.x)); };
-        // Pieces in travel order: possibly [left part projected], middle, [right part dropped].
+        // In travel order: [part left of 0, projected], part inside, [part right of W, dropped].
         if (a.x < 0) {
             const double yc = at_x(0);
             push(0, a.y, 0, yc);
             a = {0, yc};
-        }
-        Point end = b;
-        bool right_cut = false;
-        if (b.x > W) {
-            end = {W, at_x(W)};
-            right_cut = true;
-        }
-        if (end.x < 0) {  // b left of 0 while a was inside: cut at 0 and project the rest
-            const double yc = at_x(0);
-            if (a.x > W) {  // a right of W: drop the part right of W first
-                a = {W, at_x(W)};
-                clipped_right = true;
-            }
-            push(a.x, a.y, 0, yc);
-            push(0, yc, 0, b.y);
-            return;
-        }
-        if (a.x > W) {  // travelling leftwards from beyond the right side
+        } else if (a.x > W) {
             a = {W, at_x(W)};
             clipped_right = true;
         }
-        push(a.x, a.y, end.x, end.y);
-        if (right_cut) clipped_right = true;
-    }
-
-    void close_contour() {
-        if (edges.size() > contour_first + 1) {
-            Edge& first = edges[contour_first];
-            Edge& last = edges.back();
-            if (last.x1 == first.x0 && last.y1 == first.y0) {
-                last.next = static_cast<std::int32_t>(contour_first);
-                first.prev = static_cast<std::int32_t>(edges.size() - 1);
-            }
+        if (b.x < 0) {
+            const double yc = at_x(0);
+            push(a.x, a.y, 0, yc);
+            push(0, yc, 0, b.y);
+        } else if (b.x > W) {
+            push(a.x, a.y, W, at_x(W));
+            clipped_right = true;
+        } else {
+            push(a.x, a.y, b.x, b.y);
         }
-        contour_first = edges.size();
     }
 };
 
@@ -136,25 +145,40 @@ private:
 
 inline std::uint8_t to_u8(double c) { return static_cast<std::uint8_t>(c * 255.0 + 0.5); }
 
+void check_clip(const IRect& clip) {
+    if (clip.width() > limits::kMaxCanvasDimension || clip.height() > limits::kMaxCanvasDimension)
+        throw Error(ErrorKind::Limit, "raster target exceeds " + std::to_string(limits::kMaxCanvasDimension) +
+                                          " pixels per side");
+}
+
+// Transformed control-point bounds; throws for non-finite input (flatten's checks).
+Rect transformed_bounds(const Path& path, const Affine& m, double tolerance) {
+    check_flatten_input(path, m, tolerance);
+    Rect b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (Point p : path.points()) b.include(m.apply(p));
+    return b;
+}
+
 }  // namespace
 
 struct Rasterizer::Impl {
-    Polyline poly;
     std::vector<Edge> edges;
     std::vector<float> acc;
-    std::vector<std::uint32_t> tags;
+    std::vector<std::uint64_t> tags;
     std::vector<int> row_min, row_max;
     std::vector<std::uint32_t> marked;
+    std::vector<raster::CellEdge> log;
     std::vector<std::uint8_t> cov;
-    std::vector<raster::RowPiece> pieces;
     raster::ExactScratch scratch;
     std::vector<std::pair<std::uint32_t, std::uint8_t>> patches;
     std::vector<std::uint32_t> order;   // edges sorted by top y (multi-strip shapes)
     std::vector<std::uint32_t> active;  // edges overlapping the current strip
 
-    void fill(const FillOptions& opts, const IRect& clip, SpanSink& sink, RasterStats& stats);
-    void run_strip(const FillOptions& opts, raster::Strip& s, const std::uint32_t* ids, std::size_t n,
-                   int ox, int oy, SpanSink& sink, RasterStats& stats);
+    // Rasterizes `edges` (local to the bounds at (ox, oy), bw x bh pixels).
+    void run(const FillOptions& opts, int ox, int oy, int bw, int bh, SpanSink& sink, RasterStats& stats);
+    void run_strip(const FillOptions& opts, raster::Strip& s, const std::uint32_t* ids, std::size_t n, int ox, int oy,
+                   SpanSink& sink, RasterStats& stats);
+    void resolve_row(const FillOptions& opts, raster::Strip& s, int r, std::size_t& mi, std::size_t& li);
 };
 
 Rasterizer::Rasterizer() : impl_(std::make_unique<Impl>()) {}
@@ -162,52 +186,30 @@ Rasterizer::~Rasterizer() = default;
 Rasterizer::Rasterizer(Rasterizer&&) noexcept = default;
 Rasterizer& Rasterizer::operator=(Rasterizer&&) noexcept = default;
 
-static void check_clip(const IRect& clip) {
-    if (clip.width() > limits::kMaxCanvasDimension || clip.height() > limits::kMaxCanvasDimension)
-        throw Error(ErrorKind::Limit, "raster target exceeds " + std::to_string(limits::kMaxCanvasDimension) +
-                                          " pixels per side");
-}
-
 void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opts, const IRect& clip, SpanSink& sink) {
     stats_ = {};
     check_clip(clip);
-    if (clip.empty()) return;
-    // Curves wholly outside the target become chords; a one-pixel margin keeps the boundary exact.
-    const Rect cull{clip.x0 - 1.0, clip.y0 - 1.0, clip.x1 + 1.0, clip.y1 + 1.0};
-    flatten_culled(path, m, opts.tolerance, &cull, impl_->poly);
-    impl_->fill(opts, clip, sink, stats_);
-}
-
-void Rasterizer::fill(const Polyline& poly, const FillOptions& opts, const IRect& clip, SpanSink& sink) {
-    stats_ = {};
-    check_clip(clip);
-    if (clip.empty()) return;
-    for (const Point& p : poly.points)
-        if (!p.is_finite()) throw Error(ErrorKind::InvalidData, "polyline has a non-finite coordinate");
-    impl_->poly = poly;
-    impl_->fill(opts, clip, sink, stats_);
-}
-
-void Rasterizer::Impl::fill(const FillOptions& opts, const IRect& clip, SpanSink& sink, RasterStats& stats) {
+    if (clip.empty() || path.empty()) return;
+    const Rect b = transformed_bounds(path, m, opts.tolerance);
+    auto& edges = impl_->edges;
     edges.clear();
-    const double W = clip.width(), H = clip.height();
-    EdgeBuilder eb{edges, W, H};
-    std::size_t begin = 0;
-    const Point origin{static_cast<double>(clip.x0), static_cast<double>(clip.y0)};
-    for (std::uint32_t end : poly.contour_ends) {
-        if (end - begin >= 2) {
-            for (std::size_t i = begin; i < end; ++i) {
-                const Point p = poly.points[i] - origin;
-                const Point q = poly.points[i + 1 < end ? i + 1 : begin] - origin;
-                eb.add(p, q);
-            }
-        }
-        eb.close_contour();
-        begin = end;
+    if (b.x0 >= clip.x0 && b.y0 >= clip.y0 && b.x1 <= clip.x1 && b.y1 <= clip.y1) {
+        // Inside the target: no clipping; edges local to the control bounds.
+        const int ox = static_cast<int>(std::floor(b.x0)), oy = static_cast<int>(std::floor(b.y0));
+        const int bw = std::max(1, static_cast<int>(std::ceil(b.x1)) - ox);
+        const int bh = std::max(1, static_cast<int>(std::ceil(b.y1)) - oy);
+        EdgeSink<false> es{edges};
+        flatten_into(path, Affine::translate(-ox, -oy) * m, opts.tolerance, nullptr, es);
+        es.end();
+        impl_->run(opts, ox, oy, std::min(bw, clip.x1 - ox), std::min(bh, clip.y1 - oy), sink, stats_);
+        return;
     }
+    // Partly or wholly outside: clip. Curves wholly outside (with a one-pixel margin) become chords.
+    const Rect cull{clip.x0 - 1.0, clip.y0 - 1.0, clip.x1 + 1.0, clip.y1 + 1.0};
+    EdgeSink<true> es{edges, static_cast<double>(clip.width()), static_cast<double>(clip.height())};
+    flatten_into(path, Affine::translate(-clip.x0, -clip.y0) * m, opts.tolerance, &cull, es);
+    es.end();
     if (edges.empty()) return;
-
-    // Pixel bounds of the clipped edges (local to the clip rectangle).
     double minx = INFINITY, maxx = -INFINITY, miny = INFINITY, maxy = -INFINITY;
     for (const Edge& e : edges) {
         minx = std::min({minx, e.x0, e.x1});
@@ -217,17 +219,34 @@ void Rasterizer::Impl::fill(const FillOptions& opts, const IRect& clip, SpanSink
     }
     const int bx0 = std::clamp(static_cast<int>(std::floor(minx)), 0, clip.width());
     int bx1 = std::clamp(static_cast<int>(std::ceil(maxx)), 0, clip.width());
-    if (eb.clipped_right) bx1 = clip.width();
+    if (es.clipped_right) bx1 = clip.width();  // right of every edge the coverage may stay constant
     const int by0 = std::clamp(static_cast<int>(std::floor(miny)), 0, clip.height());
     const int by1 = std::clamp(static_cast<int>(std::ceil(maxy)), 0, clip.height());
-    const int bw = bx1 - bx0, bh = by1 - by0;
-    if (bw <= 0 || bh <= 0) return;
+    if (bx1 <= bx0 || by1 <= by0) return;
     for (Edge& e : edges) {
         e.x0 -= bx0; e.x1 -= bx0;
         e.y0 -= by0; e.y1 -= by0;
     }
-    stats.segments = edges.size();
+    impl_->run(opts, clip.x0 + bx0, clip.y0 + by0, bx1 - bx0, by1 - by0, sink, stats_);
+}
 
+void Rasterizer::fill(const Polyline& poly, const FillOptions& opts, const IRect& clip, SpanSink& sink) {
+    Path p;
+    std::size_t begin = 0;
+    for (std::uint32_t end : poly.contour_ends) {
+        if (end > begin) {
+            p.move_to(poly.points[begin]);
+            for (std::size_t i = begin + 1; i < end; ++i) p.line_to(poly.points[i]);
+            p.close();
+        }
+        begin = end;
+    }
+    fill(p, Affine{}, opts, clip, sink);
+}
+
+void Rasterizer::Impl::run(const FillOptions& opts, int ox, int oy, int bw, int bh, SpanSink& sink, RasterStats& stats) {
+    if (edges.empty() || bw <= 0 || bh <= 0) return;
+    stats.segments = edges.size();
     raster::Strip s;
     s.width = bw;
     s.stride = static_cast<std::size_t>(bw) + 2;
@@ -245,15 +264,14 @@ void Rasterizer::Impl::fill(const FillOptions& opts, const IRect& clip, SpanSink
     s.tags = opts.exact_overlaps ? tags.data() : nullptr;
     s.row_min = row_min.data();
     s.row_max = row_max.data();
+    s.edges = edges.data();
     s.marked = &marked;
-    const int ox = clip.x0 + bx0, oy = clip.y0 + by0;
+    s.log = &log;
 
     if (bh <= rows_per_strip) {
         s.y0 = 0;
         s.rows = bh;
-        order.resize(edges.size());
-        for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-        run_strip(opts, s, order.data(), order.size(), ox, oy, sink, stats);
+        run_strip(opts, s, nullptr, edges.size(), ox, oy, sink, stats);
         return;
     }
     // Several strips: sweep edges sorted by their top.
@@ -267,13 +285,40 @@ void Rasterizer::Impl::fill(const FillOptions& opts, const IRect& clip, SpanSink
         s.y0 = y;
         s.rows = std::min(rows_per_strip, bh - y);
         const double strip_bottom = y + s.rows;
-        // Drop edges that ended above this strip, add those starting in it.
         active.erase(std::remove_if(active.begin(), active.end(),
-                                    [&](std::uint32_t i) { return std::max(edges[i].y0, edges[i].y1) <= y; }),
+                                    [&](std::uint32_t i) { return std::max(edges[i].y0, edges[i].y1) < y; }),
                      active.end());
         while (next < order.size() && top(order[next]) < strip_bottom) active.push_back(order[next++]);
         if (active.empty()) continue;
         run_strip(opts, s, active.data(), active.size(), ox, oy, sink, stats);
+    }
+}
+
+void Rasterizer::Impl::resolve_row(const FillOptions& opts, raster::Strip& s, int r, std::size_t& mi, std::size_t& li) {
+    // Marked cells of row r: their accumulated integrals (prefix sums), then exact coverage.
+    const std::size_t row_base = static_cast<std::size_t>(r) * s.stride;
+    const float* acc_row = s.acc + row_base;
+    double prefix = 0;
+    int pos = s.row_min[r];
+    while (mi < marked.size() && marked[mi] < row_base + s.stride) {
+        const std::uint32_t cell = marked[mi];
+        const int col = static_cast<int>(cell - row_base);
+        for (; pos <= col; ++pos) prefix += acc_row[pos];
+        auto& ids = scratch.ids;
+        ids.clear();
+        while (li < log.size() && log[li].cell < cell) ++li;
+        for (; li < log.size() && log[li].cell == cell; ++li) {
+            const std::uint32_t id = log[li].edge;
+            if (!ids.empty() && ids.back() == id) continue;
+            ids.push_back(id);
+        }
+        std::sort(ids.begin(), ids.end());
+        ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+        if (col < s.width) {
+            const double c = raster::exact_cell_coverage(edges.data(), ids, col, s.y0 + r, prefix, opts.rule, scratch);
+            patches.push_back({cell, to_u8(c)});
+        }
+        ++mi;
     }
 }
 
@@ -285,92 +330,61 @@ void Rasterizer::Impl::run_strip(const FillOptions& opts, raster::Strip& s, cons
         s.row_max[r] = -1;
     }
     marked.clear();
-    for (std::size_t i = 0; i < n; ++i) raster::accumulate_edge(edges[ids[i]], ids[i], s);
-
-    // Exact recomputation of marked cells, row by row.
-    patches.clear();
+    log.clear();
+    if (ids) {
+        for (std::size_t i = 0; i < n; ++i) raster::accumulate_edge(edges[ids[i]], ids[i], s);
+    } else {
+        for (std::uint32_t i = 0; i < n; ++i) raster::accumulate_edge(edges[i], i, s);
+    }
     if (!marked.empty()) {
         std::sort(marked.begin(), marked.end());
+        std::sort(log.begin(), log.end());
         stats.exact_cells += marked.size();
-        std::size_t mi = 0;
-        while (mi < marked.size()) {
-            const int local = static_cast<int>(marked[mi] / s.stride);
-            const double ry = s.y0 + local;
-            pieces.clear();
-            for (std::size_t i = 0; i < n; ++i) {
-                const Edge& e = edges[ids[i]];
-                double x0 = e.x0, y0 = e.y0, x1 = e.x1, y1 = e.y1;
-                int dir = 1;
-                if (y0 == y1) continue;  // horizontal: crossed by no horizontal line, no area
-                if (y0 > y1) { std::swap(x0, x1); std::swap(y0, y1); dir = -1; }
-                if (y1 <= ry || y0 >= ry + 1) continue;
-                const double k = (x1 - x0) / (y1 - y0);
-                const double ya = std::max(y0, ry), yb = std::min(y1, ry + 1);
-                const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
-                pieces.push_back({std::clamp(x0 + (ya - y0) * k, xlo, xhi), ya,
-                                  std::clamp(x0 + (yb - y0) * k, xlo, xhi), yb, dir});
-            }
-            for (; mi < marked.size() && static_cast<int>(marked[mi] / s.stride) == local; ++mi) {
-                const int col = static_cast<int>(marked[mi] % s.stride);
-                if (col >= s.width) continue;  // spill cells are never shown
-                const double c = raster::exact_cell_coverage(pieces, col, ry, opts.rule, scratch);
-                patches.push_back({marked[mi], to_u8(c)});
-            }
-        }
     }
-
-    // Rows: prefix sum + fill rule, patches, delivery; clear what was touched.
-    std::size_t pi = 0;
+    std::size_t mi = 0, li = 0;
     for (int r = 0; r < s.rows; ++r) {
         if (s.row_max[r] < 0) continue;
-        float* acc_row = s.acc + static_cast<std::size_t>(r) * s.stride;
+        const std::size_t row_base = static_cast<std::size_t>(r) * s.stride;
+        patches.clear();
+        if (mi < marked.size() && marked[mi] < row_base + s.stride) resolve_row(opts, s, r, mi, li);
+        float* acc_row = s.acc + row_base;
         const int from = s.row_min[r];
-        const int last = s.row_max[r];  // last acc index written (may be a spill cell)
+        const int last = s.row_max[r];  // last cell written (may be a spill cell)
         const int to = std::min(last + 1, s.width);
         const float sum = raster::accumulate_row(acc_row, cov.data(), from, to, 0.0f, opts.rule);
-        // Beyond the last touched cell the coverage is constant.
         int end = to;
-        if (to < s.width) {
+        if (to < s.width) {  // beyond the last touched cell the coverage is constant
             const std::uint8_t tail = raster::coverage_u8(sum, opts.rule);
             if (tail != 0) {
                 std::memset(cov.data() + to, tail, static_cast<std::size_t>(s.width - to));
                 end = s.width;
             }
         }
-        for (int k = s.width; k <= last; ++k) acc_row[k] = 0.0f;  // spill cells
-        if (s.tags) {
-            std::memset(s.tags + static_cast<std::size_t>(r) * s.stride + from, 0,
-                        sizeof(std::uint32_t) * static_cast<std::size_t>(last - from + 1));
-        }
-        const std::size_t row_base = static_cast<std::size_t>(r) * s.stride;
-        while (pi < patches.size() && patches[pi].first < row_base + s.stride) {
-            const int col = static_cast<int>(patches[pi].first - row_base);
-            cov[static_cast<std::size_t>(col)] = patches[pi].second;  // marked cells lie in [from, to)
-            ++pi;
-        }
+        for (int k = std::max(s.width, from); k <= last; ++k) acc_row[k] = 0.0f;  // spill cells
+        if (s.tags) std::memset(s.tags + row_base + from, 0, sizeof(std::uint64_t) * static_cast<std::size_t>(last - from + 1));
+        for (const auto& p : patches) cov[p.first - row_base] = p.second;
         if (end > from) sink.row(oy + s.y0 + r, ox + from, end - from, cov.data() + from);
     }
 }
 
 Mask Rasterizer::fill_mask(const Path& path, const Affine& m, const FillOptions& opts) {
-    if (!m.is_finite() || !path.is_finite())
-        throw Error(ErrorKind::InvalidData, "path or transform has a non-finite value");
-    const Rect b = transform_bounds(m, path.control_bounds());
+    const Rect b = transformed_bounds(path, m, opts.tolerance);
+    if (path.empty() || b.x0 > b.x1) return {};
     const double lim = limits::kMaxCanvasDimension;
     IRect r{static_cast<int>(std::floor(std::clamp(b.x0, -lim, lim))), static_cast<int>(std::floor(std::clamp(b.y0, -lim, lim))),
             static_cast<int>(std::ceil(std::clamp(b.x1, -lim, lim))), static_cast<int>(std::ceil(std::clamp(b.y1, -lim, lim)))};
-    if (r.x1 - r.x0 > limits::kMaxCanvasDimension) r.x1 = r.x0 + limits::kMaxCanvasDimension;
-    if (r.y1 - r.y0 > limits::kMaxCanvasDimension) r.y1 = r.y0 + limits::kMaxCanvasDimension;
+    if (r.x1 == r.x0) ++r.x1;
+    if (r.y1 == r.y0) ++r.y1;
+    r.x1 = std::min(r.x1, r.x0 + limits::kMaxCanvasDimension);
+    r.y1 = std::min(r.y1, r.y0 + limits::kMaxCanvasDimension);
     return fill_mask(path, m, opts, r);
 }
 
 Mask Rasterizer::fill_mask(const Path& path, const Affine& m, const FillOptions& opts, const IRect& clip) {
     Mask mask;
+    if (clip.empty()) return mask;
+    check_clip(clip);
     mask.bounds = clip;
-    if (clip.empty()) {
-        mask.bounds = {};
-        return mask;
-    }
     mask.data.assign(static_cast<std::size_t>(clip.width()) * static_cast<std::size_t>(clip.height()), 0);
     MaskSink sink(mask);
     fill(path, m, opts, clip, sink);

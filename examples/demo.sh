@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The main job on shipped data: renders the demo pictures into out/ with the casteljau CLI.
+# Usage: examples/demo.sh [BUILD_DIR] [OUT_DIR]   (defaults: build, out)
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/.." && pwd)
+build=${1:-$root/build}
+out=${2:-$root/out}
+cj="$build/casteljau"
+mkdir -p "$out"
+n=0
+run() { "$cj" "$@"; n=$((n + 1)); }
+
+# Paths and shapes.
+run path "M 20 180 C 20 20 180 20 180 180 Z" --size 200x200 --fill "#1f77b4" --background white -o "$out/path-arch.png"
+run path "M100 10 L161 190 L8 78 L192 78 L39 190 Z" --size 200x200 --fill crimson --background white \
+  --fill-rule nonzero -o "$out/star-nonzero.png"
+run path "M100 10 L161 190 L8 78 L192 78 L39 190 Z" --size 200x200 --fill crimson --background white \
+  --fill-rule evenodd -o "$out/star-evenodd.png"
+run path "M 60 100 a 40 40 0 1 0 80 0 a 40 40 0 1 0 -80 0 M 100 100 a 40 40 0 1 0 80 0 a 40 40 0 1 0 -80 0" \
+  --size 240x200 --fill "rgba(0, 128, 0, 0.6)" --background white --fill-rule evenodd -o "$out/rings-evenodd.png"
+run path @"$here/data/heart.path" --size 256x256 --transform "2 0 0 2 28 28" --fill "hsl(340, 80%, 55%)" \
+  --background "#fffdf5" -o "$out/heart.png"
+run svg "$here/data/shapes.svg" -o "$out/shapes.png"
+run svg "$here/data/shapes.svg" --scale 3 -o "$out/shapes-3x.png"
+
+echo "casteljau demo: wrote $n images to $out"

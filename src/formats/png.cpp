@@ -1,0 +1,379 @@
+// Encode stage: PNG through libpng, and atomic file I/O (include/casteljau/png.hpp).
+//
+// Decoding uses libpng's classic API with explicit transformations, so every PNG (palette with or
+// without tRNS, grey 1/2/4/8/16 bits, grey+alpha, RGB, RGBA, 16-bit, Adam7-interlaced) comes out
+// as straight RGBA8 with no gamma or colour conversion (gAMA, cHRM, sRGB and iCCP are ignored);
+// 16-bit samples are scaled to 8 bits with rounding (png_set_scale_16). The size in the header is
+// checked against casteljau::limits before any pixel memory is allocated. Encoding writes 8-bit
+// RGBA with straight alpha and an sRGB chunk (with the gAMA and cHRM that the PNG specification
+// asks to accompany it).
+//
+// libpng reports errors with longjmp. Each function here that calls setjmp holds only trivially
+// destructible locals, and so do the callbacks libpng calls, so a longjmp never skips a C++
+// destructor; every C++ object (Pixmap, vectors, the libpng handles' guards) lives in the caller.
+#include "casteljau/png.hpp"
+
+#include <fcntl.h>
+#include <png.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csetjmp>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <string>
+
+#include "casteljau/error.hpp"
+
+namespace casteljau {
+
+namespace {
+
+// --- libpng plumbing ------------------------------------------------------------------------
+
+// Shared by the read and write paths: where the error callback leaves libpng's message.
+struct ErrorSink {
+    char message[256] = "unknown libpng error";
+};
+
+[[noreturn]] void on_png_error(png_structp png, png_const_charp msg) {
+    auto* sink = static_cast<ErrorSink*>(png_get_error_ptr(png));
+    if (sink != nullptr) {
+        std::snprintf(sink->message, sizeof sink->message, "%s", msg != nullptr ? msg : "unknown libpng error");
+    }
+    png_longjmp(png, 1);
+}
+
+void on_png_warning(png_structp, png_const_charp) {}  // warnings (bad ancillary chunks...) are ignored
+
+struct ReadState {
+    ErrorSink sink;
+    const std::uint8_t* data = nullptr;
+    std::size_t size = 0;
+    std::size_t pos = 0;
+};
+
+void read_from_memory(png_structp png, png_bytep out, std::size_t n) {
+    auto* st = static_cast<ReadState*>(png_get_io_ptr(png));
+    if (n > st->size - st->pos) png_error(png, "the data ends early (truncated file)");
+    std::memcpy(out, st->data + st->pos, n);
+    st->pos += n;
+}
+
+struct ReadHandles {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    ReadHandles() = default;
+    ReadHandles(const ReadHandles&) = delete;
+    ReadHandles& operator=(const ReadHandles&) = delete;
+    ~ReadHandles() { png_destroy_read_struct(&png, info != nullptr ? &info : nullptr, nullptr); }
+};
+
+// Phase 1: signature and header chunks up to the first IDAT. No C++ objects with destructors here.
+bool png_read_header(png_structp png, png_infop info, png_uint_32* width, png_uint_32* height) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_read_info(png, info);
+    *width = png_get_image_width(png, info);
+    *height = png_get_image_height(png, info);
+    return true;
+}
+
+// Phase 2: converts any colour type and bit depth to RGBA8 and reads all rows (every Adam7 pass
+// when interlaced) into `rows`, which the caller sized from the checked header. No C++ objects
+// with destructors here.
+bool png_read_rgba8(png_structp png, png_infop info, png_bytepp rows, std::size_t expected_rowbytes) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    const int color_type = png_get_color_type(png, info);
+    const int bit_depth = png_get_bit_depth(png, info);
+    if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+    if (color_type == PNG_COLOR_TYPE_GRAY && bit_depth < 8) png_set_expand_gray_1_2_4_to_8(png);
+    if (png_get_valid(png, info, PNG_INFO_tRNS) != 0) png_set_tRNS_to_alpha(png);
+    if (bit_depth == 16) png_set_scale_16(png);
+    if (color_type == PNG_COLOR_TYPE_GRAY || color_type == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_gray_to_rgb(png);
+    // Adds opaque alpha only where the image still has none after the tRNS expansion.
+    if ((color_type & PNG_COLOR_MASK_ALPHA) == 0) png_set_filler(png, 0xff, PNG_FILLER_AFTER);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    if (png_get_bit_depth(png, info) != 8 || png_get_channels(png, info) != 4 ||
+        png_get_rowbytes(png, info) != expected_rowbytes)
+        png_error(png, "could not convert the image to 8-bit RGBA");
+    png_read_image(png, rows);
+    return true;
+}
+
+struct WriteState {
+    ErrorSink sink;
+    std::vector<std::uint8_t>* out = nullptr;
+};
+
+void write_to_memory(png_structp png, png_bytep data, std::size_t n) {
+    auto* st = static_cast<WriteState*>(png_get_io_ptr(png));
+    bool ok = true;
+    try {
+        st->out->insert(st->out->end(), data, data + n);
+    } catch (const std::bad_alloc&) {
+        ok = false;
+    }
+    if (!ok) png_error(png, "out of memory while encoding");  // no C++ object is alive here
+}
+
+void flush_memory(png_structp) {}
+
+struct WriteHandles {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    WriteHandles() = default;
+    WriteHandles(const WriteHandles&) = delete;
+    WriteHandles& operator=(const WriteHandles&) = delete;
+    ~WriteHandles() { png_destroy_write_struct(&png, info != nullptr ? &info : nullptr); }
+};
+
+// Writes the whole image, un-premultiplying one row at a time into `row` (width x 4 bytes, owned
+// by the caller). No C++ objects with destructors here.
+bool png_write_rgba8(png_structp png, png_infop info, const Pixmap* pixmap, png_bytep row) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    const int w = pixmap->width(), h = pixmap->height();
+    png_set_IHDR(png, info, static_cast<png_uint_32>(w), static_cast<png_uint_32>(h), 8, PNG_COLOR_TYPE_RGB_ALPHA,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(png, info);
+    for (int y = 0; y < h; ++y) {
+        const std::uint8_t* src = pixmap->row(y);
+        for (int x = 0; x < w; ++x) {
+            const std::uint8_t* p = src + 4 * static_cast<std::size_t>(x);
+            const Color c = unpremultiply(PremulPixel{p[0], p[1], p[2], p[3]});
+            png_bytep q = row + 4 * static_cast<std::size_t>(x);
+            q[0] = c.r;
+            q[1] = c.g;
+            q[2] = c.b;
+            q[3] = c.a;
+        }
+        png_write_row(png, row);
+    }
+    png_write_end(png, info);
+    return true;
+}
+
+// --- files ----------------------------------------------------------------------------------
+
+std::string quote(const std::string& path) { return "'" + path + "'"; }
+
+[[noreturn]] void throw_io(const std::string& what, const std::string& path, int err) {
+    throw Error(ErrorKind::Io, what + " " + quote(path) + ": " + std::strerror(err));
+}
+
+class FileDescriptor {
+public:
+    explicit FileDescriptor(int fd) : fd_(fd) {}
+    FileDescriptor(const FileDescriptor&) = delete;
+    FileDescriptor& operator=(const FileDescriptor&) = delete;
+    ~FileDescriptor() {
+        if (fd_ >= 0) ::close(fd_);
+    }
+    int get() const { return fd_; }
+    // Closes now and reports close()'s error (0 or an errno value).
+    int close() {
+        const int r = ::close(fd_);
+        fd_ = -1;
+        return r == 0 ? 0 : errno;
+    }
+
+private:
+    int fd_;
+};
+
+// Writes all bytes; returns 0 or an errno value.
+int write_all(int fd, std::span<const std::uint8_t> bytes) {
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return errno;
+        }
+        if (n == 0) return EIO;
+        done += static_cast<std::size_t>(n);
+    }
+    return 0;
+}
+
+// The process umask, read without changing it (umask() would be a race between threads).
+mode_t current_umask() {
+    mode_t mask = 022;
+    if (std::FILE* f = std::fopen("/proc/self/status", "re")) {
+        char line[256];
+        while (std::fgets(line, sizeof line, f) != nullptr) {
+            unsigned value = 0;
+            if (std::sscanf(line, "Umask: %o", &value) == 1) {
+                mask = static_cast<mode_t>(value & 0777);
+                break;
+            }
+        }
+        std::fclose(f);
+    }
+    return mask;
+}
+
+}  // namespace
+
+// --- PNG ------------------------------------------------------------------------------------
+
+std::vector<std::uint8_t> encode_png(const Pixmap& pixmap) {
+    if (pixmap.width() < 1 || pixmap.height() < 1)
+        throw Error(ErrorKind::InvalidArgument, "cannot encode an empty Pixmap as PNG");
+    std::vector<std::uint8_t> out;
+    out.reserve(4096);
+    std::vector<std::uint8_t> row(pixmap.stride());
+    WriteState state;
+    state.out = &out;
+    WriteHandles h;
+    h.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &state.sink, on_png_error, on_png_warning);
+    if (h.png == nullptr) throw std::bad_alloc();
+    h.info = png_create_info_struct(h.png);
+    if (h.info == nullptr) throw std::bad_alloc();
+    png_set_write_fn(h.png, &state, write_to_memory, flush_memory);
+    if (!png_write_rgba8(h.png, h.info, &pixmap, row.data()))
+        throw Error(ErrorKind::InvalidData, std::string("PNG encoding failed: ") + state.sink.message);
+    return out;
+}
+
+Pixmap decode_png(std::span<const std::uint8_t> bytes) {
+    if (bytes.empty()) throw Error(ErrorKind::InvalidData, "not a PNG: the data is empty");
+    if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0)
+        throw Error(ErrorKind::InvalidData, "not a PNG: the PNG signature is missing");
+    ReadState state;
+    state.data = bytes.data();
+    state.size = bytes.size();
+    ReadHandles h;
+    h.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &state.sink, on_png_error, on_png_warning);
+    if (h.png == nullptr) throw std::bad_alloc();
+    h.info = png_create_info_struct(h.png);
+    if (h.info == nullptr) throw std::bad_alloc();
+    png_set_read_fn(h.png, &state, read_from_memory);
+    // Our own limits apply (below, as Error(Limit)); lift libpng's default 1e6-pixel side limit so
+    // that every oversized header is reported the same way.
+    png_set_user_limits(h.png, PNG_UINT_31_MAX, PNG_UINT_31_MAX);
+
+    png_uint_32 width = 0, height = 0;
+    if (!png_read_header(h.png, h.info, &width, &height))
+        throw Error(ErrorKind::InvalidData, std::string("invalid PNG: ") + state.sink.message);
+    if (width > static_cast<png_uint_32>(limits::kMaxCanvasDimension) ||
+        height > static_cast<png_uint_32>(limits::kMaxCanvasDimension) ||
+        static_cast<long long>(width) * static_cast<long long>(height) > limits::kMaxCanvasPixels)
+        throw Error(ErrorKind::Limit, "PNG of " + std::to_string(width) + "x" + std::to_string(height) +
+                                          " pixels exceeds the image limits (" +
+                                          std::to_string(limits::kMaxCanvasDimension) + " pixels per side, " +
+                                          std::to_string(limits::kMaxCanvasPixels) + " pixels in all)");
+    if (width < 1 || height < 1) throw Error(ErrorKind::InvalidData, "invalid PNG: zero width or height");
+
+    Pixmap pixmap(static_cast<int>(width), static_cast<int>(height));
+    std::vector<png_bytep> rows(height);
+    for (png_uint_32 y = 0; y < height; ++y) rows[y] = pixmap.row(static_cast<int>(y));
+    if (!png_read_rgba8(h.png, h.info, rows.data(), pixmap.stride()))
+        throw Error(ErrorKind::InvalidData, std::string("invalid PNG: ") + state.sink.message);
+
+    // Straight alpha in the file -> premultiplied in the Pixmap.
+    for (int y = 0; y < pixmap.height(); ++y) {
+        std::uint8_t* p = pixmap.row(y);
+        for (int x = 0; x < pixmap.width(); ++x, p += 4) {
+            const PremulPixel q = premultiply(Color{p[0], p[1], p[2], p[3]});
+            p[0] = q.r;
+            p[1] = q.g;
+            p[2] = q.b;
+            p[3] = q.a;
+        }
+    }
+    return pixmap;
+}
+
+void write_png(const Pixmap& pixmap, const std::string& path) { write_file_atomic(path, encode_png(pixmap)); }
+
+Pixmap read_png(const std::string& path) {
+    const std::vector<std::uint8_t> bytes = read_file(path);
+    try {
+        return decode_png(bytes);
+    } catch (const Error& e) {
+        throw Error(e.kind(), quote(path) + ": " + e.what());
+    }
+}
+
+// --- files ----------------------------------------------------------------------------------
+
+void write_file_atomic(const std::string& path, std::span<const std::uint8_t> bytes) {
+    if (path.empty()) throw Error(ErrorKind::Io, "cannot write a file with an empty name");
+    if (path.back() == '/') throw_io("cannot write", path, EISDIR);
+
+    std::string target = path;  // a symbolic link is followed: its target is replaced
+    struct stat st {};
+    bool exists = ::stat(path.c_str(), &st) == 0;
+    if (exists && S_ISDIR(st.st_mode)) throw_io("cannot write", path, EISDIR);
+    if (exists && !S_ISREG(st.st_mode)) {
+        // A device, FIFO or socket (/dev/null, /dev/stdout, a pipe): write to it directly; there
+        // is nothing to rename over, and replacing it would be wrong.
+        FileDescriptor fd(::open(path.c_str(), O_WRONLY | O_CLOEXEC));
+        if (fd.get() < 0) throw_io("cannot write", path, errno);
+        if (int err = write_all(fd.get(), bytes)) throw_io("cannot write", path, err);
+        if (int err = fd.close()) throw_io("cannot write", path, err);
+        return;
+    }
+    struct stat lst {};
+    if (exists && ::lstat(path.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode)) {
+        if (char* real = ::realpath(path.c_str(), nullptr)) {
+            target = real;
+            std::free(real);
+        }
+    }
+
+    // The temporary file: ".NAME.XXXXXX.tmp"-like, next to the destination (same file system,
+    // so rename() is atomic). The name part is shortened to keep within NAME_MAX.
+    const std::size_t slash = target.rfind('/');
+    const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : target.substr(0, slash));
+    const std::string prefix = slash == std::string::npos ? "" : target.substr(0, slash + 1);
+    const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
+    std::string temp = prefix + "." + base.substr(0, 96) + ".tmp-XXXXXX";
+    FileDescriptor fd(::mkstemp(temp.data()));
+    if (fd.get() < 0) {
+        const int err = errno;
+        throw Error(ErrorKind::Io, "cannot write " + quote(path) + ": cannot create a temporary file in " +
+                                       quote(dir) + ": " + std::strerror(err));
+    }
+    auto fail = [&](int err) {
+        ::unlink(temp.c_str());
+        throw_io("cannot write", path, err);
+    };
+    if (int err = write_all(fd.get(), bytes)) fail(err);
+    // mkstemp creates the file 0600; give it the mode the destination had, or what a plain
+    // open(O_CREAT, 0666) would have given it under the current umask.
+    const mode_t mode = exists ? (st.st_mode & 0777) : (0666 & ~current_umask());
+    if (::fchmod(fd.get(), mode) != 0) fail(errno);
+    if (::fsync(fd.get()) != 0) fail(errno);
+    if (int err = fd.close()) fail(err);
+    if (::rename(temp.c_str(), target.c_str()) != 0) fail(errno);
+}
+
+std::vector<std::uint8_t> read_file(const std::string& path) {
+    if (path.empty()) throw Error(ErrorKind::Io, "cannot read a file with an empty name");
+    FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    if (fd.get() < 0) throw_io("cannot read", path, errno);
+    struct stat st {};
+    if (::fstat(fd.get(), &st) != 0) throw_io("cannot read", path, errno);
+    if (S_ISDIR(st.st_mode)) throw_io("cannot read", path, EISDIR);
+    std::vector<std::uint8_t> out;
+    if (S_ISREG(st.st_mode) && st.st_size > 0) out.reserve(static_cast<std::size_t>(st.st_size));
+    std::uint8_t buf[65536];
+    for (;;) {
+        const ssize_t n = ::read(fd.get(), buf, sizeof buf);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            throw_io("cannot read", path, errno);
+        }
+        if (n == 0) break;
+        out.insert(out.end(), buf, buf + n);
+    }
+    return out;
+}
+
+}  // namespace casteljau
