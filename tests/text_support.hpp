@@ -128,7 +128,14 @@ public:
     // the pixel grid: exact-area coverage of FreeType's flattening at k times finer resolution, so
     // FreeType's own flattening error (up to 1/16 px for conics, more for cubics) shrinks k-fold.
     Gray render_supersampled(std::uint32_t glyph, double size, casteljau::Point origin, int k) {
-        const Gray big = render(glyph, size * k, casteljau::Point{origin.x * k, origin.y * k});
+        return downsample(render(glyph, size * k, casteljau::Point{origin.x * k, origin.y * k}), k);
+    }
+    // Same for a transformed glyph (see render(glyph, size, m)).
+    Gray render_supersampled(std::uint32_t glyph, double size, const casteljau::Affine& m, int k) {
+        return downsample(render(glyph, size, casteljau::Affine::scale(k) * m), k);
+    }
+
+    static Gray downsample(const Gray& big, int k) {
         Gray g;
         if (big.bounds.empty()) return g;
         auto fdiv = [k](int v) { return v >= 0 ? v / k : -((-v + k - 1) / k); };
@@ -197,11 +204,13 @@ DiffStats compare_coverage(const A& a, const B& b) {
 // source-over with the same composite_span. With `transform` null: each glyph origin rounded to
 // 1/steps px as draw_text's cached path does; otherwise glyphs are placed exactly under
 // transform x translate(origin) (draw_text's outline path). `ft` holds one FreeType renderer per
-// layout font (same variation).
+// layout font (same variation). `supersample` > 1 renders each glyph that many times finer and
+// box-filters it (see FtRenderer::render_supersampled).
 inline casteljau::Pixmap reference_text_image(const casteljau::TextLayout& layout, std::vector<FtRenderer*> ft,
                                               int width, int height, casteljau::Point origin,
                                               casteljau::Color background, const casteljau::Paint& paint,
-                                              int steps = 4, const casteljau::Affine* transform = nullptr) {
+                                              int steps = 4, const casteljau::Affine* transform = nullptr,
+                                              int supersample = 1) {
     casteljau::Pixmap pm(width, height);
     pm.fill(background);
     for (const auto& g : layout.glyphs) {
@@ -209,11 +218,13 @@ inline casteljau::Pixmap reference_text_image(const casteljau::TextLayout& layou
         if (!transform) {
             const double px = std::round((g.position.x + origin.x) * steps) / steps;
             const double py = std::round((g.position.y + origin.y) * steps) / steps;
-            gr = ft[g.font]->render(g.glyph, layout.size, casteljau::Point{px, py});
+            gr = supersample > 1 ? ft[g.font]->render_supersampled(g.glyph, layout.size, casteljau::Point{px, py}, supersample)
+                                 : ft[g.font]->render(g.glyph, layout.size, casteljau::Point{px, py});
         } else {
             const casteljau::Affine m = *transform * casteljau::Affine::translate(origin.x + g.position.x, origin.y + g.position.y) *
                                         casteljau::Affine::scale(1, -1);
-            gr = ft[g.font]->render(g.glyph, layout.size, m);
+            gr = supersample > 1 ? ft[g.font]->render_supersampled(g.glyph, layout.size, m, supersample)
+                                 : ft[g.font]->render(g.glyph, layout.size, m);
         }
         for (int y = std::max(gr.bounds.y0, 0); y < std::min(gr.bounds.y1, height); ++y) {
             const int x0 = std::max(gr.bounds.x0, 0), x1 = std::min(gr.bounds.x1, width);
