@@ -91,27 +91,6 @@ std::optional<double> parse_opacity(std::string_view text) {
     return std::clamp(*v, 0.0, 1.0);
 }
 
-// SVG `points`: numbers separated by whitespace and/or a comma, read pairwise up to the first
-// error; an odd trailing number is dropped (SVG 2 error handling: render up to the error).
-std::vector<Point> parse_points(std::string_view s) {
-    std::vector<double> nums;
-    std::size_t i = 0;
-    while (i < s.size()) {
-        while (i < s.size() && (std::isspace(static_cast<unsigned char>(s[i])) || s[i] == ',')) ++i;
-        if (i >= s.size()) break;
-        const char* b = s.data() + i;
-        if (*b == '+') ++b;
-        double v;
-        auto r = std::from_chars(b, s.data() + s.size(), v);
-        if (r.ec != std::errc() || !std::isfinite(v)) break;
-        nums.push_back(v);
-        i = static_cast<std::size_t>(r.ptr - s.data());
-    }
-    std::vector<Point> pts;
-    for (std::size_t k = 0; k + 1 < nums.size(); k += 2) pts.push_back({nums[k], nums[k + 1]});
-    return pts;
-}
-
 class Reader {
 public:
     std::vector<Item> items;
@@ -212,9 +191,10 @@ public:
             p.move_to(length_attr(n, "x1", vw), length_attr(n, "y1", vh));
             p.line_to(length_attr(n, "x2", vw), length_attr(n, "y2", vh));
         } else if (name == "polyline" || name == "polygon") {
-            std::vector<Point> pts = parse_points(n.attribute("points").value());
-            if (pts.size() < 2) return std::nullopt;
-            p.add_polygon(pts, name == "polygon");
+            std::string err;
+            p = parse_points_lenient(n.attribute("points").value(), name == "polygon", &err);
+            if (!err.empty()) warn("<" + std::string(name) + ">: " + err);
+            if (p.points().size() < 2) return std::nullopt;
         } else {
             return std::nullopt;
         }
