@@ -148,6 +148,9 @@ inline void tag_cell(Strip& s, std::uint64_t* tags, std::size_t base, int k, int
             ok = f_then_l ? harmless_bend_and_piece(f, l, e, k, row) : harmless_bend_and_piece(l, f, e, k, row);
         }
         if (ok) {
+            // The tag keeps two ids: log the one it drops now, so that an exact recomputation of
+            // this cell (should a fourth piece mark it) sees every edge through it.
+            log_edge(s, base + k, first);
             tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(3) << kTagCountShift);
             return;
         }
