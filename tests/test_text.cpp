@@ -325,30 +325,30 @@ TEST_CASE("Glyph cache: hits, misses, keys by subpixel offset, size, font and va
     GlyphCache cache;
     Rasterizer r;
     const std::uint32_t a = f.dejavu.glyph_index(U'a');
-    const Mask& m0 = cache.mask(f.dejavu, a, 16, 0, 0, 4, r);
+    const Mask& m0 = cache.mask(f.dejavu, a, 16, {0.0, 0.0}, r);
     const IRect b0 = m0.bounds;
     const std::vector<std::uint8_t> d0 = m0.data;
     CHECK(cache.stats().misses == 1);
-    const Mask& again = cache.mask(f.dejavu, a, 16, 0, 0, 4, r);
+    const Mask& again = cache.mask(f.dejavu, a, 16, {0.0, 0.0}, r);
     CHECK(cache.stats().hits == 1);
     CHECK(again.data == d0);
     // The cached mask is the rasterizer's coverage of the outline at that offset.
     FillOptions opts;
     opts.tolerance = kTextTolerance;
     CHECK(r.fill_mask(f.dejavu.glyph_path(a), f.dejavu.glyph_transform(16, {0.5, 0}), opts).data ==
-          cache.mask(f.dejavu, a, 16, 2, 0, 4, r).data);
+          cache.mask(f.dejavu, a, 16, {2 / 4.0, 0.0}, r).data);
     CHECK(cache.stats().misses == 2);
-    (void)cache.mask(f.dejavu, a, 17, 0, 0, 4, r);
-    (void)cache.mask(f.libertine, a, 16, 0, 0, 4, r);
+    (void)cache.mask(f.dejavu, a, 17, {0.0, 0.0}, r);
+    (void)cache.mask(f.libertine, a, 16, {0.0, 0.0}, r);
     CHECK(cache.stats().misses == 4);
     CHECK(cache.stats().entries == 4);
     CHECK(b0.width() > 5);
 
     const std::uint32_t l = inter.glyph_index(U'l');
-    const std::vector<std::uint8_t> regular = cache.mask(inter, l, 40, 0, 0, 4, r).data;
+    const std::vector<std::uint8_t> regular = cache.mask(inter, l, 40, {0.0, 0.0}, r).data;
     const Variation bold{"wght", 800};
     inter.set_variations({&bold, 1});
-    const std::vector<std::uint8_t> heavy = cache.mask(inter, l, 40, 0, 0, 4, r).data;
+    const std::vector<std::uint8_t> heavy = cache.mask(inter, l, 40, {0.0, 0.0}, r).data;
     CHECK(cache.stats().misses == 6);
     CHECK(heavy != regular);
     long sum_regular = 0, sum_heavy = 0;
@@ -356,12 +356,12 @@ TEST_CASE("Glyph cache: hits, misses, keys by subpixel offset, size, font and va
     for (auto v : heavy) sum_heavy += v;
     CHECK(sum_heavy > sum_regular * 3 / 2);
 
-    CHECK(error_kind_of([&] { (void)cache.mask(f.dejavu, a, 16, 4, 0, 4, r); }) == ErrorKind::InvalidArgument);
-    CHECK(error_kind_of([&] { (void)cache.mask(f.dejavu, a, 0, 0, 0, 4, r); }) == ErrorKind::InvalidArgument);
+    CHECK(error_kind_of([&] { (void)cache.mask(f.dejavu, a, 16, {4 / 4.0, 0.0}, r); }) == ErrorKind::InvalidArgument);
+    CHECK(error_kind_of([&] { (void)cache.mask(f.dejavu, a, 0, {0.0, 0.0}, r); }) == ErrorKind::InvalidArgument);
 
     // A tiny budget flushes instead of growing.
     GlyphCache small(2000);
-    for (char32_t c = U'A'; c <= U'Z'; ++c) (void)small.mask(f.dejavu, f.dejavu.glyph_index(c), 32, 0, 0, 4, r);
+    for (char32_t c = U'A'; c <= U'Z'; ++c) (void)small.mask(f.dejavu, f.dejavu.glyph_index(c), 32, {0.0, 0.0}, r);
     CHECK(small.stats().flushes > 0);
     CHECK(small.stats().bytes <= 2000 + 32 * 40);
     cache.clear();
@@ -424,6 +424,7 @@ TEST_CASE("Cached and outline drawing agree; subpixel positions are honoured", "
     Canvas cc(cached), co(outlined);
     TextDrawOptions fine;
     fine.subpixel_steps = 64;  // origins within 1/128 px of the exact ones
+    fine.subpixel_steps_y = 64;
     draw_text(cc, l, {3.3, 2.7}, Paint::solid(Color::black()), nullptr, fine);
     TextDrawOptions outlines;
     outlines.force_outlines = true;

@@ -202,7 +202,7 @@ DiffStats compare_coverage(const A& a, const B& b) {
 
 // The reference picture of a layout: every glyph rendered by FreeType (unhinted) and composited
 // source-over with the same composite_span. With `transform` null: each glyph origin rounded to
-// 1/steps px as draw_text's cached path does; otherwise glyphs are placed exactly under
+// 1/steps px horizontally and 1/steps_y px vertically as draw_text's cached path does; otherwise glyphs are placed exactly under
 // transform x translate(origin) (draw_text's outline path). `ft` holds one FreeType renderer per
 // layout font (same variation). `supersample` > 1 renders each glyph that many times finer and
 // box-filters it (see FtRenderer::render_supersampled).
@@ -210,14 +210,14 @@ inline casteljau::Pixmap reference_text_image(const casteljau::TextLayout& layou
                                               int width, int height, casteljau::Point origin,
                                               casteljau::Color background, const casteljau::Paint& paint,
                                               int steps = 4, const casteljau::Affine* transform = nullptr,
-                                              int supersample = 1) {
+                                              int supersample = 1, int steps_y = 1) {
     casteljau::Pixmap pm(width, height);
     pm.fill(background);
     for (const auto& g : layout.glyphs) {
         Gray gr;
         if (!transform) {
             const double px = std::round((g.position.x + origin.x) * steps) / steps;
-            const double py = std::round((g.position.y + origin.y) * steps) / steps;
+            const double py = std::round((g.position.y + origin.y) * steps_y) / steps_y;
             gr = supersample > 1 ? ft[g.font]->render_supersampled(g.glyph, layout.size, casteljau::Point{px, py}, supersample)
                                  : ft[g.font]->render(g.glyph, layout.size, casteljau::Point{px, py});
         } else {

@@ -124,11 +124,11 @@ public:
     GlyphCache(GlyphCache&&) noexcept;
     GlyphCache& operator=(GlyphCache&&) noexcept;
 
-    // The glyph's coverage with its origin at (sub_x / steps, sub_y / steps) px: the mask's bounds are
-    // relative to the integer pixel grid the origin sits in. 1 <= steps <= 64, 0 <= sub < steps.
-    // The reference stays valid until the next call on this cache.
-    const Mask& mask(const Font& font, std::uint32_t glyph, double size, int sub_x, int sub_y, int steps,
-                     Rasterizer& raster);
+    // The glyph's coverage with its origin at `offset` (each coordinate in [0, 1) px): the mask's
+    // bounds are relative to the integer pixel grid the origin sits in. Draw code passes offsets
+    // quantized to a few steps per pixel, so that entries are reused. The reference stays valid
+    // until the next call on this cache.
+    const Mask& mask(const Font& font, std::uint32_t glyph, double size, Point offset, Rasterizer& raster);
     // The glyph's outline in font units (font.hpp), cached.
     const Path& outline(const Font& font, std::uint32_t glyph);
 
@@ -143,8 +143,11 @@ private:
 };
 
 struct TextDrawOptions {
-    // Glyph origins are rounded to 1/subpixel_steps px (both axes) on the cached path (1 to 64).
+    // On the cached path glyph origins are rounded to 1/subpixel_steps px horizontally (1 to 64)
+    // and to 1/subpixel_steps_y px vertically. The default snaps baselines to whole pixels: every
+    // glyph of a line moves by the same amount, and each glyph needs 4 masks instead of 16.
     int subpixel_steps = 4;
+    int subpixel_steps_y = 1;
     // Draw every glyph through its outline (Canvas::fill_path) even when the cache could be used.
     bool force_outlines = false;
     // Glyphs drawn through the cache up to this size in device pixels per em; larger ones go through

@@ -1,7 +1,8 @@
 // Text stage, composite: positioned glyphs onto a Canvas (include/casteljau/text.hpp).
 //
-// Axis-aligned (translation + uniform scale): glyph origin in device space -> rounded to
-// 1/steps px -> cached Mask at that subpixel offset -> composite_span row by row inside the clip.
+// Axis-aligned (translation + uniform scale): glyph origin in device space -> rounded to 1/4 px
+// horizontally and a whole pixel vertically (TextDrawOptions) -> cached Mask at that subpixel
+// offset -> composite_span row by row inside the clip.
 // Any other transform: each glyph's outline is filled with Canvas::fill_path under
 // canvas transform x translate(origin + glyph position) x [s 0 0 -s].
 #include <cmath>
@@ -37,7 +38,8 @@ void composite_mask(Canvas& canvas, const Mask& m, long long ix, long long iy, c
 
 void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Paint& paint, GlyphCache* cache,
                const TextDrawOptions& options) {
-    if (options.subpixel_steps < 1 || options.subpixel_steps > 64)
+    if (options.subpixel_steps < 1 || options.subpixel_steps > 64 || options.subpixel_steps_y < 1 ||
+        options.subpixel_steps_y > 64)
         throw Error(ErrorKind::InvalidArgument, "subpixel steps must be 1 to 64");
     if (!origin.is_finite()) throw Error(ErrorKind::InvalidArgument, "text origin must be finite");
     if (layout.glyphs.empty()) return;
@@ -52,16 +54,16 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
     const bool cached = !options.force_outlines && M.b == 0 && M.c == 0 && M.a > 0 && M.a == M.d &&
                         device_size <= options.max_cached_size && device_size <= limits::kMaxFontSize;
     if (cached) {
-        const int steps = options.subpixel_steps;
+        const int sx = options.subpixel_steps, sy = options.subpixel_steps_y;
         for (const PositionedGlyph& g : layout.glyphs) {
             const Point p = M.apply(g.position);
             if (!(std::abs(p.x) < kMaxCachedOrigin && std::abs(p.y) < kMaxCachedOrigin)) continue;
-            const long long qx = std::llround(p.x * steps), qy = std::llround(p.y * steps);
-            // floor division, so that the subpixel offset is in [0, steps)
-            const long long ix = (qx >= 0 ? qx : qx - (steps - 1)) / steps;
-            const long long iy = (qy >= 0 ? qy : qy - (steps - 1)) / steps;
-            const Mask& m = gc.mask(*layout.fonts[g.font], g.glyph, device_size, static_cast<int>(qx - ix * steps),
-                                    static_cast<int>(qy - iy * steps), steps, canvas.rasterizer());
+            const long long qx = std::llround(p.x * sx), qy = std::llround(p.y * sy);
+            // floor division, so that the subpixel offset is in [0, 1)
+            const long long ix = (qx >= 0 ? qx : qx - (sx - 1)) / sx;
+            const long long iy = (qy >= 0 ? qy : qy - (sy - 1)) / sy;
+            const Point offset{static_cast<double>(qx - ix * sx) / sx, static_cast<double>(qy - iy * sy) / sy};
+            const Mask& m = gc.mask(*layout.fonts[g.font], g.glyph, device_size, offset, canvas.rasterizer());
             composite_mask(canvas, m, ix, iy, paint);
         }
         return;

@@ -19,8 +19,8 @@ struct MaskKey {
     const void* font;
     std::uint64_t variation;
     std::uint64_t size_bits;
+    std::uint64_t offset_x_bits, offset_y_bits;
     std::uint32_t glyph;
-    std::uint8_t sub_x, sub_y, steps;
     bool operator==(const MaskKey&) const = default;
 };
 
@@ -41,8 +41,9 @@ struct MaskKeyHash {
         std::size_t h = std::hash<const void*>()(k.font);
         h = mix(h, k.variation);
         h = mix(h, k.size_bits);
-        h = mix(h, static_cast<std::uint64_t>(k.glyph) << 24 | static_cast<std::uint64_t>(k.sub_x) << 16 |
-                       static_cast<std::uint64_t>(k.sub_y) << 8 | k.steps);
+        h = mix(h, k.offset_x_bits);
+        h = mix(h, k.offset_y_bits);
+        h = mix(h, k.glyph);
         return h;
     }
 };
@@ -108,17 +109,18 @@ std::size_t GlyphCache::max_bytes() const { return impl_->max_bytes; }
 double GlyphCache::tolerance() const { return impl_->fill.tolerance; }
 const GlyphCacheStats& GlyphCache::stats() const { return impl_->stats; }
 
-const Mask& GlyphCache::mask(const Font& font, std::uint32_t glyph, double size, int sub_x, int sub_y, int steps,
-                             Rasterizer& raster) {
+const Mask& GlyphCache::mask(const Font& font, std::uint32_t glyph, double size, Point offset, Rasterizer& raster) {
     Impl& c = *impl_;
-    if (steps < 1 || steps > 64 || sub_x < 0 || sub_x >= steps || sub_y < 0 || sub_y >= steps)
-        throw Error(ErrorKind::InvalidArgument, "glyph cache: subpixel offset out of range");
+    if (!(offset.x >= 0 && offset.x < 1 && offset.y >= 0 && offset.y < 1))
+        throw Error(ErrorKind::InvalidArgument, "glyph cache: the subpixel offset must be in [0, 1)");
     check_font_size(size);
     c.check_font(font);
-    std::uint64_t size_bits;
-    std::memcpy(&size_bits, &size, sizeof size_bits);
-    const MaskKey key{&font.impl(), font.variation_key(), size_bits, glyph, static_cast<std::uint8_t>(sub_x),
-                      static_cast<std::uint8_t>(sub_y), static_cast<std::uint8_t>(steps)};
+    auto bits = [](double v) {
+        std::uint64_t b;
+        std::memcpy(&b, &v, sizeof b);
+        return b;
+    };
+    const MaskKey key{&font.impl(), font.variation_key(), bits(size), bits(offset.x + 0.0), bits(offset.y + 0.0), glyph};
     if (auto it = c.masks.find(key); it != c.masks.end()) {
         ++c.stats.hits;
         return it->second;
@@ -127,8 +129,7 @@ const Mask& GlyphCache::mask(const Font& font, std::uint32_t glyph, double size,
     font.glyph_path(glyph, c.scratch);
     Mask m;
     if (!c.scratch.empty()) {
-        const Affine to_pixels = font.glyph_transform(size, {static_cast<double>(sub_x) / steps,
-                                                             static_cast<double>(sub_y) / steps});
+        const Affine to_pixels = font.glyph_transform(size, offset);
         m = raster.fill_mask(c.scratch, to_pixels, c.fill);
     }
     const std::size_t bytes = m.data.size() + kEntryOverhead;
