@@ -48,7 +48,7 @@ std::string make_paragraph() {
     std::uint32_t seed = 20240611;
     std::string out, line;
     std::size_t glyphs = 0;
-    while (glyphs < 10000) {
+    while (glyphs < 10360) {  // ~10,000 glyphs after shaping (ligatures, line ends)
         seed = seed * 1664525u + 1013904223u;
         const std::string w = words[(seed >> 8) % (sizeof words / sizeof *words)];
         if (line.size() + w.size() + 1 > 72) {
