@@ -13,7 +13,7 @@ ctest --test-dir build --output-on-failure -j"$jobs"
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build: tests"
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASTELJAU_SANITIZE=ON \
-  -DCASTELJAU_WERROR=ON -DCASTELJAU_BUILD_BENCH=OFF > build-sanitize.log
+  -DCASTELJAU_WERROR=ON -DCASTELJAU_BUILD_BENCH=OFF -DCASTELJAU_BUILD_EXAMPLES=OFF > build-sanitize.log
 cmake --build build-sanitize -j"$jobs" >> build-sanitize.log || { tail -50 build-sanitize.log; exit 1; }
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

@@ -53,7 +53,10 @@ std::string slurp(const fs::path& p) {
 Run run_text(const std::vector<std::string>& args, const std::string& prefix = "") {
     const fs::path err = temp_dir() / "stderr.txt";
     std::string cmd = prefix + quote(CASTELJAU_CLI_PATH) + " text";
-    for (const auto& a : args) cmd += " " + quote(a);
+    for (const auto& a : args) {
+        cmd += ' ';
+        cmd += quote(a);
+    }
     cmd += " 2>" + quote(err.string()) + " >/dev/null";
     const int raw = std::system(cmd.c_str());
     Run r;

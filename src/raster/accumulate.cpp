@@ -240,7 +240,7 @@ namespace {
 
 // Adds a piece of height d (signed) running from xa to xb inside one row to the row's cells
 // [i0, i1] (and the spill cell i1 + 1). Returns nothing; see the file comment for the scheme.
-inline void deposit(float* acc, double xa, double xb, double d, int& i0_out, int& i1_out) {
+inline void deposit(double* acc, double xa, double xb, double d, int& i0_out, int& i1_out) {
     const double xl = xa < xb ? xa : xb, xr = xa < xb ? xb : xa;
     const int i0 = static_cast<int>(xl);  // xl >= 0: truncation is floor
     int i1 = static_cast<int>(xr);
@@ -249,8 +249,8 @@ inline void deposit(float* acc, double xa, double xb, double d, int& i0_out, int
     i1_out = i1;
     if (i0 == i1) {
         const double a = d * ((i0 + 1) - 0.5 * (xl + xr));
-        acc[i0] += static_cast<float>(a);
-        acc[i0 + 1] += static_cast<float>(d - a);
+        acc[i0] += a;
+        acc[i0 + 1] += d - a;
         return;
     }
     const double hpx = d / (xr - xl);  // height of the piece per unit of x

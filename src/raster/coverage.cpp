@@ -1,4 +1,4 @@
-// Raster stage, coverage: per-row prefix sum of the accumulation buffer mapped through the fill
+// Raster stage, coverage: per-row prefix sum of the (double) accumulation buffer mapped through the fill
 // rule to 8-bit coverage. Vectorised with Highway (runtime dispatch to the best instruction set
 // the CPU has): an in-register inclusive scan per vector plus a running carry.
 #undef HWY_TARGET_INCLUDE
@@ -13,29 +13,28 @@ namespace casteljau::raster {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-float AccumulateRowImpl(float* acc, std::uint8_t* cov, int from, int to, float start, FillRule rule) {
-    float sum = start;
+double AccumulateRowImpl(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule) {
+    double sum = start;
     int i = from;
 #if HWY_TARGET != HWY_SCALAR
-    // 128-bit vectors on every target: the scan's carry chain, not the width, bounds the speed.
-    const hn::FixedTag<float, 4> df;
-    const hn::FixedTag<std::int32_t, 4> di;
-    const hn::FixedTag<std::uint8_t, 4> du8;
-    if (to - i >= 4) {
-        const auto one = hn::Set(df, 1.0f);
-        const auto two = hn::Set(df, 2.0f);
-        const auto half = hn::Set(df, 0.5f);
-        const auto scale = hn::Set(df, 255.0f);
-        const auto zero = hn::Zero(df);
-        auto carry = hn::Set(df, sum);
-        for (; i + 4 <= to; i += 4) {
-            auto v = hn::LoadU(df, acc + i);
-            hn::StoreU(zero, df, acc + i);
-            // Inclusive scan in the vector: two shift-and-add steps, then the running carry.
-            v = hn::Add(v, hn::ShiftLeftLanes<1>(df, v));
-            v = hn::Add(v, hn::ShiftLeftLanes<2>(df, v));
+    // Two doubles per 128-bit vector: one shift-and-add scan step, then the running carry. Double
+    // precision keeps rows crossing hundreds of stacked edges exact to far below 1/255.
+    const hn::FixedTag<double, 2> dd;
+    const hn::FixedTag<std::int32_t, 2> di;
+    const hn::FixedTag<std::uint8_t, 2> du8;
+    if (to - i >= 2) {
+        const auto one = hn::Set(dd, 1.0);
+        const auto two = hn::Set(dd, 2.0);
+        const auto half = hn::Set(dd, 0.5);
+        const auto scale = hn::Set(dd, 255.0);
+        const auto zero = hn::Zero(dd);
+        auto carry = hn::Set(dd, sum);
+        for (; i + 2 <= to; i += 2) {
+            auto v = hn::LoadU(dd, acc + i);
+            hn::StoreU(zero, dd, acc + i);
+            v = hn::Add(v, hn::ShiftLeftLanes<1>(dd, v));
             v = hn::Add(v, carry);
-            carry = hn::Broadcast<3>(v);
+            carry = hn::Broadcast<1>(v);
             auto a = hn::Abs(v);
             if (rule == FillRule::NonZero) {
                 a = hn::Min(a, one);
@@ -43,7 +42,7 @@ float AccumulateRowImpl(float* acc, std::uint8_t* cov, int from, int to, float s
                 a = hn::NegMulAdd(hn::Floor(hn::Mul(a, half)), two, a);  // |v| mod 2, in [0, 2)
                 a = hn::Min(a, hn::Sub(two, a));                          // distance to an even integer
             }
-            const auto c = hn::ConvertTo(di, hn::MulAdd(a, scale, half));
+            const auto c = hn::DemoteTo(di, hn::MulAdd(a, scale, half));
             hn::StoreU(hn::DemoteTo(du8, c), du8, cov + i);
         }
         sum = hn::GetLane(carry);
@@ -51,7 +50,7 @@ float AccumulateRowImpl(float* acc, std::uint8_t* cov, int from, int to, float s
 #endif
     for (; i < to; ++i) {
         sum += acc[i];
-        acc[i] = 0.0f;
+        acc[i] = 0.0;
         cov[i] = coverage_u8(sum, rule);
     }
     return sum;
@@ -65,7 +64,7 @@ HWY_AFTER_NAMESPACE();
 namespace casteljau::raster {
 HWY_EXPORT(AccumulateRowImpl);
 
-float accumulate_row(float* acc, std::uint8_t* cov, int from, int to, float start, FillRule rule) {
+double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule) {
     return HWY_DYNAMIC_DISPATCH(AccumulateRowImpl)(acc, cov, from, to, start, rule);
 }
 }  // namespace casteljau::raster

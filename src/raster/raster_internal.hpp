@@ -47,7 +47,7 @@ struct Strip {
     int rows = 0;
     int width = 0;
     std::size_t stride = 0;          // cells per row in acc/tags (width + 2)
-    float* acc = nullptr;            // cover/area accumulation
+    double* acc = nullptr;           // cover/area accumulation (double: windings of hundreds stay exact)
     std::uint64_t* tags = nullptr;   // nullptr when exact overlaps are off
     int* row_min = nullptr;          // first touched cell per row (INT_MAX when untouched)
     int* row_max = nullptr;          // last touched cell per row (-1 when untouched)
@@ -83,19 +83,19 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
 
 // 8-bit coverage of an accumulated signed area under the fill rule: nonzero min(|a|, 1), even-odd
 // the distance of |a| to the nearest even integer; rounded to nearest.
-inline std::uint8_t coverage_u8(float a, FillRule rule) {
-    float v = a < 0 ? -a : a;
+inline std::uint8_t coverage_u8(double a, FillRule rule) {
+    double v = a < 0 ? -a : a;
     if (rule == FillRule::NonZero) {
-        v = v < 1.0f ? v : 1.0f;
+        v = v < 1.0 ? v : 1.0;
     } else {
-        v = v - 2.0f * static_cast<float>(static_cast<int>(v * 0.5f));
-        v = v > 1.0f ? 2.0f - v : v;
+        v = v - 2.0 * static_cast<double>(static_cast<long long>(v * 0.5));
+        v = v > 1.0 ? 2.0 - v : v;
     }
-    return static_cast<std::uint8_t>(v * 255.0f + 0.5f);
+    return static_cast<std::uint8_t>(v * 255.0 + 0.5);
 }
 
 // Prefix sum over acc[from, to) starting from `start`, mapped through the fill rule into 8-bit
 // coverage cov[from, to). Returns the running sum after `to`. Clears acc[from, to).
-float accumulate_row(float* acc, std::uint8_t* cov, int from, int to, float start, FillRule rule);
+double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule);
 
 }  // namespace casteljau::raster

@@ -24,7 +24,7 @@ using raster::Edge;
 
 namespace {
 
-// Upper bound on cells in one strip buffer: 2^18 cells = 1 MiB of float + 2 MiB of tags.
+// Upper bound on cells in one strip buffer: 2^18 cells = 2 MiB of accumulators + 2 MiB of tags.
 constexpr std::size_t kMaxStripCells = std::size_t(1) << 18;
 
 // Receives flattened points (flatten_into's sink interface) and builds edges, clipping them to
@@ -163,7 +163,7 @@ Rect transformed_bounds(const Path& path, const Affine& m, double tolerance) {
 
 struct Rasterizer::Impl {
     std::vector<Edge> edges;
-    std::vector<float> acc;
+    std::vector<double> acc;
     std::vector<std::uint64_t> tags;
     std::vector<int> row_min, row_max;
     std::vector<std::uint32_t> marked;
@@ -254,7 +254,7 @@ void Rasterizer::Impl::run(const FillOptions& opts, int ox, int oy, int bw, int 
     const int rows_per_strip = static_cast<int>(std::max<std::size_t>(1, kMaxStripCells / s.stride));
     const int strip_rows = std::min(bh, rows_per_strip);
     const std::size_t cells = s.stride * static_cast<std::size_t>(strip_rows);
-    if (acc.size() < cells) acc.assign(cells, 0.0f);
+    if (acc.size() < cells) acc.assign(cells, 0.0);
     if (opts.exact_overlaps && tags.size() < cells) tags.assign(cells, 0u);
     if (row_min.size() < static_cast<std::size_t>(strip_rows)) {
         row_min.resize(static_cast<std::size_t>(strip_rows));
@@ -298,7 +298,7 @@ void Rasterizer::Impl::run(const FillOptions& opts, int ox, int oy, int bw, int 
 void Rasterizer::Impl::resolve_row(const FillOptions& opts, raster::Strip& s, int r, std::size_t& mi, std::size_t& li) {
     // Marked cells of row r: their accumulated integrals (prefix sums), then exact coverage.
     const std::size_t row_base = static_cast<std::size_t>(r) * s.stride;
-    const float* acc_row = s.acc + row_base;
+    const double* acc_row = s.acc + row_base;
     double prefix = 0;
     int pos = s.row_min[r];
     while (mi < marked.size() && marked[mi] < row_base + s.stride) {
@@ -348,11 +348,11 @@ void Rasterizer::Impl::run_strip(const FillOptions& opts, raster::Strip& s, cons
         const std::size_t row_base = static_cast<std::size_t>(r) * s.stride;
         patches.clear();
         if (mi < marked.size() && marked[mi] < row_base + s.stride) resolve_row(opts, s, r, mi, li);
-        float* acc_row = s.acc + row_base;
+        double* acc_row = s.acc + row_base;
         const int from = s.row_min[r];
         const int last = s.row_max[r];  // last cell written (may be a spill cell)
         const int to = std::min(last + 1, s.width);
-        const float sum = raster::accumulate_row(acc_row, cov.data(), from, to, 0.0f, opts.rule);
+        const double sum = raster::accumulate_row(acc_row, cov.data(), from, to, 0.0, opts.rule);
         int end = to;
         if (to < s.width) {  // beyond the last touched cell the coverage is constant
             const std::uint8_t tail = raster::coverage_u8(sum, opts.rule);
@@ -361,7 +361,7 @@ void Rasterizer::Impl::run_strip(const FillOptions& opts, raster::Strip& s, cons
                 end = s.width;
             }
         }
-        for (int k = std::max(s.width, from); k <= last; ++k) acc_row[k] = 0.0f;  // spill cells
+        for (int k = std::max(s.width, from); k <= last; ++k) acc_row[k] = 0.0;  // spill cells
         if (s.tags) std::memset(s.tags + row_base + from, 0, sizeof(std::uint64_t) * static_cast<std::size_t>(last - from + 1));
         for (const auto& p : patches) cov[p.first - row_base] = p.second;
         if (end > from) sink.row(oy + s.y0 + r, ox + from, end - from, cov.data() + from);
