@@ -48,12 +48,37 @@ struct Worst {
 // Renders the contours (given in user space, mapped by m) with `opts` inside `clip`, compares with
 // the slab reference of the transformed contours, checks the sink contract, the polygon bound
 // (REQUIRE) and correct rounding (CHECK).
+// A reproducer for a failure message: the contours (full precision, when not too many points),
+// the transform and the clip.
+inline std::string describe(const ref::Contours& cs, const Affine& m, const IRect& clip) {
+    std::size_t n = 0;
+    for (const ref::Contour& c : cs) n += c.size();
+    char buf[512];
+    std::string s = "clip {" + std::to_string(clip.x0) + ", " + std::to_string(clip.y0) + ", " +
+                    std::to_string(clip.x1) + ", " + std::to_string(clip.y1) + "}";
+    std::snprintf(buf, sizeof buf, "; transform {%.17g, %.17g, %.17g, %.17g, %.17g, %.17g}; ", m.a, m.b, m.c, m.d,
+                  m.e, m.f);
+    s += buf;
+    if (n > 64) return s + std::to_string(cs.size()) + " contours, " + std::to_string(n) + " points";
+    s += "contours {";
+    for (const ref::Contour& c : cs) {
+        s += "{";
+        for (Point p : c) {
+            std::snprintf(buf, sizeof buf, "{%.17g, %.17g}, ", p.x, p.y);
+            s += buf;
+        }
+        s += "}, ";
+    }
+    return s + "}";
+}
+
 inline Comparison check_polygons(Rasterizer& r, const ref::Contours& user, const Affine& m, const FillOptions& opts,
                                  const IRect& clip, const std::string& what) {
     const Rendered out = render(r, ref::to_path(user), m, opts, clip);
     const ref::CoverageGrid truth = ref::slab_area(ref::transformed(user, m), opts.rule, clip);
     const Comparison c = compare(out, truth);
     INFO(what << (opts.rule == FillRule::NonZero ? " [nonzero]" : " [even-odd]") << ": " << c.text());
+    INFO((c.max_err > kRoundedErr ? describe(user, m, clip) : std::string()));
     REQUIRE(out.contract_violation.empty());
     REQUIRE(out.nonzero_outside_window == 0);
     REQUIRE(c.max_err <= kPolygonMaxErr);
