@@ -21,6 +21,10 @@ run path "M 60 100 a 40 40 0 1 0 80 0 a 40 40 0 1 0 -80 0 M 100 100 a 40 40 0 1 
   --size 240x200 --fill "rgba(0, 128, 0, 0.6)" --background white --fill-rule evenodd -o "$out/rings-evenodd.png"
 run path @"$here/data/heart.path" --size 256x256 --transform "2 0 0 2 28 28" --fill "hsl(340, 80%, 55%)" \
   --background "#fffdf5" -o "$out/heart.png"
+run path "M20 170 C 60 20 140 20 180 170" --size 200x200 --fill none --background white --stroke "#333" \
+  --stroke-width 14 --line-cap round --dash "30 22" -o "$out/stroke-dashed.png"
+run path "M30 160 L100 40 L170 160" --size 200x200 --fill none --background white --stroke teal --stroke-width 24 \
+  --line-join round -o "$out/stroke-join.png"
 run svg "$here/data/shapes.svg" -o "$out/shapes.png"
 run svg "$here/data/shapes.svg" --scale 3 -o "$out/shapes-3x.png"
 

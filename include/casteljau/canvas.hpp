@@ -13,6 +13,7 @@
 #include "casteljau/paint.hpp"
 #include "casteljau/path.hpp"
 #include "casteljau/raster.hpp"
+#include "casteljau/stroke.hpp"
 
 namespace casteljau {
 
@@ -53,6 +54,9 @@ public:
 
     void clear(Color c);
     void fill_path(const Path& path, const Paint& paint, FillRule rule = FillRule::NonZero);
+    // Strokes `path` with `style` in user space (so a non-uniform transform gives an elliptical
+    // pen, as SVG requires) and fills the outline with the nonzero rule.
+    void stroke_path(const Path& path, const StrokeStyle& style, const Paint& paint);
     // Composites an A8 mask (pixel space, the current transform is not applied) with `paint`.
     void fill_mask(const Mask& mask, const Paint& paint);
 

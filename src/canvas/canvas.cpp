@@ -64,6 +64,11 @@ void Canvas::fill_path(const Path& path, const Paint& paint, FillRule rule) {
     raster_.fill(path, state_.transform, opts, state_.clip, sink);
 }
 
+void Canvas::stroke_path(const Path& path, const StrokeStyle& style, const Paint& paint) {
+    if (state_.clip.empty() || path.empty()) return;
+    fill_path(stroke(path, style, state_.transform, fill_options_.tolerance), paint, FillRule::NonZero);
+}
+
 void Canvas::fill_mask(const Mask& mask, const Paint& paint) {
     const IRect& c = state_.clip;
     const int x0 = std::max(mask.bounds.x0, c.x0), x1 = std::min(mask.bounds.x1, c.x1);

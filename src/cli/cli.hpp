@@ -30,5 +30,8 @@ std::string read_text_input(const std::string& path);
 
 void register_path(CLI::App& app);
 void register_svg(CLI::App& app);
+void register_bezier(CLI::App& app);
+void register_spline(CLI::App& app);
+void register_text(CLI::App& app);
 
 }  // namespace casteljau::cli

@@ -13,6 +13,11 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", "casteljau 0.1.0");
     // Subcommands: one registration function per src/cli/cmd_*.cpp file.
+    cli::register_path(app);
+    cli::register_svg(app);
+    cli::register_bezier(app);
+    cli::register_spline(app);
+    cli::register_text(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -54,20 +54,29 @@ struct Flattener {
     void quad(Point a, Point b, Point c) {
         const Point p0 = m(a), p1 = m(b), p2 = m(c);
         if (culled({p0, p1, p2})) return emit(p2);
-        struct Q { Point p0, p1, p2; int depth; };
-        Q stack[limits::kMaxFlattenDepth + 2];
-        int n = 0;
-        stack[n++] = {p0, p1, p2, 0};
-        while (n > 0) {
-            const Q q = stack[--n];
-            if (q.depth >= limits::kMaxFlattenDepth || !(bound2_quad(q.p0, q.p1, q.p2) > tol2)) {
-                emit(q.p2);
-                continue;
-            }
-            const Point l1 = mid(q.p0, q.p1), r1 = mid(q.p1, q.p2), c = mid(l1, r1);
-            stack[n++] = {c, r1, q.p2, q.depth + 1};   // right half, processed second
-            stack[n++] = {q.p0, l1, c, q.depth + 1};   // left half first
+        // For a quadratic both halves of a split at t = 1/2 have exactly a quarter of the parent's
+        // second difference, so recursive halving reaches the same depth k on every branch and
+        // emits the points B(i / 2^k). We find k from the root's bound and produce those very
+        // points by forward differencing (exact for a polynomial of degree 2).
+        double b2 = bound2_quad(p0, p1, p2);
+        int depth = 0;
+        while (b2 > tol2 && depth < limits::kMaxFlattenDepth) {
+            b2 *= 1.0 / 16.0;  // the squared bound shrinks 16x per level
+            ++depth;
         }
+        if (depth == 0) return emit(p2);
+        const int n = 1 << depth;
+        const double h = 1.0 / n;
+        // B(t) = p0 + 2 t (p1 - p0) + t^2 (p0 - 2 p1 + p2): first and second forward differences.
+        const Point A = p0 - p1 * 2 + p2, B = (p1 - p0) * 2;
+        Point d1 = B * h + A * (h * h), pt = p0;
+        const Point d2 = A * (2 * h * h);
+        for (int i = 1; i < n; ++i) {
+            pt += d1;
+            d1 += d2;
+            emit(pt);
+        }
+        emit(p2);
     }
 
     void cubic(Point a, Point b, Point c, Point d) {

@@ -17,7 +17,9 @@
 //     winding number one higher; the middle region is on the other piece's side of each piece, so
 //     the outer regions agree exactly when each piece's midpoint lies on the same-signed side of
 //     the other piece.
-// A third piece continuing such a polyline is accepted when it does not meet the first one.
+// Further pieces continuing such a polyline are accepted while the polyline stays monotone in x or
+// in y (then it cannot cross itself; a third piece is also accepted when it misses the first), and
+// a two-piece bend plus one unrelated piece when they do not meet and the outer regions agree.
 // Anything more, or any other pair, marks the cell; every edge touching a marked cell is logged
 // for the exact recomputation (exact_cell.cpp). A piece that ends inside a cell always brings its
 // neighbour along the contour into the cell too, so a provisional "harmless" verdict on a pair
@@ -76,6 +78,46 @@ bool harmless_pair(const Edge& a, const Edge& b, int col, int row) {
     return (s1 > 0 && s2 > 0) || (s1 < 0 && s2 < 0);
 }
 
+// Is the pair "polyline u -> w (consecutive edges meeting inside the cell) + piece q" harmless in
+// cell (col, row)? The polyline crosses the cell once and splits it in two; seen from inside, its
+// negative side (where w is one higher) is the intersection of the negative half-planes of u and w
+// when the polyline turns towards that side, their union otherwise. Then the test is the chord
+// pair's: q must not meet the polyline, and the far regions beyond the polyline and beyond q
+// must agree.
+bool harmless_bend_and_piece(const Edge& u, const Edge& w, const Edge& q, int col, int row) {
+    double ux0, uy0, ux1, uy1, wx0, wy0, wx1, wy1, qx0, qy0, qx1, qy1;
+    const bool hu = cell_portion(u, col, row, ux0, uy0, ux1, uy1);
+    const bool hw = cell_portion(w, col, row, wx0, wy0, wx1, wy1);
+    if (!cell_portion(q, col, row, qx0, qy0, qx1, qy1)) return true;
+    if (!hu || !hw) return false;
+    if (segments_meet(ux0, uy0, ux1, uy1, qx0, qy0, qx1, qy1) || segments_meet(wx0, wy0, wx1, wy1, qx0, qy0, qx1, qy1))
+        return false;
+    const double mx = 0.5 * (qx0 + qx1), my = 0.5 * (qy0 + qy1);
+    const double su = orient(u.x0, u.y0, u.x1, u.y1, mx, my), sw = orient(w.x0, w.y0, w.x1, w.y1, mx, my);
+    if (su == 0 || sw == 0) return false;
+    const double turn = (u.x1 - u.x0) * (w.y1 - w.y0) - (u.y1 - u.y0) * (w.x1 - w.x0);
+    const bool q_on_negative = turn < 0 ? (su < 0 && sw < 0) : (su < 0 || sw < 0);
+    // A point of the polyline inside the cell (not on q's line): the middle of u's portion.
+    const double so = orient(qx0, qy0, qx1, qy1, 0.5 * (ux0 + ux1), 0.5 * (uy0 + uy1));
+    if (so == 0) return false;
+    return q_on_negative == (so < 0);
+}
+
+// Direction bits of an edge for the monotonicity test: +x, -x, +y, -y.
+inline std::uint64_t dir_bits(const Edge& e) {
+    std::uint64_t b = 0;
+    if (e.x1 > e.x0) b |= 1;
+    if (e.x1 < e.x0) b |= 2;
+    if (e.y1 > e.y0) b |= 4;
+    if (e.y1 < e.y0) b |= 8;
+    return b << kTagDirShift;
+}
+// A polyline whose pieces all go the same way in x, or all the same way in y, cannot cross itself.
+inline bool monotone(std::uint64_t dirs) {
+    const std::uint64_t d = dirs >> kTagDirShift;
+    return (d & 3) != 3 || (d & 12) != 12;
+}
+
 inline void log_edge(Strip& s, std::size_t cell, std::uint64_t id_plus_one) {
     if (id_plus_one) s.log->push_back({static_cast<std::uint32_t>(cell), static_cast<std::uint32_t>(id_plus_one - 1)});
 }
@@ -98,18 +140,48 @@ inline void tag_cell(Strip& s, std::uint64_t* tags, std::size_t base, int k, int
     const std::int64_t other = static_cast<std::int64_t>(last) - 1;
     const bool chained = (first_cell && e.prev == other) || (last_cell && e.next == other);
     if (count == 1) {
-        if (chained || harmless_pair(s.edges[other], e, k, row)) {
-            tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(2) << kTagCountShift) | (chained ? kTagChain : 0);
+        if (chained) {
+            const std::uint64_t dirs = dir_bits(s.edges[other]) | dir_bits(e);
+            tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(2) << kTagCountShift) | kTagChain | dirs;
             return;
         }
-    } else if (count == 2 && chained && (t & kTagChain)) {
-        // A third piece of one polyline through the cell: still one simple curve unless it meets
-        // the first piece (the second is its neighbour).
+        if (harmless_pair(s.edges[other], e, k, row)) {
+            tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(2) << kTagCountShift);
+            return;
+        }
+    } else if (chained && (t & kTagChain)) {
+        // One more piece of the polyline through the cell: still one simple curve while it stays
+        // monotone in x or y; with three pieces, also when the new one misses the first.
+        const std::uint64_t dirs = (t & kTagDirMask) | dir_bits(e);
+        bool ok = monotone(dirs);
+        if (!ok && count == 2) {
+            const std::uint64_t first = (t >> kTagPrevShift) & kTagIdMask;
+            double ax, ay, bx, by, cx, cy, dx, dy;
+            ok = !cell_portion(s.edges[first - 1], k, row, ax, ay, bx, by) || !cell_portion(e, k, row, cx, cy, dx, dy) ||
+                 !segments_meet(ax, ay, bx, by, cx, cy, dx, dy);
+        }
+        if (ok) {
+            tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(3) << kTagCountShift) | kTagChain | dirs;
+            return;
+        }
+    } else if (count == 2) {
         const std::uint64_t first = (t >> kTagPrevShift) & kTagIdMask;
-        double ax, ay, bx, by, cx, cy, dx, dy;
-        if (!cell_portion(s.edges[first - 1], k, row, ax, ay, bx, by) || !cell_portion(e, k, row, cx, cy, dx, dy) ||
-            !segments_meet(ax, ay, bx, by, cx, cy, dx, dy)) {
-            tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(3) << kTagCountShift);
+        const Edge& f = s.edges[first - 1];
+        const Edge& l = s.edges[other];
+        bool ok = false;
+        if (chained) {
+            // The previous pair was {f, l} with l unrelated to f; e bends l into a polyline.
+            ok = e.prev == other ? harmless_bend_and_piece(l, e, f, k, row) : harmless_bend_and_piece(e, l, f, k, row);
+        } else if (t & kTagChain) {
+            // A polyline {f, l} and an unrelated piece e.
+            const bool f_then_l = f.next == other;
+            ok = f_then_l ? harmless_bend_and_piece(f, l, e, k, row) : harmless_bend_and_piece(l, f, e, k, row);
+        }
+        if (ok) {
+            // The tag holds two ids; keep the pair whose dropped member is a neighbour along the
+            // contour of a kept one, so that marking can recover it (see below).
+            const std::uint64_t keep = chained ? first : last;
+            tags[k] = me | (keep << kTagPrevShift) | (std::uint64_t(3) << kTagCountShift);
             return;
         }
     }
@@ -118,6 +190,23 @@ inline void tag_cell(Strip& s, std::uint64_t* tags, std::size_t base, int k, int
     log_edge(s, base + k, last);
     log_edge(s, base + k, (t >> kTagPrevShift) & kTagIdMask);
     log_edge(s, base + k, me);
+    if (count == 3) {
+        // Pieces were dropped from the tag: each is connected to a kept one along its contour
+        // through pieces that all touch this cell. Walk both ways from the kept ids.
+        const double cx = k, cy = row;
+        for (const std::uint64_t kept : {last, (t >> kTagPrevShift) & kTagIdMask}) {
+            for (int way = 0; way < 2; ++way) {
+                std::int32_t n = way == 0 ? s.edges[kept - 1].prev : s.edges[kept - 1].next;
+                const std::int32_t start = static_cast<std::int32_t>(kept - 1);
+                for (int steps = 0; n >= 0 && n != start && steps < 4096; ++steps) {  // a contour inside the cell is a cycle
+                    double ax, ay, bx, by;
+                    if (!cell_portion(s.edges[n], cx, cy, ax, ay, bx, by)) break;
+                    log_edge(s, base + k, static_cast<std::uint64_t>(n) + 1);
+                    n = way == 0 ? s.edges[n].prev : s.edges[n].next;
+                }
+            }
+        }
+    }
 }
 
 }  // namespace

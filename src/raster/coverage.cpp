@@ -16,41 +16,39 @@ namespace hn = hwy::HWY_NAMESPACE;
 float AccumulateRowImpl(float* acc, std::uint8_t* cov, int from, int to, float start, FillRule rule) {
     float sum = start;
     int i = from;
-    const hn::ScalableTag<float> df;
-    const int N = static_cast<int>(hn::Lanes(df));
-    if (N >= 4 && to - from >= N) {
-        const hn::Rebind<std::int32_t, decltype(df)> di;
-        const hn::Rebind<std::uint8_t, decltype(df)> du8;
+#if HWY_TARGET != HWY_SCALAR
+    // 128-bit vectors on every target: the scan's carry chain, not the width, bounds the speed.
+    const hn::FixedTag<float, 4> df;
+    const hn::FixedTag<std::int32_t, 4> di;
+    const hn::FixedTag<std::uint8_t, 4> du8;
+    if (to - i >= 4) {
         const auto one = hn::Set(df, 1.0f);
         const auto two = hn::Set(df, 2.0f);
         const auto half = hn::Set(df, 0.5f);
-        const auto k255 = hn::Set(df, 255.0f);
-        const auto rnd = hn::Set(df, 0.5f);
+        const auto scale = hn::Set(df, 255.0f);
         const auto zero = hn::Zero(df);
         auto carry = hn::Set(df, sum);
-        for (; i + N <= to; i += N) {
+        for (; i + 4 <= to; i += 4) {
             auto v = hn::LoadU(df, acc + i);
             hn::StoreU(zero, df, acc + i);
-            // Inclusive prefix sum within the vector: log2(N) shift-and-add steps over the whole
-            // vector, done through a small lane buffer so it works for any N (128 to 512 bits).
-            HWY_ALIGN float lanes[hn::MaxLanes(df)];
-            hn::Store(v, df, lanes);
-            for (int k = 1; k < N; ++k) lanes[k] += lanes[k - 1];
-            v = hn::Add(hn::Load(df, lanes), carry);
-            carry = hn::Set(df, lanes[N - 1] + hn::GetLane(carry));
+            // Inclusive scan in the vector: two shift-and-add steps, then the running carry.
+            v = hn::Add(v, hn::ShiftLeftLanes<1>(df, v));
+            v = hn::Add(v, hn::ShiftLeftLanes<2>(df, v));
+            v = hn::Add(v, carry);
+            carry = hn::Broadcast<3>(v);
             auto a = hn::Abs(v);
             if (rule == FillRule::NonZero) {
                 a = hn::Min(a, one);
             } else {
-                const auto q = hn::Floor(hn::Mul(a, half));
-                a = hn::NegMulAdd(q, two, a);               // a - 2 floor(a / 2), in [0, 2)
-                a = hn::Min(a, hn::Sub(two, a));            // distance to the nearest even integer
+                a = hn::NegMulAdd(hn::Floor(hn::Mul(a, half)), two, a);  // |v| mod 2, in [0, 2)
+                a = hn::Min(a, hn::Sub(two, a));                          // distance to an even integer
             }
-            const auto c = hn::ConvertTo(di, hn::MulAdd(a, k255, rnd));
+            const auto c = hn::ConvertTo(di, hn::MulAdd(a, scale, half));
             hn::StoreU(hn::DemoteTo(du8, c), du8, cov + i);
         }
         sum = hn::GetLane(carry);
     }
+#endif
     for (; i < to; ++i) {
         sum += acc[i];
         acc[i] = 0.0f;

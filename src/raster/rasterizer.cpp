@@ -205,7 +205,8 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opts
         return;
     }
     // Partly or wholly outside: clip. Curves wholly outside (with a one-pixel margin) become chords.
-    const Rect cull{clip.x0 - 1.0, clip.y0 - 1.0, clip.x1 + 1.0, clip.y1 + 1.0};
+    // The flattener sees points relative to the clip's origin, so the cull box is too.
+    const Rect cull{-1.0, -1.0, clip.width() + 1.0, clip.height() + 1.0};
     EdgeSink<true> es{edges, static_cast<double>(clip.width()), static_cast<double>(clip.height())};
     flatten_into(path, Affine::translate(-clip.x0, -clip.y0) * m, opts.tolerance, &cull, es);
     es.end();

@@ -1,5 +1,7 @@
 // `casteljau path`: fill SVG path data onto a canvas and write a PNG.
+#include <cmath>
 #include <iostream>
+#include <sstream>
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
@@ -14,6 +16,8 @@ void register_path(CLI::App& app) {
         std::string data, output, size, fill = "black", rule = "nonzero", background = "transparent", transform;
         double tolerance = kDefaultTolerance;
         bool no_exact = false;
+        std::string stroke, cap = "butt", join = "miter", dashes;
+        double stroke_width = 1, miter_limit = 4;
     };
     auto o = std::make_shared<Opts>();
     CLI::App* cmd = app.add_subcommand("path", "Fill SVG path data and write a PNG");
@@ -31,6 +35,20 @@ void register_path(CLI::App& app) {
     cmd->add_option("--tolerance", o->tolerance, "Flattening tolerance in pixels")
         ->check(CLI::Range(1e-4, 10.0))
         ->capture_default_str();
+    cmd->add_option("--stroke", o->stroke, "Stroke colour (CSS syntax); the stroke is drawn over the fill");
+    cmd->add_option("--stroke-width", o->stroke_width, "Stroke width in path units")
+        ->check(CLI::Range(0.0, 1e6))
+        ->capture_default_str();
+    cmd->add_option("--line-cap", o->cap, "butt, round or square")
+        ->check(CLI::IsMember({"butt", "round", "square"}))
+        ->capture_default_str();
+    cmd->add_option("--line-join", o->join, "miter, miter-clip, round or bevel")
+        ->check(CLI::IsMember({"miter", "miter-clip", "round", "bevel"}))
+        ->capture_default_str();
+    cmd->add_option("--miter-limit", o->miter_limit, "Miter limit (ratio to the width)")
+        ->check(CLI::Range(1.0, 1e6))
+        ->capture_default_str();
+    cmd->add_option("--dash", o->dashes, "Dash pattern \"on off ...\" in path units");
     cmd->add_flag("--no-exact-overlaps", o->no_exact, "Plain accumulation where edges overlap (faster, less exact)");
     cmd->callback([o] {
         int w = 0, h = 0;
@@ -49,6 +67,29 @@ void register_path(CLI::App& app) {
         canvas.fill_options().exact_overlaps = !o->no_exact;
         canvas.set_transform(m);
         canvas.fill_path(path, Paint::solid(fill), o->rule == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero);
+        if (!o->stroke.empty()) {
+            StrokeStyle style;
+            style.width = o->stroke_width;
+            style.cap = o->cap == "round" ? LineCap::Round : o->cap == "square" ? LineCap::Square : LineCap::Butt;
+            style.join = o->join == "round"        ? LineJoin::Round
+                         : o->join == "bevel"      ? LineJoin::Bevel
+                         : o->join == "miter-clip" ? LineJoin::MiterClip
+                                                   : LineJoin::Miter;
+            style.miter_limit = o->miter_limit;
+            if (!o->dashes.empty()) {
+                std::string list = o->dashes;
+                for (char& c : list)
+                    if (c == ',') c = ' ';
+                std::istringstream in(list);
+                double v;
+                while (in >> v) {
+                    if (!(v >= 0) || !std::isfinite(v)) throw UsageError("--dash: lengths must be non-negative numbers");
+                    style.dashes.push_back(v);
+                }
+                if (!in.eof()) throw UsageError("--dash: expected numbers, got '" + o->dashes + "'");
+            }
+            canvas.stroke_path(path, style, Paint::solid(parse_color_option("--stroke", o->stroke)));
+        }
         write_png(pm, o->output);
     });
 }

@@ -15,6 +15,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/png.hpp"
+#include "casteljau/stroke.hpp"
 #include "casteljau/svg_path.hpp"
 
 namespace casteljau {
@@ -22,12 +23,13 @@ namespace casteljau {
 namespace {
 
 struct Item {
-    enum Kind { Fill, BeginLayer, EndLayer } kind = Fill;
+    enum Kind { Fill, Stroke, BeginLayer, EndLayer } kind = Fill;
     Path path;          // user space
     Affine transform;   // user space -> document pixel space
     Color color;
     FillRule rule = FillRule::NonZero;
-    double opacity = 1;  // fill: multiplies colour alpha; layer: group opacity
+    double opacity = 1;  // fill/stroke: multiplies colour alpha; layer: group opacity
+    StrokeStyle stroke;  // Stroke items
 };
 
 struct Style {
@@ -35,6 +37,9 @@ struct Style {
     Color color = Color::black();                // currentColor
     FillRule fill_rule = FillRule::NonZero;
     double fill_opacity = 1;
+    std::optional<Color> stroke;  // nullopt: none (the SVG default)
+    double stroke_opacity = 1;
+    StrokeStyle stroke_style;
 };
 
 std::string_view trim(std::string_view s) {
@@ -91,27 +96,6 @@ std::optional<double> parse_opacity(std::string_view text) {
     return std::clamp(*v, 0.0, 1.0);
 }
 
-// SVG `points`: numbers separated by whitespace and/or a comma, read pairwise up to the first
-// error; an odd trailing number is dropped (SVG 2 error handling: render up to the error).
-std::vector<Point> parse_points(std::string_view s) {
-    std::vector<double> nums;
-    std::size_t i = 0;
-    while (i < s.size()) {
-        while (i < s.size() && (std::isspace(static_cast<unsigned char>(s[i])) || s[i] == ',')) ++i;
-        if (i >= s.size()) break;
-        const char* b = s.data() + i;
-        if (*b == '+') ++b;
-        double v;
-        auto r = std::from_chars(b, s.data() + s.size(), v);
-        if (r.ec != std::errc() || !std::isfinite(v)) break;
-        nums.push_back(v);
-        i = static_cast<std::size_t>(r.ptr - s.data());
-    }
-    std::vector<Point> pts;
-    for (std::size_t k = 0; k + 1 < nums.size(); k += 2) pts.push_back({nums[k], nums[k + 1]});
-    return pts;
-}
-
 class Reader {
 public:
     std::vector<Item> items;
@@ -165,6 +149,55 @@ public:
                 else if (val == "nonzero") st.fill_rule = FillRule::NonZero;
             } else if (k == "fill-opacity") {
                 if (auto o = parse_opacity(val)) st.fill_opacity = *o;
+            } else if (k == "stroke") {
+                if (val == "none") st.stroke = std::nullopt;
+                else if (val == "currentColor") st.stroke = st.color;
+                else if (val == "inherit") {}
+                else if (val.substr(0, 4) == "url(") {
+                    warn("paint servers (" + v + ") are not supported yet; stroked with none");
+                    st.stroke = std::nullopt;
+                } else {
+                    try { st.stroke = parse_color(val); } catch (const Error&) { warn("invalid stroke '" + v + "'"); }
+                }
+            } else if (k == "stroke-opacity") {
+                if (auto o = parse_opacity(val)) st.stroke_opacity = *o;
+            } else if (k == "stroke-width") {
+                if (auto l = parse_length(val, 100)) {
+                    if (*l >= 0) st.stroke_style.width = *l;
+                }
+            } else if (k == "stroke-linecap") {
+                if (val == "butt") st.stroke_style.cap = LineCap::Butt;
+                else if (val == "round") st.stroke_style.cap = LineCap::Round;
+                else if (val == "square") st.stroke_style.cap = LineCap::Square;
+            } else if (k == "stroke-linejoin") {
+                if (val == "miter") st.stroke_style.join = LineJoin::Miter;
+                else if (val == "miter-clip") st.stroke_style.join = LineJoin::MiterClip;
+                else if (val == "round") st.stroke_style.join = LineJoin::Round;
+                else if (val == "bevel") st.stroke_style.join = LineJoin::Bevel;
+            } else if (k == "stroke-miterlimit") {
+                if (auto n = parse_number(val); n && *n >= 1) st.stroke_style.miter_limit = *n;
+            } else if (k == "stroke-dasharray") {
+                st.stroke_style.dashes.clear();
+                if (val != "none") {
+                    std::string list(val);
+                    for (char& c : list)
+                        if (c == ',') c = ' ';
+                    std::size_t pos = 0;
+                    bool ok = true;
+                    while (pos < list.size()) {
+                        while (pos < list.size() && std::isspace(static_cast<unsigned char>(list[pos]))) ++pos;
+                        if (pos >= list.size()) break;
+                        std::size_t end = list.find(' ', pos);
+                        if (end == std::string::npos) end = list.size();
+                        auto l = parse_length(std::string_view(list).substr(pos, end - pos), 100);
+                        if (!l || *l < 0) { ok = false; break; }
+                        st.stroke_style.dashes.push_back(*l);
+                        pos = end;
+                    }
+                    if (!ok) st.stroke_style.dashes.clear();
+                }
+            } else if (k == "stroke-dashoffset") {
+                if (auto l = parse_length(val, 100)) st.stroke_style.dash_offset = *l;
             }
         }
     }
@@ -212,9 +245,10 @@ public:
             p.move_to(length_attr(n, "x1", vw), length_attr(n, "y1", vh));
             p.line_to(length_attr(n, "x2", vw), length_attr(n, "y2", vh));
         } else if (name == "polyline" || name == "polygon") {
-            std::vector<Point> pts = parse_points(n.attribute("points").value());
-            if (pts.size() < 2) return std::nullopt;
-            p.add_polygon(pts, name == "polygon");
+            std::string err;
+            p = parse_points_lenient(n.attribute("points").value(), name == "polygon", &err);
+            if (!err.empty()) warn("<" + std::string(name) + ">: " + err);
+            if (p.points().size() < 2) return std::nullopt;
         } else {
             return std::nullopt;
         }
@@ -252,9 +286,9 @@ public:
             if (name == "g" || name == "a" || name == "switch") {
                 if (opacity <= 0) continue;
                 const bool layer = opacity < 1;
-                if (layer) items.push_back({Item::BeginLayer, {}, {}, {}, FillRule::NonZero, opacity});
+                if (layer) items.push_back({Item::BeginLayer, {}, {}, {}, FillRule::NonZero, opacity, {}});
                 walk(child, cst, cm, vw, vh, depth + 1);
-                if (layer) items.push_back({Item::EndLayer, {}, {}, {}, FillRule::NonZero, opacity});
+                if (layer) items.push_back({Item::EndLayer, {}, {}, {}, FillRule::NonZero, opacity, {}});
                 continue;
             }
             if (name == "svg") {
@@ -268,16 +302,28 @@ public:
                     warn("<" + std::string(name) + "> is not supported; skipped");
                 continue;
             }
+            if (p->empty()) continue;
             // A line has no interior; a polyline fills like a polygon (closed implicitly).
-            if (!cst.fill || p->empty() || name == "line") continue;
+            if (cst.fill && name != "line") {
+                Item it;
+                it.kind = Item::Fill;
+                it.path = *p;
+                it.transform = cm;
+                it.color = *cst.fill;
+                it.rule = cst.fill_rule;
+                it.opacity = cst.fill_opacity * opacity;
+                items.push_back(std::move(it));
+            }
+            if (!cst.stroke || !(cst.stroke_style.width > 0)) continue;
             Item it;
-            it.kind = Item::Fill;
+            it.kind = Item::Stroke;
+            it.stroke = cst.stroke_style;
             it.path = std::move(*p);
             it.transform = cm;
-            it.color = *cst.fill;
-            it.rule = cst.fill_rule;
-            it.opacity = cst.fill_opacity * opacity;
+            it.color = *cst.stroke;
+            it.opacity = cst.stroke_opacity * opacity;
             items.push_back(std::move(it));
+            continue;
         }
     }
 };
@@ -439,7 +485,8 @@ void SvgDocument::render(Canvas& canvas, const Affine& base) const {
         paint.opacity = it.opacity;
         const Affine saved = cur->transform();
         cur->set_transform(base * it.transform);
-        cur->fill_path(it.path, paint, it.rule);
+        if (it.kind == Item::Stroke) cur->stroke_path(it.path, it.stroke, paint);
+        else cur->fill_path(it.path, paint, it.rule);
         cur->set_transform(saved);
     }
 }

@@ -1,0 +1,474 @@
+// bench/compare_glyphs.cpp: side-by-side glyph rasterization, casteljau against its peers, in one
+// process on the same outlines (issue 2, item 9).
+//
+// Every glyph of the benchmark set (glyph_set.hpp: DejaVu Sans, U+0021..U+007E and
+// U+00A1..U+017F, unhinted) is loaded with FreeType once per pixel size and converted, outside the
+// timed region, into each library's own path type. The timed work is "produce the 8-bit coverage
+// of the glyph's box in a preallocated buffer", for every glyph of the set:
+//   casteljau              Rasterizer::fill with a SpanSink copying rows into a reused buffer
+//                          (cleared first), exact_overlaps on (the default)
+//   casteljau (exact off)  the same with exact_overlaps off
+//   fill_mask, fill_mask (exact off)
+//                          Rasterizer::fill_mask, which allocates and returns a fresh Mask
+//   FreeType               FT_Outline_Render, FT_RASTER_FLAG_AA, into a gray8 FT_Bitmap (cleared first)
+//   AGG, Cairo, stb_truetype, stb (from font)   see peer_*.cpp
+// Timing: thread CPU time (timer.hpp: the machine is shared). Each renderer is calibrated to N
+// passes over the whole set lasting at least --min-time seconds; then --runs rounds run every
+// renderer once in turn (round-robin, so a noisy neighbour hits all of them alike) and the best
+// round counts. glyphs/s = glyphs x N / best.
+// Before timing, every renderer's output is compared pixel by pixel with FreeType's (mean and max
+// absolute difference in 1/255), so nobody benchmarks a broken render; the program exits 1 when
+// casteljau disagrees with FreeType beyond kMaxMeanVsFreeType or fill and fill_mask differ.
+//
+// Usage: compare_glyphs [--quick] [--runs R] [--min-time S] [--sizes 12,24,...] [--only NAMES]
+//                       [--passes N] [--tolerance PX] [--no-check]
+//   --quick     smoke test: one pass, one run (used by ctest)
+//   --no-check  skip the agreement pass (and its tables): for profiling the timed part alone
+//   --only      time only the renderers named (comma-separated, exact names as in the table header,
+//               e.g. --only "casteljau,FreeType"); accuracy is still checked for all. With
+//               --passes N this is the profiling entry point (fixed work, no calibration)
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "casteljau/raster.hpp"
+#include "glyph_set.hpp"
+#include "timer.hpp"
+#include "renderer.hpp"
+
+namespace {
+
+using bench::Coverage;
+using bench::GlyphSet;
+using bench::Renderer;
+
+// casteljau and FreeType both compute exact areas of slightly different polygons (each flattens
+// with its own tolerance) and differ where contours overlap (FreeType accumulates, casteljau is
+// exact there); their mean difference on this set is a few tenths of 1/255 (see BENCHMARKS.md).
+// A broken render (offset, flipped, wrong fill rule) is far beyond this.
+constexpr double kMaxMeanVsFreeType = 2.0;  // FreeType flattens conics to ~1/16 px, casteljau to 0.015 px: at 12 px the two differ by ~1.4/255 on average; a broken render differs by far more
+
+struct Options {
+    bool quick = false;
+    bool check = true;
+    int runs = 7;
+    double min_time = 0.15;
+    int passes = 0;  // fixed passes per run (0: calibrate)
+    std::vector<int> sizes{12, 24, 48, 96, 256};
+    std::string only;
+    double tolerance = casteljau::kDefaultTolerance;
+};
+
+[[noreturn]] void usage(const char* msg) {
+    std::fprintf(stderr,
+                 "compare_glyphs: %s\nusage: compare_glyphs [--quick] [--runs R] [--min-time S] [--sizes 12,24,...]\n"
+                 "                      [--only NAMES] [--passes N] [--tolerance PX] [--no-check]\n",
+                 msg);
+    std::exit(2);
+}
+
+Options parse(int argc, char** argv) {
+    Options o;
+    auto value = [&](int& i) -> std::string {
+        if (i + 1 >= argc) usage((std::string("missing value after ") + argv[i]).c_str());
+        return argv[++i];
+    };
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--quick") {
+            o.quick = true;
+            o.runs = 1;
+            o.passes = 1;
+        } else if (a == "--no-check") {
+            o.check = false;
+        } else if (a == "--runs") {
+            o.runs = std::max(1, std::atoi(value(i).c_str()));
+        } else if (a == "--min-time") {
+            o.min_time = std::atof(value(i).c_str());
+        } else if (a == "--passes") {
+            o.passes = std::max(1, std::atoi(value(i).c_str()));
+        } else if (a == "--only") {
+            o.only = value(i);
+        } else if (a == "--tolerance") {
+            o.tolerance = std::atof(value(i).c_str());
+            if (!(o.tolerance > 0)) usage("--tolerance must be positive");
+        } else if (a == "--sizes") {
+            o.sizes.clear();
+            std::string s = value(i);
+            for (std::size_t p = 0; p < s.size();) {
+                const std::size_t q = s.find(',', p);
+                const int v = std::atoi(s.substr(p, q - p).c_str());
+                if (v <= 0) usage("bad --sizes");
+                o.sizes.push_back(v);
+                p = q == std::string::npos ? s.size() : q + 1;
+            }
+        } else if (a == "--help" || a == "-h") {
+            usage("side-by-side glyph rasterization benchmark");
+        } else {
+            usage(("unknown argument " + a).c_str());
+        }
+    }
+    return o;
+}
+
+// Whether `name` is one of the comma-separated names in `list`.
+bool in_list(const std::string& list, const std::string& name) {
+    std::size_t p = 0;
+    while (p <= list.size()) {
+        std::size_t q = list.find(',', p);
+        if (q == std::string::npos) q = list.size();
+        if (list.compare(p, q - p, name) == 0) return true;
+        p = q + 1;
+    }
+    return false;
+}
+
+// --- casteljau ---------------------------------------------------------------------------------
+
+class BufferSink final : public casteljau::SpanSink {
+public:
+    std::uint8_t* buf = nullptr;
+    int stride = 0;
+    void row(int y, int x, int length, const std::uint8_t* coverage) override {
+        std::memcpy(buf + static_cast<std::size_t>(y) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(x),
+                    coverage, static_cast<std::size_t>(length));
+    }
+};
+
+class CasteljauFill final : public Renderer {
+public:
+    CasteljauFill(bool exact, double tol) : exact_(exact) {
+        opts_.exact_overlaps = exact;
+        opts_.tolerance = tol;
+    }
+    std::string name() const override { return exact_ ? "casteljau" : "casteljau (exact off)"; }
+    void prepare(const GlyphSet& set) override {
+        set_ = &set;
+        buf_.assign(set.max_box_pixels(), 0);
+    }
+    Coverage render(std::size_t i) override {
+        const bench::Glyph& g = set_->glyphs()[i];
+        std::memset(buf_.data(), 0, g.box.pixels());
+        sink_.buf = buf_.data();
+        sink_.stride = g.box.width;
+        rast_.fill(g.path, g.to_box, opts_, casteljau::IRect{0, 0, g.box.width, g.box.height}, sink_);
+        return {buf_.data(), g.box.width, g.box};
+    }
+    const casteljau::RasterStats& stats() const { return rast_.last_stats(); }
+
+private:
+    bool exact_;
+    casteljau::FillOptions opts_;
+    const GlyphSet* set_ = nullptr;
+    casteljau::Rasterizer rast_;
+    BufferSink sink_;
+    std::vector<std::uint8_t> buf_;
+};
+
+class CasteljauMask final : public Renderer {
+public:
+    CasteljauMask(bool exact, double tol) : exact_(exact) {
+        opts_.exact_overlaps = exact;
+        opts_.tolerance = tol;
+    }
+    std::string name() const override { return exact_ ? "fill_mask" : "fill_mask (exact off)"; }
+    void prepare(const GlyphSet& set) override { set_ = &set; }
+    Coverage render(std::size_t i) override {
+        const bench::Glyph& g = set_->glyphs()[i];
+        mask_ = rast_.fill_mask(g.path, g.to_box, opts_);
+        // The mask covers the control box in the box's pixel space: (0, 0) is the box's corner.
+        bench::Box b{g.box.x0 + mask_.bounds.x0, g.box.y0 + mask_.bounds.y0, mask_.bounds.width(),
+                     mask_.bounds.height()};
+        return {mask_.data.data(), mask_.bounds.width(), b};
+    }
+
+private:
+    bool exact_;
+    casteljau::FillOptions opts_;
+    const GlyphSet* set_ = nullptr;
+    casteljau::Rasterizer rast_;
+    casteljau::Mask mask_;
+};
+
+// --- FreeType ----------------------------------------------------------------------------------
+
+class FreeTypeRenderer final : public Renderer {
+public:
+    std::string name() const override { return "FreeType"; }
+    std::string version() const override {
+        return std::to_string(FREETYPE_MAJOR) + "." + std::to_string(FREETYPE_MINOR) + "." +
+               std::to_string(FREETYPE_PATCH);
+    }
+    void prepare(const GlyphSet& set) override {
+        set_ = &set;
+        buf_.assign(set.max_box_pixels(), 0);
+    }
+    Coverage render(std::size_t i) override {
+        const bench::Glyph& g = set_->glyphs()[i];
+        std::memset(buf_.data(), 0, g.box.pixels());
+        FT_Bitmap bm{};
+        bm.rows = static_cast<unsigned>(g.box.height);
+        bm.width = static_cast<unsigned>(g.box.width);
+        bm.pitch = g.box.width;
+        bm.buffer = buf_.data();
+        bm.pixel_mode = FT_PIXEL_MODE_GRAY;
+        bm.num_grays = 256;
+        FT_Raster_Params params{};
+        params.target = &bm;
+        params.flags = FT_RASTER_FLAG_AA;
+        FT_Outline outline = g.outline;  // shallow copy of the handle; FreeType does not modify it
+        FT_Outline_Render(set_->font().library(), &outline, &params);
+        return {buf_.data(), g.box.width, g.box};
+    }
+
+private:
+    const GlyphSet* set_ = nullptr;
+    std::vector<std::uint8_t> buf_;
+};
+
+// --- harness -----------------------------------------------------------------------------------
+
+
+double time_passes(Renderer& r, std::size_t n, int passes, unsigned& checksum) {
+    const double t0 = bench::thread_cpu_seconds();
+    for (int p = 0; p < passes; ++p) {
+        for (std::size_t i = 0; i < n; ++i) {
+            const Coverage c = r.render(i);
+            checksum += c.data ? c.data[0] : 0u;
+        }
+    }
+    return bench::thread_cpu_seconds() - t0;
+}
+
+struct Owned {  // a copy of one render, for comparisons
+    std::vector<std::uint8_t> data;
+    Coverage cov;
+};
+
+Owned copy_of(const Coverage& c) {
+    Owned o;
+    o.data.resize(static_cast<std::size_t>(c.stride) * static_cast<std::size_t>(c.box.height));
+    if (!o.data.empty()) std::memcpy(o.data.data(), c.data, o.data.size());
+    o.cov = {o.data.data(), c.stride, c.box};
+    return o;
+}
+
+struct Result {
+    double glyphs_per_s = 0;
+    int passes = 0;
+    bench::DiffStats vs_freetype, vs_casteljau;
+};
+
+std::string fmt(const char* f, double v) {
+    char b[64];
+    std::snprintf(b, sizeof b, f, v);
+    return b;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const Options opt = parse(argc, argv);
+    try {
+        bench::Font font;
+        std::vector<std::unique_ptr<Renderer>> rs;
+        rs.push_back(std::make_unique<CasteljauFill>(true, opt.tolerance));
+        rs.push_back(std::make_unique<CasteljauFill>(false, opt.tolerance));
+        rs.push_back(std::make_unique<CasteljauMask>(true, opt.tolerance));
+        rs.push_back(std::make_unique<CasteljauMask>(false, opt.tolerance));
+        rs.push_back(std::make_unique<FreeTypeRenderer>());
+#ifdef CASTELJAU_HAVE_AGG
+        rs.push_back(bench::make_agg_renderer());
+#endif
+#ifdef CASTELJAU_HAVE_CAIRO
+        rs.push_back(bench::make_cairo_renderer());
+#endif
+#ifdef CASTELJAU_HAVE_STB
+        rs.push_back(bench::make_stb_renderer(false));
+        rs.push_back(bench::make_stb_renderer(true));
+#endif
+        const std::size_t kCast = 0, kCastOff = 1, kMask = 2, kMaskOff = 3, kFT = 4;
+        std::vector<bool> timed(rs.size(), true);
+        if (!opt.only.empty())
+            for (std::size_t r = 0; r < rs.size(); ++r) timed[r] = in_list(opt.only, rs[r]->name());
+
+        std::printf("compare_glyphs: %s, %zu codepoints (U+0021..U+007E, U+00A1..U+017F), unhinted\n",
+                    font.path().c_str(), bench::benchmark_codepoints().size());
+        std::printf("renderers:");
+        for (const auto& r : rs) {
+            const std::string v = r->version();
+            std::printf(" %s%s%s%s;", r->name().c_str(), v.empty() ? "" : " (", v.c_str(), v.empty() ? "" : ")");
+        }
+        std::printf("\ncasteljau tolerance %.3g px; ", opt.tolerance);
+        if (opt.passes > 0)
+            std::printf("timing (thread CPU time): best of %d run(s) of %d pass(es) over the set\n\n", opt.runs, opt.passes);
+        else
+            std::printf("timing (thread CPU time): best of %d runs, each >= %.2f s of whole passes over the set\n\n", opt.runs,
+                        opt.min_time);
+
+        bool ok = true;
+        unsigned checksum = 0;
+        std::vector<std::vector<Result>> results(opt.sizes.size(), std::vector<Result>(rs.size()));
+        struct SizeInfo { std::size_t glyphs, pixels, segments, exact_cells, curves; };
+        std::vector<SizeInfo> info(opt.sizes.size());
+
+        for (std::size_t si = 0; si < opt.sizes.size(); ++si) {
+            const GlyphSet set(font, opt.sizes[si]);
+            const std::size_t n = set.size();
+            for (auto& r : rs) r->prepare(set);
+
+            // Agreement: every renderer against FreeType and against casteljau, glyph by glyph.
+            SizeInfo& in = info[si];
+            in = {n, set.total_box_pixels(), 0, 0, 0};
+            auto* cast = static_cast<CasteljauFill*>(rs[kCast].get());
+            bench::DiffStats mask_off_vs_fill_off;
+            for (std::size_t i = 0; i < (opt.check ? n : 0); ++i) {
+                const Owned ft = copy_of(rs[kFT]->render(i));
+                const Owned cj = copy_of(cast->render(i));
+                in.segments += cast->stats().segments;
+                in.exact_cells += cast->stats().exact_cells;
+                in.curves += set.glyphs()[i].curves;
+                const Owned cj_off = copy_of(rs[kCastOff]->render(i));
+                mask_off_vs_fill_off.add(rs[kMaskOff]->render(i), cj_off.cov);
+                for (std::size_t r = 0; r < rs.size(); ++r) {
+                    const Coverage c = rs[r]->render(i);
+                    results[si][r].vs_freetype.add(c, ft.cov);
+                    results[si][r].vs_casteljau.add(c, cj.cov);
+                }
+            }
+            if (opt.check) {
+                const double m = results[si][kCast].vs_freetype.mean();
+                if (!(m <= kMaxMeanVsFreeType)) {
+                    std::fprintf(stderr, "FAIL: %d px: casteljau vs FreeType mean |diff| %.3f/255 > %.1f/255\n",
+                                 opt.sizes[si], m, kMaxMeanVsFreeType);
+                    ok = false;
+                }
+                if (results[si][kMask].vs_casteljau.max != 0) {
+                    std::fprintf(stderr, "FAIL: %d px: fill_mask differs from fill (max %d/255)\n", opt.sizes[si],
+                                 results[si][kMask].vs_casteljau.max);
+                    ok = false;
+                }
+                if (mask_off_vs_fill_off.max != 0) {
+                    std::fprintf(stderr, "FAIL: %d px: fill_mask (exact off) differs from fill (exact off) (max %d/255)\n",
+                                 opt.sizes[si], mask_off_vs_fill_off.max);
+                    ok = false;
+                }
+            }
+
+            // Timing.
+            for (std::size_t r = 0; r < rs.size(); ++r) {
+                if (!timed[r]) continue;
+                if (opt.passes > 0) {
+                    results[si][r].passes = opt.passes;
+                } else {
+                    const double t1 = time_passes(*rs[r], n, 1, checksum);  // also warms up
+                    results[si][r].passes = std::max(1, static_cast<int>(std::ceil(opt.min_time / std::max(t1, 1e-9))));
+                }
+            }
+            std::vector<double> best(rs.size(), INFINITY);
+            for (int run = 0; run < opt.runs; ++run) {
+                for (std::size_t r = 0; r < rs.size(); ++r) {
+                    if (!timed[r]) continue;
+                    best[r] = std::min(best[r], time_passes(*rs[r], n, results[si][r].passes, checksum));
+                }
+            }
+            for (std::size_t r = 0; r < rs.size(); ++r)
+                if (timed[r]) results[si][r].glyphs_per_s = static_cast<double>(n) * results[si][r].passes / best[r];
+            std::fprintf(stderr, "  %d px done\n", opt.sizes[si]);
+        }
+
+        // --- tables (Markdown) ---
+        if (opt.check) {
+            std::printf("Glyph set per size (casteljau at tolerance %.3g px, exact overlaps on):\n\n", opt.tolerance);
+            std::printf("| px | glyphs | box pixels/glyph | curves/glyph | edges/glyph | exact cells/glyph | pixels changed by exact/glyph | by > 1/255 |\n");
+            std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+            for (std::size_t si = 0; si < opt.sizes.size(); ++si) {
+                const SizeInfo& in = info[si];
+                const double g = static_cast<double>(in.glyphs);
+                const auto& d = results[si][kCastOff].vs_casteljau;
+                std::printf("| %d | %zu | %.0f | %.1f | %.1f | %.2f | %.3f | %.3f |\n", opt.sizes[si], in.glyphs, in.pixels / g,
+                            in.curves / g, in.segments / g, in.exact_cells / g, static_cast<double>(d.changed) / g,
+                            static_cast<double>(d.over1) / g);
+            }
+        }
+        std::printf("\nThroughput, thousands of glyphs per second (higher is better):\n\n| px |");
+        for (std::size_t r = 0; r < rs.size(); ++r)
+            if (timed[r]) std::printf(" %s |", rs[r]->name().c_str());
+        std::printf("\n|---:|");
+        for (std::size_t r = 0; r < rs.size(); ++r)
+            if (timed[r]) std::printf("---:|");
+        std::printf("\n");
+        for (std::size_t si = 0; si < opt.sizes.size(); ++si) {
+            std::printf("| %d |", opt.sizes[si]);
+            for (std::size_t r = 0; r < rs.size(); ++r)
+                if (timed[r]) std::printf(" %s |", fmt("%.1f", results[si][r].glyphs_per_s / 1000).c_str());
+            std::printf("\n");
+        }
+
+        if (timed[kCast]) {
+            std::printf("\nSpeed ratio: casteljau (fill, exact overlaps on) / peer; > 1 means casteljau is faster:\n\n| px |");
+            for (std::size_t r = 0; r < rs.size(); ++r)
+                if (r != kCast && timed[r]) std::printf(" vs %s |", rs[r]->name().c_str());
+            std::printf("\n|---:|");
+            for (std::size_t r = 0; r < rs.size(); ++r)
+                if (r != kCast && timed[r]) std::printf("---:|");
+            std::printf("\n");
+            for (std::size_t si = 0; si < opt.sizes.size(); ++si) {
+                std::printf("| %d |", opt.sizes[si]);
+                for (std::size_t r = 0; r < rs.size(); ++r)
+                    if (r != kCast && timed[r])
+                        std::printf(" %s |", fmt("%.2f", results[si][kCast].glyphs_per_s / results[si][r].glyphs_per_s).c_str());
+                std::printf("\n");
+            }
+        }
+
+        if (!opt.check) {
+            std::printf("\n(agreement pass skipped: --no-check)\n(checksum %u)\n", checksum);
+            return 0;
+        }
+        std::printf("\nAgreement with FreeType: mean / max |difference| per pixel of the glyph boxes, in 1/255:\n\n| px |");
+        for (std::size_t r = 0; r < rs.size(); ++r)
+            if (r != kFT) std::printf(" %s |", rs[r]->name().c_str());
+        std::printf("\n|---:|");
+        for (std::size_t r = 0; r < rs.size(); ++r)
+            if (r != kFT) std::printf("---:|");
+        std::printf("\n");
+        for (std::size_t si = 0; si < opt.sizes.size(); ++si) {
+            std::printf("| %d |", opt.sizes[si]);
+            for (std::size_t r = 0; r < rs.size(); ++r) {
+                if (r == kFT) continue;
+                const auto& d = results[si][r].vs_freetype;
+                std::printf(" %.3f / %d |", d.mean(), d.max);
+            }
+            std::printf("\n");
+        }
+        std::printf("\nAgreement with casteljau (fill, exact on): mean / max |difference| in 1/255:\n\n| px |");
+        for (std::size_t r = 1; r < rs.size(); ++r) std::printf(" %s |", rs[r]->name().c_str());
+        std::printf("\n|---:|");
+        for (std::size_t r = 1; r < rs.size(); ++r) std::printf("---:|");
+        std::printf("\n");
+        for (std::size_t si = 0; si < opt.sizes.size(); ++si) {
+            std::printf("| %d |", opt.sizes[si]);
+            for (std::size_t r = 1; r < rs.size(); ++r) {
+                const auto& d = results[si][r].vs_casteljau;
+                std::printf(" %.3f / %d |", d.mean(), d.max);
+            }
+            std::printf("\n");
+        }
+        std::printf("\n(checksum %u)\n", checksum);
+        if (!ok) {
+            std::fprintf(stderr, "compare_glyphs: FAILED agreement checks\n");
+            return 1;
+        }
+        return 0;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "compare_glyphs: error: %s\n", e.what());
+        return 1;
+    }
+}

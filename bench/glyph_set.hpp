@@ -1,0 +1,118 @@
+// bench/glyph_set.hpp: the glyph outlines every benchmark renders, loaded once with FreeType.
+//
+// The set is DejaVu Sans (fonts/DejaVuSans.ttf), every glyph for U+0021..U+007E and U+00A1..U+017F,
+// loaded unhinted (FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) at a pixel size. Each glyph keeps
+//   - its FreeType outline (26.6 pixels, y up), translated so that its box starts at (0, 0), ready
+//     for FT_Outline_Render into a bitmap of the box;
+//   - the same outline as a casteljau::Path (conic -> quad_to, cubic -> cubic_to) in 26.6 units,
+//     y up, untranslated, plus the Affine that maps it onto the box in pixel space (x right, y down,
+//     origin at the box's top-left corner), so every renderer sees exactly the same geometry;
+//   - its box: the control box of the outline rounded outwards to whole pixels (FreeType's rule),
+//     relative to the pen origin with y down.
+// All conversion happens here, outside any timed region.
+// Thread-safety: a GlyphSet is not shared between threads.
+#pragma once
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include FT_OUTLINE_H
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "casteljau/path.hpp"
+
+namespace bench {
+
+// Codepoints of the benchmark set: U+0021..U+007E and U+00A1..U+017F.
+std::vector<std::uint32_t> benchmark_codepoints();
+
+// The font file: an FT_Library with the face opened on it, plus the file's bytes (stb_truetype
+// reads the font from memory). Not copyable.
+class Font {
+public:
+    explicit Font(const std::string& path = CASTELJAU_BENCH_FONT);
+    ~Font();
+    Font(const Font&) = delete;
+    Font& operator=(const Font&) = delete;
+
+    FT_Library library() const { return lib_; }
+    FT_Face face() const { return face_; }
+    const std::vector<unsigned char>& bytes() const { return bytes_; }
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+    std::vector<unsigned char> bytes_;
+    FT_Library lib_ = nullptr;
+    FT_Face face_ = nullptr;
+};
+
+struct Box {
+    int x0 = 0, y0 = 0;  // top-left pixel relative to the pen origin, y down
+    int width = 0, height = 0;
+    std::size_t pixels() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
+};
+
+struct Glyph {
+    std::uint32_t codepoint = 0;
+    unsigned glyph_index = 0;
+    Box box;
+    FT_Outline outline{};        // owned copy, translated: box's bottom-left corner at (0, 0)
+    casteljau::Path path;        // 26.6 units, y up, as loaded
+    casteljau::Affine to_box;    // path -> box pixels (y down, origin at the box's top-left)
+    std::size_t curves = 0;      // quadratic + cubic segments in the outline
+};
+
+// All glyphs of the benchmark set at one pixel size (ppem). Glyphs with an empty outline are left out.
+class GlyphSet {
+public:
+    GlyphSet(const Font& font, int pixel_size);
+    ~GlyphSet();
+    GlyphSet(const GlyphSet&) = delete;
+    GlyphSet& operator=(const GlyphSet&) = delete;
+
+    int pixel_size() const { return px_; }
+    const std::vector<Glyph>& glyphs() const { return glyphs_; }
+    std::size_t size() const { return glyphs_.size(); }
+    std::size_t max_box_pixels() const { return max_pixels_; }
+    int max_width() const { return max_w_; }
+    int max_height() const { return max_h_; }
+    std::size_t total_box_pixels() const { return total_pixels_; }
+    const Font& font() const { return font_; }
+
+private:
+    const Font& font_;
+    int px_;
+    std::vector<Glyph> glyphs_;
+    std::size_t max_pixels_ = 0, total_pixels_ = 0;
+    int max_w_ = 0, max_h_ = 0;
+};
+
+// A rendered glyph as some renderer left it: `data` covers `box` with `stride` bytes per row.
+struct Coverage {
+    const std::uint8_t* data = nullptr;
+    int stride = 0;
+    Box box;
+    std::uint8_t at(int x, int y) const {  // x, y relative to the pen origin, y down; 0 outside
+        const int lx = x - box.x0, ly = y - box.y0;
+        if (lx < 0 || ly < 0 || lx >= box.width || ly >= box.height) return 0;
+        return data[static_cast<std::size_t>(ly) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(lx)];
+    }
+};
+
+// Per-pixel comparison of two renders of one glyph over the union of their boxes.
+struct DiffStats {
+    double sum = 0;          // sum of |a - b| in 1/255 units
+    std::size_t pixels = 0;  // pixels compared
+    int max = 0;
+    std::size_t over1 = 0;   // pixels with |a - b| > 1
+    std::size_t changed = 0; // pixels with a != b
+    void add(const Coverage& a, const Coverage& b);
+    void merge(const DiffStats& o);
+    double mean() const { return pixels ? sum / static_cast<double>(pixels) : 0.0; }
+};
+
+}  // namespace bench

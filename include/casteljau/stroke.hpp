@@ -1,0 +1,79 @@
+// casteljau/stroke.hpp: stroking and dashing, as Path -> Path steps.
+//
+// Pipeline position: Path --dash--> Path --stroke--> outline Path --(Affine)--> flatten --> fill
+// (nonzero). The outline of a stroke is an ordinary closed Path that the rasterizer fills with the
+// NONZERO rule. Its pieces may overlap (inner sides of sharp joins, self-crossing paths, dashes that
+// touch); the rasterizer computes overlapping pixels exactly, so nothing here tries to union them.
+// Every piece of the outline has the same orientation, so overlaps never cancel.
+//
+// Coordinates: everything is computed in USER space, the space of `path`, and the result is in user
+// space too. `m` is the user-to-pixel transform that the result will be drawn with: it only chooses
+// how finely curves and round joins/caps are flattened (tolerance_px / m.max_scale() in user units,
+// so the error stays below tolerance_px pixels after `m`). Because the pen is a circle of diameter
+// `width` in user space, a non-uniform `m` gives the elliptical pen SVG requires.
+// The result contains line segments only (curves and arcs are already flattened).
+//
+// Semantics (SVG 2, as resvg / tiny-skia implement them):
+// - Caps: Butt, Round (half disk), Square (half a square beyond the end). Joins: Miter, falling back
+//   to Bevel when miter length / width = 1 / sin(alpha / 2) exceeds miter_limit (alpha: the angle
+//   between the two segments; a right angle has ratio sqrt(2)); MiterClip (SVG 2 'miter-clip'): the
+//   miter cut by a line perpendicular to the join's bisector at distance miter_limit * width / 2 from
+//   the vertex; Round (circle arc); Bevel. miter_limit below 1 is treated as 1.
+// - Closed contours (Path::close) join their end to their start and get no caps.
+// - Zero-length segments are skipped when directions are taken. A contour of zero length (move +
+//   close, or segments that all have length 0) draws a disk (Round cap) or a square oriented along
+//   the user-space x axis (Square cap), and nothing with Butt caps. A lone move_to draws nothing.
+// - width <= 0 gives an empty path.
+// - Dashing: the pattern is repeated; an odd count of values is repeated once to make it even (SVG);
+//   a pattern with a negative value, or whose values are all zero, means no dashing (SVG calls a
+//   negative value an error; casteljau then renders the stroke solid, as browsers do). dash_offset
+//   may be positive or negative. The pattern runs on across the segments of a contour and restarts
+//   at every contour. On a closed contour the last and first dashes become one dash when the pattern
+//   is "on" where the contour wraps around, and a contour that is "on" throughout stays closed.
+//   Zero-length dashes are kept, so (0, d) with Round caps draws dots; Square caps of such dashes
+//   follow the path direction. Dash lengths are measured along the flattened path, whose chords are
+//   slightly shorter than the curve (on a circle of radius r flattened with user tolerance t, by a
+//   relative amount of at most t / 3r).
+// Errors: a non-finite point, transform or style value (width, miter_limit, dash values, offset)
+// throws Error(InvalidData); a tolerance that is not a positive finite number throws
+// Error(InvalidArgument); more than limits::kMaxDashes dashes or limits::kMaxPathPoints output
+// points throws Error(Limit).
+// Thread-safety: free functions without shared state.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "casteljau/geometry.hpp"
+#include "casteljau/path.hpp"
+
+namespace casteljau {
+
+namespace limits {
+inline constexpr std::size_t kMaxDashes = 1u << 22;  // dashes produced from one path
+}  // namespace limits
+
+enum class LineCap { Butt, Round, Square };
+enum class LineJoin { Miter, MiterClip, Round, Bevel };  // SVG 2 names
+
+struct StrokeStyle {
+    double width = 1;
+    LineCap cap = LineCap::Butt;
+    LineJoin join = LineJoin::Miter;
+    double miter_limit = 4;
+    std::vector<double> dashes;  // empty: solid
+    double dash_offset = 0;
+};
+
+// Outline of the stroke of `path` (user space) as closed contours to be filled with the nonzero rule.
+// `m` is the user-to-pixel transform used to pick the flattening tolerance (see above).
+Path stroke(const Path& path, const StrokeStyle& style, const Affine& m = {}, double tolerance_px = 0.05);
+
+// The dashes of `path` as open contours (made of line segments, in user space); a contour that the
+// pattern leaves "on" all around stays closed. Without an effective pattern (empty, all zero, a
+// negative value) the result is the flattened path itself.
+Path dash(const Path& path, std::span<const double> dashes, double offset, const Affine& m = {},
+          double tolerance_px = 0.05);
+
+}  // namespace casteljau

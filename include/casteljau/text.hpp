@@ -1,0 +1,173 @@
+// casteljau/text.hpp: text. UTF-8 in, positioned glyphs out (shaping and layout), and drawing them
+// on a Canvas through a glyph coverage cache or through outlines.
+//
+// Pipeline: UTF-8 --decode (invalid -> U+FFFD)--> paragraphs (split at \n, \r\n, \r, U+2029)
+//   --> bidi levels (base direction from the first strong character or TextStyle::direction)
+//   --> runs of one level, script and font (fallback: each character from the first font that has
+//       it; marks, spaces and joiners stay with their base's font; .notdef of the first font only
+//       when no font has it) --> HarfBuzz shaping per run (kerning, ligatures, marks, joining forms)
+//   --> greedy line breaking at spaces / zero-width spaces / after hyphens / around ideographs
+//   --> visual order per line (right-to-left runs reversed) --> alignment --> PositionedGlyphs.
+// Drawing: glyph Paths (font.hpp) --glyph Affine--> Rasterizer::fill_mask --> GlyphCache --> the
+//   Canvas's Pixmap (source-over of Paint x coverage); or, when the Canvas transform rotates, skews or
+//   scales unevenly, each outline is filled with Canvas::fill_path under the full Affine.
+//
+// Coordinates: a TextLayout is in "layout space": pixels, x right, y down, (0, 0) the top-left corner
+// of the logical text box; line i's baseline is at ascender + i * line advance of the first font.
+// draw_text() maps layout space by the Canvas's current transform after a translation to `origin`.
+//
+// Simplifications (documented limits): bidi is a subset of the Unicode algorithm (levels 0 to 2:
+// strong letters, numbers, neutrals between them; no explicit embeddings/isolates); lines break only
+// at the opportunities listed above (a word longer than the wrap width overflows its line); glyphs
+// are not reshaped at line breaks (breaks fall at spaces, where shaping does not interact);
+// horizontal text only.
+//
+// Thread-safety: layout_text() and draw_text() use the Fonts they are given (see font.hpp: one
+// thread per Font at a time); a GlyphCache belongs to one thread at a time. TextLayouts are values
+// but point at their Fonts, which must outlive them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "casteljau/canvas.hpp"
+#include "casteljau/font.hpp"
+#include "casteljau/geometry.hpp"
+#include "casteljau/raster.hpp"
+
+namespace casteljau {
+
+namespace limits {
+inline constexpr std::size_t kMaxTextBytes = 16u << 20;  // UTF-8 bytes accepted by layout_text
+}  // namespace limits
+
+// Flattening tolerance (px) used for glyphs. Chosen by measurement (tests/test_font.cpp, "Glyph
+// coverage ..."): against FreeType's rendering of the same outlines supersampled 4-16x, the worst
+// per-glyph mean difference (over the ink box) at 9-200 px is ~5-8/255 at 0.05 px (small dots and
+// rings lose area to their chords), ~2.5/255 at 0.02 px, ~1.1/255 at 0.01 px and ~0.9/255 at
+// 0.005 px, where small rings match the 16x reference exactly. Glyph masks are cached, so the
+// extra segments cost little.
+inline constexpr double kTextTolerance = 0.005;
+
+// Decodes UTF-8; each maximal invalid subsequence (and each encoded surrogate or value above
+// U+10FFFF) becomes one U+FFFD, following the Unicode / WHATWG recommendation.
+std::u32string decode_utf8(std::string_view utf8);
+
+enum class TextDirection { Auto, LeftToRight, RightToLeft };
+enum class TextAlign { Start, Left, Center, Right };  // Start: left for LTR paragraphs, right for RTL
+
+struct TextStyle {
+    double size = 16;           // pixels per em (check_font_size: 0 < size <= limits::kMaxFontSize)
+    double line_height = 1.0;   // line advance as a multiple of the first font's line spacing (> 0)
+    TextAlign align = TextAlign::Start;
+    double max_width = 0;       // wrap lines at word boundaries to this width in px; 0: no wrapping
+    TextDirection direction = TextDirection::Auto;  // base direction of every paragraph
+    std::string script;         // ISO 15924 tag ("Latn", "Arab", "Hebr") for every run; "": detect
+    std::string language;       // BCP 47 tag ("en", "ar", "tr"); "": none
+    std::vector<std::string> features;  // HarfBuzz feature strings, e.g. "kern=0", "liga=0", "smcp"
+};
+
+struct PositionedGlyph {
+    std::uint32_t glyph = 0;    // glyph id in the font
+    std::uint16_t font = 0;     // index into TextLayout::fonts
+    std::uint32_t cluster = 0;  // index into TextLayout::text of the first code point it shows
+    Point position;             // glyph origin on the baseline, layout space
+};
+
+struct TextLine {
+    std::size_t first_glyph = 0, glyph_count = 0;  // glyphs in visual order, left to right
+    double baseline = 0;        // y of the baseline
+    double x = 0;               // left end of the line after alignment
+    double width = 0;           // advance width, trailing spaces excluded
+    bool rtl = false;           // the paragraph's base direction
+    std::size_t text_begin = 0, text_end = 0;  // code point range of TextLayout::text on this line
+};
+
+struct TextLayout {
+    std::vector<const Font*> fonts;  // not owned: must outlive the layout
+    double size = 0;
+    std::u32string text;             // the decoded input (line breaks included)
+    std::vector<PositionedGlyph> glyphs;
+    std::vector<TextLine> lines;
+    double width = 0;                // the box: the wrap width, or the widest line without wrapping
+    double height = 0;               // first ascender to last descender, line advances between
+    Rect ink;                        // union of the glyph outlines' bounds; empty when nothing inks
+    // The box united with the ink (both in layout space): what an image must hold to show it all.
+    Rect bounds() const;
+};
+
+// Shapes and lays out `utf8` with a fallback chain of fonts (fonts[0] first; at least one). Throws
+// Error(InvalidArgument) for no fonts, a bad size or line height, Error(Limit) past
+// limits::kMaxTextBytes or limits::kMaxFontSize, Error(Parse) for a bad feature or script string.
+// Empty text gives a layout with no lines.
+TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts, const TextStyle& style);
+TextLayout layout_text(std::string_view utf8, const Font& font, const TextStyle& style);
+
+struct GlyphCacheStats {
+    std::size_t hits = 0, misses = 0, entries = 0, bytes = 0, flushes = 0;
+};
+
+// Coverage masks of glyphs, keyed by (font, variation, glyph, size, subpixel offset), rasterized by
+// casteljau's Rasterizer from the unhinted outline. When the masks exceed `max_bytes` the cache is
+// emptied (cheap and predictable; a text's working set is small). Also keeps glyph outlines for the
+// transformed-drawing path. An entry made for a Font that has been destroyed is never reused.
+class GlyphCache {
+public:
+    // `tolerance`: flattening tolerance in pixels for the masks made by this cache.
+    explicit GlyphCache(std::size_t max_bytes = 32u << 20, double tolerance = kTextTolerance);
+    ~GlyphCache();
+    GlyphCache(GlyphCache&&) noexcept;
+    GlyphCache& operator=(GlyphCache&&) noexcept;
+
+    // The glyph's coverage with its origin at `offset` (each coordinate in [0, 1) px): the mask's
+    // bounds are relative to the integer pixel grid the origin sits in. Draw code passes offsets
+    // quantized to a few steps per pixel, so that entries are reused. The reference stays valid
+    // until the next call on this cache.
+    const Mask& mask(const Font& font, std::uint32_t glyph, double size, Point offset, Rasterizer& raster);
+    // The glyph's outline in font units (font.hpp), cached.
+    const Path& outline(const Font& font, std::uint32_t glyph);
+
+    void clear();
+    std::size_t max_bytes() const;
+    double tolerance() const;
+    const GlyphCacheStats& stats() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+struct TextDrawOptions {
+    // On the cached path glyph origins are rounded to 1/subpixel_steps px horizontally (1 to 64)
+    // and to 1/subpixel_steps_y px vertically. The default snaps baselines to whole pixels: every
+    // glyph of a line moves by the same amount, and each glyph needs 4 masks instead of 16.
+    int subpixel_steps = 4;
+    int subpixel_steps_y = 1;
+    // Draw every glyph through its outline (Canvas::fill_path) even when the cache could be used.
+    bool force_outlines = false;
+    // Glyphs drawn through the cache up to this size in device pixels per em; larger ones go through
+    // outlines (their masks would be large and rarely reused).
+    double max_cached_size = 256;
+    // Flattening tolerance (px) for glyphs drawn through outlines; cached masks use the cache's own.
+    double tolerance = kTextTolerance;
+};
+
+// Draws a layout with its box's top-left corner at `origin` (user space of the Canvas). When the
+// Canvas transform is a translation plus a uniform positive scale, glyph masks come from `cache`
+// (a temporary cache when null) and are composited directly; otherwise (rotation, skew, uneven or
+// mirroring scale) each glyph's outline is filled with the full transform. `paint` supplies colour,
+// opacity and Paint::linear_blend (gamma-correct coverage blending).
+void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Paint& paint,
+               GlyphCache* cache = nullptr, const TextDrawOptions& options = {});
+
+// Lays out `utf8` in one font with default style at `size` px and draws it with the box's top-left
+// corner at `origin`. Returns the layout.
+TextLayout draw_text(Canvas& canvas, std::string_view utf8, const Font& font, double size, Point origin,
+                     const Paint& paint);
+
+}  // namespace casteljau

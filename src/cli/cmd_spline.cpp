@@ -1,0 +1,215 @@
+// casteljau spline: B-splines, NURBS and interpolating splines (Hermite, Cardinal, Catmull-Rom,
+// Kochanek-Bartels, natural cubic), converted to Bézier pieces or evaluated.
+//
+//   casteljau spline --kind bspline --points "0,0 10,20 30,20 40,0" --degree 2 --to-bezier
+//   casteljau spline --kind catmull-rom --points "0,0 10,10 20,0 30,10" --to-bezier
+//   casteljau spline --kind nurbs --points-file arc.json --eval 0.5
+//
+// Pieces print one after another, separated by an empty line; NURBS pieces print "x y w" (the
+// weight last). Parameters: B-splines and NURBS use their knot domain; interpolating splines use
+// T in [0, pieces], piece floor(T) at local parameter T - floor(T).
+// Output format: curve_args.hpp. Exit status 1: bad data; 2: bad usage.
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "casteljau/nurbs.hpp"
+#include "casteljau/spline.hpp"
+#include "cli/cli.hpp"
+#include "cli/curve_args.hpp"
+
+namespace casteljau::cli {
+
+namespace {
+
+struct SplineOptions {
+    std::string kind, points, points_file, knots, knot_type = "clamped", weights, tangents, ends = "duplicate",
+                                                                          param = "uniform";
+    int degree = 3, derivative = 0;
+    double tension = 0, continuity = 0, bias = 0, eval = 0, basis_at = 0;
+    CLI::Option *o_points = nullptr, *o_file = nullptr, *o_degree = nullptr, *o_knots = nullptr, *o_knot_type = nullptr,
+                *o_weights = nullptr, *o_tangents = nullptr, *o_tension = nullptr, *o_continuity = nullptr,
+                *o_bias = nullptr, *o_ends = nullptr, *o_param = nullptr, *o_to_bezier = nullptr, *o_eval = nullptr,
+                *o_derivative = nullptr, *o_basis_at = nullptr;
+};
+
+template <CurvePoint P> P to_point(const Point3& p) {
+    if constexpr (std::same_as<P, Point>) return {p.x, p.y};
+    else return p;
+}
+Point3 to_p3(const Point& p) { return {p.x, p.y, 0}; }
+Point3 to_p3(const Point3& p) { return p; }
+
+template <CurvePoint P> std::vector<P> convert(const PointList& l) {
+    std::vector<P> v;
+    for (const Point3& p : l.points) v.push_back(to_point<P>(p));
+    return v;
+}
+
+bool is_knot_kind(const std::string& k) { return k == "bspline" || k == "nurbs"; }
+
+template <CurvePoint P> void run(const SplineOptions& o, const CurveFile& file) {
+    const double scale = file.points.scale();
+    constexpr int dim = point_dimension<P>;
+    std::ostringstream out;
+    auto line = [&](const P& p) { out << format_point(to_p3(p), scale, dim) << '\n'; };
+    const std::vector<P> pts = convert<P>(file.points);
+
+    if (is_knot_kind(o.kind)) {
+        const int degree = o.o_degree->count() || file.degree < 0 ? o.degree : file.degree;
+        std::vector<double> knots = o.o_knots->count() ? parse_numbers_option("--knots", o.knots) : file.knots;
+        std::vector<P> ctrl = pts;
+        std::vector<double> weights = o.o_weights->count() ? parse_numbers_option("--weights", o.weights) : file.weights;
+        if (knots.empty()) {
+            if (o.knot_type == "periodic") {
+                // Wrap the control points (and weights) like BSpline::periodic.
+                const BSpline<P> per = BSpline<P>::periodic(degree, ctrl);
+                ctrl.assign(per.points().begin(), per.points().end());
+                knots.assign(per.knots().begin(), per.knots().end());
+                if (!weights.empty()) {
+                    const std::size_t n = weights.size();
+                    for (std::size_t i = 0; i < static_cast<std::size_t>(degree) && n > 0; ++i) weights.push_back(weights[i % n]);
+                }
+            } else {
+                knots = o.knot_type == "uniform" ? uniform_knots(degree, ctrl.size()) : clamped_knots(degree, ctrl.size());
+            }
+        }
+        if (o.kind == "bspline") {
+            const BSpline<P> s(degree, ctrl, knots);
+            if (o.o_to_bezier->count()) {
+                const auto pieces = s.to_bezier();
+                for (std::size_t j = 0; j < pieces.size(); ++j) {
+                    if (j) out << '\n';
+                    for (const P& p : pieces[j].points()) line(p);
+                }
+            } else if (o.o_eval->count()) {
+                line(s.derivative(o.o_derivative->count() ? o.derivative : 0, o.eval));
+            } else {
+                for (double b : bspline_basis_all(degree, s.knots(), o.basis_at)) out << format_number(b, 1) << '\n';
+            }
+        } else {
+            if (weights.empty()) weights.assign(ctrl.size(), 1.0);
+            const Nurbs<P> s(degree, ctrl, weights, knots);
+            if (o.o_to_bezier->count()) {
+                const auto pieces = s.to_bezier();
+                for (std::size_t j = 0; j < pieces.size(); ++j) {
+                    if (j) out << '\n';
+                    for (std::size_t i = 0; i < pieces[j].points().size(); ++i)
+                        out << format_point(to_p3(pieces[j].points()[i]), scale, dim) << ' '
+                            << format_number(pieces[j].weights()[i], 0) << '\n';
+                }
+            } else if (o.o_eval->count()) {
+                line(s.derivative(o.o_derivative->count() ? o.derivative : 0, o.eval));
+            } else {
+                for (double b : bspline_basis_all(degree, s.knots(), o.basis_at)) out << format_number(b, 1) << '\n';
+            }
+        }
+        std::cout << out.str();
+        return;
+    }
+
+    // Interpolating splines: cubic Bézier pieces.
+    const EndCondition ends = o.ends == "closed" ? EndCondition::Closed
+                              : o.ends == "inner" ? EndCondition::Inner
+                                                  : EndCondition::Duplicate;
+    std::vector<Bezier<P>> pieces;
+    if (o.kind == "hermite") {
+        const PointList tl = o.o_tangents->count() ? parse_points_option("--tangents", o.tangents) : file.tangents;
+        if (!tl.points.empty() && tl.dimension != file.points.dimension)
+            throw UsageError("--tangents must have the same dimension as the points");
+        const std::vector<P> tangents = convert<P>(tl);
+        pieces = hermite_spline<P>(pts, tangents);
+    } else if (o.kind == "cardinal") {
+        pieces = cardinal_spline<P>(pts, o.tension, ends);
+    } else if (o.kind == "catmull-rom") {
+        pieces = catmull_rom_spline<P>(pts, ends);
+    } else if (o.kind == "kb") {
+        pieces = kochanek_bartels_spline<P>(pts, {o.tension, o.continuity, o.bias}, ends);
+    } else {
+        const Parametrization param = o.param == "chord"         ? Parametrization::ChordLength
+                                      : o.param == "centripetal" ? Parametrization::Centripetal
+                                                                 : Parametrization::Uniform;
+        pieces = natural_spline<P>(pts, param);
+    }
+    if (o.o_to_bezier->count()) {
+        for (std::size_t j = 0; j < pieces.size(); ++j) {
+            if (j) out << '\n';
+            for (const P& p : pieces[j].points()) line(p);
+        }
+    } else {
+        const double n = static_cast<double>(pieces.size());
+        if (!(o.eval >= 0 && o.eval <= n))
+            throw Error(ErrorKind::InvalidArgument, "t = " + format_number(o.eval, 0) + " is outside [0, " + format_number(n, 0) + "]");
+        const std::size_t j = std::min(pieces.size() - 1, static_cast<std::size_t>(std::floor(o.eval)));
+        const double t = o.eval - static_cast<double>(j);
+        line(pieces[j].derivative(o.o_derivative->count() ? o.derivative : 0, t));
+    }
+    std::cout << out.str();
+}
+
+}  // namespace
+
+void register_spline(CLI::App& app) {
+    auto o = std::make_shared<SplineOptions>();
+    CLI::App* sub = app.add_subcommand(
+        "spline",
+        "B-splines, NURBS and interpolating splines: print their Bezier pieces or evaluate them.\n"
+        "Pieces print one after another separated by an empty line ('x y', NURBS 'x y w'). --eval uses the knot\n"
+        "domain for bspline/nurbs and T in [0, pieces] for the interpolating kinds. Exit status 1: bad data; 2: bad usage.");
+    sub->add_option("--kind", o->kind, "bspline, nurbs, hermite, cardinal, catmull-rom, kb (Kochanek-Bartels) or natural")
+        ->required()
+        ->check(CLI::IsMember({"bspline", "nurbs", "hermite", "cardinal", "catmull-rom", "kb", "natural"}));
+    o->o_points = sub->add_option("--points", o->points, "Points \"x,y x,y ...\" (or x,y,z): control points or points to pass through");
+    o->o_file = sub->add_option("--points-file", o->points_file,
+                                "JSON file {\"points\": [[x, y], ...], optional \"knots\", \"weights\", \"tangents\", \"degree\"}");
+    o->o_degree = sub->add_option("--degree", o->degree, "bspline/nurbs degree, 1..64 (default 3)")->check(CLI::Range(1, 64));
+    o->o_knots = sub->add_option("--knots", o->knots, "bspline/nurbs knot vector \"u0 u1 ...\" (count = points + degree + 1)");
+    o->o_knot_type = sub->add_option("--knot-type", o->knot_type, "Without --knots: clamped (default, on [0, 1]), uniform or periodic")
+                         ->check(CLI::IsMember({"clamped", "uniform", "periodic"}));
+    o->o_weights = sub->add_option("--weights", o->weights, "nurbs weights \"w0 w1 ...\" (positive; default all 1)");
+    o->o_tangents = sub->add_option("--tangents", o->tangents, "hermite tangents \"x,y x,y ...\", one per point");
+    o->o_tension = sub->add_option("--tension", o->tension, "cardinal/kb tension (0 = Catmull-Rom, 1 = straight)");
+    o->o_continuity = sub->add_option("--continuity", o->continuity, "kb continuity (-1 = box corners)");
+    o->o_bias = sub->add_option("--bias", o->bias, "kb bias");
+    o->o_ends = sub->add_option("--ends", o->ends, "cardinal/catmull-rom/kb ends: duplicate (default), closed or inner")
+                    ->check(CLI::IsMember({"duplicate", "closed", "inner"}));
+    o->o_param = sub->add_option("--param", o->param, "natural spline parametrisation: uniform (default), chord or centripetal")
+                     ->check(CLI::IsMember({"uniform", "chord", "centripetal"}));
+    o->o_to_bezier = sub->add_flag("--to-bezier")->description("Print the Bezier pieces");
+    o->o_eval = sub->add_option("--eval", o->eval, "Print the point at T (or the K-th derivative with --derivative K)");
+    o->o_derivative = sub->add_option("--derivative", o->derivative, "Derivative order K for --eval")->check(CLI::NonNegativeNumber);
+    o->o_basis_at = sub->add_option("--basis-at", o->basis_at, "bspline/nurbs: print the basis functions N_i(T), one per line");
+    sub->callback([o]() {
+        const int sources = static_cast<int>(o->o_points->count() > 0) + static_cast<int>(o->o_file->count() > 0);
+        if (sources != 1) throw UsageError("spline: give exactly one of --points or --points-file");
+        const int actions = static_cast<int>(o->o_to_bezier->count() > 0) + static_cast<int>(o->o_eval->count() > 0) +
+                            static_cast<int>(o->o_basis_at->count() > 0);
+        if (actions != 1) throw UsageError("spline: choose exactly one action: --to-bezier, --eval or --basis-at");
+        if (o->o_derivative->count() && !o->o_eval->count()) throw UsageError("spline: --derivative needs --eval");
+        const bool knotted = is_knot_kind(o->kind);
+        auto only = [&](CLI::Option* opt, bool allowed, const char* kinds) {
+            if (opt->count() && !allowed)
+                throw UsageError("spline: " + opt->get_name() + " applies to --kind " + kinds + " only");
+        };
+        only(o->o_degree, knotted, "bspline or nurbs");
+        only(o->o_knots, knotted, "bspline or nurbs");
+        only(o->o_knot_type, knotted, "bspline or nurbs");
+        only(o->o_basis_at, knotted, "bspline or nurbs");
+        only(o->o_weights, o->kind == "nurbs", "nurbs");
+        only(o->o_tangents, o->kind == "hermite", "hermite");
+        only(o->o_tension, o->kind == "cardinal" || o->kind == "kb", "cardinal or kb");
+        only(o->o_continuity, o->kind == "kb", "kb");
+        only(o->o_bias, o->kind == "kb", "kb");
+        only(o->o_ends, o->kind == "cardinal" || o->kind == "catmull-rom" || o->kind == "kb", "cardinal, catmull-rom or kb");
+        only(o->o_param, o->kind == "natural", "natural");
+        if (o->o_knots->count() && o->o_knot_type->count()) throw UsageError("spline: give --knots or --knot-type, not both");
+        CurveFile file;
+        if (o->o_points->count()) file.points = parse_points_option("--points", o->points);
+        else file = read_curve_file(o->points_file);
+        if (file.points.dimension == 3) run<Point3>(*o, file);
+        else run<Point>(*o, file);
+    });
+}
+
+}  // namespace casteljau::cli

@@ -1,0 +1,159 @@
+// Stroke stage: dashing of flattened contours (see include/casteljau/stroke.hpp for the semantics).
+//
+// A contour is walked segment by segment with the dash state (interval index, length left in it)
+// carried across segments; every interval boundary that falls inside a segment starts or ends a
+// dash there. On a closed contour the first dash is held back when the pattern starts "on", and is
+// appended to the last dash when the pattern is still "on" where the contour wraps around.
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "casteljau/error.hpp"
+#include "stroke/stroke_internal.hpp"
+
+namespace casteljau::stroke_detail {
+
+std::vector<double> effective_pattern(std::span<const double> dashes) {
+    std::vector<double> p;
+    bool negative = false;
+    double total = 0;
+    for (double d : dashes) {
+        if (!std::isfinite(d)) throw Error(ErrorKind::InvalidData, "stroke: dash value is not a finite number");
+        if (d < 0) negative = true;
+        total += d;
+    }
+    if (dashes.empty() || negative || !(total > 0) || !std::isfinite(total)) return p;
+    p.assign(dashes.begin(), dashes.end());
+    if (p.size() % 2 == 1) p.insert(p.end(), dashes.begin(), dashes.end());
+    return p;
+}
+
+namespace {
+
+struct Dasher {
+    std::span<const double> pattern;
+    Polyline& out;
+    std::vector<Point>& dirs;
+    std::vector<Point> cur;    // the dash being built
+    std::vector<Point> first;  // closed contours: the dash that started at the contour's start
+    std::size_t events = 0;
+
+    void emit(std::span<const Point> pts, bool closed, Point dir) {
+        if (out.points.size() + pts.size() > limits::kMaxFlattenedSegments)
+            throw Error(ErrorKind::Limit, "stroke: dashed path has too many points");
+        out.points.insert(out.points.end(), pts.begin(), pts.end());
+        out.contour_ends.push_back(static_cast<std::uint32_t>(out.points.size()));
+        out.closed.push_back(closed);
+        dirs.push_back(dir);
+    }
+
+    void contour(std::span<const Point> q, bool closed, double pos0) {
+        const std::size_t n = pattern.size();
+        // Find the interval holding pos0 (pos0 in [0, total)); a zero-length "on" interval at
+        // position 0 is kept so that (0, d) patterns put a dot at the start.
+        std::size_t di = 0;
+        double pos = pos0;
+        for (std::size_t guard = 0; pos > 0 && pos >= pattern[di] && guard < 2 * n; ++guard) {
+            pos -= pattern[di];
+            di = (di + 1) % n;
+        }
+        double rem = std::max(0.0, pattern[di] - pos);
+        bool on = di % 2 == 0;
+        const bool first_on = on && closed;
+        bool crossed = false;  // an interval boundary was met on this contour
+        bool holding_first = first_on;
+
+        cur.clear();
+        first.clear();
+        if (on) cur.push_back(q[0]);
+        Point dir{0, 0}, first_dir{0, 0};
+
+        const std::size_t nseg = closed ? q.size() : q.size() - 1;
+        for (std::size_t i = 0; i < nseg; ++i) {
+            const Point a = q[i], b = q[(i + 1) % q.size()];
+            const double len = distance(a, b);
+            if (!(len > 0)) continue;
+            dir = (b - a) / len;
+            double t = 0;
+            while (rem < len - t) {
+                if (++events > 2 * limits::kMaxDashes)
+                    throw Error(ErrorKind::Limit, "stroke: dash pattern produces too many dashes");
+                t += rem;
+                const Point p = lerp(a, b, t / len);
+                crossed = true;
+                if (on) {
+                    cur.push_back(p);
+                    if (holding_first) {
+                        first.swap(cur);
+                        first_dir = dir;
+                        holding_first = false;
+                    } else {
+                        emit(cur, false, dir);
+                    }
+                    cur.clear();
+                } else {
+                    cur.push_back(p);
+                }
+                di = (di + 1) % n;
+                rem = pattern[di];
+                on = !on;
+            }
+            rem -= len - t;
+            if (on) cur.push_back(b);
+        }
+
+        if (!crossed) {
+            // The pattern never changed state on this contour.
+            if (on) emit(cur, closed, dir);
+            return;
+        }
+        if (on) {
+            if (first_on) {
+                // The last dash runs through the wrap-around point into the first one.
+                cur.insert(cur.end(), first.begin() + (first.empty() ? 0 : 1), first.end());
+                first.clear();
+            }
+            emit(cur, false, dir);
+        }
+        if (!first.empty()) emit(first, false, first_dir);
+    }
+};
+
+}  // namespace
+
+void dash_polyline(const Polyline& in, std::span<const double> pattern, double offset, Polyline& out,
+                   std::vector<Point>& dirs) {
+    out.clear();
+    dirs.clear();
+    const double total = std::accumulate(pattern.begin(), pattern.end(), 0.0);
+    double pos = std::fmod(offset, total);
+    if (pos < 0) pos += total;
+    if (!(pos < total) || !(pos >= 0)) pos = 0;
+
+    // Bound the work before doing it: each contour crosses at most (length / total + 1) periods.
+    double periods = 0;
+    std::size_t start = 0;
+    for (std::size_t c = 0; c < in.contour_count(); ++c) {
+        const std::size_t end = in.contour_ends[c];
+        double len = 0;
+        for (std::size_t i = start + 1; i < end; ++i) len += distance(in.points[i - 1], in.points[i]);
+        if (in.closed[c] && end > start) len += distance(in.points[end - 1], in.points[start]);
+        periods += len / total + 1;
+        start = end;
+    }
+    if (!(periods * static_cast<double>(pattern.size()) <= 2.0 * static_cast<double>(limits::kMaxDashes)))
+        throw Error(ErrorKind::Limit, "stroke: dash pattern too fine for the path (more than " +
+                                          std::to_string(limits::kMaxDashes) + " dashes)");
+
+    Dasher d{pattern, out, dirs, {}, {}, 0};
+    start = 0;
+    for (std::size_t c = 0; c < in.contour_count(); ++c) {
+        const std::size_t end = in.contour_ends[c];
+        // A lone move (one point, not closed) has nothing to dash.
+        if (end - start > 1 || (end > start && in.closed[c]))
+            d.contour(std::span<const Point>(in.points.data() + start, end - start), in.closed[c], pos);
+        start = end;
+    }
+}
+
+}  // namespace casteljau::stroke_detail

@@ -1,0 +1,106 @@
+// Text stage, composite: positioned glyphs onto a Canvas (include/casteljau/text.hpp).
+//
+// Axis-aligned (translation + uniform scale): glyph origin in device space -> rounded to 1/4 px
+// horizontally and a whole pixel vertically (TextDrawOptions) -> cached Mask at that subpixel
+// offset -> composite_span row by row inside the clip.
+// Any other transform: each glyph's outline is filled with Canvas::fill_path under
+// canvas transform x translate(origin + glyph position) x [s 0 0 -s].
+#include <cmath>
+
+#include "casteljau/error.hpp"
+#include "casteljau/text.hpp"
+
+namespace casteljau {
+
+namespace {
+
+// Farthest glyph origin (device pixels) drawn through the cache; beyond it glyphs are off any
+// canvas anyway and integer arithmetic stays far from overflow.
+constexpr double kMaxCachedOrigin = 1e8;
+
+void composite_mask(Canvas& canvas, const Mask& m, long long ix, long long iy, const Paint& paint) {
+    if (m.bounds.empty()) return;
+    const IRect& clip = canvas.clip();
+    const long long x0 = std::max<long long>(m.bounds.x0 + ix, clip.x0);
+    const long long x1 = std::min<long long>(m.bounds.x1 + ix, clip.x1);
+    const long long y0 = std::max<long long>(m.bounds.y0 + iy, clip.y0);
+    const long long y1 = std::min<long long>(m.bounds.y1 + iy, clip.y1);
+    if (x0 >= x1 || y0 >= y1) return;
+    Pixmap& pm = canvas.target();
+    const long long w = m.bounds.width();
+    for (long long y = y0; y < y1; ++y) {
+        const std::uint8_t* cov = m.data.data() + (y - iy - m.bounds.y0) * w + (x0 - ix - m.bounds.x0);
+        composite_span(pm.row(static_cast<int>(y)) + 4 * x0, static_cast<int>(x1 - x0), cov, paint);
+    }
+}
+
+}  // namespace
+
+void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Paint& paint, GlyphCache* cache,
+               const TextDrawOptions& options) {
+    if (options.subpixel_steps < 1 || options.subpixel_steps > 64 || options.subpixel_steps_y < 1 ||
+        options.subpixel_steps_y > 64)
+        throw Error(ErrorKind::InvalidArgument, "subpixel steps must be 1 to 64");
+    if (!origin.is_finite()) throw Error(ErrorKind::InvalidArgument, "text origin must be finite");
+    if (layout.glyphs.empty()) return;
+    for (const Font* f : layout.fonts)
+        if (!f) throw Error(ErrorKind::InvalidArgument, "draw_text: the layout has a null font");
+    const Affine M = canvas.transform() * Affine::translate(origin.x, origin.y);
+    if (!M.is_finite()) throw Error(ErrorKind::InvalidData, "draw_text: the canvas transform is not finite");
+    GlyphCache local(8u << 20, options.tolerance);
+    GlyphCache& gc = cache ? *cache : local;
+
+    const double device_size = layout.size * M.a;
+    const bool cached = !options.force_outlines && M.b == 0 && M.c == 0 && M.a > 0 && M.a == M.d &&
+                        device_size <= options.max_cached_size && device_size <= limits::kMaxFontSize;
+    if (cached) {
+        const int sx = options.subpixel_steps, sy = options.subpixel_steps_y;
+        for (const PositionedGlyph& g : layout.glyphs) {
+            const Point p = M.apply(g.position);
+            if (!(std::abs(p.x) < kMaxCachedOrigin && std::abs(p.y) < kMaxCachedOrigin)) continue;
+            const long long qx = std::llround(p.x * sx), qy = std::llround(p.y * sy);
+            // floor division, so that the subpixel offset is in [0, 1)
+            const long long ix = (qx >= 0 ? qx : qx - (sx - 1)) / sx;
+            const long long iy = (qy >= 0 ? qy : qy - (sy - 1)) / sy;
+            const Point offset{static_cast<double>(qx - ix * sx) / sx, static_cast<double>(qy - iy * sy) / sy};
+            const Mask& m = gc.mask(*layout.fonts[g.font], g.glyph, device_size, offset, canvas.rasterizer());
+            composite_mask(canvas, m, ix, iy, paint);
+        }
+        return;
+    }
+    if (!(options.tolerance >= 1e-4 && options.tolerance <= 10))
+        throw Error(ErrorKind::InvalidArgument, "draw_text: tolerance must be in [1e-4, 10] px");
+    const double saved_tolerance = canvas.fill_options().tolerance;
+    canvas.fill_options().tolerance = options.tolerance;
+    struct Restore {
+        Canvas& c;
+        double t;
+        ~Restore() { c.fill_options().tolerance = t; }
+    } restore_tolerance{canvas, saved_tolerance};
+    for (const PositionedGlyph& g : layout.glyphs) {
+        const Font& font = *layout.fonts[g.font];
+        const Path& outline = gc.outline(font, g.glyph);
+        if (outline.empty()) continue;
+        const double s = layout.size / font.units_per_em();
+        canvas.save();
+        canvas.set_transform(M * Affine{s, 0, 0, -s, g.position.x, g.position.y});
+        try {
+            canvas.fill_path(outline, paint, FillRule::NonZero);
+        } catch (...) {
+            canvas.restore();
+            throw;
+        }
+        canvas.restore();
+    }
+}
+
+TextLayout draw_text(Canvas& canvas, std::string_view utf8, const Font& font, double size, Point origin,
+                     const Paint& paint) {
+    TextStyle style;
+    style.size = size;
+    TextLayout layout = layout_text(utf8, font, style);
+    draw_text(canvas, layout, origin, paint);
+    return layout;
+}
+
+}  // namespace casteljau

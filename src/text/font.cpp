@@ -1,0 +1,515 @@
+// Text stage, source end: fonts through FreeType (include/casteljau/font.hpp).
+//
+// Font file bytes --(sfnt directory check)--> FreeType face sized at units_per_em px --> unhinted
+// outlines decomposed into Paths (font units, y up) and metrics; an hb-ft HarfBuzz font on the same
+// face serves shaping (src/text/shape.cpp).
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include FT_FONT_FORMATS_H
+#include FT_MULTIPLE_MASTERS_H
+#include FT_OUTLINE_H
+#include FT_BBOX_H
+#include FT_SFNT_NAMES_H
+#include FT_TRUETYPE_IDS_H
+#include FT_TRUETYPE_TABLES_H
+#include <hb-ft.h>
+#include <hb-ot.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+
+#include "text/font_impl.hpp"
+
+namespace casteljau {
+
+namespace {
+
+// Largest font file read (a sanity limit: real fonts are a few MB; CJK collections ~ 100 MB).
+constexpr std::uintmax_t kMaxFontFileBytes = 512u * 1024u * 1024u;
+
+std::string ft_error_text(FT_Error err) {
+    if (const char* s = FT_Error_String(err)) return s;
+    std::ostringstream o;
+    o << "FreeType error 0x" << std::hex << err;
+    return o.str();
+}
+
+[[noreturn]] void font_error(const std::string& source, const std::string& what) {
+    throw Error(ErrorKind::Font, "font '" + source + "': " + what);
+}
+
+std::string tag_string(std::uint32_t tag) {
+    std::string s(4, ' ');
+    for (int i = 0; i < 4; ++i) {
+        const char c = static_cast<char>((tag >> (24 - 8 * i)) & 0xff);
+        s[static_cast<std::size_t>(i)] = (c >= 0x20 && c < 0x7f) ? c : '?';
+    }
+    return s;
+}
+
+// Checks the table directory of an sfnt (TrueType/OpenType) file or collection against the file
+// size, so that a truncated font is reported as such instead of failing later in odd ways.
+// Files of other formats (Type 1, WOFF, ...) are left to FreeType.
+void check_sfnt_directory(const std::vector<std::uint8_t>& b, const std::string& source) {
+    const std::size_t n = b.size();
+    if (n < 12) font_error(source, "not a font file (only " + std::to_string(n) + " bytes)");
+    auto u16 = [&](std::size_t o) { return static_cast<std::uint32_t>(b[o] << 8 | b[o + 1]); };
+    auto u32 = [&](std::size_t o) {
+        return static_cast<std::uint32_t>(b[o]) << 24 | static_cast<std::uint32_t>(b[o + 1]) << 16 |
+               static_cast<std::uint32_t>(b[o + 2]) << 8 | static_cast<std::uint32_t>(b[o + 3]);
+    };
+    auto truncated = [&](const std::string& what) {
+        font_error(source, "truncated or corrupt font file: " + what + " runs past the end of the file (" +
+                               std::to_string(n) + " bytes)");
+    };
+    auto check_dir = [&](std::uint64_t off) {
+        if (off + 12 > n) truncated("the table directory");
+        const std::uint32_t tables = u16(static_cast<std::size_t>(off) + 4);
+        if (off + 12 + 16ull * tables > n) truncated("the table directory");
+        for (std::uint32_t i = 0; i < tables; ++i) {
+            const std::size_t rec = static_cast<std::size_t>(off) + 12 + 16u * i;
+            const std::uint64_t o = u32(rec + 8), len = u32(rec + 12);
+            if (o + len > n)
+                truncated("table '" + tag_string(u32(rec)) + "' (bytes " + std::to_string(o) + ".." +
+                          std::to_string(o + len) + ")");
+        }
+    };
+    const std::uint32_t tag = u32(0);
+    if (tag == 0x74746366u) {  // 'ttcf'
+        const std::uint32_t fonts = u32(8);
+        if (fonts == 0) font_error(source, "font collection with no fonts");
+        if (12 + 4ull * fonts > n) truncated("the collection header");
+        for (std::uint32_t i = 0; i < fonts; ++i) check_dir(u32(12 + 4u * i));
+    } else if (tag == 0x00010000u || tag == 0x4f54544fu /*OTTO*/ || tag == 0x74727565u /*true*/ ||
+               tag == 0x74797031u /*typ1*/) {
+        check_dir(0);
+    }
+}
+
+std::vector<std::uint8_t> read_font_file(const std::string& path) {
+    std::error_code ec;
+    const auto st = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(st))
+        throw Error(ErrorKind::Io, "cannot read font '" + path + "': no such file");
+    if (std::filesystem::is_directory(st))
+        throw Error(ErrorKind::Io, "cannot read font '" + path + "': it is a directory");
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) throw Error(ErrorKind::Io, "cannot read font '" + path + "': " + std::strerror(errno));
+    std::vector<std::uint8_t> bytes;
+    std::uint8_t buf[65536];
+    std::size_t got;
+    while ((got = std::fread(buf, 1, sizeof buf, f)) > 0) {
+        bytes.insert(bytes.end(), buf, buf + got);
+        if (bytes.size() > kMaxFontFileBytes) {
+            std::fclose(f);
+            throw Error(ErrorKind::Limit, "font '" + path + "' is larger than " +
+                                              std::to_string(kMaxFontFileBytes >> 20) + " MiB");
+        }
+    }
+    const bool failed = std::ferror(f) != 0;
+    std::fclose(f);
+    if (failed) throw Error(ErrorKind::Io, "cannot read font '" + path + "': read error");
+    return bytes;
+}
+
+// UTF-16BE (Windows name records) or Mac Roman / ASCII (Mac records) to UTF-8.
+std::string name_to_utf8(const FT_SfntName& n) {
+    std::string out;
+    auto put = [&](std::uint32_t c) {
+        if (c < 0x80) {
+            out += static_cast<char>(c);
+        } else if (c < 0x800) {
+            out += static_cast<char>(0xc0 | (c >> 6));
+            out += static_cast<char>(0x80 | (c & 0x3f));
+        } else if (c < 0x10000) {
+            out += static_cast<char>(0xe0 | (c >> 12));
+            out += static_cast<char>(0x80 | ((c >> 6) & 0x3f));
+            out += static_cast<char>(0x80 | (c & 0x3f));
+        } else {
+            out += static_cast<char>(0xf0 | (c >> 18));
+            out += static_cast<char>(0x80 | ((c >> 12) & 0x3f));
+            out += static_cast<char>(0x80 | ((c >> 6) & 0x3f));
+            out += static_cast<char>(0x80 | (c & 0x3f));
+        }
+    };
+    if (n.platform_id == TT_PLATFORM_MICROSOFT || n.platform_id == TT_PLATFORM_APPLE_UNICODE) {
+        for (FT_UInt i = 0; i + 1 < n.string_len; i += 2) {
+            std::uint32_t c = static_cast<std::uint32_t>(n.string[i] << 8 | n.string[i + 1]);
+            if (c >= 0xd800 && c < 0xdc00 && i + 3 < n.string_len) {
+                const std::uint32_t lo = static_cast<std::uint32_t>(n.string[i + 2] << 8 | n.string[i + 3]);
+                if (lo >= 0xdc00 && lo < 0xe000) {
+                    c = 0x10000 + ((c - 0xd800) << 10) + (lo - 0xdc00);
+                    i += 2;
+                }
+            }
+            put(c);
+        }
+    } else {
+        for (FT_UInt i = 0; i < n.string_len; ++i) put(n.string[i] < 0x80 ? n.string[i] : '?');
+    }
+    return out;
+}
+
+// The string with name id `id`, preferring Windows English, then any Windows, then Mac.
+std::string sfnt_name(FT_Face face, FT_UInt id) {
+    const FT_UInt count = FT_Get_Sfnt_Name_Count(face);
+    int best_rank = -1;
+    std::string best;
+    for (FT_UInt i = 0; i < count; ++i) {
+        FT_SfntName n;
+        if (FT_Get_Sfnt_Name(face, i, &n) || n.name_id != id) continue;
+        int rank = 0;
+        if (n.platform_id == TT_PLATFORM_MICROSOFT) rank = n.language_id == 0x409 ? 3 : 2;
+        else if (n.platform_id == TT_PLATFORM_MACINTOSH) rank = 1;
+        if (rank > best_rank) {
+            best_rank = rank;
+            best = name_to_utf8(n);
+        }
+    }
+    return best;
+}
+
+std::uint64_t hash_coords(const std::vector<double>& coords) {
+    std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a over the 16.16 values
+    for (double c : coords) {
+        const auto v = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::lround(c * 65536.0)));
+        for (int i = 0; i < 8; ++i) {
+            h ^= (v >> (8 * i)) & 0xff;
+            h *= 0x100000001b3ull;
+        }
+    }
+    return h == 0 ? 1 : h;
+}
+
+struct DecomposeState {
+    Path* path;
+    bool open = false;
+};
+
+Point ft_point(const FT_Vector* v) {
+    return {static_cast<double>(v->x) / kUnits26_6, static_cast<double>(v->y) / kUnits26_6};
+}
+
+int cb_move(const FT_Vector* to, void* user) {
+    auto* s = static_cast<DecomposeState*>(user);
+    if (s->open) s->path->close();
+    s->path->move_to(ft_point(to));
+    s->open = true;
+    return 0;
+}
+int cb_line(const FT_Vector* to, void* user) {
+    static_cast<DecomposeState*>(user)->path->line_to(ft_point(to));
+    return 0;
+}
+int cb_conic(const FT_Vector* c, const FT_Vector* to, void* user) {
+    static_cast<DecomposeState*>(user)->path->quad_to(ft_point(c), ft_point(to));
+    return 0;
+}
+int cb_cubic(const FT_Vector* c1, const FT_Vector* c2, const FT_Vector* to, void* user) {
+    static_cast<DecomposeState*>(user)->path->cubic_to(ft_point(c1), ft_point(c2), ft_point(to));
+    return 0;
+}
+
+}  // namespace
+
+void check_font_size(double size_px) {
+    if (!std::isfinite(size_px) || size_px <= 0) {
+        std::ostringstream o;
+        o << "font size must be a positive number of pixels, got " << size_px;
+        throw Error(ErrorKind::InvalidArgument, o.str());
+    }
+    if (size_px > limits::kMaxFontSize) {
+        std::ostringstream o;
+        o << "font size " << size_px << " px exceeds the limit of " << limits::kMaxFontSize << " px";
+        throw Error(ErrorKind::Limit, o.str());
+    }
+}
+
+Variation parse_variation(std::string_view text) {
+    const auto eq = text.find('=');
+    auto bad = [&](const std::string& why) -> Error {
+        return Error(ErrorKind::Parse, "invalid variation '" + std::string(text) + "': " + why);
+    };
+    if (eq == std::string_view::npos) throw bad("expected TAG=VALUE, e.g. wght=700");
+    std::string tag(text.substr(0, eq));
+    if (tag.empty() || tag.size() > 4) throw bad("the axis tag must have 1 to 4 characters");
+    for (char c : tag)
+        if (c < 0x20 || c > 0x7e) throw bad("the axis tag must be printable ASCII");
+    tag.resize(4, ' ');
+    const std::string num(text.substr(eq + 1));
+    if (num.empty()) throw bad("missing value after '='");
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(num.c_str(), &end);
+    if (end != num.c_str() + num.size() || !std::isfinite(v) || errno == ERANGE)
+        throw bad("the value must be a finite number");
+    return {tag, v};
+}
+
+Font::Impl::~Impl() {
+    if (hb) hb_font_destroy(hb);
+    if (face) FT_Done_Face(face);
+    if (library) FT_Done_FreeType(library);
+}
+
+void Font::Impl::load_glyph(std::uint32_t glyph) const {
+    if (glyph >= static_cast<std::uint32_t>(face->num_glyphs))
+        font_error(source, "glyph id " + std::to_string(glyph) + " out of range (the font has " +
+                               std::to_string(face->num_glyphs) + " glyphs)");
+    const FT_Error err = FT_Load_Glyph(face, glyph, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP);
+    if (err) font_error(source, "cannot load glyph " + std::to_string(glyph) + ": " + ft_error_text(err));
+    if (face->glyph->format != FT_GLYPH_FORMAT_OUTLINE)
+        font_error(source, "glyph " + std::to_string(glyph) + " has no outline");
+}
+
+void Font::Impl::variations_changed() {
+    if (hb) hb_ft_font_changed(hb);
+    auto pos = [&](hb_ot_metrics_tag_t tag) {
+        hb_position_t p = 0;
+        hb_ot_metrics_get_position_with_fallback(hb, tag, &p);
+        return static_cast<double>(p) / kUnits26_6;
+    };
+    metrics.units_per_em = face->units_per_EM;
+    metrics.ascender = pos(HB_OT_METRICS_TAG_HORIZONTAL_ASCENDER);
+    metrics.descender = pos(HB_OT_METRICS_TAG_HORIZONTAL_DESCENDER);
+    metrics.line_gap = pos(HB_OT_METRICS_TAG_HORIZONTAL_LINE_GAP);
+    metrics.underline_position = pos(HB_OT_METRICS_TAG_UNDERLINE_OFFSET);
+    metrics.underline_thickness = pos(HB_OT_METRICS_TAG_UNDERLINE_SIZE);
+    if (metrics.ascender <= metrics.descender) {  // broken tables: fall back to the em box
+        metrics.ascender = 0.8 * face->units_per_EM;
+        metrics.descender = -0.2 * face->units_per_EM;
+    }
+    var_key = axes.empty() ? 0 : hash_coords(coords);
+}
+
+Font::Font(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Font::Font(Font&&) noexcept = default;
+Font& Font::operator=(Font&&) noexcept = default;
+Font::~Font() = default;
+
+Font Font::load(const std::string& path, int face_index) {
+    return from_memory(read_font_file(path), face_index, path);
+}
+
+Font Font::from_memory(std::vector<std::uint8_t> bytes, int face_index, std::string name) {
+    if (face_index < 0 || face_index > 0xffff)
+        throw Error(ErrorKind::InvalidArgument, "font '" + name + "': face index must be 0 to 65535, got " +
+                                                    std::to_string(face_index));
+    if (bytes.size() > kMaxFontFileBytes)
+        throw Error(ErrorKind::Limit, "font '" + name + "' is larger than " +
+                                          std::to_string(kMaxFontFileBytes >> 20) + " MiB");
+    check_sfnt_directory(bytes, name);
+    auto impl = std::make_unique<Impl>();
+    impl->source = std::move(name);
+    impl->face_index = face_index;
+    impl->bytes = std::make_shared<const std::vector<std::uint8_t>>(std::move(bytes));
+    if (FT_Error err = FT_Init_FreeType(&impl->library)) {
+        impl->library = nullptr;
+        font_error(impl->source, "cannot start FreeType: " + ft_error_text(err));
+    }
+    const auto* data = impl->bytes->data();
+    const auto size = static_cast<FT_Long>(impl->bytes->size());
+    FT_Error err = FT_New_Memory_Face(impl->library, data, size, face_index, &impl->face);
+    if (err) {
+        impl->face = nullptr;
+        FT_Face probe = nullptr;
+        if (face_index > 0 && FT_New_Memory_Face(impl->library, data, size, -1, &probe) == 0) {
+            const long n = probe->num_faces;
+            FT_Done_Face(probe);
+            if (face_index >= n)
+                font_error(impl->source, "face index " + std::to_string(face_index) + " out of range (the file has " +
+                                             std::to_string(n) + (n == 1 ? " face)" : " faces)"));
+        }
+        if (err == FT_Err_Unknown_File_Format)
+            font_error(impl->source, "not a font file (FreeType does not recognise its format)");
+        font_error(impl->source, "cannot open the font: " + ft_error_text(err));
+    }
+    FT_Face face = impl->face;
+    impl->face_count = static_cast<int>(face->num_faces);
+    if (!FT_IS_SCALABLE(face)) font_error(impl->source, "the font has no scalable outlines (bitmap-only)");
+    if (face->units_per_EM < 16 || face->units_per_EM > 16384)
+        font_error(impl->source, "unusable units per em: " + std::to_string(face->units_per_EM));
+    // One size for everything: 1 px per font unit, so 26.6 values are 1/64 font units.
+    const FT_F26Dot6 em = static_cast<FT_F26Dot6>(face->units_per_EM) * 64;
+    if ((err = FT_Set_Char_Size(face, em, em, 72, 72)))
+        font_error(impl->source, "cannot size the font: " + ft_error_text(err));
+
+    const char* fmt = FT_Get_Font_Format(face);
+    const std::string format = fmt ? fmt : "";
+    if (format == "TrueType") impl->format = OutlineFormat::TrueType;
+    else if (format == "CFF") impl->format = OutlineFormat::CFF;
+    else if (format == "CFF2") impl->format = OutlineFormat::CFF2;  // FreeType reports "CFF" for CFF2 in some versions
+    else impl->format = OutlineFormat::Other;
+    FT_ULong cff2_length = 0;
+    if (impl->format == OutlineFormat::CFF &&
+        FT_Load_Sfnt_Table(face, FT_MAKE_TAG('C', 'F', 'F', '2'), 0, nullptr, &cff2_length) == 0 && cff2_length > 0)
+        impl->format = OutlineFormat::CFF2;
+
+    if (FT_HAS_MULTIPLE_MASTERS(face)) {
+        FT_MM_Var* mm = nullptr;
+        if (FT_Get_MM_Var(face, &mm) == 0 && mm) {
+            for (FT_UInt i = 0; i < mm->num_axis; ++i) {
+                const FT_Var_Axis& a = mm->axis[i];
+                FT_UInt flags = 0;
+                FT_Get_Var_Axis_Flags(mm, i, &flags);
+                impl->axes.push_back({tag_string(static_cast<std::uint32_t>(a.tag)), a.name ? a.name : "",
+                                      a.minimum / 65536.0, a.def / 65536.0, a.maximum / 65536.0,
+                                      (flags & FT_VAR_AXIS_FLAG_HIDDEN) != 0});
+                impl->coords.push_back(a.def / 65536.0);
+            }
+            for (FT_UInt i = 0; i < mm->num_namedstyles; ++i) {
+                NamedInstance ni;
+                ni.name = sfnt_name(face, mm->namedstyle[i].strid);
+                for (FT_UInt k = 0; k < mm->num_axis; ++k) ni.coordinates.push_back(mm->namedstyle[i].coords[k] / 65536.0);
+                impl->instances.push_back(std::move(ni));
+            }
+            FT_Done_MM_Var(impl->library, mm);
+        }
+    }
+
+    impl->hb = hb_ft_font_create_referenced(face);
+    if (!impl->hb) font_error(impl->source, "HarfBuzz cannot use the face");
+    hb_ft_font_set_load_flags(impl->hb, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP);
+    impl->variations_changed();
+    return Font(std::move(impl));
+}
+
+Font Font::clone() const {
+    Font f = from_memory(*impl_->bytes, impl_->face_index, impl_->source);
+    if (is_variable()) {
+        std::vector<Variation> v;
+        for (std::size_t i = 0; i < impl_->axes.size(); ++i) v.push_back({impl_->axes[i].tag, impl_->coords[i]});
+        f.set_variations(v);
+    }
+    return f;
+}
+
+const std::string& Font::source() const { return impl_->source; }
+int Font::face_index() const { return impl_->face_index; }
+int Font::face_count() const { return impl_->face_count; }
+std::string Font::family_name() const { return impl_->face->family_name ? impl_->face->family_name : ""; }
+std::string Font::style_name() const { return impl_->face->style_name ? impl_->face->style_name : ""; }
+OutlineFormat Font::outline_format() const { return impl_->format; }
+int Font::units_per_em() const { return impl_->face->units_per_EM; }
+std::uint32_t Font::glyph_count() const { return static_cast<std::uint32_t>(impl_->face->num_glyphs); }
+const FontMetrics& Font::metrics() const { return impl_->metrics; }
+
+std::uint32_t Font::glyph_index(char32_t codepoint) const {
+    return FT_Get_Char_Index(impl_->face, static_cast<FT_ULong>(codepoint));
+}
+
+Path Font::glyph_path(std::uint32_t glyph) const {
+    Path p;
+    glyph_path(glyph, p);
+    return p;
+}
+
+void Font::glyph_path(std::uint32_t glyph, Path& out) const {
+    out.clear();
+    impl_->load_glyph(glyph);
+    static constexpr FT_Outline_Funcs funcs = {cb_move, cb_line, cb_conic, cb_cubic, 0, 0};
+    DecomposeState st{&out};
+    const FT_Error err = FT_Outline_Decompose(&impl_->face->glyph->outline, &funcs, &st);
+    if (err) {
+        out.clear();
+        font_error(impl_->source, "cannot decompose glyph " + std::to_string(glyph) + ": " + ft_error_text(err));
+    }
+    if (st.open) out.close();
+}
+
+GlyphMetrics Font::glyph_metrics(std::uint32_t glyph) const {
+    impl_->load_glyph(glyph);
+    const FT_GlyphSlot slot = impl_->face->glyph;
+    GlyphMetrics m;
+    m.advance = static_cast<double>(slot->linearHoriAdvance) / 65536.0;
+    if (slot->outline.n_points > 0) {
+        FT_BBox box;
+        FT_Outline_Get_BBox(&slot->outline, &box);
+        m.bounds = {box.xMin / kUnits26_6, box.yMin / kUnits26_6, box.xMax / kUnits26_6, box.yMax / kUnits26_6};
+        m.left_bearing = m.bounds.x0;
+        m.right_bearing = m.advance - m.bounds.x1;
+    } else {
+        m.right_bearing = m.advance;
+    }
+    return m;
+}
+
+Affine Font::glyph_transform(double size_px, Point origin) const {
+    check_font_size(size_px);
+    const double s = size_px / impl_->face->units_per_EM;
+    return {s, 0, 0, -s, origin.x, origin.y};
+}
+
+bool Font::is_variable() const { return !impl_->axes.empty(); }
+const std::vector<VariationAxis>& Font::axes() const { return impl_->axes; }
+const std::vector<NamedInstance>& Font::named_instances() const { return impl_->instances; }
+std::vector<double> Font::variation_coordinates() const { return impl_->coords; }
+std::uint64_t Font::variation_key() const { return impl_->var_key; }
+
+void Font::set_variations(std::span<const Variation> settings) {
+    auto axis_list = [&] {
+        std::string s;
+        for (const auto& a : impl_->axes) s += (s.empty() ? "" : ", ") + a.tag;
+        return s;
+    };
+    if (!settings.empty() && impl_->axes.empty())
+        font_error(impl_->source, "cannot set variation '" + settings.front().tag +
+                                      "': the font is not a variable font (it has no axes)");
+    std::vector<double> coords;
+    for (const auto& a : impl_->axes) coords.push_back(a.default_value);
+    for (const Variation& v : settings) {
+        std::string tag = v.tag;
+        if (tag.size() < 4) tag.resize(4, ' ');
+        std::size_t i = 0;
+        while (i < impl_->axes.size() && impl_->axes[i].tag != tag) ++i;
+        std::string shown = tag;
+        while (!shown.empty() && shown.back() == ' ') shown.pop_back();
+        if (i == impl_->axes.size())
+            font_error(impl_->source, "unknown variation axis '" + shown + "' (the font's axes: " + axis_list() + ")");
+        if (!std::isfinite(v.value))
+            throw Error(ErrorKind::InvalidArgument, "variation '" + shown + "' must be a finite number");
+        coords[i] = std::clamp(v.value, impl_->axes[i].minimum, impl_->axes[i].maximum);
+    }
+    if (impl_->axes.empty()) return;
+    std::vector<FT_Fixed> fixed;
+    for (double c : coords) fixed.push_back(static_cast<FT_Fixed>(std::lround(c * 65536.0)));
+    if (FT_Error err = FT_Set_Var_Design_Coordinates(impl_->face, static_cast<FT_UInt>(fixed.size()), fixed.data()))
+        font_error(impl_->source, "cannot set variations: " + ft_error_text(err));
+    impl_->coords = std::move(coords);
+    impl_->variations_changed();
+}
+
+void Font::set_named_instance(std::size_t index) {
+    if (index >= impl_->instances.size())
+        font_error(impl_->source, "named instance " + std::to_string(index) + " out of range (the font has " +
+                                      std::to_string(impl_->instances.size()) + ")");
+    std::vector<Variation> v;
+    for (std::size_t i = 0; i < impl_->axes.size(); ++i)
+        v.push_back({impl_->axes[i].tag, impl_->instances[index].coordinates[i]});
+    set_variations(v);
+}
+
+void Font::set_named_instance(std::string_view name) {
+    auto lower = [](std::string_view s) {
+        std::string r(s);
+        for (char& c : r) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return r;
+    };
+    const std::string want = lower(name);
+    std::string names;
+    for (std::size_t i = 0; i < impl_->instances.size(); ++i) {
+        if (lower(impl_->instances[i].name) == want) return set_named_instance(i);
+        names += (names.empty() ? "" : ", ") + impl_->instances[i].name;
+    }
+    font_error(impl_->source, "no named instance '" + std::string(name) + "'" +
+                                  (names.empty() ? std::string(" (the font has none)") : " (the font has: " + names + ")"));
+}
+
+void Font::reset_variations() { set_variations({}); }
+
+}  // namespace casteljau

@@ -1,0 +1,53 @@
+// Internal: what a casteljau::Font holds (include/casteljau/font.hpp). Used by the text module only.
+//
+// A Font owns one FreeType library object, one face over the file bytes, and one HarfBuzz font
+// built on that face with hb-ft. The face is sized once at `units_per_em` pixels per em, so that
+// FreeType's 26.6 outlines and HarfBuzz's positions come out in 1/64 font units.
+#pragma once
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include <hb.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "casteljau/font.hpp"
+
+namespace casteljau {
+
+struct Font::Impl {
+    std::shared_ptr<const std::vector<std::uint8_t>> bytes;
+    std::string source;
+    int face_index = 0;
+    int face_count = 1;
+    FT_Library library = nullptr;
+    FT_Face face = nullptr;
+    hb_font_t* hb = nullptr;  // hb-ft font on `face`; positions in 1/64 font units
+    OutlineFormat format = OutlineFormat::Other;
+    FontMetrics metrics;
+    std::vector<VariationAxis> axes;
+    std::vector<NamedInstance> instances;
+    std::vector<double> coords;  // current design coordinates
+    std::uint64_t var_key = 0;
+    // Identity of this Font for caches: a cache holds a weak_ptr to it, so an entry made for a
+    // destroyed Font is never mistaken for one of a new Font at the same address.
+    std::shared_ptr<const int> token = std::make_shared<const int>(0);
+
+    Impl() = default;
+    Impl(const Impl&) = delete;
+    Impl& operator=(const Impl&) = delete;
+    ~Impl();
+
+    // Re-reads metrics and the variation key after the variation coordinates changed.
+    void variations_changed();
+    // Loads a glyph's unhinted outline into face->glyph; throws Error(Font).
+    void load_glyph(std::uint32_t glyph) const;
+};
+
+// Font units per 1/64 unit: FreeType and HarfBuzz values are divided by this.
+inline constexpr double kUnits26_6 = 64.0;
+
+}  // namespace casteljau

@@ -1,0 +1,172 @@
+// Text stage, coverage: the glyph mask and outline cache (include/casteljau/text.hpp).
+//
+// glyph outline (font units) --[s 0 0 -s dx dy]--> Rasterizer::fill_mask --> Mask stored under
+// (font, variation, glyph, size, subpixel offset). The whole cache is emptied when the masks pass
+// the byte budget.
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+
+#include "casteljau/error.hpp"
+#include "casteljau/text.hpp"
+#include "text/font_impl.hpp"
+
+namespace casteljau {
+
+namespace {
+
+struct MaskKey {
+    const void* font;
+    std::uint64_t variation;
+    std::uint64_t size_bits;
+    std::uint64_t offset_x_bits, offset_y_bits;
+    std::uint32_t glyph;
+    bool operator==(const MaskKey&) const = default;
+};
+
+struct OutlineKey {
+    const void* font;
+    std::uint64_t variation;
+    std::uint32_t glyph;
+    bool operator==(const OutlineKey&) const = default;
+};
+
+inline std::size_t mix(std::size_t h, std::uint64_t v) {
+    h ^= static_cast<std::size_t>(v) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    return h;
+}
+
+struct MaskKeyHash {
+    std::size_t operator()(const MaskKey& k) const {
+        std::size_t h = std::hash<const void*>()(k.font);
+        h = mix(h, k.variation);
+        h = mix(h, k.size_bits);
+        h = mix(h, k.offset_x_bits);
+        h = mix(h, k.offset_y_bits);
+        h = mix(h, k.glyph);
+        return h;
+    }
+};
+
+struct OutlineKeyHash {
+    std::size_t operator()(const OutlineKey& k) const {
+        return mix(mix(std::hash<const void*>()(k.font), k.variation), k.glyph);
+    }
+};
+
+// Bytes counted per entry besides the mask data (node, key, vector header).
+constexpr std::size_t kEntryOverhead = 96;
+
+}  // namespace
+
+struct GlyphCache::Impl {
+    std::size_t max_bytes;
+    FillOptions fill;
+    std::unordered_map<MaskKey, Mask, MaskKeyHash> masks;
+    std::unordered_map<OutlineKey, Path, OutlineKeyHash> outlines;
+    std::unordered_map<const void*, std::weak_ptr<const int>> fonts;  // lifetime tokens seen
+    GlyphCacheStats stats;
+    Path scratch;
+
+    void clear() {
+        masks.clear();
+        outlines.clear();
+        fonts.clear();
+        stats.entries = 0;
+        stats.bytes = 0;
+    }
+
+    // Forgets everything when `font` sits at the address of a Font the cache knew that has since
+    // been destroyed (its token differs).
+    void check_font(const Font& font) {
+        const Font::Impl* fi = &font.impl();
+        auto it = fonts.find(fi);
+        if (it == fonts.end()) {
+            fonts.emplace(fi, fi->token);
+            return;
+        }
+        const std::weak_ptr<const int>& w = it->second;
+        if (w.owner_before(fi->token) || fi->token.owner_before(w)) {
+            clear();
+            ++stats.flushes;
+            fonts.emplace(fi, fi->token);
+        }
+    }
+};
+
+GlyphCache::GlyphCache(std::size_t max_bytes, double tolerance) : impl_(std::make_unique<Impl>()) {
+    if (!(tolerance >= 1e-4 && tolerance <= 10))
+        throw Error(ErrorKind::InvalidArgument, "glyph cache: tolerance must be in [1e-4, 10] px");
+    impl_->max_bytes = max_bytes;
+    impl_->fill.tolerance = tolerance;
+}
+GlyphCache::~GlyphCache() = default;
+GlyphCache::GlyphCache(GlyphCache&&) noexcept = default;
+GlyphCache& GlyphCache::operator=(GlyphCache&&) noexcept = default;
+
+void GlyphCache::clear() { impl_->clear(); }
+std::size_t GlyphCache::max_bytes() const { return impl_->max_bytes; }
+double GlyphCache::tolerance() const { return impl_->fill.tolerance; }
+const GlyphCacheStats& GlyphCache::stats() const { return impl_->stats; }
+
+const Mask& GlyphCache::mask(const Font& font, std::uint32_t glyph, double size, Point offset, Rasterizer& raster) {
+    Impl& c = *impl_;
+    if (!(offset.x >= 0 && offset.x < 1 && offset.y >= 0 && offset.y < 1))
+        throw Error(ErrorKind::InvalidArgument, "glyph cache: the subpixel offset must be in [0, 1)");
+    check_font_size(size);
+    c.check_font(font);
+    auto bits = [](double v) {
+        std::uint64_t b;
+        std::memcpy(&b, &v, sizeof b);
+        return b;
+    };
+    const MaskKey key{&font.impl(), font.variation_key(), bits(size), bits(offset.x + 0.0), bits(offset.y + 0.0), glyph};
+    if (auto it = c.masks.find(key); it != c.masks.end()) {
+        ++c.stats.hits;
+        return it->second;
+    }
+    ++c.stats.misses;
+    font.glyph_path(glyph, c.scratch);
+    Mask m;
+    if (!c.scratch.empty()) {
+        const Affine to_pixels = font.glyph_transform(size, offset);
+        m = raster.fill_mask(c.scratch, to_pixels, c.fill);
+    }
+    const std::size_t bytes = m.data.size() + kEntryOverhead;
+    if (c.stats.bytes + bytes > c.max_bytes && !c.masks.empty()) {
+        // Keep the font tokens: only the contents go.
+        c.masks.clear();
+        c.outlines.clear();
+        c.stats.entries = 0;
+        c.stats.bytes = 0;
+        ++c.stats.flushes;
+    }
+    c.stats.bytes += bytes;
+    ++c.stats.entries;
+    return c.masks.emplace(key, std::move(m)).first->second;
+}
+
+const Path& GlyphCache::outline(const Font& font, std::uint32_t glyph) {
+    Impl& c = *impl_;
+    c.check_font(font);
+    const OutlineKey key{&font.impl(), font.variation_key(), glyph};
+    if (auto it = c.outlines.find(key); it != c.outlines.end()) {
+        ++c.stats.hits;
+        return it->second;
+    }
+    ++c.stats.misses;
+    Path p = font.glyph_path(glyph);
+    const std::size_t bytes = p.points().size() * sizeof(Point) + p.verbs().size() + kEntryOverhead;
+    if (c.stats.bytes + bytes > c.max_bytes && (!c.masks.empty() || !c.outlines.empty())) {
+        c.masks.clear();
+        c.outlines.clear();
+        c.stats.entries = 0;
+        c.stats.bytes = 0;
+        ++c.stats.flushes;
+    }
+    c.stats.bytes += bytes;
+    ++c.stats.entries;
+    return c.outlines.emplace(key, std::move(p)).first->second;
+}
+
+}  // namespace casteljau

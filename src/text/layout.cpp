@@ -1,0 +1,282 @@
+// Text stage, layout: paragraphs, bidi, shaping, line breaking, visual order and alignment
+// (include/casteljau/text.hpp).
+#include <hb.h>
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "casteljau/error.hpp"
+#include "casteljau/text.hpp"
+#include "text/bidi.hpp"
+#include "text/shape.hpp"
+
+namespace casteljau {
+
+namespace {
+
+using text_detail::ShapedGlyph;
+using text_detail::ShapedRun;
+
+// Spaces at which lines may break and which hang at the end of a line (not NBSP, U+2007, U+202F).
+bool is_break_space(char32_t c) {
+    return c == 0x20 || c == 0x3000 || c == 0x1680 || (c >= 0x2000 && c <= 0x2006) || (c >= 0x2008 && c <= 0x200a) ||
+           c == 0x205f;
+}
+
+bool is_ideographic(char32_t c) {
+    const hb_script_t s = hb_unicode_script(hb_unicode_funcs_get_default(), c);
+    return s == HB_SCRIPT_HAN || s == HB_SCRIPT_HIRAGANA || s == HB_SCRIPT_KATAKANA || s == HB_SCRIPT_BOPOMOFO ||
+           s == HB_SCRIPT_YI;
+}
+
+bool is_letter(char32_t c) {
+    switch (hb_unicode_general_category(hb_unicode_funcs_get_default(), c)) {
+        case HB_UNICODE_GENERAL_CATEGORY_UPPERCASE_LETTER:
+        case HB_UNICODE_GENERAL_CATEGORY_LOWERCASE_LETTER:
+        case HB_UNICODE_GENERAL_CATEGORY_TITLECASE_LETTER:
+        case HB_UNICODE_GENERAL_CATEGORY_MODIFIER_LETTER:
+        case HB_UNICODE_GENERAL_CATEGORY_OTHER_LETTER:
+            return true;
+        default:
+            return false;
+    }
+}
+
+bool no_break_before(char32_t c) {
+    switch (hb_unicode_general_category(hb_unicode_funcs_get_default(), c)) {
+        case HB_UNICODE_GENERAL_CATEGORY_NON_SPACING_MARK:
+        case HB_UNICODE_GENERAL_CATEGORY_SPACING_MARK:
+        case HB_UNICODE_GENERAL_CATEGORY_ENCLOSING_MARK:
+        case HB_UNICODE_GENERAL_CATEGORY_CLOSE_PUNCTUATION:
+        case HB_UNICODE_GENERAL_CATEGORY_FINAL_PUNCTUATION:
+        case HB_UNICODE_GENERAL_CATEGORY_OTHER_PUNCTUATION:
+            return true;
+        default:
+            return c == 0x200d || c == 0x2060 || c == 0xfeff;
+    }
+}
+
+// May a line break between para[k-1] and para[k]?
+bool can_break_before(std::u32string_view para, std::size_t k) {
+    const char32_t a = para[k - 1], b = para[k];
+    if (is_break_space(b) || no_break_before(b)) return false;
+    if (is_break_space(a) || a == 0x200b) return true;
+    if ((a == U'-' || a == 0x2010) && k >= 2 && is_letter(para[k - 2]) && is_letter(b)) return true;
+    if (a == 0x200d || a == 0x2060 || a == 0xfeff || a == 0x00a0) return false;
+    const hb_unicode_general_category_t ca = hb_unicode_general_category(hb_unicode_funcs_get_default(), a);
+    if (ca == HB_UNICODE_GENERAL_CATEGORY_OPEN_PUNCTUATION || ca == HB_UNICODE_GENERAL_CATEGORY_INITIAL_PUNCTUATION)
+        return false;
+    return is_ideographic(a) || is_ideographic(b);
+}
+
+struct LineRange {
+    std::size_t begin, end;  // code points in the paragraph; end includes trailing spaces
+};
+
+}  // namespace
+
+Rect TextLayout::bounds() const {
+    Rect box{0, 0, width, height};
+    if (ink.empty()) return box;
+    return box.united(ink);
+}
+
+TextLayout layout_text(std::string_view utf8, const Font& font, const TextStyle& style) {
+    const Font* f = &font;
+    return layout_text(utf8, std::span<const Font* const>(&f, 1), style);
+}
+
+TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts, const TextStyle& style) {
+    if (fonts.empty()) throw Error(ErrorKind::InvalidArgument, "layout_text needs at least one font");
+    if (fonts.size() > 0xffff) throw Error(ErrorKind::Limit, "layout_text accepts at most 65535 fonts");
+    for (const Font* f : fonts)
+        if (!f) throw Error(ErrorKind::InvalidArgument, "layout_text: null font in the font list");
+    check_font_size(style.size);
+    if (!std::isfinite(style.line_height) || style.line_height <= 0 || style.line_height > 100)
+        throw Error(ErrorKind::InvalidArgument, "line height must be a number in (0, 100], got " +
+                                                    std::to_string(style.line_height));
+    if (!std::isfinite(style.max_width) || style.max_width < 0 || style.max_width > limits::kMaxCanvasDimension * 16.0)
+        throw Error(ErrorKind::InvalidArgument, "wrap width must be 0 (no wrapping) or a positive number of pixels up to " +
+                                                    std::to_string(limits::kMaxCanvasDimension * 16));
+    if (utf8.size() > limits::kMaxTextBytes)
+        throw Error(ErrorKind::Limit, "text of " + std::to_string(utf8.size()) + " bytes exceeds the limit of " +
+                                          std::to_string(limits::kMaxTextBytes) + " bytes");
+
+    TextLayout L;
+    L.fonts.assign(fonts.begin(), fonts.end());
+    L.size = style.size;
+    L.text = decode_utf8(utf8);
+    if (L.text.empty()) return L;
+
+    text_detail::Shaper shaper(fonts, style);
+    const FontMetrics& fm = fonts[0]->metrics();
+    const double scale = style.size / fm.units_per_em;
+    const double ascender = fm.ascender * scale, descender = fm.descender * scale;
+    const double line_advance = style.line_height * fm.line_spacing() * scale;
+
+    std::u32string work;  // the paragraph as shaped: tabs become spaces
+    std::vector<std::uint8_t> levels;
+    std::vector<ShapedRun> runs;
+    std::vector<double> adv;
+    std::vector<char> cluster_start;
+    std::vector<LineRange> ranges;
+    std::vector<std::uint8_t> piece_levels;
+    std::vector<std::size_t> order;
+    struct Piece {
+        const ShapedRun* run;
+        std::size_t g0, g1;  // glyph range within the run (visual order)
+    };
+    std::vector<Piece> pieces;
+
+    const std::u32string& text = L.text;
+    std::size_t pos = 0;
+    while (pos <= text.size()) {
+        // One paragraph: [pos, pe), ended by \n, \r\n, \r, U+2029, U+2028, U+0085 or the end.
+        std::size_t pe = pos;
+        while (pe < text.size() && text[pe] != U'\n' && text[pe] != U'\r' && text[pe] != 0x2029 && text[pe] != 0x2028 &&
+               text[pe] != 0x85)
+            ++pe;
+        std::size_t next = pe;
+        if (next < text.size()) next += (text[next] == U'\r' && next + 1 < text.size() && text[next + 1] == U'\n') ? 2 : 1;
+
+        work.assign(text, pos, pe - pos);
+        for (char32_t& c : work)
+            if (c == U'\t') c = U' ';
+        const std::u32string_view para(work);
+        const std::size_t n = para.size();
+        const int para_level = text_detail::resolve_bidi_levels(para, style.direction, levels);
+        shaper.shape_paragraph(para, levels, runs);
+
+        // Advance of each code point (glyph advances summed by cluster) and cluster starts.
+        adv.assign(n, 0.0);
+        cluster_start.assign(n + 1, 0);
+        cluster_start[n] = 1;
+        for (const ShapedRun& r : runs)
+            for (const ShapedGlyph& g : r.glyphs)
+                if (g.cluster < n) {
+                    adv[g.cluster] += g.advance;
+                    cluster_start[g.cluster] = 1;
+                }
+
+        // Greedy line breaking.
+        ranges.clear();
+        {
+            std::size_t line_begin = 0;
+            double width = 0;  // of the line so far, trailing spaces of earlier words included
+            std::size_t s = 0;
+            while (s < n) {
+                std::size_t e = s + 1;  // the word [s, e): up to the next break opportunity
+                while (e < n && !(cluster_start[e] && can_break_before(para, e))) ++e;
+                std::size_t ink_end = e;
+                while (ink_end > s && is_break_space(para[ink_end - 1])) --ink_end;
+                double w_ink = 0, w_space = 0;
+                for (std::size_t i = s; i < ink_end; ++i) w_ink += adv[i];
+                for (std::size_t i = ink_end; i < e; ++i) w_space += adv[i];
+                if (style.max_width > 0 && s > line_begin && width + w_ink > style.max_width) {
+                    ranges.push_back({line_begin, s});
+                    line_begin = s;
+                    width = 0;
+                }
+                width += w_ink + w_space;
+                s = e;
+            }
+            ranges.push_back({line_begin, n});
+        }
+
+        for (const LineRange& lr : ranges) {
+            std::size_t ink_end = lr.end;
+            while (ink_end > lr.begin && is_break_space(para[ink_end - 1])) --ink_end;
+            // The runs' glyphs on this line (trailing spaces dropped: they hang, rule L1).
+            pieces.clear();
+            piece_levels.clear();
+            for (const ShapedRun& r : runs) {
+                if (r.end <= lr.begin || r.begin >= ink_end) continue;
+                std::size_t g0 = r.glyphs.size(), g1 = 0;
+                for (std::size_t g = 0; g < r.glyphs.size(); ++g) {
+                    const std::uint32_t c = r.glyphs[g].cluster;
+                    if (c >= lr.begin && c < ink_end) {
+                        g0 = std::min(g0, g);
+                        g1 = std::max(g1, g + 1);
+                    }
+                }
+                if (g0 >= g1) continue;
+                pieces.push_back({&r, g0, g1});
+                piece_levels.push_back(r.level);
+            }
+            text_detail::visual_order(piece_levels, order);
+
+            TextLine line;
+            line.rtl = para_level == 1;
+            line.first_glyph = L.glyphs.size();
+            line.baseline = ascender + static_cast<double>(L.lines.size()) * line_advance;
+            line.text_begin = pos + lr.begin;
+            line.text_end = pos + lr.end;
+            double pen = 0;
+            for (std::size_t oi : order) {
+                const Piece& p = pieces[oi];
+                for (std::size_t g = p.g0; g < p.g1; ++g) {
+                    const ShapedGlyph& sg = p.run->glyphs[g];
+                    // A glyph inside the range whose cluster falls outside (cannot happen with
+                    // monotone clusters) is skipped rather than drawn twice.
+                    if (sg.cluster < lr.begin || sg.cluster >= ink_end) continue;
+                    PositionedGlyph pg;
+                    pg.glyph = sg.glyph;
+                    pg.font = sg.font;
+                    pg.cluster = static_cast<std::uint32_t>(pos + sg.cluster);
+                    pg.position = {pen + sg.x_offset, line.baseline - sg.y_offset};
+                    L.glyphs.push_back(pg);
+                    pen += sg.advance;
+                }
+            }
+            line.glyph_count = L.glyphs.size() - line.first_glyph;
+            line.width = pen;
+            L.lines.push_back(line);
+        }
+
+        if (pe >= text.size()) break;
+        pos = next;
+        if (pos == text.size()) {
+            // A trailing line break starts one more (empty) line.
+            TextLine line;
+            line.first_glyph = L.glyphs.size();
+            line.baseline = ascender + static_cast<double>(L.lines.size()) * line_advance;
+            line.text_begin = line.text_end = pos;
+            L.lines.push_back(line);
+            break;
+        }
+    }
+
+    // Alignment.
+    double widest = 0;
+    for (const TextLine& l : L.lines) widest = std::max(widest, l.width);
+    L.width = style.max_width > 0 ? style.max_width : widest;
+    for (TextLine& l : L.lines) {
+        TextAlign a = style.align;
+        if (a == TextAlign::Start) a = l.rtl ? TextAlign::Right : TextAlign::Left;
+        double x = 0;
+        if (a == TextAlign::Center) x = (L.width - l.width) / 2;
+        else if (a == TextAlign::Right) x = L.width - l.width;
+        l.x = x;
+        for (std::size_t g = l.first_glyph; g < l.first_glyph + l.glyph_count; ++g) L.glyphs[g].position.x += x;
+    }
+    L.height = L.lines.empty() ? 0 : ascender - descender + static_cast<double>(L.lines.size() - 1) * line_advance;
+
+    // Ink bounds (glyph bounds memoized per font and glyph).
+    std::unordered_map<std::uint64_t, Rect> glyph_bounds;
+    bool have_ink = false;
+    for (const PositionedGlyph& g : L.glyphs) {
+        const std::uint64_t key = static_cast<std::uint64_t>(g.font) << 32 | g.glyph;
+        auto it = glyph_bounds.find(key);
+        if (it == glyph_bounds.end()) it = glyph_bounds.emplace(key, fonts[g.font]->glyph_metrics(g.glyph).bounds).first;
+        const Rect& b = it->second;
+        if (b.empty()) continue;
+        const double s = style.size / fonts[g.font]->units_per_em();
+        const Rect r{g.position.x + b.x0 * s, g.position.y - b.y1 * s, g.position.x + b.x1 * s, g.position.y - b.y0 * s};
+        L.ink = have_ink ? L.ink.united(r) : r;
+        have_ink = true;
+    }
+    return L;
+}
+
+}  // namespace casteljau

@@ -1,0 +1,58 @@
+// Internal (text module): itemization into runs and HarfBuzz shaping of one paragraph.
+//
+// A run is a maximal range of code points with one bidi level, one script and one font of the
+// fallback chain. Each run is shaped with the whole paragraph as context (so Arabic joining and
+// kerning see across run edges), in the run's direction; its glyphs come out in visual order.
+#pragma once
+
+#include <hb.h>
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "casteljau/font.hpp"
+#include "casteljau/text.hpp"
+
+namespace casteljau::text_detail {
+
+struct ShapedGlyph {
+    std::uint32_t glyph = 0;
+    std::uint16_t font = 0;
+    std::uint32_t cluster = 0;  // code point index in the paragraph
+    double advance = 0;         // px
+    double x_offset = 0;        // px, x right
+    double y_offset = 0;        // px, y UP (HarfBuzz's convention)
+};
+
+struct ShapedRun {
+    std::uint32_t begin = 0, end = 0;  // code point range in the paragraph
+    std::uint8_t level = 0;
+    std::uint16_t font = 0;
+    std::vector<ShapedGlyph> glyphs;   // visual order
+};
+
+class Shaper {
+public:
+    // Validates the style's script, language and features (Error(Parse)).
+    Shaper(std::span<const Font* const> fonts, const TextStyle& style);
+    ~Shaper();
+    Shaper(const Shaper&) = delete;
+    Shaper& operator=(const Shaper&) = delete;
+
+    // Shapes `para` (tabs already replaced) with the given bidi levels into `runs` (logical order).
+    void shape_paragraph(std::u32string_view para, std::span<const std::uint8_t> levels, std::vector<ShapedRun>& runs);
+
+private:
+    std::span<const Font* const> fonts_;
+    double size_;
+    hb_buffer_t* buf_ = nullptr;
+    std::vector<hb_feature_t> features_;
+    hb_script_t script_override_ = HB_SCRIPT_INVALID;
+    hb_language_t language_ = HB_LANGUAGE_INVALID;
+    std::vector<std::uint16_t> font_of_;
+    std::vector<hb_script_t> script_of_;
+};
+
+}  // namespace casteljau::text_detail

@@ -1,0 +1,113 @@
+// Flattening: the flatness bound holds, depth is limited, degenerate and hostile input.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "casteljau/error.hpp"
+#include "casteljau/flatten.hpp"
+
+using namespace casteljau;
+
+namespace {
+Point cubic_at(Point p0, Point p1, Point p2, Point p3, double t) {
+    const double u = 1 - t;
+    return p0 * (u * u * u) + p1 * (3 * u * u * t) + p2 * (3 * u * t * t) + p3 * (t * t * t);
+}
+double dist_to_segment(Point p, Point a, Point b) {
+    const Point ab = b - a;
+    const double len2 = ab.dot(ab);
+    const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    return (p - (a + ab * t)).length();
+}
+double dist_to_polyline(Point p, const Polyline& pl) {
+    double best = INFINITY;
+    for (std::size_t i = 0; i + 1 < pl.points.size(); ++i) best = std::min(best, dist_to_segment(p, pl.points[i], pl.points[i + 1]));
+    return best;
+}
+}  // namespace
+
+TEST_CASE("flatness bound: the curve stays within the bound of its chord", "[flatten]") {
+    std::mt19937 rng(12345);
+    std::uniform_real_distribution<double> u(-100, 100);
+    for (int i = 0; i < 500; ++i) {
+        const Point p0{u(rng), u(rng)}, p1{u(rng), u(rng)}, p2{u(rng), u(rng)}, p3{u(rng), u(rng)};
+        const double bound = flatness_bound_cubic(p0, p1, p2, p3);
+        double worst = 0;
+        for (int k = 0; k <= 200; ++k) worst = std::max(worst, dist_to_segment(cubic_at(p0, p1, p2, p3, k / 200.0), p0, p3));
+        REQUIRE(worst <= bound * (1 + 1e-12) + 1e-12);
+    }
+    // The quadratic bound is attained at t = 1/2 for a symmetric curve.
+    CHECK(flatness_bound_quad({0, 0}, {1, 2}, {2, 0}) == Approx(1.0));
+}
+
+TEST_CASE("flatten: every curve point is within the tolerance of the polyline", "[flatten]") {
+    std::mt19937 rng(777);
+    std::uniform_real_distribution<double> u(0, 300);
+    for (double tol : {0.01, 0.05, 0.25}) {
+        for (int i = 0; i < 100; ++i) {
+            const Point p0{u(rng), u(rng)}, p1{u(rng), u(rng)}, p2{u(rng), u(rng)}, p3{u(rng), u(rng)};
+            Path p;
+            p.move_to(p0).cubic_to(p1, p2, p3);
+            Polyline pl;
+            flatten(p, Affine{}, tol, pl);
+            REQUIRE(pl.points.front() == p0);
+            REQUIRE(pl.points.back() == p3);
+            for (int k = 0; k <= 400; ++k) REQUIRE(dist_to_polyline(cubic_at(p0, p1, p2, p3, k / 400.0), pl) <= tol * 1.0000001);
+        }
+    }
+}
+
+TEST_CASE("flatten: the tolerance is in pixels, after the transform", "[flatten]") {
+    Path p;
+    p.move_to(0, 0).quad_to({1, 1}, {2, 0});
+    Polyline small, big;
+    flatten(p, Affine{}, 0.05, small);
+    flatten(p, Affine::scale(100), 0.05, big);
+    CHECK(big.points.size() > small.points.size());
+    CHECK(big.points.back() == Point{200, 0});
+}
+
+TEST_CASE("flatten: conics (exact circle arcs) stay within tolerance", "[flatten]") {
+    // Quarter circle of radius 100 as a conic with weight cos(45 deg).
+    Path p;
+    p.move_to(100, 0).conic_to({100, 100}, {0, 100}, std::sqrt(0.5));
+    Polyline pl;
+    flatten(p, Affine{}, 0.05, pl);
+    for (const Point& q : pl.points) CHECK(q.length() == Approx(100).margin(1e-9));  // vertices on the circle
+    for (std::size_t i = 0; i + 1 < pl.points.size(); ++i) {
+        const Point m = midpoint(pl.points[i], pl.points[i + 1]);
+        CHECK(100 - m.length() <= 0.05);  // chord sagitta within tolerance
+    }
+}
+
+TEST_CASE("flatten: degenerate curves, cusps and loops do not explode", "[flatten]") {
+    Path p;
+    p.move_to(5, 5).cubic_to({5, 5}, {5, 5}, {5, 5});       // coincident points
+    p.move_to(0, 0).cubic_to({100, 100}, {0, 100}, {100, 0});  // loop
+    p.move_to(0, 0).cubic_to({100, 0}, {0, 0}, {100, 0});       // cusp / collinear backtrack
+    Polyline pl;
+    flatten(p, Affine{}, 0.05, pl);
+    CHECK(pl.contour_count() == 3);
+    CHECK(pl.points.size() < 2000);
+}
+
+TEST_CASE("flatten: huge values terminate with at most 2^16 pieces per curve", "[flatten]") {
+    Path p;
+    p.move_to(-1e300, 0).cubic_to({1e300, 1e300}, {-1e300, 1e300}, {1e300, 0});
+    Polyline pl;
+    flatten(p, Affine{}, 0.05, pl);
+    CHECK(pl.points.size() <= (1u << limits::kMaxFlattenDepth) + 1);
+    for (const Point& q : pl.points) CHECK(q.is_finite());
+}
+
+TEST_CASE("flatten: non-finite input is an error", "[flatten]") {
+    Polyline pl;
+    Path p;
+    p.move_to(0, 0).line_to(NAN, 1);
+    CHECK_THROWS_AS(flatten(p, Affine{}, 0.05, pl), Error);
+    Path q;
+    q.move_to(0, 0).line_to(1e300, 1);
+    CHECK_THROWS_AS(flatten(q, Affine::scale(1e300), 0.05, pl), Error);  // overflows after the transform
+    CHECK_THROWS_AS(flatten(q, Affine{}, 0.0, pl), Error);
+}

@@ -1,0 +1,766 @@
+// Tests for stroking and dashing (include/casteljau/stroke.hpp).
+//
+// The outline is checked geometrically, without the rasterizer: signed areas of the output polygon
+// (exact for strokes that do not overlap themselves), the nonzero winding number of the output at
+// sample points against an independent reference built from the SVG definition (segment
+// rectangles, join and cap pieces), and the lengths of dashes.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "casteljau/error.hpp"
+#include "casteljau/raster.hpp"
+#include "casteljau/stroke.hpp"
+
+using namespace casteljau;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct Contour {
+    std::vector<Point> pts;
+    bool closed = false;
+};
+
+// The contours of a Path made of lines only (what stroke() and dash() produce).
+std::vector<Contour> contours_of(const Path& p) {
+    std::vector<Contour> out;
+    struct V {
+        std::vector<Contour>& out;
+        void move(Point a) { out.push_back({{a}, false}); }
+        void line(Point, Point b) { out.back().pts.push_back(b); }
+        void quad(Point, Point, Point) { FAIL("stroke output has a quad"); }
+        void cubic(Point, Point, Point, Point) { FAIL("stroke output has a cubic"); }
+        void conic(Point, Point, Point, double) { FAIL("stroke output has a conic"); }
+        void close(Point, Point) { out.back().closed = true; }
+    } v{out};
+    p.visit(v);
+    return out;
+}
+
+// Signed area (shoelace) of all contours, each closed implicitly as a fill does.
+double signed_area(const Path& p) {
+    double a = 0;
+    for (const Contour& c : contours_of(p))
+        for (std::size_t i = 0; i < c.pts.size(); ++i) a += c.pts[i].cross(c.pts[(i + 1) % c.pts.size()]);
+    return a / 2;
+}
+
+// Nonzero winding number of the (implicitly closed) contours around q.
+int winding(const Path& p, Point q) {
+    int w = 0;
+    for (const Contour& c : contours_of(p)) {
+        for (std::size_t i = 0; i < c.pts.size(); ++i) {
+            const Point a = c.pts[i], b = c.pts[(i + 1) % c.pts.size()];
+            const double side = (b - a).cross(q - a);
+            if (a.y <= q.y && b.y > q.y && side > 0) ++w;
+            if (b.y <= q.y && a.y > q.y && side < 0) --w;
+        }
+    }
+    return w;
+}
+
+bool inside(const Path& p, Point q) { return winding(p, q) != 0; }
+
+double polyline_length(const Contour& c) {
+    double l = 0;
+    for (std::size_t i = 1; i < c.pts.size(); ++i) l += distance(c.pts[i - 1], c.pts[i]);
+    if (c.closed && c.pts.size() > 1) l += distance(c.pts.back(), c.pts.front());
+    return l;
+}
+
+double total_length(const Path& p) {
+    double l = 0;
+    for (const Contour& c : contours_of(p)) l += polyline_length(c);
+    return l;
+}
+
+// Independent expectation: the "on" length of an (even, positive) pattern over [0, len) of a path,
+// starting `offset` into the pattern, by summing interval overlaps period by period.
+double expected_on_length(std::vector<double> pat, double offset, double len) {
+    if (pat.size() % 2) {
+        const auto copy = pat;
+        pat.insert(pat.end(), copy.begin(), copy.end());
+    }
+    double period = 0;
+    for (double d : pat) period += d;
+    const double a = offset, b = offset + len;  // the window in pattern coordinates
+    double on = 0;
+    for (double k = std::floor(a / period) - 1; k * period <= b; ++k) {
+        double s = k * period;
+        for (std::size_t i = 0; i < pat.size(); ++i) {
+            if (i % 2 == 0) on += std::max(0.0, std::min(b, s + pat[i]) - std::max(a, s));
+            s += pat[i];
+        }
+    }
+    return on;
+}
+
+Path line(Point a, Point b) {
+    Path p;
+    p.move_to(a).line_to(b);
+    return p;
+}
+
+StrokeStyle style(double w, LineCap cap = LineCap::Butt, LineJoin join = LineJoin::Miter, double limit = 4) {
+    StrokeStyle s;
+    s.width = w;
+    s.cap = cap;
+    s.join = join;
+    s.miter_limit = limit;
+    return s;
+}
+
+// ---- Independent reference for the stroke region, from the SVG definition -------------------
+// Convex pieces; each reports a conservative signed distance (positive inside): sd_in > 0 proves a
+// point is inside the true stroke region AND inside the polygonal output (round parts shrunk by the
+// tolerance, since the output's arcs are inscribed), sd_out < 0 proves a point is outside both.
+struct Piece {
+    std::vector<Point> poly;  // convex polygon, either orientation (empty: a disk sector)
+    Point c{};                // disk sector: centre, radius, half-planes (p - c) . n >= 0
+    double r = 0;
+    std::vector<Vec> halfplanes;
+
+    void sd(Point p, double tol, double& in, double& out) const {
+        if (!poly.empty()) {
+            double area = 0;
+            for (std::size_t i = 0; i < poly.size(); ++i) area += poly[i].cross(poly[(i + 1) % poly.size()]);
+            const double s = area >= 0 ? 1 : -1;
+            double m = 1e300;
+            for (std::size_t i = 0; i < poly.size(); ++i) {
+                const Point a = poly[i], b = poly[(i + 1) % poly.size()];
+                const double l = distance(a, b);
+                if (l == 0) continue;
+                m = std::min(m, s * (b - a).cross(p - a) / l);
+            }
+            if (std::abs(area) < 1e-12) m = -1e300;  // degenerate: covers nothing
+            in = out = m;
+            return;
+        }
+        double hp = 1e300;
+        for (Vec n : halfplanes) hp = std::min(hp, (p - c).dot(n));
+        const double d = distance(p, c);
+        in = std::min(hp, r - tol - d);
+        out = std::min(hp, r - d);
+    }
+};
+
+Vec unit(Vec v) { return v / v.length(); }
+Vec lperp(Vec d) { return {-d.y, d.x}; }
+
+std::vector<Piece> reference_pieces(std::vector<Point> pts, bool closed, const StrokeStyle& st) {
+    // Drop exact repeats (zero-length segments have no direction).
+    std::vector<Point> q;
+    for (Point p : pts)
+        if (q.empty() || !(p == q.back())) q.push_back(p);
+    if (closed)
+        while (q.size() > 1 && q.back() == q.front()) q.pop_back();
+    const double h = st.width / 2;
+    std::vector<Piece> pieces;
+    const std::size_t n = q.size(), nseg = closed ? n : n - 1;
+    auto seg_dir = [&](std::size_t i) { return unit(q[(i + 1) % n] - q[i]); };
+    for (std::size_t i = 0; i < nseg; ++i) {
+        Point a = q[i], b = q[(i + 1) % n];
+        const Vec d = seg_dir(i), nn = lperp(d);
+        if (!closed && st.cap == LineCap::Square) {
+            if (i == 0) a = a - d * h;
+            if (i == nseg - 1) b = b + d * h;
+        }
+        pieces.push_back({{a + nn * h, b + nn * h, b - nn * h, a - nn * h}, {}, 0, {}});
+    }
+    if (!closed && st.cap == LineCap::Round) {
+        const Vec d0 = seg_dir(0), dn = seg_dir(nseg - 1);
+        pieces.push_back({{}, q[0], h, {-d0}});
+        pieces.push_back({{}, q[n - 1], h, {dn}});
+    }
+    const double limit = std::max(1.0, st.miter_limit);
+    for (std::size_t v = closed ? 0 : 1; v < (closed ? n : n - 1); ++v) {
+        const Vec d1 = seg_dir((v + nseg - 1) % nseg), d2 = seg_dir(v);
+        const double cr = d1.cross(d2), dt = d1.dot(d2);
+        if (cr == 0 && dt > 0) continue;
+        const double s = cr <= 0 ? 1 : -1;
+        const Vec n1 = lperp(d1) * s, n2 = lperp(d2) * s;
+        const Point V = q[v], A = V + n1 * h, B = V + n2 * h;
+        const double alpha = kPi - std::atan2(std::abs(cr), dt);  // angle between the segments
+        const bool miter_ok = alpha > 1e-9 && 1 / std::sin(alpha / 2) <= limit;
+        switch (st.join) {
+            case LineJoin::Round: pieces.push_back({{}, V, h, {d1, -d2}}); break;
+            case LineJoin::Bevel: pieces.push_back({{V, A, B}, {}, 0, {}}); break;
+            case LineJoin::Miter:
+            case LineJoin::MiterClip: {
+                // The miter tip is where the two outer edges meet.
+                if (miter_ok) {
+                    const double t = (B - A).cross(-d2) / d1.cross(-d2);
+                    pieces.push_back({{V, A, A + d1 * t, B}, {}, 0, {}});
+                } else if (st.join == LineJoin::MiterClip) {
+                    const Vec bis = (n1 + n2).length() > 1e-12 ? unit(n1 + n2) : d1;
+                    // Outer edges cut by the line (p - V) . bis = limit * h.
+                    const double t1 = (limit * h - (A - V).dot(bis)) / d1.dot(bis);
+                    const double t2 = (limit * h - (B - V).dot(bis)) / (-d2).dot(bis);
+                    pieces.push_back({{V, A, A + d1 * t1, B - d2 * t2, B}, {}, 0, {}});
+                } else {
+                    pieces.push_back({{V, A, B}, {}, 0, {}});
+                }
+                break;
+            }
+        }
+    }
+    return pieces;
+}
+
+// Compares the winding of `out` at random points around the polyline with the reference.
+// Returns the number of points checked (ambiguous points within `margin` of a boundary are skipped).
+int check_against_reference(const Path& out, const std::vector<Point>& pts, bool closed, const StrokeStyle& st,
+                            double tol, std::mt19937& rng, int samples) {
+    const auto pieces = reference_pieces(pts, closed, st);
+    Rect box{pts[0].x, pts[0].y, pts[0].x, pts[0].y};
+    for (Point p : pts) box.include(p);
+    const double pad = st.width * std::max(2.0, st.miter_limit);
+    std::uniform_real_distribution<double> ux(box.x0 - pad, box.x1 + pad), uy(box.y0 - pad, box.y1 + pad);
+    const double margin = 1e-7 * (1 + box.width() + box.height() + pad);
+    int checked = 0;
+    for (int i = 0; i < samples; ++i) {
+        const Point p{ux(rng), uy(rng)};
+        double in = -1e300, outd = -1e300;
+        for (const Piece& pc : pieces) {
+            double a, b;
+            pc.sd(p, tol, a, b);
+            in = std::max(in, a);
+            outd = std::max(outd, b);
+        }
+        if (in > margin) {
+            INFO("point " << p.x << "," << p.y << " must be inside");
+            REQUIRE(inside(out, p));
+            ++checked;
+        } else if (outd < -margin) {
+            INFO("point " << p.x << "," << p.y << " must be outside");
+            REQUIRE_FALSE(inside(out, p));
+            ++checked;
+        }
+    }
+    return checked;
+}
+
+}  // namespace
+
+TEST_CASE("stroke: horizontal line areas for butt, square and round caps", "[stroke]") {
+    const Path p = line({10, 10}, {110, 10});
+    CHECK(std::abs(signed_area(stroke(p, style(4, LineCap::Butt)))) == Approx(400).margin(1e-9));
+    CHECK(std::abs(signed_area(stroke(p, style(4, LineCap::Square)))) == Approx(416).margin(1e-9));
+    // Round caps: the two half disks, inscribed polygons whose sagitta is below the tolerance, so
+    // the missing area is at most perimeter x tolerance = 2 pi r x 0.05.
+    const double round = std::abs(signed_area(stroke(p, style(4, LineCap::Round))));
+    CHECK(round <= 400 + kPi * 4 + 1e-9);
+    CHECK(round >= 400 + kPi * 4 - 2 * kPi * 2 * 0.05);
+    // The butt stroke is the rectangle itself.
+    const Path b = stroke(p, style(4));
+    CHECK(inside(b, {10.01, 8.01}));
+    CHECK(inside(b, {109.99, 11.99}));
+    CHECK_FALSE(inside(b, {9.99, 10}));
+    CHECK_FALSE(inside(b, {60, 12.01}));
+}
+
+TEST_CASE("stroke: closed square gives outer minus inner, no caps", "[stroke]") {
+    Path p;
+    p.add_rect({0, 0, 100, 100});
+    // Miter corners: 110^2 - 90^2; caps must not matter on a closed contour.
+    for (LineCap cap : {LineCap::Butt, LineCap::Square, LineCap::Round}) {
+        CHECK(std::abs(signed_area(stroke(p, style(10, cap, LineJoin::Miter)))) == Approx(4000).margin(1e-9));
+    }
+    // Bevel: each outer corner loses a right triangle with legs 5.
+    CHECK(std::abs(signed_area(stroke(p, style(10, LineCap::Butt, LineJoin::Bevel)))) == Approx(4000 - 4 * 12.5).margin(1e-9));
+    // Round: each outer corner loses 25 - pi 25 / 4 (up to the arc tolerance).
+    const double round = std::abs(signed_area(stroke(p, style(10, LineCap::Butt, LineJoin::Round))));
+    CHECK(round == Approx(4000 - 4 * (25 - kPi * 25 / 4)).margin(2 * kPi * 5 * 0.05));
+    // The same square drawn with an explicit closing segment back to the start.
+    Path q;
+    q.move_to(0, 0).line_to(100, 0).line_to(100, 100).line_to(0, 100).line_to(0, 0).close();
+    CHECK(std::abs(signed_area(stroke(q, style(10)))) == Approx(4000).margin(1e-9));
+    // Both orientations give the same sign (all pieces are oriented alike).
+    CHECK(signed_area(stroke(p, style(10))) == Approx(signed_area(stroke(p.reversed(), style(10)))));
+    // Hole in the middle, ring around.
+    const Path s = stroke(p, style(10));
+    CHECK_FALSE(inside(s, {50, 50}));
+    CHECK(inside(s, {50, 4.9}));
+    CHECK(inside(s, {-4.9, -4.9}));
+    CHECK_FALSE(inside(s, {50, 5.1}));
+}
+
+TEST_CASE("stroke: right-angle joins add the exact corner", "[stroke]") {
+    Path p;
+    p.move_to(0, 0).line_to(100, 0).line_to(100, 100);
+    // Rectangles 1000 + 1000 overlap in a 5 x 5 square: 1975, plus the outer corner piece.
+    CHECK(std::abs(signed_area(stroke(p, style(10, LineCap::Butt, LineJoin::Miter)))) == Approx(2000).margin(1e-9));
+    CHECK(std::abs(signed_area(stroke(p, style(10, LineCap::Butt, LineJoin::Bevel)))) == Approx(1987.5).margin(1e-9));
+    const double round = std::abs(signed_area(stroke(p, style(10, LineCap::Butt, LineJoin::Round))));
+    CHECK(round <= 1975 + kPi * 25 / 4 + 1e-9);
+    CHECK(round >= 1975 + kPi * 25 / 4 - kPi / 2 * 5 * 0.05);
+    // The miter corner's tip is covered, and nothing beyond it.
+    const Path m = stroke(p, style(10));
+    CHECK(inside(m, {104.9, -4.9}));
+    CHECK_FALSE(inside(m, {105.1, -4.9}));
+    CHECK_FALSE(inside(stroke(p, style(10, LineCap::Butt, LineJoin::Bevel)), {104.9, -4.9}));
+}
+
+TEST_CASE("stroke: miter limit switches to bevel at 1/sin(alpha/2)", "[stroke]") {
+    Path right;
+    right.move_to(0, 0).line_to(100, 0).line_to(100, 100);
+    // Right angle: miter length / width = sqrt(2) = 1.41421...
+    CHECK(std::abs(signed_area(stroke(right, style(10, LineCap::Butt, LineJoin::Miter, 1.414)))) == Approx(1987.5));
+    CHECK(std::abs(signed_area(stroke(right, style(10, LineCap::Butt, LineJoin::Miter, 1.415)))) == Approx(2000));
+    // 60 degrees between the segments: ratio 1 / sin(30 deg) = 2.
+    Path sharp;
+    const Point v{100, 0};
+    sharp.move_to(0, 0).line_to(v).line_to(v + Vec{-std::cos(kPi / 3), std::sin(kPi / 3)} * 100);
+    const Path below = stroke(sharp, style(10, LineCap::Butt, LineJoin::Miter, 1.99));
+    const Path above = stroke(sharp, style(10, LineCap::Butt, LineJoin::Miter, 2.01));
+    // The miter tip lies on the outer bisector at distance ratio x h = 2 x 5 = 10 from the vertex.
+    const Vec bis = unit(Vec{1, 0} + unit(Vec{-std::cos(kPi / 3), std::sin(kPi / 3)}) * -1);
+    CHECK(inside(above, v + bis * 9.9));
+    CHECK_FALSE(inside(above, v + bis * 10.1));
+    CHECK_FALSE(inside(below, v + bis * 5.1));
+    // Exact areas: the miter adds a kite of area h^2 / tan(alpha / 2) = 25 sqrt(3) beyond the
+    // overlap-free part; the bevel adds the triangle V, A, B of area h^2 sin(pi - alpha) / 2.
+    const double diff = std::abs(signed_area(above)) - std::abs(signed_area(below));
+    const double kite = 25 / std::tan(kPi / 6), tri = 25 * std::sin(2 * kPi / 3) / 2;
+    CHECK(diff == Approx(kite - tri));
+}
+
+TEST_CASE("stroke: miter-clip cuts the miter at miter_limit x width / 2", "[stroke]") {
+    Path p;
+    p.move_to(0, 0).line_to(100, 0).line_to(100, 100);
+    // limit 1 on a right angle: bevel area + h^2/2 - h^2 (sqrt 2 - 1)^2.
+    const double expect = 1987.5 + 12.5 - 25 * (std::sqrt(2.0) - 1) * (std::sqrt(2.0) - 1);
+    CHECK(std::abs(signed_area(stroke(p, style(10, LineCap::Butt, LineJoin::MiterClip, 1)))) == Approx(expect));
+    // Below the limit it is a plain miter.
+    CHECK(std::abs(signed_area(stroke(p, style(10, LineCap::Butt, LineJoin::MiterClip, 4)))) == Approx(2000));
+}
+
+TEST_CASE("stroke: 180-degree turns", "[stroke]") {
+    Path p;
+    p.move_to(0, 0).line_to(50, 0).line_to(20, 0);
+    const Path round = stroke(p, style(10, LineCap::Butt, LineJoin::Round));
+    CHECK(inside(round, {54.8, 0}));
+    CHECK(inside(round, {52, 3}));
+    CHECK_FALSE(inside(round, {55.1, 0}));
+    CHECK(inside(round, {25, 4.9}));
+    CHECK(inside(round, {1, -4.9}));
+    // Miter falls back to bevel: nothing beyond the vertex.
+    const Path miter = stroke(p, style(10));
+    CHECK_FALSE(inside(miter, {50.1, 0}));
+    CHECK(inside(miter, {49.9, 4.9}));
+    // Miter-clip extends straight ahead by miter_limit x h.
+    const Path clip = stroke(p, style(10, LineCap::Butt, LineJoin::MiterClip, 2));
+    CHECK(inside(clip, {59.9, 4.9}));
+    CHECK_FALSE(inside(clip, {60.1, 0}));
+}
+
+TEST_CASE("stroke: zero-length subpaths draw dots with round and square caps", "[stroke]") {
+    Path closed;
+    closed.move_to(50, 50).close();
+    Path degenerate;
+    degenerate.move_to(50, 50).line_to(50, 50);
+    for (const Path* p : {&closed, &degenerate}) {
+        const double disk = std::abs(signed_area(stroke(*p, style(10, LineCap::Round))));
+        CHECK(disk <= kPi * 25);
+        CHECK(disk >= kPi * 25 - 2 * kPi * 5 * 0.05);
+        CHECK(std::abs(signed_area(stroke(*p, style(10, LineCap::Square)))) == Approx(100));
+        CHECK(stroke(*p, style(10, LineCap::Butt)).empty());
+        // The square is aligned with the x axis.
+        const Path sq = stroke(*p, style(10, LineCap::Square));
+        CHECK(inside(sq, {54.9, 54.9}));
+        CHECK_FALSE(inside(sq, {55.1, 50}));
+    }
+    Path lone;
+    lone.move_to(50, 50);
+    CHECK(stroke(lone, style(10, LineCap::Round)).empty());
+    // Degenerate segments are skipped for direction: the square cap follows the real segment.
+    Path p;
+    p.move_to(0, 0).line_to(0, 0).line_to(100, 0).line_to(100, 0);
+    CHECK(std::abs(signed_area(stroke(p, style(4, LineCap::Square)))) == Approx(416));
+}
+
+TEST_CASE("stroke: width <= 0 gives nothing, bad input throws", "[stroke]") {
+    const Path p = line({0, 0}, {10, 10});
+    CHECK(stroke(p, style(0)).empty());
+    CHECK(stroke(p, style(-3)).empty());
+    CHECK(stroke(Path{}, style(3)).empty());
+
+    Path nan = line({0, 0}, {std::nan(""), 1});
+    try {
+        (void)stroke(nan, style(1));
+        FAIL("no error for NaN");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::InvalidData);
+    }
+    auto kind_of = [](auto&& f) {
+        try {
+            f();
+        } catch (const Error& e) {
+            return static_cast<int>(e.kind());
+        }
+        return -1;
+    };
+    const double inf = std::numeric_limits<double>::infinity();
+    CHECK(kind_of([&] { (void)stroke(p, style(1), Affine{inf, 0, 0, 1, 0, 0}); }) == int(ErrorKind::InvalidData));
+    CHECK(kind_of([&] { (void)stroke(p, style(inf)); }) == int(ErrorKind::InvalidData));
+    CHECK(kind_of([&] { (void)stroke(p, style(1, LineCap::Butt, LineJoin::Miter, std::nan(""))); }) == int(ErrorKind::InvalidData));
+    CHECK(kind_of([&] { (void)stroke(p, style(1), {}, 0); }) == int(ErrorKind::InvalidArgument));
+    CHECK(kind_of([&] { (void)stroke(p, style(1), {}, -1); }) == int(ErrorKind::InvalidArgument));
+    StrokeStyle s = style(1);
+    s.dashes = {1, std::nan("")};
+    CHECK(kind_of([&] { (void)stroke(p, s); }) == int(ErrorKind::InvalidData));
+    s.dashes = {1, 1};
+    s.dash_offset = inf;
+    CHECK(kind_of([&] { (void)stroke(p, s); }) == int(ErrorKind::InvalidData));
+    const double d[] = {1, inf};
+    CHECK(kind_of([&] { (void)dash(p, d, 0); }) == int(ErrorKind::InvalidData));
+    // Too many dashes for the limit.
+    const double tiny[] = {1e-6, 1e-6};
+    CHECK(kind_of([&] { (void)dash(line({0, 0}, {1e6, 0}), tiny, 0); }) == int(ErrorKind::Limit));
+}
+
+TEST_CASE("stroke: hostile but finite inputs finish with finite output or a clear error", "[stroke]") {
+    auto all_finite = [](const Path& p) {
+        for (Point q : p.points())
+            if (!q.is_finite()) return false;
+        return true;
+    };
+    Path c;
+    c.add_circle({0, 0}, 50);
+    c.move_to(0, 0).cubic_to({100, 100}, {-100, 100}, {0, 0});  // a loop with a cusp-like end
+    c.move_to(5, 5).close();
+    for (LineCap cap : {LineCap::Butt, LineCap::Round, LineCap::Square}) {
+        for (LineJoin join : {LineJoin::Miter, LineJoin::MiterClip, LineJoin::Round, LineJoin::Bevel}) {
+            StrokeStyle st = style(3, cap, join, 0.5);  // limit below 1: treated as 1
+            CHECK(all_finite(stroke(c, st, Affine::scale(1e-300))));
+            CHECK(all_finite(stroke(c, st, Affine{0, 0, 0, 0, 0, 0})));  // singular transform
+            st.dashes = {7, 3, 0};
+            st.dash_offset = -1e300;
+            CHECK(all_finite(stroke(c, st)));
+            CHECK(all_finite(stroke(c.transformed(Affine::scale(1e14)), style(1e14, cap, join), Affine::scale(1e-14))));
+        }
+    }
+    // A tolerance far below double precision: the flattening depth limit and the arc step limit
+    // (65536 steps per turn) bound the work.
+    CHECK(all_finite(stroke(c, style(3, LineCap::Round, LineJoin::Round), {}, 1e-300)));
+    try {
+        const Path huge = stroke(line({0, 0}, {1, 1}), style(1e308, LineCap::Round, LineJoin::Miter));
+        CHECK(all_finite(huge));
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::Limit);
+    }
+}
+
+TEST_CASE("stroke: curves are flattened in user space with tolerance_px / max_scale", "[stroke]") {
+    Path c;
+    c.add_circle({0, 0}, 50);
+    // Annulus 50 +- 5: area pi (55^2 - 45^2) = 1000 pi, the circle itself flattened.
+    const double a1 = std::abs(signed_area(stroke(c, style(10))));
+    CHECK(a1 == Approx(1000 * kPi).epsilon(2e-3));
+    // A 20x zoom needs a finer outline: more points, closer area, still in user space.
+    const Path fine = stroke(c, style(10), Affine::scale(20));
+    CHECK(contours_of(fine)[0].pts.size() > 3 * contours_of(stroke(c, style(10)))[0].pts.size());
+    CHECK(std::abs(signed_area(fine)) == Approx(1000 * kPi).epsilon(5e-4));
+    // A non-uniform transform only changes the tolerance (the pen stays circular in user space:
+    // elliptical after the transform), so the user-space outline is still the annulus.
+    const Path ell = stroke(c, style(10), Affine::scale(1, 20));
+    CHECK(std::abs(signed_area(ell)) == Approx(1000 * kPi).epsilon(5e-4));
+    CHECK(inside(ell, {0, 54.5}));
+    CHECK(inside(ell, {54.5, 0}));
+    CHECK_FALSE(inside(ell, {0, 55.5}));
+    CHECK_FALSE(inside(ell, {44.5, 0}));
+}
+
+TEST_CASE("stroke: points near the centre line are inside, points far away outside (circle)", "[stroke]") {
+    Path c;
+    c.add_circle({100, 100}, 50);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> ang(0, 2 * kPi), rad(30, 70);
+    const Path s = stroke(c, style(8, LineCap::Butt, LineJoin::Round));
+    int checked = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const double a = ang(rng), r = rad(rng);
+        const Point p{100 + r * std::cos(a), 100 + r * std::sin(a)};
+        // Cubic circle radial error (2.7e-4 r) + flattening tolerance 0.05.
+        const double slack = 50 * 2.8e-4 + 0.05 + 1e-9;
+        if (std::abs(r - 50) < 4 - slack) {
+            CHECK(inside(s, p));
+            ++checked;
+        } else if (std::abs(r - 50) > 4 + slack) {
+            CHECK_FALSE(inside(s, p));
+            ++checked;
+        }
+    }
+    CHECK(checked > 1900);
+}
+
+TEST_CASE("stroke: random polylines agree with the reference region at sample points", "[stroke]") {
+    std::mt19937 rng(20240611);
+    std::uniform_real_distribution<double> coord(0, 100), wdist(0.5, 25), u01(0, 1);
+    const LineCap caps[] = {LineCap::Butt, LineCap::Round, LineCap::Square};
+    const LineJoin joins[] = {LineJoin::Miter, LineJoin::MiterClip, LineJoin::Round, LineJoin::Bevel};
+    int total = 0;
+    for (int iter = 0; iter < 300; ++iter) {
+        const int n = 2 + static_cast<int>(u01(rng) * 7);
+        std::vector<Point> pts;
+        for (int i = 0; i < n; ++i) {
+            const double r = u01(rng);
+            if (i > 0 && r < 0.1) {
+                pts.push_back(pts.back());  // zero-length segment
+            } else if (i > 1 && r < 0.2) {
+                pts.push_back(lerp(pts[i - 2], pts[i - 1], 0.3));  // a 180-degree turn
+            } else if (i > 1 && r < 0.25) {
+                pts.push_back(pts[i - 1] + (pts[i - 1] - pts[i - 2]) * 0.5);  // straight on
+            } else if (i > 0 && r < 0.4) {
+                const double a = u01(rng) * 2 * kPi, l = 0.01 + 2 * u01(rng);  // a short segment
+                pts.push_back(pts[i - 1] + Vec{std::cos(a), std::sin(a)} * l);
+            } else {
+                pts.push_back({coord(rng), coord(rng)});
+            }
+        }
+        // Skip degenerate polylines (all points equal); they are tested separately.
+        if (std::all_of(pts.begin(), pts.end(), [&](Point p) { return p == pts[0]; })) continue;
+        const bool closed = u01(rng) < 0.3;
+        StrokeStyle st = style(wdist(rng), caps[iter % 3], joins[(iter / 3) % 4], 1 + u01(rng) * 5);
+        Path path;
+        path.add_polygon(pts, closed);
+        const double tol = 0.05;
+        const Path out = stroke(path, st, {}, tol);
+        INFO("iteration " << iter << " closed " << closed << " width " << st.width << " cap " << int(st.cap)
+                          << " join " << int(st.join) << " limit " << st.miter_limit);
+        total += check_against_reference(out, pts, closed, st, tol, rng, 200);
+    }
+    CHECK(total > 40000);
+}
+
+TEST_CASE("stroke: a self-overlapping stroke still fills its union under nonzero", "[stroke]") {
+    // A zig-zag with short segments and a wide pen: the inner joins go through the pivots.
+    std::vector<Point> pts;
+    for (int i = 0; i < 20; ++i) pts.push_back({i * 3.0, (i % 2) * 4.0});
+    Path p;
+    p.add_polygon(pts, false);
+    std::mt19937 rng(3);
+    for (LineJoin j : {LineJoin::Miter, LineJoin::Round, LineJoin::Bevel})
+        CHECK(check_against_reference(stroke(p, style(12, LineCap::Round, j)), pts, false, style(12, LineCap::Round, j),
+                                      0.05, rng, 3000) > 2500);
+}
+
+TEST_CASE("stroke: inner join goes through the pivot when the next segment is short", "[stroke]") {
+    // Regression guard: the triangle (end of segment 1, vertex, start of segment 2) on the inner
+    // side is covered only by the first segment's rectangle here; skipping the vertex on the inner
+    // side would cut it out.
+    Path p;
+    p.move_to(0, 0).line_to(100, 0).line_to(100, 0.5);
+    for (LineJoin j : {LineJoin::Miter, LineJoin::Round, LineJoin::Bevel}) {
+        const Path s = stroke(p, style(10, LineCap::Butt, j));
+        CHECK(inside(s, {99, 3}));
+        CHECK(inside(s, {96, 0.5}));
+        CHECK_FALSE(inside(s, {99, 5.1}));
+    }
+}
+
+TEST_CASE("stroke: small closed polygon under a wide pen has no hole", "[stroke]") {
+    // Equilateral triangle of side 9 under a pen of radius 5: every point of the triangle is within
+    // 5 of a side. Skipping the pivots on the inner side at all three corners would subtract the
+    // centre three times from the three rectangles that cover it.
+    for (double side : {9.0, 12.0, 17.0, 20.0}) {
+        const Point a{0, 0}, b{side, 0}, c{side / 2, side * std::sqrt(3.0) / 2};
+        const Point pts[] = {a, b, c};
+        Path p;
+        p.add_polygon(pts, true);
+        const Point centre = (a + b + c) / 3;
+        const double inradius = side / (2 * std::sqrt(3.0));
+        for (LineJoin j : {LineJoin::Miter, LineJoin::Bevel, LineJoin::Round}) {
+            INFO("side " << side);
+            CHECK(inside(stroke(p, style(10, LineCap::Butt, j)), centre) == (inradius < 5));
+        }
+    }
+}
+
+TEST_CASE("stroke: rasterized overlapping outline matches the supersampled reference region", "[stroke]") {
+    // The whole pipeline: stroke -> nonzero fill with exact overlaps. The zig-zag's pieces overlap
+    // heavily (inner joins through the pivots); coverage must still be the union's area per pixel.
+    std::vector<Point> pts;
+    for (int i = 0; i < 12; ++i) pts.push_back({4.3 + i * 3.1, 10.2 + (i % 2) * 5.3});
+    Path p;
+    p.add_polygon(pts, false);
+    for (LineJoin j : {LineJoin::Miter, LineJoin::Round}) {
+        const StrokeStyle st = style(7, LineCap::Square, j);
+        const auto pieces = reference_pieces(pts, false, st);
+        Rasterizer r;
+        const Mask m = r.fill_mask(stroke(p, st), Affine{});
+        REQUIRE(!m.bounds.empty());
+        constexpr int kSub = 16;
+        double sum_err = 0, max_err = 0;
+        int n = 0;
+        for (int y = m.bounds.y0 - 1; y < m.bounds.y1 + 1; ++y) {
+            for (int x = m.bounds.x0 - 1; x < m.bounds.x1 + 1; ++x) {
+                int hits = 0;
+                for (int sy = 0; sy < kSub; ++sy)
+                    for (int sx = 0; sx < kSub; ++sx) {
+                        const Point q{x + (sx + 0.5) / kSub, y + (sy + 0.5) / kSub};
+                        bool in = false;
+                        for (const Piece& pc : pieces) {
+                            double a, b;
+                            pc.sd(q, 0, a, b);
+                            if (b >= 0) { in = true; break; }
+                        }
+                        hits += in;
+                    }
+                const double err = std::abs(m.at(x, y) / 255.0 - hits / double(kSub * kSub));
+                sum_err += err;
+                max_err = std::max(max_err, err);
+                ++n;
+            }
+        }
+        INFO("join " << int(j) << " mean " << sum_err / n * 255 << "/255 max " << max_err * 255 << "/255");
+        // Supersampling error on boundary pixels, plus for round joins the arc tolerance (inscribed
+        // polygons lose up to 0.05 px of width along an arc).
+        const double arc = j == LineJoin::Round ? 0.05 : 0;
+        CHECK(sum_err / n < 0.5 / 255 + arc / 10);
+        CHECK(max_err < 8.0 / 255 + arc);
+    }
+}
+
+// ---- Dashing ---------------------------------------------------------------------------------
+
+TEST_CASE("dash: pattern normalisation (odd counts, zero and negative values)", "[stroke]") {
+    const Path p = line({0, 0}, {100, 0});
+    const double odd[] = {10};
+    const auto d = contours_of(dash(p, odd, 0));
+    REQUIRE(d.size() == 5);  // 10 on, 10 off
+    CHECK(d[1].pts.front().x == Approx(20));
+    CHECK(d[1].pts.back().x == Approx(30));
+    const double three[] = {3, 1, 2};  // becomes 3 1 2 3 1 2: period 12
+    CHECK(total_length(dash(p, three, 0)) == Approx(expected_on_length({3, 1, 2}, 0, 100)));
+    // No dashing: the path itself, and the same outline as a solid stroke.
+    const double zeros[] = {0, 0}, neg[] = {5, -1};
+    for (std::span<const double> pat : {std::span<const double>(zeros), std::span<const double>(neg)}) {
+        const auto c = contours_of(dash(p, pat, 0));
+        REQUIRE(c.size() == 1);
+        CHECK(polyline_length(c[0]) == Approx(100));
+        StrokeStyle s = style(4);
+        s.dashes.assign(pat.begin(), pat.end());
+        CHECK(stroke(p, s) == stroke(p, style(4)));
+    }
+}
+
+TEST_CASE("dash: total on length along a line, positive and negative offsets", "[stroke]") {
+    const Path p = line({10, 10}, {110, 10});
+    const std::vector<std::vector<double>> patterns = {{10, 5}, {7, 3, 1, 4}, {2.5}, {0.5, 9}, {30, 1}};
+    for (const auto& pat : patterns) {
+        for (double off : {0.0, 3.0, 12.5, -4.0, -27.3, 1000.7}) {
+            INFO("pattern[0] " << pat[0] << " offset " << off);
+            CHECK(total_length(dash(p, pat, off)) == Approx(expected_on_length(pat, off, 100)).margin(1e-9));
+            // Stroked with butt caps, the area is on-length x width.
+            StrokeStyle s = style(2);
+            s.dashes = pat;
+            s.dash_offset = off;
+            CHECK(std::abs(signed_area(stroke(p, s))) == Approx(2 * expected_on_length(pat, off, 100)).margin(1e-9));
+        }
+    }
+    // The offset shifts the pattern backwards along the path: offset 3 starts 3 into the first dash.
+    const double pat[] = {10, 5};
+    const auto c = contours_of(dash(p, pat, 3));
+    CHECK(c[0].pts.back().x == Approx(17));
+    CHECK(c[1].pts.front().x == Approx(22));
+    const auto n = contours_of(dash(p, pat, -3));  // starts in the gap, 3 before the next dash
+    CHECK(n[0].pts.front().x == Approx(13));
+}
+
+TEST_CASE("dash: dashes continue across segments and restart per subpath", "[stroke]") {
+    Path p;
+    p.move_to(0, 0).line_to(10, 0).line_to(10, 10).line_to(30, 10);  // length 40
+    p.move_to(0, 50).line_to(40, 50);                                 // length 40
+    const double pat[] = {6, 4};
+    const Path d = dash(p, pat, 0);
+    CHECK(total_length(d) == Approx(2 * expected_on_length({6, 4}, 0, 40)));
+    const auto c = contours_of(d);
+    // The second dash (10..16 along the path) starts exactly at the corner (10, 0).
+    REQUIRE(c.size() == 8);
+    CHECK(c[1].pts.front() == Point(10, 0));
+    CHECK(c[1].pts.back().x == Approx(10));
+    CHECK(c[1].pts.back().y == Approx(6));
+    // The second subpath restarts the pattern.
+    CHECK(c[4].pts.front() == Point(0, 50));
+    CHECK(c[4].pts.back().x == Approx(6));
+    // A dash across a corner keeps the corner point.
+    const double pat2[] = {5, 2};  // second dash 7..12 along the path
+    const auto c2 = contours_of(dash(p, pat2, 0));
+    REQUIRE(c2[1].pts.size() == 3);
+    CHECK(c2[1].pts[1] == Point(10, 0));
+}
+
+TEST_CASE("dash: closed contours join the last and first dash at the wrap", "[stroke]") {
+    Path sq;
+    sq.add_rect({0, 0, 100, 100});  // perimeter 400
+    // Period 30: 400 = 13 x 30 + 10, so the pattern is still "on" at the wrap: 14 starts, 13 dashes.
+    const double on_wrap[] = {20, 10};
+    const auto c = contours_of(dash(sq, on_wrap, 0));
+    CHECK(c.size() == 13);
+    CHECK(total_length(dash(sq, on_wrap, 0)) == Approx(expected_on_length({20, 10}, 0, 400)));
+    // The joined dash runs from 390 through the corner (0, 0) to 20.
+    bool found = false;
+    for (const auto& k : c)
+        if (k.pts.front() == Point(0, 10) && k.pts.back() == Point(20, 0)) found = k.pts.size() == 3;
+    CHECK(found);
+    for (const auto& k : c) CHECK_FALSE(k.closed);
+    // "Off" at the wrap: 400 = 10 x 40, dash pattern 25 on 15 off: 10 separate dashes.
+    const double off_wrap[] = {25, 15};
+    CHECK(contours_of(dash(sq, off_wrap, 0)).size() == 10);
+    // A pattern on all the way round keeps the contour closed: no caps, the same outline as solid.
+    const double long_on[] = {1000, 10};
+    const auto whole = contours_of(dash(sq, long_on, 0));
+    REQUIRE(whole.size() == 1);
+    CHECK(whole[0].closed);
+    StrokeStyle s = style(10);
+    s.dashes = {1000, 10};
+    CHECK(std::abs(signed_area(stroke(sq, s))) == Approx(4000));
+}
+
+TEST_CASE("dash: a dash pattern on a circle", "[stroke]") {
+    Path c;
+    c.add_circle({0, 0}, 50);
+    const double pat[] = {15, 5};
+    const Path d = dash(c, pat, 0);
+    const double perim = 2 * kPi * 50;  // 314.16 = 15 x 20 + 14.16: "on" at the wrap
+    const auto k = contours_of(d);
+    CHECK(k.size() == 15);
+    CHECK(total_length(d) == Approx(expected_on_length({15, 5}, 0, perim)).epsilon(1e-3));
+    for (const auto& dash_c : k)
+        for (Point p : dash_c.pts) CHECK(p.length() == Approx(50).margin(0.07));
+    // Stroked with butt caps, the area is on length x width up to the curvature of the dashes
+    // (an annular sector of mean radius 50 has exactly that area).
+    StrokeStyle s = style(4);
+    s.dashes = {15, 5};
+    CHECK(std::abs(signed_area(stroke(c, s))) == Approx(4 * expected_on_length({15, 5}, 0, perim)).epsilon(2e-3));
+}
+
+TEST_CASE("dash: zero-length dashes become dots or squares along the path", "[stroke]") {
+    const Path p = line({0, 0}, {95, 0});
+    StrokeStyle s = style(4, LineCap::Round);
+    s.dashes = {0, 10};
+    const Path dots = stroke(p, s);
+    CHECK(contours_of(dots).size() == 10);
+    const double area = std::abs(signed_area(dots));
+    CHECK(area <= 10 * kPi * 4);
+    CHECK(area >= 10 * (kPi * 4 - 2 * kPi * 2 * 0.05));
+    s.cap = LineCap::Butt;
+    CHECK(stroke(p, s).empty());
+    // Square caps of zero-length dashes follow the path direction (here 45 degrees).
+    Path diag;
+    diag.move_to(0, 0).line_to(100, 100);
+    StrokeStyle sq = style(4, LineCap::Square);
+    sq.dashes = {0, 1000};
+    const Path squares = stroke(diag, sq);
+    CHECK(std::abs(signed_area(squares)) == Approx(16));
+    CHECK(inside(squares, {2.6, 0}));        // along/across 1.84: inside the rotated square
+    CHECK_FALSE(inside(squares, {1.9, 1.9})); // along 2.69: outside it (inside an axis-aligned one)
+}
