@@ -45,7 +45,7 @@ private:
 
 }  // namespace
 
-std::uint8_t Rendered::at(int x, int y) const {
+int Rendered::at(int x, int y) const {
     if (x < window.x0 || x >= window.x1 || y < window.y0 || y >= window.y1) return 0;
     return cov[static_cast<std::size_t>(y - window.y0) * window.width() + (x - window.x0)];
 }

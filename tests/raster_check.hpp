@@ -25,7 +25,7 @@ struct Rendered {
     std::string contract_violation;      // first violation (row outside clip, y not increasing, ...)
     RasterStats stats;
 
-    std::uint8_t at(int x, int y) const;  // 0 outside the window
+    int at(int x, int y) const;  // 0 outside the window
 };
 
 Rendered render(Rasterizer& r, const Path& path, const Affine& m, const FillOptions& opts, const IRect& clip);

@@ -329,3 +329,18 @@ TEST_CASE("fill rules: plain accumulation stays exact where the winding is simpl
                         << " segments and " << edge << " partially covered pixels");
     }
 }
+
+TEST_CASE("fill rules regression: pixels outside 300 stacked pentagrams stay empty", "[fillrule]") {
+    // Float accumulation residual: with 300 coincident contours the running sum across a row
+    // carries an error of ~1/500 into pixels no edge touches (their winding is an integer), which
+    // rounded to 1/255 at (17, 8) (outside the star) under both rules.
+    Rasterizer r;
+    const Contour star{{13.018785901284325, 1.3109043000444256}, {13.266556835215056, 18.80859004336746},
+                       {2.7812243097794003, 4.7983010156981072}, {19.499077785348327, 9.9697391113538014},
+                       {2.9343551683728979, 15.612465529536211}};
+    for (FillRule rule : kRules) {
+        const Rendered out = render(r, ref::to_path(Contours(300, star)), Affine::identity(), with_rule(rule), {0, 0, 21, 21});
+        CHECK(out.at(17, 8) == 0);
+        check_polygons(r, Contours(300, star), rule, {0, 0, 21, 21}, "300 pentagrams");
+    }
+}

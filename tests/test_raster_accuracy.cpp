@@ -526,3 +526,43 @@ TEST_CASE("accuracy: error against the flattening tolerance", "[accuracy]") {
     }
     WARN(table);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Regressions: minimal reproducers of bugs these tests found (BUGS.md).
+
+TEST_CASE("raster regression: a square inside one pixel keeps all four edges in its exact cell", "[accuracy]") {
+    // Four edges of one contour in one cell: three are accepted as one polyline, the fourth marks
+    // the cell, and the exact recomputation must see all four (it saw only the last three, so the
+    // square's bottom edge was missing and the coverage below it counted as inside).
+    Rasterizer r;
+    const Contour sq{{1.25, 2.25}, {1.75, 2.25}, {1.75, 2.75}, {1.25, 2.75}};
+    for (const Contour& c : {sq, reversed(sq)})
+        for (FillRule rule : kRules) {
+            const Rendered out = render(r, ref::to_path({c}), Affine::identity(), [&] {
+                FillOptions o;
+                o.rule = rule;
+                return o;
+            }(), {0, 0, 4, 4});
+            CHECK(out.at(1, 2) == 64);  // 0.25 x 255 = 63.75
+        }
+    // The seeded case that found it: a sliver rectangle of 0.553 x 0.0035 px.
+    check_polygons(r, {rect(11.005396851662153, 18.556308238888061, 11.558360852807962, 18.559800880211878)},
+                   FillRule::NonZero, {0, 0, 32, 32}, "sliver rectangle in one pixel");
+}
+
+TEST_CASE("raster regression: curves crossing the side of a target not at the origin are not culled to chords", "[accuracy]") {
+    // The clipping path culls curves whose control box misses the target (plus a pixel); the cull
+    // rectangle must be in the same coordinates as the points (local to the target).
+    Rasterizer r;
+    Path c;
+    c.add_circle({60, 60}, 10);
+    for (IRect clip : {IRect{55, 45, 75, 75}, IRect{45, 55, 75, 75}, IRect{45, 45, 65, 75}, IRect{45, 45, 75, 65},
+                       IRect{52, 52, 68, 68}}) {
+        const Rendered out = render(r, c, Affine::identity(), FillOptions{}, clip);
+        const ref::CoverageGrid truth = ref::path_reference(c, Affine::identity(), FillRule::NonZero, clip);
+        const Comparison cmp = compare(out, truth);
+        INFO("circle (60, 60) r 10 in clip {" << clip.x0 << ", " << clip.y0 << ", " << clip.x1 << ", " << clip.y1
+                                              << "}: " << cmp.text() << "; " << out.stats.segments << " segments");
+        CHECK(cmp.max_err <= 3 * 255 * kDefaultTolerance + 1);
+    }
+}
