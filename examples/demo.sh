@@ -38,4 +38,20 @@ run text "Linux Libertine (CFF outlines): The quick brown fox jumps over the laz
 run text "مرحبا بالعالم — hello" --font "$fonts/NotoSansArabic-Regular.ttf" --font "$fonts/DejaVuSans.ttf" \
   --size 40 -o "$out/text-arabic.png"
 
+# Curves: a Bézier with its de Casteljau construction, a B-spline with knots, its basis functions,
+# a bicubic Bézier surface, and the clock (examples/clock.cpp, when it was built).
+run bezier --points "0,0 48,96 120,120 216,72" --render "$out/bezier-construction.png" --construction 0.4
+run bezier --points "30,0 60,10 80,30 90,60 90,90" --render "$out/bezier-quartic.png" --construction 0.5
+run spline --kind bspline --degree 3 --points "0,60 40,0 90,20 120,90 170,100 200,30 240,50" \
+  --render "$out/spline.png" --basis "$out/spline-basis.png"
+run spline --kind bspline --degree 2 --knots "0 0 0 1 2 2 3 4 4 4" --points "0,0 1,2 2,0 3,2 4,0 5,2 6,0" \
+  --basis "$out/basis-multiple-knot.png" --size 480x240
+run spline --kind catmull-rom --points "0,50 40,0 90,40 130,10 170,60" --render "$out/catmull-rom.png" --size 400x240
+run surface "$here/data/patch.json" --render "$out/surface.png" --projection cabinet --grid 12
+run surface "$here/data/patch.json" --render "$out/surface-shaded.png" --grid 10 --shaded
+if [ -x "$build/examples/example_clock" ]; then
+  "$build/examples/example_clock" 10:08:30 "$out/clock.png" > /dev/null
+  n=$((n + 1))
+fi
+
 echo "casteljau demo: wrote $n images to $out"

@@ -32,6 +32,7 @@ void register_path(CLI::App& app);
 void register_svg(CLI::App& app);
 void register_bezier(CLI::App& app);
 void register_spline(CLI::App& app);
+void register_surface(CLI::App& app);
 void register_text(CLI::App& app);
 
 }  // namespace casteljau::cli

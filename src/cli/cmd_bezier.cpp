@@ -3,16 +3,21 @@
 //   casteljau bezier --points "0,0 48,96 120,120 216,72" --eval 0.4        -> 69.12 80.64
 //   casteljau bezier --points "0,0 0,100 100,0 100,100" --elevate          -> 5 lines "x y"
 //   casteljau bezier --points-file curve.json --triangle 0.5               -> rows, blank line between
+//   casteljau bezier --points "0,0 48,96 120,120 216,72" --render c.png --construction 0.4
 //
 // Output format: curve_args.hpp. Exit status 1 for bad data (too few points, degree above 64,
 // unreadable or malformed file), 2 for bad usage (malformed option text, t outside [0, 1], no or
 // several actions).
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
 #include "casteljau/bezier.hpp"
+#include "casteljau/curve_draw.hpp"
+#include "casteljau/png.hpp"
 #include "cli/cli.hpp"
 #include "cli/curve_args.hpp"
 
@@ -24,11 +29,12 @@ struct BezierOptions {
     std::string points, points_file;
     double eval = 0, split = 0, triangle = 0, curvature = 0;
     int derivative = 0, times = 1;
-    std::string method = "combined", subcurve;
+    std::string method = "combined", subcurve, render, size = "400x400";
+    double construction = 0;
     CLI::Option *o_points = nullptr, *o_file = nullptr, *o_eval = nullptr, *o_derivative = nullptr, *o_elevate = nullptr,
                 *o_times = nullptr, *o_reduce = nullptr, *o_method = nullptr, *o_split = nullptr, *o_subcurve = nullptr,
                 *o_triangle = nullptr, *o_bounds = nullptr, *o_power = nullptr, *o_curvature = nullptr,
-                *o_interpolate = nullptr;
+                *o_interpolate = nullptr, *o_render = nullptr, *o_size = nullptr, *o_construction = nullptr;
 };
 
 template <CurvePoint P> P to_point(const Point3& p) {
@@ -62,6 +68,19 @@ template <CurvePoint P> void run(const BezierOptions& o, const PointList& input)
     for (const Point3& p : input.points) pts.push_back(to_point<P>(p));
     const Bezier<P> curve(std::move(pts));
 
+    if (o.o_render->count()) {
+        if constexpr (std::same_as<P, Point>) {
+            FigureOptions fo;
+            parse_size_option("--size", o.size, fo.width, fo.height);
+            fo.margin = std::min(24.0, std::min(fo.width, fo.height) / 10.0);
+            std::optional<double> t;
+            if (o.o_construction->count()) t = o.construction;
+            write_png(draw_bezier_figure(curve, fo, t).image, o.render);
+        } else {
+            throw UsageError("--render draws 2-D curves only (got 3-D points)");
+        }
+        return;
+    }
     if (o.o_eval->count()) {
         print(o.o_derivative->count() ? curve.derivative(o.derivative, o.eval) : curve.eval(o.eval));
     } else if (o.o_derivative->count()) {
@@ -134,17 +153,23 @@ void register_bezier(CLI::App& app) {
     o->o_power = sub->add_flag("--power")->description("Print the power-form coefficients a_0..a_n of P(t) = sum a_k t^k");
     o->o_curvature = sub->add_option("--curvature", o->curvature, "Print the curvature at T (signed in 2-D; inf at a cusp)");
     o->o_interpolate = sub->add_flag("--interpolate")->description("Treat 4 points as Q0..Q3 and print the cubic through them at t = 0, 1/3, 2/3, 1");
+    o->o_render = sub->add_option("--render", o->render, "Draw the curve, its control polygon and points into a PNG file");
+    o->o_size = sub->add_option("--size", o->size, "With --render: canvas WxH in pixels (default 400x400)");
+    o->o_construction = sub->add_option("--construction", o->construction,
+                                        "With --render: draw the de Casteljau construction at T (levels coloured, P(T) red)");
     sub->callback([o]() {
         const int sources = static_cast<int>(o->o_points->count() > 0) + static_cast<int>(o->o_file->count() > 0);
         if (sources != 1) throw UsageError("bezier: give exactly one of --points or --points-file");
         int actions = 0;
         for (CLI::Option* a : {o->o_eval, o->o_elevate, o->o_reduce, o->o_split, o->o_subcurve, o->o_triangle, o->o_bounds,
-                               o->o_power, o->o_curvature, o->o_interpolate})
+                               o->o_power, o->o_curvature, o->o_interpolate, o->o_render})
             actions += a->count() > 0;
         if (o->o_derivative->count() && !o->o_eval->count()) ++actions;
         if (actions != 1)
             throw UsageError("bezier: choose exactly one action: --eval, --derivative, --elevate, --reduce, --split, "
-                             "--subcurve, --triangle, --bounds, --power, --curvature or --interpolate");
+                             "--subcurve, --triangle, --bounds, --power, --curvature, --interpolate or --render");
+        if ((o->o_size->count() || o->o_construction->count()) && !o->o_render->count())
+            throw UsageError("bezier: --size and --construction apply to --render only");
         if (o->o_times->count() && !o->o_elevate->count()) throw UsageError("bezier: --times applies to --elevate only");
         if (o->o_method->count() && !o->o_reduce->count()) throw UsageError("bezier: --method applies to --reduce only");
         const PointList pts = o->o_points->count() ? parse_points_option("--points", o->points)

@@ -4,17 +4,21 @@
 //   casteljau spline --kind bspline --points "0,0 10,20 30,20 40,0" --degree 2 --to-bezier
 //   casteljau spline --kind catmull-rom --points "0,0 10,10 20,0 30,10" --to-bezier
 //   casteljau spline --kind nurbs --points-file arc.json --eval 0.5
+//   casteljau spline --kind bspline --points "..." --render s.png --basis basis.png
 //
 // Pieces print one after another, separated by an empty line; NURBS pieces print "x y w" (the
 // weight last). Parameters: B-splines and NURBS use their knot domain; interpolating splines use
 // T in [0, pieces], piece floor(T) at local parameter T - floor(T).
 // Output format: curve_args.hpp. Exit status 1: bad data; 2: bad usage.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
+#include "casteljau/curve_draw.hpp"
 #include "casteljau/nurbs.hpp"
+#include "casteljau/png.hpp"
 #include "casteljau/spline.hpp"
 #include "cli/cli.hpp"
 #include "cli/curve_args.hpp"
@@ -25,14 +29,30 @@ namespace {
 
 struct SplineOptions {
     std::string kind, points, points_file, knots, knot_type = "clamped", weights, tangents, ends = "duplicate",
-                                                                          param = "uniform";
+                                                                          param = "uniform", render, basis,
+                size = "400x400";
     int degree = 3, derivative = 0;
     double tension = 0, continuity = 0, bias = 0, eval = 0, basis_at = 0;
     CLI::Option *o_points = nullptr, *o_file = nullptr, *o_degree = nullptr, *o_knots = nullptr, *o_knot_type = nullptr,
                 *o_weights = nullptr, *o_tangents = nullptr, *o_tension = nullptr, *o_continuity = nullptr,
                 *o_bias = nullptr, *o_ends = nullptr, *o_param = nullptr, *o_to_bezier = nullptr, *o_eval = nullptr,
-                *o_derivative = nullptr, *o_basis_at = nullptr;
+                *o_derivative = nullptr, *o_basis_at = nullptr, *o_render = nullptr, *o_basis = nullptr, *o_size = nullptr;
 };
+
+FigureOptions figure_options(const SplineOptions& o) {
+    FigureOptions fo;
+    parse_size_option("--size", o.size, fo.width, fo.height);
+    fo.margin = std::min(24.0, std::min(fo.width, fo.height) / 10.0);
+    return fo;
+}
+
+// --render / --basis for 2-D input (3-D is rejected before this is called).
+void render_pictures(const SplineOptions& o, const Path& curve, std::span<const Point> polygon,
+                     std::span<const Point> knot_points, int degree, std::span<const double> knots) {
+    const FigureOptions fo = figure_options(o);
+    if (o.o_render->count()) write_png(draw_spline_figure(curve, polygon, knot_points, fo).image, o.render);
+    if (o.o_basis->count()) write_png(draw_basis_figure(degree, knots, fo).image, o.basis);
+}
 
 template <CurvePoint P> P to_point(const Point3& p) {
     if constexpr (std::same_as<P, Point>) return {p.x, p.y};
@@ -77,7 +97,14 @@ template <CurvePoint P> void run(const SplineOptions& o, const CurveFile& file) 
         }
         if (o.kind == "bspline") {
             const BSpline<P> s(degree, ctrl, knots);
-            if (o.o_to_bezier->count()) {
+            if (o.o_render->count() || o.o_basis->count()) {
+                if constexpr (std::same_as<P, Point>) {
+                    std::vector<Point> kp;
+                    for (double u : s.breakpoints()) kp.push_back(s.eval(u));
+                    const auto pieces = s.to_bezier();
+                    render_pictures(o, to_path(pieces), s.points(), kp, degree, s.knots());
+                }
+            } else if (o.o_to_bezier->count()) {
                 const auto pieces = s.to_bezier();
                 for (std::size_t j = 0; j < pieces.size(); ++j) {
                     if (j) out << '\n';
@@ -91,7 +118,13 @@ template <CurvePoint P> void run(const SplineOptions& o, const CurveFile& file) 
         } else {
             if (weights.empty()) weights.assign(ctrl.size(), 1.0);
             const Nurbs<P> s(degree, ctrl, weights, knots);
-            if (o.o_to_bezier->count()) {
+            if (o.o_render->count() || o.o_basis->count()) {
+                if constexpr (std::same_as<P, Point>) {
+                    std::vector<Point> kp;
+                    for (double u : s.breakpoints()) kp.push_back(s.eval(u));
+                    render_pictures(o, to_path(s), s.points(), kp, degree, s.knots());
+                }
+            } else if (o.o_to_bezier->count()) {
                 const auto pieces = s.to_bezier();
                 for (std::size_t j = 0; j < pieces.size(); ++j) {
                     if (j) out << '\n';
@@ -132,7 +165,18 @@ template <CurvePoint P> void run(const SplineOptions& o, const CurveFile& file) 
                                                                  : Parametrization::Uniform;
         pieces = natural_spline<P>(pts, param);
     }
-    if (o.o_to_bezier->count()) {
+    if (o.o_render->count()) {
+        if constexpr (std::same_as<P, Point>) {
+            std::vector<Point> polygon, joins;
+            for (const auto& b : pieces) {
+                const auto bp = b.points();
+                polygon.insert(polygon.end(), bp.begin() + (polygon.empty() ? 0 : 1), bp.end());
+                if (joins.empty()) joins.push_back(b.front());
+                joins.push_back(b.back());
+            }
+            render_pictures(o, to_path(pieces), polygon, joins, 0, {});
+        }
+    } else if (o.o_to_bezier->count()) {
         for (std::size_t j = 0; j < pieces.size(); ++j) {
             if (j) out << '\n';
             for (const P& p : pieces[j].points()) line(p);
@@ -180,12 +224,19 @@ void register_spline(CLI::App& app) {
     o->o_eval = sub->add_option("--eval", o->eval, "Print the point at T (or the K-th derivative with --derivative K)");
     o->o_derivative = sub->add_option("--derivative", o->derivative, "Derivative order K for --eval")->check(CLI::NonNegativeNumber);
     o->o_basis_at = sub->add_option("--basis-at", o->basis_at, "bspline/nurbs: print the basis functions N_i(T), one per line");
+    o->o_render = sub->add_option("--render", o->render,
+                                  "Draw the curve, its control polygon (dashed) and its knots (orange) into a PNG file");
+    o->o_basis = sub->add_option("--basis", o->basis, "bspline/nurbs: plot the basis functions N_i(t) over the domain into a PNG file");
+    o->o_size = sub->add_option("--size", o->size, "With --render/--basis: canvas WxH in pixels (default 400x400)");
     sub->callback([o]() {
         const int sources = static_cast<int>(o->o_points->count() > 0) + static_cast<int>(o->o_file->count() > 0);
         if (sources != 1) throw UsageError("spline: give exactly one of --points or --points-file");
+        const bool pictures = o->o_render->count() > 0 || o->o_basis->count() > 0;
         const int actions = static_cast<int>(o->o_to_bezier->count() > 0) + static_cast<int>(o->o_eval->count() > 0) +
-                            static_cast<int>(o->o_basis_at->count() > 0);
-        if (actions != 1) throw UsageError("spline: choose exactly one action: --to-bezier, --eval or --basis-at");
+                            static_cast<int>(o->o_basis_at->count() > 0) + static_cast<int>(pictures);
+        if (actions != 1)
+            throw UsageError("spline: choose exactly one action: --to-bezier, --eval, --basis-at or --render/--basis");
+        if (o->o_size->count() && !pictures) throw UsageError("spline: --size applies to --render and --basis only");
         if (o->o_derivative->count() && !o->o_eval->count()) throw UsageError("spline: --derivative needs --eval");
         const bool knotted = is_knot_kind(o->kind);
         auto only = [&](CLI::Option* opt, bool allowed, const char* kinds) {
@@ -196,6 +247,7 @@ void register_spline(CLI::App& app) {
         only(o->o_knots, knotted, "bspline or nurbs");
         only(o->o_knot_type, knotted, "bspline or nurbs");
         only(o->o_basis_at, knotted, "bspline or nurbs");
+        only(o->o_basis, knotted, "bspline or nurbs");
         only(o->o_weights, o->kind == "nurbs", "nurbs");
         only(o->o_tangents, o->kind == "hermite", "hermite");
         only(o->o_tension, o->kind == "cardinal" || o->kind == "kb", "cardinal or kb");
@@ -207,6 +259,7 @@ void register_spline(CLI::App& app) {
         CurveFile file;
         if (o->o_points->count()) file.points = parse_points_option("--points", o->points);
         else file = read_curve_file(o->points_file);
+        if (pictures && file.points.dimension == 3) throw UsageError("spline: --render and --basis draw 2-D curves only");
         if (file.points.dimension == 3) run<Point3>(*o, file);
         else run<Point>(*o, file);
     });

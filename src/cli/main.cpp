@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     cli::register_svg(app);
     cli::register_bezier(app);
     cli::register_spline(app);
+    cli::register_surface(app);
     cli::register_text(app);
     try {
         app.parse(argc, argv);
