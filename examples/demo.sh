@@ -28,4 +28,14 @@ run path "M30 160 L100 40 L170 160" --size 200x200 --fill none --background whit
 run svg "$here/data/shapes.svg" -o "$out/shapes.png"
 run svg "$here/data/shapes.svg" --scale 3 -o "$out/shapes-3x.png"
 
+# Text with the shipped fonts (fonts/).
+fonts="$root/fonts"
+run text "casteljau: Bézier curves → exact pixels (ﬁ, AV, To)" --font "$fonts/DejaVuSans.ttf" --size 36 \
+  -o "$out/text-latin.png"
+run text "Linux Libertine (CFF outlines): The quick brown fox jumps over the lazy dog; ffi, Th, 1234" \
+  --font "$fonts/LinLibertine_R.otf" --size 28 --width 520 --align center --color "#3b2f2f" \
+  --background "#fbf7ee" -o "$out/text-cff-paragraph.png"
+run text "مرحبا بالعالم — hello" --font "$fonts/NotoSansArabic-Regular.ttf" --font "$fonts/DejaVuSans.ttf" \
+  --size 40 -o "$out/text-arabic.png"
+
 echo "casteljau demo: wrote $n images to $out"

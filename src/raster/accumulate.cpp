@@ -17,7 +17,8 @@
 //     winding number one higher; the middle region is on the other piece's side of each piece, so
 //     the outer regions agree exactly when each piece's midpoint lies on the same-signed side of
 //     the other piece.
-// A third piece continuing such a polyline is accepted when it does not meet the first one, and
+// Further pieces continuing such a polyline are accepted while the polyline stays monotone in x or
+// in y (then it cannot cross itself; a third piece is also accepted when it misses the first), and
 // a two-piece bend plus one unrelated piece when they do not meet and the outer regions agree.
 // Anything more, or any other pair, marks the cell; every edge touching a marked cell is logged
 // for the exact recomputation (exact_cell.cpp). A piece that ends inside a cell always brings its
@@ -102,6 +103,21 @@ bool harmless_bend_and_piece(const Edge& u, const Edge& w, const Edge& q, int co
     return q_on_negative == (so < 0);
 }
 
+// Direction bits of an edge for the monotonicity test: +x, -x, +y, -y.
+inline std::uint64_t dir_bits(const Edge& e) {
+    std::uint64_t b = 0;
+    if (e.x1 > e.x0) b |= 1;
+    if (e.x1 < e.x0) b |= 2;
+    if (e.y1 > e.y0) b |= 4;
+    if (e.y1 < e.y0) b |= 8;
+    return b << kTagDirShift;
+}
+// A polyline whose pieces all go the same way in x, or all the same way in y, cannot cross itself.
+inline bool monotone(std::uint64_t dirs) {
+    const std::uint64_t d = dirs >> kTagDirShift;
+    return (d & 3) != 3 || (d & 12) != 12;
+}
+
 inline void log_edge(Strip& s, std::size_t cell, std::uint64_t id_plus_one) {
     if (id_plus_one) s.log->push_back({static_cast<std::uint32_t>(cell), static_cast<std::uint32_t>(id_plus_one - 1)});
 }
@@ -124,8 +140,28 @@ inline void tag_cell(Strip& s, std::uint64_t* tags, std::size_t base, int k, int
     const std::int64_t other = static_cast<std::int64_t>(last) - 1;
     const bool chained = (first_cell && e.prev == other) || (last_cell && e.next == other);
     if (count == 1) {
-        if (chained || harmless_pair(s.edges[other], e, k, row)) {
-            tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(2) << kTagCountShift) | (chained ? kTagChain : 0);
+        if (chained) {
+            const std::uint64_t dirs = dir_bits(s.edges[other]) | dir_bits(e);
+            tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(2) << kTagCountShift) | kTagChain | dirs;
+            return;
+        }
+        if (harmless_pair(s.edges[other], e, k, row)) {
+            tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(2) << kTagCountShift);
+            return;
+        }
+    } else if (chained && (t & kTagChain)) {
+        // One more piece of the polyline through the cell: still one simple curve while it stays
+        // monotone in x or y; with three pieces, also when the new one misses the first.
+        const std::uint64_t dirs = (t & kTagDirMask) | dir_bits(e);
+        bool ok = monotone(dirs);
+        if (!ok && count == 2) {
+            const std::uint64_t first = (t >> kTagPrevShift) & kTagIdMask;
+            double ax, ay, bx, by, cx, cy, dx, dy;
+            ok = !cell_portion(s.edges[first - 1], k, row, ax, ay, bx, by) || !cell_portion(e, k, row, cx, cy, dx, dy) ||
+                 !segments_meet(ax, ay, bx, by, cx, cy, dx, dy);
+        }
+        if (ok) {
+            tags[k] = me | (last << kTagPrevShift) | (std::uint64_t(3) << kTagCountShift) | kTagChain | dirs;
             return;
         }
     } else if (count == 2) {
@@ -133,13 +169,7 @@ inline void tag_cell(Strip& s, std::uint64_t* tags, std::size_t base, int k, int
         const Edge& f = s.edges[first - 1];
         const Edge& l = s.edges[other];
         bool ok = false;
-        if (chained && (t & kTagChain)) {
-            // A third piece of one polyline through the cell: still one simple curve unless it
-            // meets the first piece (the second is its neighbour).
-            double ax, ay, bx, by, cx, cy, dx, dy;
-            ok = !cell_portion(f, k, row, ax, ay, bx, by) || !cell_portion(e, k, row, cx, cy, dx, dy) ||
-                 !segments_meet(ax, ay, bx, by, cx, cy, dx, dy);
-        } else if (chained) {
+        if (chained) {
             // The previous pair was {f, l} with l unrelated to f; e bends l into a polyline.
             ok = e.prev == other ? harmless_bend_and_piece(l, e, f, k, row) : harmless_bend_and_piece(e, l, f, k, row);
         } else if (t & kTagChain) {
@@ -150,7 +180,7 @@ inline void tag_cell(Strip& s, std::uint64_t* tags, std::size_t base, int k, int
         if (ok) {
             // The tag holds two ids; keep the pair whose dropped member is a neighbour along the
             // contour of a kept one, so that marking can recover it (see below).
-            const std::uint64_t keep = (chained && !(t & kTagChain)) ? first : last;
+            const std::uint64_t keep = chained ? first : last;
             tags[k] = me | (keep << kTagPrevShift) | (std::uint64_t(3) << kTagCountShift);
             return;
         }
@@ -161,11 +191,20 @@ inline void tag_cell(Strip& s, std::uint64_t* tags, std::size_t base, int k, int
     log_edge(s, base + k, (t >> kTagPrevShift) & kTagIdMask);
     log_edge(s, base + k, me);
     if (count == 3) {
-        // A third piece was dropped from the tag: it is a contour neighbour of a kept one.
+        // Pieces were dropped from the tag: each is connected to a kept one along its contour
+        // through pieces that all touch this cell. Walk both ways from the kept ids.
+        const double cx = k, cy = row;
         for (const std::uint64_t kept : {last, (t >> kTagPrevShift) & kTagIdMask}) {
-            const Edge& n = s.edges[kept - 1];
-            if (n.prev >= 0) log_edge(s, base + k, static_cast<std::uint64_t>(n.prev) + 1);
-            if (n.next >= 0) log_edge(s, base + k, static_cast<std::uint64_t>(n.next) + 1);
+            for (int way = 0; way < 2; ++way) {
+                std::int32_t n = way == 0 ? s.edges[kept - 1].prev : s.edges[kept - 1].next;
+                const std::int32_t start = static_cast<std::int32_t>(kept - 1);
+                for (int steps = 0; n >= 0 && n != start && steps < 4096; ++steps) {  // a contour inside the cell is a cycle
+                    double ax, ay, bx, by;
+                    if (!cell_portion(s.edges[n], cx, cy, ax, ay, bx, by)) break;
+                    log_edge(s, base + k, static_cast<std::uint64_t>(n) + 1);
+                    n = way == 0 ? s.edges[n].prev : s.edges[n].next;
+                }
+            }
         }
     }
 }

@@ -31,10 +31,6 @@ inline double orient(double ax, double ay, double bx, double by, double px, doub
     return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
 }
 
-struct Piece {
-    double ax, ay, bx, by;  // in the edge's direction
-};
-
 // Reference points inside the unit cell, tried in order until one is in general position.
 constexpr double kRef[4][2] = {{0.5012345, 0.4987654}, {0.3141593, 0.7182818}, {0.6931472, 0.2718282},
                                {0.1414214, 0.8660254}};
@@ -51,7 +47,7 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
     sc.breaks.push_back(rb);
     // Pieces inside the closed cell; `inside` keeps them as (ya, yb, xa, xb, dir) for the slabs
     // (top to bottom) and `pieces` in the edge's direction for the crossing counts.
-    thread_local std::vector<Piece> pieces;
+    auto& pieces = sc.pieces;
     pieces.clear();
     for (std::uint32_t id : ids) {
         double ax, ay, bx, by;
@@ -86,13 +82,13 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         rx = cx + ref[0];
         ryy = ry + ref[1];
         bool ok = true;
-        for (const Piece& p : pieces)
+        for (const ExactScratch::Piece& p : pieces)
             if (orient(p.ax, p.ay, p.bx, p.by, rx, ryy) == 0) { ok = false; break; }
         if (ok) break;
     }
     auto winding_offset = [&](double px, double py) {
         int l = 0;
-        for (const Piece& p : pieces) {
+        for (const ExactScratch::Piece& p : pieces) {
             const double o1 = orient(p.ax, p.ay, p.bx, p.by, rx, ryy);
             const double o2 = orient(p.ax, p.ay, p.bx, p.by, px, py);
             if ((o1 < 0) == (o2 < 0) || o2 == 0) continue;
@@ -119,17 +115,25 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         }
         std::sort(sc.active.begin(), sc.active.end(),
                   [](const ExactScratch::Cross& u, const ExactScratch::Cross& v) { return u.xm < v.xm; });
+        // The leftmost region's offset by crossings from r; moving right across a piece changes
+        // w by the piece's direction (down: +1), the accumulation's own convention.
         double px0 = cx, px1 = cx, pxm = cx;
         const std::size_t na = sc.active.size();
+        int l = 0;
+        bool known = false;  // l is computed by crossings at the first region with an area
         for (std::size_t i = 0; i <= na; ++i) {
             const double nx0 = i < na ? sc.active[i].x0 : cr, nx1 = i < na ? sc.active[i].x1 : cr;
             const double nxm = i < na ? sc.active[i].xm : cr;
             const double area = h * 0.5 * ((nx0 + nx1) - (px0 + px1));
             if (area > 0 && nxm > pxm) {
-                const int l = winding_offset(0.5 * (pxm + nxm), ym);
+                if (!known) {
+                    l = winding_offset(0.5 * (pxm + nxm), ym);
+                    known = true;
+                }
                 sc.regions.push_back({l, area});
                 sum_l += l * area;
             }
+            if (i < na && known) l += sc.active[i].dir;
             px0 = nx0;
             px1 = nx1;
             pxm = nxm;

@@ -22,12 +22,16 @@ struct Edge {
     std::int32_t prev, next;
 };
 
-// Tag word per cell: the last two edges that touched it, how many edges touched it (saturating at
-// 3) and whether it is marked for exact recomputation.
-inline constexpr std::uint64_t kTagIdMask = (std::uint64_t(1) << 29) - 1;
-inline constexpr int kTagPrevShift = 29;
-inline constexpr int kTagCountShift = 58;
-inline constexpr std::uint64_t kTagChain = std::uint64_t(1) << 62;   // the two pieces are one polyline
+// Tag word per cell: the last two edges that touched it (id + 1, 27 bits each), how many pieces
+// touched it (saturating at 3), the directions seen along a polyline through it (to know whether
+// the polyline is monotone in x or in y), whether the pieces form one polyline, and whether the
+// cell is marked for exact recomputation.
+inline constexpr std::uint64_t kTagIdMask = (std::uint64_t(1) << 27) - 1;
+inline constexpr int kTagPrevShift = 27;
+inline constexpr int kTagCountShift = 54;
+inline constexpr int kTagDirShift = 56;  // 4 bits: +x, -x, +y, -y seen
+inline constexpr std::uint64_t kTagDirMask = std::uint64_t(15) << kTagDirShift;
+inline constexpr std::uint64_t kTagChain = std::uint64_t(1) << 62;   // the pieces are one polyline
 inline constexpr std::uint64_t kTagMarked = std::uint64_t(1) << 63;
 
 // (cell, edge) pairs recorded for marked cells: every edge that touches a marked cell is logged.
@@ -59,6 +63,8 @@ void accumulate_edge(const Edge& e, std::uint32_t id, Strip& s);
 bool cell_portion(const Edge& e, double cx, double ry, double& ax, double& ay, double& bx, double& by);
 
 struct ExactScratch {
+    struct Piece { double ax, ay, bx, by; };  // in the edge's direction
+    std::vector<Piece> pieces;
     std::vector<std::uint32_t> ids;
     std::vector<double> breaks;
     struct Part { double ya, yb, xa, xb; int dir; };
