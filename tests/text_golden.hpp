@@ -13,49 +13,15 @@
 #include <string>
 
 #include "casteljau/png.hpp"
+#include "golden.hpp"
 #include "text_support.hpp"
 
 namespace text_test {
 
 inline void check_golden(const std::string& name, const casteljau::Pixmap& actual, int max_tol, double mean_tol) {
-    namespace fs = std::filesystem;
-    const fs::path golden = fs::path(CASTELJAU_SOURCE_DIR) / "golden" / "text" / (name + ".png");
-    const char* update = std::getenv("CASTELJAU_UPDATE_GOLDEN");
-    if (update && std::string(update) == "1") {
-        fs::create_directories(golden.parent_path());
-        casteljau::write_png(actual, golden.string());
-        WARN("golden " << golden.string() << " rewritten");
-        return;
-    }
-    INFO("golden " << golden.string());
-    REQUIRE(fs::exists(golden));  // create it with CASTELJAU_UPDATE_GOLDEN=1
-    // Compare what a PNG round trip keeps (straight alpha): the golden's pixels vs ours encoded.
-    const casteljau::Pixmap expected = casteljau::read_png(golden.string());
-    const casteljau::Pixmap ours = casteljau::decode_png(casteljau::encode_png(actual));
-    const DiffStats d = compare_pixmaps(ours, expected);
-    INFO("size " << ours.width() << "x" << ours.height() << " vs golden " << expected.width() << "x" << expected.height()
-                 << "; max " << d.max << "/255 at (" << d.max_x << ", " << d.max_y << "), mean " << d.mean << "/255");
-    const bool ok = d.max <= max_tol && d.mean <= mean_tol;
-    if (!ok) {
-        const fs::path out = fs::path(CASTELJAU_BINARY_DIR) / "golden-out" / "text";
-        fs::create_directories(out);
-        casteljau::write_png(actual, (out / (name + ".actual.png")).string());
-        if (expected.width() == ours.width() && expected.height() == ours.height()) {
-            casteljau::Pixmap diff(ours.width(), ours.height());
-            for (int y = 0; y < ours.height(); ++y)
-                for (int x = 0; x < ours.width(); ++x) {
-                    int m = 0;
-                    for (int c = 0; c < 4; ++c)
-                        m = std::max(m, std::abs(static_cast<int>(ours.row(y)[4 * x + c]) - static_cast<int>(expected.row(y)[4 * x + c])));
-                    const std::uint8_t v = static_cast<std::uint8_t>(std::min(255, m * 8));
-                    diff.set_pixel(x, y, {v, 0, 0, 255});
-                }
-            casteljau::write_png(diff, (out / (name + ".diff.png")).string());
-        }
-        UNSCOPED_INFO("wrote " << (out / (name + ".actual.png")).string());
-    }
-    CHECK(d.max <= max_tol);
-    CHECK(d.mean <= mean_tol);
+    // The shared harness (tests/golden.hpp); the caller compared with FreeType first.
+    casteljau::golden::check_golden("text/" + name, actual, {max_tol, mean_tol},
+                                    {true, "text checked against FreeType (supersampled) before this call"});
 }
 
 }  // namespace text_test
