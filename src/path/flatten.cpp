@@ -70,17 +70,26 @@ struct PolylineSink {
 
 }  // namespace
 
-void check_flatten_input(const Path& path, const Affine& m, double tolerance) {
+Rect check_flatten_input(const Path& path, const Affine& m, double tolerance) {
     if (!m.is_finite()) throw Error(ErrorKind::InvalidData, "transform has a non-finite entry");
     if (!(tolerance > 0) || !std::isfinite(tolerance))
         throw Error(ErrorKind::InvalidArgument, "flattening tolerance must be a positive number of pixels");
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     for (Point p : path.points()) {
-        if (!p.is_finite()) throw Error(ErrorKind::InvalidData, "path has a non-finite coordinate (NaN or infinity)");
-        // Transformed points must stay finite too (1e300 scaled by 1e10 overflows).
-        if (!m.apply(p).is_finite()) throw Error(ErrorKind::InvalidData, "path coordinate overflows after the transform");
+        const Point q = m.apply(p);
+        if (!(std::isfinite(q.x) && std::isfinite(q.y))) {
+            if (!p.is_finite()) throw Error(ErrorKind::InvalidData, "path has a non-finite coordinate (NaN or infinity)");
+            // 1e300 scaled by 1e10 overflows.
+            throw Error(ErrorKind::InvalidData, "path coordinate overflows after the transform");
+        }
+        x0 = q.x < x0 ? q.x : x0;
+        x1 = q.x > x1 ? q.x : x1;
+        y0 = q.y < y0 ? q.y : y0;
+        y1 = q.y > y1 ? q.y : y1;
     }
     for (double w : path.weights())
         if (!std::isfinite(w)) throw Error(ErrorKind::InvalidData, "path has a non-finite conic weight");
+    return {x0, y0, x1, y1};
 }
 
 void flatten_culled(const Path& path, const Affine& m, double tolerance, const Rect* cull, Polyline& out) {

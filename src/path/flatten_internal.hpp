@@ -128,8 +128,9 @@ struct Flattener {
 }  // namespace flatten_detail
 
 // Validates a flatten call: finite transform, points and weights (also after the transform),
-// a positive tolerance. Throws Error.
-void check_flatten_input(const Path& path, const Affine& m, double tolerance);
+// a positive tolerance; throws Error. Returns the bounds of the transformed points (control
+// points included; empty with infinite corners for an empty path).
+Rect check_flatten_input(const Path& path, const Affine& m, double tolerance);
 
 // Flattens `path` mapped by `m` into `sink`, which receives begin(p) for each contour start,
 // point(p) for each following polyline vertex, mark_closed() for an explicit close and end().

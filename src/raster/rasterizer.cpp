@@ -43,7 +43,7 @@ struct EdgeSink {
         start = cur = p;
         open = true;
     }
-    void point(Point p) {
+    [[gnu::always_inline]] inline void point(Point p) {
         if constexpr (kClip) add_clipped(cur, p);
         else push(cur.x, cur.y, p.x, p.y);
         cur = p;
@@ -64,7 +64,7 @@ struct EdgeSink {
         open = false;
     }
 
-    void push(double x0, double y0, double x1, double y1) {
+    [[gnu::always_inline]] inline void push(double x0, double y0, double x1, double y1) {
         if (y0 == y1 && x0 == x1) return;
         Edge e{x0, y0, x1, y1, -1, -1};
         if (edges.size() > contour_first) {
@@ -153,10 +153,7 @@ void check_clip(const IRect& clip) {
 
 // Transformed control-point bounds; throws for non-finite input (flatten's checks).
 Rect transformed_bounds(const Path& path, const Affine& m, double tolerance) {
-    check_flatten_input(path, m, tolerance);
-    Rect b{INFINITY, INFINITY, -INFINITY, -INFINITY};
-    for (Point p : path.points()) b.include(m.apply(p));
-    return b;
+    return check_flatten_input(path, m, tolerance);
 }
 
 }  // namespace
@@ -198,6 +195,7 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opts
         const int ox = static_cast<int>(std::floor(b.x0)), oy = static_cast<int>(std::floor(b.y0));
         const int bw = std::max(1, static_cast<int>(std::ceil(b.x1)) - ox);
         const int bh = std::max(1, static_cast<int>(std::ceil(b.y1)) - oy);
+        edges.reserve(path.points().size() * 4);
         EdgeSink<false> es{edges};
         flatten_into(path, Affine::translate(-ox, -oy) * m, opts.tolerance, nullptr, es);
         es.end();
