@@ -1,0 +1,91 @@
+// The SVG reader against the resvg conformance corpus in ../shared (skipped when it is absent).
+//
+// Every gradient-free file of the manifest is rendered at the corpus's size rule (300 px wide for
+// tests/, scale 1 for extra/) and compared with resvg's reference PNG by the corpus README's rule A:
+// a pixel is bad when a premultiplied channel differs by more than 32; a file passes with at most
+// 0.5% bad pixels. Unsupported features (use, nested svg, ...) fail today, so the test is a ratchet:
+// it requires at least kMinPassing files to pass and lists the failures, so any regression fails.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "casteljau/canvas.hpp"
+#include "casteljau/error.hpp"
+#include "casteljau/png.hpp"
+#include "casteljau/svg.hpp"
+
+using namespace casteljau;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMinPassing = 290;  // of 349; 292 pass at the time of writing
+
+fs::path corpus_dir() {
+    if (const char* env = std::getenv("CASTELJAU_SHARED_DIR"); env != nullptr && *env != '\0')
+        return fs::path(env) / "conformance" / "resvg";
+    return fs::path(CASTELJAU_SOURCE_DIR) / ".." / "shared" / "conformance" / "resvg";
+}
+
+}  // namespace
+
+TEST_CASE("svg: resvg conformance corpus, gradient-free files, rule A", "[svg][resvg]") {
+    const fs::path root = corpus_dir();
+    if (!fs::exists(root / "manifest.tsv")) {
+        WARN("SKIPPED: the resvg corpus is not at " << root.string() << " (../shared absent; set CASTELJAU_SHARED_DIR)");
+        return;
+    }
+    std::ifstream manifest(root / "manifest.tsv");
+    std::string line;
+    std::getline(manifest, line);  // header
+    int total = 0, passing = 0;
+    std::string failures;
+    while (std::getline(manifest, line)) {
+        std::stringstream ss(line);
+        std::string svg, png, category, gradients;
+        std::getline(ss, svg, '\t');
+        std::getline(ss, png, '\t');
+        std::getline(ss, category, '\t');
+        std::getline(ss, gradients, '\t');
+        if (gradients == "yes") continue;
+        ++total;
+        const Pixmap ref = read_png((root / png).string());
+        std::string why;
+        try {
+            const SvgDocument doc = SvgDocument::load((root / svg).string());
+            const bool extra = svg.rfind("extra/", 0) == 0;
+            const int W = extra ? doc.width() : 300;
+            const int H = extra ? doc.height() : static_cast<int>(std::ceil(300.0 * doc.height() / doc.width()));
+            if (W != ref.width() || H != ref.height()) {
+                why = "size " + std::to_string(W) + "x" + std::to_string(H);
+            } else {
+                Pixmap pm(W, H);
+                Canvas canvas(pm);
+                doc.render(canvas, Affine::scale(static_cast<double>(W) / doc.width(), static_cast<double>(H) / doc.height()));
+                int bad = 0;
+                for (int y = 0; y < H; ++y)
+                    for (int x = 0; x < W; ++x) {
+                        const PremulPixel a = pm.pixel(x, y), b = ref.pixel(x, y);
+                        const int d = std::max(std::max(std::abs(a.r - b.r), std::abs(a.g - b.g)),
+                                               std::max(std::abs(a.b - b.b), std::abs(a.a - b.a)));
+                        bad += d > 32;
+                    }
+                if (bad * 200 <= W * H) ++passing;
+                else why = std::to_string(bad) + " bad pixels";
+            }
+        } catch (const Error& e) {
+            why = std::string("error: ") + e.what();
+        }
+        if (!why.empty()) failures += "\n  " + svg + ": " + why;
+    }
+    INFO("passing " << passing << " of " << total << "; failing:" << failures);
+    CHECK(total == 349);
+    CHECK(passing >= kMinPassing);
+    WARN("resvg corpus (rule A, gradient-free): " << passing << " of " << total << " pass");
+}
