@@ -25,8 +25,6 @@ run path "M20 170 C 60 20 140 20 180 170" --size 200x200 --fill none --backgroun
   --stroke-width 14 --line-cap round --dash "30 22" -o "$out/stroke-dashed.png"
 run path "M30 160 L100 40 L170 160" --size 200x200 --fill none --background white --stroke teal --stroke-width 24 \
   --line-join round -o "$out/stroke-join.png"
-run svg "$here/data/shapes.svg" -o "$out/shapes.png"
-run svg "$here/data/shapes.svg" --scale 3 -o "$out/shapes-3x.png"
 
 # Text with the shipped fonts (fonts/).
 fonts="$root/fonts"
@@ -53,5 +51,9 @@ if [ -x "$build/examples/example_clock" ]; then
   "$build/examples/example_clock" 10:08:30 "$out/clock.png" > /dev/null
   n=$((n + 1))
 fi
+
+# SVG drawings.
+run svg "$here/data/shapes.svg" -o "$out/shapes.png"
+run svg "$here/data/shapes.svg" --scale 3 -o "$out/shapes-3x.png"
 
 echo "casteljau demo: wrote $n images to $out"
