@@ -6,6 +6,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/flatten.hpp"
+#include "casteljau/raster.hpp"
 
 using namespace casteljau;
 
@@ -110,4 +111,31 @@ TEST_CASE("flatten: non-finite input is an error", "[flatten]") {
     q.move_to(0, 0).line_to(1e300, 1);
     CHECK_THROWS_AS(flatten(q, Affine::scale(1e300), 0.05, pl), Error);  // overflows after the transform
     CHECK_THROWS_AS(flatten(q, Affine{}, 0.0, pl), Error);
+}
+
+TEST_CASE("flatten and fill: more than limits::kMaxFlattenedSegments segments is Error(Limit)", "[flatten][limits]") {
+    // Each of these cubics needs the full subdivision depth (2^16 pieces) at this tolerance, so
+    // 2^23 / 2^16 = 128 of them reach the limit and 129 pass it.
+    Path p;
+    p.move_to(0, 0);
+    for (int i = 0; i < 129; ++i) p.cubic_to({1000, 1000}, {-1000, 1000}, {0, 0});
+    Polyline pl;
+    try {
+        flatten(p, Affine{}, 1e-9, pl);
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::Limit);
+    }
+    pl.clear();
+    pl.points.shrink_to_fit();
+    // The rasterizer builds its own edges with the same limit.
+    casteljau::Rasterizer r;
+    FillOptions o;
+    o.tolerance = 1e-9;
+    try {
+        (void)r.fill_mask(p, Affine::translate(2000, 100), o, IRect{0, 0, 4000, 2000});
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::Limit);
+    }
 }

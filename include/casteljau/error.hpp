@@ -33,7 +33,7 @@ namespace limits {
 inline constexpr int kMaxCanvasDimension = 32768;            // pixels per side
 inline constexpr long long kMaxCanvasPixels = 268435456LL;   // 2^28 pixels = 1 GiB of RGBA8
 inline constexpr std::size_t kMaxPathPoints = 1u << 24;      // points in one Path
-inline constexpr std::size_t kMaxFlattenedSegments = 1u << 26;  // line segments after flattening
+inline constexpr std::size_t kMaxFlattenedSegments = 1u << 23;  // line segments after flattening (~340 MB of edges)
 inline constexpr int kMaxFlattenDepth = 16;                  // subdivision depth per curve
 inline constexpr int kMaxNestingDepth = 64;                  // SVG element / group nesting
 inline constexpr double kMaxCoordinate = 1e15;               // |coordinate| after transform
