@@ -125,6 +125,24 @@ public:
         return props;
     }
 
+    // A fill or stroke value: none, currentColor, inherit (keeps the inherited paint), a colour;
+    // paint servers (url(...)) are not supported yet and paint nothing, with a warning.
+    void apply_paint(const std::string& property, std::string_view value, Color current, std::optional<Color>& paint) {
+        if (value == "none") paint = std::nullopt;
+        else if (value == "currentColor") paint = current;
+        else if (value == "inherit") {}
+        else if (value.substr(0, 4) == "url(") {
+            warn("paint servers (" + std::string(value) + ") are not supported yet; " + property + " is none");
+            paint = std::nullopt;
+        } else {
+            try {
+                paint = parse_color(value);
+            } catch (const Error&) {
+                warn("invalid " + property + " '" + std::string(value) + "'");
+            }
+        }
+    }
+
     void apply_style(const pugi::xml_node& node, Style& st) {
         // `color` first so that currentColor in the same element resolves to it.
         for (const auto& [k, v] : properties(node)) {
@@ -135,30 +153,14 @@ public:
         for (const auto& [k, v] : properties(node)) {
             const std::string_view val = trim(v);
             if (k == "fill") {
-                if (val == "none") st.fill = std::nullopt;
-                else if (val == "currentColor") st.fill = st.color;
-                else if (val == "inherit") {}
-                else if (val.substr(0, 4) == "url(") {
-                    warn("paint servers (" + v + ") are not supported yet; filled with none");
-                    st.fill = std::nullopt;
-                } else {
-                    try { st.fill = parse_color(val); } catch (const Error&) { warn("invalid fill '" + v + "'"); }
-                }
+                apply_paint(k, val, st.color, st.fill);
             } else if (k == "fill-rule") {
                 if (val == "evenodd") st.fill_rule = FillRule::EvenOdd;
                 else if (val == "nonzero") st.fill_rule = FillRule::NonZero;
             } else if (k == "fill-opacity") {
                 if (auto o = parse_opacity(val)) st.fill_opacity = *o;
             } else if (k == "stroke") {
-                if (val == "none") st.stroke = std::nullopt;
-                else if (val == "currentColor") st.stroke = st.color;
-                else if (val == "inherit") {}
-                else if (val.substr(0, 4) == "url(") {
-                    warn("paint servers (" + v + ") are not supported yet; stroked with none");
-                    st.stroke = std::nullopt;
-                } else {
-                    try { st.stroke = parse_color(val); } catch (const Error&) { warn("invalid stroke '" + v + "'"); }
-                }
+                apply_paint(k, val, st.color, st.stroke);
             } else if (k == "stroke-opacity") {
                 if (auto o = parse_opacity(val)) st.stroke_opacity = *o;
             } else if (k == "stroke-width") {

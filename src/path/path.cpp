@@ -166,18 +166,8 @@ Rect Path::control_bounds() const {
 
 namespace {
 
-// Roots in (0, 1) of the derivative of a 1-D quadratic/cubic Bezier, for tight bounds.
-int quad_extrema(double a, double b, double c, double out[1]) {
-    const double den = a - 2 * b + c;
-    if (den == 0) return 0;
-    const double t = (a - b) / den;
-    if (t > 0 && t < 1) { out[0] = t; return 1; }
-    return 0;
-}
-
-int cubic_extrema(double p0, double p1, double p2, double p3, double out[2]) {
-    // Derivative / 3: a t^2 + b t + c with a = -p0 + 3p1 - 3p2 + p3, b = 2(p0 - 2p1 + p2), c = p1 - p0.
-    const double a = -p0 + 3 * p1 - 3 * p2 + p3, b = 2 * (p0 - 2 * p1 + p2), c = p1 - p0;
+// Roots in (0, 1) of a t^2 + b t + c (numerically stable form; a tiny a degrades to linear).
+int roots_in_unit_interval(double a, double b, double c, double out[2]) {
     int n = 0;
     auto push = [&](double t) { if (t > 0 && t < 1) out[n++] = t; };
     if (std::abs(a) < 1e-12 * (std::abs(b) + std::abs(c) + 1e-300)) {
@@ -193,6 +183,21 @@ int cubic_extrema(double p0, double p1, double p2, double p3, double out[2]) {
     return n;
 }
 
+// Roots in (0, 1) of the derivative of a 1-D quadratic/cubic Bezier, for tight bounds.
+int quad_extrema(double a, double b, double c, double out[1]) {
+    const double den = a - 2 * b + c;
+    if (den == 0) return 0;
+    const double t = (a - b) / den;
+    if (t > 0 && t < 1) { out[0] = t; return 1; }
+    return 0;
+}
+
+int cubic_extrema(double p0, double p1, double p2, double p3, double out[2]) {
+    // Derivative / 3: a t^2 + b t + c with a = -p0 + 3p1 - 3p2 + p3, b = 2(p0 - 2p1 + p2), c = p1 - p0.
+    const double a = -p0 + 3 * p1 - 3 * p2 + p3, b = 2 * (p0 - 2 * p1 + p2), c = p1 - p0;
+    return roots_in_unit_interval(a, b, c, out);
+}
+
 // Extrema in (0, 1) of x(t) = N(t) / D(t) for a conic: with N = a2 t^2 + a1 t + a0 and
 // D = b2 t^2 + b1 t + b0, N'D - ND' = (a2 b1 - a1 b2) t^2 + 2 (a2 b0 - a0 b2) t + (a1 b0 - a0 b1)
 // (the cubic terms cancel).
@@ -200,19 +205,7 @@ int conic_extrema(double p0, double p1, double p2, double w, double out[2]) {
     const double a0 = p0, a1 = 2 * (w * p1 - p0), a2 = p0 - 2 * w * p1 + p2;
     const double b0 = 1, b1 = 2 * (w - 1), b2 = 2 - 2 * w;
     const double A = a2 * b1 - a1 * b2, B = 2 * (a2 * b0 - a0 * b2), C = a1 * b0 - a0 * b1;
-    int n = 0;
-    auto push = [&](double t) { if (t > 0 && t < 1) out[n++] = t; };
-    if (std::abs(A) < 1e-12 * (std::abs(B) + std::abs(C) + 1e-300)) {
-        if (B != 0) push(-C / B);
-        return n;
-    }
-    const double disc = B * B - 4 * A * C;
-    if (disc < 0) return 0;
-    const double sq = std::sqrt(disc);
-    const double q = -0.5 * (B + (B < 0 ? -sq : sq));
-    push(q / A);
-    if (q != 0) push(C / q);
-    return n;
+    return roots_in_unit_interval(A, B, C, out);
 }
 
 Point eval_quad(Point p0, Point p1, Point p2, double t) {
