@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <vector>
 
+#include "casteljau/error.hpp"
+#include "casteljau/path.hpp"
 #include "casteljau/vec.hpp"
 
 namespace curve_test {
@@ -76,6 +79,55 @@ inline bool in_convex_hull(const std::vector<Point>& pts, Point p, double eps) {
         if (e.cross(p - a) / e.length() < -eps) return false;
     }
     return true;
+}
+
+// The kind of Error that f throws, or ErrorKind::Io as a "did not throw" marker.
+inline casteljau::ErrorKind kind_of(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const casteljau::Error& e) {
+        return e.kind();
+    }
+    return casteljau::ErrorKind::Io;
+}
+
+// Largest distance from points of the cubic pieces of `p` (per_piece + 1 samples each) to the
+// curve `c` (anything with eval(t) on [0, 1]), found by a coarse search over `coarse` samples of
+// c refined with `refine` steps around the nearest sample.
+template <class C>
+double max_cubic_path_deviation(const casteljau::Path& p, const C& c, int coarse, int per_piece, int refine) {
+    using casteljau::Point;
+    std::vector<Point> orig;
+    for (int k = 0; k <= coarse; ++k) orig.push_back(c.eval(static_cast<double>(k) / coarse));
+    double worst = 0;
+    struct V {
+        const C& c;
+        const std::vector<Point>& orig;
+        int per_piece, refine;
+        double& worst;
+        void move(Point) {}
+        void line(Point, Point) {}
+        void quad(Point, Point, Point) {}
+        void conic(Point, Point, Point, double) {}
+        void close(Point, Point) {}
+        void cubic(Point a, Point b, Point cc, Point d) {
+            for (int k = 0; k <= per_piece; ++k) {
+                const double t = static_cast<double>(k) / per_piece, u = 1 - t;
+                const Point q = a * (u * u * u) + b * (3 * u * u * t) + cc * (3 * u * t * t) + d * (t * t * t);
+                std::size_t bi = 0;
+                for (std::size_t i = 0; i < orig.size(); ++i)
+                    if (dist(orig[i], q) < dist(orig[bi], q)) bi = i;
+                const double n = static_cast<double>(orig.size() - 1);
+                const double lo = std::max(0.0, (static_cast<double>(bi) - 1) / n);
+                const double hi = std::min(1.0, (static_cast<double>(bi) + 1) / n);
+                double best = dist(orig[bi], q);
+                for (int j = 0; j <= refine; ++j) best = std::min(best, dist(c.eval(lo + (hi - lo) * j / refine), q));
+                worst = std::max(worst, best);
+            }
+        }
+    } v{c, orig, per_piece, refine, worst};
+    p.visit(v);
+    return worst;
 }
 
 }  // namespace curve_test

@@ -464,36 +464,7 @@ TEST_CASE("Bezier: to Path, exact verbs up to cubic and proven cubic approximati
         CHECK(achieved <= tol);
         // Each cubic piece: sample it and find the nearest point of the original curve (coarse
         // sampling, then a fine search around the best coarse sample).
-        const int coarse = 2000;
-        std::vector<Point> orig;
-        for (int k = 0; k <= coarse; ++k) orig.push_back(c.eval(static_cast<double>(k) / coarse));
-        double worst = 0;
-        struct V {
-            const Bezier<Point>& c;
-            std::vector<Point>& orig;
-            double& worst;
-            void move(Point) {}
-            void line(Point, Point) {}
-            void quad(Point, Point, Point) {}
-            void conic(Point, Point, Point, double) {}
-            void close(Point, Point) {}
-            void cubic(Point a, Point b, Point cc, Point d) {
-                const Bezier<Point> piece{a, b, cc, d};
-                for (int k = 0; k <= 16; ++k) {
-                    const Point q = piece.eval(k / 16.0);
-                    std::size_t bi = 0;
-                    for (std::size_t i = 0; i < orig.size(); ++i)
-                        if (dist(orig[i], q) < dist(orig[bi], q)) bi = i;
-                    const double n = static_cast<double>(orig.size() - 1);
-                    const double lo = std::max(0.0, (static_cast<double>(bi) - 1) / n);
-                    const double hi = std::min(1.0, (static_cast<double>(bi) + 1) / n);
-                    double best = dist(orig[bi], q);
-                    for (int j = 0; j <= 400; ++j) best = std::min(best, dist(c.eval(lo + (hi - lo) * j / 400.0), q));
-                    worst = std::max(worst, best);
-                }
-            }
-        } v{c, orig, worst};
-        p.visit(v);
+        const double worst = max_cubic_path_deviation(p, c, 2000, 16, 400);
         CHECK(worst <= tol + 1e-3);  // + the fine sampling step of the original
         CHECK(p.points().front() == c.front());
         CHECK(p.points().back() == c.back());

@@ -16,15 +16,6 @@ using namespace curve_test;
 
 namespace {
 
-ErrorKind kind_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.kind();
-    }
-    return ErrorKind::Io;  // "did not throw" marker
-}
-
 std::vector<double> random_weights(std::mt19937& rng, std::size_t n) {
     std::vector<double> w;
     for (std::size_t i = 0; i < n; ++i) w.push_back(uniform(rng, 0.2, 5));
@@ -229,35 +220,7 @@ TEST_CASE("NURBS: the Path route: conics as Conic verbs, higher degrees with a p
         CHECK(achieved <= tol);
         CHECK(p.points().front() == r.points().front());
         CHECK(dist(p.points().back(), r.eval(1)) <= 1e-9);
-        std::vector<Point> orig;
-        for (int k = 0; k <= 4000; ++k) orig.push_back(r.eval(k / 4000.0));
-        double worst = 0;
-        struct V {
-            const RationalBezier<Point>& r;
-            std::vector<Point>& orig;
-            double& worst;
-            void move(Point) {}
-            void line(Point, Point) {}
-            void quad(Point, Point, Point) {}
-            void conic(Point, Point, Point, double) {}
-            void close(Point, Point) {}
-            void cubic(Point a, Point b, Point c, Point d) {
-                const Bezier<Point> piece{a, b, c, d};
-                for (int k = 0; k <= 8; ++k) {
-                    const Point q = piece.eval(k / 8.0);
-                    std::size_t bi = 0;
-                    for (std::size_t i = 0; i < orig.size(); ++i)
-                        if (dist(orig[i], q) < dist(orig[bi], q)) bi = i;
-                    const double N = static_cast<double>(orig.size() - 1);
-                    const double lo = std::max(0.0, (static_cast<double>(bi) - 1) / N);
-                    const double hi = std::min(1.0, (static_cast<double>(bi) + 1) / N);
-                    double best = dist(orig[bi], q);
-                    for (int j = 0; j <= 200; ++j) best = std::min(best, dist(r.eval(lo + (hi - lo) * j / 200.0), q));
-                    worst = std::max(worst, best);
-                }
-            }
-        } v{r, orig, worst};
-        p.visit(v);
+        const double worst = max_cubic_path_deviation(p, r, 4000, 8, 200);
         CHECK(worst <= tol + 1e-3);
     }
 }

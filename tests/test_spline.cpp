@@ -16,15 +16,6 @@ using namespace curve_test;
 
 namespace {
 
-ErrorKind kind_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.kind();
-    }
-    return ErrorKind::Io;  // "did not throw" marker
-}
-
 // The literal Cox-de Boor recursion (exponential; small degrees only), half-open spans.
 double naive_basis(int i, int p, const std::vector<double>& U, double t) {
     const auto I = static_cast<std::size_t>(i), Pp = static_cast<std::size_t>(p);

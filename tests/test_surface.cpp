@@ -16,15 +16,6 @@ using namespace curve_test;
 
 namespace {
 
-ErrorKind kind_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.kind();
-    }
-    return ErrorKind::Io;  // "did not throw" marker
-}
-
 template <class P> P tensor_sum(const BezierPatch<P>& s, double u, double v) {
     P acc{};
     for (int i = 0; i <= s.degree_u(); ++i)
