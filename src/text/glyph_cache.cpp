@@ -78,6 +78,20 @@ struct GlyphCache::Impl {
 
     // Forgets everything when `font` sits at the address of a Font the cache knew that has since
     // been destroyed (its token differs).
+    // Makes room for an entry of `bytes` (emptying the whole cache when it would pass max_bytes;
+    // font tokens stay) and accounts for it.
+    void admit(std::size_t bytes) {
+        if (stats.bytes + bytes > max_bytes && (!masks.empty() || !outlines.empty())) {
+            masks.clear();
+            outlines.clear();
+            stats.entries = 0;
+            stats.bytes = 0;
+            ++stats.flushes;
+        }
+        stats.bytes += bytes;
+        ++stats.entries;
+    }
+
     void check_font(const Font& font) {
         const Font::Impl* fi = &font.impl();
         auto it = fonts.find(fi);
@@ -132,17 +146,7 @@ const Mask& GlyphCache::mask(const Font& font, std::uint32_t glyph, double size,
         const Affine to_pixels = font.glyph_transform(size, offset);
         m = raster.fill_mask(c.scratch, to_pixels, c.fill);
     }
-    const std::size_t bytes = m.data.size() + kEntryOverhead;
-    if (c.stats.bytes + bytes > c.max_bytes && !c.masks.empty()) {
-        // Keep the font tokens: only the contents go.
-        c.masks.clear();
-        c.outlines.clear();
-        c.stats.entries = 0;
-        c.stats.bytes = 0;
-        ++c.stats.flushes;
-    }
-    c.stats.bytes += bytes;
-    ++c.stats.entries;
+    c.admit(m.data.size() + kEntryOverhead);
     return c.masks.emplace(key, std::move(m)).first->second;
 }
 
@@ -156,16 +160,7 @@ const Path& GlyphCache::outline(const Font& font, std::uint32_t glyph) {
     }
     ++c.stats.misses;
     Path p = font.glyph_path(glyph);
-    const std::size_t bytes = p.points().size() * sizeof(Point) + p.verbs().size() + kEntryOverhead;
-    if (c.stats.bytes + bytes > c.max_bytes && (!c.masks.empty() || !c.outlines.empty())) {
-        c.masks.clear();
-        c.outlines.clear();
-        c.stats.entries = 0;
-        c.stats.bytes = 0;
-        ++c.stats.flushes;
-    }
-    c.stats.bytes += bytes;
-    ++c.stats.entries;
+    c.admit(p.points().size() * sizeof(Point) + p.verbs().size() + kEntryOverhead);
     return c.outlines.emplace(key, std::move(p)).first->second;
 }
 
