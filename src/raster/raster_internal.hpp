@@ -99,3 +99,65 @@ inline std::uint8_t coverage_u8(double a, FillRule rule) {
 double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule);
 
 }  // namespace casteljau::raster
+
+namespace casteljau::raster {
+
+// The direct path (direct.cpp), used when the shape's clipped bounds fit one buffer: edges are
+// accumulated the moment the flattener produces them, with no edge list and no strips, and the
+// overlap check works on "visits" (maximal runs of consecutive edges of one contour inside one
+// cell) instead of per-edge tags. See the comment at the top of direct.cpp.
+class Direct {
+public:
+    // Starts a shape of w x h cells. `track`: record visits for the exact overlap check.
+    void begin(int w, int h, bool track);
+    // One straight edge in cell coordinates (clamped to [0, w] x [0, h]).
+    void push(double x0, double y0, double x1, double y1);
+    // The current contour is complete (its closing edge was pushed).
+    void contour_end();
+    // Resolves the marked cells and hands the rows to the sink, at pixel offset (ox, oy).
+    void finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats);
+
+private:
+    struct Visit {
+        std::uint32_t cell;     // row * stride + col
+        std::int32_t next;      // the cell's previous visit (-1: none)
+        std::uint32_t s0, s1;   // first and last edge of the visit (indices into segs_)
+        std::int32_t pre;       // merged visit holding the part of this run before the contour start
+        std::uint8_t dirs;      // +x, -x, +y, -y seen along the run
+        bool merged_away;       // this record is the first part of another visit (`pre` of it)
+    };
+
+    void row_piece(int r, double xa, double ya, double xb, double yb, std::uint32_t sid, std::uint8_t bits);
+    void touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits);
+    bool harmless_two(const Visit& a, const Visit& b, int col, int row);
+    void gather(const Visit& v, int col, int row, std::vector<ExactScratch::Piece>& out) const;
+    void classify();
+    bool simple_run(const Visit& v) const;
+
+    int w_ = 0, h_ = 0;
+    std::size_t stride_ = 0;
+    bool track_ = false;
+    bool dirty_ = false;            // buffers may hold data from an interrupted shape
+    std::vector<double> acc_;       // cover/area, (w + 2) x h, all zero between shapes
+    std::vector<std::int32_t> head_;  // per cell: last visit + 1 (0: none), all zero between shapes
+    std::vector<int> rmin_, rmax_;  // touched cells per row
+    std::vector<Edge> segs_;
+    std::vector<Visit> visits_;
+    std::vector<std::uint32_t> cands_;     // cells with two or more visits, or a non-monotone one
+    std::vector<std::uint32_t> exact_;     // cells to compute exactly (sorted)
+    std::vector<std::uint32_t> exact_at_;  // start of each exact cell's edges in exact_ids_
+    std::vector<std::uint32_t> exact_ids_;
+    std::vector<std::uint8_t> cov_;
+    std::vector<std::pair<std::uint32_t, std::uint8_t>> patches_;
+    std::vector<ExactScratch::Piece> pa_, pb_;
+    ExactScratch scratch_;
+    // Walk state.
+    std::uint32_t cur_cell_ = 0xffffffffu;
+    std::int32_t cur_visit_ = -1;
+    std::size_t contour_visit_ = 0;  // first visit of the current contour
+    double px_ = 0, py_ = 0;         // end of the last edge
+    double sx_ = 0, sy_ = 0;         // start of the contour's first edge
+    bool contour_started_ = false;
+};
+
+}  // namespace casteljau::raster

@@ -27,14 +27,46 @@ namespace {
 // Upper bound on cells in one strip buffer: 2^18 cells = 2 MiB of accumulators + 2 MiB of tags.
 constexpr std::size_t kMaxStripCells = std::size_t(1) << 18;
 
-// Receives flattened points (flatten_into's sink interface) and builds edges, clipping them to
-// [0, W] x [0, H] when kClip (coordinates relative to the target), else taking them as they are.
-template <bool kClip>
-struct EdgeSink {
+// The edge list of the strip path: edges linked along their contour (prev/next).
+struct EdgeList {
     std::vector<Edge>& edges;
+    std::size_t contour_first = 0;
+
+    void push(double x0, double y0, double x1, double y1) {
+        if (y0 == y1 && x0 == x1) return;
+        Edge e{x0, y0, x1, y1, -1, -1};
+        if (edges.size() > contour_first) {
+            Edge& last = edges.back();
+            if (last.x1 == x0 && last.y1 == y0) {
+                e.prev = static_cast<std::int32_t>(edges.size() - 1);
+                last.next = static_cast<std::int32_t>(edges.size());
+            }
+        }
+        if (edges.size() >= limits::kMaxFlattenedSegments)
+            throw Error(ErrorKind::Limit, "path too complex: more than " +
+                                              std::to_string(limits::kMaxFlattenedSegments) + " edges");
+        edges.push_back(e);
+    }
+    void contour_end() {
+        if (edges.size() > contour_first + 1) {
+            Edge& first = edges[contour_first];
+            Edge& last = edges.back();
+            if (last.x1 == first.x0 && last.y1 == first.y0) {
+                last.next = static_cast<std::int32_t>(contour_first);
+                first.prev = static_cast<std::int32_t>(edges.size() - 1);
+            }
+        }
+        contour_first = edges.size();
+    }
+};
+
+// Receives flattened points (flatten_into's sink interface) and hands straight edges to `out`
+// (EdgeList or raster::Direct), clipping them to [0, W] x [0, H] when kClip, else as they are.
+template <bool kClip, class Out>
+struct EdgeSink {
+    Out& out;
     double W = 0, H = 0;
     bool clipped_right = false;
-    std::size_t contour_first = 0;
     Point start{}, cur{};
     bool open = false;
 
@@ -52,33 +84,11 @@ struct EdgeSink {
     void end() {
         if (!open) return;
         point(start);  // fills close every contour
-        if (edges.size() > contour_first + 1) {
-            Edge& first = edges[contour_first];
-            Edge& last = edges.back();
-            if (last.x1 == first.x0 && last.y1 == first.y0) {
-                last.next = static_cast<std::int32_t>(contour_first);
-                first.prev = static_cast<std::int32_t>(edges.size() - 1);
-            }
-        }
-        contour_first = edges.size();
+        out.contour_end();
         open = false;
     }
 
-    [[gnu::always_inline]] inline void push(double x0, double y0, double x1, double y1) {
-        if (y0 == y1 && x0 == x1) return;
-        Edge e{x0, y0, x1, y1, -1, -1};
-        if (edges.size() > contour_first) {
-            Edge& last = edges.back();
-            if (last.x1 == x0 && last.y1 == y0) {
-                e.prev = static_cast<std::int32_t>(edges.size() - 1);
-                last.next = static_cast<std::int32_t>(edges.size());
-            }
-        }
-        if (edges.size() >= limits::kMaxFlattenedSegments)
-            throw Error(ErrorKind::Limit, "path too complex: more than " +
-                                              std::to_string(limits::kMaxFlattenedSegments) + " edges");
-        edges.push_back(e);
-    }
+    [[gnu::always_inline]] inline void push(double x0, double y0, double x1, double y1) { out.push(x0, y0, x1, y1); }
 
     void add_clipped(Point p, Point q) {
         if (p.y == q.y) {
@@ -170,6 +180,7 @@ struct Rasterizer::Impl {
     std::vector<std::pair<std::uint32_t, std::uint8_t>> patches;
     std::vector<std::uint32_t> order;   // edges sorted by top y (multi-strip shapes)
     std::vector<std::uint32_t> active;  // edges overlapping the current strip
+    raster::Direct direct;              // shapes whose clipped bounds fit one buffer
 
     // Rasterizes `edges` (local to the bounds at (ox, oy), bw x bh pixels).
     void run(const FillOptions& opts, int ox, int oy, int bw, int bh, SpanSink& sink, RasterStats& stats);
@@ -188,15 +199,43 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opts
     check_clip(clip);
     if (clip.empty() || path.empty()) return;
     const Rect b = transformed_bounds(path, m, opts.tolerance);
+    // The shape's bounds inside the target; when that box fits one buffer, the direct path.
+    const double fx0 = std::floor(std::max(b.x0, static_cast<double>(clip.x0)));
+    const double fy0 = std::floor(std::max(b.y0, static_cast<double>(clip.y0)));
+    const double fx1 = std::ceil(std::min(b.x1, static_cast<double>(clip.x1)));
+    const double fy1 = std::ceil(std::min(b.y1, static_cast<double>(clip.y1)));
+    if (!(fx1 > fx0 && fy1 > fy0)) return;  // nothing of the shape inside the target
+    const bool inside = b.x0 >= clip.x0 && b.y0 >= clip.y0 && b.x1 <= clip.x1 && b.y1 <= clip.y1;
+    if ((fx1 - fx0) * (fy1 - fy0) <= static_cast<double>(kMaxStripCells)) {
+        const int ox = static_cast<int>(fx0), oy = static_cast<int>(fy0);
+        const int bw = static_cast<int>(fx1) - ox, bh = static_cast<int>(fy1) - oy;
+        raster::Direct& d = impl_->direct;
+        d.begin(bw, bh, opts.exact_overlaps);
+        const Affine local = Affine::translate(-ox, -oy) * m;
+        if (inside) {
+            EdgeSink<false, raster::Direct> es{d};
+            flatten_into(path, local, opts.tolerance, nullptr, es);
+            es.end();
+        } else {
+            // Clipped to the box: what lies left of it only adds cover to its first column.
+            const Rect cull{-1.0, -1.0, bw + 1.0, bh + 1.0};
+            EdgeSink<true, raster::Direct> es{d, static_cast<double>(bw), static_cast<double>(bh)};
+            flatten_into(path, local, opts.tolerance, &cull, es);
+            es.end();
+        }
+        d.finish(opts.rule, ox, oy, sink, stats_);
+        return;
+    }
     auto& edges = impl_->edges;
     edges.clear();
-    if (b.x0 >= clip.x0 && b.y0 >= clip.y0 && b.x1 <= clip.x1 && b.y1 <= clip.y1) {
+    EdgeList list{edges};
+    if (inside) {
         // Inside the target: no clipping; edges local to the control bounds.
         const int ox = static_cast<int>(std::floor(b.x0)), oy = static_cast<int>(std::floor(b.y0));
         const int bw = std::max(1, static_cast<int>(std::ceil(b.x1)) - ox);
         const int bh = std::max(1, static_cast<int>(std::ceil(b.y1)) - oy);
         edges.reserve(path.points().size() * 4);
-        EdgeSink<false> es{edges};
+        EdgeSink<false, EdgeList> es{list};
         flatten_into(path, Affine::translate(-ox, -oy) * m, opts.tolerance, nullptr, es);
         es.end();
         impl_->run(opts, ox, oy, std::min(bw, clip.x1 - ox), std::min(bh, clip.y1 - oy), sink, stats_);
@@ -205,7 +244,7 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opts
     // Partly or wholly outside: clip. Curves wholly outside (with a one-pixel margin) become chords.
     // The flattener sees points relative to the clip's origin, so the cull box is too.
     const Rect cull{-1.0, -1.0, clip.width() + 1.0, clip.height() + 1.0};
-    EdgeSink<true> es{edges, static_cast<double>(clip.width()), static_cast<double>(clip.height())};
+    EdgeSink<true, EdgeList> es{list, static_cast<double>(clip.width()), static_cast<double>(clip.height())};
     flatten_into(path, Affine::translate(-clip.x0, -clip.y0) * m, opts.tolerance, &cull, es);
     es.end();
     if (edges.empty()) return;

@@ -1,0 +1,401 @@
+// Raster stage, direct path: accumulate edges as the flattener emits them, check overlaps by
+// visits, resolve the few cells that need it exactly, scan the rows.
+//
+// Used when the shape's clipped bounds fit one buffer (rasterizer.cpp decides). Accumulation is the
+// cover/area scheme of accumulate.cpp (acc[k] gets the piece's height times the part of cell k to
+// its right, acc[k + 1] the rest; a prefix sum along the row gives the integral of the winding
+// number over each pixel), on a dense double buffer.
+//
+// Overlap check. Plain accumulation is exact in a cell whose winding numbers lie in one unit
+// interval. Edges arrive in contour order, so the walk knows, for every cell it enters, that the
+// contour is starting a new "visit" there: a maximal run of consecutive edges inside that cell.
+//   - A cell with one visit whose run is monotone in x or in y (so it cannot cross itself) and
+//     which enters and leaves through the cell's boundary is split by it into two regions whose
+//     windings differ by one: exact. So is a run of at most two edges (one bend), whatever its
+//     directions. (The run through a contour's start vertex arrives in two
+//     parts, the contour's first and last edges; they are merged when the contour closes.)
+//   - A cell with two such visits that do not meet is split into three regions: the middle
+//     one and the two outer ones. The outer ones have the same winding exactly when, going around
+//     the cell's boundary, the end of one run is next to the start of the other (a stem: one edge
+//     up, one down); then the windings span one unit and accumulation is exact.
+//   - Every other cell with visits (crossings, stacked copies, three or more runs, loops) is
+//     recomputed exactly from its edges (exact_cell.cpp) with the accumulated integral.
+// Only positive-length pieces inside the open cell count as visits: an edge along a cell's
+// boundary only moves cover, which accumulation gets right.
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "casteljau/error.hpp"
+#include "raster/raster_internal.hpp"
+
+namespace casteljau::raster {
+
+namespace {
+
+inline int ifloor(double v) {
+    const int i = static_cast<int>(v);
+    return i > v ? i - 1 : i;
+}
+inline int iceil(double v) {
+    const int i = static_cast<int>(v);
+    return i < v ? i + 1 : i;
+}
+inline double clampd(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
+
+constexpr std::uint32_t kNoCell = 0xffffffffu;
+
+inline bool monotone(std::uint8_t d) { return (d & 3) != 3 || (d & 12) != 12; }
+
+inline double orient(double ax, double ay, double bx, double by, double cx, double cy) {
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+
+// Do closed segments ab and cd share a point?
+bool meet(const ExactScratch::Piece& p, const ExactScratch::Piece& q) {
+    if (std::max(p.ax, p.bx) < std::min(q.ax, q.bx) || std::max(q.ax, q.bx) < std::min(p.ax, p.bx) ||
+        std::max(p.ay, p.by) < std::min(q.ay, q.by) || std::max(q.ay, q.by) < std::min(p.ay, p.by))
+        return false;
+    const double d1 = orient(q.ax, q.ay, q.bx, q.by, p.ax, p.ay), d2 = orient(q.ax, q.ay, q.bx, q.by, p.bx, p.by);
+    const double d3 = orient(p.ax, p.ay, p.bx, p.by, q.ax, q.ay), d4 = orient(p.ax, p.ay, p.bx, p.by, q.bx, q.by);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+    // Touching or collinear (the boxes overlap): count as meeting, the exact path decides.
+    return d1 == 0 || d2 == 0 || d3 == 0 || d4 == 0;
+}
+
+// Position of a point on the boundary of the unit cell (local coordinates) as a parameter in
+// [0, 4) going around it; -1 when the point is not on the boundary.
+double boundary_param(double x, double y) {
+    constexpr double eps = 1e-9;
+    const double dt = y, dr = 1 - x, db = 1 - y, dl = x;
+    const double m = std::min(std::min(dt, dr), std::min(db, dl));
+    if (m > eps) return -1;
+    if (m == dt) return clampd(x, 0, 1);
+    if (m == dr) return 1 + clampd(y, 0, 1);
+    if (m == db) return 2 + (1 - clampd(x, 0, 1));
+    return 3 + (1 - clampd(y, 0, 1));
+}
+
+}  // namespace
+
+void Direct::begin(int w, int h, bool track) {
+    w_ = w;
+    h_ = h;
+    stride_ = static_cast<std::size_t>(w) + 2;
+    track_ = track;
+    const std::size_t cells = stride_ * static_cast<std::size_t>(h);
+    if (dirty_) {
+        std::fill(acc_.begin(), acc_.end(), 0.0);
+        std::fill(head_.begin(), head_.end(), 0);
+    }
+    if (acc_.size() < cells) acc_.resize(cells, 0.0);
+    if (track && head_.size() < cells) head_.resize(cells, 0);
+    dirty_ = true;
+    rmin_.assign(static_cast<std::size_t>(h), INT_MAX);
+    rmax_.assign(static_cast<std::size_t>(h), -1);
+    segs_.clear();
+    visits_.clear();
+    cands_.clear();
+    cur_cell_ = kNoCell;
+    cur_visit_ = -1;
+    contour_visit_ = 0;
+    contour_started_ = false;
+    px_ = py_ = NAN;
+}
+
+void Direct::touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits) {
+    if (cell == cur_cell_) {
+        Visit& v = visits_[static_cast<std::size_t>(cur_visit_)];
+        v.s1 = sid;
+        v.dirs |= bits;
+        return;
+    }
+    cur_cell_ = cell;
+    const std::int32_t h = head_[cell];
+    cur_visit_ = static_cast<std::int32_t>(visits_.size());
+    visits_.push_back({cell, h - 1, sid, sid, -1, bits, false});
+    head_[cell] = cur_visit_ + 1;
+    if (h != 0) cands_.push_back(cell);
+}
+
+inline void Direct::row_piece(int r, double xa, double ya, double xb, double yb, std::uint32_t sid,
+                              std::uint8_t bits) {
+    const double dy = yb - ya;
+    double* acc = acc_.data() + static_cast<std::size_t>(r) * stride_;
+    const std::uint32_t base = static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_);
+    const double xl = xa < xb ? xa : xb, xr = xa < xb ? xb : xa;
+    const int c0 = ifloor(xl);
+    const int c1 = iceil(xr) - 1;
+    if (c1 <= c0) {
+        const double a = dy * ((c0 + 1) - 0.5 * (xl + xr));
+        acc[c0] += a;
+        acc[c0 + 1] += dy - a;
+        if (c0 < rmin_[r]) rmin_[r] = c0;
+        if (c0 + 1 > rmax_[r]) rmax_[r] = c0 + 1;
+        if (track_) {
+            if (xl == xr && xl == c0) cur_cell_ = kNoCell;  // on the cell's left side: no visit
+            else touch(base + static_cast<std::uint32_t>(c0), sid, bits);
+        }
+        return;
+    }
+    if (c0 < rmin_[r]) rmin_[r] = c0;
+    if (c1 + 1 > rmax_[r]) rmax_[r] = c1 + 1;
+    const double s = dy / (xr - xl);  // height per unit of x
+    if (xa < xb) {
+        double u0 = xa;
+        for (int c = c0; c <= c1; ++c) {
+            const double u1 = c == c1 ? xb : c + 1.0;
+            const double d = s * (u1 - u0);
+            const double a = d * ((c + 1) - 0.5 * (u0 + u1));
+            acc[c] += a;
+            acc[c + 1] += d - a;
+            if (track_) touch(base + static_cast<std::uint32_t>(c), sid, bits);
+            u0 = u1;
+        }
+    } else {
+        double u1 = xa;
+        for (int c = c1; c >= c0; --c) {
+            const double u0 = c == c0 ? xb : static_cast<double>(c);
+            const double d = s * (u1 - u0);
+            const double a = d * ((c + 1) - 0.5 * (u0 + u1));
+            acc[c] += a;
+            acc[c + 1] += d - a;
+            if (track_) touch(base + static_cast<std::uint32_t>(c), sid, bits);
+            u1 = u0;
+        }
+    }
+}
+
+void Direct::push(double x0, double y0, double x1, double y1) {
+    const double W = w_, H = h_;
+    x0 = clampd(x0, 0, W);
+    x1 = clampd(x1, 0, W);
+    y0 = clampd(y0, 0, H);
+    y1 = clampd(y1, 0, H);
+    if (x0 == x1 && y0 == y1) return;
+    if (x0 != px_ || y0 != py_) cur_cell_ = kNoCell;  // a gap (clipped away): a new run starts
+    if (!contour_started_) {
+        contour_started_ = true;
+        sx_ = x0;
+        sy_ = y0;
+    }
+    px_ = x1;
+    py_ = y1;
+    if (segs_.size() >= limits::kMaxFlattenedSegments)
+        throw Error(ErrorKind::Limit,
+                    "path too complex: more than " + std::to_string(limits::kMaxFlattenedSegments) + " edges");
+    const auto sid = static_cast<std::uint32_t>(segs_.size());
+    segs_.push_back({x0, y0, x1, y1, -1, -1});
+    const std::uint8_t bits = static_cast<std::uint8_t>((x1 > x0 ? 1 : 0) | (x1 < x0 ? 2 : 0) |
+                                                        (y1 > y0 ? 4 : 0) | (y1 < y0 ? 8 : 0));
+    if (y0 == y1) {
+        // No cover; it still separates regions inside the cells it crosses.
+        if (!track_) return;
+        const int r = ifloor(y0);
+        if (r == y0 || r >= h_) {
+            cur_cell_ = kNoCell;  // on a row boundary
+            return;
+        }
+        const std::uint32_t base = static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_);
+        const int c0 = ifloor(std::min(x0, x1)), c1 = std::max(c0, iceil(std::max(x0, x1)) - 1);
+        if (x1 > x0)
+            for (int c = c0; c <= c1; ++c) touch(base + static_cast<std::uint32_t>(c), sid, bits);
+        else
+            for (int c = c1; c >= c0; --c) touch(base + static_cast<std::uint32_t>(c), sid, bits);
+        return;
+    }
+    const double k = (x1 - x0) / (y1 - y0);
+    const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
+    if (y1 > y0) {
+        const int rend = iceil(y1) - 1;
+        double ya = y0, xa = x0;
+        for (int r = ifloor(y0); r <= rend; ++r) {
+            double yb, xb;
+            if (r == rend) {
+                yb = y1;
+                xb = x1;
+            } else {
+                yb = r + 1.0;
+                xb = clampd(x0 + (yb - y0) * k, xlo, xhi);
+            }
+            row_piece(r, xa, ya, xb, yb, sid, bits);
+            ya = yb;
+            xa = xb;
+        }
+    } else {
+        const int rend = ifloor(y1);
+        double ya = y0, xa = x0;
+        for (int r = iceil(y0) - 1; r >= rend; --r) {
+            double yb, xb;
+            if (r == rend) {
+                yb = y1;
+                xb = x1;
+            } else {
+                yb = r;
+                xb = clampd(x0 + (yb - y0) * k, xlo, xhi);
+            }
+            row_piece(r, xa, ya, xb, yb, sid, bits);
+            ya = yb;
+            xa = xb;
+        }
+    }
+}
+
+void Direct::contour_end() {
+    // The run through the contour's start vertex: its last part (now) continues into its first.
+    if (track_ && cur_visit_ >= 0 && static_cast<std::size_t>(cur_visit_) > contour_visit_ &&
+        contour_visit_ < visits_.size() && contour_started_ && px_ == sx_ && py_ == sy_) {
+        Visit& last = visits_[static_cast<std::size_t>(cur_visit_)];
+        Visit& first = visits_[contour_visit_];
+        if (last.cell == first.cell && cur_cell_ == last.cell && first.pre < 0) {
+            first.pre = cur_visit_;
+            first.dirs |= last.dirs;
+            last.merged_away = true;
+        }
+    }
+    contour_visit_ = visits_.size();
+    contour_started_ = false;
+    cur_cell_ = kNoCell;
+    cur_visit_ = -1;
+    px_ = py_ = NAN;
+}
+
+// The pieces of visit v (and of its merged first part) inside cell (col, row), in travel order.
+void Direct::gather(const Visit& v, int col, int row, std::vector<ExactScratch::Piece>& out) const {
+    out.clear();
+    auto add = [&](const Visit& u) {
+        for (std::uint32_t s = u.s0; s <= u.s1; ++s) {
+            double ax, ay, bx, by;
+            if (!cell_portion(segs_[s], col, row, ax, ay, bx, by)) continue;
+            if (ax == bx && ay == by) continue;
+            out.push_back({ax - col, ay - row, bx - col, by - row});
+        }
+    };
+    if (v.pre >= 0) add(visits_[static_cast<std::size_t>(v.pre)]);
+    add(v);
+}
+
+// Two monotone runs in one cell: harmless when they do not meet and the end of one is next to the
+// start of the other around the cell's boundary (see the top of the file).
+bool Direct::harmless_two(const Visit& a, const Visit& b, int col, int row) {
+    gather(a, col, row, pa_);
+    gather(b, col, row, pb_);
+    if (pa_.empty() || pb_.empty()) return false;
+    for (const auto& p : pa_)
+        for (const auto& q : pb_)
+            if (meet(p, q)) return false;
+    const double ta0 = boundary_param(pa_.front().ax, pa_.front().ay), ta1 = boundary_param(pa_.back().bx, pa_.back().by);
+    const double tb0 = boundary_param(pb_.front().ax, pb_.front().ay), tb1 = boundary_param(pb_.back().bx, pb_.back().by);
+    if (ta0 < 0 || ta1 < 0 || tb0 < 0 || tb1 < 0) return false;
+    auto fwd = [&](double t) {  // distance going around from a's exit
+        const double d = t - ta1;
+        return d < 0 ? d + 4 : d;
+    };
+    const double da = fwd(ta0), d0 = fwd(tb0), d1 = fwd(tb1);
+    if (da == 0 || d0 == 0 || d1 == 0 || d0 == da || d1 == da || d0 == d1) return false;
+    const bool before0 = d0 < da, before1 = d1 < da;
+    if (before0 != before1) return false;  // interleaved: they would have to cross
+    // The neighbour of a's exit on b's side: the nearer of b's ends going forward when b lies
+    // between a's exit and a's entry, else the farther one (reached going backward).
+    const bool neighbour_is_b_entry = before0 ? d0 < d1 : d0 > d1;
+    return neighbour_is_b_entry;
+}
+
+// A run that cannot cross itself: monotone in x or in y, or at most two edges (one bend).
+bool Direct::simple_run(const Visit& v) const {
+    if (monotone(v.dirs)) return true;
+    std::uint32_t n = v.s1 - v.s0 + 1;
+    if (v.pre >= 0) {
+        const Visit& p = visits_[static_cast<std::size_t>(v.pre)];
+        n += p.s1 - p.s0 + 1;
+    }
+    return n <= 2;
+}
+
+void Direct::classify() {
+    exact_.clear();
+    exact_at_.clear();
+    exact_ids_.clear();
+    for (const Visit& v : visits_)
+        if (!v.merged_away && !simple_run(v)) cands_.push_back(v.cell);
+    if (cands_.empty()) return;
+    std::sort(cands_.begin(), cands_.end());
+    cands_.erase(std::unique(cands_.begin(), cands_.end()), cands_.end());
+    for (std::uint32_t cell : cands_) {
+        const int row = static_cast<int>(cell / stride_), col = static_cast<int>(cell % stride_);
+        int n = 0;
+        const Visit* runs[2] = {nullptr, nullptr};
+        bool all_simple = true;
+        for (std::int32_t i = head_[cell] - 1; i >= 0; i = visits_[static_cast<std::size_t>(i)].next) {
+            const Visit& v = visits_[static_cast<std::size_t>(i)];
+            if (v.merged_away) continue;
+            if (n < 2) runs[n] = &v;
+            ++n;
+            all_simple = all_simple && simple_run(v);
+        }
+        if (all_simple && n == 1) continue;
+        if (all_simple && n == 2 && harmless_two(*runs[0], *runs[1], col, row)) continue;
+        exact_.push_back(cell);
+        exact_at_.push_back(static_cast<std::uint32_t>(exact_ids_.size()));
+        for (std::int32_t i = head_[cell] - 1; i >= 0; i = visits_[static_cast<std::size_t>(i)].next) {
+            const Visit& v = visits_[static_cast<std::size_t>(i)];
+            for (std::uint32_t s = v.s0; s <= v.s1; ++s) exact_ids_.push_back(s);
+        }
+    }
+    exact_at_.push_back(static_cast<std::uint32_t>(exact_ids_.size()));
+}
+
+void Direct::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats) {
+    stats.segments = segs_.size();
+    stats.strips = 1;
+    if (track_) {
+        classify();
+        for (const Visit& v : visits_) head_[v.cell] = 0;
+        stats.exact_cells = exact_.size();
+    } else {
+        exact_.clear();
+    }
+    if (cov_.size() < stride_) cov_.resize(stride_);
+    std::size_t ei = 0;
+    for (int r = 0; r < h_; ++r) {
+        const int last = rmax_[static_cast<std::size_t>(r)];
+        if (last < 0) continue;
+        const int from = rmin_[static_cast<std::size_t>(r)];
+        const std::size_t row_base = static_cast<std::size_t>(r) * stride_;
+        double* acc_row = acc_.data() + row_base;
+        patches_.clear();
+        if (ei < exact_.size() && exact_[ei] < row_base + stride_) {
+            double prefix = 0;
+            int pos = from;
+            for (; ei < exact_.size() && exact_[ei] < row_base + stride_; ++ei) {
+                const int col = static_cast<int>(exact_[ei] - row_base);
+                for (; pos <= col; ++pos) prefix += acc_row[pos];
+                if (col >= w_) continue;
+                auto& ids = scratch_.ids;  // exact_cell_coverage does not use scratch_.ids itself
+                ids.assign(exact_ids_.begin() + exact_at_[ei], exact_ids_.begin() + exact_at_[ei + 1]);
+                std::sort(ids.begin(), ids.end());
+                ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+                const double c = exact_cell_coverage(segs_.data(), ids, col, r, prefix, rule, scratch_);
+                patches_.push_back({static_cast<std::uint32_t>(col), static_cast<std::uint8_t>(c * 255.0 + 0.5)});
+            }
+        }
+        const int to = std::min(last + 1, w_);
+        const double sum = accumulate_row(acc_row, cov_.data(), from, to, 0.0, rule);
+        int end = to;
+        if (to < w_) {  // beyond the last touched cell the coverage is constant
+            const std::uint8_t tail = coverage_u8(sum, rule);
+            if (tail != 0) {
+                std::memset(cov_.data() + to, tail, static_cast<std::size_t>(w_ - to));
+                end = w_;
+            }
+        }
+        for (int k = std::max(w_, from); k <= last; ++k) acc_row[k] = 0.0;  // spill cells
+        for (const auto& p : patches_) cov_[p.first] = p.second;
+        if (end > from) sink.row(oy + r, ox + from, end - from, cov_.data() + from);
+    }
+    dirty_ = false;
+}
+
+}  // namespace casteljau::raster
