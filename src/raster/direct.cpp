@@ -29,23 +29,14 @@
 #include <string>
 
 #include "casteljau/error.hpp"
-#include "raster/raster_internal.hpp"
+#include "raster/direct.hpp"
 
 namespace casteljau::raster {
 
 namespace {
 
-inline int ifloor(double v) {
-    const int i = static_cast<int>(v);
-    return i > v ? i - 1 : i;
-}
-inline int iceil(double v) {
-    const int i = static_cast<int>(v);
-    return i < v ? i + 1 : i;
-}
-inline double clampd(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
-
-constexpr std::uint32_t kNoCell = 0xffffffffu;
+using direct_detail::clampd;
+using direct_detail::kNoCell;
 
 inline bool monotone(std::uint8_t d) { return (d & 3) != 3 || (d & 12) != 12; }
 
@@ -93,9 +84,10 @@ void Direct::begin(int w, int h, bool track) {
     if (acc_.size() < cells) acc_.resize(cells, 0.0);
     if (track && head_.size() < cells) head_.resize(cells, 0);
     dirty_ = true;
-    rmin_.assign(static_cast<std::size_t>(h), INT_MAX);
-    rmax_.assign(static_cast<std::size_t>(h), -1);
+    words_ = ((stride_ >> kBlockShift) + 64) / 64;
+    blocks_.assign(words_ * static_cast<std::size_t>(h), 0);
     segs_.clear();
+    count_ = 0;
     visits_.clear();
     cands_.clear();
     cur_cell_ = kNoCell;
@@ -103,144 +95,6 @@ void Direct::begin(int w, int h, bool track) {
     contour_visit_ = 0;
     contour_started_ = false;
     px_ = py_ = NAN;
-}
-
-void Direct::touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits) {
-    if (cell == cur_cell_) {
-        Visit& v = visits_[static_cast<std::size_t>(cur_visit_)];
-        v.s1 = sid;
-        v.dirs |= bits;
-        return;
-    }
-    cur_cell_ = cell;
-    const std::int32_t h = head_[cell];
-    cur_visit_ = static_cast<std::int32_t>(visits_.size());
-    visits_.push_back({cell, h - 1, sid, sid, -1, bits, false});
-    head_[cell] = cur_visit_ + 1;
-    if (h != 0) cands_.push_back(cell);
-}
-
-inline void Direct::row_piece(int r, double xa, double ya, double xb, double yb, std::uint32_t sid,
-                              std::uint8_t bits) {
-    const double dy = yb - ya;
-    double* acc = acc_.data() + static_cast<std::size_t>(r) * stride_;
-    const std::uint32_t base = static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_);
-    const double xl = xa < xb ? xa : xb, xr = xa < xb ? xb : xa;
-    const int c0 = ifloor(xl);
-    const int c1 = iceil(xr) - 1;
-    if (c1 <= c0) {
-        const double a = dy * ((c0 + 1) - 0.5 * (xl + xr));
-        acc[c0] += a;
-        acc[c0 + 1] += dy - a;
-        if (c0 < rmin_[r]) rmin_[r] = c0;
-        if (c0 + 1 > rmax_[r]) rmax_[r] = c0 + 1;
-        if (track_) {
-            if (xl == xr && xl == c0) cur_cell_ = kNoCell;  // on the cell's left side: no visit
-            else touch(base + static_cast<std::uint32_t>(c0), sid, bits);
-        }
-        return;
-    }
-    if (c0 < rmin_[r]) rmin_[r] = c0;
-    if (c1 + 1 > rmax_[r]) rmax_[r] = c1 + 1;
-    const double s = dy / (xr - xl);  // height per unit of x
-    if (xa < xb) {
-        double u0 = xa;
-        for (int c = c0; c <= c1; ++c) {
-            const double u1 = c == c1 ? xb : c + 1.0;
-            const double d = s * (u1 - u0);
-            const double a = d * ((c + 1) - 0.5 * (u0 + u1));
-            acc[c] += a;
-            acc[c + 1] += d - a;
-            if (track_) touch(base + static_cast<std::uint32_t>(c), sid, bits);
-            u0 = u1;
-        }
-    } else {
-        double u1 = xa;
-        for (int c = c1; c >= c0; --c) {
-            const double u0 = c == c0 ? xb : static_cast<double>(c);
-            const double d = s * (u1 - u0);
-            const double a = d * ((c + 1) - 0.5 * (u0 + u1));
-            acc[c] += a;
-            acc[c + 1] += d - a;
-            if (track_) touch(base + static_cast<std::uint32_t>(c), sid, bits);
-            u1 = u0;
-        }
-    }
-}
-
-void Direct::push(double x0, double y0, double x1, double y1) {
-    const double W = w_, H = h_;
-    x0 = clampd(x0, 0, W);
-    x1 = clampd(x1, 0, W);
-    y0 = clampd(y0, 0, H);
-    y1 = clampd(y1, 0, H);
-    if (x0 == x1 && y0 == y1) return;
-    if (x0 != px_ || y0 != py_) cur_cell_ = kNoCell;  // a gap (clipped away): a new run starts
-    if (!contour_started_) {
-        contour_started_ = true;
-        sx_ = x0;
-        sy_ = y0;
-    }
-    px_ = x1;
-    py_ = y1;
-    if (segs_.size() >= limits::kMaxFlattenedSegments)
-        throw Error(ErrorKind::Limit,
-                    "path too complex: more than " + std::to_string(limits::kMaxFlattenedSegments) + " edges");
-    const auto sid = static_cast<std::uint32_t>(segs_.size());
-    segs_.push_back({x0, y0, x1, y1, -1, -1});
-    const std::uint8_t bits = static_cast<std::uint8_t>((x1 > x0 ? 1 : 0) | (x1 < x0 ? 2 : 0) |
-                                                        (y1 > y0 ? 4 : 0) | (y1 < y0 ? 8 : 0));
-    if (y0 == y1) {
-        // No cover; it still separates regions inside the cells it crosses.
-        if (!track_) return;
-        const int r = ifloor(y0);
-        if (r == y0 || r >= h_) {
-            cur_cell_ = kNoCell;  // on a row boundary
-            return;
-        }
-        const std::uint32_t base = static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_);
-        const int c0 = ifloor(std::min(x0, x1)), c1 = std::max(c0, iceil(std::max(x0, x1)) - 1);
-        if (x1 > x0)
-            for (int c = c0; c <= c1; ++c) touch(base + static_cast<std::uint32_t>(c), sid, bits);
-        else
-            for (int c = c1; c >= c0; --c) touch(base + static_cast<std::uint32_t>(c), sid, bits);
-        return;
-    }
-    const double k = (x1 - x0) / (y1 - y0);
-    const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
-    if (y1 > y0) {
-        const int rend = iceil(y1) - 1;
-        double ya = y0, xa = x0;
-        for (int r = ifloor(y0); r <= rend; ++r) {
-            double yb, xb;
-            if (r == rend) {
-                yb = y1;
-                xb = x1;
-            } else {
-                yb = r + 1.0;
-                xb = clampd(x0 + (yb - y0) * k, xlo, xhi);
-            }
-            row_piece(r, xa, ya, xb, yb, sid, bits);
-            ya = yb;
-            xa = xb;
-        }
-    } else {
-        const int rend = ifloor(y1);
-        double ya = y0, xa = x0;
-        for (int r = iceil(y0) - 1; r >= rend; --r) {
-            double yb, xb;
-            if (r == rend) {
-                yb = y1;
-                xb = x1;
-            } else {
-                yb = r;
-                xb = clampd(x0 + (yb - y0) * k, xlo, xhi);
-            }
-            row_piece(r, xa, ya, xb, yb, sid, bits);
-            ya = yb;
-            xa = xb;
-        }
-    }
 }
 
 void Direct::contour_end() {
@@ -348,7 +202,7 @@ void Direct::classify() {
 }
 
 void Direct::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats) {
-    stats.segments = segs_.size();
+    stats.segments = count_;
     stats.strips = 1;
     if (track_) {
         classify();
@@ -359,10 +213,21 @@ void Direct::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
     }
     if (cov_.size() < stride_) cov_.resize(stride_);
     std::size_t ei = 0;
+    const int nblocks = static_cast<int>(words_ * 64);
     for (int r = 0; r < h_; ++r) {
-        const int last = rmax_[static_cast<std::size_t>(r)];
-        if (last < 0) continue;
-        const int from = rmin_[static_cast<std::size_t>(r)];
+        const std::uint64_t* bm = blocks_.data() + static_cast<std::size_t>(r) * words_;
+        auto bit = [&](int b) { return b < nblocks && ((bm[b >> 6] >> (b & 63)) & 1) != 0; };
+        auto next_set = [&](int b) {  // first touched block at or after b (nblocks: none)
+            while (b < nblocks) {
+                const std::uint64_t wv = bm[b >> 6] >> (b & 63);
+                if (wv) return b + __builtin_ctzll(wv);
+                b = (b | 63) + 1;
+            }
+            return nblocks;
+        };
+        const int first_block = next_set(0);
+        if (first_block >= nblocks) continue;
+        const int from = first_block << kBlockShift;
         const std::size_t row_base = static_cast<std::size_t>(r) * stride_;
         double* acc_row = acc_.data() + row_base;
         patches_.clear();
@@ -381,17 +246,32 @@ void Direct::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
                 patches_.push_back({static_cast<std::uint32_t>(col), static_cast<std::uint8_t>(c * 255.0 + 0.5)});
             }
         }
-        const int to = std::min(last + 1, w_);
-        const double sum = accumulate_row(acc_row, cov_.data(), from, to, 0.0, rule);
-        int end = to;
-        if (to < w_) {  // beyond the last touched cell the coverage is constant
+        // Runs of touched blocks are summed; the gaps between them take the constant coverage.
+        double sum = 0;
+        int pos = from;
+        for (int b = first_block; b < nblocks;) {
+            int e = b + 1;
+            while (bit(e)) ++e;
+            const int a0 = b << kBlockShift;
+            const int a1 = std::min(e << kBlockShift, static_cast<int>(stride_));
+            if (a0 > pos && pos < w_) {
+                const std::uint8_t c = coverage_u8(sum, rule);
+                std::memset(cov_.data() + pos, c, static_cast<std::size_t>(std::min(a0, w_) - pos));
+            }
+            const int to = std::min(a1, w_);
+            if (to > a0) sum = accumulate_row(acc_row, cov_.data(), a0, to, sum, rule);
+            for (int k = std::max(a0, w_); k < a1; ++k) acc_row[k] = 0.0;  // spill cells
+            pos = std::max(pos, to);
+            b = next_set(e);
+        }
+        int end = pos;
+        if (pos < w_) {  // beyond the last touched cell the coverage is constant
             const std::uint8_t tail = coverage_u8(sum, rule);
             if (tail != 0) {
-                std::memset(cov_.data() + to, tail, static_cast<std::size_t>(w_ - to));
+                std::memset(cov_.data() + pos, tail, static_cast<std::size_t>(w_ - pos));
                 end = w_;
             }
         }
-        for (int k = std::max(w_, from); k <= last; ++k) acc_row[k] = 0.0;  // spill cells
         for (const auto& p : patches_) cov_[p.first] = p.second;
         if (end > from) sink.row(oy + r, ox + from, end - from, cov_.data() + from);
     }

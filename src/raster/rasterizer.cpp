@@ -16,6 +16,7 @@
 
 #include "casteljau/error.hpp"
 #include "path/flatten_internal.hpp"
+#include "raster/direct.hpp"
 #include "raster/raster_internal.hpp"
 
 namespace casteljau {

@@ -1,0 +1,250 @@
+// Internal: the direct path of the raster stage (see direct.cpp). The per-edge walk is here, in
+// the header, so that it inlines into the flattener's loop in rasterizer.cpp.
+#pragma once
+
+#include <climits>
+#include <cmath>
+#include <string>
+
+#include "casteljau/error.hpp"
+#include "raster/raster_internal.hpp"
+
+namespace casteljau::raster {
+
+// The direct path (direct.cpp), used when the shape's clipped bounds fit one buffer: edges are
+// accumulated the moment the flattener produces them, with no edge list and no strips, and the
+// overlap check works on "visits" (maximal runs of consecutive edges of one contour inside one
+// cell) instead of per-edge tags. See the comment at the top of direct.cpp.
+class Direct {
+public:
+    // Starts a shape of w x h cells. `track`: record visits for the exact overlap check.
+    void begin(int w, int h, bool track);
+    // One straight edge in cell coordinates (clamped to [0, w] x [0, h]).
+    inline void push(double x0, double y0, double x1, double y1);
+    // The current contour is complete (its closing edge was pushed).
+    void contour_end();
+    // Resolves the marked cells and hands the rows to the sink, at pixel offset (ox, oy).
+    void finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats);
+
+private:
+    struct Visit {
+        std::uint32_t cell;     // row * stride + col
+        std::int32_t next;      // the cell's previous visit (-1: none)
+        std::uint32_t s0, s1;   // first and last edge of the visit (indices into segs_)
+        std::int32_t pre;       // merged visit holding the part of this run before the contour start
+        std::uint8_t dirs;      // +x, -x, +y, -y seen along the run
+        bool merged_away;       // this record is the first part of another visit (`pre` of it)
+    };
+
+    template <bool kTrack>
+    inline void row_piece(int r, double xa, double ya, double xb, double yb, std::uint32_t sid, std::uint8_t bits);
+    template <bool kTrack>
+    inline void walk(double x0, double y0, double x1, double y1);
+    inline void touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits);
+    bool harmless_two(const Visit& a, const Visit& b, int col, int row);
+    void gather(const Visit& v, int col, int row, std::vector<ExactScratch::Piece>& out) const;
+    void classify();
+    bool simple_run(const Visit& v) const;
+
+    int w_ = 0, h_ = 0;
+    std::size_t stride_ = 0;
+    bool track_ = false;
+    bool dirty_ = false;            // buffers may hold data from an interrupted shape
+    std::vector<double> acc_;       // cover/area, (w + 2) x h, all zero between shapes
+    std::vector<std::int32_t> head_;  // per cell: last visit + 1 (0: none), all zero between shapes
+    // Touched cells, per row, in blocks of kBlock cells: bit b of the row's words is block b. The
+    // scan only sums touched blocks; between them the coverage is constant.
+    static constexpr int kBlockShift = 3;
+    std::vector<std::uint64_t> blocks_;
+    std::size_t words_ = 1;  // words per row
+    inline void mark(int r, int c0, int c1);
+    std::vector<Edge> segs_;         // the edges (kept when tracking: exact cells need them)
+    std::size_t count_ = 0;          // edges pushed
+    std::vector<Visit> visits_;
+    std::vector<std::uint32_t> cands_;     // cells with two or more visits, or a non-monotone one
+    std::vector<std::uint32_t> exact_;     // cells to compute exactly (sorted)
+    std::vector<std::uint32_t> exact_at_;  // start of each exact cell's edges in exact_ids_
+    std::vector<std::uint32_t> exact_ids_;
+    std::vector<std::uint8_t> cov_;
+    std::vector<std::pair<std::uint32_t, std::uint8_t>> patches_;
+    std::vector<ExactScratch::Piece> pa_, pb_;
+    ExactScratch scratch_;
+    // Walk state.
+    std::uint32_t cur_cell_ = 0xffffffffu;
+    std::int32_t cur_visit_ = -1;
+    std::size_t contour_visit_ = 0;  // first visit of the current contour
+    double px_ = 0, py_ = 0;         // end of the last edge
+    double sx_ = 0, sy_ = 0;         // start of the contour's first edge
+    bool contour_started_ = false;
+};
+
+namespace direct_detail {
+
+inline int ifloor(double v) {
+    const int i = static_cast<int>(v);
+    return i > v ? i - 1 : i;
+}
+inline int iceil(double v) {
+    const int i = static_cast<int>(v);
+    return i < v ? i + 1 : i;
+}
+inline double clampd(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
+
+constexpr std::uint32_t kNoCell = 0xffffffffu;
+
+}  // namespace direct_detail
+
+inline void Direct::touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits) {
+    if (cell == cur_cell_) {
+        Visit& v = visits_[static_cast<std::size_t>(cur_visit_)];
+        v.s1 = sid;
+        v.dirs |= bits;
+        return;
+    }
+    cur_cell_ = cell;
+    const std::int32_t h = head_[cell];
+    cur_visit_ = static_cast<std::int32_t>(visits_.size());
+    visits_.push_back({cell, h - 1, sid, sid, -1, bits, false});
+    head_[cell] = cur_visit_ + 1;
+    if (h != 0) cands_.push_back(cell);
+}
+
+// Marks cells [c0, c1] of row r as touched.
+[[gnu::always_inline]] inline void Direct::mark(int r, int c0, int c1) {
+    std::uint64_t* m = blocks_.data() + static_cast<std::size_t>(r) * words_;
+    const unsigned b0 = static_cast<unsigned>(c0) >> kBlockShift, b1 = static_cast<unsigned>(c1) >> kBlockShift;
+    if (b1 < 64) {
+        m[0] |= (b1 == 63 ? ~std::uint64_t(0) : (std::uint64_t(2) << b1) - 1) & ~((std::uint64_t(1) << b0) - 1);
+        return;
+    }
+    for (unsigned b = b0; b <= b1; ++b) m[b >> 6] |= std::uint64_t(1) << (b & 63);
+}
+
+template <bool kTrack>
+[[gnu::always_inline]] inline void Direct::row_piece(int r, double xa, double ya, double xb, double yb,
+                                                     std::uint32_t sid, std::uint8_t bits) {
+    const double dy = yb - ya;
+    double* acc = acc_.data() + static_cast<std::size_t>(r) * stride_;
+    const double xl = xa < xb ? xa : xb, xr = xa < xb ? xb : xa;
+    const int c0 = direct_detail::ifloor(xl);
+    const int c1 = direct_detail::iceil(xr) - 1;
+    if (c1 <= c0) {
+        const double a = dy * ((c0 + 1) - 0.5 * (xl + xr));
+        acc[c0] += a;
+        acc[c0 + 1] += dy - a;
+        mark(r, c0, c0 + 1);
+        if constexpr (kTrack) {
+            if (xl == xr && xl == c0) cur_cell_ = direct_detail::kNoCell;  // on the cell's left side: no visit
+            else touch(static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_) + static_cast<std::uint32_t>(c0), sid, bits);
+        }
+        return;
+    }
+    mark(r, c0, c1 + 1);
+    const std::uint32_t base = static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_);
+    const double s = dy / (xr - xl);  // height per unit of x
+    if (xa < xb) {
+        double u0 = xa;
+        for (int c = c0; c <= c1; ++c) {
+            const double u1 = c == c1 ? xb : c + 1.0;
+            const double d = s * (u1 - u0);
+            const double a = d * ((c + 1) - 0.5 * (u0 + u1));
+            acc[c] += a;
+            acc[c + 1] += d - a;
+            if constexpr (kTrack) touch(base + static_cast<std::uint32_t>(c), sid, bits);
+            u0 = u1;
+        }
+    } else {
+        double u1 = xa;
+        for (int c = c1; c >= c0; --c) {
+            const double u0 = c == c0 ? xb : static_cast<double>(c);
+            const double d = s * (u1 - u0);
+            const double a = d * ((c + 1) - 0.5 * (u0 + u1));
+            acc[c] += a;
+            acc[c + 1] += d - a;
+            if constexpr (kTrack) touch(base + static_cast<std::uint32_t>(c), sid, bits);
+            u1 = u0;
+        }
+    }
+}
+
+inline void Direct::push(double x0, double y0, double x1, double y1) {
+    const double W = w_, H = h_;
+    x0 = direct_detail::clampd(x0, 0, W);
+    x1 = direct_detail::clampd(x1, 0, W);
+    y0 = direct_detail::clampd(y0, 0, H);
+    y1 = direct_detail::clampd(y1, 0, H);
+    if (x0 == x1 && y0 == y1) return;
+    if (++count_ > limits::kMaxFlattenedSegments)
+        throw Error(ErrorKind::Limit,
+                    "path too complex: more than " + std::to_string(limits::kMaxFlattenedSegments) + " edges");
+    if (track_) walk<true>(x0, y0, x1, y1);
+    else walk<false>(x0, y0, x1, y1);
+}
+
+template <bool kTrack>
+[[gnu::always_inline]] inline void Direct::walk(double x0, double y0, double x1, double y1) {
+    std::uint32_t sid = 0;
+    std::uint8_t bits = 0;
+    if constexpr (kTrack) {
+        if (x0 != px_ || y0 != py_) cur_cell_ = direct_detail::kNoCell;  // a gap (clipped away): a new run starts
+        if (!contour_started_) {
+            contour_started_ = true;
+            sx_ = x0;
+            sy_ = y0;
+        }
+        px_ = x1;
+        py_ = y1;
+        sid = static_cast<std::uint32_t>(segs_.size());
+        segs_.push_back({x0, y0, x1, y1, -1, -1});
+        bits = static_cast<std::uint8_t>((x1 > x0 ? 1 : 0) | (x1 < x0 ? 2 : 0) | (y1 > y0 ? 4 : 0) | (y1 < y0 ? 8 : 0));
+    }
+    if (y0 == y1) {
+        // No cover; it still separates regions inside the cells it crosses.
+        if constexpr (kTrack) {
+            const int r = direct_detail::ifloor(y0);
+            if (r == y0 || r >= h_) {
+                cur_cell_ = direct_detail::kNoCell;  // on a row boundary
+                return;
+            }
+            const std::uint32_t base = static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_);
+            const int c0 = direct_detail::ifloor(std::min(x0, x1));
+            const int c1 = std::max(c0, direct_detail::iceil(std::max(x0, x1)) - 1);
+            if (x1 > x0)
+                for (int c = c0; c <= c1; ++c) touch(base + static_cast<std::uint32_t>(c), sid, bits);
+            else
+                for (int c = c1; c >= c0; --c) touch(base + static_cast<std::uint32_t>(c), sid, bits);
+        }
+        return;
+    }
+    if (y1 > y0) {
+        const int r0 = direct_detail::ifloor(y0), rend = direct_detail::iceil(y1) - 1;
+        if (rend <= r0) return row_piece<kTrack>(r0, x0, y0, x1, y1, sid, bits);  // one row
+        const double k = (x1 - x0) / (y1 - y0);
+        const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
+        double ya = y0, xa = x0;
+        for (int r = r0; r < rend; ++r) {
+            const double yb = r + 1.0;
+            const double xb = direct_detail::clampd(x0 + (yb - y0) * k, xlo, xhi);
+            row_piece<kTrack>(r, xa, ya, xb, yb, sid, bits);
+            ya = yb;
+            xa = xb;
+        }
+        row_piece<kTrack>(rend, xa, ya, x1, y1, sid, bits);
+    } else {
+        const int r0 = direct_detail::iceil(y0) - 1, rend = direct_detail::ifloor(y1);
+        if (rend >= r0) return row_piece<kTrack>(r0, x0, y0, x1, y1, sid, bits);  // one row
+        const double k = (x1 - x0) / (y1 - y0);
+        const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
+        double ya = y0, xa = x0;
+        for (int r = r0; r > rend; --r) {
+            const double yb = r;
+            const double xb = direct_detail::clampd(x0 + (yb - y0) * k, xlo, xhi);
+            row_piece<kTrack>(r, xa, ya, xb, yb, sid, bits);
+            ya = yb;
+            xa = xb;
+        }
+        row_piece<kTrack>(rend, xa, ya, x1, y1, sid, bits);
+    }
+}
+
+}  // namespace casteljau::raster
