@@ -173,7 +173,7 @@ void Direct::classify() {
     exact_at_.clear();
     exact_ids_.clear();
     for (const Visit& v : visits_)
-        if (!v.merged_away && !simple_run(v)) cands_.push_back(v.cell);
+        if (!monotone(v.dirs) && !v.merged_away && !simple_run(v)) cands_.push_back(v.cell);
     if (cands_.empty()) return;
     std::sort(cands_.begin(), cands_.end());
     cands_.erase(std::unique(cands_.begin(), cands_.end()), cands_.end());
