@@ -6,6 +6,9 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <algorithm>
+#include <cstring>
+
 #include "raster/raster_internal.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -13,7 +16,8 @@ namespace casteljau::raster {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-double AccumulateRowImpl(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule) {
+HWY_INLINE double ScanRange(double* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT cov, int from, int to, double start,
+                             FillRule rule) {
     double sum = start;
     int i = from;
 #if HWY_TARGET != HWY_SCALAR
@@ -56,6 +60,47 @@ double AccumulateRowImpl(double* acc, std::uint8_t* cov, int from, int to, doubl
     return sum;
 }
 
+double AccumulateRowImpl(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule) {
+    return ScanRange(acc, cov, from, to, start, rule);
+}
+
+int ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::uint64_t* bm, int words, int w, int stride,
+                   FillRule rule, int from) {
+    const int nb = words * 64;
+    auto bit = [&](int b) { return b < nb && ((bm[b >> 6] >> (b & 63)) & 1) != 0; };
+    auto next_set = [&](int b) {
+        while (b < nb) {
+            const std::uint64_t v = bm[b >> 6] >> (b & 63);
+            if (v) return b + __builtin_ctzll(v);
+            b = (b | 63) + 1;
+        }
+        return nb;
+    };
+    double sum = 0;
+    int pos = from;
+    for (int b = from >> kScanBlockShift; b < nb;) {
+        int e = b + 1;
+        while (bit(e)) ++e;
+        const int a0 = b << kScanBlockShift;
+        const int a1 = std::min(e << kScanBlockShift, stride);
+        if (a0 > pos && pos < w)
+            std::memset(cov + pos, coverage_u8(sum, rule), static_cast<std::size_t>(std::min(a0, w) - pos));
+        const int to = std::min(a1, w);
+        if (to > a0) sum = ScanRange(acc, cov, a0, to, sum, rule);
+        for (int k = std::max(a0, w); k < a1; ++k) acc[k] = 0.0;  // spill cells
+        if (to > pos) pos = to;
+        b = next_set(e);
+    }
+    if (pos < w) {  // beyond the last touched cell the coverage is constant
+        const std::uint8_t tail = coverage_u8(sum, rule);
+        if (tail != 0) {
+            std::memset(cov + pos, tail, static_cast<std::size_t>(w - pos));
+            pos = w;
+        }
+    }
+    return pos;
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace casteljau::raster
 HWY_AFTER_NAMESPACE();
@@ -63,6 +108,12 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace casteljau::raster {
 HWY_EXPORT(AccumulateRowImpl);
+HWY_EXPORT(ScanBlocksImpl);
+
+int scan_blocks(double* acc, std::uint8_t* cov, const std::uint64_t* blocks, int words, int w, int stride,
+                FillRule rule, int from) {
+    return HWY_DYNAMIC_DISPATCH(ScanBlocksImpl)(acc, cov, blocks, words, w, stride, rule, from);
+}
 
 double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule) {
     return HWY_DYNAMIC_DISPATCH(AccumulateRowImpl)(acc, cov, from, to, start, rule);

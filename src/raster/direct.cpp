@@ -216,7 +216,6 @@ void Direct::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
     const int nblocks = static_cast<int>(words_ * 64);
     for (int r = 0; r < h_; ++r) {
         const std::uint64_t* bm = blocks_.data() + static_cast<std::size_t>(r) * words_;
-        auto bit = [&](int b) { return b < nblocks && ((bm[b >> 6] >> (b & 63)) & 1) != 0; };
         auto next_set = [&](int b) {  // first touched block at or after b (nblocks: none)
             while (b < nblocks) {
                 const std::uint64_t wv = bm[b >> 6] >> (b & 63);
@@ -246,32 +245,8 @@ void Direct::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
                 patches_.push_back({static_cast<std::uint32_t>(col), static_cast<std::uint8_t>(c * 255.0 + 0.5)});
             }
         }
-        // Runs of touched blocks are summed; the gaps between them take the constant coverage.
-        double sum = 0;
-        int pos = from;
-        for (int b = first_block; b < nblocks;) {
-            int e = b + 1;
-            while (bit(e)) ++e;
-            const int a0 = b << kBlockShift;
-            const int a1 = std::min(e << kBlockShift, static_cast<int>(stride_));
-            if (a0 > pos && pos < w_) {
-                const std::uint8_t c = coverage_u8(sum, rule);
-                std::memset(cov_.data() + pos, c, static_cast<std::size_t>(std::min(a0, w_) - pos));
-            }
-            const int to = std::min(a1, w_);
-            if (to > a0) sum = accumulate_row(acc_row, cov_.data(), a0, to, sum, rule);
-            for (int k = std::max(a0, w_); k < a1; ++k) acc_row[k] = 0.0;  // spill cells
-            pos = std::max(pos, to);
-            b = next_set(e);
-        }
-        int end = pos;
-        if (pos < w_) {  // beyond the last touched cell the coverage is constant
-            const std::uint8_t tail = coverage_u8(sum, rule);
-            if (tail != 0) {
-                std::memset(cov_.data() + pos, tail, static_cast<std::size_t>(w_ - pos));
-                end = w_;
-            }
-        }
+        const int end = scan_blocks(acc_row, cov_.data(), bm, static_cast<int>(words_), w_, static_cast<int>(stride_),
+                                    rule, from);
         for (const auto& p : patches_) cov_[p.first] = p.second;
         if (end > from) sink.row(oy + r, ox + from, end - from, cov_.data() + from);
     }

@@ -54,7 +54,7 @@ private:
     std::vector<std::int32_t> head_;  // per cell: last visit + 1 (0: none), all zero between shapes
     // Touched cells, per row, in blocks of kBlock cells: bit b of the row's words is block b. The
     // scan only sums touched blocks; between them the coverage is constant.
-    static constexpr int kBlockShift = 3;
+    static constexpr int kBlockShift = kScanBlockShift;
     std::vector<std::uint64_t> blocks_;
     std::size_t words_ = 1;  // words per row
     inline void mark(int r, int c0, int c1);

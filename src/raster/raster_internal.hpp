@@ -98,5 +98,14 @@ inline std::uint8_t coverage_u8(double a, FillRule rule) {
 // coverage cov[from, to). Returns the running sum after `to`. Clears acc[from, to).
 double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule);
 
+// One row of the direct path. Bit b of `blocks` (`words` 64-bit words) says cells
+// [b << kScanBlockShift, (b + 1) << kScanBlockShift) were touched. Runs of touched blocks are
+// prefix-summed into cov and cleared in acc; the gaps between them get the constant coverage of the
+// running sum. Cells at or past `w` (spill cells, up to `stride`) are cleared, never delivered.
+// `from` is the first touched block's first cell; returns the end of the valid coverage in cov.
+inline constexpr int kScanBlockShift = 3;
+int scan_blocks(double* acc, std::uint8_t* cov, const std::uint64_t* blocks, int words, int w, int stride,
+                FillRule rule, int from);
+
 }  // namespace casteljau::raster
 
