@@ -9,8 +9,9 @@
 //
 // Range: geometry is clipped in double precision before it is converted to float cell coordinates,
 // so any finite coordinate up to limits::kMaxCoordinate is accepted; the target rectangle is at
-// most limits::kMaxCanvasDimension on each side. Memory grows with the clipped bounds of the shape
-// (processed in strips of bounded size), never with the canvas area.
+// most limits::kMaxCanvasDimension on each side. Memory grows with the clipped bounds of the shape,
+// never with the canvas area: a shape whose clipped bounds hold at most 2^18 pixels is accumulated
+// in one buffer as it is flattened; larger ones are swept in strips of at most 2^18 cells.
 //
 // Thread-safety: a Rasterizer holds scratch buffers; use one per thread. Masks are values.
 #pragma once

@@ -1,6 +1,9 @@
 // Internal types of the raster stage, shared by its files:
-//   rasterizer.cpp  flatten straight into edges (clipping them when the shape leaves the target),
-//                   split the shape's bounds into strips, drive the stages below, deliver rows
+//   rasterizer.cpp  flatten straight into edges (clipping them when the shape leaves the target);
+//                   boxes of at most 2^18 cells go to the direct path, larger ones are split into
+//                   strips and driven through the stages below
+//   direct.cpp      the direct path: accumulate while flattening, find overlapping cells by runs
+//                   of edges per cell, resolve them exactly, scan only the touched blocks
 //   accumulate.cpp  walk each edge through the cells of a strip: cover/area into a dense buffer,
 //                   and mark the cells where plain accumulation may be inexact
 //   exact_cell.cpp  exact coverage of a marked cell from the edges inside it
