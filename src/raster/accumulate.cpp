@@ -34,14 +34,6 @@ namespace casteljau::raster {
 
 namespace {
 
-inline int ifloor(double v) {
-    const int i = static_cast<int>(v);
-    return i > v ? i - 1 : i;
-}
-inline int iceil(double v) {
-    const int i = static_cast<int>(v);
-    return i < v ? i + 1 : i;
-}
 
 // Cell (row, col) holding the end point (px, py) of an edge that heads towards (qx, qy): the same
 // cell the walk below attributes that end of the edge to.

@@ -80,14 +80,6 @@ private:
 
 namespace direct_detail {
 
-inline int ifloor(double v) {
-    const int i = static_cast<int>(v);
-    return i > v ? i - 1 : i;
-}
-inline int iceil(double v) {
-    const int i = static_cast<int>(v);
-    return i < v ? i + 1 : i;
-}
 inline double clampd(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
 
 constexpr std::uint32_t kNoCell = 0xffffffffu;
@@ -126,8 +118,8 @@ template <bool kTrack>
     const double dy = yb - ya;
     double* acc = acc_.data() + static_cast<std::size_t>(r) * stride_;
     const double xl = xa < xb ? xa : xb, xr = xa < xb ? xb : xa;
-    const int c0 = direct_detail::ifloor(xl);
-    const int c1 = direct_detail::iceil(xr) - 1;
+    const int c0 = ifloor(xl);
+    const int c1 = iceil(xr) - 1;
     if (c1 <= c0) {
         const double a = dy * ((c0 + 1) - 0.5 * (xl + xr));
         acc[c0] += a;
@@ -201,14 +193,14 @@ template <bool kTrack>
     if (y0 == y1) {
         // No cover; it still separates regions inside the cells it crosses.
         if constexpr (kTrack) {
-            const int r = direct_detail::ifloor(y0);
+            const int r = ifloor(y0);
             if (r == y0 || r >= h_) {
                 cur_cell_ = direct_detail::kNoCell;  // on a row boundary
                 return;
             }
             const std::uint32_t base = static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_);
-            const int c0 = direct_detail::ifloor(std::min(x0, x1));
-            const int c1 = std::max(c0, direct_detail::iceil(std::max(x0, x1)) - 1);
+            const int c0 = ifloor(std::min(x0, x1));
+            const int c1 = std::max(c0, iceil(std::max(x0, x1)) - 1);
             if (x1 > x0)
                 for (int c = c0; c <= c1; ++c) touch(base + static_cast<std::uint32_t>(c), sid, bits);
             else
@@ -217,7 +209,7 @@ template <bool kTrack>
         return;
     }
     if (y1 > y0) {
-        const int r0 = direct_detail::ifloor(y0), rend = direct_detail::iceil(y1) - 1;
+        const int r0 = ifloor(y0), rend = iceil(y1) - 1;
         if (rend <= r0) return row_piece<kTrack>(r0, x0, y0, x1, y1, sid, bits);  // one row
         const double k = (x1 - x0) / (y1 - y0);
         const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
@@ -231,7 +223,7 @@ template <bool kTrack>
         }
         row_piece<kTrack>(rend, xa, ya, x1, y1, sid, bits);
     } else {
-        const int r0 = direct_detail::iceil(y0) - 1, rend = direct_detail::ifloor(y1);
+        const int r0 = iceil(y0) - 1, rend = ifloor(y1);
         if (rend >= r0) return row_piece<kTrack>(r0, x0, y0, x1, y1, sid, bits);  // one row
         const double k = (x1 - x0) / (y1 - y0);
         const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);

@@ -84,6 +84,16 @@ struct ExactScratch {
 double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& ids, double cx, double ry,
                            double integral, FillRule rule, ExactScratch& scratch);
 
+// floor and ceil to int for cell coordinates (in range by construction), cheaper than std::floor.
+inline int ifloor(double v) {
+    const int i = static_cast<int>(v);
+    return i > v ? i - 1 : i;
+}
+inline int iceil(double v) {
+    const int i = static_cast<int>(v);
+    return i < v ? i + 1 : i;
+}
+
 // 8-bit coverage of an accumulated signed area under the fill rule: nonzero min(|a|, 1), even-odd
 // the distance of |a| to the nearest even integer; rounded to nearest.
 inline std::uint8_t coverage_u8(double a, FillRule rule) {
