@@ -32,22 +32,10 @@
 
 namespace casteljau::raster {
 
-namespace {
-
-
-// Cell (row, col) holding the end point (px, py) of an edge that heads towards (qx, qy): the same
-// cell the walk below attributes that end of the edge to.
-inline void end_cell(double px, double py, double qx, double qy, int& row, int& col) {
-    row = qy > py ? ifloor(py) : (qy < py ? iceil(py) - 1 : ifloor(py));
-    col = qx < px ? iceil(px) - 1 : ifloor(px);
-}
-
-inline double orient(double ax, double ay, double bx, double by, double cx, double cy) {
-    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-}
-
-// Do closed segments ab and cd share a point?
 bool segments_meet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+    if (std::max(ax, bx) < std::min(cx, dx) || std::max(cx, dx) < std::min(ax, bx) ||
+        std::max(ay, by) < std::min(cy, dy) || std::max(cy, dy) < std::min(ay, by))
+        return false;
     const double d1 = orient(cx, cy, dx, dy, ax, ay), d2 = orient(cx, cy, dx, dy, bx, by);
     const double d3 = orient(ax, ay, bx, by, cx, cy), d4 = orient(ax, ay, bx, by, dx, dy);
     if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
@@ -56,6 +44,15 @@ bool segments_meet(double ax, double ay, double bx, double by, double cx, double
     };
     return (d1 == 0 && on(cx, cy, dx, dy, ax, ay)) || (d2 == 0 && on(cx, cy, dx, dy, bx, by)) ||
            (d3 == 0 && on(ax, ay, bx, by, cx, cy)) || (d4 == 0 && on(ax, ay, bx, by, dx, dy));
+}
+
+namespace {
+
+// Cell (row, col) holding the end point (px, py) of an edge that heads towards (qx, qy): the same
+// cell the walk below attributes that end of the edge to.
+inline void end_cell(double px, double py, double qx, double qy, int& row, int& col) {
+    row = qy > py ? ifloor(py) : (qy < py ? iceil(py) - 1 : ifloor(py));
+    col = qx < px ? iceil(px) - 1 : ifloor(px);
 }
 
 // Is the pair of edges a, b harmless in cell (col, row)? See the comment at the top of the file.

@@ -64,8 +64,8 @@ double AccumulateRowImpl(double* acc, std::uint8_t* cov, int from, int to, doubl
     return ScanRange(acc, cov, from, to, start, rule);
 }
 
-int ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::uint64_t* bm, int words, int w, int stride,
-                   FillRule rule, int from) {
+ScanSpan ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::uint64_t* bm, int words, int w, int stride,
+                        FillRule rule) {
     const int nb = words * 64;
     auto bit = [&](int b) { return b < nb && ((bm[b >> 6] >> (b & 63)) & 1) != 0; };
     auto next_set = [&](int b) {
@@ -76,9 +76,12 @@ int ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::uint64_t* bm, int 
         }
         return nb;
     };
+    const int first = next_set(0);
+    if (first >= nb) return {0, 0};
+    const int from = first << kScanBlockShift;
     double sum = 0;
     int pos = from;
-    for (int b = from >> kScanBlockShift; b < nb;) {
+    for (int b = first; b < nb;) {
         int e = b + 1;
         while (bit(e)) ++e;
         const int a0 = b << kScanBlockShift;
@@ -98,7 +101,7 @@ int ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::uint64_t* bm, int 
             pos = w;
         }
     }
-    return pos;
+    return {from, pos};
 }
 
 }  // namespace HWY_NAMESPACE
@@ -110,9 +113,9 @@ namespace casteljau::raster {
 HWY_EXPORT(AccumulateRowImpl);
 HWY_EXPORT(ScanBlocksImpl);
 
-int scan_blocks(double* acc, std::uint8_t* cov, const std::uint64_t* blocks, int words, int w, int stride,
-                FillRule rule, int from) {
-    return HWY_DYNAMIC_DISPATCH(ScanBlocksImpl)(acc, cov, blocks, words, w, stride, rule, from);
+ScanSpan scan_blocks(double* acc, std::uint8_t* cov, const std::uint64_t* blocks, int words, int w, int stride,
+                     FillRule rule) {
+    return HWY_DYNAMIC_DISPATCH(ScanBlocksImpl)(acc, cov, blocks, words, w, stride, rule);
 }
 
 double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule) {

@@ -23,7 +23,6 @@
 // Only positive-length pieces inside the open cell count as visits: an edge along a cell's
 // boundary only moves cover, which accumulation gets right.
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -35,26 +34,7 @@ namespace casteljau::raster {
 
 namespace {
 
-using direct_detail::clampd;
-using direct_detail::kNoCell;
-
 inline bool monotone(std::uint8_t d) { return (d & 3) != 3 || (d & 12) != 12; }
-
-inline double orient(double ax, double ay, double bx, double by, double cx, double cy) {
-    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-}
-
-// Do closed segments ab and cd share a point?
-bool meet(const ExactScratch::Piece& p, const ExactScratch::Piece& q) {
-    if (std::max(p.ax, p.bx) < std::min(q.ax, q.bx) || std::max(q.ax, q.bx) < std::min(p.ax, p.bx) ||
-        std::max(p.ay, p.by) < std::min(q.ay, q.by) || std::max(q.ay, q.by) < std::min(p.ay, p.by))
-        return false;
-    const double d1 = orient(q.ax, q.ay, q.bx, q.by, p.ax, p.ay), d2 = orient(q.ax, q.ay, q.bx, q.by, p.bx, p.by);
-    const double d3 = orient(p.ax, p.ay, p.bx, p.by, q.ax, q.ay), d4 = orient(p.ax, p.ay, p.bx, p.by, q.bx, q.by);
-    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
-    // Touching or collinear (the boxes overlap): count as meeting, the exact path decides.
-    return d1 == 0 || d2 == 0 || d3 == 0 || d4 == 0;
-}
 
 // Position of a point on the boundary of the unit cell (local coordinates) as a parameter in
 // [0, 4) going around it; -1 when the point is not on the boundary.
@@ -63,10 +43,10 @@ double boundary_param(double x, double y) {
     const double dt = y, dr = 1 - x, db = 1 - y, dl = x;
     const double m = std::min(std::min(dt, dr), std::min(db, dl));
     if (m > eps) return -1;
-    if (m == dt) return clampd(x, 0, 1);
-    if (m == dr) return 1 + clampd(y, 0, 1);
-    if (m == db) return 2 + (1 - clampd(x, 0, 1));
-    return 3 + (1 - clampd(y, 0, 1));
+    if (m == dt) return std::clamp(x, 0.0, 1.0);
+    if (m == dr) return 1 + std::clamp(y, 0.0, 1.0);
+    if (m == db) return 2 + (1 - std::clamp(x, 0.0, 1.0));
+    return 3 + (1 - std::clamp(y, 0.0, 1.0));
 }
 
 }  // namespace
@@ -139,7 +119,7 @@ bool Direct::harmless_two(const Visit& a, const Visit& b, int col, int row) {
     if (pa_.empty() || pb_.empty()) return false;
     for (const auto& p : pa_)
         for (const auto& q : pb_)
-            if (meet(p, q)) return false;
+            if (segments_meet(p.ax, p.ay, p.bx, p.by, q.ax, q.ay, q.bx, q.by)) return false;
     const double ta0 = boundary_param(pa_.front().ax, pa_.front().ay), ta1 = boundary_param(pa_.back().bx, pa_.back().by);
     const double tb0 = boundary_param(pb_.front().ax, pb_.front().ay), tb1 = boundary_param(pb_.back().bx, pb_.back().by);
     if (ta0 < 0 || ta1 < 0 || tb0 < 0 || tb1 < 0) return false;
@@ -213,42 +193,27 @@ void Direct::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
     }
     if (cov_.size() < stride_) cov_.resize(stride_);
     std::size_t ei = 0;
-    const int nblocks = static_cast<int>(words_ * 64);
     for (int r = 0; r < h_; ++r) {
-        const std::uint64_t* bm = blocks_.data() + static_cast<std::size_t>(r) * words_;
-        auto next_set = [&](int b) {  // first touched block at or after b (nblocks: none)
-            while (b < nblocks) {
-                const std::uint64_t wv = bm[b >> 6] >> (b & 63);
-                if (wv) return b + __builtin_ctzll(wv);
-                b = (b | 63) + 1;
-            }
-            return nblocks;
-        };
-        const int first_block = next_set(0);
-        if (first_block >= nblocks) continue;
-        const int from = first_block << kBlockShift;
         const std::size_t row_base = static_cast<std::size_t>(r) * stride_;
         double* acc_row = acc_.data() + row_base;
         patches_.clear();
-        if (ei < exact_.size() && exact_[ei] < row_base + stride_) {
-            double prefix = 0;
-            int pos = from;
-            for (; ei < exact_.size() && exact_[ei] < row_base + stride_; ++ei) {
-                const int col = static_cast<int>(exact_[ei] - row_base);
-                for (; pos <= col; ++pos) prefix += acc_row[pos];
-                if (col >= w_) continue;
-                auto& ids = scratch_.ids;  // exact_cell_coverage does not use scratch_.ids itself
-                ids.assign(exact_ids_.begin() + exact_at_[ei], exact_ids_.begin() + exact_at_[ei + 1]);
-                std::sort(ids.begin(), ids.end());
-                ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-                const double c = exact_cell_coverage(segs_.data(), ids, col, r, prefix, rule, scratch_);
-                patches_.push_back({static_cast<std::uint32_t>(col), static_cast<std::uint8_t>(c * 255.0 + 0.5)});
-            }
+        // Exact cells of the row first (the scan clears acc); untouched cells hold zero, so the
+        // integral up to a cell is the plain sum from the row's start.
+        double prefix = 0;
+        int pos = 0;
+        for (; ei < exact_.size() && exact_[ei] < row_base + stride_; ++ei) {
+            const int col = static_cast<int>(exact_[ei] - row_base);
+            for (; pos <= col; ++pos) prefix += acc_row[pos];
+            if (col >= w_) continue;
+            auto& ids = scratch_.ids;  // exact_cell_coverage does not use scratch_.ids itself
+            ids.assign(exact_ids_.begin() + exact_at_[ei], exact_ids_.begin() + exact_at_[ei + 1]);
+            patches_.push_back({static_cast<std::uint32_t>(col), exact_cell_u8(segs_.data(), ids, col, r, prefix, rule, scratch_)});
         }
-        const int end = scan_blocks(acc_row, cov_.data(), bm, static_cast<int>(words_), w_, static_cast<int>(stride_),
-                                    rule, from);
+        const ScanSpan span = scan_blocks(acc_row, cov_.data(), blocks_.data() + static_cast<std::size_t>(r) * words_,
+                                          static_cast<int>(words_), w_, static_cast<int>(stride_), rule);
+        if (span.end <= span.from) continue;
         for (const auto& p : patches_) cov_[p.first] = p.second;
-        if (end > from) sink.row(oy + r, ox + from, end - from, cov_.data() + from);
+        sink.row(oy + r, ox + span.from, span.end - span.from, cov_.data() + span.from);
     }
     dirty_ = false;
 }

@@ -2,8 +2,7 @@
 // the header, so that it inlines into the flattener's loop in rasterizer.cpp.
 #pragma once
 
-#include <climits>
-#include <cmath>
+#include <algorithm>
 #include <string>
 
 #include "casteljau/error.hpp"
@@ -70,21 +69,14 @@ private:
     std::vector<ExactScratch::Piece> pa_, pb_;
     ExactScratch scratch_;
     // Walk state.
-    std::uint32_t cur_cell_ = 0xffffffffu;
+    static constexpr std::uint32_t kNoCell = 0xffffffffu;
+    std::uint32_t cur_cell_ = kNoCell;
     std::int32_t cur_visit_ = -1;
     std::size_t contour_visit_ = 0;  // first visit of the current contour
     double px_ = 0, py_ = 0;         // end of the last edge
     double sx_ = 0, sy_ = 0;         // start of the contour's first edge
     bool contour_started_ = false;
 };
-
-namespace direct_detail {
-
-inline double clampd(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
-
-constexpr std::uint32_t kNoCell = 0xffffffffu;
-
-}  // namespace direct_detail
 
 inline void Direct::touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits) {
     if (cell == cur_cell_) {
@@ -126,7 +118,7 @@ template <bool kTrack>
         acc[c0 + 1] += dy - a;
         mark(r, c0, c0 + 1);
         if constexpr (kTrack) {
-            if (xl == xr && xl == c0) cur_cell_ = direct_detail::kNoCell;  // on the cell's left side: no visit
+            if (xl == xr && xl == c0) cur_cell_ = kNoCell;  // on the cell's left side: no visit
             else touch(static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_) + static_cast<std::uint32_t>(c0), sid, bits);
         }
         return;
@@ -161,10 +153,10 @@ template <bool kTrack>
 
 inline void Direct::push(double x0, double y0, double x1, double y1) {
     const double W = w_, H = h_;
-    x0 = direct_detail::clampd(x0, 0, W);
-    x1 = direct_detail::clampd(x1, 0, W);
-    y0 = direct_detail::clampd(y0, 0, H);
-    y1 = direct_detail::clampd(y1, 0, H);
+    x0 = std::clamp(x0, 0.0, W);
+    x1 = std::clamp(x1, 0.0, W);
+    y0 = std::clamp(y0, 0.0, H);
+    y1 = std::clamp(y1, 0.0, H);
     if (x0 == x1 && y0 == y1) return;
     if (++count_ > limits::kMaxFlattenedSegments)
         throw Error(ErrorKind::Limit,
@@ -178,7 +170,7 @@ template <bool kTrack>
     std::uint32_t sid = 0;
     std::uint8_t bits = 0;
     if constexpr (kTrack) {
-        if (x0 != px_ || y0 != py_) cur_cell_ = direct_detail::kNoCell;  // a gap (clipped away): a new run starts
+        if (x0 != px_ || y0 != py_) cur_cell_ = kNoCell;  // a gap (clipped away): a new run starts
         if (!contour_started_) {
             contour_started_ = true;
             sx_ = x0;
@@ -195,7 +187,7 @@ template <bool kTrack>
         if constexpr (kTrack) {
             const int r = ifloor(y0);
             if (r == y0 || r >= h_) {
-                cur_cell_ = direct_detail::kNoCell;  // on a row boundary
+                cur_cell_ = kNoCell;  // on a row boundary
                 return;
             }
             const std::uint32_t base = static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_);
@@ -216,7 +208,7 @@ template <bool kTrack>
         double ya = y0, xa = x0;
         for (int r = r0; r < rend; ++r) {
             const double yb = r + 1.0;
-            const double xb = direct_detail::clampd(x0 + (yb - y0) * k, xlo, xhi);
+            const double xb = std::clamp(x0 + (yb - y0) * k, xlo, xhi);
             row_piece<kTrack>(r, xa, ya, xb, yb, sid, bits);
             ya = yb;
             xa = xb;
@@ -230,7 +222,7 @@ template <bool kTrack>
         double ya = y0, xa = x0;
         for (int r = r0; r > rend; --r) {
             const double yb = r;
-            const double xb = direct_detail::clampd(x0 + (yb - y0) * k, xlo, xhi);
+            const double xb = std::clamp(x0 + (yb - y0) * k, xlo, xhi);
             row_piece<kTrack>(r, xa, ya, xb, yb, sid, bits);
             ya = yb;
             xa = xb;

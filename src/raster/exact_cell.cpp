@@ -27,10 +27,6 @@ inline double fill_value(long w, FillRule rule) {
     return rule == FillRule::NonZero ? (w != 0 ? 1.0 : 0.0) : ((w & 1) ? 1.0 : 0.0);
 }
 
-inline double orient(double ax, double ay, double bx, double by, double px, double py) {
-    return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-}
-
 // Reference points inside the unit cell, tried in order until one is in general position.
 constexpr double kRef[4][2] = {{0.5012345, 0.4987654}, {0.3141593, 0.7182818}, {0.6931472, 0.2718282},
                                {0.1414214, 0.8660254}};
@@ -191,6 +187,13 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
     double coverage = 0;
     for (const auto& r : sc.regions) coverage += fill_value(w0 + r.b, rule) * r.area;
     return std::clamp(coverage, 0.0, 1.0);
+}
+
+std::uint8_t exact_cell_u8(const Edge* edges, std::vector<std::uint32_t>& ids, double cx, double ry, double integral,
+                           FillRule rule, ExactScratch& scratch) {
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    return area_to_u8(exact_cell_coverage(edges, ids, cx, ry, integral, rule, scratch));
 }
 
 }  // namespace casteljau::raster

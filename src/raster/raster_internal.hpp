@@ -94,6 +94,21 @@ inline int iceil(double v) {
     return i < v ? i + 1 : i;
 }
 
+// Twice the signed area of triangle (a, b, c): > 0 when c lies to the left of a -> b (y up).
+inline double orient(double ax, double ay, double bx, double by, double cx, double cy) {
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+
+// Do the closed segments ab and cd share a point? (accumulate.cpp)
+bool segments_meet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy);
+
+// 8-bit coverage of an exact area in [0, 1], rounded to nearest.
+inline std::uint8_t area_to_u8(double c) { return static_cast<std::uint8_t>(c * 255.0 + 0.5); }
+
+// exact_cell_coverage as 8-bit coverage; sorts `ids` and drops repeats first.
+std::uint8_t exact_cell_u8(const Edge* edges, std::vector<std::uint32_t>& ids, double cx, double ry, double integral,
+                           FillRule rule, ExactScratch& scratch);
+
 // 8-bit coverage of an accumulated signed area under the fill rule: nonzero min(|a|, 1), even-odd
 // the distance of |a| to the nearest even integer; rounded to nearest.
 inline std::uint8_t coverage_u8(double a, FillRule rule) {
@@ -115,10 +130,11 @@ double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double s
 // [b << kScanBlockShift, (b + 1) << kScanBlockShift) were touched. Runs of touched blocks are
 // prefix-summed into cov and cleared in acc; the gaps between them get the constant coverage of the
 // running sum. Cells at or past `w` (spill cells, up to `stride`) are cleared, never delivered.
-// `from` is the first touched block's first cell; returns the end of the valid coverage in cov.
+// Valid coverage is cov[from, end); from = end = 0 when no block was touched.
 inline constexpr int kScanBlockShift = 3;
-int scan_blocks(double* acc, std::uint8_t* cov, const std::uint64_t* blocks, int words, int w, int stride,
-                FillRule rule, int from);
+struct ScanSpan { int from, end; };
+ScanSpan scan_blocks(double* acc, std::uint8_t* cov, const std::uint64_t* blocks, int words, int w, int stride,
+                     FillRule rule);
 
 }  // namespace casteljau::raster
 

@@ -154,8 +154,6 @@ private:
     Mask& mask_;
 };
 
-inline std::uint8_t to_u8(double c) { return static_cast<std::uint8_t>(c * 255.0 + 0.5); }
-
 void check_clip(const IRect& clip) {
     if (clip.width() > limits::kMaxCanvasDimension || clip.height() > limits::kMaxCanvasDimension)
         throw Error(ErrorKind::Limit, "raster target exceeds " + std::to_string(limits::kMaxCanvasDimension) +
@@ -351,12 +349,8 @@ void Rasterizer::Impl::resolve_row(const FillOptions& opts, raster::Strip& s, in
             if (!ids.empty() && ids.back() == id) continue;
             ids.push_back(id);
         }
-        std::sort(ids.begin(), ids.end());
-        ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-        if (col < s.width) {
-            const double c = raster::exact_cell_coverage(edges.data(), ids, col, s.y0 + r, prefix, opts.rule, scratch);
-            patches.push_back({cell, to_u8(c)});
-        }
+        if (col < s.width)
+            patches.push_back({cell, raster::exact_cell_u8(edges.data(), ids, col, s.y0 + r, prefix, opts.rule, scratch)});
         ++mi;
     }
 }
