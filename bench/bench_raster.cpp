@@ -44,17 +44,6 @@ const bench::GlyphSet& glyphs(int px) {
     return *s;
 }
 
-class BufferSink final : public casteljau::SpanSink {
-public:
-    BufferSink(std::uint8_t* b, int s) : buf(b), stride(s) {}
-    std::uint8_t* buf;
-    int stride;
-    void row(int y, int x, int length, const std::uint8_t* coverage) override {
-        std::memcpy(buf + static_cast<std::size_t>(y) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(x),
-                    coverage, static_cast<std::size_t>(length));
-    }
-};
-
 Path random_curves(bool cubic, int count) {
     std::mt19937 rng(12345);
     std::uniform_real_distribution<double> u(0.0, 512.0);
@@ -117,7 +106,7 @@ void BM_RasterGlyphs(benchmark::State& state) {
         exact = 0;
         for (const bench::Glyph& g : set.glyphs()) {
             std::memset(buf.data(), 0, g.box.pixels());
-            BufferSink sink(buf.data(), g.box.width);
+            bench::BufferSink sink(buf.data(), g.box.width);
             rast.fill(g.path, g.to_box, opts, IRect{0, 0, g.box.width, g.box.height}, sink);
             exact += rast.last_stats().exact_cells;
         }
@@ -146,7 +135,7 @@ void BM_FillMaskGlyphs(benchmark::State& state) {
 void fill_shape(benchmark::State& state, const Path& path, int w, int h, const FillOptions& opts, bool clear) {
     casteljau::Rasterizer rast;
     std::vector<std::uint8_t> buf(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-    BufferSink sink(buf.data(), w);
+    bench::BufferSink sink(buf.data(), w);
     for (auto _ : state) {
         if (clear) std::memset(buf.data(), 0, buf.size());
         rast.fill(path, Affine::identity(), opts, IRect{0, 0, w, h}, sink);

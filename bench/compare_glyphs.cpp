@@ -137,16 +137,6 @@ bool in_list(const std::string& list, const std::string& name) {
 
 // --- casteljau ---------------------------------------------------------------------------------
 
-class BufferSink final : public casteljau::SpanSink {
-public:
-    std::uint8_t* buf = nullptr;
-    int stride = 0;
-    void row(int y, int x, int length, const std::uint8_t* coverage) override {
-        std::memcpy(buf + static_cast<std::size_t>(y) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(x),
-                    coverage, static_cast<std::size_t>(length));
-    }
-};
-
 class CasteljauFill final : public Renderer {
 public:
     CasteljauFill(bool exact, double tol) : exact_(exact) {
@@ -173,7 +163,7 @@ private:
     casteljau::FillOptions opts_;
     const GlyphSet* set_ = nullptr;
     casteljau::Rasterizer rast_;
-    BufferSink sink_;
+    bench::BufferSink sink_;
     std::vector<std::uint8_t> buf_;
 };
 

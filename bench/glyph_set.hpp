@@ -18,11 +18,13 @@
 #include FT_OUTLINE_H
 
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "casteljau/path.hpp"
+#include "casteljau/raster.hpp"
 
 namespace bench {
 
@@ -113,6 +115,20 @@ struct DiffStats {
     void add(const Coverage& a, const Coverage& b);
     void merge(const DiffStats& o);
     double mean() const { return pixels ? sum / static_cast<double>(pixels) : 0.0; }
+};
+
+// Copies the rasterizer's rows into a caller's 8-bit buffer (`stride` bytes per row, pixel
+// (0, 0) at buf[0]).
+class BufferSink final : public casteljau::SpanSink {
+public:
+    BufferSink() = default;
+    BufferSink(std::uint8_t* b, int s) : buf(b), stride(s) {}
+    std::uint8_t* buf = nullptr;
+    int stride = 0;
+    void row(int y, int x, int length, const std::uint8_t* coverage) override {
+        std::memcpy(buf + static_cast<std::size_t>(y) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(x),
+                    coverage, static_cast<std::size_t>(length));
+    }
 };
 
 }  // namespace bench

@@ -86,20 +86,10 @@ Options parse(int argc, char** argv) {
     return o;
 }
 
-class BufferSink final : public casteljau::SpanSink {
-public:
-    std::uint8_t* buf = nullptr;
-    int stride = 0;
-    void row(int y, int x, int length, const std::uint8_t* coverage) override {
-        std::memcpy(buf + static_cast<std::size_t>(y) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(x),
-                    coverage, static_cast<std::size_t>(length));
-    }
-};
-
 // Renders glyph i of `set` at tolerance `tol` into `buf` (box-sized, row stride = box width).
 struct Renderer {
     casteljau::Rasterizer rast;
-    BufferSink sink;
+    bench::BufferSink sink;
     void render(const bench::Glyph& g, double tol, std::uint8_t* buf) {
         std::memset(buf, 0, g.box.pixels());
         sink.buf = buf;

@@ -67,5 +67,9 @@ ref::Contour star_polygon(Point c, double r, int p, int q, double rotation = 0.0
 // A regular n-gon (clockwise on screen when `clockwise`).
 ref::Contour regular_polygon(Point c, double r, int n, bool clockwise = true, double rotation = 0.0);
 ref::Contour reversed(ref::Contour c);
+// The axis-aligned rectangle [x0, x1] x [y0, y1], clockwise on screen.
+inline ref::Contour rect(double x0, double y0, double x1, double y1) {
+    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
 
 }  // namespace casteljau::testing

@@ -21,8 +21,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 const FillRule kRules[] = {FillRule::NonZero, FillRule::EvenOdd};
 
-Contour rect(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
-
 const char* rule_name(FillRule r) { return r == FillRule::NonZero ? "nonzero" : "even-odd"; }
 
 FillOptions with_rule(FillRule r, double tolerance = kDefaultTolerance) {

@@ -18,17 +18,6 @@ namespace {
 
 int count_verbs(const Path& p, Verb v) { return static_cast<int>(std::count(p.verbs().begin(), p.verbs().end(), v)); }
 
-ErrorKind error_kind_of(const std::function<void()>& f, std::string* message = nullptr) {
-    try {
-        f();
-    } catch (const Error& e) {
-        if (message) *message = e.what();
-        return e.kind();
-    }
-    FAIL("no casteljau::Error thrown");
-    return ErrorKind::InvalidArgument;
-}
-
 std::string temp_file(const std::string& name) {
     return (std::filesystem::temp_directory_path() / ("casteljau_test_font_" + name)).string();
 }

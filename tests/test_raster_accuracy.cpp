@@ -21,8 +21,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Contour rect(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
-
 const FillRule kRules[] = {FillRule::NonZero, FillRule::EvenOdd};
 
 }  // namespace

@@ -17,17 +17,6 @@ using namespace text_test;
 
 namespace {
 
-ErrorKind error_kind_of(const std::function<void()>& f, std::string* message = nullptr) {
-    try {
-        f();
-    } catch (const Error& e) {
-        if (message) *message = e.what();
-        return e.kind();
-    }
-    FAIL("no casteljau::Error thrown");
-    return ErrorKind::InvalidArgument;
-}
-
 TextStyle sized(double px) {
     TextStyle s;
     s.size = px;

@@ -8,16 +8,20 @@
 #include FT_OUTLINE_H
 #include FT_MULTIPLE_MASTERS_H
 
+#include <catch2/catch.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "casteljau/error.hpp"
 #include "casteljau/font.hpp"
 #include "casteljau/paint.hpp"
 #include "casteljau/raster.hpp"
@@ -162,7 +166,31 @@ struct DiffStats {
     int max = 0;      // largest absolute difference, in 1/255 units
     int max_x = 0, max_y = 0;
     long pixels = 0;
+    long sum = 0;
+
+    void add(int d, int x, int y) {  // one compared value, difference d, at pixel (x, y)
+        sum += d;
+        if (d > max) {
+            max = d;
+            max_x = x;
+            max_y = y;
+        }
+        ++pixels;
+    }
+    void finish() { mean = pixels ? static_cast<double>(sum) / static_cast<double>(pixels) : 0; }
 };
+
+// The kind of casteljau::Error that f throws (its message into *message); fails the test if none.
+inline casteljau::ErrorKind error_kind_of(const std::function<void()>& f, std::string* message = nullptr) {
+    try {
+        f();
+    } catch (const casteljau::Error& e) {
+        if (message) *message = e.what();
+        return e.kind();
+    }
+    FAIL("no casteljau::Error thrown");
+    return casteljau::ErrorKind::InvalidArgument;
+}
 
 template <class A, class B>
 DiffStats compare_coverage(const A& a, const B& b) {
@@ -184,19 +212,9 @@ DiffStats compare_coverage(const A& a, const B& b) {
                 ink.y1 = std::max(ink.y1, y + 1);
             }
     u = ink;
-    long sum = 0;
     for (int y = u.y0; y < u.y1; ++y)
-        for (int x = u.x0; x < u.x1; ++x) {
-            const int d = std::abs(static_cast<int>(a.at(x, y)) - static_cast<int>(b.at(x, y)));
-            sum += d;
-            if (d > s.max) {
-                s.max = d;
-                s.max_x = x;
-                s.max_y = y;
-            }
-            ++s.pixels;
-        }
-    s.mean = s.pixels ? static_cast<double>(sum) / static_cast<double>(s.pixels) : 0;
+        for (int x = u.x0; x < u.x1; ++x) s.add(std::abs(static_cast<int>(a.at(x, y)) - static_cast<int>(b.at(x, y))), x, y);
+    s.finish();
     return s;
 }
 
@@ -245,20 +263,11 @@ inline DiffStats compare_pixmaps(const casteljau::Pixmap& a, const casteljau::Pi
         s.mean = 255;
         return s;
     }
-    long sum = 0;
     for (int y = 0; y < a.height(); ++y)
         for (int x = 0; x < a.width(); ++x)
-            for (int c = 0; c < 4; ++c) {
-                const int d = std::abs(static_cast<int>(a.row(y)[4 * x + c]) - static_cast<int>(b.row(y)[4 * x + c]));
-                sum += d;
-                if (d > s.max) {
-                    s.max = d;
-                    s.max_x = x;
-                    s.max_y = y;
-                }
-                ++s.pixels;
-            }
-    s.mean = s.pixels ? static_cast<double>(sum) / static_cast<double>(s.pixels) : 0;
+            for (int c = 0; c < 4; ++c)
+                s.add(std::abs(static_cast<int>(a.row(y)[4 * x + c]) - static_cast<int>(b.row(y)[4 * x + c])), x, y);
+    s.finish();
     return s;
 }
 
