@@ -95,12 +95,12 @@ inline Comparison check_polygons(Rasterizer& r, const ref::Contours& pixel_space
     return check_polygons(r, pixel_space, Affine::identity(), o, clip, what);
 }
 
-// The polygon the library's own flattener makes of `path` at `tolerance` (casteljau::flatten), as
-// contours. The rasterizer must be exact on it (polygon bound): this separates scan-conversion
+// The polygon the library's own flattener makes of `path` at `tolerance` for a fill
+// (casteljau::flatten with FlattenMode::AreaBalanced, as Rasterizer::fill does), as contours. The rasterizer must be exact on it (polygon bound): this separates scan-conversion
 // errors from flattening error, which the curve bounds against the fine reference measure.
 inline ref::Contours library_flattening(const Path& path, const Affine& m, double tolerance) {
     Polyline pl;
-    flatten(path, m, tolerance, pl);
+    flatten(path, m, tolerance, pl, FlattenMode::AreaBalanced);
     ref::Contours cs;
     std::size_t b = 0;
     for (std::uint32_t e : pl.contour_ends) {

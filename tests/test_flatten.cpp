@@ -59,6 +59,76 @@ TEST_CASE("flatten: every curve point is within the tolerance of the polyline", 
     }
 }
 
+namespace {
+Point quad_at(Point p0, Point p1, Point p2, double t) {
+    const double u = 1 - t;
+    return p0 * (u * u) + p1 * (2 * u * t) + p2 * (t * t);
+}
+// Signed area enclosed by a closed polygon (shoelace).
+double polygon_area(const std::vector<Point>& v) {
+    double a = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) a += v[i].cross(v[(i + 1) % v.size()]);
+    return 0.5 * a;
+}
+}  // namespace
+
+TEST_CASE("flatten: quadratics in both modes stay within the tolerance, both ways", "[flatten]") {
+    std::mt19937 rng(4242);
+    std::uniform_real_distribution<double> u(0, 300);
+    for (FlattenMode mode : {FlattenMode::Chords, FlattenMode::AreaBalanced}) {
+        for (double tol : {0.01, 0.05, 0.25}) {
+            for (int i = 0; i < 100; ++i) {
+                const Point p0{u(rng), u(rng)}, p1{u(rng), u(rng)}, p2{u(rng), u(rng)};
+                Path p;
+                p.move_to(p0).quad_to(p1, p2);
+                Polyline pl;
+                flatten(p, Affine{}, tol, pl, mode);
+                REQUIRE(pl.points.front() == p0);
+                REQUIRE(pl.points.back() == p2);
+                // Curve -> polyline, and every polyline point (vertices and chord midpoints) -> curve.
+                std::vector<Point> curve;
+                for (int k = 0; k <= 2000; ++k) curve.push_back(quad_at(p0, p1, p2, k / 2000.0));
+                double to_poly = 0, to_curve = 0;
+                for (const Point& q : curve) to_poly = std::max(to_poly, dist_to_polyline(q, pl));
+                for (std::size_t k = 0; k + 1 < pl.points.size(); ++k)
+                    for (double t : {0.0, 0.25, 0.5, 0.75}) {
+                        const Point q = pl.points[k] + (pl.points[k + 1] - pl.points[k]) * t;
+                        double best = INFINITY;
+                        for (std::size_t j = 0; j + 1 < curve.size(); ++j) best = std::min(best, dist_to_segment(q, curve[j], curve[j + 1]));
+                        to_curve = std::max(to_curve, best);
+                    }
+                INFO("tolerance " << tol << ", " << pl.points.size() << " points");
+                REQUIRE(to_poly <= tol * 1.0000001);
+                REQUIRE(to_curve <= tol * 1.001);  // the curve is sampled (2000 chords)
+            }
+        }
+    }
+}
+
+TEST_CASE("flatten: area-balanced quadratics lose far less area than chords", "[flatten]") {
+    // Area of the region between a parabola arc and its base chord: 2/3 of the triangle's area,
+    // i.e. |cross(P1 - P0, P2 - P0)| / 3. Chords lose area on every piece; balanced pieces only
+    // on the two end pieces (half a piece each).
+    const Point p0{0, 0}, p1{50, 80}, p2{100, 0};
+    const double exact = std::abs((p1 - p0).cross(p2 - p0)) / 3.0;
+    Path p;
+    p.move_to(p0).quad_to(p1, p2);
+    Polyline chords, balanced;
+    flatten(p, Affine{}, 0.05, chords, FlattenMode::Chords);
+    flatten(p, Affine{}, 0.05, balanced, FlattenMode::AreaBalanced);
+    const double e_chords = exact - std::abs(polygon_area(chords.points));
+    const double e_balanced = exact - std::abs(polygon_area(balanced.points));
+    INFO("chords: " << chords.points.size() << " points, area error " << e_chords << "; balanced: "
+                    << balanced.points.size() << " points, area error " << e_balanced);
+    CHECK(e_chords > 0);                              // chords are always inside a convex arc
+    CHECK(balanced.points.size() < chords.points.size());  // the balanced bound is 25/36 of the chord's
+    CHECK(std::abs(e_balanced) < 0.3 * e_chords);
+    // The pieces are equal in parameter, so with n pieces the loss is one chord piece's worth:
+    // (2/3) (|A| / (4 n^2)) * (piece length), with A = P0 - 2 P1 + P2 = (0, -160).
+    const double n = static_cast<double>(balanced.points.size() - 1);
+    CHECK(e_balanced == Approx(exact / (n * n * n)).epsilon(0.05));
+}
+
 TEST_CASE("flatten: the tolerance is in pixels, after the transform", "[flatten]") {
     Path p;
     p.move_to(0, 0).quad_to({1, 1}, {2, 0});

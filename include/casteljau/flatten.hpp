@@ -17,11 +17,24 @@
 namespace casteljau {
 
 // Default flattening tolerance in pixels, chosen by measurement against the exact-area reference
-// (tests/test_raster_accuracy.cpp prints the table): chords lie on the concave side of curves, so
-// the error is a bias, and at 0.05 px DejaVu Sans at 9-12 px has a mean error of 0.7-1.0/255 and
-// a maximum of 10/255; at 0.02 px a random set of overlapping circles still averages 0.52/255.
-// At 0.015 px every case of the suite is within 0.5/255 mean and 8/255 max.
+// (tests/test_raster_accuracy.cpp and bench/tolerance_study print the tables). Fills use
+// area-balanced quadratics (FlattenMode::AreaBalanced); at 0.015 px DejaVu Sans at 12 px has a
+// mean error of 0.17/255 and every size a maximum of at most 6/255, while 0.025 px already
+// reaches 9/255 at 256 px. Every case of the suite is within 0.5/255 mean and 8/255 max.
 inline constexpr double kDefaultTolerance = 0.015;
+
+// Where the vertices of a flattened quadratic go.
+enum class FlattenMode {
+    // Chords: every vertex lies on the curve. Chords cut the concave side of each piece, so a
+    // filled polygon is slightly thinner than the curve (a bias of 2/3 of the chord error).
+    Chords,
+    // Area-balanced (what Rasterizer::fill uses): the interior vertices of each quadratic are moved
+    // off the curve, towards its convex side, by 2/3 of a piece's chord error, so the interior
+    // pieces cross the curve and lose no area; the polyline still stays within `tolerance` of the
+    // curve (src/path/flatten_internal.hpp has the derivation), with fewer pieces. Cubics and
+    // conics are flattened to chords in both modes.
+    AreaBalanced,
+};
 
 // A flattened path: the points of all contours, with contour i spanning
 // points[contour_ends[i-1] .. contour_ends[i]). Contours are open polylines; a fill closes them.
@@ -36,8 +49,10 @@ struct Polyline {
 };
 
 // Flattens `path` mapped by `m` into `out` (cleared first). Throws Error(InvalidData) for a
-// non-finite point or transform, Error(Limit) beyond limits::kMaxFlattenedSegments.
-void flatten(const Path& path, const Affine& m, double tolerance, Polyline& out);
+// non-finite point or transform, Error(Limit) beyond limits::kMaxFlattenedSegments. With
+// FlattenMode::AreaBalanced the result is exactly the polygon Rasterizer::fill scan-converts.
+void flatten(const Path& path, const Affine& m, double tolerance, Polyline& out,
+             FlattenMode mode = FlattenMode::Chords);
 
 // The a-priori flatness bound used for each curve kind: the maximum distance between the curve and
 // its chord is at most this value (exposed for tests).

@@ -92,16 +92,17 @@ Rect check_flatten_input(const Path& path, const Affine& m, double tolerance) {
     return {x0, y0, x1, y1};
 }
 
-void flatten_culled(const Path& path, const Affine& m, double tolerance, const Rect* cull, Polyline& out) {
+void flatten_culled(const Path& path, const Affine& m, double tolerance, const Rect* cull, Polyline& out,
+                    FlattenMode mode) {
     out.clear();
     check_flatten_input(path, m, tolerance);
     out.points.reserve(path.points().size() * 2);
     PolylineSink sink{out};
-    flatten_into(path, m, tolerance, cull, sink);
+    flatten_into(path, m, tolerance, cull, sink, mode == FlattenMode::AreaBalanced);
 }
 
-void flatten(const Path& path, const Affine& m, double tolerance, Polyline& out) {
-    flatten_culled(path, m, tolerance, nullptr, out);
+void flatten(const Path& path, const Affine& m, double tolerance, Polyline& out, FlattenMode mode) {
+    flatten_culled(path, m, tolerance, nullptr, out, mode);
 }
 
 }  // namespace casteljau

@@ -33,6 +33,7 @@ struct Flattener {
     double tol2;       // tolerance squared
     const Rect* cull;  // when set, curves whose control box misses it become their chord
     Sink& out;
+    bool balanced = false;  // area-balanced quadratic pieces (see quad()); only for filling
 
     void emit(Point p) { out.point(p); }
     void finish_contour() { out.end(); }
@@ -54,23 +55,40 @@ struct Flattener {
     void quad(Point a, Point b, Point c) {
         const Point p0 = m(a), p1 = m(b), p2 = m(c);
         if (culled({p0, p1, p2})) return emit(p2);
-        // For a quadratic both halves of a split at t = 1/2 have exactly a quarter of the parent's
-        // second difference, so recursive halving reaches the same depth k on every branch and
-        // emits the points B(i / 2^k). We find k from the root's bound and produce those very
-        // points by forward differencing (exact for a polynomial of degree 2).
-        double b2 = bound2_quad(p0, p1, p2);
-        int depth = 0;
-        while (b2 > tol2 && depth < limits::kMaxFlattenDepth) {
-            b2 *= 1.0 / 16.0;  // the squared bound shrinks 16x per level
-            ++depth;
+        // For a quadratic the second difference of the piece over any parameter interval of
+        // length h is h^2 times the whole curve's, so n uniform pieces each stay within
+        // bound / n^2 of their chords: n = ceil(sqrt(bound / tolerance)) pieces meet the bound.
+        // (Recursive halving reaches the same depth on every branch and so emits the points
+        // B(i / 2^k) for the smallest sufficient power of two; any n >= sqrt(bound / tolerance)
+        // keeps the same proof, and the smallest one saves a third of the edges on average.)
+        // We produce the points B(i / n) by forward differencing (exact for degree 2).
+        //
+        // Area-balanced pieces (`balanced`, used by the rasterizer). With A = P0 - 2 P1 + P2, on a
+        // piece the curve minus its chord is -A h^2 u (1 - u) (u in [0, 1] along the piece): always
+        // on the same side, so chords lose area on every piece and the fill is biased thin. Moving
+        // every interior vertex by v = -A h^2 / 6 makes the difference A h^2 (1/6 - u (1 - u)),
+        // whose integral over u is zero: no area error on interior pieces. The distance is at most
+        // |A| h^2 / 6 there and |A| h^2 max|u^2 - 5u/6| = (25/144) |A| h^2 on the two end pieces
+        // (one end fixed); both are within (25/36) of the chord bound |A| h^2 / 4, which is what
+        // `balanced` measures n against. The end pieces keep half a chord's area error each.
+        const double b2 = bound2_quad(p0, p1, p2);
+        if (!(b2 > tol2)) return emit(p2);
+        const double need = balanced ? b2 * (625.0 / 1296.0) : b2;  // (25/36)^2 of the bound squared
+        // Smallest n >= 2 with n^4 tol^2 >= need: counted up for the common small n (no square
+        // roots or divisions on the glyph path), closed form beyond.
+        int n = 2;
+        while (n < 16 && double(n * n) * double(n * n) * tol2 < need) ++n;
+        if (n == 16 && 65536.0 * tol2 < need) {
+            const double q = std::sqrt(std::sqrt(need / tol2));  // sqrt(bound / tolerance)
+            constexpr int kMaxPieces = 1 << limits::kMaxFlattenDepth;
+            n = q < kMaxPieces ? static_cast<int>(std::ceil(q)) : kMaxPieces;
         }
-        if (depth == 0) return emit(p2);
-        const int n = 1 << depth;
         const double h = 1.0 / n;
         // B(t) = p0 + 2 t (p1 - p0) + t^2 (p0 - 2 p1 + p2): first and second forward differences.
         const Point A = p0 - p1 * 2 + p2, B = (p1 - p0) * 2;
         Point d1 = B * h + A * (h * h), pt = p0;
         const Point d2 = A * (2 * h * h);
+        if (balanced) pt -= A * (h * h * (1.0 / 6.0));
         for (int i = 1; i < n; ++i) {
             pt += d1;
             d1 += d2;
@@ -134,15 +152,21 @@ Rect check_flatten_input(const Path& path, const Affine& m, double tolerance);
 
 // Flattens `path` mapped by `m` into `sink`, which receives begin(p) for each contour start,
 // point(p) for each following polyline vertex, mark_closed() for an explicit close and end().
+//
+// `balanced`: quadratic pieces are moved off the curve so that they lose no area (see
+// Flattener::quad), still within `tolerance` of it. Right for filling; the public flatten(), whose
+// vertices lie on the curve, does not use it.
 template <class Sink>
-void flatten_into(const Path& path, const Affine& m, double tolerance, const Rect* cull, Sink& sink) {
-    flatten_detail::Flattener<Sink> f{m, tolerance * tolerance, cull, sink};
+void flatten_into(const Path& path, const Affine& m, double tolerance, const Rect* cull, Sink& sink,
+                  bool balanced = false) {
+    flatten_detail::Flattener<Sink> f{m, tolerance * tolerance, cull, sink, balanced};
     path.visit(f);
     f.finish_contour();
 }
 
 // As flatten(), but a curve whose transformed control points all lie outside `cull` (when given) is
 // replaced by its chord: outside the clip rectangle only a segment's end points matter to coverage.
-void flatten_culled(const Path& path, const Affine& m, double tolerance, const Rect* cull, Polyline& out);
+void flatten_culled(const Path& path, const Affine& m, double tolerance, const Rect* cull, Polyline& out,
+                    FlattenMode mode = FlattenMode::Chords);
 
 }  // namespace casteljau

@@ -213,13 +213,13 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opts
         const Affine local = Affine::translate(-ox, -oy) * m;
         if (inside) {
             EdgeSink<false, raster::Direct> es{d};
-            flatten_into(path, local, opts.tolerance, nullptr, es);
+            flatten_into(path, local, opts.tolerance, nullptr, es, true);
             es.end();
         } else {
             // Clipped to the box: what lies left of it only adds cover to its first column.
             const Rect cull{-1.0, -1.0, bw + 1.0, bh + 1.0};
             EdgeSink<true, raster::Direct> es{d, static_cast<double>(bw), static_cast<double>(bh)};
-            flatten_into(path, local, opts.tolerance, &cull, es);
+            flatten_into(path, local, opts.tolerance, &cull, es, true);
             es.end();
         }
         d.finish(opts.rule, ox, oy, sink, stats_);
@@ -235,7 +235,7 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opts
         const int bh = std::max(1, static_cast<int>(std::ceil(b.y1)) - oy);
         edges.reserve(path.points().size() * 4);
         EdgeSink<false, EdgeList> es{list};
-        flatten_into(path, Affine::translate(-ox, -oy) * m, opts.tolerance, nullptr, es);
+        flatten_into(path, Affine::translate(-ox, -oy) * m, opts.tolerance, nullptr, es, true);
         es.end();
         impl_->run(opts, ox, oy, std::min(bw, clip.x1 - ox), std::min(bh, clip.y1 - oy), sink, stats_);
         return;
@@ -244,7 +244,7 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opts
     // The flattener sees points relative to the clip's origin, so the cull box is too.
     const Rect cull{-1.0, -1.0, clip.width() + 1.0, clip.height() + 1.0};
     EdgeSink<true, EdgeList> es{list, static_cast<double>(clip.width()), static_cast<double>(clip.height())};
-    flatten_into(path, Affine::translate(-clip.x0, -clip.y0) * m, opts.tolerance, &cull, es);
+    flatten_into(path, Affine::translate(-clip.x0, -clip.y0) * m, opts.tolerance, &cull, es, true);
     es.end();
     if (edges.empty()) return;
     double minx = INFINITY, maxx = -INFINITY, miny = INFINITY, maxy = -INFINITY;
