@@ -16,38 +16,64 @@ namespace casteljau::raster {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// Fill rule and 8-bit conversion of accumulated values (any lane count).
+template <class D, class V>
+HWY_INLINE V ApplyRule(D d, V v, FillRule rule) {
+    auto a = hn::Abs(v);
+    if (rule == FillRule::NonZero) return hn::Min(a, hn::Set(d, 1.0));
+    const auto two = hn::Set(d, 2.0);
+    a = hn::NegMulAdd(hn::Floor(hn::Mul(a, hn::Set(d, 0.5))), two, a);  // |v| mod 2, in [0, 2)
+    return hn::Min(a, hn::Sub(two, a));                                  // distance to an even integer
+}
+
+template <class D, class V>
+HWY_INLINE void StoreCoverage(D d, V a, std::uint8_t* HWY_RESTRICT out) {
+    const hn::Rebind<std::int32_t, D> di;
+    const hn::Rebind<std::uint8_t, D> du8;
+    const auto c = hn::DemoteTo(di, hn::MulAdd(a, hn::Set(d, 255.0), hn::Set(d, 0.5)));
+    hn::StoreU(hn::DemoteTo(du8, c), du8, out);
+}
+
 HWY_INLINE double ScanRange(double* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT cov, int from, int to, double start,
                              FillRule rule) {
     double sum = start;
     int i = from;
+    // Double precision keeps rows crossing hundreds of stacked edges exact to far below 1/255.
+#if HWY_TARGET != HWY_SCALAR && HWY_MAX_BYTES >= 32
+    // Four doubles per 256-bit vector: an in-register inclusive scan (within each 128-bit half,
+    // then the lower half's total into the upper half), then the running carry. The carry chain
+    // is one add per four cells; the scans of successive vectors are independent.
+    if (to - i >= 4) {
+        const hn::FixedTag<double, 4> d4;
+        const auto zero = hn::Zero(d4);
+        auto carry = hn::Set(d4, sum);
+        for (; i + 4 <= to; i += 4) {
+            auto v = hn::LoadU(d4, acc + i);
+            hn::StoreU(zero, d4, acc + i);
+            v = hn::Add(v, hn::ShiftLeftLanes<1>(d4, v));                         // a, a+b, c, c+d
+            v = hn::Add(v, hn::ConcatLowerLower(d4, hn::Broadcast<1>(v), zero));  // + (0, 0, a+b, a+b)
+            const auto total = hn::Broadcast<1>(hn::ConcatUpperUpper(d4, v, v));  // a+b+c+d in all lanes
+            const auto out = hn::Add(v, carry);
+            carry = hn::Add(carry, total);
+            StoreCoverage(d4, ApplyRule(d4, out, rule), cov + i);
+        }
+        sum = hn::GetLane(carry);
+    }
+#endif
 #if HWY_TARGET != HWY_SCALAR
-    // Two doubles per 128-bit vector: one shift-and-add scan step, then the running carry. Double
-    // precision keeps rows crossing hundreds of stacked edges exact to far below 1/255.
-    const hn::FixedTag<double, 2> dd;
-    const hn::FixedTag<std::int32_t, 2> di;
-    const hn::FixedTag<std::uint8_t, 2> du8;
+    // Two doubles per 128-bit vector: one shift-and-add scan step, then the running carry.
     if (to - i >= 2) {
-        const auto one = hn::Set(dd, 1.0);
-        const auto two = hn::Set(dd, 2.0);
-        const auto half = hn::Set(dd, 0.5);
-        const auto scale = hn::Set(dd, 255.0);
+        const hn::FixedTag<double, 2> dd;
         const auto zero = hn::Zero(dd);
         auto carry = hn::Set(dd, sum);
         for (; i + 2 <= to; i += 2) {
             auto v = hn::LoadU(dd, acc + i);
             hn::StoreU(zero, dd, acc + i);
             v = hn::Add(v, hn::ShiftLeftLanes<1>(dd, v));
-            v = hn::Add(v, carry);
-            carry = hn::Broadcast<1>(v);
-            auto a = hn::Abs(v);
-            if (rule == FillRule::NonZero) {
-                a = hn::Min(a, one);
-            } else {
-                a = hn::NegMulAdd(hn::Floor(hn::Mul(a, half)), two, a);  // |v| mod 2, in [0, 2)
-                a = hn::Min(a, hn::Sub(two, a));                          // distance to an even integer
-            }
-            const auto c = hn::DemoteTo(di, hn::MulAdd(a, scale, half));
-            hn::StoreU(hn::DemoteTo(du8, c), du8, cov + i);
+            const auto total = hn::Broadcast<1>(v);
+            const auto out = hn::Add(v, carry);
+            carry = hn::Add(carry, total);
+            StoreCoverage(dd, ApplyRule(dd, out, rule), cov + i);
         }
         sum = hn::GetLane(carry);
     }

@@ -93,6 +93,14 @@ inline void Direct::touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bi
     if (h != 0) cands_.push_back(cell);
 }
 
+// floor and ceil for the walk's coordinates, which push() clamps to [0, w] x [0, h]: truncation is
+// floor for v >= 0 (no compare-and-adjust on the floor side).
+[[gnu::always_inline]] inline int floor_nn(double v) { return static_cast<int>(v); }
+[[gnu::always_inline]] inline int ceil_nn(double v) {
+    const int i = static_cast<int>(v);
+    return i + (i < v);
+}
+
 // Marks cells [c0, c1] of row r as touched.
 [[gnu::always_inline]] inline void Direct::mark(int r, int c0, int c1) {
     std::uint64_t* m = blocks_.data() + static_cast<std::size_t>(r) * words_;
@@ -110,8 +118,8 @@ template <bool kTrack>
     const double dy = yb - ya;
     double* acc = acc_.data() + static_cast<std::size_t>(r) * stride_;
     const double xl = xa < xb ? xa : xb, xr = xa < xb ? xb : xa;
-    const int c0 = ifloor(xl);
-    const int c1 = iceil(xr) - 1;
+    const int c0 = floor_nn(xl);
+    const int c1 = ceil_nn(xr) - 1;
     if (c1 <= c0) {
         const double a = dy * ((c0 + 1) - 0.5 * (xl + xr));
         acc[c0] += a;
@@ -185,14 +193,14 @@ template <bool kTrack>
     if (y0 == y1) {
         // No cover; it still separates regions inside the cells it crosses.
         if constexpr (kTrack) {
-            const int r = ifloor(y0);
+            const int r = floor_nn(y0);
             if (r == y0 || r >= h_) {
                 cur_cell_ = kNoCell;  // on a row boundary
                 return;
             }
             const std::uint32_t base = static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_);
-            const int c0 = ifloor(std::min(x0, x1));
-            const int c1 = std::max(c0, iceil(std::max(x0, x1)) - 1);
+            const int c0 = floor_nn(std::min(x0, x1));
+            const int c1 = std::max(c0, ceil_nn(std::max(x0, x1)) - 1);
             if (x1 > x0)
                 for (int c = c0; c <= c1; ++c) touch(base + static_cast<std::uint32_t>(c), sid, bits);
             else
@@ -201,7 +209,7 @@ template <bool kTrack>
         return;
     }
     if (y1 > y0) {
-        const int r0 = ifloor(y0), rend = iceil(y1) - 1;
+        const int r0 = floor_nn(y0), rend = ceil_nn(y1) - 1;
         if (rend <= r0) return row_piece<kTrack>(r0, x0, y0, x1, y1, sid, bits);  // one row
         const double k = (x1 - x0) / (y1 - y0);
         const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
@@ -215,7 +223,7 @@ template <bool kTrack>
         }
         row_piece<kTrack>(rend, xa, ya, x1, y1, sid, bits);
     } else {
-        const int r0 = iceil(y0) - 1, rend = ifloor(y1);
+        const int r0 = ceil_nn(y0) - 1, rend = floor_nn(y1);
         if (rend >= r0) return row_piece<kTrack>(r0, x0, y0, x1, y1, sid, bits);  // one row
         const double k = (x1 - x0) / (y1 - y0);
         const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
