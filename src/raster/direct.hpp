@@ -78,7 +78,7 @@ private:
     bool contour_started_ = false;
 };
 
-inline void Direct::touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits) {
+[[gnu::always_inline]] inline void Direct::touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits) {
     if (cell == cur_cell_) {
         Visit& v = visits_[static_cast<std::size_t>(cur_visit_)];
         v.s1 = sid;
