@@ -34,48 +34,53 @@ HWY_INLINE void StoreCoverage(D d, V a, std::uint8_t* HWY_RESTRICT out) {
     hn::StoreU(hn::DemoteTo(du8, c), du8, out);
 }
 
+// Scans acc[i, to) in whole vectors of tag d: `scan` makes a vector's inclusive prefix sum and
+// `last` broadcasts its last lane. The carry chain is one add per vector; the in-register scans of
+// successive vectors are independent of it. Clears what it reads; returns where it stopped.
+template <class D, class Scan, class Last>
+HWY_INLINE int ScanVectors(D d, double* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT cov, int i, int to,
+                           double& sum, FillRule rule, Scan scan, Last last) {
+    const int n = static_cast<int>(hn::Lanes(d));
+    if (to - i < n) return i;
+    const auto zero = hn::Zero(d);
+    auto carry = hn::Set(d, sum);
+    for (; i + n <= to; i += n) {
+        const auto v = scan(hn::LoadU(d, acc + i));
+        hn::StoreU(zero, d, acc + i);
+        const auto out = hn::Add(v, carry);
+        carry = hn::Add(carry, last(v));
+        StoreCoverage(d, ApplyRule(d, out, rule), cov + i);
+    }
+    sum = hn::GetLane(carry);
+    return i;
+}
+
 HWY_INLINE double ScanRange(double* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT cov, int from, int to, double start,
                              FillRule rule) {
     double sum = start;
     int i = from;
     // Double precision keeps rows crossing hundreds of stacked edges exact to far below 1/255.
 #if HWY_TARGET != HWY_SCALAR && HWY_MAX_BYTES >= 32
-    // Four doubles per 256-bit vector: an in-register inclusive scan (within each 128-bit half,
-    // then the lower half's total into the upper half), then the running carry. The carry chain
-    // is one add per four cells; the scans of successive vectors are independent.
-    if (to - i >= 4) {
+    // Four doubles per 256-bit vector: scan within each 128-bit half, then add the lower half's
+    // total to the upper half.
+    {
         const hn::FixedTag<double, 4> d4;
-        const auto zero = hn::Zero(d4);
-        auto carry = hn::Set(d4, sum);
-        for (; i + 4 <= to; i += 4) {
-            auto v = hn::LoadU(d4, acc + i);
-            hn::StoreU(zero, d4, acc + i);
-            v = hn::Add(v, hn::ShiftLeftLanes<1>(d4, v));                         // a, a+b, c, c+d
-            v = hn::Add(v, hn::ConcatLowerLower(d4, hn::Broadcast<1>(v), zero));  // + (0, 0, a+b, a+b)
-            const auto total = hn::Broadcast<1>(hn::ConcatUpperUpper(d4, v, v));  // a+b+c+d in all lanes
-            const auto out = hn::Add(v, carry);
-            carry = hn::Add(carry, total);
-            StoreCoverage(d4, ApplyRule(d4, out, rule), cov + i);
-        }
-        sum = hn::GetLane(carry);
+        i = ScanVectors(
+            d4, acc, cov, i, to, sum, rule,
+            [d4](auto v) {
+                v = hn::Add(v, hn::ShiftLeftLanes<1>(d4, v));                                  // a, a+b, c, c+d
+                return hn::Add(v, hn::ConcatLowerLower(d4, hn::Broadcast<1>(v), hn::Zero(d4)));  // + 0, 0, a+b, a+b
+            },
+            [d4](auto v) { return hn::Broadcast<1>(hn::ConcatUpperUpper(d4, v, v)); });
     }
 #endif
 #if HWY_TARGET != HWY_SCALAR
-    // Two doubles per 128-bit vector: one shift-and-add scan step, then the running carry.
-    if (to - i >= 2) {
-        const hn::FixedTag<double, 2> dd;
-        const auto zero = hn::Zero(dd);
-        auto carry = hn::Set(dd, sum);
-        for (; i + 2 <= to; i += 2) {
-            auto v = hn::LoadU(dd, acc + i);
-            hn::StoreU(zero, dd, acc + i);
-            v = hn::Add(v, hn::ShiftLeftLanes<1>(dd, v));
-            const auto total = hn::Broadcast<1>(v);
-            const auto out = hn::Add(v, carry);
-            carry = hn::Add(carry, total);
-            StoreCoverage(dd, ApplyRule(dd, out, rule), cov + i);
-        }
-        sum = hn::GetLane(carry);
+    // Two doubles per 128-bit vector (the whole row on SSE targets, the tail on wider ones).
+    {
+        const hn::FixedTag<double, 2> d2;
+        i = ScanVectors(
+            d2, acc, cov, i, to, sum, rule, [d2](auto v) { return hn::Add(v, hn::ShiftLeftLanes<1>(d2, v)); },
+            [](auto v) { return hn::Broadcast<1>(v); });
     }
 #endif
     for (; i < to; ++i) {
