@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include "temp_dir.hpp"
+
 namespace casteljau::test {
 
 struct CliResult {
@@ -30,7 +32,7 @@ inline std::string shell_quote(const std::string& s) {
 inline CliResult run_cli(const std::string& args, const std::string& stdin_text = "") {
     namespace fs = std::filesystem;
     static int counter = 0;
-    const fs::path dir = fs::temp_directory_path() / ("casteljau-cli-" + std::to_string(::getpid()));
+    const fs::path dir = casteljau::testing::process_temp_dir() / "cli";
     fs::create_directories(dir);
     const std::string base = (dir / std::to_string(counter++)).string();
     {

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <string>
 
+#include "temp_dir.hpp"
+
 namespace {
 
 struct Run {
@@ -31,7 +33,7 @@ Run run(const std::string& args) {
 }
 
 std::string temp_file(const std::string& name, const std::string& content) {
-    const auto path = std::filesystem::temp_directory_path() / ("casteljau_curves_test_" + name);
+    const auto path = casteljau::testing::process_temp_dir() / ("curves_" + name);
     std::ofstream(path) << content;
     return path.string();
 }

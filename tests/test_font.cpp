@@ -9,6 +9,7 @@
 #include "casteljau/error.hpp"
 #include "casteljau/font.hpp"
 #include "casteljau/raster.hpp"
+#include "temp_dir.hpp"
 #include "text_support.hpp"
 
 using namespace casteljau;
@@ -19,7 +20,7 @@ namespace {
 int count_verbs(const Path& p, Verb v) { return static_cast<int>(std::count(p.verbs().begin(), p.verbs().end(), v)); }
 
 std::string temp_file(const std::string& name) {
-    return (std::filesystem::temp_directory_path() / ("casteljau_test_font_" + name)).string();
+    return (casteljau::testing::process_temp_dir() / ("font_" + name)).string();
 }
 
 }  // namespace

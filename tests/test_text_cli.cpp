@@ -13,6 +13,7 @@
 
 #include "casteljau/png.hpp"
 #include "casteljau/text.hpp"
+#include "temp_dir.hpp"
 #include "text_support.hpp"
 
 using namespace casteljau;
@@ -36,7 +37,7 @@ struct Run {
 };
 
 fs::path temp_dir() {
-    const fs::path d = fs::temp_directory_path() / "casteljau_test_text_cli";
+    const fs::path d = casteljau::testing::process_temp_dir() / "text_cli";
     fs::create_directories(d);
     return d;
 }
