@@ -209,3 +209,65 @@ TEST_CASE("flatten and fill: more than limits::kMaxFlattenedSegments segments is
         CHECK(e.kind() == ErrorKind::Limit);
     }
 }
+
+TEST_CASE("Path: control bounds and finiteness are kept up to date as the path changes", "[flatten][path]") {
+    auto loop_bounds = [](const Path& p) {
+        if (p.points().empty()) return Rect{};
+        Rect r{INFINITY, INFINITY, -INFINITY, -INFINITY};
+        for (Point q : p.points())
+            if (q.is_finite()) r.include(q);
+        return r;
+    };
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-50, 50);
+    auto pt = [&] { return Point{u(rng), u(rng)}; };
+    for (int iter = 0; iter < 50; ++iter) {
+        Path p;
+        for (int k = 0; k < 12; ++k) {
+            switch (rng() % 7) {
+                case 0: p.move_to(pt()); break;
+                case 1: p.line_to(pt()); break;
+                case 2: p.quad_to(pt(), pt()); break;
+                case 3: p.cubic_to(pt(), pt(), pt()); break;
+                case 4: p.conic_to(pt(), pt(), 0.7); break;
+                case 5: p.close(); break;
+                default: p.move_to(pt()).move_to(pt()); break;  // the second move replaces the first point
+            }
+            REQUIRE(p.control_bounds() == loop_bounds(p));
+        }
+        const Affine m = Affine::rotate_degrees(u(rng)) * Affine::scale(2, -3);
+        Path t = p.transformed(m);
+        CHECK(t.control_bounds() == loop_bounds(t));
+        Path r = p.reversed();
+        CHECK(r.control_bounds() == loop_bounds(r));
+        Path a;
+        a.append(p, m);
+        CHECK(a.control_bounds() == loop_bounds(a));
+        // Scale and translation: the rasterizer's O(1) bounds are exactly the transformed points'.
+        const Affine s = Affine::translate(3.25, -7.5) * Affine::scale(-1.5, 0.75);
+        const Rect want = loop_bounds(p.transformed(s));
+        Rasterizer rast;
+        const Mask mask = rast.fill_mask(p, s, FillOptions{});
+        CHECK(mask.bounds.x0 == static_cast<int>(std::floor(want.x0)));
+        CHECK(mask.bounds.y0 == static_cast<int>(std::floor(want.y0)));
+        CHECK(mask.bounds.x1 == std::max(static_cast<int>(std::ceil(want.x1)), mask.bounds.x0 + 1));
+        CHECK(mask.bounds.y1 == std::max(static_cast<int>(std::ceil(want.y1)), mask.bounds.y0 + 1));
+    }
+    Path p;
+    p.move_to(0, 0).line_to(10, 5);
+    CHECK(p.is_finite());
+    p.move_to(NAN, 1);
+    CHECK_FALSE(p.is_finite());
+    p.move_to(2, 3);  // replaces the NaN point
+    CHECK(p.is_finite());
+    CHECK(p.control_bounds() == Rect{0, 0, 10, 5});
+    p.line_to(INFINITY, 0);
+    CHECK_FALSE(p.is_finite());
+    Polyline pl;
+    CHECK_THROWS_AS(flatten(p, Affine::scale(2), 0.05, pl), Error);  // the O(1) path sees it too
+    p.clear();
+    CHECK(p.is_finite());
+    CHECK(p.control_bounds() == Rect{});
+    p.line_to(1, 1);
+    CHECK(p.control_bounds() == Rect{0, 0, 1, 1});
+}

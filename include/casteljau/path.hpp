@@ -8,6 +8,7 @@
 // Thread-safety: a Path is a value; const access from many threads at once is safe.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -72,6 +73,8 @@ public:
     Point current_point() const { return current_; }
 
     // Bounding box of all points (control points included): a conservative bound of the shape.
+    // Kept up to date as the path is built (no pass over the points); NaN coordinates are left
+    // out of it (is_finite() reports them).
     Rect control_bounds() const;
     // Tight bounding box of the curves (extrema of each segment).
     Rect bounds() const;
@@ -90,12 +93,27 @@ public:
 
 private:
     void ensure_contour();
+    void push_point(Point p) {
+        points_.push_back(p);
+        include(p);
+    }
+    void include(Point p) {
+        if (!(p.x - p.x == 0 && p.y - p.y == 0)) finite_ = false;  // NaN or infinity
+        cx0_ = p.x < cx0_ ? p.x : cx0_;
+        cy0_ = p.y < cy0_ ? p.y : cy0_;
+        cx1_ = p.x > cx1_ ? p.x : cx1_;
+        cy1_ = p.y > cy1_ ? p.y : cy1_;
+    }
+    void recompute_cache();
     std::vector<Verb> verbs_;
     std::vector<Point> points_;
     std::vector<double> weights_;
     bool open_ = false;     // a contour is in progress
     Point start_{};         // first point of the current contour
     Point current_{};
+    // Derived from points_ (weights are checked when added): control bounds and finiteness.
+    double cx0_ = INFINITY, cy0_ = INFINITY, cx1_ = -INFINITY, cy1_ = -INFINITY;
+    bool finite_ = true;
 };
 
 template <class V> void Path::visit(V&& v) const {

@@ -74,6 +74,17 @@ Rect check_flatten_input(const Path& path, const Affine& m, double tolerance) {
     if (!m.is_finite()) throw Error(ErrorKind::InvalidData, "transform has a non-finite entry");
     if (!(tolerance > 0) || !std::isfinite(tolerance))
         throw Error(ErrorKind::InvalidArgument, "flattening tolerance must be a positive number of pixels");
+    if (path.empty()) return {INFINITY, INFINITY, -INFINITY, -INFINITY};
+    if (m.b == 0 && m.c == 0 && path.is_finite()) {
+        // Scale and translation (glyphs, most shapes): each coordinate maps monotonically (with
+        // rounding too), so the path's cached control bounds give the exact result in O(1).
+        const Rect r = path.control_bounds();
+        const double xa = m.a * r.x0 + m.e, xb = m.a * r.x1 + m.e;
+        const double ya = m.d * r.y0 + m.f, yb = m.d * r.y1 + m.f;
+        if (std::isfinite(xa) && std::isfinite(xb) && std::isfinite(ya) && std::isfinite(yb))
+            return {std::min(xa, xb), std::min(ya, yb), std::max(xa, xb), std::max(ya, yb)};
+        // Overflow: the loop below reports it.
+    }
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     for (Point p : path.points()) {
         const Point q = m.apply(p);

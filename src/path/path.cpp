@@ -12,7 +12,7 @@ namespace casteljau {
 void Path::ensure_contour() {
     if (!open_) {
         verbs_.push_back(Verb::Move);
-        points_.push_back(current_);
+        push_point(current_);
         start_ = current_;
         open_ = true;
     }
@@ -22,9 +22,10 @@ Path& Path::move_to(Point p) {
     // Consecutive moves: the last one wins (an empty contour draws nothing).
     if (!verbs_.empty() && verbs_.back() == Verb::Move) {
         points_.back() = p;
+        recompute_cache();  // the replaced point may have been an extreme
     } else {
         verbs_.push_back(Verb::Move);
-        points_.push_back(p);
+        push_point(p);
     }
     start_ = current_ = p;
     open_ = true;
@@ -34,7 +35,7 @@ Path& Path::move_to(Point p) {
 Path& Path::line_to(Point p) {
     ensure_contour();
     verbs_.push_back(Verb::Line);
-    points_.push_back(p);
+    push_point(p);
     current_ = p;
     return *this;
 }
@@ -42,8 +43,8 @@ Path& Path::line_to(Point p) {
 Path& Path::quad_to(Point c, Point p) {
     ensure_contour();
     verbs_.push_back(Verb::Quad);
-    points_.push_back(c);
-    points_.push_back(p);
+    push_point(c);
+    push_point(p);
     current_ = p;
     return *this;
 }
@@ -51,9 +52,9 @@ Path& Path::quad_to(Point c, Point p) {
 Path& Path::cubic_to(Point c1, Point c2, Point p) {
     ensure_contour();
     verbs_.push_back(Verb::Cubic);
-    points_.push_back(c1);
-    points_.push_back(c2);
-    points_.push_back(p);
+    push_point(c1);
+    push_point(c2);
+    push_point(p);
     current_ = p;
     return *this;
 }
@@ -63,8 +64,8 @@ Path& Path::conic_to(Point c, Point p, double w) {
         throw Error(ErrorKind::InvalidArgument, "conic weight must be a positive finite number");
     ensure_contour();
     verbs_.push_back(Verb::Conic);
-    points_.push_back(c);
-    points_.push_back(p);
+    push_point(c);
+    push_point(p);
     weights_.push_back(w);
     current_ = p;
     return *this;
@@ -85,6 +86,14 @@ void Path::clear() {
     weights_.clear();
     open_ = false;
     start_ = current_ = {};
+    recompute_cache();
+}
+
+void Path::recompute_cache() {
+    cx0_ = cy0_ = INFINITY;
+    cx1_ = cy1_ = -INFINITY;
+    finite_ = true;
+    for (const Point& p : points_) include(p);
 }
 
 std::size_t Path::contour_count() const {
@@ -159,9 +168,12 @@ Path& Path::append(const Path& other, const Affine& m) {
 
 Rect Path::control_bounds() const {
     if (points_.empty()) return {};
-    Rect r{points_[0].x, points_[0].y, points_[0].x, points_[0].y};
-    for (const Point& p : points_) r.include(p);
-    return r;
+    if (!(cx0_ <= cx1_ && cy0_ <= cy1_)) {  // only NaN points: the old answer, from the first point
+        Rect r{points_[0].x, points_[0].y, points_[0].x, points_[0].y};
+        for (const Point& p : points_) r.include(p);
+        return r;
+    }
+    return {cx0_, cy0_, cx1_, cy1_};
 }
 
 namespace {
@@ -257,13 +269,7 @@ Rect Path::bounds() const {
     return r;
 }
 
-bool Path::is_finite() const {
-    for (const Point& p : points_)
-        if (!p.is_finite()) return false;
-    for (double w : weights_)
-        if (!std::isfinite(w)) return false;
-    return true;
-}
+bool Path::is_finite() const { return finite_; }  // weights are checked by conic_to
 
 Path Path::transformed(const Affine& m) const {
     Path p = *this;
@@ -275,6 +281,7 @@ void Path::transform(const Affine& m) {
     for (Point& p : points_) p = m.apply(p);
     start_ = m.apply(start_);
     current_ = m.apply(current_);
+    recompute_cache();
 }
 
 Path Path::reversed() const {
