@@ -49,6 +49,12 @@ double boundary_param(double x, double y) {
     return 3 + (1 - std::clamp(y, 0.0, 1.0));
 }
 
+// Neither end point of e lies inside the open cell (col, row).
+inline bool passes_through(const Edge& e, int col, int row) {
+    auto inside = [&](double x, double y) { return x > col && x < col + 1 && y > row && y < row + 1; };
+    return !inside(e.x0, e.y0) && !inside(e.x1, e.y1);
+}
+
 }  // namespace
 
 void Direct::begin(int w, int h, bool track) {
@@ -114,6 +120,22 @@ void Direct::gather(const Visit& v, int col, int row, std::vector<ExactScratch::
 // Two monotone runs in one cell: harmless when they do not meet and the end of one is next to the
 // start of the other around the cell's boundary (see the top of the file).
 bool Direct::harmless_two(const Visit& a, const Visit& b, int col, int row) {
+    // Closed form for the common case (the two sides of a stem): each run is one edge that passes
+    // through the cell (no end point inside the open cell), so its piece is its whole line inside
+    // the cell and splits the cell in two. When each edge lies strictly on one side of the other's
+    // line they cannot meet, and the region between them is on the other edge's side of each; the
+    // windings span one unit exactly when that side is the same one (left of both or right of both).
+    if (a.pre < 0 && b.pre < 0 && a.s0 == a.s1 && b.s0 == b.s1) {
+        const Edge& A = segs_[a.s0];
+        const Edge& B = segs_[b.s0];
+        if (passes_through(A, col, row) && passes_through(B, col, row)) {
+            const double ax = A.x1 - A.x0, ay = A.y1 - A.y0, bx = B.x1 - B.x0, by = B.y1 - B.y0;
+            const double b0 = ax * (B.y0 - A.y0) - ay * (B.x0 - A.x0), b1 = ax * (B.y1 - A.y0) - ay * (B.x1 - A.x0);
+            const double a0 = bx * (A.y0 - B.y0) - by * (A.x0 - B.x0), a1 = bx * (A.y1 - B.y0) - by * (A.x1 - B.x0);
+            if ((b0 > 0 && b1 > 0) || (b0 < 0 && b1 < 0))
+                if ((a0 > 0 && a1 > 0) || (a0 < 0 && a1 < 0)) return (b0 > 0) == (a0 > 0);
+        }
+    }
     gather(a, col, row, pa_);
     gather(b, col, row, pb_);
     if (pa_.empty() || pb_.empty()) return false;
