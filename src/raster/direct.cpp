@@ -55,6 +55,25 @@ inline bool passes_through(const Edge& e, int col, int row) {
     return !inside(e.x0, e.y0) && !inside(e.x1, e.y1);
 }
 
+// Two runs that do not meet, entering at ta0, tb0 and leaving at ta1, tb1 (boundary parameters;
+// -1: not on the boundary). Going around the boundary the winding changes by -1 at every entry
+// and +1 at every exit, so it takes two values only when entries and exits alternate: the end of
+// one run is next to the start of the other.
+bool ends_alternate(double ta0, double ta1, double tb0, double tb1) {
+    if (ta0 < 0 || ta1 < 0 || tb0 < 0 || tb1 < 0) return false;
+    auto fwd = [&](double t) {  // distance going around from a's exit
+        const double d = t - ta1;
+        return d < 0 ? d + 4 : d;
+    };
+    const double da = fwd(ta0), d0 = fwd(tb0), d1 = fwd(tb1);
+    if (da == 0 || d0 == 0 || d1 == 0 || d0 == da || d1 == da || d0 == d1) return false;
+    const bool before0 = d0 < da, before1 = d1 < da;
+    if (before0 != before1) return false;  // interleaved: they would have to cross
+    // The neighbour of a's exit on b's side: the nearer of b's ends going forward when b lies
+    // between a's exit and a's entry, else the farther one (reached going backward).
+    return before0 ? d0 < d1 : d0 > d1;
+}
+
 }  // namespace
 
 void Direct::begin(int w, int h, bool track) {
@@ -93,6 +112,11 @@ void Direct::contour_end() {
             first.pre = cur_visit_;
             first.dirs |= last.dirs;
             last.merged_away = true;
+            // Entering the cell again made it a candidate; when these two parts are its only
+            // visits, it is a one-visit cell after all (classify() still checks that run).
+            if (!cands_.empty() && cands_.back() == last.cell && last.next == static_cast<std::int32_t>(contour_visit_) &&
+                first.next < 0)
+                cands_.pop_back();
         }
     }
     contour_visit_ = visits_.size();
@@ -136,27 +160,40 @@ bool Direct::harmless_two(const Visit& a, const Visit& b, int col, int row) {
                 if ((a0 > 0 && a1 > 0) || (a0 < 0 && a1 < 0)) return (b0 > 0) == (a0 > 0);
         }
     }
+    // Multi-edge runs: when no edge of one meets an edge of the other anywhere, they cannot meet
+    // in the cell, and only their entry and exit points matter (the first edge's and the last
+    // edge's pieces, not every piece).
+    if (a.pre < 0 && b.pre < 0) {
+        bool meet = false;
+        for (std::uint32_t i = a.s0; i <= a.s1 && !meet; ++i)
+            for (std::uint32_t j = b.s0; j <= b.s1 && !meet; ++j) {
+                const Edge& p = segs_[i];
+                const Edge& q = segs_[j];
+                meet = segments_meet(p.x0, p.y0, p.x1, p.y1, q.x0, q.y0, q.x1, q.y1);
+            }
+        double ta0, ta1, tb0, tb1;
+        if (!meet && run_ends(a, col, row, ta0, ta1) && run_ends(b, col, row, tb0, tb1))
+            return ends_alternate(ta0, ta1, tb0, tb1);
+    }
     gather(a, col, row, pa_);
     gather(b, col, row, pb_);
     if (pa_.empty() || pb_.empty()) return false;
     for (const auto& p : pa_)
         for (const auto& q : pb_)
             if (segments_meet(p.ax, p.ay, p.bx, p.by, q.ax, q.ay, q.bx, q.by)) return false;
-    const double ta0 = boundary_param(pa_.front().ax, pa_.front().ay), ta1 = boundary_param(pa_.back().bx, pa_.back().by);
-    const double tb0 = boundary_param(pb_.front().ax, pb_.front().ay), tb1 = boundary_param(pb_.back().bx, pb_.back().by);
-    if (ta0 < 0 || ta1 < 0 || tb0 < 0 || tb1 < 0) return false;
-    auto fwd = [&](double t) {  // distance going around from a's exit
-        const double d = t - ta1;
-        return d < 0 ? d + 4 : d;
-    };
-    const double da = fwd(ta0), d0 = fwd(tb0), d1 = fwd(tb1);
-    if (da == 0 || d0 == 0 || d1 == 0 || d0 == da || d1 == da || d0 == d1) return false;
-    const bool before0 = d0 < da, before1 = d1 < da;
-    if (before0 != before1) return false;  // interleaved: they would have to cross
-    // The neighbour of a's exit on b's side: the nearer of b's ends going forward when b lies
-    // between a's exit and a's entry, else the farther one (reached going backward).
-    const bool neighbour_is_b_entry = before0 ? d0 < d1 : d0 > d1;
-    return neighbour_is_b_entry;
+    return ends_alternate(boundary_param(pa_.front().ax, pa_.front().ay), boundary_param(pa_.back().bx, pa_.back().by),
+                          boundary_param(pb_.front().ax, pb_.front().ay), boundary_param(pb_.back().bx, pb_.back().by));
+}
+
+// Where run v enters and leaves the cell, as boundary parameters; false when its first or last
+// edge has no piece of positive length in the cell or an end of the run is inside the cell.
+bool Direct::run_ends(const Visit& v, int col, int row, double& t0, double& t1) const {
+    double ax, ay, bx, by;
+    if (!cell_portion(segs_[v.s0], col, row, ax, ay, bx, by) || (ax == bx && ay == by)) return false;
+    t0 = boundary_param(ax - col, ay - row);
+    if (v.s1 != v.s0 && (!cell_portion(segs_[v.s1], col, row, ax, ay, bx, by) || (ax == bx && ay == by))) return false;
+    t1 = boundary_param(bx - col, by - row);
+    return t0 >= 0 && t1 >= 0;
 }
 
 // A run that cannot cross itself: monotone in x or in y, or at most two edges (one bend).

@@ -41,6 +41,7 @@ private:
     inline void walk(double x0, double y0, double x1, double y1);
     inline void touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits);
     bool harmless_two(const Visit& a, const Visit& b, int col, int row);
+    bool run_ends(const Visit& v, int col, int row, double& t0, double& t1) const;
     void gather(const Visit& v, int col, int row, std::vector<ExactScratch::Piece>& out) const;
     void classify();
     bool simple_run(const Visit& v) const;
