@@ -4,6 +4,7 @@
 // reference (tests/reference_area.*), crossings included.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -325,6 +326,39 @@ TEST_CASE("fill rules: plain accumulation stays exact where the winding is simpl
         for (std::uint8_t v : out.cov) edge += v != 0 && v != 255;
         WARN("text at " << px << " px: " << out.stats.exact_cells << " exact cells for " << out.stats.segments
                         << " segments and " << edge << " partially covered pixels");
+    }
+}
+
+TEST_CASE("fill rules: the overlap check accepts simple cells without exact computation, and no others", "[fillrule]") {
+    Rasterizer r;
+    // A hairpin whose tip turns back inside pixel (5, 5), going both ways in x and in y over four
+    // edges without crossing itself: one simple run, no exact cell.
+    const Contour hairpin{{1.0, 5.3}, {5.5, 5.5}, {5.8, 5.3}, {5.7, 5.7}, {1.0, 5.8}};
+    // Two bars of 0.3 px inside one pixel column: four runs per pixel, windings 0 1 0 1 0.
+    const Contours bars{rect(5.1, 2.0, 5.4, 10.0), rect(5.6, 2.0, 5.9, 10.0)};
+    for (FillRule rule : kRules) {
+        check_polygons(r, {hairpin}, rule, {0, 0, 8, 8}, "hairpin");
+        CHECK(r.last_stats().exact_cells == 0);
+        check_polygons(r, bars, rule, {0, 0, 8, 12}, "two thin bars in one pixel column");
+        CHECK(r.last_stats().exact_cells == 0);
+    }
+    // The same bars overlapping (windings 0 1 2 1 0), one reversed (0 1 0 -1 0), a hairpin whose
+    // tip crosses itself, and three bars: every pixel they share must be computed exactly.
+    const Contours overlapping{rect(5.1, 2.0, 5.5, 10.0), rect(5.3, 2.0, 5.8, 10.0)};
+    Contour reversed_bar = rect(5.6, 2.0, 5.9, 10.0);
+    std::reverse(reversed_bar.begin(), reversed_bar.end());
+    const Contours opposite{rect(5.1, 2.0, 5.4, 10.0), reversed_bar};
+    const Contour crossed{{1.0, 5.3}, {5.8, 5.6}, {5.8, 5.3}, {5.5, 5.7}, {1.0, 5.8}};
+    const Contours three{rect(5.05, 2.0, 5.25, 10.0), rect(5.4, 2.0, 5.6, 10.0), rect(5.5, 2.0, 5.95, 10.0)};
+    for (FillRule rule : kRules) {
+        check_polygons(r, overlapping, rule, {0, 0, 8, 12}, "two overlapping bars");
+        CHECK(r.last_stats().exact_cells == 8);
+        check_polygons(r, opposite, rule, {0, 0, 8, 12}, "two bars of opposite orientation");
+        if (rule == FillRule::NonZero) CHECK(r.last_stats().exact_cells == 8);
+        check_polygons(r, {crossed}, rule, {0, 0, 8, 8}, "hairpin crossing itself");
+        CHECK(r.last_stats().exact_cells >= 1);
+        check_polygons(r, three, rule, {0, 0, 8, 12}, "three bars, two overlapping");
+        CHECK(r.last_stats().exact_cells == 8);
     }
 }
 

@@ -196,15 +196,87 @@ bool Direct::run_ends(const Visit& v, int col, int row, double& t0, double& t1) 
     return t0 >= 0 && t1 >= 0;
 }
 
-// A run that cannot cross itself: monotone in x or in y, or at most two edges (one bend).
+// The edges of run v in travel order (its merged first part first) into out[0, kMaxRunEdges);
+// returns how many, or -1 when there are more.
+int Direct::run_edges(const Visit& v, std::uint32_t* out) const {
+    int n = 0;
+    auto add = [&](const Visit& u) {
+        for (std::uint32_t s = u.s0; s <= u.s1; ++s) {
+            if (n == kMaxRunEdges) return false;
+            out[n++] = s;
+        }
+        return true;
+    };
+    if (v.pre >= 0 && !add(visits_[static_cast<std::size_t>(v.pre)])) return -1;
+    return add(v) ? n : -1;
+}
+
+// A run that cannot cross itself: monotone in x or in y, at most two edges (one bend), or (up to
+// kMaxRunEdges edges) no two of its edges meet except consecutive ones at their shared vertex,
+// and no two consecutive ones fold back onto each other.
 bool Direct::simple_run(const Visit& v) const {
     if (monotone(v.dirs)) return true;
-    std::uint32_t n = v.s1 - v.s0 + 1;
-    if (v.pre >= 0) {
-        const Visit& p = visits_[static_cast<std::size_t>(v.pre)];
-        n += p.s1 - p.s0 + 1;
+    std::uint32_t ids[kMaxRunEdges];
+    const int n = run_edges(v, ids);
+    if (n < 0) return false;
+    if (n <= 2) return true;
+    for (int i = 0; i < n; ++i) {
+        const Edge& a = segs_[ids[i]];
+        if (i + 1 < n) {
+            const Edge& b = segs_[ids[i + 1]];
+            const double ax = a.x1 - a.x0, ay = a.y1 - a.y0, bx = b.x1 - b.x0, by = b.y1 - b.y0;
+            if (ax * by - ay * bx == 0 && ax * bx + ay * by < 0) return false;  // folds back
+        }
+        for (int j = i + 2; j < n; ++j) {
+            const Edge& b = segs_[ids[j]];
+            if (segments_meet(a.x0, a.y0, a.x1, a.y1, b.x0, b.y0, b.x1, b.y1)) return false;
+        }
     }
-    return n <= 2;
+    return true;
+}
+
+// Three or more simple runs in one cell. When no two meet, each region between them touches the
+// cell's boundary, so the windings in the cell are those met going around the boundary, where
+// they change by -1 at every entry and +1 at every exit: accumulation is exact when they take
+// two values at most.
+bool Direct::harmless_many(const Visit* const* runs, int n, int col, int row) const {
+    std::uint32_t ids[kMaxRuns][kMaxRunEdges];
+    int counts[kMaxRuns];
+    struct End {
+        double t;
+        int step;
+    };
+    End ends[2 * kMaxRuns];
+    for (int k = 0; k < n; ++k) {
+        counts[k] = run_edges(*runs[k], ids[k]);
+        if (counts[k] < 0) return false;
+        const Edge& first = segs_[ids[k][0]];
+        const Edge& last = segs_[ids[k][counts[k] - 1]];
+        double ax, ay, bx, by;
+        if (!cell_portion(first, col, row, ax, ay, bx, by) || (ax == bx && ay == by)) return false;
+        ends[2 * k] = {boundary_param(ax - col, ay - row), -1};
+        if (!cell_portion(last, col, row, ax, ay, bx, by) || (ax == bx && ay == by)) return false;
+        ends[2 * k + 1] = {boundary_param(bx - col, by - row), 1};
+        if (ends[2 * k].t < 0 || ends[2 * k + 1].t < 0) return false;
+    }
+    for (int a = 0; a < n; ++a)
+        for (int b = a + 1; b < n; ++b)
+            for (int i = 0; i < counts[a]; ++i)
+                for (int j = 0; j < counts[b]; ++j) {
+                    const Edge& p = segs_[ids[a][i]];
+                    const Edge& q = segs_[ids[b][j]];
+                    if (segments_meet(p.x0, p.y0, p.x1, p.y1, q.x0, q.y0, q.x1, q.y1)) return false;
+                }
+    for (int k = 1; k < 2 * n; ++k)  // insertion sort (at most 2 * kMaxRuns ends)
+        for (int j = k; j > 0 && ends[j].t < ends[j - 1].t; --j) std::swap(ends[j], ends[j - 1]);
+    int w = 0, lo = 0, hi = 0;
+    for (int k = 0; k < 2 * n; ++k) {
+        if (k > 0 && ends[k].t == ends[k - 1].t) return false;
+        w += ends[k].step;
+        lo = std::min(lo, w);
+        hi = std::max(hi, w);
+    }
+    return hi - lo <= 1;
 }
 
 void Direct::classify() {
@@ -219,17 +291,18 @@ void Direct::classify() {
     for (std::uint32_t cell : cands_) {
         const int row = static_cast<int>(cell / stride_), col = static_cast<int>(cell % stride_);
         int n = 0;
-        const Visit* runs[2] = {nullptr, nullptr};
+        const Visit* runs[kMaxRuns] = {};
         bool all_simple = true;
         for (std::int32_t i = head_[cell] - 1; i >= 0; i = visits_[static_cast<std::size_t>(i)].next) {
             const Visit& v = visits_[static_cast<std::size_t>(i)];
             if (v.merged_away) continue;
-            if (n < 2) runs[n] = &v;
+            if (n < kMaxRuns) runs[n] = &v;
             ++n;
             all_simple = all_simple && simple_run(v);
         }
         if (all_simple && n == 1) continue;
         if (all_simple && n == 2 && harmless_two(*runs[0], *runs[1], col, row)) continue;
+        if (all_simple && n > 2 && n <= kMaxRuns && harmless_many(runs, n, col, row)) continue;
         exact_.push_back(cell);
         exact_at_.push_back(static_cast<std::uint32_t>(exact_ids_.size()));
         for (std::int32_t i = head_[cell] - 1; i >= 0; i = visits_[static_cast<std::size_t>(i)].next) {

@@ -45,6 +45,10 @@ private:
     void gather(const Visit& v, int col, int row, std::vector<ExactScratch::Piece>& out) const;
     void classify();
     bool simple_run(const Visit& v) const;
+    static constexpr int kMaxRunEdges = 16;  // longer runs are not checked for simplicity: exact
+    static constexpr int kMaxRuns = 6;       // cells with more runs are computed exactly
+    int run_edges(const Visit& v, std::uint32_t* out) const;
+    bool harmless_many(const Visit* const* runs, int n, int col, int row) const;
 
     int w_ = 0, h_ = 0;
     std::size_t stride_ = 0;
