@@ -19,9 +19,6 @@ using ref::Contours;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-const FillRule kRules[] = {FillRule::NonZero, FillRule::EvenOdd};
-
 const char* rule_name(FillRule r) { return r == FillRule::NonZero ? "nonzero" : "even-odd"; }
 
 FillOptions with_rule(FillRule r, double tolerance = kDefaultTolerance) {

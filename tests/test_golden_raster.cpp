@@ -27,7 +27,6 @@ using ref::Contours;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kGoldenTolerance = 0.02;  // flattening tolerance of the curved scenes, px
 const golden::Tolerance kCompare{2, 0.05};
 

@@ -17,14 +17,6 @@ using namespace casteljau::testing;
 using ref::Contour;
 using ref::Contours;
 
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-const FillRule kRules[] = {FillRule::NonZero, FillRule::EvenOdd};
-
-}  // namespace
-
 TEST_CASE("accuracy: axis-aligned rectangles at fractional coordinates", "[accuracy]") {
     Rasterizer r;
     Worst worst;
