@@ -204,9 +204,12 @@ bool cell_portion(const Edge& e, double cx, double ry, double& ax, double& ay, d
     // Liang-Barsky clip of the segment to the closed square, keeping the edge's direction.
     double t0 = 0, t1 = 1;
     const double dx = e.x1 - e.x0, dy = e.y1 - e.y0;
-    auto clip = [&](double p, double q) {  // p t <= q
+    // One reciprocal per axis instead of a division per side (not for tiny steps, whose
+    // reciprocal could overflow: 0 means "divide").
+    const double ix = std::abs(dx) > 1e-200 ? 1.0 / dx : 0.0, iy = std::abs(dy) > 1e-200 ? 1.0 / dy : 0.0;
+    auto clip = [&](double p, double q, double inv) {  // p t <= q; inv = 1 / p, or 0
         if (p == 0) return q >= 0;
-        const double r = q / p;
+        const double r = inv != 0 ? q * inv : q / p;
         if (p < 0) {
             if (r > t1) return false;
             if (r > t0) t0 = r;
@@ -216,7 +219,8 @@ bool cell_portion(const Edge& e, double cx, double ry, double& ax, double& ay, d
         }
         return true;
     };
-    if (!clip(-dx, e.x0 - cx) || !clip(dx, cx + 1 - e.x0) || !clip(-dy, e.y0 - ry) || !clip(dy, ry + 1 - e.y0))
+    const double qx0 = e.x0 - cx, qx1 = cx + 1 - e.x0, qy0 = e.y0 - ry, qy1 = ry + 1 - e.y0;
+    if (!clip(-dx, qx0, -ix) || !clip(dx, qx1, ix) || !clip(-dy, qy0, -iy) || !clip(dy, qy1, iy))
         return false;
     ax = e.x0 + dx * t0;
     ay = e.y0 + dy * t0;
