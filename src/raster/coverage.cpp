@@ -95,7 +95,13 @@ double AccumulateRowImpl(double* acc, std::uint8_t* cov, int from, int to, doubl
     return ScanRange(acc, cov, from, to, start, rule);
 }
 
-ScanSpan ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::uint64_t* bm, int words, int w, int stride,
+// One row (see ScanRows in raster_internal.hpp); valid coverage is cov[from, end), from = end = 0
+// when no block was touched.
+struct ScanSpan {
+    int from, end;
+};
+
+HWY_INLINE ScanSpan ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::uint64_t* bm, int words, int w, int stride,
                         FillRule rule) {
     const int nb = words * 64;
     auto bit = [&](int b) { return b < nb && ((bm[b >> 6] >> (b & 63)) & 1) != 0; };
@@ -135,6 +141,19 @@ ScanSpan ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::uint64_t* bm,
     return {from, pos};
 }
 
+void ScanRowsImpl(const ScanRows& s, SpanSink& sink) {
+    std::size_t pi = 0;
+    for (int r = 0; r < s.h; ++r) {
+        const std::size_t row_base = static_cast<std::size_t>(r) * static_cast<std::size_t>(s.stride);
+        const ScanSpan span = ScanBlocksImpl(s.acc + row_base, s.cov, s.blocks + static_cast<std::size_t>(r) * s.words,
+                                             s.words, s.w, s.stride, s.rule);
+        const std::size_t row_end = row_base + static_cast<std::size_t>(s.stride);
+        for (; pi < s.npatches && s.patches[pi].first < row_end; ++pi)
+            if (span.end > span.from) s.cov[s.patches[pi].first - row_base] = s.patches[pi].second;
+        if (span.end > span.from) sink.row(s.oy + r, s.ox + span.from, span.end - span.from, s.cov + span.from);
+    }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace casteljau::raster
 HWY_AFTER_NAMESPACE();
@@ -142,12 +161,9 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace casteljau::raster {
 HWY_EXPORT(AccumulateRowImpl);
-HWY_EXPORT(ScanBlocksImpl);
+HWY_EXPORT(ScanRowsImpl);
 
-ScanSpan scan_blocks(double* acc, std::uint8_t* cov, const std::uint64_t* blocks, int words, int w, int stride,
-                     FillRule rule) {
-    return HWY_DYNAMIC_DISPATCH(ScanBlocksImpl)(acc, cov, blocks, words, w, stride, rule);
-}
+void scan_rows(const ScanRows& rows, SpanSink& sink) { HWY_DYNAMIC_DISPATCH(ScanRowsImpl)(rows, sink); }
 
 double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule) {
     return HWY_DYNAMIC_DISPATCH(AccumulateRowImpl)(acc, cov, from, to, start, rule);

@@ -324,29 +324,32 @@ void Direct::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
         exact_.clear();
     }
     if (cov_.size() < stride_) cov_.resize(stride_);
-    std::size_t ei = 0;
-    for (int r = 0; r < h_; ++r) {
-        const std::size_t row_base = static_cast<std::size_t>(r) * stride_;
-        double* acc_row = acc_.data() + row_base;
-        patches_.clear();
-        // Exact cells of the row first (the scan clears acc); untouched cells hold zero, so the
-        // integral up to a cell is the plain sum from the row's start.
-        double prefix = 0;
-        int pos = 0;
-        for (; ei < exact_.size() && exact_[ei] < row_base + stride_; ++ei) {
-            const int col = static_cast<int>(exact_[ei] - row_base);
-            for (; pos <= col; ++pos) prefix += acc_row[pos];
-            if (col >= w_) continue;
-            auto& ids = scratch_.ids;  // exact_cell_coverage does not use scratch_.ids itself
-            ids.assign(exact_ids_.begin() + exact_at_[ei], exact_ids_.begin() + exact_at_[ei + 1]);
-            patches_.push_back({static_cast<std::uint32_t>(col), exact_cell_u8(segs_.data(), ids, col, r, prefix, rule, scratch_)});
+    // Exact cells first (the scan clears acc). Untouched cells hold zero, so the integral up to a
+    // cell is the plain sum from its row's start.
+    patches_.clear();
+    std::size_t row_base = 0;
+    double prefix = 0;
+    int pos = 0;
+    for (std::size_t ei = 0; ei < exact_.size(); ++ei) {
+        const std::size_t cell = exact_[ei];
+        const int r = static_cast<int>(cell / stride_);
+        if (ei == 0 || static_cast<std::size_t>(r) * stride_ != row_base) {
+            row_base = static_cast<std::size_t>(r) * stride_;
+            prefix = 0;
+            pos = 0;
         }
-        const ScanSpan span = scan_blocks(acc_row, cov_.data(), blocks_.data() + static_cast<std::size_t>(r) * words_,
-                                          static_cast<int>(words_), w_, static_cast<int>(stride_), rule);
-        if (span.end <= span.from) continue;
-        for (const auto& p : patches_) cov_[p.first] = p.second;
-        sink.row(oy + r, ox + span.from, span.end - span.from, cov_.data() + span.from);
+        const int col = static_cast<int>(cell - row_base);
+        const double* acc_row = acc_.data() + row_base;
+        for (; pos <= col; ++pos) prefix += acc_row[pos];
+        if (col >= w_) continue;
+        auto& ids = scratch_.ids;  // exact_cell_coverage does not use scratch_.ids itself
+        ids.assign(exact_ids_.begin() + exact_at_[ei], exact_ids_.begin() + exact_at_[ei + 1]);
+        patches_.push_back({exact_[ei], exact_cell_u8(segs_.data(), ids, col, r, prefix, rule, scratch_)});
     }
+    // Then every row in one call (one dispatch per shape, not per row).
+    const ScanRows rows{acc_.data(), cov_.data(), blocks_.data(), static_cast<int>(words_), w_, h_, static_cast<int>(stride_),
+                        rule, patches_.data(), patches_.size(), ox, oy};
+    scan_rows(rows, sink);
     dirty_ = false;
 }
 

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "casteljau/raster.hpp"
@@ -126,15 +127,25 @@ inline std::uint8_t coverage_u8(double a, FillRule rule) {
 // coverage cov[from, to). Returns the running sum after `to`. Clears acc[from, to).
 double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule);
 
-// One row of the direct path. Bit b of `blocks` (`words` 64-bit words) says cells
+// The rows of the direct path. Per row, bit b of its `words` 64-bit words of `blocks` says cells
 // [b << kScanBlockShift, (b + 1) << kScanBlockShift) were touched. Runs of touched blocks are
 // prefix-summed into cov and cleared in acc; the gaps between them get the constant coverage of the
 // running sum. Cells at or past `w` (spill cells, up to `stride`) are cleared, never delivered.
-// Valid coverage is cov[from, end); from = end = 0 when no block was touched.
+// The exact cells' coverage (patches: cell index row * stride + col and value, sorted) is written
+// over the scanned row, and each row with a touched block goes to the sink at (ox, oy). One call
+// (one SIMD dispatch) per shape.
 inline constexpr int kScanBlockShift = 3;
-struct ScanSpan { int from, end; };
-ScanSpan scan_blocks(double* acc, std::uint8_t* cov, const std::uint64_t* blocks, int words, int w, int stride,
-                     FillRule rule);
+struct ScanRows {
+    double* acc;
+    std::uint8_t* cov;  // stride bytes of scratch
+    const std::uint64_t* blocks;
+    int words, w, h, stride;
+    FillRule rule;
+    const std::pair<std::uint32_t, std::uint8_t>* patches;
+    std::size_t npatches;
+    int ox, oy;
+};
+void scan_rows(const ScanRows& rows, SpanSink& sink);
 
 }  // namespace casteljau::raster
 
