@@ -9,16 +9,20 @@
 // Overlap check. Plain accumulation is exact in a cell whose winding numbers lie in one unit
 // interval. Edges arrive in contour order, so the walk knows, for every cell it enters, that the
 // contour is starting a new "visit" there: a maximal run of consecutive edges inside that cell.
-//   - A cell with one visit whose run is monotone in x or in y (so it cannot cross itself) and
-//     which enters and leaves through the cell's boundary is split by it into two regions whose
-//     windings differ by one: exact. So is a run of at most two edges (one bend), whatever its
-//     directions. (The run through a contour's start vertex arrives in two
-//     parts, the contour's first and last edges; they are merged when the contour closes.)
-//   - A cell with two such visits that do not meet is split into three regions: the middle
-//     one and the two outer ones. The outer ones have the same winding exactly when, going around
-//     the cell's boundary, the end of one run is next to the start of the other (a stem: one edge
-//     up, one down); then the windings span one unit and accumulation is exact.
-//   - Every other cell with visits (crossings, stacked copies, three or more runs, loops) is
+//   - A cell with one visit whose run cannot cross itself and which enters and leaves through the
+//     cell's boundary is split by it into two regions whose windings differ by one: exact. A run
+//     cannot cross itself when it is monotone in x or in y, has at most two edges (one bend), or
+//     (checked pairwise, up to 16 edges) no two of its edges meet except consecutive ones at their
+//     vertex. (The run through a contour's start vertex arrives in two parts, the contour's first
+//     and last edges; they are merged when the contour closes.)
+//   - A cell with two to six such runs that do not meet: every region between them touches the
+//     cell's boundary, so the windings in the cell are those met going around the boundary,
+//     changing by -1 where a run enters and +1 where one leaves. When they take two values at most
+//     (for two runs: entries and exits alternate, as in a stem with one edge up and one down),
+//     accumulation is exact. Common cases are decided in closed form (two single edges: which side
+//     of each other they lie on) or from where the runs enter and leave (runs whose edges meet
+//     nowhere), without clipping every piece.
+//   - Every other cell with visits (crossings, stacked copies, more than six runs, loops) is
 //     recomputed exactly from its edges (exact_cell.cpp) with the accumulated integral.
 // Only positive-length pieces inside the open cell count as visits: an edge along a cell's
 // boundary only moves cover, which accumulation gets right.
