@@ -210,6 +210,30 @@ TEST_CASE("flatten and fill: more than limits::kMaxFlattenedSegments segments is
     }
 }
 
+TEST_CASE("fill: a rasterizer interrupted by the edge limit renders the next shape as a fresh one does", "[flatten][limits]") {
+    // The limit hit inside the direct path (a small box) leaves its per-cell state half written:
+    // a zigzag drawn twice over the whole box first makes every cell it crosses a candidate.
+    Path big;
+    for (int pass = 0; pass < 2; ++pass) {
+        big.move_to(0.5, 0.3);
+        for (int row = 0; row < 48; ++row) big.line_to(row % 2 ? 0.5 : 47.5, row + 0.7);
+    }
+    big.move_to(10, 10);
+    for (int i = 0; i < 129; ++i) big.cubic_to({60, 60}, {-40, 60}, {10, 10});
+    FillOptions fine;
+    fine.tolerance = 1e-9;
+    Path shapes;  // overlapping and touching contours: visits, candidates and exact cells
+    shapes.add_circle({20, 20}, 12).add_circle({28, 22}, 9).add_rect({5.5, 18.25, 40.5, 19.0});
+    Rasterizer used, fresh;
+    for (int round = 0; round < 2; ++round) {
+        CHECK_THROWS_AS(used.fill_mask(big, Affine{}, fine, IRect{0, 0, 48, 48}), Error);
+        const Mask a = used.fill_mask(shapes, Affine{}, FillOptions{}, IRect{0, 0, 48, 48});
+        const Mask b = fresh.fill_mask(shapes, Affine{}, FillOptions{}, IRect{0, 0, 48, 48});
+        CHECK(used.last_stats().exact_cells == fresh.last_stats().exact_cells);
+        CHECK(a.data == b.data);
+    }
+}
+
 TEST_CASE("Path: control bounds and finiteness are kept up to date as the path changes", "[flatten][path]") {
     auto loop_bounds = [](const Path& p) {
         if (p.points().empty()) return Rect{};

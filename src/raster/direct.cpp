@@ -89,9 +89,13 @@ void Direct::begin(int w, int h, bool track) {
     if (dirty_) {
         std::fill(acc_.begin(), acc_.end(), 0.0);
         std::fill(head_.begin(), head_.end(), 0);
+        std::fill(cand_.begin(), cand_.end(), std::uint8_t(0));
     }
     if (acc_.size() < cells) acc_.resize(cells, 0.0);
-    if (track && head_.size() < cells) head_.resize(cells, 0);
+    if (track && head_.size() < cells) {
+        head_.resize(cells, 0);
+        cand_.resize(cells, 0);
+    }
     dirty_ = true;
     words_ = ((stride_ >> kBlockShift) + 64) / 64;
     blocks_.assign(words_ * static_cast<std::size_t>(h), 0);
@@ -119,8 +123,10 @@ void Direct::contour_end() {
             // Entering the cell again made it a candidate; when these two parts are its only
             // visits, it is a one-visit cell after all (classify() still checks that run).
             if (!cands_.empty() && cands_.back() == last.cell && last.next == static_cast<std::int32_t>(contour_visit_) &&
-                first.next < 0)
+                first.next < 0) {
+                cand_[last.cell] = 0;
                 cands_.pop_back();
+            }
         }
     }
     contour_visit_ = visits_.size();
@@ -288,10 +294,8 @@ void Direct::classify() {
     exact_at_.clear();
     exact_ids_.clear();
     for (const Visit& v : visits_)
-        if (!monotone(v.dirs) && !v.merged_away && !simple_run(v)) cands_.push_back(v.cell);
-    if (cands_.empty()) return;
-    std::sort(cands_.begin(), cands_.end());
-    cands_.erase(std::unique(cands_.begin(), cands_.end()), cands_.end());
+        if (!monotone(v.dirs) && !v.merged_away && !simple_run(v)) add_cand(v.cell);
+    // Decide each candidate (cands_ holds each cell once, in no particular order) ...
     for (std::uint32_t cell : cands_) {
         const int row = static_cast<int>(cell / stride_), col = static_cast<int>(cell % stride_);
         int n = 0;
@@ -308,6 +312,10 @@ void Direct::classify() {
         if (all_simple && n == 2 && harmless_two(*runs[0], *runs[1], col, row)) continue;
         if (all_simple && n > 2 && n <= kMaxRuns && harmless_many(runs, n, col, row)) continue;
         exact_.push_back(cell);
+    }
+    // ... then list the exact ones in row order (finish() sums each row from its start) with their edges.
+    std::sort(exact_.begin(), exact_.end());
+    for (std::uint32_t cell : exact_) {
         exact_at_.push_back(static_cast<std::uint32_t>(exact_ids_.size()));
         for (std::int32_t i = head_[cell] - 1; i >= 0; i = visits_[static_cast<std::size_t>(i)].next) {
             const Visit& v = visits_[static_cast<std::size_t>(i)];
@@ -323,6 +331,8 @@ void Direct::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
     if (track_) {
         classify();
         for (const Visit& v : visits_) head_[v.cell] = 0;
+        for (std::uint32_t cell : cands_) cand_[cell] = 0;
+        cands_.clear();
         stats.exact_cells = exact_.size();
     } else {
         exact_.clear();

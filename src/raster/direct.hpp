@@ -56,6 +56,7 @@ private:
     bool dirty_ = false;            // buffers may hold data from an interrupted shape
     std::vector<double> acc_;       // cover/area, (w + 2) x h, all zero between shapes
     std::vector<std::int32_t> head_;  // per cell: last visit + 1 (0: none), all zero between shapes
+    std::vector<std::uint8_t> cand_;  // per cell: listed in cands_ (1) or not, all zero between shapes
     // Touched cells, per row, in blocks of kBlock cells: bit b of the row's words is block b. The
     // scan only sums touched blocks; between them the coverage is constant.
     static constexpr int kBlockShift = kScanBlockShift;
@@ -65,7 +66,13 @@ private:
     std::vector<Edge> segs_;         // the edges (kept when tracking: exact cells need them)
     std::size_t count_ = 0;          // edges pushed
     std::vector<Visit> visits_;
-    std::vector<std::uint32_t> cands_;     // cells with two or more visits, or a non-monotone one
+    std::vector<std::uint32_t> cands_;     // cells with two or more visits, or a non-simple one (each once)
+    void add_cand(std::uint32_t cell) {
+        if (!cand_[cell]) {
+            cand_[cell] = 1;
+            cands_.push_back(cell);
+        }
+    }
     std::vector<std::uint32_t> exact_;     // cells to compute exactly (sorted)
     std::vector<std::uint32_t> exact_at_;  // start of each exact cell's edges in exact_ids_
     std::vector<std::uint32_t> exact_ids_;
@@ -95,7 +102,7 @@ private:
     cur_visit_ = static_cast<std::int32_t>(visits_.size());
     visits_.push_back({cell, h - 1, sid, sid, -1, bits, false});
     head_[cell] = cur_visit_ + 1;
-    if (h != 0) cands_.push_back(cell);
+    if (h != 0) add_cand(cell);
 }
 
 // floor and ceil for the walk's coordinates, which push() clamps to [0, w] x [0, h]: truncation is
