@@ -146,6 +146,9 @@ template <bool kTrack>
     mark(r, c0, c1 + 1);
     const std::uint32_t base = static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_);
     const double s = dy / (xr - xl);  // height per unit of x
+    // Cells in travel order (the visits need it). The two directions are written out: sharing
+    // the cell step as a lambda measured 5 % slower per 12 px glyph (GCC 12 inlines the walk
+    // differently).
     if (xa < xb) {
         double u0 = xa;
         for (int c = c0; c <= c1; ++c) {
