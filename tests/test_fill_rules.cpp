@@ -373,3 +373,53 @@ TEST_CASE("fill rules regression: pixels outside 300 stacked pentagrams stay emp
         check_polygons(r, Contours(300, star), rule, {0, 0, 21, 21}, "300 pentagrams");
     }
 }
+
+TEST_CASE("fill rules: narrow shapes accumulate by rows as the cell walk does (exact overlaps off)", "[fillrule]") {
+    // Without the overlap check, shapes a few SIMD vectors wide are accumulated by row vectors
+    // (float, every pixel of a row per piece) and wider ones by the cell walk (double, prefix sums).
+    // The same contours rendered alone (narrow) and with a tiny square 3000 px to the right (wide)
+    // take the two paths; on the narrow part they must agree to rounding, under both rules, with
+    // crossings, edges on pixel sides and on the box's sides, and windings of hundreds.
+    Rasterizer r;
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<double> u(0, 1);
+    FillOptions plain;
+    plain.exact_overlaps = false;
+    const Contour far = rect(3050.25, 10.5, 3051.75, 11.5);
+    std::vector<Contours> shapes;
+    for (int i = 0; i < 40; ++i) {
+        Contours cs{random_simple_polygon(rng, {20 + u(rng), 20 + u(rng)}, 2, 18, 3 + i % 20)};
+        if (i % 3 == 0) cs.push_back(star_polygon({20.5, 19.5}, 4 + 14 * u(rng), 7, 3, u(rng)));
+        shapes.push_back(cs);
+    }
+    shapes.push_back({rect(0, 0, 40, 40), rect(3, 4, 17, 30)});                  // sides on pixel sides and the box
+    shapes.push_back({{{10, 2}, {10.00001, 37}, {30, 37}, {29.99999, 2}}});         // nearly vertical sides
+    shapes.push_back(Contours(300, Contour{{2.3, 1.7}, {37.9, 12.2}, {9.4, 38.6}}));  // winding 300
+    shapes.push_back(Contours(301, Contour{{2.3, 1.7}, {37.9, 12.2}, {9.4, 38.6}}));
+    const IRect window{0, 0, 40, 40};
+    int worst = 0, compared = 0;
+    for (const Contours& cs : shapes) {
+        Contours wide = cs;
+        wide.push_back(far);
+        for (FillRule rule : kRules) {
+            plain.rule = rule;
+            const Rendered a = render(r, ref::to_path(cs), Affine::identity(), plain, window, window);
+            const Rendered b = render(r, ref::to_path(wide), Affine::identity(), plain, {0, 0, 3100, 40}, window);
+            REQUIRE(a.contract_violation.empty());
+            REQUIRE(b.contract_violation.empty());
+            for (int y = 0; y < 40; ++y)
+                for (int x = 0; x < 40; ++x) {
+                    const int d = std::abs(a.at(x, y) - b.at(x, y));
+                    if (d > worst) {
+                        worst = d;
+                        INFO(describe(cs, Affine::identity(), window) << " " << rule_name(rule) << " at " << x << "," << y
+                                                                      << ": " << a.at(x, y) << " vs " << b.at(x, y));
+                        CHECK(d <= 1);
+                    }
+                    ++compared;
+                }
+        }
+    }
+    CHECK(worst <= 1);
+    CHECK(compared == 2 * 44 * 1600);
+}

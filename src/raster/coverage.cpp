@@ -1,12 +1,14 @@
 // Raster stage, coverage: per-row prefix sum of the (double) accumulation buffer mapped through the fill
-// rule to 8-bit coverage. Vectorised with Highway (runtime dispatch to the best instruction set
-// the CPU has): an in-register inclusive scan per vector plus a running carry.
+// rule to 8-bit coverage, and the row-vector accumulation of narrow shapes (RowPiece in
+// raster_internal.hpp). Vectorised with Highway (runtime dispatch to the best instruction set the
+// CPU has): the prefix sum is an in-register inclusive scan per vector plus a running carry.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/coverage.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <climits>
 #include <cstring>
 
 #include "raster/raster_internal.hpp"
@@ -154,6 +156,52 @@ void ScanRowsImpl(const ScanRows& s, SpanSink& sink) {
     }
 }
 
+int RowVectorLanesImpl() {
+    const hn::ScalableTag<float> d;
+    return static_cast<int>(hn::Lanes(d));
+}
+
+// See RowPiece in raster_internal.hpp for the formula.
+void RowVectorAccumulateImpl(const RowPiece* HWY_RESTRICT pieces, std::size_t n, float* HWY_RESTRICT acc, int stride) {
+    const hn::ScalableTag<float> d;
+    const int N = static_cast<int>(hn::Lanes(d));
+    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
+    const auto iota = hn::Iota(d, 0.0f);
+    for (std::size_t k = 0; k < n; ++k) {
+        const RowPiece& p = pieces[k];
+        const auto xl = hn::Set(d, p.xl), xr = hn::Set(d, p.xr), kk = hn::Set(d, p.k);
+        float* HWY_RESTRICT row = acc + static_cast<std::size_t>(p.r) * static_cast<std::size_t>(stride);
+        for (int i = 0; i < stride; i += N) {
+            const auto cl = hn::Add(iota, hn::Set(d, static_cast<float>(i)));
+            const auto cr = hn::Add(cl, one);
+            const auto u0 = hn::Max(xl, cl), u1 = hn::Min(xr, cr);
+            const auto len = hn::Max(hn::Sub(u1, u0), zero);
+            const auto mid = hn::NegMulAdd(hn::Add(u0, u1), half, cr);
+            const auto left = hn::Max(hn::Sub(hn::Min(xr, cl), xl), zero);
+            hn::StoreU(hn::MulAdd(kk, hn::MulAdd(len, mid, left), hn::LoadU(d, row + i)), d, row + i);
+        }
+    }
+}
+
+void RowVectorEmitImpl(const RowVectorRows& s, SpanSink& sink) {
+    const hn::ScalableTag<float> d;
+    const hn::Rebind<std::int32_t, decltype(d)> di;
+    const hn::Rebind<std::uint8_t, decltype(d)> du8;
+    const int N = static_cast<int>(hn::Lanes(d));
+    const auto zero = hn::Zero(d), half = hn::Set(d, 0.5f), scale = hn::Set(d, 255.0f);
+    for (int r = 0; r < s.h; ++r) {
+        const int from = s.from[r];
+        if (from == INT_MAX) continue;
+        float* HWY_RESTRICT row = s.acc + static_cast<std::size_t>(r) * static_cast<std::size_t>(s.stride);
+        for (int i = 0; i < s.stride; i += N) {
+            const auto v = ApplyRule(d, hn::LoadU(d, row + i), s.rule);
+            hn::StoreU(zero, d, row + i);
+            hn::StoreU(hn::DemoteTo(du8, hn::ConvertTo(di, hn::MulAdd(v, scale, half))), du8, s.cov + i);
+        }
+        if (from < s.w) sink.row(s.oy + r, s.ox + from, s.w - from, s.cov + from);
+    }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace casteljau::raster
 HWY_AFTER_NAMESPACE();
@@ -163,7 +211,20 @@ namespace casteljau::raster {
 HWY_EXPORT(AccumulateRowImpl);
 HWY_EXPORT(ScanRowsImpl);
 
+HWY_EXPORT(RowVectorLanesImpl);
+HWY_EXPORT(RowVectorAccumulateImpl);
+HWY_EXPORT(RowVectorEmitImpl);
+
 void scan_rows(const ScanRows& rows, SpanSink& sink) { HWY_DYNAMIC_DISPATCH(ScanRowsImpl)(rows, sink); }
+
+int row_vector_lanes() {
+    static const int lanes = HWY_DYNAMIC_DISPATCH(RowVectorLanesImpl)();
+    return lanes;
+}
+void row_vector_accumulate(const RowPiece* pieces, std::size_t n, float* acc, int stride) {
+    HWY_DYNAMIC_DISPATCH(RowVectorAccumulateImpl)(pieces, n, acc, stride);
+}
+void row_vector_emit(const RowVectorRows& rows, SpanSink& sink) { HWY_DYNAMIC_DISPATCH(RowVectorEmitImpl)(rows, sink); }
 
 double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule) {
     return HWY_DYNAMIC_DISPATCH(AccumulateRowImpl)(acc, cov, from, to, start, rule);

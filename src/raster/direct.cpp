@@ -27,6 +27,7 @@
 // Only positive-length pieces inside the open cell count as visits: an edge along a cell's
 // boundary only moves cover, which accumulation gets right.
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -88,17 +89,28 @@ void Direct::begin(int w, int h, bool track) {
     const std::size_t cells = stride_ * static_cast<std::size_t>(h);
     if (dirty_) {
         std::fill(acc_.begin(), acc_.end(), 0.0);
+        std::fill(facc_.begin(), facc_.end(), 0.0f);
         std::fill(head_.begin(), head_.end(), 0);
         std::fill(cand_.begin(), cand_.end(), std::uint8_t(0));
     }
-    if (acc_.size() < cells) acc_.resize(cells, 0.0);
     if (track && head_.size() < cells) {
         head_.resize(cells, 0);
         cand_.resize(cells, 0);
     }
     dirty_ = true;
-    words_ = ((stride_ >> kBlockShift) + 64) / 64;
-    blocks_.assign(words_ * static_cast<std::size_t>(h), 0);
+    const int lanes = row_vector_lanes();
+    vec_ = !track && w <= kRowVectorMax * lanes;
+    if (vec_) {
+        vstride_ = std::max(1, (w + lanes - 1) / lanes) * lanes;
+        const std::size_t n = static_cast<std::size_t>(vstride_) * static_cast<std::size_t>(h);
+        if (facc_.size() < n) facc_.resize(n, 0.0f);
+        row_from_.assign(static_cast<std::size_t>(h), INT_MAX);
+        npieces_ = 0;
+    } else {
+        if (acc_.size() < cells) acc_.resize(cells, 0.0);
+        words_ = ((stride_ >> kBlockShift) + 64) / 64;
+        blocks_.assign(words_ * static_cast<std::size_t>(h), 0);
+    }
     segs_.clear();
     count_ = 0;
     visits_.clear();
@@ -109,6 +121,8 @@ void Direct::begin(int w, int h, bool track) {
     contour_started_ = false;
     px_ = py_ = NAN;
 }
+
+void Direct::grow_pieces() { pieces_.resize(std::max<std::size_t>(256, 2 * pieces_.size())); }
 
 void Direct::contour_end() {
     // The run through the contour's start vertex: its last part (now) continues into its first.
@@ -338,9 +352,17 @@ void Direct::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
         exact_.clear();
     }
     if (cov_.size() < stride_) cov_.resize(stride_);
+    patches_.clear();
+    if (vec_) {  // no overlap check, so no exact cells
+        row_vector_accumulate(pieces_.data(), npieces_, facc_.data(), vstride_);
+        if (cov_.size() < static_cast<std::size_t>(vstride_)) cov_.resize(static_cast<std::size_t>(vstride_));
+        const RowVectorRows rows{facc_.data(), vstride_, w_, h_, row_from_.data(), rule, cov_.data(), ox, oy};
+        row_vector_emit(rows, sink);
+        dirty_ = false;
+        return;
+    }
     // Exact cells first (the scan clears acc). Untouched cells hold zero, so the integral up to a
     // cell is the plain sum from its row's start.
-    patches_.clear();
     std::size_t row_base = 0;
     double prefix = 0;
     int pos = 0;

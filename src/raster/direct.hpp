@@ -35,10 +35,11 @@ private:
         bool merged_away;       // this record is the first part of another visit (`pre` of it)
     };
 
-    template <bool kTrack>
+    template <bool kTrack, bool kVec>
     inline void row_piece(int r, double xa, double ya, double xb, double yb, std::uint32_t sid, std::uint8_t bits);
-    template <bool kTrack>
+    template <bool kTrack, bool kVec>
     inline void walk(double x0, double y0, double x1, double y1);
+    inline void add_piece(int r, double xl, double xr, double dy);
     inline void touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits);
     bool harmless_two(const Visit& a, const Visit& b, int col, int row);
     bool run_ends(const Visit& v, int col, int row, double& t0, double& t1) const;
@@ -53,6 +54,20 @@ private:
     int w_ = 0, h_ = 0;
     std::size_t stride_ = 0;
     bool track_ = false;
+    // Narrow shapes (at most kRowVectorMax SIMD vectors per row) without the overlap check are
+    // accumulated by row vectors (see RowPiece in raster_internal.hpp): the walk only lists the
+    // pieces of edges per row, and finish() adds each piece's exact area to its whole row at once,
+    // in float. 11 to 20 % faster from 12 to 96 px. With the overlap check the cell walk stays:
+    // the visits need it anyway and it accumulates nearly for free alongside (row vectors on top
+    // measured 5 % slower at 12 px, equal at 48 and 96 px).
+    bool vec_ = false;
+    static constexpr int kRowVectorMax = 8;
+    int vstride_ = 0;                 // floats per row of facc_ (w rounded up to whole vectors)
+    std::vector<float> facc_;         // per pixel: the integral of the winding number, all zero between shapes
+    std::vector<RowPiece> pieces_;   // [0, npieces_) in use (written without push_back: see add_piece)
+    std::size_t npieces_ = 0;
+    void grow_pieces();
+    std::vector<int> row_from_;       // per row: first column a piece touches (INT_MAX: none)
     bool dirty_ = false;            // buffers may hold data from an interrupted shape
     std::vector<double> acc_;       // cover/area, (w + 2) x h, all zero between shapes
     std::vector<std::int32_t> head_;  // per cell: last visit + 1 (0: none), all zero between shapes
@@ -124,14 +139,36 @@ private:
     for (unsigned b = b0; b <= b1; ++b) m[b >> 6] |= std::uint64_t(1) << (b & 63);
 }
 
-template <bool kTrack>
+// One piece of an edge for the row-vector accumulation. A (nearly) vertical piece is widened to
+// 1e-4 px around its middle: the area it adds changes by less than 1e-4 of a pixel.
+[[gnu::always_inline]] inline void Direct::add_piece(int r, double xl, double xr, double dy) {
+    float l = static_cast<float>(xl), h = static_cast<float>(xr);
+    if (h - l < 1e-4f) {
+        const float m = 0.5f * (l + h);
+        l = m - 5e-5f;
+        h = m + 5e-5f;
+    }
+    // A plain store with an out-of-line grow: push_back's growth path made GCC stop inlining the
+    // walk's other pushes.
+    if (npieces_ == pieces_.size()) grow_pieces();
+    pieces_[npieces_++] = {l, h, static_cast<float>(dy) / (h - l), r};
+    const int c = static_cast<int>(xl);
+    if (c < row_from_[static_cast<std::size_t>(r)]) row_from_[static_cast<std::size_t>(r)] = c;
+}
+
+template <bool kTrack, bool kVec>
 [[gnu::always_inline]] inline void Direct::row_piece(int r, double xa, double ya, double xb, double yb,
                                                      std::uint32_t sid, std::uint8_t bits) {
     const double dy = yb - ya;
-    double* acc = acc_.data() + static_cast<std::size_t>(r) * stride_;
     const double xl = xa < xb ? xa : xb, xr = xa < xb ? xb : xa;
     const int c0 = floor_nn(xl);
     const int c1 = ceil_nn(xr) - 1;
+    static_assert(!(kTrack && kVec), "row vectors are used without the overlap check only");
+    if constexpr (kVec) {
+        add_piece(r, xl, xr, dy);  // the area goes in at finish()
+        return;
+    }
+    double* acc = acc_.data() + static_cast<std::size_t>(r) * stride_;
     if (c1 <= c0) {
         const double a = dy * ((c0 + 1) - 0.5 * (xl + xr));
         acc[c0] += a;
@@ -184,11 +221,12 @@ inline void Direct::push(double x0, double y0, double x1, double y1) {
     if (++count_ > limits::kMaxFlattenedSegments)
         throw Error(ErrorKind::Limit,
                     "path too complex: more than " + std::to_string(limits::kMaxFlattenedSegments) + " edges");
-    if (track_) walk<true>(x0, y0, x1, y1);
-    else walk<false>(x0, y0, x1, y1);
+    if (track_) walk<true, false>(x0, y0, x1, y1);
+    else if (vec_) walk<false, true>(x0, y0, x1, y1);
+    else walk<false, false>(x0, y0, x1, y1);
 }
 
-template <bool kTrack>
+template <bool kTrack, bool kVec>
 [[gnu::always_inline]] inline void Direct::walk(double x0, double y0, double x1, double y1) {
     std::uint32_t sid = 0;
     std::uint8_t bits = 0;
@@ -225,32 +263,32 @@ template <bool kTrack>
     }
     if (y1 > y0) {
         const int r0 = floor_nn(y0), rend = ceil_nn(y1) - 1;
-        if (rend <= r0) return row_piece<kTrack>(r0, x0, y0, x1, y1, sid, bits);  // one row
+        if (rend <= r0) return row_piece<kTrack, kVec>(r0, x0, y0, x1, y1, sid, bits);  // one row
         const double k = (x1 - x0) / (y1 - y0);
         const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
         double ya = y0, xa = x0;
         for (int r = r0; r < rend; ++r) {
             const double yb = r + 1.0;
             const double xb = std::clamp(x0 + (yb - y0) * k, xlo, xhi);
-            row_piece<kTrack>(r, xa, ya, xb, yb, sid, bits);
+            row_piece<kTrack, kVec>(r, xa, ya, xb, yb, sid, bits);
             ya = yb;
             xa = xb;
         }
-        row_piece<kTrack>(rend, xa, ya, x1, y1, sid, bits);
+        row_piece<kTrack, kVec>(rend, xa, ya, x1, y1, sid, bits);
     } else {
         const int r0 = ceil_nn(y0) - 1, rend = floor_nn(y1);
-        if (rend >= r0) return row_piece<kTrack>(r0, x0, y0, x1, y1, sid, bits);  // one row
+        if (rend >= r0) return row_piece<kTrack, kVec>(r0, x0, y0, x1, y1, sid, bits);  // one row
         const double k = (x1 - x0) / (y1 - y0);
         const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
         double ya = y0, xa = x0;
         for (int r = r0; r > rend; --r) {
             const double yb = r;
             const double xb = std::clamp(x0 + (yb - y0) * k, xlo, xhi);
-            row_piece<kTrack>(r, xa, ya, xb, yb, sid, bits);
+            row_piece<kTrack, kVec>(r, xa, ya, xb, yb, sid, bits);
             ya = yb;
             xa = xb;
         }
-        row_piece<kTrack>(rend, xa, ya, x1, y1, sid, bits);
+        row_piece<kTrack, kVec>(rend, xa, ya, x1, y1, sid, bits);
     }
 }
 

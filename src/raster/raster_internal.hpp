@@ -7,7 +7,8 @@
 //   accumulate.cpp  walk each edge through the cells of a strip: cover/area into a dense buffer,
 //                   and mark the cells where plain accumulation may be inexact
 //   exact_cell.cpp  exact coverage of a marked cell from the edges inside it
-//   coverage.cpp    per-row prefix sum + fill rule -> 8-bit coverage (Highway, runtime dispatch)
+//   coverage.cpp    per-row prefix sum + fill rule -> 8-bit coverage, and the row-vector
+//                   accumulation of narrow shapes (Highway, runtime dispatch)
 #pragma once
 
 #include <cstdint>
@@ -146,6 +147,35 @@ struct ScanRows {
     int ox, oy;
 };
 void scan_rows(const ScanRows& rows, SpanSink& sink);
+
+// Row-vector accumulation (the direct path for narrow shapes without the overlap check). A piece of an edge inside pixel row
+// r, spanning [xl, xr] (xr > xl) with signed height dy, adds to pixel c of the row the integral
+// over its height of clamp(c + 1 - x, 0, 1): its part inside [c, c + 1] contributes its height
+// times the distance of that part's middle to the pixel's right side, its part left of the pixel
+// its whole height. With u0 = max(xl, c), u1 = min(xr, c + 1) and k = dy / (xr - xl):
+//     k * (max(u1 - u0, 0) * (c + 1 - (u0 + u1) / 2) + max(min(xr, c) - xl, 0)).
+// Every pixel of the row at once, in SIMD vectors: no per-cell loop and no prefix sum, since the
+// sum is the integral of the winding number over the pixel itself.
+struct RowPiece {
+    float xl, xr, k;
+    std::int32_t r;
+};
+// Floats per SIMD vector of the best target this CPU runs (rows are whole vectors).
+int row_vector_lanes();
+// Adds every piece to acc (`stride` floats per row, a multiple of row_vector_lanes()).
+void row_vector_accumulate(const RowPiece* pieces, std::size_t n, float* acc, int stride);
+// Maps rows [0, h) of acc through the fill rule to 8-bit coverage and clears them; rows with
+// from[r] == INT_MAX (no piece) are skipped (they are zero). Each row goes to the sink from column
+// from[r] to w, at (ox, oy). `cov`: stride bytes of scratch.
+struct RowVectorRows {
+    float* acc;
+    int stride, w, h;
+    const int* from;
+    FillRule rule;
+    std::uint8_t* cov;
+    int ox, oy;
+};
+void row_vector_emit(const RowVectorRows& rows, SpanSink& sink);
 
 }  // namespace casteljau::raster
 

@@ -1,0 +1,437 @@
+// bench/accumulation_floor.cpp: how fast can the accumulation step alone be?
+//
+// The speed target is 1.5x FreeType's smooth rasterizer on the glyph set of
+// compare_glyphs. This program measures lower bounds for two designs that casteljau could switch
+// to, on the same glyphs, in the same process as FreeType and casteljau:
+//
+//   FreeType          FT_Outline_Render of the outline: everything (flattening, cells, sweep, spans)
+//   budget            FreeType's time / 1.5: what casteljau may spend on everything to meet the target
+//   casteljau         Rasterizer::fill of the *already flattened* polygon (exact overlaps on; no
+//                     flattening timed), and the same with exact overlaps off
+//   dense float       font-rs's design: every edge walked through a dense float buffer (cover/area),
+//                     then one prefix sum per row into 8-bit coverage (nonzero)
+//   row vector        an analytic design for narrow shapes: each piece of an edge inside one pixel row
+//                     adds its exact area to every pixel of the row in SIMD vectors (Highway, runtime
+//                     dispatch), so there is no per-cell loop and no prefix sum; rows are then mapped
+//                     to 8-bit coverage
+//
+// The two floors do strictly less than casteljau: no flattening, no clipping, no overlap check,
+// no span sink, the edges already converted to float, nonzero only. So their time is a lower
+// bound on what a rasterizer of that design needs for this glyph set. Both are checked against
+// casteljau (exact overlaps off, same polygons): a floor that disagrees by more than 1/255 at any
+// pixel makes the program exit 1 (this is what the ctest smoke test checks), so a broken floor
+// cannot report a fast time.
+//
+// Usage: accumulation_floor [--quick] [--runs R] [--sizes 12,24,...] [--tolerance PX]
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "accumulation_floor.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "casteljau/flatten.hpp"
+#include "casteljau/raster.hpp"
+#include "glyph_set.hpp"
+#include "timer.hpp"
+
+#ifndef ACCUMULATION_FLOOR_SHARED
+#define ACCUMULATION_FLOOR_SHARED
+namespace floorbench {
+// One edge of a flattened glyph, in pixels of the glyph's box (y down).
+struct Seg {
+    float x0, y0, x1, y1;
+};
+// One glyph's edges and box size; acc and out are scratch buffers large enough for the box.
+struct Job {
+    const Seg* segs;
+    std::size_t n;
+    int w, h;
+    float* acc;         // row vector: stride floats per row, zero on entry and on return
+    std::uint8_t* out;  // stride bytes per row
+    int stride;         // w rounded up to whole vectors (row_vector_stride)
+};
+}  // namespace floorbench
+#endif
+
+HWY_BEFORE_NAMESPACE();
+namespace floorbench {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+int StrideImpl(int w) {
+    const hn::ScalableTag<float> d;
+    const int n = static_cast<int>(hn::Lanes(d));
+    return (w + n - 1) / n * n;
+}
+
+// The piece of an edge inside row r, from x = xa to x = xb, with signed height dy, adds to pixel c
+// the integral over the piece's height of clamp(c + 1 - x, 0, 1): the part of the piece inside
+// [c, c + 1] contributes its height times the distance of its mid point to the pixel's right side,
+// the part left of the pixel its whole height. Per pixel (SIMD lanes): with u0 = max(xl, c),
+// u1 = min(xr, c + 1),
+//     dy / (xr - xl) * (max(u1 - u0, 0) * (c + 1 - (u0 + u1) / 2) + max(min(xr, c) - xl, 0)).
+// A (nearly) vertical piece is widened to 1e-4 px around its mid point (an area change below
+// 1e-4 of a pixel).
+void RowVectorImpl(const Job& job) {
+    const hn::ScalableTag<float> d;
+    const int N = static_cast<int>(hn::Lanes(d));
+    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
+    const auto iota = hn::Iota(d, 0.0f);
+    const float H = static_cast<float>(job.h);
+    for (std::size_t k = 0; k < job.n; ++k) {
+        float x0 = job.segs[k].x0, y0 = job.segs[k].y0, x1 = job.segs[k].x1, y1 = job.segs[k].y1;
+        if (y0 == y1) continue;
+        float dir = 1.0f;
+        if (y0 > y1) {
+            dir = -1.0f;
+            std::swap(x0, x1);
+            std::swap(y0, y1);
+        }
+        const float slope = (x1 - x0) / (y1 - y0);
+        const int r0 = static_cast<int>(y0);
+        const int r1 = std::min(job.h, static_cast<int>(std::ceil(y1)));
+        float ya = y0, xa = x0;
+        for (int r = r0; r < r1; ++r) {
+            const float yb = std::min(static_cast<float>(r + 1), std::min(y1, H));
+            const float xb = yb >= y1 ? x1 : x0 + (yb - y0) * slope;
+            float xl = std::min(xa, xb), xr = std::max(xa, xb);
+            if (xr - xl < 1e-4f) {
+                const float m = 0.5f * (xl + xr);
+                xl = m - 5e-5f;
+                xr = m + 5e-5f;
+            }
+            const auto vxl = hn::Set(d, xl), vxr = hn::Set(d, xr), vk = hn::Set(d, (yb - ya) * dir / (xr - xl));
+            float* row = job.acc + static_cast<std::size_t>(r) * static_cast<std::size_t>(job.stride);
+            for (int i = 0; i < job.stride; i += N) {
+                const auto cl = hn::Add(iota, hn::Set(d, static_cast<float>(i)));
+                const auto cr = hn::Add(cl, one);
+                const auto u0 = hn::Max(vxl, cl), u1 = hn::Min(vxr, cr);
+                const auto len = hn::Max(hn::Sub(u1, u0), zero);
+                const auto mid = hn::NegMulAdd(hn::Add(u0, u1), half, cr);
+                const auto left = hn::Max(hn::Sub(hn::Min(vxr, cl), vxl), zero);
+                hn::StoreU(hn::MulAdd(vk, hn::MulAdd(len, mid, left), hn::LoadU(d, row + i)), d, row + i);
+            }
+            ya = yb;
+            xa = xb;
+        }
+    }
+    // Nonzero rule, 8-bit, and clear the rows.
+    const hn::Rebind<std::int32_t, decltype(d)> di;
+    const hn::Rebind<std::uint8_t, decltype(d)> du8;
+    const auto scale = hn::Set(d, 255.0f);
+    for (int r = 0; r < job.h; ++r) {
+        float* row = job.acc + static_cast<std::size_t>(r) * static_cast<std::size_t>(job.stride);
+        std::uint8_t* o = job.out + static_cast<std::size_t>(r) * static_cast<std::size_t>(job.stride);
+        for (int i = 0; i < job.stride; i += N) {
+            const auto v = hn::Min(hn::Abs(hn::LoadU(d, row + i)), one);
+            hn::StoreU(zero, d, row + i);
+            hn::StoreU(hn::DemoteTo(du8, hn::ConvertTo(di, hn::MulAdd(v, scale, half))), du8, o + i);
+        }
+    }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace floorbench
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace floorbench {
+HWY_EXPORT(StrideImpl);
+HWY_EXPORT(RowVectorImpl);
+
+int row_vector_stride(int w) { return HWY_DYNAMIC_DISPATCH(StrideImpl)(w); }
+void row_vector(const Job& job) { HWY_DYNAMIC_DISPATCH(RowVectorImpl)(job); }
+
+// font-rs's accumulation: cover/area into a dense float buffer of (w + 2) x h cells, then one
+// running sum per glyph into 8-bit nonzero coverage (the buffer is cleared as it is read).
+void dense_float(const Seg* segs, std::size_t n, int w, int h, float* acc, std::uint8_t* out) {
+    const int stride = w + 2;
+    for (std::size_t k = 0; k < n; ++k) {
+        float x0 = segs[k].x0, y0 = segs[k].y0, x1 = segs[k].x1, y1 = segs[k].y1;
+        if (y0 == y1) continue;
+        float dir = 1.0f;
+        if (y0 > y1) {
+            dir = -1.0f;
+            std::swap(x0, x1);
+            std::swap(y0, y1);
+        }
+        const float dxdy = (x1 - x0) / (y1 - y0);
+        float x = x0;
+        const int ys = static_cast<int>(y0), ye = std::min(h, static_cast<int>(std::ceil(y1)));
+        for (int y = ys; y < ye; ++y) {
+            float* a = acc + static_cast<std::size_t>(y) * static_cast<std::size_t>(stride);
+            const float dy = std::min(static_cast<float>(y + 1), y1) - std::max(static_cast<float>(y), y0);
+            const float xn = x + dxdy * dy;
+            const float dd = dy * dir;
+            const float xa = std::min(x, xn), xb = std::max(x, xn);
+            const int i0 = static_cast<int>(xa);
+            const int i1 = static_cast<int>(std::ceil(xb));
+            if (i1 <= i0 + 1) {
+                const float xm = 0.5f * (x + xn) - static_cast<float>(i0);
+                a[i0] += dd - dd * xm;
+                a[i0 + 1] += dd * xm;
+            } else {
+                const float s = 1.0f / (xb - xa);
+                const float f0 = xa - static_cast<float>(i0), f1 = xb - static_cast<float>(i1) + 1.0f;
+                const float g0 = 1.0f - f0;
+                const float am = 0.5f * s * g0 * g0;
+                a[i0] += dd * am;
+                if (i1 == i0 + 2) {
+                    a[i0 + 1] += dd * (1.0f - am - 0.5f * s * f1 * f1);
+                } else {
+                    const float a1 = s * (1.5f - f0);
+                    a[i0 + 1] += dd * (a1 - am);
+                    for (int i = i0 + 2; i < i1 - 1; ++i) a[i] += dd * s;
+                    const float a2 = a1 + static_cast<float>(i1 - i0 - 3) * s;
+                    a[i1 - 1] += dd * (1.0f - a2 - 0.5f * s * f1 * f1);
+                }
+                a[i1] += dd * 0.5f * s * f1 * f1;
+            }
+            x = xn;
+        }
+    }
+    for (int y = 0; y < h; ++y) {
+        float* a = acc + static_cast<std::size_t>(y) * static_cast<std::size_t>(stride);
+        std::uint8_t* o = out + static_cast<std::size_t>(y) * static_cast<std::size_t>(w);
+        float s = 0;
+        for (int x = 0; x < stride; ++x) {
+            s += a[x];
+            a[x] = 0;
+            if (x < w) o[x] = static_cast<std::uint8_t>(std::min(std::fabs(s), 1.0f) * 255.0f + 0.5f);
+        }
+    }
+}
+
+}  // namespace floorbench
+
+namespace {
+
+using floorbench::Seg;
+
+struct Options {
+    bool quick = false;
+    int runs = 7;
+    double min_time = 0.1;
+    std::vector<int> sizes{12, 24, 48, 96, 256};
+    double tolerance = casteljau::kDefaultTolerance;
+};
+
+[[noreturn]] void usage(const char* msg) {
+    std::fprintf(stderr, "accumulation_floor: %s\nusage: accumulation_floor [--quick] [--runs R] [--sizes 12,24,...] [--tolerance PX]\n",
+                 msg);
+    std::exit(2);
+}
+
+Options parse(int argc, char** argv) {
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) usage(("missing value after " + a).c_str());
+            return argv[++i];
+        };
+        if (a == "--quick") {
+            o.quick = true;
+            o.runs = 1;
+        } else if (a == "--runs") {
+            o.runs = std::max(1, std::atoi(value().c_str()));
+        } else if (a == "--tolerance") {
+            o.tolerance = std::atof(value().c_str());
+            if (!(o.tolerance > 0)) usage("--tolerance must be positive");
+        } else if (a == "--sizes") {
+            o.sizes.clear();
+            const std::string s = value();
+            for (std::size_t p = 0; p < s.size();) {
+                std::size_t q = s.find(',', p);
+                if (q == std::string::npos) q = s.size();
+                const int v = std::atoi(s.substr(p, q - p).c_str());
+                if (v <= 0 || v > 1000) usage("bad --sizes");
+                o.sizes.push_back(v);
+                p = q + 1;
+            }
+        } else if (a == "--help" || a == "-h") {
+            usage("lower bounds of accumulation designs on the compare_glyphs glyph set");
+        } else {
+            usage(("unknown argument " + a).c_str());
+        }
+    }
+    return o;
+}
+
+// One glyph, flattened once (the polygon casteljau's fill scan-converts at this tolerance).
+struct Flat {
+    int w = 0, h = 0;
+    std::vector<Seg> segs;
+    casteljau::Path polygon;  // the same edges as a path of lines
+    FT_Outline outline{};     // for FreeType (owned by the GlyphSet)
+};
+
+// Best (smallest) nanoseconds per glyph over `runs` rounds of whole passes of at least min_time.
+template <class F>
+double time_ns(const Options& o, std::size_t glyphs, F&& pass) {
+    int passes = 1;
+    if (!o.quick) {
+        for (;;) {
+            const double t0 = bench::thread_cpu_seconds();
+            for (int p = 0; p < passes; ++p) pass();
+            if (bench::thread_cpu_seconds() - t0 >= o.min_time || passes > (1 << 20)) break;
+            passes *= 2;
+        }
+    }
+    double best = 1e300;
+    for (int r = 0; r < o.runs; ++r) {
+        const double t0 = bench::thread_cpu_seconds();
+        for (int p = 0; p < passes; ++p) pass();
+        best = std::min(best, (bench::thread_cpu_seconds() - t0) / passes);
+    }
+    return best * 1e9 / static_cast<double>(glyphs);
+}
+
+int run(const Options& o) {
+    const bench::Font font;
+    std::printf("accumulation_floor: %s, glyph set of compare_glyphs, unhinted, tolerance %g px\n",
+                font.path().c_str(), o.tolerance);
+    std::printf("nanoseconds per glyph (thread CPU time, best of %d rounds); casteljau and the floors get the "
+                "polygon already flattened\n\n",
+                o.runs);
+    std::printf("| px | edges/glyph | FreeType (all) | budget = FreeType / 1.5 | casteljau (exact on) | "
+                "casteljau (exact off) | dense float | row vector |\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    int status = 0;
+    for (const int px : o.sizes) {
+        const bench::GlyphSet set(font, px);
+        std::vector<Flat> flats(set.size());
+        std::size_t edges = 0;
+        int maxw = 1, maxh = 1;
+        for (std::size_t i = 0; i < set.size(); ++i) {
+            const bench::Glyph& g = set.glyphs()[i];
+            Flat& f = flats[i];
+            f.w = g.box.width;
+            f.h = g.box.height;
+            f.outline = g.outline;
+            casteljau::Polyline pl;
+            casteljau::flatten(g.path, g.to_box, o.tolerance, pl, casteljau::FlattenMode::AreaBalanced);
+            std::size_t b = 0;
+            for (const std::uint32_t e : pl.contour_ends) {
+                if (e > b) {
+                    f.polygon.move_to(pl.points[b]);
+                    for (std::size_t k = b + 1; k < e; ++k) f.polygon.line_to(pl.points[k]);
+                    f.polygon.close();
+                }
+                for (std::size_t k = b; k < e; ++k) {
+                    const casteljau::Point p = pl.points[k], q = pl.points[k + 1 < e ? k + 1 : b];
+                    if (p.x == q.x && p.y == q.y) continue;
+                    f.segs.push_back({static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(q.x),
+                                      static_cast<float>(q.y)});
+                }
+                b = e;
+            }
+            edges += f.segs.size();
+            maxw = std::max(maxw, f.w);
+            maxh = std::max(maxh, f.h);
+        }
+        const int vstride = floorbench::row_vector_stride(maxw);
+        // Scratch: zero between glyphs; out buffers padded for whole-vector stores.
+        std::vector<float> acc(static_cast<std::size_t>(std::max(vstride, maxw + 2)) * static_cast<std::size_t>(maxh) + 64, 0.0f);
+        std::vector<std::uint8_t> out(static_cast<std::size_t>(vstride + 64) * static_cast<std::size_t>(maxh), 0);
+        std::vector<std::uint8_t> ref(static_cast<std::size_t>(maxw) * static_cast<std::size_t>(maxh), 0);
+        unsigned checksum = 0;
+
+        // Agreement: both floors against casteljau (exact off) on the same polygons.
+        casteljau::Rasterizer rast;
+        casteljau::FillOptions off;
+        off.exact_overlaps = false;
+        int worst_dense = 0, worst_vector = 0;
+        for (const Flat& f : flats) {
+            std::memset(ref.data(), 0, ref.size());
+            bench::BufferSink sink(ref.data(), f.w);
+            rast.fill(f.polygon, casteljau::Affine{}, off, casteljau::IRect{0, 0, f.w, f.h}, sink);
+            floorbench::dense_float(f.segs.data(), f.segs.size(), f.w, f.h, acc.data(), out.data());
+            for (int y = 0; y < f.h; ++y)
+                for (int x = 0; x < f.w; ++x)
+                    worst_dense = std::max(worst_dense, std::abs(out[static_cast<std::size_t>(y) * f.w + x] -
+                                                                 ref[static_cast<std::size_t>(y) * f.w + x]));
+            const int s = floorbench::row_vector_stride(f.w);
+            floorbench::row_vector({f.segs.data(), f.segs.size(), f.w, f.h, acc.data(), out.data(), s});
+            for (int y = 0; y < f.h; ++y)
+                for (int x = 0; x < f.w; ++x)
+                    worst_vector = std::max(worst_vector, std::abs(out[static_cast<std::size_t>(y) * s + x] -
+                                                                   ref[static_cast<std::size_t>(y) * f.w + x]));
+        }
+        if (worst_dense > 1 || worst_vector > 1) {
+            std::fprintf(stderr, "FAIL: %d px: a floor disagrees with casteljau (exact off): dense float %d/255, row vector %d/255\n",
+                         px, worst_dense, worst_vector);
+            status = 1;
+        }
+
+        const double ft = time_ns(o, flats.size(), [&] {
+            for (const Flat& f : flats) {
+                std::memset(ref.data(), 0, static_cast<std::size_t>(f.w) * static_cast<std::size_t>(f.h));
+                FT_Bitmap bm{};
+                bm.rows = static_cast<unsigned>(f.h);
+                bm.width = static_cast<unsigned>(f.w);
+                bm.pitch = f.w;
+                bm.buffer = ref.data();
+                bm.pixel_mode = FT_PIXEL_MODE_GRAY;
+                bm.num_grays = 256;
+                FT_Raster_Params params{};
+                params.target = &bm;
+                params.flags = FT_RASTER_FLAG_AA;
+                FT_Outline outline = f.outline;
+                FT_Outline_Render(font.library(), &outline, &params);
+                checksum += ref[0];
+            }
+        });
+        auto cast = [&](bool exact) {
+            casteljau::FillOptions fo;
+            fo.exact_overlaps = exact;
+            return time_ns(o, flats.size(), [&] {
+                for (const Flat& f : flats) {
+                    std::memset(ref.data(), 0, static_cast<std::size_t>(f.w) * static_cast<std::size_t>(f.h));
+                    bench::BufferSink sink(ref.data(), f.w);
+                    rast.fill(f.polygon, casteljau::Affine{}, fo, casteljau::IRect{0, 0, f.w, f.h}, sink);
+                    checksum += ref[0];
+                }
+            });
+        };
+        const double on = cast(true), offt = cast(false);
+        const double dense = time_ns(o, flats.size(), [&] {
+            for (const Flat& f : flats) {
+                floorbench::dense_float(f.segs.data(), f.segs.size(), f.w, f.h, acc.data(), out.data());
+                checksum += out[0];
+            }
+        });
+        const double vec = time_ns(o, flats.size(), [&] {
+            for (const Flat& f : flats) {
+                floorbench::row_vector({f.segs.data(), f.segs.size(), f.w, f.h, acc.data(), out.data(),
+                                        floorbench::row_vector_stride(f.w)});
+                checksum += out[0];
+            }
+        });
+        std::printf("| %d | %.1f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f |\n", px,
+                    static_cast<double>(edges) / static_cast<double>(flats.size()), ft, ft / 1.5, on, offt, dense, vec);
+        std::fflush(stdout);
+        if (checksum == 0xffffffffu) std::printf(" ");  // keep the work observable
+    }
+    return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(parse(argc, argv));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "accumulation_floor: error: %s\n", e.what());
+        return 1;
+    }
+}
+#endif  // HWY_ONCE
