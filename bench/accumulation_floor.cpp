@@ -6,6 +6,8 @@
 //
 //   FreeType          FT_Outline_Render of the outline: everything (flattening, cells, sweep, spans)
 //   budget            FreeType's time / 1.5: what casteljau may spend on everything to meet the target
+//   flatten           casteljau::flatten of the outline into a polygon (area-balanced, the polygon
+//                     fill scan-converts), nothing else: what any chord-based design pays first
 //   casteljau         Rasterizer::fill of the *already flattened* polygon (exact overlaps on; no
 //                     flattening timed), and the same with exact overlaps off
 //   dense float       font-rs's design: every edge walked through a dense float buffer (cover/area),
@@ -302,9 +304,9 @@ int run(const Options& o) {
     std::printf("nanoseconds per glyph (thread CPU time, best of %d rounds); casteljau and the floors get the "
                 "polygon already flattened\n\n",
                 o.runs);
-    std::printf("| px | edges/glyph | FreeType (all) | budget = FreeType / 1.5 | casteljau (exact on) | "
+    std::printf("| px | edges/glyph | FreeType (all) | budget = FreeType / 1.5 | flatten | casteljau (exact on) | "
                 "casteljau (exact off) | dense float | row vector |\n");
-    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     int status = 0;
     for (const int px : o.sizes) {
         const bench::GlyphSet set(font, px);
@@ -403,6 +405,13 @@ int run(const Options& o) {
             });
         };
         const double on = cast(true), offt = cast(false);
+        casteljau::Polyline scratch_polyline;
+        const double flat = time_ns(o, flats.size(), [&] {
+            for (const bench::Glyph& g : set.glyphs()) {
+                casteljau::flatten(g.path, g.to_box, o.tolerance, scratch_polyline, casteljau::FlattenMode::AreaBalanced);
+                checksum += static_cast<unsigned>(scratch_polyline.points.size());
+            }
+        });
         const double dense = time_ns(o, flats.size(), [&] {
             for (const Flat& f : flats) {
                 floorbench::dense_float(f.segs.data(), f.segs.size(), f.w, f.h, acc.data(), out.data());
@@ -416,8 +425,9 @@ int run(const Options& o) {
                 checksum += out[0];
             }
         });
-        std::printf("| %d | %.1f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f |\n", px,
-                    static_cast<double>(edges) / static_cast<double>(flats.size()), ft, ft / 1.5, on, offt, dense, vec);
+        std::printf("| %d | %.1f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f |\n", px,
+                    static_cast<double>(edges) / static_cast<double>(flats.size()), ft, ft / 1.5, flat, on, offt, dense,
+                    vec);
         std::fflush(stdout);
         if (checksum == 0xffffffffu) std::printf(" ");  // keep the work observable
     }
