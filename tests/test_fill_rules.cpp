@@ -9,6 +9,8 @@
 #include <random>
 #include <string>
 
+#include <hwy/targets.h>
+
 #include "accuracy_util.hpp"
 #include "glyph_outline.hpp"
 
@@ -379,7 +381,8 @@ TEST_CASE("fill rules: narrow shapes accumulate by rows as the cell walk does (e
     // (float, every pixel of a row per piece) and wider ones by the cell walk (double, prefix sums).
     // The same contours rendered alone (narrow) and with a tiny square 3000 px to the right (wide)
     // take the two paths; on the narrow part they must agree to rounding, under both rules, with
-    // crossings, edges on pixel sides and on the box's sides, and windings of hundreds.
+    // crossings, edges on pixel sides and on the box's sides, and windings of hundreds, on every SIMD
+    // target this machine runs (the row width is a whole number of that target's vectors).
     Rasterizer r;
     std::mt19937 rng(29);
     std::uniform_real_distribution<double> u(0, 1);
@@ -398,7 +401,12 @@ TEST_CASE("fill rules: narrow shapes accumulate by rows as the cell walk does (e
     shapes.push_back(Contours(301, Contour{{2.3, 1.7}, {37.9, 12.2}, {9.4, 38.6}}));
     const IRect window{0, 0, 40, 40};
     int worst = 0, compared = 0;
-    for (const Contours& cs : shapes) {
+    const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();  // every SIMD width
+    REQUIRE(!targets.empty());
+    for (std::size_t n = 0; n < targets.size() * shapes.size(); ++n) {
+        const std::int64_t t = targets[n / shapes.size()];
+        const Contours& cs = shapes[n % shapes.size()];
+        hwy::SetSupportedTargetsForTest(t);
         Contours wide = cs;
         wide.push_back(far);
         for (FillRule rule : kRules) {
@@ -412,14 +420,16 @@ TEST_CASE("fill rules: narrow shapes accumulate by rows as the cell walk does (e
                     const int d = std::abs(a.at(x, y) - b.at(x, y));
                     if (d > worst) {
                         worst = d;
-                        INFO(describe(cs, Affine::identity(), window) << " " << rule_name(rule) << " at " << x << "," << y
-                                                                      << ": " << a.at(x, y) << " vs " << b.at(x, y));
+                        INFO(hwy::TargetName(t) << ": " << describe(cs, Affine::identity(), window) << " "
+                                                << rule_name(rule) << " at " << x << "," << y << ": " << a.at(x, y)
+                                                << " vs " << b.at(x, y));
                         CHECK(d <= 1);
                     }
                     ++compared;
                 }
         }
     }
+    hwy::SetSupportedTargetsForTest(0);
     CHECK(worst <= 1);
-    CHECK(compared == 2 * 44 * 1600);
+    CHECK(compared == static_cast<int>(targets.size()) * 2 * 44 * 1600);
 }

@@ -217,10 +217,8 @@ HWY_EXPORT(RowVectorEmitImpl);
 
 void scan_rows(const ScanRows& rows, SpanSink& sink) { HWY_DYNAMIC_DISPATCH(ScanRowsImpl)(rows, sink); }
 
-int row_vector_lanes() {
-    static const int lanes = HWY_DYNAMIC_DISPATCH(RowVectorLanesImpl)();
-    return lanes;
-}
+// Not cached: tests switch targets, and the stride must be whole vectors of the kernels' target.
+int row_vector_lanes() { return HWY_DYNAMIC_DISPATCH(RowVectorLanesImpl)(); }
 void row_vector_accumulate(const RowPiece* pieces, std::size_t n, float* acc, int stride) {
     HWY_DYNAMIC_DISPATCH(RowVectorAccumulateImpl)(pieces, n, acc, stride);
 }

@@ -4,7 +4,9 @@
 // Used when the shape's clipped bounds fit one buffer (rasterizer.cpp decides). Accumulation is the
 // cover/area scheme of accumulate.cpp (acc[k] gets the piece's height times the part of cell k to
 // its right, acc[k + 1] the rest; a prefix sum along the row gives the integral of the winding
-// number over each pixel), on a dense double buffer.
+// number over each pixel), on a dense double buffer. Without the overlap check, shapes at most
+// kRowVectorMax SIMD vectors wide use row vectors instead (RowPiece in raster_internal.hpp): the
+// walk lists each edge's pieces per row, and finish() adds every piece's area to its whole row.
 //
 // Overlap check. Plain accumulation is exact in a cell whose winding numbers lie in one unit
 // interval. Edges arrive in contour order, so the walk knows, for every cell it enters, that the

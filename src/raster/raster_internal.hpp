@@ -3,7 +3,8 @@
 //                   boxes of at most 2^18 cells go to the direct path, larger ones are split into
 //                   strips and driven through the stages below
 //   direct.cpp      the direct path: accumulate while flattening, find overlapping cells by runs
-//                   of edges per cell, resolve them exactly, scan only the touched blocks
+//                   of edges per cell, resolve them exactly, scan only the touched blocks (or,
+//                   without the overlap check and for narrow shapes, accumulate by row vectors)
 //   accumulate.cpp  walk each edge through the cells of a strip: cover/area into a dense buffer,
 //                   and mark the cells where plain accumulation may be inexact
 //   exact_cell.cpp  exact coverage of a marked cell from the edges inside it
