@@ -12,10 +12,13 @@
 //                     flattening timed), and the same with exact overlaps off
 //   dense float       font-rs's design: every edge walked through a dense float buffer (cover/area),
 //                     then one prefix sum per row into 8-bit coverage (nonzero)
-//   row vector        an analytic design for narrow shapes: each piece of an edge inside one pixel row
-//                     adds its exact area to every pixel of the row in SIMD vectors (Highway, runtime
-//                     dispatch), so there is no per-cell loop and no prefix sum; rows are then mapped
-//                     to 8-bit coverage
+//   row vector        the design casteljau's fill uses for narrow shapes without the overlap check
+//                     (RowPiece in src/raster/raster_internal.hpp): each piece of an edge inside one
+//                     pixel row adds its exact area to every pixel of the row in SIMD vectors
+//                     (Highway, runtime dispatch), so there is no per-cell loop and no prefix sum;
+//                     rows are then mapped to 8-bit coverage. Here splitting and area are one pass
+//                     with no piece records (the library's kernel takes recorded pieces), so the
+//                     area formula is written out again below: this is the design's floor
 //
 // The two floors do strictly less than casteljau: no flattening, no clipping, no overlap check,
 // no span sink, the edges already converted to float, nonzero only. So their time is a lower
@@ -24,7 +27,7 @@
 // pixel makes the program exit 1 (this is what the ctest smoke test checks), so a broken floor
 // cannot report a fast time.
 //
-// Usage: accumulation_floor [--quick] [--runs R] [--sizes 12,24,...] [--tolerance PX]
+// Usage: accumulation_floor [--quick] [--runs R] [--min-time S] [--sizes 12,24,...] [--tolerance PX]
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "accumulation_floor.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -51,14 +54,14 @@ namespace floorbench {
 struct Seg {
     float x0, y0, x1, y1;
 };
-// One glyph's edges and box size; acc and out are scratch buffers large enough for the box.
+// One glyph's edges and box size, and scratch large enough for the box.
 struct Job {
     const Seg* segs;
     std::size_t n;
     int w, h;
-    float* acc;         // row vector: stride floats per row, zero on entry and on return
-    std::uint8_t* out;  // stride bytes per row
-    int stride;         // w rounded up to whole vectors (row_vector_stride)
+    float* acc;         // `stride` floats per row, zero on entry and on return
+    std::uint8_t* out;  // row vector: `stride` bytes per row; dense float: w bytes per row
+    int stride;         // row vector: w rounded up to whole vectors (row_vector_stride); dense float: w + 2
 };
 }  // namespace floorbench
 #endif
@@ -67,6 +70,79 @@ HWY_BEFORE_NAMESPACE();
 namespace floorbench {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
+
+// Calls f(row, x at the piece's top, x at its bottom, signed height) for each piece of `e` inside
+// one pixel row of [0, h), top to bottom (the sign: +1 for an edge going down, -1 going up).
+template <class F>
+HWY_INLINE void ForEachRowPiece(const Seg& e, int h, F&& f) {
+    float x0 = e.x0, y0 = e.y0, x1 = e.x1, y1 = e.y1;
+    if (y0 == y1) return;
+    float dir = 1.0f;
+    if (y0 > y1) {
+        dir = -1.0f;
+        std::swap(x0, x1);
+        std::swap(y0, y1);
+    }
+    const float dxdy = (x1 - x0) / (y1 - y0);
+    float x = x0;
+    const int ys = static_cast<int>(y0), ye = std::min(h, static_cast<int>(std::ceil(y1)));
+    for (int y = ys; y < ye; ++y) {
+        const float dy = std::min(static_cast<float>(y + 1), y1) - std::max(static_cast<float>(y), y0);
+        const float xn = y + 1 >= y1 ? x1 : x + dxdy * dy;
+        f(y, x, xn, dy * dir);
+        x = xn;
+    }
+}
+
+// font-rs's accumulation: cover/area into a dense float buffer of (w + 2) x h cells, then one
+// running sum per glyph into 8-bit nonzero coverage (the buffer is cleared as it is read). Compiled
+// per SIMD target like the rest, so the compiler may vectorise it where it can.
+void DenseFloatImpl(const Job& job) {
+    const Seg* segs = job.segs;
+    const int w = job.w, h = job.h;
+    float* acc = job.acc;
+    std::uint8_t* out = job.out;
+    const int stride = w + 2;
+    for (std::size_t k = 0; k < job.n; ++k) {
+        ForEachRowPiece(segs[k], h, [&](int y, float x, float xn, float dd) {
+            float* a = acc + static_cast<std::size_t>(y) * static_cast<std::size_t>(stride);
+            const float xa = std::min(x, xn), xb = std::max(x, xn);
+            const int i0 = static_cast<int>(xa);
+            const int i1 = static_cast<int>(std::ceil(xb));
+            if (i1 <= i0 + 1) {
+                const float xm = 0.5f * (x + xn) - static_cast<float>(i0);
+                a[i0] += dd - dd * xm;
+                a[i0 + 1] += dd * xm;
+                return;
+            }
+            const float s = 1.0f / (xb - xa);
+            const float f0 = xa - static_cast<float>(i0), f1 = xb - static_cast<float>(i1) + 1.0f;
+            const float g0 = 1.0f - f0;
+            const float am = 0.5f * s * g0 * g0;
+            a[i0] += dd * am;
+            if (i1 == i0 + 2) {
+                a[i0 + 1] += dd * (1.0f - am - 0.5f * s * f1 * f1);
+            } else {
+                const float a1 = s * (1.5f - f0);
+                a[i0 + 1] += dd * (a1 - am);
+                for (int i = i0 + 2; i < i1 - 1; ++i) a[i] += dd * s;
+                const float a2 = a1 + static_cast<float>(i1 - i0 - 3) * s;
+                a[i1 - 1] += dd * (1.0f - a2 - 0.5f * s * f1 * f1);
+            }
+            a[i1] += dd * 0.5f * s * f1 * f1;
+        });
+    }
+    for (int y = 0; y < h; ++y) {
+        float* a = acc + static_cast<std::size_t>(y) * static_cast<std::size_t>(w + 2);
+        std::uint8_t* o = out + static_cast<std::size_t>(y) * static_cast<std::size_t>(w);
+        float sum = 0;
+        for (int x = 0; x < w + 2; ++x) {
+            sum += a[x];
+            a[x] = 0;
+            if (x < w) o[x] = static_cast<std::uint8_t>(std::min(std::fabs(sum), 1.0f) * 255.0f + 0.5f);
+        }
+    }
+}
 
 int StrideImpl(int w) {
     const hn::ScalableTag<float> d;
@@ -87,30 +163,15 @@ void RowVectorImpl(const Job& job) {
     const int N = static_cast<int>(hn::Lanes(d));
     const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
     const auto iota = hn::Iota(d, 0.0f);
-    const float H = static_cast<float>(job.h);
     for (std::size_t k = 0; k < job.n; ++k) {
-        float x0 = job.segs[k].x0, y0 = job.segs[k].y0, x1 = job.segs[k].x1, y1 = job.segs[k].y1;
-        if (y0 == y1) continue;
-        float dir = 1.0f;
-        if (y0 > y1) {
-            dir = -1.0f;
-            std::swap(x0, x1);
-            std::swap(y0, y1);
-        }
-        const float slope = (x1 - x0) / (y1 - y0);
-        const int r0 = static_cast<int>(y0);
-        const int r1 = std::min(job.h, static_cast<int>(std::ceil(y1)));
-        float ya = y0, xa = x0;
-        for (int r = r0; r < r1; ++r) {
-            const float yb = std::min(static_cast<float>(r + 1), std::min(y1, H));
-            const float xb = yb >= y1 ? x1 : x0 + (yb - y0) * slope;
+        ForEachRowPiece(job.segs[k], job.h, [&](int r, float xa, float xb, float dy) {
             float xl = std::min(xa, xb), xr = std::max(xa, xb);
             if (xr - xl < 1e-4f) {
                 const float m = 0.5f * (xl + xr);
                 xl = m - 5e-5f;
                 xr = m + 5e-5f;
             }
-            const auto vxl = hn::Set(d, xl), vxr = hn::Set(d, xr), vk = hn::Set(d, (yb - ya) * dir / (xr - xl));
+            const auto vxl = hn::Set(d, xl), vxr = hn::Set(d, xr), vk = hn::Set(d, dy / (xr - xl));
             float* row = job.acc + static_cast<std::size_t>(r) * static_cast<std::size_t>(job.stride);
             for (int i = 0; i < job.stride; i += N) {
                 const auto cl = hn::Add(iota, hn::Set(d, static_cast<float>(i)));
@@ -121,9 +182,7 @@ void RowVectorImpl(const Job& job) {
                 const auto left = hn::Max(hn::Sub(hn::Min(vxr, cl), vxl), zero);
                 hn::StoreU(hn::MulAdd(vk, hn::MulAdd(len, mid, left), hn::LoadU(d, row + i)), d, row + i);
             }
-            ya = yb;
-            xa = xb;
-        }
+        });
     }
     // Nonzero rule, 8-bit, and clear the rows.
     const hn::Rebind<std::int32_t, decltype(d)> di;
@@ -148,69 +207,11 @@ HWY_AFTER_NAMESPACE();
 namespace floorbench {
 HWY_EXPORT(StrideImpl);
 HWY_EXPORT(RowVectorImpl);
+HWY_EXPORT(DenseFloatImpl);
 
 int row_vector_stride(int w) { return HWY_DYNAMIC_DISPATCH(StrideImpl)(w); }
 void row_vector(const Job& job) { HWY_DYNAMIC_DISPATCH(RowVectorImpl)(job); }
-
-// font-rs's accumulation: cover/area into a dense float buffer of (w + 2) x h cells, then one
-// running sum per glyph into 8-bit nonzero coverage (the buffer is cleared as it is read).
-void dense_float(const Seg* segs, std::size_t n, int w, int h, float* acc, std::uint8_t* out) {
-    const int stride = w + 2;
-    for (std::size_t k = 0; k < n; ++k) {
-        float x0 = segs[k].x0, y0 = segs[k].y0, x1 = segs[k].x1, y1 = segs[k].y1;
-        if (y0 == y1) continue;
-        float dir = 1.0f;
-        if (y0 > y1) {
-            dir = -1.0f;
-            std::swap(x0, x1);
-            std::swap(y0, y1);
-        }
-        const float dxdy = (x1 - x0) / (y1 - y0);
-        float x = x0;
-        const int ys = static_cast<int>(y0), ye = std::min(h, static_cast<int>(std::ceil(y1)));
-        for (int y = ys; y < ye; ++y) {
-            float* a = acc + static_cast<std::size_t>(y) * static_cast<std::size_t>(stride);
-            const float dy = std::min(static_cast<float>(y + 1), y1) - std::max(static_cast<float>(y), y0);
-            const float xn = x + dxdy * dy;
-            const float dd = dy * dir;
-            const float xa = std::min(x, xn), xb = std::max(x, xn);
-            const int i0 = static_cast<int>(xa);
-            const int i1 = static_cast<int>(std::ceil(xb));
-            if (i1 <= i0 + 1) {
-                const float xm = 0.5f * (x + xn) - static_cast<float>(i0);
-                a[i0] += dd - dd * xm;
-                a[i0 + 1] += dd * xm;
-            } else {
-                const float s = 1.0f / (xb - xa);
-                const float f0 = xa - static_cast<float>(i0), f1 = xb - static_cast<float>(i1) + 1.0f;
-                const float g0 = 1.0f - f0;
-                const float am = 0.5f * s * g0 * g0;
-                a[i0] += dd * am;
-                if (i1 == i0 + 2) {
-                    a[i0 + 1] += dd * (1.0f - am - 0.5f * s * f1 * f1);
-                } else {
-                    const float a1 = s * (1.5f - f0);
-                    a[i0 + 1] += dd * (a1 - am);
-                    for (int i = i0 + 2; i < i1 - 1; ++i) a[i] += dd * s;
-                    const float a2 = a1 + static_cast<float>(i1 - i0 - 3) * s;
-                    a[i1 - 1] += dd * (1.0f - a2 - 0.5f * s * f1 * f1);
-                }
-                a[i1] += dd * 0.5f * s * f1 * f1;
-            }
-            x = xn;
-        }
-    }
-    for (int y = 0; y < h; ++y) {
-        float* a = acc + static_cast<std::size_t>(y) * static_cast<std::size_t>(stride);
-        std::uint8_t* o = out + static_cast<std::size_t>(y) * static_cast<std::size_t>(w);
-        float s = 0;
-        for (int x = 0; x < stride; ++x) {
-            s += a[x];
-            a[x] = 0;
-            if (x < w) o[x] = static_cast<std::uint8_t>(std::min(std::fabs(s), 1.0f) * 255.0f + 0.5f);
-        }
-    }
-}
+void dense_float(const Job& job) { HWY_DYNAMIC_DISPATCH(DenseFloatImpl)(job); }
 
 }  // namespace floorbench
 
@@ -218,16 +219,12 @@ namespace {
 
 using floorbench::Seg;
 
-struct Options {
-    bool quick = false;
-    int runs = 7;
-    double min_time = 0.1;
-    std::vector<int> sizes{12, 24, 48, 96, 256};
+struct Options : bench::CommonOptions {
     double tolerance = casteljau::kDefaultTolerance;
 };
 
 [[noreturn]] void usage(const char* msg) {
-    std::fprintf(stderr, "accumulation_floor: %s\nusage: accumulation_floor [--quick] [--runs R] [--sizes 12,24,...] [--tolerance PX]\n",
+    std::fprintf(stderr, "accumulation_floor: %s\nusage: accumulation_floor [--quick] [--runs R] [--min-time S] [--sizes 12,24,...] [--tolerance PX]\n",
                  msg);
     std::exit(2);
 }
@@ -236,29 +233,11 @@ Options parse(int argc, char** argv) {
     Options o;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) usage(("missing value after " + a).c_str());
-            return argv[++i];
-        };
-        if (a == "--quick") {
-            o.quick = true;
-            o.runs = 1;
-        } else if (a == "--runs") {
-            o.runs = std::max(1, std::atoi(value().c_str()));
-        } else if (a == "--tolerance") {
-            o.tolerance = std::atof(value().c_str());
+        if (o.parse_common(argc, argv, i, usage)) continue;
+        if (a == "--tolerance") {
+            if (i + 1 >= argc) usage("missing value after --tolerance");
+            o.tolerance = std::atof(argv[++i]);
             if (!(o.tolerance > 0)) usage("--tolerance must be positive");
-        } else if (a == "--sizes") {
-            o.sizes.clear();
-            const std::string s = value();
-            for (std::size_t p = 0; p < s.size();) {
-                std::size_t q = s.find(',', p);
-                if (q == std::string::npos) q = s.size();
-                const int v = std::atoi(s.substr(p, q - p).c_str());
-                if (v <= 0 || v > 1000) usage("bad --sizes");
-                o.sizes.push_back(v);
-                p = q + 1;
-            }
         } else if (a == "--help" || a == "-h") {
             usage("lower bounds of accumulation designs on the compare_glyphs glyph set");
         } else {
@@ -340,12 +319,15 @@ int run(const Options& o) {
             maxw = std::max(maxw, f.w);
             maxh = std::max(maxh, f.h);
         }
+        // Scratch, zero between glyphs; row vectors use rows of whole SIMD vectors (out too).
         const int vstride = floorbench::row_vector_stride(maxw);
-        // Scratch: zero between glyphs; out buffers padded for whole-vector stores.
-        std::vector<float> acc(static_cast<std::size_t>(std::max(vstride, maxw + 2)) * static_cast<std::size_t>(maxh) + 64, 0.0f);
-        std::vector<std::uint8_t> out(static_cast<std::size_t>(vstride + 64) * static_cast<std::size_t>(maxh), 0);
+        std::vector<float> acc(static_cast<std::size_t>(std::max(vstride, maxw + 2)) * static_cast<std::size_t>(maxh), 0.0f);
+        std::vector<std::uint8_t> out(static_cast<std::size_t>(vstride) * static_cast<std::size_t>(maxh), 0);
         std::vector<std::uint8_t> ref(static_cast<std::size_t>(maxw) * static_cast<std::size_t>(maxh), 0);
         unsigned checksum = 0;
+        auto job = [&](const Flat& f, int stride) {
+            return floorbench::Job{f.segs.data(), f.segs.size(), f.w, f.h, acc.data(), out.data(), stride};
+        };
 
         // Agreement: both floors against casteljau (exact off) on the same polygons.
         casteljau::Rasterizer rast;
@@ -356,13 +338,13 @@ int run(const Options& o) {
             std::memset(ref.data(), 0, ref.size());
             bench::BufferSink sink(ref.data(), f.w);
             rast.fill(f.polygon, casteljau::Affine{}, off, casteljau::IRect{0, 0, f.w, f.h}, sink);
-            floorbench::dense_float(f.segs.data(), f.segs.size(), f.w, f.h, acc.data(), out.data());
+            floorbench::dense_float(job(f, f.w + 2));
             for (int y = 0; y < f.h; ++y)
                 for (int x = 0; x < f.w; ++x)
                     worst_dense = std::max(worst_dense, std::abs(out[static_cast<std::size_t>(y) * f.w + x] -
                                                                  ref[static_cast<std::size_t>(y) * f.w + x]));
             const int s = floorbench::row_vector_stride(f.w);
-            floorbench::row_vector({f.segs.data(), f.segs.size(), f.w, f.h, acc.data(), out.data(), s});
+            floorbench::row_vector(job(f, s));
             for (int y = 0; y < f.h; ++y)
                 for (int x = 0; x < f.w; ++x)
                     worst_vector = std::max(worst_vector, std::abs(out[static_cast<std::size_t>(y) * s + x] -
@@ -377,18 +359,7 @@ int run(const Options& o) {
         const double ft = time_ns(o, flats.size(), [&] {
             for (const Flat& f : flats) {
                 std::memset(ref.data(), 0, static_cast<std::size_t>(f.w) * static_cast<std::size_t>(f.h));
-                FT_Bitmap bm{};
-                bm.rows = static_cast<unsigned>(f.h);
-                bm.width = static_cast<unsigned>(f.w);
-                bm.pitch = f.w;
-                bm.buffer = ref.data();
-                bm.pixel_mode = FT_PIXEL_MODE_GRAY;
-                bm.num_grays = 256;
-                FT_Raster_Params params{};
-                params.target = &bm;
-                params.flags = FT_RASTER_FLAG_AA;
-                FT_Outline outline = f.outline;
-                FT_Outline_Render(font.library(), &outline, &params);
+                bench::render_freetype(font.library(), f.outline, f.w, f.h, ref.data());
                 checksum += ref[0];
             }
         });
@@ -414,14 +385,13 @@ int run(const Options& o) {
         });
         const double dense = time_ns(o, flats.size(), [&] {
             for (const Flat& f : flats) {
-                floorbench::dense_float(f.segs.data(), f.segs.size(), f.w, f.h, acc.data(), out.data());
+                floorbench::dense_float(job(f, f.w + 2));
                 checksum += out[0];
             }
         });
         const double vec = time_ns(o, flats.size(), [&] {
             for (const Flat& f : flats) {
-                floorbench::row_vector({f.segs.data(), f.segs.size(), f.w, f.h, acc.data(), out.data(),
-                                        floorbench::row_vector_stride(f.w)});
+                floorbench::row_vector(job(f, floorbench::row_vector_stride(f.w)));
                 checksum += out[0];
             }
         });

@@ -60,13 +60,9 @@ constexpr double kMaxMeanVsFreeType = 2.0;
 // coverage is within a small fraction of 1/255 of the curves').
 constexpr double kReferenceTolerance = 0.001;
 
-struct Options {
-    bool quick = false;
+struct Options : bench::CommonOptions {
     bool check = true;
-    int runs = 7;
-    double min_time = 0.15;
-    int passes = 0;  // fixed passes per run (0: calibrate)
-    std::vector<int> sizes{12, 24, 48, 96, 256};
+    int passes = 0;  // fixed passes per run (0: calibrate; --quick: 1)
     std::string only;
     double tolerance = casteljau::kDefaultTolerance;
 };
@@ -87,16 +83,10 @@ Options parse(int argc, char** argv) {
     };
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--quick") {
-            o.quick = true;
-            o.runs = 1;
-            o.passes = 1;
+        if (o.parse_common(argc, argv, i, usage)) {
+            if (o.quick) o.passes = 1;
         } else if (a == "--no-check") {
             o.check = false;
-        } else if (a == "--runs") {
-            o.runs = std::max(1, std::atoi(value(i).c_str()));
-        } else if (a == "--min-time") {
-            o.min_time = std::atof(value(i).c_str());
         } else if (a == "--passes") {
             o.passes = std::max(1, std::atoi(value(i).c_str()));
         } else if (a == "--only") {
@@ -104,16 +94,6 @@ Options parse(int argc, char** argv) {
         } else if (a == "--tolerance") {
             o.tolerance = std::atof(value(i).c_str());
             if (!(o.tolerance > 0)) usage("--tolerance must be positive");
-        } else if (a == "--sizes") {
-            o.sizes.clear();
-            std::string s = value(i);
-            for (std::size_t p = 0; p < s.size();) {
-                const std::size_t q = s.find(',', p);
-                const int v = std::atoi(s.substr(p, q - p).c_str());
-                if (v <= 0) usage("bad --sizes");
-                o.sizes.push_back(v);
-                p = q == std::string::npos ? s.size() : q + 1;
-            }
         } else if (a == "--help" || a == "-h") {
             usage("side-by-side glyph rasterization benchmark");
         } else {
@@ -208,18 +188,7 @@ public:
     Coverage render(std::size_t i) override {
         const bench::Glyph& g = set_->glyphs()[i];
         std::memset(buf_.data(), 0, g.box.pixels());
-        FT_Bitmap bm{};
-        bm.rows = static_cast<unsigned>(g.box.height);
-        bm.width = static_cast<unsigned>(g.box.width);
-        bm.pitch = g.box.width;
-        bm.buffer = buf_.data();
-        bm.pixel_mode = FT_PIXEL_MODE_GRAY;
-        bm.num_grays = 256;
-        FT_Raster_Params params{};
-        params.target = &bm;
-        params.flags = FT_RASTER_FLAG_AA;
-        FT_Outline outline = g.outline;  // shallow copy of the handle; FreeType does not modify it
-        FT_Outline_Render(set_->font().library(), &outline, &params);
+        bench::render_freetype(set_->font().library(), g.outline, g.box.width, g.box.height, buf_.data());
         return {buf_.data(), g.box.width, g.box};
     }
 

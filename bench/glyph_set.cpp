@@ -141,6 +141,57 @@ void DiffStats::add(const Coverage& a, const Coverage& b) {
     pixels += static_cast<std::size_t>(x1 - x0) * static_cast<std::size_t>(y1 - y0);
 }
 
+void render_freetype(FT_Library lib, const FT_Outline& outline, int width, int height, std::uint8_t* buf) {
+    FT_Bitmap bm{};
+    bm.rows = static_cast<unsigned>(height);
+    bm.width = static_cast<unsigned>(width);
+    bm.pitch = width;
+    bm.buffer = buf;
+    bm.pixel_mode = FT_PIXEL_MODE_GRAY;
+    bm.num_grays = 256;
+    FT_Raster_Params params{};
+    params.target = &bm;
+    params.flags = FT_RASTER_FLAG_AA;
+    FT_Outline copy = outline;  // a shallow copy of the handle; FreeType does not modify the outline
+    FT_Outline_Render(lib, &copy, &params);
+}
+
+std::vector<int> parse_sizes(const std::string& list) {
+    std::vector<int> sizes;
+    for (std::size_t p = 0; p <= list.size();) {
+        std::size_t q = list.find(',', p);
+        if (q == std::string::npos) q = list.size();
+        const int v = std::atoi(list.substr(p, q - p).c_str());
+        if (v <= 0 || v > 1000) return {};
+        sizes.push_back(v);
+        p = q + 1;
+    }
+    return sizes;
+}
+
+bool CommonOptions::parse_common(int argc, char** argv, int& i, void (*usage)(const char*)) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+        if (i + 1 >= argc) usage(("missing value after " + a).c_str());
+        return argv[++i];
+    };
+    if (a == "--quick") {
+        quick = true;
+        runs = 1;
+    } else if (a == "--runs") {
+        runs = std::max(1, std::atoi(value().c_str()));
+    } else if (a == "--min-time") {
+        min_time = std::atof(value().c_str());
+        if (!(min_time >= 0)) usage("--min-time must be a number of seconds");
+    } else if (a == "--sizes") {
+        sizes = parse_sizes(value());
+        if (sizes.empty()) usage("bad --sizes (pixel sizes 1..1000, comma-separated)");
+    } else {
+        return false;
+    }
+    return true;
+}
+
 void DiffStats::merge(const DiffStats& o) {
     sum += o.sum;
     pixels += o.pixels;

@@ -117,6 +117,27 @@ struct DiffStats {
     double mean() const { return pixels ? sum / static_cast<double>(pixels) : 0.0; }
 };
 
+// FreeType's smooth rasterizer (FT_Outline_Render, FT_RASTER_FLAG_AA) of `outline` (26.6, y up, box
+// corner at (0, 0)) into a gray8 bitmap of width x height at buf (width bytes per row; FreeType only
+// writes covered spans, so clear it first).
+void render_freetype(FT_Library lib, const FT_Outline& outline, int width, int height, std::uint8_t* buf);
+
+// A comma-separated list of pixel sizes ("12,24,48"); empty when an entry is not in 1..1000.
+std::vector<int> parse_sizes(const std::string& list);
+
+// The options every side-by-side program takes: --quick (one run of one pass: a smoke test, no
+// timing claims), --runs R (best of R rounds), --min-time S (seconds per round at least),
+// --sizes 12,24,... Programs derive their Options from it.
+struct CommonOptions {
+    bool quick = false;
+    int runs = 7;
+    double min_time = 0.15;
+    std::vector<int> sizes{12, 24, 48, 96, 256};
+    // When argv[i] is one of these options, reads it (and its value: i moves past it) and returns
+    // true; a missing or bad value goes to usage(), which does not return.
+    bool parse_common(int argc, char** argv, int& i, void (*usage)(const char*));
+};
+
 // Copies the rasterizer's rows into a caller's 8-bit buffer (`stride` bytes per row, pixel
 // (0, 0) at buf[0]).
 class BufferSink final : public casteljau::SpanSink {

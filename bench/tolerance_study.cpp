@@ -29,11 +29,7 @@ namespace {
 constexpr double kReferenceTolerance = 0.001;
 constexpr double kAcceptMean = 0.5, kAcceptMax = 8;
 
-struct Options {
-    bool quick = false;
-    int runs = 7;
-    double min_time = 0.15;
-    std::vector<int> sizes{12, 24, 48, 96, 256};
+struct Options : bench::CommonOptions {
     std::vector<double> tolerances{0.01, 0.015, 0.025, 0.05, 0.1, 0.2, 0.25};
 };
 
@@ -61,22 +57,10 @@ Options parse(int argc, char** argv) {
     Options o;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) usage(("missing value after " + a).c_str());
-            return argv[++i];
-        };
-        if (a == "--quick") {
-            o.quick = true;
-            o.runs = 1;
-        } else if (a == "--runs") {
-            o.runs = std::max(1, std::atoi(value().c_str()));
-        } else if (a == "--min-time") {
-            o.min_time = std::atof(value().c_str());
-        } else if (a == "--sizes") {
-            o.sizes.clear();
-            for (double x : split_numbers(value())) o.sizes.push_back(static_cast<int>(x));
-        } else if (a == "--tolerances") {
-            o.tolerances = split_numbers(value());
+        if (o.parse_common(argc, argv, i, usage)) continue;
+        if (a == "--tolerances") {
+            if (i + 1 >= argc) usage("missing value after --tolerances");
+            o.tolerances = split_numbers(argv[++i]);
         } else if (a == "--help" || a == "-h") {
             usage("flattening tolerance study");
         } else {
