@@ -107,7 +107,7 @@ void Direct::begin(int w, int h, bool track) {
         const std::size_t n = static_cast<std::size_t>(vstride_) * static_cast<std::size_t>(h);
         if (facc_.size() < n) facc_.resize(n, 0.0f);
         row_from_.assign(static_cast<std::size_t>(h), INT_MAX);
-        npieces_ = 0;
+        pieces_.clear();
     } else {
         if (acc_.size() < cells) acc_.resize(cells, 0.0);
         words_ = ((stride_ >> kBlockShift) + 64) / 64;
@@ -123,8 +123,6 @@ void Direct::begin(int w, int h, bool track) {
     contour_started_ = false;
     px_ = py_ = NAN;
 }
-
-void Direct::grow_pieces() { pieces_.resize(std::max<std::size_t>(256, 2 * pieces_.size())); }
 
 void Direct::contour_end() {
     // The run through the contour's start vertex: its last part (now) continues into its first.
@@ -353,16 +351,16 @@ void Direct::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
     } else {
         exact_.clear();
     }
-    if (cov_.size() < stride_) cov_.resize(stride_);
-    patches_.clear();
     if (vec_) {  // no overlap check, so no exact cells
-        row_vector_accumulate(pieces_.data(), npieces_, facc_.data(), vstride_);
+        row_vector_accumulate(pieces_.data(), pieces_.size(), facc_.data(), vstride_);
         if (cov_.size() < static_cast<std::size_t>(vstride_)) cov_.resize(static_cast<std::size_t>(vstride_));
         const RowVectorRows rows{facc_.data(), vstride_, w_, h_, row_from_.data(), rule, cov_.data(), ox, oy};
         row_vector_emit(rows, sink);
         dirty_ = false;
         return;
     }
+    if (cov_.size() < stride_) cov_.resize(stride_);
+    patches_.clear();
     // Exact cells first (the scan clears acc). Untouched cells hold zero, so the integral up to a
     // cell is the plain sum from its row's start.
     std::size_t row_base = 0;

@@ -39,7 +39,7 @@ private:
     inline void row_piece(int r, double xa, double ya, double xb, double yb, std::uint32_t sid, std::uint8_t bits);
     template <bool kTrack, bool kVec>
     inline void walk(double x0, double y0, double x1, double y1);
-    inline void add_piece(int r, double xl, double xr, double dy);
+    inline void add_piece(int r, int c0, double xl, double xr, double dy);
     inline void touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits);
     bool harmless_two(const Visit& a, const Visit& b, int col, int row);
     bool run_ends(const Visit& v, int col, int row, double& t0, double& t1) const;
@@ -64,9 +64,7 @@ private:
     static constexpr int kRowVectorMax = 8;
     int vstride_ = 0;                 // floats per row of facc_ (w rounded up to whole vectors)
     std::vector<float> facc_;         // per pixel: the integral of the winding number, all zero between shapes
-    std::vector<RowPiece> pieces_;   // [0, npieces_) in use (written without push_back: see add_piece)
-    std::size_t npieces_ = 0;
-    void grow_pieces();
+    std::vector<RowPiece> pieces_;
     std::vector<int> row_from_;       // per row: first column a piece touches (INT_MAX: none)
     bool dirty_ = false;            // buffers may hold data from an interrupted shape
     std::vector<double> acc_;       // cover/area, (w + 2) x h, all zero between shapes
@@ -139,21 +137,18 @@ private:
     for (unsigned b = b0; b <= b1; ++b) m[b >> 6] |= std::uint64_t(1) << (b & 63);
 }
 
-// One piece of an edge for the row-vector accumulation. A (nearly) vertical piece is widened to
-// 1e-4 px around its middle: the area it adds changes by less than 1e-4 of a pixel.
-[[gnu::always_inline]] inline void Direct::add_piece(int r, double xl, double xr, double dy) {
+// One piece of an edge for the row-vector accumulation; c0 = its first column. A (nearly) vertical
+// piece is widened to 1e-4 px around its middle: the area it adds changes by less than 1e-4 of a pixel.
+[[gnu::always_inline]] inline void Direct::add_piece(int r, int c0, double xl, double xr, double dy) {
     float l = static_cast<float>(xl), h = static_cast<float>(xr);
     if (h - l < 1e-4f) {
         const float m = 0.5f * (l + h);
         l = m - 5e-5f;
         h = m + 5e-5f;
     }
-    // A plain store with an out-of-line grow: push_back's growth path made GCC stop inlining the
-    // walk's other pushes.
-    if (npieces_ == pieces_.size()) grow_pieces();
-    pieces_[npieces_++] = {l, h, static_cast<float>(dy) / (h - l), r};
-    const int c = static_cast<int>(xl);
-    if (c < row_from_[static_cast<std::size_t>(r)]) row_from_[static_cast<std::size_t>(r)] = c;
+    pieces_.push_back({l, h, static_cast<float>(dy) / (h - l), r});
+    int& from = row_from_[static_cast<std::size_t>(r)];
+    if (c0 < from) from = c0;
 }
 
 template <bool kTrack, bool kVec>
@@ -165,7 +160,7 @@ template <bool kTrack, bool kVec>
     const int c1 = ceil_nn(xr) - 1;
     static_assert(!(kTrack && kVec), "row vectors are used without the overlap check only");
     if constexpr (kVec) {
-        add_piece(r, xl, xr, dy);  // the area goes in at finish()
+        add_piece(r, c0, xl, xr, dy);  // the area goes in at finish()
         return;
     }
     double* acc = acc_.data() + static_cast<std::size_t>(r) * stride_;
