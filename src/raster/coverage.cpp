@@ -28,12 +28,14 @@ HWY_INLINE V ApplyRule(D d, V v, FillRule rule) {
     return hn::Min(a, hn::Sub(two, a));                                  // distance to an even integer
 }
 
+// Coverage in [0, 1] (double or float lanes) to 8-bit, rounded to nearest.
 template <class D, class V>
 HWY_INLINE void StoreCoverage(D d, V a, std::uint8_t* HWY_RESTRICT out) {
     const hn::Rebind<std::int32_t, D> di;
     const hn::Rebind<std::uint8_t, D> du8;
-    const auto c = hn::DemoteTo(di, hn::MulAdd(a, hn::Set(d, 255.0), hn::Set(d, 0.5)));
-    hn::StoreU(hn::DemoteTo(du8, c), du8, out);
+    const auto scaled = hn::MulAdd(a, hn::Set(d, 255.0), hn::Set(d, 0.5));
+    if constexpr (sizeof(hn::TFromD<D>) == 8) hn::StoreU(hn::DemoteTo(du8, hn::DemoteTo(di, scaled)), du8, out);
+    else hn::StoreU(hn::DemoteTo(du8, hn::ConvertTo(di, scaled)), du8, out);
 }
 
 // Scans acc[i, to) in whole vectors of tag d: `scan` makes a vector's inclusive prefix sum and
@@ -185,10 +187,8 @@ void RowVectorAccumulateImpl(const RowPiece* HWY_RESTRICT pieces, std::size_t n,
 
 void RowVectorEmitImpl(const RowVectorRows& s, SpanSink& sink) {
     const hn::ScalableTag<float> d;
-    const hn::Rebind<std::int32_t, decltype(d)> di;
-    const hn::Rebind<std::uint8_t, decltype(d)> du8;
     const int N = static_cast<int>(hn::Lanes(d));
-    const auto zero = hn::Zero(d), half = hn::Set(d, 0.5f), scale = hn::Set(d, 255.0f);
+    const auto zero = hn::Zero(d);
     for (int r = 0; r < s.h; ++r) {
         const int from = s.from[r];
         if (from == INT_MAX) continue;
@@ -196,7 +196,7 @@ void RowVectorEmitImpl(const RowVectorRows& s, SpanSink& sink) {
         for (int i = 0; i < s.stride; i += N) {
             const auto v = ApplyRule(d, hn::LoadU(d, row + i), s.rule);
             hn::StoreU(zero, d, row + i);
-            hn::StoreU(hn::DemoteTo(du8, hn::ConvertTo(di, hn::MulAdd(v, scale, half))), du8, s.cov + i);
+            StoreCoverage(d, v, s.cov + i);
         }
         if (from < s.w) sink.row(s.oy + r, s.ox + from, s.w - from, s.cov + from);
     }
