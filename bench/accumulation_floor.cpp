@@ -17,8 +17,8 @@
 //                     pixel row adds its exact area to every pixel of the row in SIMD vectors
 //                     (Highway, runtime dispatch), so there is no per-cell loop and no prefix sum;
 //                     rows are then mapped to 8-bit coverage. Here splitting and area are one pass
-//                     with no piece records (the library's kernel takes recorded pieces), so the
-//                     area formula is written out again below: this is the design's floor
+//                     with no piece records (make_row_piece and AddRowPiece, the library's own,
+//                     applied at once): this is the design's floor
 //
 // The two floors do strictly less than casteljau: no flattening, no clipping, no overlap check,
 // no span sink, the edges already converted to float, nonzero only. So their time is a lower
@@ -32,6 +32,8 @@
 #define HWY_TARGET_INCLUDE "accumulation_floor.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
+
+#include "raster/row_vector-inl.h"  // the library's row-vector kernel, for every target
 
 #include <algorithm>
 #include <cmath>
@@ -160,31 +162,18 @@ int StrideImpl(int w) {
 // 1e-4 of a pixel).
 void RowVectorImpl(const Job& job) {
     const hn::ScalableTag<float> d;
-    const int N = static_cast<int>(hn::Lanes(d));
-    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
-    const auto iota = hn::Iota(d, 0.0f);
     for (std::size_t k = 0; k < job.n; ++k) {
         ForEachRowPiece(job.segs[k], job.h, [&](int r, float xa, float xb, float dy) {
-            float xl = std::min(xa, xb), xr = std::max(xa, xb);
-            if (xr - xl < 1e-4f) {
-                const float m = 0.5f * (xl + xr);
-                xl = m - 5e-5f;
-                xr = m + 5e-5f;
-            }
-            const auto vxl = hn::Set(d, xl), vxr = hn::Set(d, xr), vk = hn::Set(d, dy / (xr - xl));
-            float* row = job.acc + static_cast<std::size_t>(r) * static_cast<std::size_t>(job.stride);
-            for (int i = 0; i < job.stride; i += N) {
-                const auto cl = hn::Add(iota, hn::Set(d, static_cast<float>(i)));
-                const auto cr = hn::Add(cl, one);
-                const auto u0 = hn::Max(vxl, cl), u1 = hn::Min(vxr, cr);
-                const auto len = hn::Max(hn::Sub(u1, u0), zero);
-                const auto mid = hn::NegMulAdd(hn::Add(u0, u1), half, cr);
-                const auto left = hn::Max(hn::Sub(hn::Min(vxr, cl), vxl), zero);
-                hn::StoreU(hn::MulAdd(vk, hn::MulAdd(len, mid, left), hn::LoadU(d, row + i)), d, row + i);
-            }
+            // The library's piece and kernel, applied at once (no piece records).
+            const casteljau::raster::RowPiece p =
+                casteljau::raster::make_row_piece(r, std::min(xa, xb), std::max(xa, xb), dy);
+            casteljau::raster::HWY_NAMESPACE::AddRowPiece(
+                d, p, job.acc + static_cast<std::size_t>(r) * static_cast<std::size_t>(job.stride), job.stride);
         });
     }
     // Nonzero rule, 8-bit, and clear the rows.
+    const int N = static_cast<int>(hn::Lanes(d));
+    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
     const hn::Rebind<std::int32_t, decltype(d)> di;
     const hn::Rebind<std::uint8_t, decltype(d)> du8;
     const auto scale = hn::Set(d, 255.0f);

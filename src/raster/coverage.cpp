@@ -7,6 +7,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "raster/row_vector-inl.h"
+
 #include <algorithm>
 #include <climits>
 #include <cstring>
@@ -163,26 +165,10 @@ int RowVectorLanesImpl() {
     return static_cast<int>(hn::Lanes(d));
 }
 
-// See RowPiece in raster_internal.hpp for the formula.
 void RowVectorAccumulateImpl(const RowPiece* HWY_RESTRICT pieces, std::size_t n, float* HWY_RESTRICT acc, int stride) {
     const hn::ScalableTag<float> d;
-    const int N = static_cast<int>(hn::Lanes(d));
-    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
-    const auto iota = hn::Iota(d, 0.0f);
-    for (std::size_t k = 0; k < n; ++k) {
-        const RowPiece& p = pieces[k];
-        const auto xl = hn::Set(d, p.xl), xr = hn::Set(d, p.xr), kk = hn::Set(d, p.k);
-        float* HWY_RESTRICT row = acc + static_cast<std::size_t>(p.r) * static_cast<std::size_t>(stride);
-        for (int i = 0; i < stride; i += N) {
-            const auto cl = hn::Add(iota, hn::Set(d, static_cast<float>(i)));
-            const auto cr = hn::Add(cl, one);
-            const auto u0 = hn::Max(xl, cl), u1 = hn::Min(xr, cr);
-            const auto len = hn::Max(hn::Sub(u1, u0), zero);
-            const auto mid = hn::NegMulAdd(hn::Add(u0, u1), half, cr);
-            const auto left = hn::Max(hn::Sub(hn::Min(xr, cl), xl), zero);
-            hn::StoreU(hn::MulAdd(kk, hn::MulAdd(len, mid, left), hn::LoadU(d, row + i)), d, row + i);
-        }
-    }
+    for (std::size_t k = 0; k < n; ++k)
+        AddRowPiece(d, pieces[k], acc + static_cast<std::size_t>(pieces[k].r) * static_cast<std::size_t>(stride), stride);
 }
 
 void RowVectorEmitImpl(const RowVectorRows& s, SpanSink& sink) {

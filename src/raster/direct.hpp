@@ -137,16 +137,9 @@ private:
     for (unsigned b = b0; b <= b1; ++b) m[b >> 6] |= std::uint64_t(1) << (b & 63);
 }
 
-// One piece of an edge for the row-vector accumulation; c0 = its first column. A (nearly) vertical
-// piece is widened to 1e-4 px around its middle: the area it adds changes by less than 1e-4 of a pixel.
+// One piece of an edge for the row-vector accumulation; c0 = its first column.
 [[gnu::always_inline]] inline void Direct::add_piece(int r, int c0, double xl, double xr, double dy) {
-    float l = static_cast<float>(xl), h = static_cast<float>(xr);
-    if (h - l < 1e-4f) {
-        const float m = 0.5f * (l + h);
-        l = m - 5e-5f;
-        h = m + 5e-5f;
-    }
-    pieces_.push_back({l, h, static_cast<float>(dy) / (h - l), r});
+    pieces_.push_back(make_row_piece(r, static_cast<float>(xl), static_cast<float>(xr), static_cast<float>(dy)));
     int& from = row_from_[static_cast<std::size_t>(r)];
     if (c0 < from) from = c0;
 }

@@ -161,6 +161,17 @@ struct RowPiece {
     float xl, xr, k;
     std::int32_t r;
 };
+// The piece of row r spanning [xl, xr] with signed height dy. A (nearly) vertical piece is widened
+// to 1e-4 px around its middle: the area it adds changes by less than 1e-4 of a pixel.
+inline RowPiece make_row_piece(int r, float xl, float xr, float dy) {
+    if (xr - xl < 1e-4f) {
+        const float m = 0.5f * (xl + xr);
+        xl = m - 5e-5f;
+        xr = m + 5e-5f;
+    }
+    return {xl, xr, dy / (xr - xl), r};
+}
+// The kernel that adds a piece to its row is AddRowPiece in row_vector-inl.h.
 // Floats per SIMD vector of the best target this CPU runs (rows are whole vectors).
 int row_vector_lanes();
 // Adds every piece to acc (`stride` floats per row, a multiple of row_vector_lanes()).

@@ -1,0 +1,46 @@
+// Internal: the row-vector area kernel (see RowPiece in raster_internal.hpp), for every SIMD target.
+// Highway's per-target header: include it after <hwy/highway.h> in a file that foreach_target.h
+// compiles once per target (coverage.cpp; bench/accumulation_floor.cpp measures its floor).
+
+// Per-target include guard (toggled by foreach_target.h for each target).
+#if defined(CASTELJAU_RASTER_ROW_VECTOR_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef CASTELJAU_RASTER_ROW_VECTOR_INL_H_
+#undef CASTELJAU_RASTER_ROW_VECTOR_INL_H_
+#else
+#define CASTELJAU_RASTER_ROW_VECTOR_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include "raster/raster_internal.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace casteljau::raster {
+namespace HWY_NAMESPACE {
+
+// Adds piece p's area to row[0, stride) (stride: whole vectors of d): per pixel c, with
+// u0 = max(xl, c) and u1 = min(xr, c + 1), k * (max(u1 - u0, 0) * (c + 1 - (u0 + u1) / 2) +
+// max(min(xr, c) - xl, 0)).
+template <class D>
+HWY_INLINE void AddRowPiece(D d, const RowPiece& p, float* HWY_RESTRICT row, int stride) {
+    namespace hn = hwy::HWY_NAMESPACE;
+    const int N = static_cast<int>(hn::Lanes(d));
+    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
+    const auto iota = hn::Iota(d, 0.0f);
+    const auto xl = hn::Set(d, p.xl), xr = hn::Set(d, p.xr), k = hn::Set(d, p.k);
+    for (int i = 0; i < stride; i += N) {
+        const auto cl = hn::Add(iota, hn::Set(d, static_cast<float>(i)));
+        const auto cr = hn::Add(cl, one);
+        const auto u0 = hn::Max(xl, cl), u1 = hn::Min(xr, cr);
+        const auto len = hn::Max(hn::Sub(u1, u0), zero);
+        const auto mid = hn::NegMulAdd(hn::Add(u0, u1), half, cr);
+        const auto left = hn::Max(hn::Sub(hn::Min(xr, cl), xl), zero);
+        hn::StoreU(hn::MulAdd(k, hn::MulAdd(len, mid, left), hn::LoadU(d, row + i)), d, row + i);
+    }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace casteljau::raster
+HWY_AFTER_NAMESPACE();
+
+#endif  // per-target include guard
