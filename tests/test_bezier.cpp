@@ -103,7 +103,7 @@ TEST_CASE("Bezier: the cubic through Q0(50,0), Q1(100,0), Q2(0,50), Q3(0,100) at
     check_point(c.eval(1), q3, 0);
 }
 
-TEST_CASE("Bezier: curvature of the parabola y = x^2 is 2 at its vertex; cusp gives infinity", "[bezier]") {
+TEST_CASE("Bezier: curvature of the parabola y = x^2 is 2 at its vertex, cusp gives infinity", "[bezier]") {
     const Bezier<Point> p{{-1, 1}, {0, -1}, {1, 1}};  // x = 2t - 1, y = x^2
     CHECK(p.curvature(0.5) == Approx(2.0).epsilon(1e-14));
     CHECK(p.signed_curvature(0.5) == Approx(2.0).epsilon(1e-14));

@@ -15,6 +15,7 @@
 #include "casteljau/error.hpp"
 #include "casteljau/paint.hpp"
 #include "casteljau/png.hpp"
+#include "skip.hpp"
 
 namespace fs = std::filesystem;
 using casteljau::Error;
@@ -65,7 +66,7 @@ std::string io_error(F&& f) {
 
 }  // namespace
 
-TEST_CASE("write_file_atomic writes the bytes; read_file reads them back exactly", "[png]") {
+TEST_CASE("write_file_atomic writes the bytes, read_file reads them back exactly", "[png]") {
     TempDir dir("file-io-roundtrip");
     std::vector<std::uint8_t> data(200000);
     std::mt19937 rng(11);
@@ -197,10 +198,7 @@ TEST_CASE("write_file_atomic through a symbolic link replaces the link's target"
 }
 
 TEST_CASE("write_file_atomic writes straight into a device such as /dev/null", "[png]") {
-    if (!fs::exists("/dev/null")) {
-        WARN("SKIPPED: no /dev/null");
-        return;
-    }
+    if (!fs::exists("/dev/null")) CASTELJAU_SKIP("no /dev/null on this machine");
     casteljau::write_file_atomic("/dev/null", bytes_of("discarded"));
     CHECK(fs::is_character_file("/dev/null"));  // still the device, not replaced by a file
 }
@@ -217,16 +215,16 @@ TEST_CASE("read_file: a missing file, a directory, an unreadable file are Error(
     msg = io_error([&] { casteljau::read_file(dir.path.string()); });
     CHECK_THAT(msg, Catch::Contains("Is a directory"));
     io_error([&] { casteljau::read_file(""); });
+}
 
+TEST_CASE("read_file: a file without read permission is Error(Io) naming the cause", "[png]") {
+    if (::geteuid() == 0) CASTELJAU_SKIP("running as root, which reads any file whatever its permissions");
+    TempDir dir("file-io-unreadable");
     const std::string locked = dir / "locked.png";
     std::ofstream(locked) << "secret";
     REQUIRE(::chmod(locked.c_str(), 0) == 0);
-    if (::geteuid() == 0) {
-        WARN("SKIPPED the unreadable-file check: running as root, which reads any file");
-    } else {
-        msg = io_error([&] { casteljau::read_file(locked); });
-        CHECK_THAT(msg, Catch::Contains("Permission denied"));
-    }
+    const std::string msg = io_error([&] { casteljau::read_file(locked); });
+    CHECK_THAT(msg, Catch::Contains("Permission denied"));
 }
 
 TEST_CASE("write_png/read_png round-trip a premultiplied pixmap through a file", "[png]") {

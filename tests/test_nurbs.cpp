@@ -102,7 +102,7 @@ TEST_CASE("NURBS: circular and elliptical arcs are exact", "[nurbs]") {
     CHECK(dist(par.eval(0.3), q.eval(0.3)) <= 1e-14);
 }
 
-TEST_CASE("Rational Bezier: rational de Casteljau equals the direct formula; derivatives; split", "[nurbs]") {
+TEST_CASE("Rational Bezier: rational de Casteljau equals the direct formula, derivatives, split", "[nurbs]") {
     std::mt19937 rng(202);
     for (int rep = 0; rep < 200; ++rep) {
         const std::size_t n = 2 + static_cast<std::size_t>(rep % 8);
@@ -152,7 +152,7 @@ TEST_CASE("Rational Bezier: rational de Casteljau equals the direct formula; der
     CHECK(norm.weights()[1] == Approx(arc.weights()[1]).epsilon(1e-14));
 }
 
-TEST_CASE("NURBS: unit weights give the B-spline; insertion and Bezier extraction preserve the curve", "[nurbs]") {
+TEST_CASE("NURBS: unit weights give the B-spline, insertion and Bezier extraction preserve the curve", "[nurbs]") {
     std::mt19937 rng(203);
     for (int rep = 0; rep < 100; ++rep) {
         const int p = 1 + rep % 4;

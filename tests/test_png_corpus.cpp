@@ -17,17 +17,11 @@
 #include "casteljau/paint.hpp"
 #include "casteljau/png.hpp"
 #include "png_test_util.hpp"
+#include "skip.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// The shared data folder: $CASTELJAU_SHARED_DIR when set (handy in a git worktree), otherwise
-// ../shared next to the source tree.
-fs::path shared_dir() {
-    if (const char* env = std::getenv("CASTELJAU_SHARED_DIR"); env != nullptr && *env != '\0') return env;
-    return fs::path(CASTELJAU_SOURCE_DIR) / ".." / "shared";
-}
 
 // The value of attribute `name` in an XML start tag, or "" when absent.
 std::string attribute(const std::string& tag, const std::string& name) {
@@ -88,14 +82,12 @@ bool intrinsic_size(const fs::path& svg, double& w, double& h) {
 
 TEST_CASE("decode_png: every resvg reference PNG decodes, with the size rule's dimensions and stb_image's pixels",
           "[png]") {
-    const fs::path root = shared_dir() / "conformance" / "resvg";
+    const fs::path root = casteljau::test::shared_dir() / "conformance" / "resvg";
     std::ifstream manifest(root / "manifest.tsv");
-    if (!manifest) {
-        WARN("SKIPPED: " << (root / "manifest.tsv").string()
-                         << " is absent (the shared corpus lives in ../shared next to the source tree; "
-                            "set CASTELJAU_SHARED_DIR to point elsewhere)");
-        return;
-    }
+    if (!manifest)
+        CASTELJAU_SKIP((root / "manifest.tsv").string()
+                       << " is absent (the shared corpus lives in ../shared next to the source tree; "
+                          "set CASTELJAU_SHARED_DIR to point elsewhere)");
     std::string line;
     std::getline(manifest, line);  // header: svg_path png_path category needs_gradients note
     REQUIRE(line.rfind("svg_path\tpng_path\t", 0) == 0);

@@ -129,7 +129,7 @@ TEST_CASE("B-spline basis: partition of unity, non-negativity, local support, ag
 
 // ---- curves -------------------------------------------------------------------------------------
 
-TEST_CASE("B-spline: de Boor equals the basis-function sum; clamped ends interpolate", "[spline]") {
+TEST_CASE("B-spline: de Boor equals the basis-function sum, clamped ends interpolate", "[spline]") {
     std::mt19937 rng(102);
     for (int rep = 0; rep < 200; ++rep) {
         const auto s = random_spline<Point>(rng, rep);
@@ -374,7 +374,7 @@ TEST_CASE("Cardinal and Catmull-Rom: through the points with the textbook tangen
     for (const auto& b : lines) CHECK(b[1] == b.front());
 }
 
-TEST_CASE("Kochanek-Bartels: reduces to Catmull-Rom and Cardinal; continuity -1 gives corners", "[spline]") {
+TEST_CASE("Kochanek-Bartels: reduces to Catmull-Rom and Cardinal, continuity -1 gives corners", "[spline]") {
     std::mt19937 rng(112);
     for (int rep = 0; rep < 30; ++rep) {
         const auto pts = random_points<Point>(rng, 4 + static_cast<std::size_t>(rep % 5));

@@ -71,7 +71,7 @@ TEST_CASE("Bezier patch: de Casteljau in u then v, the tensor sum and the bicubi
     CHECK(bezier_cubic_matrix() == std::array<double, 16>{-1, 3, -3, 1, 3, -6, 3, 0, -3, 3, 0, 0, 1, 0, 0, 0});
 }
 
-TEST_CASE("Bezier patch: any m x n degree; boundary curves are the net's edges", "[surface]") {
+TEST_CASE("Bezier patch: any m x n degree, boundary curves are the net's edges", "[surface]") {
     std::mt19937 rng(302);
     for (int rep = 0; rep < 60; ++rep) {
         const int m = 1 + rep % 6, n = 1 + (rep / 6) % 5;
@@ -134,7 +134,7 @@ TEST_CASE("Surface normals: flat, cylindrical, degenerate", "[surface]") {
     CHECK(n.length() == Approx(1).epsilon(1e-12));
 }
 
-TEST_CASE("B-spline surface: tensor-product basis sum, iso curves, derivatives; single span equals the Bezier patch", "[surface]") {
+TEST_CASE("B-spline surface: tensor-product basis sum, iso curves, derivatives, single span equals the Bezier patch", "[surface]") {
     std::mt19937 rng(304);
     for (int rep = 0; rep < 40; ++rep) {
         const int pu = 1 + rep % 3, pv = 1 + (rep / 3) % 3;
@@ -173,7 +173,7 @@ TEST_CASE("B-spline surface: tensor-product basis sum, iso curves, derivatives; 
     for (int k = 0; k <= 10; ++k) CHECK(dist(bs.eval(k / 10.0, 1 - k / 10.0), bz.eval(k / 10.0, 1 - k / 10.0)) <= 1e-12 * 300);
 }
 
-TEST_CASE("NURBS surface: the cylinder is exact; derivatives; unit weights give the B-spline surface", "[surface]") {
+TEST_CASE("NURBS surface: the cylinder is exact, derivatives, unit weights give the B-spline surface", "[surface]") {
     const auto cyl = cylinder(3, 4);
     double worst = 0;
     for (int a = 0; a <= 100; ++a)
@@ -206,7 +206,7 @@ TEST_CASE("NURBS surface: the cylinder is exact; derivatives; unit weights give 
     }
 }
 
-TEST_CASE("Projections: cavalier, cabinet, orthographic; depth along the projection direction", "[surface]") {
+TEST_CASE("Projections: cavalier, cabinet, orthographic, depth along the projection direction", "[surface]") {
     const double c = std::numbers::sqrt2 / 2;
     CHECK(dist(project({0, 0, 1}, Projection::Cavalier), Point{-c, -c}) <= 1e-15);
     CHECK(dist(project({0, 0, 1}, Projection::Cabinet), Point{-c / 2, -c / 2}) <= 1e-15);

@@ -202,7 +202,7 @@ TEST_CASE("Font fallback: missing characters come from the next font, .notdef on
     CHECK(error_kind_of([&] { (void)layout_text("a", with_null, TextStyle{}); }) == ErrorKind::InvalidArgument);
 }
 
-TEST_CASE("Line breaks on \\n, \\r\\n, \\r; line height; trailing newline adds a line", "[text]") {
+TEST_CASE("Line breaks on LF, CRLF and CR, line height, a trailing newline adds a line", "[text]") {
     Fonts f;
     const TextLayout l = layout_text("a\nb\r\nc\rd", f.dejavu, sized(20));
     REQUIRE(l.lines.size() == 4);
@@ -225,7 +225,7 @@ TEST_CASE("Line breaks on \\n, \\r\\n, \\r; line height; trailing newline adds a
     CHECK(tab.lines[0].width == Approx(sp.lines[0].width));
 }
 
-TEST_CASE("Wrapping at word boundaries, within the width, words whole; alignment", "[text]") {
+TEST_CASE("Wrapping at word boundaries, within the width, words whole, alignment", "[text]") {
     Fonts f;
     const std::string para =
         "The quick brown fox jumps over the lazy dog while five boxing wizards jump quickly and "
@@ -403,7 +403,7 @@ TEST_CASE("draw_text matches FreeType's rendering of the same glyph run", "[text
     }
 }
 
-TEST_CASE("Cached and outline drawing agree; subpixel positions are honoured", "[text]") {
+TEST_CASE("Cached and outline drawing agree, subpixel positions are honoured", "[text]") {
     Fonts f;
     const TextLayout l = layout_text("Subpixel wavy text 123", f.dejavu, sized(14));
     const int w = 200, h = 30;
