@@ -2,19 +2,29 @@
 # The whole test suite: the Release build's tests, then the same suite built and run under
 # AddressSanitizer + UndefinedBehaviorSanitizer. Ends with ctest's summary.
 # Usage: tests/run_all.sh   (from the repository root, after the README's first command)
+#
+# The sanitizer build lives outside the checkout (as packagers build: `cmake -S casteljau -B
+# /tmp/build`), so every run also shows that the suite does not depend on where the build folder
+# is. Its folder is $CASTELJAU_SANITIZE_BUILD_DIR, by default one per checkout under $TMPDIR;
+# under CI (CI=true) it is removed at the end.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 jobs=${CASTELJAU_JOBS:-2}
+san=${CASTELJAU_SANITIZE_BUILD_DIR:-${TMPDIR:-/tmp}/casteljau-sanitize-$(printf '%s' "$root" | cksum | cut -d' ' -f1)}
+if [ "${CI:-}" = true ] && [ -z "${CASTELJAU_SANITIZE_BUILD_DIR:-}" ]; then
+  trap 'rm -rf "$san"' EXIT
+fi
 
 echo "== Release build: tests"
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure -j"$jobs"
 
-echo "== AddressSanitizer + UndefinedBehaviorSanitizer build: tests"
-cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASTELJAU_SANITIZE=ON \
-  -DCASTELJAU_WERROR=ON -DCASTELJAU_BUILD_BENCH=OFF -DCASTELJAU_BUILD_EXAMPLES=OFF > build-sanitize.log
-cmake --build build-sanitize -j"$jobs" >> build-sanitize.log || { tail -50 build-sanitize.log; exit 1; }
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer build (in $san): tests"
+mkdir -p "$san"
+cmake -S . -B "$san" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASTELJAU_SANITIZE=ON \
+  -DCASTELJAU_WERROR=ON -DCASTELJAU_BUILD_BENCH=OFF -DCASTELJAU_BUILD_EXAMPLES=OFF > "$san/configure.log"
+cmake --build "$san" -j"$jobs" > "$san/build.log" 2>&1 || { tail -50 "$san/build.log"; exit 1; }
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-ctest --test-dir build-sanitize --output-on-failure -j"$jobs"
+ctest --test-dir "$san" --output-on-failure -j"$jobs"

@@ -49,11 +49,16 @@ std::string slurp(const fs::path& p) {
     return ss.str();
 }
 
-// Runs `casteljau text ARGS...` (with `prefix` in front of the command, e.g. an environment
-// assignment or a pipe) and returns the exit status and standard error.
-Run run_text(const std::vector<std::string>& args, const std::string& prefix = "") {
+// The environment the CLI runs in by default: the shipped fonts named explicitly, so the tests do
+// not depend on where the build folder is.
+const std::string kShippedFontEnv = std::string("CASTELJAU_FONT_DIR=") + quote(CASTELJAU_TEST_FONT_DIR) + " ";
+
+// Runs `casteljau text ARGS...` and returns the exit status and standard error. `prefix` goes in
+// front of the whole command (e.g. a pipe), `env` right before the executable (environment
+// assignments, or `env -u NAME `).
+Run run_text(const std::vector<std::string>& args, const std::string& prefix = "", const std::string& env = kShippedFontEnv) {
     const fs::path err = temp_dir() / "stderr.txt";
-    std::string cmd = prefix + quote(CASTELJAU_CLI_PATH) + " text";
+    std::string cmd = prefix + env + quote(CASTELJAU_CLI_PATH) + " text";
     for (const auto& a : args) {
         cmd += ' ';
         cmd += quote(a);
@@ -157,8 +162,19 @@ TEST_CASE("casteljau text: CASTELJAU_FONT_DIR points at the default font", "[tex
     fs::copy_file(kLibertine, dir / "DejaVuSans.ttf", fs::copy_options::overwrite_existing);
     const fs::path a = out_path("default.png"), b = out_path("envfont.png");
     REQUIRE(run_text({"Font", "-o", a.string()}).status == 0);
-    REQUIRE(run_text({"Font", "-o", b.string()}, "CASTELJAU_FONT_DIR=" + quote(dir.string()) + " ").status == 0);
+    REQUIRE(run_text({"Font", "-o", b.string()}, "", "CASTELJAU_FONT_DIR=" + quote(dir.string()) + " ").status == 0);
     CHECK(slurp(a) != slurp(b));
+}
+
+TEST_CASE("casteljau text finds the shipped fonts with no CASTELJAU_FONT_DIR, wherever the build folder is", "[text-cli]") {
+    // The executable lies in the build folder, which may be anywhere (a packager's /tmp/build): the
+    // folder fixed at configure time must still lead to the shipped DejaVu Sans.
+    const fs::path a = out_path("explicit.png"), b = out_path("configured.png");
+    REQUIRE(run_text({"Font", "-o", a.string()}).status == 0);
+    const Run r = run_text({"Font", "-o", b.string()}, "", "env -u CASTELJAU_FONT_DIR ");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(slurp(a) == slurp(b));
 }
 
 TEST_CASE("casteljau text: bad input gives a clear error, the right status and no output file", "[text-cli]") {

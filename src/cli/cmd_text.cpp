@@ -2,8 +2,10 @@
 //
 // The default font is DejaVuSans.ttf, looked for in this order: $CASTELJAU_FONT_DIR,
 // <executable's folder>/../fonts, <executable's folder>/../../fonts,
-// <executable's folder>/../share/casteljau/fonts (the installed layout), and the folder given at
-// build time by the macro CASTELJAU_FONT_INSTALL_DIR when it is defined.
+// <executable's folder>/../share/casteljau/fonts (the installed layout), then the two folders fixed
+// when the build was configured: the install prefix's share/casteljau/fonts
+// (CASTELJAU_FONT_INSTALL_DIR) and the source tree's fonts/ (CASTELJAU_FONT_SOURCE_DIR), so a build
+// folder placed anywhere finds the shipped fonts without installing.
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -40,6 +42,9 @@ std::vector<std::filesystem::path> default_font_dirs() {
     }
 #ifdef CASTELJAU_FONT_INSTALL_DIR
     dirs.emplace_back(CASTELJAU_FONT_INSTALL_DIR);
+#endif
+#ifdef CASTELJAU_FONT_SOURCE_DIR
+    dirs.emplace_back(CASTELJAU_FONT_SOURCE_DIR);
 #endif
     return dirs;
 }
@@ -85,8 +90,8 @@ void register_text(CLI::App& app) {
     cmd->add_option("-o,--output", o->output, "Output PNG file")->required();
     cmd->add_option("--font", o->fonts,
                     "Font file (TrueType, OpenType CFF/CFF2, collection, variable); repeat for a fallback chain. "
-                    "Default: DejaVuSans.ttf from $CASTELJAU_FONT_DIR, <exe>/../fonts, <exe>/../../fonts or "
-                    "<exe>/../share/casteljau/fonts");
+                    "Default: DejaVuSans.ttf from $CASTELJAU_FONT_DIR, <exe>/../fonts, <exe>/../../fonts, "
+                    "<exe>/../share/casteljau/fonts, the configured install or source fonts folder");
     cmd->add_option("--face", o->faces, "Face index in a collection, for the --font at the same position (default 0)");
     cmd->add_option("--size", o->size, "Font size in pixels per em, greater than 0 and at most 10000")->capture_default_str();
     cmd->add_option("--color", o->color, "Text colour (CSS syntax)")->capture_default_str();
