@@ -26,7 +26,11 @@ struct Paint {
 };
 
 // Source-over of `paint` x coverage onto one row of premultiplied pixels (exposed for tests and
-// for callers that rasterize themselves). `dst` points at pixel x of the row.
+// for callers that rasterize themselves). `dst` points at pixel x of the row. With S the paint
+// colour premultiplied (alpha = round(a x opacity), channels round(x a / 255)), coverage c and
+// destination D, every channel becomes round((S c 255 + D (255^2 - Sa c)) / 255^2): the exact
+// source-over value rounded once. With linear_blend the colour channels are blended in linear
+// light and re-encoded to sRGB (within one level of the exact value).
 void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, const Paint& paint);
 
 class Canvas {

@@ -1,6 +1,7 @@
 // Composite stage: source-over of a solid Paint, weighted by 8-bit coverage, onto premultiplied
-// RGBA8 pixels. Arithmetic is exact to the nearest 1/255 (mul_div255 rounds correctly); runs of
-// full coverage with an opaque colour are plain stores. Optional linear-light blending converts
+// RGBA8 pixels. Each channel is the exact source-over value rounded once to the nearest 1/255
+// (tests/test_composite.cpp checks every coverage against that formula); runs of full coverage with
+// an opaque colour are plain stores. Optional linear-light blending converts
 // through lookup tables (sRGB -> linear float, linear 12-bit -> sRGB) and blends there.
 #include <algorithm>
 #include <array>
@@ -13,10 +14,9 @@ namespace casteljau {
 
 namespace {
 
-inline std::uint8_t mul_div255(unsigned a, unsigned b) {
-    const unsigned t = a * b + 128;
-    return static_cast<std::uint8_t>((t + (t >> 8)) >> 8);
-}
+// round(n / 65025) for n < 255 x 65025 + 1 (the compiler turns the constant division into a
+// multiply and a shift).
+inline std::uint8_t div65025(unsigned n) { return static_cast<std::uint8_t>((n + 32512u) / 65025u); }
 
 struct LinearTables {
     std::array<float, 256> to_linear{};
@@ -83,12 +83,15 @@ void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage,
             std::memcpy(dst, solid, 4);
             continue;
         }
-        const unsigned sa = mul_div255(s.a, c);
-        const unsigned inv = 255 - sa;
-        dst[0] = static_cast<std::uint8_t>(mul_div255(s.r, c) + mul_div255(dst[0], inv));
-        dst[1] = static_cast<std::uint8_t>(mul_div255(s.g, c) + mul_div255(dst[1], inv));
-        dst[2] = static_cast<std::uint8_t>(mul_div255(s.b, c) + mul_div255(dst[2], inv));
-        dst[3] = static_cast<std::uint8_t>(sa + mul_div255(dst[3], inv));
+        // out = S c / 255 + D (1 - Sa c / 255^2), rounded once: both terms are kept over the
+        // common denominator 255^2 = 65025. The numerator stays below 255 x 65025 < 2^24 and,
+        // 65025 being odd, never ends in exactly one half, so rounding is never a tie.
+        const unsigned keep = 65025u - s.a * c;
+        const unsigned sc = 255u * c;
+        dst[0] = div65025(s.r * sc + dst[0] * keep);
+        dst[1] = div65025(s.g * sc + dst[1] * keep);
+        dst[2] = div65025(s.b * sc + dst[2] * keep);
+        dst[3] = div65025(s.a * sc + dst[3] * keep);
     }
 }
 

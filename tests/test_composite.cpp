@@ -1,0 +1,167 @@
+// Compositing: composite_span against the exactly rounded source-over formula, computed here
+// independently (straight colour -> premultiplied -> weighted sum in double precision, rounded
+// once), for every coverage value, a grid of colours, alphas and opacities, onto opaque and
+// translucent destinations; and the linear-light mode against the same blend done in double
+// precision.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "casteljau/canvas.hpp"
+
+using namespace casteljau;
+
+namespace {
+
+struct Rgba {
+    double r, g, b, a;
+};
+
+// The paint's premultiplied colour as the formula defines it, in exact integers.
+Rgba premultiplied_source(Color c, double opacity) {
+    const double a = std::floor(c.a * opacity + 0.5);
+    auto pre = [&](double x) { return std::floor(x * a / 255.0 + 0.5); };
+    return {pre(c.r), pre(c.g), pre(c.b), a};
+}
+
+// Source-over of S x coverage onto D, one rounding at the end.
+std::array<int, 4> source_over(const Rgba& s, int coverage, const std::array<int, 4>& d) {
+    const double c = coverage / 255.0;
+    const double keep = 1.0 - (s.a / 255.0) * c;
+    auto ch = [&](double sx, int dx) { return static_cast<int>(std::floor(sx * c + dx * keep + 0.5)); };
+    return {ch(s.r, d[0]), ch(s.g, d[1]), ch(s.b, d[2]), ch(s.a, d[3])};
+}
+
+// Premultiplied destinations: opaque, translucent and empty, with channels up to their alpha.
+std::vector<std::array<int, 4>> destinations() {
+    std::vector<std::array<int, 4>> out;
+    for (int a : {255, 254, 200, 128, 64, 1, 0})
+        for (const auto& frac : {std::array<double, 3>{0, 0, 0}, std::array<double, 3>{1, 1, 1},
+                                 std::array<double, 3>{0.3, 0.7, 1.0}, std::array<double, 3>{0.9, 0.05, 0.5}})
+            out.push_back({static_cast<int>(a * frac[0]), static_cast<int>(a * frac[1]), static_cast<int>(a * frac[2]), a});
+    return out;
+}
+
+const std::vector<Color>& source_colours() {
+    static const std::vector<Color> colours = [] {
+        std::vector<Color> v;
+        const std::array<std::uint8_t, 6> rgb{0, 1, 37, 128, 254, 255};
+        const std::array<std::uint8_t, 9> alphas{0, 1, 2, 64, 127, 128, 129, 254, 255};
+        for (std::uint8_t a : alphas)
+            for (std::size_t i = 0; i < rgb.size(); ++i)
+                v.push_back(Color::rgba(rgb[i], rgb[(i + 2) % rgb.size()], rgb[(i + 4) % rgb.size()], a));
+        return v;
+    }();
+    return colours;
+}
+
+// A span of 256 pixels, pixel i with coverage i, all starting as `d`.
+struct Span {
+    std::array<std::uint8_t, 256> coverage{};
+    std::vector<std::uint8_t> px;
+    explicit Span(const std::array<int, 4>& d) : px(256 * 4) {
+        for (int i = 0; i < 256; ++i) {
+            coverage[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(i);
+            for (int k = 0; k < 4; ++k) px[static_cast<std::size_t>(4 * i + k)] = static_cast<std::uint8_t>(d[static_cast<std::size_t>(k)]);
+        }
+    }
+    std::array<int, 4> at(int i) const {
+        const std::uint8_t* p = px.data() + 4 * i;
+        return {p[0], p[1], p[2], p[3]};
+    }
+};
+
+}  // namespace
+
+TEST_CASE("composite_span is source-over rounded once, for every coverage, colour, alpha and destination",
+          "[composite]") {
+    long checked = 0, wrong = 0;
+    for (double opacity : {1.0, 0.5, 0.25, 0.999}) {
+        for (const Color& colour : source_colours()) {
+            Paint paint = Paint::solid(colour);
+            paint.opacity = opacity;
+            const Rgba s = premultiplied_source(colour, opacity);
+            for (const auto& d : destinations()) {
+                Span span(d);
+                composite_span(span.px.data(), 256, span.coverage.data(), paint);
+                for (int c = 0; c < 256; ++c) {
+                    const auto want = source_over(s, c, d);
+                    const auto got = span.at(c);
+                    ++checked;
+                    if (got != want) {
+                        if (++wrong <= 5) {
+                            INFO("colour " << int(colour.r) << "," << int(colour.g) << "," << int(colour.b) << ","
+                                           << int(colour.a) << " opacity " << opacity << " coverage " << c << " dst "
+                                           << d[0] << "," << d[1] << "," << d[2] << "," << d[3] << ": got " << got[0]
+                                           << "," << got[1] << "," << got[2] << "," << got[3] << " want " << want[0]
+                                           << "," << want[1] << "," << want[2] << "," << want[3]);
+                            CHECK(got == want);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    INFO(wrong << " of " << checked << " pixels differ from the exactly rounded formula");
+    CHECK(wrong == 0);
+    CHECK(checked == 4L * 54 * 28 * 256);
+}
+
+TEST_CASE("composite_span: zero coverage and a transparent paint leave the destination untouched", "[composite]") {
+    for (const auto& d : destinations()) {
+        Span span(d);
+        const std::array<std::uint8_t, 256> zero{};
+        composite_span(span.px.data(), 256, zero.data(), Paint::solid(Color::rgba(200, 10, 30, 255)));
+        Paint clear = Paint::solid(Color::rgba(200, 10, 30, 255));
+        clear.opacity = 0;
+        composite_span(span.px.data(), 256, span.coverage.data(), clear);
+        for (int i = 0; i < 256; ++i) REQUIRE(span.at(i) == d);
+    }
+}
+
+TEST_CASE("composite_span with linear_blend is the blend in linear light within one level", "[composite]") {
+    auto to_linear = [](double v) {
+        const double c = v / 255.0;
+        return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+    };
+    auto to_srgb = [](double l) {
+        l = std::clamp(l, 0.0, 1.0);
+        return 255.0 * (l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1 / 2.4) - 0.055);
+    };
+    int worst = 0;
+    long checked = 0;
+    for (const Color& colour : source_colours()) {
+        if (colour.a == 0) continue;
+        Paint paint = Paint::solid(colour);
+        paint.linear_blend = true;
+        for (const auto& d : destinations()) {
+            Span span(d);
+            composite_span(span.px.data(), 256, span.coverage.data(), paint);
+            for (int c = 1; c < 256; ++c) {
+                // Straight colours blended in linear light with weights from the alphas.
+                const double sa = colour.a / 255.0 * c / 255.0, da = d[3] / 255.0;
+                const double oa = sa + da * (1 - sa);
+                const double ws = sa / oa, wd = da * (1 - sa) / oa;
+                const std::array<std::uint8_t, 3> src{colour.r, colour.g, colour.b};
+                std::array<int, 4> want{};
+                const double out_a = std::floor(oa * 255 + 0.5);
+                for (int k = 0; k < 3; ++k) {
+                    const double dst_straight = d[3] ? std::min(255.0, std::floor(d[static_cast<std::size_t>(k)] * 255.0 / d[3] + 0.5)) : 0;
+                    const double straight = to_srgb(to_linear(src[static_cast<std::size_t>(k)]) * ws + to_linear(dst_straight) * wd);
+                    want[static_cast<std::size_t>(k)] = static_cast<int>(std::floor(straight * out_a / 255.0 + 0.5));
+                }
+                want[3] = static_cast<int>(out_a);
+                const auto got = span.at(c);
+                for (int k = 0; k < 4; ++k) worst = std::max(worst, std::abs(got[static_cast<std::size_t>(k)] - want[static_cast<std::size_t>(k)]));
+                ++checked;
+            }
+        }
+    }
+    INFO("largest difference over " << checked << " pixels: " << worst);
+    CHECK(checked > 100000);
+    CHECK(worst <= 1);
+}
