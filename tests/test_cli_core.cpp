@@ -188,4 +188,16 @@ TEST_CASE("svg: strokes with width, caps and opacity", "[cli][svg][stroke]") {
     CHECK(pm.pixel(17, 11) == PremulPixel{0, 255, 0, 255});
     CHECK(pm.pixel(10, 7).a == 0);
     CHECK(pm.pixel(10, 13).a == 0);
+
+    // Opacity: stroke-opacity 0.5 and opacity 0.5 on a second, butt-capped line: alpha
+    // round(255 x 0.25) = 64 inside it, nothing beyond its ends.
+    write_text(d / "b.svg",
+               "<svg xmlns='http://www.w3.org/2000/svg' width='20' height='20'>"
+               "<line x1='4' y1='10' x2='16' y2='10' stroke='#00ff00' stroke-width='4' stroke-opacity='0.5' "
+               "opacity='0.5'/></svg>");
+    REQUIRE(run_cli("svg " + shell_quote((d / "b.svg").string()) + " -o " + shell_quote((d / "b.png").string())).status == 0);
+    const Pixmap half = read_png((d / "b.png").string());
+    CHECK(half.pixel(10, 9) == PremulPixel{0, 64, 0, 64});
+    CHECK(half.pixel(4, 10) == PremulPixel{0, 64, 0, 64});
+    CHECK(half.pixel(3, 10).a == 0);  // butt cap: no extension
 }

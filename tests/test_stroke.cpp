@@ -675,6 +675,43 @@ TEST_CASE("dash: total on length along a line, positive and negative offsets", "
     CHECK(n[0].pts.front().x == Approx(13));
 }
 
+TEST_CASE("dash: the offset is taken modulo the period, negative offsets and offsets past the pattern", "[stroke]") {
+    // Pattern 6 on, 4 off (period 10) along a line from x = 0 to 100. With offset o the path starts
+    // o into the pattern, so dashes begin at x = 10k - o (mod 10) and last 6.
+    const Path p = line({0, 0}, {100, 0});
+    const double pat[] = {6, 4};
+    auto starts = [&](double off) {
+        std::vector<double> xs;
+        for (const Contour& c : contours_of(dash(p, pat, off))) xs.push_back(c.pts.front().x);
+        return xs;
+    };
+    // Independent expectation: with m = offset mod 10 in [0, 10) the path starts m into the
+    // pattern: inside a dash when m < 6 (a piece starts at x = 0), and whole dashes start at
+    // x = 10 - m, 20 - m, ...
+    auto expected_starts = [](double off) {
+        double m = std::fmod(off, 10.0);
+        if (m < 0) m += 10;
+        std::vector<double> xs;
+        if (m < 6) xs.push_back(0);
+        for (double x = 10 - m; x < 100; x += 10) xs.push_back(x);
+        return xs;
+    };
+    for (double off : {0.0, 3.0, 6.0, 7.0, 10.0, 13.0, 1003.0, -3.0, -13.0, -1007.0, -6.5}) {
+        INFO("offset " << off);
+        const auto got = starts(off);
+        const auto want = expected_starts(off);
+        REQUIRE(got.size() == want.size());
+        for (std::size_t i = 0; i < got.size(); ++i) CHECK(got[i] == Approx(want[i]).margin(1e-9));
+        // Offsets one period apart give the same dashes.
+        CHECK(total_length(dash(p, pat, off)) == Approx(total_length(dash(p, pat, off + 10))).margin(1e-9));
+    }
+    // Offset 3: the first piece is the rest of the first dash, 3 long; offset -3: 3 of gap first,
+    // so the path starts inside the gap and the first dash is whole.
+    CHECK(contours_of(dash(p, pat, 3))[0].pts.back().x == Approx(3));
+    CHECK(contours_of(dash(p, pat, -3))[0].pts.front().x == Approx(3));
+    CHECK(contours_of(dash(p, pat, -3))[0].pts.back().x == Approx(9));
+}
+
 TEST_CASE("dash: dashes continue across segments and restart per subpath", "[stroke]") {
     Path p;
     p.move_to(0, 0).line_to(10, 0).line_to(10, 10).line_to(30, 10);  // length 40

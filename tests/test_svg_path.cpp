@@ -248,6 +248,69 @@ TEST_CASE("svg path: closepath and relative commands after it", "[svgpath]") {
     check_parse("M1 2z", Path().move_to(1, 2).close());
 }
 
+TEST_CASE("svg path: every relative command after every other command equals its absolute form", "[svgpath]") {
+    // The path starts at (10, 10). Each first command ends at a known point E (after Z: the
+    // subpath's start); each relative second command is written again in absolute coordinates from
+    // E, and a third relative lineto checks that the current point moved to the second one's end.
+    // All values are exact in binary, so the two parses must agree to the bit.
+    struct First {
+        const char* data;
+        Point end, start;  // current point and subpath start after it
+    };
+    const std::vector<First> firsts = {
+        {"M30 40", {30, 40}, {30, 40}},          {"m20 30", {30, 40}, {30, 40}},
+        {"L30 40", {30, 40}, {10, 10}},          {"l20 30", {30, 40}, {10, 10}},
+        {"H30", {30, 10}, {10, 10}},             {"h20", {30, 10}, {10, 10}},
+        {"V40", {10, 40}, {10, 10}},             {"v30", {10, 40}, {10, 10}},
+        {"C12 14 20 30 30 40", {30, 40}, {10, 10}}, {"c2 4 10 20 20 30", {30, 40}, {10, 10}},
+        {"S20 30 30 40", {30, 40}, {10, 10}},    {"s10 20 20 30", {30, 40}, {10, 10}},
+        {"Q20 30 30 40", {30, 40}, {10, 10}},    {"q10 20 20 30", {30, 40}, {10, 10}},
+        {"T30 40", {30, 40}, {10, 10}},          {"t20 30", {30, 40}, {10, 10}},
+        {"A10 10 0 0 1 30 40", {30, 40}, {10, 10}}, {"a10 10 0 0 1 20 30", {30, 40}, {10, 10}},
+        {"L30 40 Z", {10, 10}, {10, 10}},        {"L30 40 z", {10, 10}, {10, 10}},
+    };
+    auto num = [](double v) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.17g", v);
+        return std::string(buf);
+    };
+    // "X p1x p1y p2x p2y ...", built with appends (GCC 12 misreports operator+ on literals here).
+    auto cmd = [&](const std::string& head, std::initializer_list<Point> pts) {
+        std::string out = head;
+        for (const Point& q : pts) out.append(" ").append(num(q.x)).append(" ").append(num(q.y));
+        return out;
+    };
+    for (const First& f : firsts) {
+        const Point e = f.end;
+        struct Second {
+            std::string rel, abs;
+            Point end;
+        };
+        const std::vector<Second> seconds = {
+            {"m1.5 2", cmd("M", {e + Vec{1.5, 2}}), e + Vec{1.5, 2}},
+            {"l1.5 2", cmd("L", {e + Vec{1.5, 2}}), e + Vec{1.5, 2}},
+            {"h1.5", cmd("H", {}).append(num(e.x + 1.5)), e + Vec{1.5, 0}},
+            {"v2", cmd("V", {}).append(num(e.y + 2)), e + Vec{0, 2}},
+            {"c1 1 2 2.5 3 3", cmd("C", {e + Vec{1, 1}, e + Vec{2, 2.5}, e + Vec{3, 3}}), e + Vec{3, 3}},
+            {"s2 2.5 3 3", cmd("S", {e + Vec{2, 2.5}, e + Vec{3, 3}}), e + Vec{3, 3}},
+            {"q1 2.5 3 3", cmd("Q", {e + Vec{1, 2.5}, e + Vec{3, 3}}), e + Vec{3, 3}},
+            {"t3 3", cmd("T", {e + Vec{3, 3}}), e + Vec{3, 3}},
+            {"a4 4 0 0 1 3 3", cmd("A4 4 0 0 1", {e + Vec{3, 3}}), e + Vec{3, 3}},
+            {"z", "Z", f.start},
+        };
+        for (const Second& s2 : seconds) {
+            const Point third = s2.end + Vec{1, 1};
+            std::string rel = "M10 10 ", abs = "M10 10 ";
+            rel.append(f.data).append(" ").append(s2.rel).append(" l1 1");
+            abs.append(f.data).append(" ").append(s2.abs).append(" ").append(cmd("L", {third}));
+            INFO(rel << "  vs  " << abs);
+            const Path a = parse_svg_path(rel), b = parse_svg_path(abs);
+            CHECK(dump(a) == dump(b));
+            CHECK(a.current_point() == third);
+        }
+    }
+}
+
 TEST_CASE("svg path: empty and whitespace-only data give an empty path", "[svgpath]") {
     CHECK(parse_svg_path("").empty());
     CHECK(parse_svg_path(" \t\r\n\f").empty());

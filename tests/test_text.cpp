@@ -491,5 +491,16 @@ TEST_CASE("Linear-light blending lightens partial coverage of dark text on a lig
         }
     CHECK(partial > 50);
     CHECK(lighter > partial * 9 / 10);
-    // 50% coverage of black over white is 50% linear light: sRGB 188, not 128.
+    // 50% coverage of black over white is 50% linear light: sRGB 188, not 128. Coverage 127 and
+    // 128 straddle one half: linear light 128/255 and 127/255 encode to 187.8 and 187.2.
+    std::uint8_t row[8] = {255, 255, 255, 255, 255, 255, 255, 255};
+    const std::uint8_t half[2] = {127, 128};
+    composite_span(row, 2, half, p);
+    CHECK(row[0] == 188);
+    CHECK(row[4] == 187);
+    Paint plain = Paint::solid(Color::black());
+    std::uint8_t row2[8] = {255, 255, 255, 255, 255, 255, 255, 255};
+    composite_span(row2, 2, half, plain);
+    CHECK(row2[0] == 128);
+    CHECK(row2[4] == 127);
 }
