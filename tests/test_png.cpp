@@ -15,6 +15,8 @@
 using casteljau::Color;
 using casteljau::decode_png;
 using casteljau::encode_png;
+using casteljau::PngEncodeOptions;
+using casteljau::PngFilter;
 using casteljau::Error;
 using casteljau::ErrorKind;
 using casteljau::Pixmap;
@@ -357,7 +359,7 @@ TEST_CASE("encode_png/decode_png: random premultiplied pixmaps round-trip exactl
 }
 
 TEST_CASE("encode_png: 8-bit RGBA with straight alpha and an sRGB chunk, readable by stb_image", "[png]") {
-    const Pixmap pm = random_premultiplied(29, 17, 99);
+    const Pixmap pm = random_premultiplied(29, 17, 99);  // translucent colour: written as RGBA
     const auto bytes = encode_png(pm);
 
     // Walk the chunks: IHDR first, sRGB (rendering intent 0) before IDAT, IEND last.
@@ -414,6 +416,74 @@ TEST_CASE("encode_png: 8-bit RGBA with straight alpha and an sRGB chunk, readabl
     const auto one_rgba = png_test::stb_decode_rgba8(encode_png(one), w, h);
     REQUIRE(one_rgba.size() == 4);
     CHECK(one_rgba == std::vector<std::uint8_t>{128, 0, 64, 128});
+}
+
+TEST_CASE("encode_png: the smallest colour type that holds the pixels, every filter and level round-trips", "[png]") {
+    // Four pictures, one per colour type: grey and opaque, grey with alpha, colour and opaque,
+    // colour with alpha (random pixels of each kind).
+    std::uint32_t seed = 7;
+    auto next = [&] {
+        seed = seed * 1664525u + 1013904223u;
+        return static_cast<std::uint8_t>(seed >> 24);
+    };
+    auto picture = [&](bool grey, bool opaque) {
+        Pixmap pm(37, 23);
+        for (int y = 0; y < pm.height(); ++y)
+            for (int x = 0; x < pm.width(); ++x) {
+                const std::uint8_t a = opaque ? 255 : next();
+                const std::uint8_t r = next();
+                const Color c = grey ? Color::rgba(r, r, r, a) : Color::rgba(r, next(), next(), a);
+                pm.set_pixel(x, y, premultiply(c));
+            }
+        return pm;
+    };
+    struct Case {
+        bool grey, opaque;
+        int colour_type;  // PNG IHDR colour type expected
+    };
+    const Case cases[] = {{true, true, 0}, {true, false, 4}, {false, true, 2}, {false, false, 6}};
+    const PngFilter filters[] = {PngFilter::Auto, PngFilter::None, PngFilter::Sub, PngFilter::Up,
+                                 PngFilter::Average, PngFilter::Paeth, PngFilter::Adaptive};
+    for (const Case& c : cases) {
+        const Pixmap pm = picture(c.grey, c.opaque);
+        for (PngFilter f : filters)
+            for (int level : {0, 1, 4, 9})
+                for (bool reduce : {true, false}) {
+                    INFO("grey " << c.grey << " opaque " << c.opaque << " filter " << int(f) << " level " << level
+                                 << " reduce " << reduce);
+                    PngEncodeOptions o;
+                    o.filter = f;
+                    o.compression_level = level;
+                    o.smallest_colour_type = reduce;
+                    const auto bytes = encode_png(pm, o);
+                    REQUIRE(bytes.size() > 26);
+                    CHECK(int(bytes[8 + 4 + 4 + 9]) == (reduce ? c.colour_type : 6));  // IHDR colour type
+                    CHECK(same_pixels(pm, decode_png(bytes)));
+                    // The independent decoder agrees with the straight-alpha values.
+                    int w = 0, h = 0;
+                    const auto rgba = png_test::stb_decode_rgba8(bytes, w, h);
+                    REQUIRE(rgba.size() == std::size_t(37 * 23 * 4));
+                    bool same = true;
+                    for (int y = 0; y < 23; ++y)
+                        for (int x = 0; x < 37; ++x) {
+                            const Color s = casteljau::unpremultiply(pm.pixel(x, y));
+                            const std::uint8_t* p = &rgba[(static_cast<std::size_t>(y) * 37 + static_cast<std::size_t>(x)) * 4];
+                            same = same && p[0] == s.r && p[1] == s.g && p[2] == s.b && p[3] == s.a;
+                        }
+                    CHECK(same);
+                }
+    }
+    // Levels outside zlib's 0..9 are refused.
+    for (int level : {-1, 10}) {
+        PngEncodeOptions o;
+        o.compression_level = level;
+        try {
+            (void)encode_png(picture(true, true), o);
+            FAIL("no error for level " << level);
+        } catch (const Error& e) {
+            CHECK(e.kind() == ErrorKind::InvalidArgument);
+        }
+    }
 }
 
 TEST_CASE("encode_png: an empty Pixmap is an InvalidArgument error", "[png]") {
