@@ -33,7 +33,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
-#include "raster/row_vector-inl.h"  // the library's row-vector kernel, for every target
+#include "raster/row_vector-inl.h"    // the library's row-vector kernel, for every target
+#include "raster/simd_dispatch.hpp"    // the library's dispatch (no libhwy)
 
 #include <algorithm>
 #include <cmath>
@@ -194,13 +195,13 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace floorbench {
-HWY_EXPORT(StrideImpl);
-HWY_EXPORT(RowVectorImpl);
-HWY_EXPORT(DenseFloatImpl);
+CASTELJAU_SIMD_EXPORT(StrideImpl);
+CASTELJAU_SIMD_EXPORT(RowVectorImpl);
+CASTELJAU_SIMD_EXPORT(DenseFloatImpl);
 
-int row_vector_stride(int w) { return HWY_DYNAMIC_DISPATCH(StrideImpl)(w); }
-void row_vector(const Job& job) { HWY_DYNAMIC_DISPATCH(RowVectorImpl)(job); }
-void dense_float(const Job& job) { HWY_DYNAMIC_DISPATCH(DenseFloatImpl)(job); }
+int row_vector_stride(int w) { return CASTELJAU_SIMD_DISPATCH(StrideImpl)(w); }
+void row_vector(const Job& job) { CASTELJAU_SIMD_DISPATCH(RowVectorImpl)(job); }
+void dense_float(const Job& job) { CASTELJAU_SIMD_DISPATCH(DenseFloatImpl)(job); }
 
 }  // namespace floorbench
 

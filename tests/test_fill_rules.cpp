@@ -9,7 +9,7 @@
 #include <random>
 #include <string>
 
-#include <hwy/targets.h>
+#include "raster/simd_dispatch.hpp"
 
 #include "accuracy_util.hpp"
 #include "glyph_outline.hpp"
@@ -401,12 +401,12 @@ TEST_CASE("fill rules: narrow shapes accumulate by rows as the cell walk does (e
     shapes.push_back(Contours(301, Contour{{2.3, 1.7}, {37.9, 12.2}, {9.4, 38.6}}));
     const IRect window{0, 0, 40, 40};
     int worst = 0, compared = 0;
-    const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();  // every SIMD width
+    const std::vector<std::int64_t> targets = simd::available_targets();  // every SIMD width
     REQUIRE(!targets.empty());
     for (std::size_t n = 0; n < targets.size() * shapes.size(); ++n) {
         const std::int64_t t = targets[n / shapes.size()];
         const Contours& cs = shapes[n % shapes.size()];
-        hwy::SetSupportedTargetsForTest(t);
+        simd::restrict_targets(t);
         Contours wide = cs;
         wide.push_back(far);
         for (FillRule rule : kRules) {
@@ -420,7 +420,7 @@ TEST_CASE("fill rules: narrow shapes accumulate by rows as the cell walk does (e
                     const int d = std::abs(a.at(x, y) - b.at(x, y));
                     if (d > worst) {
                         worst = d;
-                        INFO(hwy::TargetName(t) << ": " << describe(cs, Affine::identity(), window) << " "
+                        INFO(simd::target_name(t) << ": " << describe(cs, Affine::identity(), window) << " "
                                                 << rule_name(rule) << " at " << x << "," << y << ": " << a.at(x, y)
                                                 << " vs " << b.at(x, y));
                         CHECK(d <= 1);
@@ -429,7 +429,7 @@ TEST_CASE("fill rules: narrow shapes accumulate by rows as the cell walk does (e
                 }
         }
     }
-    hwy::SetSupportedTargetsForTest(0);
+    simd::restrict_targets(0);
     CHECK(worst <= 1);
     CHECK(compared == static_cast<int>(targets.size()) * 2 * 44 * 1600);
 }

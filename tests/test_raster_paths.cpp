@@ -5,7 +5,7 @@
 // throws halfway. The row scan is SIMD with runtime dispatch: every instruction set this CPU and
 // the build support must give the same pixels.
 #include <catch2/catch.hpp>
-#include <hwy/targets.h>
+#include "raster/simd_dispatch.hpp"
 
 #include <cmath>
 #include <random>
@@ -105,12 +105,12 @@ TEST_CASE("raster paths: every SIMD target of the row scan gives the same pixels
     struct Job { const Path* path; IRect clip; };
     const Job jobs[] = {{&scene, {0, 0, 910, 720}}, {&scene, {130, 150, 260, 300}}, {&stacked, {0, 0, 120, 120}},
                         {&one, {0, 0, 120, 120}}};
-    const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
+    const std::vector<std::int64_t> targets = simd::available_targets();
     REQUIRE(!targets.empty());
     std::vector<std::vector<std::uint8_t>> first;
     for (std::int64_t t : targets) {
-        hwy::SetSupportedTargetsForTest(t);
-        INFO("SIMD target " << hwy::TargetName(t));
+        simd::restrict_targets(t);
+        INFO("SIMD target " << simd::target_name(t));
         std::size_t k = 0;
         for (FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
             FillOptions o;
@@ -138,6 +138,6 @@ TEST_CASE("raster paths: every SIMD target of the row scan gives the same pixels
         const Rendered none = render(r, stacked, Affine{}, eo, {0, 0, 120, 120});
         CHECK(std::all_of(none.cov.begin(), none.cov.end(), [](std::uint8_t c) { return c == 0; }));
     }
-    hwy::SetSupportedTargetsForTest(0);
+    simd::restrict_targets(0);
     WARN("row scan checked on " << targets.size() << " SIMD target(s)");
 }

@@ -1,7 +1,7 @@
 // Raster stage, coverage: per-row prefix sum of the (double) accumulation buffer mapped through the fill
 // rule to 8-bit coverage, and the row-vector accumulation of narrow shapes (RowPiece in
 // raster_internal.hpp). Vectorised with Highway (runtime dispatch to the best instruction set the
-// CPU has): the prefix sum is an in-register inclusive scan per vector plus a running carry.
+// CPU has, simd_dispatch.hpp): the prefix sum is an in-register inclusive scan per vector plus a running carry.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/coverage.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -14,6 +14,7 @@
 #include <cstring>
 
 #include "raster/raster_internal.hpp"
+#include "raster/simd_dispatch.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace casteljau::raster {
@@ -194,24 +195,24 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace casteljau::raster {
-HWY_EXPORT(AccumulateRowImpl);
-HWY_EXPORT(ScanRowsImpl);
+CASTELJAU_SIMD_EXPORT(AccumulateRowImpl);
+CASTELJAU_SIMD_EXPORT(ScanRowsImpl);
 
-HWY_EXPORT(RowVectorLanesImpl);
-HWY_EXPORT(RowVectorAccumulateImpl);
-HWY_EXPORT(RowVectorEmitImpl);
+CASTELJAU_SIMD_EXPORT(RowVectorLanesImpl);
+CASTELJAU_SIMD_EXPORT(RowVectorAccumulateImpl);
+CASTELJAU_SIMD_EXPORT(RowVectorEmitImpl);
 
-void scan_rows(const ScanRows& rows, SpanSink& sink) { HWY_DYNAMIC_DISPATCH(ScanRowsImpl)(rows, sink); }
+void scan_rows(const ScanRows& rows, SpanSink& sink) { CASTELJAU_SIMD_DISPATCH(ScanRowsImpl)(rows, sink); }
 
 // Not cached: tests switch targets, and the stride must be whole vectors of the kernels' target.
-int row_vector_lanes() { return HWY_DYNAMIC_DISPATCH(RowVectorLanesImpl)(); }
+int row_vector_lanes() { return CASTELJAU_SIMD_DISPATCH(RowVectorLanesImpl)(); }
 void row_vector_accumulate(const RowPiece* pieces, std::size_t n, float* acc, int stride) {
-    HWY_DYNAMIC_DISPATCH(RowVectorAccumulateImpl)(pieces, n, acc, stride);
+    CASTELJAU_SIMD_DISPATCH(RowVectorAccumulateImpl)(pieces, n, acc, stride);
 }
-void row_vector_emit(const RowVectorRows& rows, SpanSink& sink) { HWY_DYNAMIC_DISPATCH(RowVectorEmitImpl)(rows, sink); }
+void row_vector_emit(const RowVectorRows& rows, SpanSink& sink) { CASTELJAU_SIMD_DISPATCH(RowVectorEmitImpl)(rows, sink); }
 
 double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule) {
-    return HWY_DYNAMIC_DISPATCH(AccumulateRowImpl)(acc, cov, from, to, start, rule);
+    return CASTELJAU_SIMD_DISPATCH(AccumulateRowImpl)(acc, cov, from, to, start, rule);
 }
 }  // namespace casteljau::raster
 #endif
