@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <string_view>
 
 #include "casteljau/error.hpp"
 #include "cli/cli.hpp"
@@ -12,13 +13,23 @@ int main(int argc, char** argv) {
     CLI::App app{"casteljau: vector outlines to anti-aliased PNG (exact-area rasterizer)", "casteljau"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "casteljau 0.1.0");
-    // Subcommands: one registration function per src/cli/cmd_*.cpp file.
-    cli::register_path(app);
-    cli::register_svg(app);
-    cli::register_bezier(app);
-    cli::register_spline(app);
-    cli::register_surface(app);
-    cli::register_text(app);
+    // Subcommands: one registration function per src/cli/cmd_*.cpp file. Building CLI11's option
+    // tables costs more than some whole runs (one letter of text), so when the first argument
+    // names a command only that command is registered; otherwise (help, version, a mistake) all
+    // are, so help and error messages list every command.
+    struct Command {
+        const char* name;
+        void (*add)(CLI::App&);
+    };
+    static constexpr Command kCommands[] = {
+        {"path", cli::register_path},     {"svg", cli::register_svg},         {"bezier", cli::register_bezier},
+        {"spline", cli::register_spline}, {"surface", cli::register_surface}, {"text", cli::register_text},
+    };
+    const Command* only = nullptr;
+    for (const Command& c : kCommands)
+        if (argc > 1 && std::string_view(argv[1]) == c.name) only = &c;
+    for (const Command& c : kCommands)
+        if (only == nullptr || only == &c) c.add(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -100,28 +100,27 @@ std::vector<std::uint8_t> read_font_file(const std::string& path) {
         throw Error(ErrorKind::Io, "cannot read font '" + path + "': it is a directory");
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) throw Error(ErrorKind::Io, "cannot read font '" + path + "': " + std::strerror(errno));
-    // Read straight into the buffer, sized from the file's size (one byte more, to notice a file
-    // that grew meanwhile), growing only if the size was unknown or wrong.
+    // The buffer is reserved at the file's size, so appending never reallocates (nor zero-fills).
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (!ec && size > kMaxFontFileBytes) {
         std::fclose(f);
         throw Error(ErrorKind::Limit, "font '" + path + "' is larger than " + std::to_string(kMaxFontFileBytes >> 20) + " MiB");
     }
-    std::vector<std::uint8_t> bytes(ec ? std::size_t{65536} : static_cast<std::size_t>(size) + 1);
-    std::size_t n = 0, got;
-    while ((got = std::fread(bytes.data() + n, 1, bytes.size() - n, f)) > 0) {
-        n += got;
-        if (n > kMaxFontFileBytes) {
+    std::vector<std::uint8_t> bytes;
+    if (!ec) bytes.reserve(static_cast<std::size_t>(size));
+    std::uint8_t buf[65536];
+    std::size_t got;
+    while ((got = std::fread(buf, 1, sizeof buf, f)) > 0) {
+        bytes.insert(bytes.end(), buf, buf + got);
+        if (bytes.size() > kMaxFontFileBytes) {
             std::fclose(f);
             throw Error(ErrorKind::Limit, "font '" + path + "' is larger than " +
                                               std::to_string(kMaxFontFileBytes >> 20) + " MiB");
         }
-        if (n == bytes.size()) bytes.resize(2 * bytes.size());
     }
     const bool failed = std::ferror(f) != 0;
     std::fclose(f);
     if (failed) throw Error(ErrorKind::Io, "cannot read font '" + path + "': read error");
-    bytes.resize(n);
     return bytes;
 }
 
