@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     cli::register_spline(app);
     cli::register_surface(app);
     cli::register_text(app);
+    cli::register_map(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
