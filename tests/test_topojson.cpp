@@ -103,6 +103,12 @@ TEST_CASE("TopoJSON bad input: arc index out of range, unclosed ring, not a topo
     m = error_of(R"({"type":"Topology","objects":{"a":{"type":"Polygon","arcs":[[0]]}},"arcs":[[[0,0],[500,0]]]})", k);
     CHECK(k == ErrorKind::InvalidData);
     CHECK(m.find("arcs[0][1]") != std::string::npos);
+    // A ring collapsed by quantization is dropped, not an error.
+    const MapData collapsed = read_topojson(R"({"type":"Topology","objects":{"a":{"type":"MultiPolygon","arcs":[[[1]],[[0]]]}},
+        "arcs":[[[0,0],[1,0],[1,1],[0,0]],[[5,5],[5,5]]]})");
+    REQUIRE(collapsed.features.size() == 1);
+    CHECK(collapsed.features[0].geometries.at(0).polygon_ends == std::vector<std::uint32_t>{1});
+    CHECK(collapsed.features[0].geometries.at(0).points.size() == 4);
     m = error_of(R"({"type":"FeatureCollection","features":[]})", k);
     CHECK(k == ErrorKind::Parse);
     m = error_of(R"({"type":"Topology","objects":{"a":{"type":"Squiggle","arcs":[]}},"arcs":[]})", k);

@@ -19,6 +19,8 @@
 //   than 4 positions or whose last position differs from its first (RFC 7946 3.1.6); a TopoJSON
 //   arc index out of range.
 // - Limit: nesting deeper than limits::kMaxNestingDepth, or more than kMaxMapPositions positions.
+// TopoJSON rings that quantization collapsed below 4 positions enclose no area and are dropped
+// (with the holes of a collapsed exterior); a GeoJSON ring below 4 positions is an error.
 // Tolerated (RFC 7946 allows them): empty geometries and empty collections, `null` geometry and
 // properties, extra position members (altitude), unknown members (foreign members, "bbox", "crs").
 //

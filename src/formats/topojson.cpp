@@ -96,7 +96,8 @@ struct TopoReader {
     }
 
     // Appends the positions of a list of arc indices (one ring or line) to g.
-    void arc_list(element e, Geometry& g, bool ring) {
+    // Returns false for a ring collapsed below 4 positions (not added).
+    bool arc_list(element e, Geometry& g, bool ring) {
         array a = get_array(e, "an array of arc indices");
         const std::size_t begin = g.points.size();
         std::size_t i = 0;
@@ -121,17 +122,33 @@ struct TopoReader {
             }
             ++i;
         }
+        if (ring && g.points.size() - begin < 4) {
+            // Quantization collapses tiny rings to fewer than 4 positions (Natural Earth 10m has
+            // some): they enclose no area and are dropped.
+            g.points.resize(begin);
+            return false;
+        }
         if (ring) geo_detail::check_ring(g, begin, path);
         if (g.points.size() > begin) g.ring_ends.push_back(static_cast<std::uint32_t>(g.points.size()));
+        return true;
     }
 
     void polygon(element e, Geometry& g) {
         std::size_t i = 0;
+        const std::size_t points0 = g.points.size(), rings0 = g.ring_ends.size();
+        bool exterior_ok = true;
         for (element r : get_array(e, "a polygon (an array of rings)")) {
-            auto s = path.index(i++);
-            arc_list(r, g, true);
+            auto s = path.index(i);
+            const bool ok = arc_list(r, g, true);
+            if (i == 0) exterior_ok = ok;
+            ++i;
         }
-        if (i > 0) g.polygon_ends.push_back(static_cast<std::uint32_t>(g.ring_ends.size()));
+        if (!exterior_ok) {  // a collapsed exterior: the holes inside it go too
+            g.points.resize(points0);
+            g.ring_ends.resize(rings0);
+            return;
+        }
+        if (g.ring_ends.size() > rings0) g.polygon_ends.push_back(static_cast<std::uint32_t>(g.ring_ends.size()));
     }
 
     Point point(element e) {
