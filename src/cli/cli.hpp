@@ -50,5 +50,6 @@ void register_spline(CLI::App& app);
 void register_surface(CLI::App& app);
 void register_text(CLI::App& app);
 void register_map(CLI::App& app);
+void register_tiles(CLI::App& app);
 
 }  // namespace casteljau::cli

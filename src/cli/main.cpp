@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     cli::register_surface(app);
     cli::register_text(app);
     cli::register_map(app);
+    cli::register_tiles(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
