@@ -1,7 +1,7 @@
 #!/bin/sh
 # Builds one libFuzzer target with clang in build-fuzz/ and runs it for SECONDS on a copy of its seed
 # corpus (fuzz/corpus/TARGET-without-fuzz_ plus the matching test data), so the repository is
-# never written to. Exit status: libFuzzer's (non-zero when it found a crash, leak or timeout).
+# never written to (crash/timeout inputs go to build-fuzz/). Exit status: libFuzzer's (non-zero when it found a crash, leak or timeout).
 # Usage: fuzz/run_smoke.sh fuzz_map_data 60
 set -eu
 target=${1:?usage: fuzz/run_smoke.sh TARGET SECONDS}
@@ -27,4 +27,5 @@ case "$name" in
     done ;;
 esac
 "$build/fuzz/$target" -max_total_time="$seconds" -max_len=131072 -timeout=10 -rss_limit_mb=2048 \
+  -artifact_prefix="$build/" \
   -print_final_stats=1 "$work/corpus"
