@@ -53,7 +53,8 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
                        const TileExists& exists, const std::function<void(std::uint64_t, std::uint64_t)>& progress) {
     check_options(opts);
     const std::vector<Metatile> all = list_metatiles(opts.min_zoom, opts.max_zoom, opts.metatile);
-    const auto [begin, end] = shard_range(all.size(), opts.shard, opts.shards);
+    const std::pair<std::size_t, std::size_t> range = shard_range(all.size(), opts.shard, opts.shards);
+    const std::size_t begin = range.first, end = range.second;
     const std::uint64_t total = end - begin;
     const MapProjection merc = MapProjection::parse("mercator");
     const PremulPixel bg = premultiply(style.background);
