@@ -95,7 +95,7 @@ TEST_CASE("tiles: three shards in parallel processes equal one unsharded run byt
     CHECK(folder_files(dir / "slurm") == one);
 }
 
-TEST_CASE("tiles: MBTiles holds the folder's tiles, TMS rows and metadata; tiles-merge joins shards", "[tiles][cli]") {
+TEST_CASE("tiles: MBTiles holds the folder's tiles, TMS rows and metadata, and tiles-merge joins shards", "[tiles][cli]") {
     const fs::path dir = casteljau::test::scratch_dir("tiles_mbtiles");
     const std::string args = "tiles " + shell_quote(kWorld) + " --zoom 0-2 --metatile 2 -q" + kStyle;
     REQUIRE(run_cli(args + " -o " + shell_quote((dir / "folder").string())).status == 0);

@@ -97,6 +97,11 @@ struct MapOptions {
     bool seamless = true;         // false: each fill source-over on its own (--separate)
     FillRule fill_rule = FillRule::NonZero;
     double tolerance = kDefaultTolerance;
+    // Fills only: recompute pixels where a feature's own edges overlap (self-intersecting or
+    // overlapping rings) exactly. Off: plain accumulation, about 3x faster on dense data (Natural
+    // Earth 10m) and still exact for valid polygons (simple rings, holes inside their exterior),
+    // whose winding numbers stay within 0..1. Strokes are always exact (their outlines overlap).
+    bool exact_overlaps = true;
 };
 
 // Projected space -> pixel space, and the image size.

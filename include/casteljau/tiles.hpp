@@ -48,6 +48,7 @@ struct TileOptions {
     int shard = 0, shards = 1;       // render only share `shard` of `shards`
     bool seamless = true;
     double tolerance = kDefaultTolerance;
+    bool exact_overlaps = true;  // see MapOptions::exact_overlaps
 };
 
 struct TileStats {

@@ -100,6 +100,8 @@ void add_map_style_options(CLI::App* cmd, MapCliStyle& o) {
         ->capture_default_str();
     cmd->add_option("--layer", o.layer, "TopoJSON object to draw (default: all)");
     cmd->add_flag("--separate", o.separate, "Draw each fill on its own with source-over (seams between neighbours)");
+    cmd->add_flag("--no-exact-overlaps", o.no_exact,
+                  "Fills by plain accumulation (about 3x faster on dense data; exact for valid polygons)");
     cmd->add_option("--tolerance", o.tolerance, "Flattening tolerance in pixels")
         ->check(CLI::Range(1e-4, 10.0))
         ->capture_default_str();
@@ -161,6 +163,7 @@ void register_map(CLI::App& app) {
         mo.padding = o->padding;
         mo.seamless = !o->style.separate;
         mo.tolerance = o->style.tolerance;
+        mo.exact_overlaps = !o->style.no_exact;
         if (!o->bbox.empty()) mo.bbox = parse_bbox(o->bbox);
         const MapStyle style = build_map_style(o->style);
         const MapProjection proj = MapProjection::parse(o->style.projection);

@@ -113,6 +113,7 @@ void register_tiles(CLI::App& app) {
         to.threads = o->threads > 0 ? o->threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
         to.seamless = !o->style.separate;
         to.tolerance = o->style.tolerance;
+        to.exact_overlaps = !o->style.no_exact;
         if (o->style.projection != "equirectangular" && o->style.projection != "mercator")
             throw UsageError("--projection: tiles are always Web Mercator");
         MapStyle style = build_map_style(o->style);

@@ -294,6 +294,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
     FillOptions fo;
     fo.rule = opts.fill_rule;
     fo.tolerance = opts.tolerance;
+    fo.exact_overlaps = opts.exact_overlaps;
     Projector pr(proj);
     Rasterizer& raster = canvas.rasterizer();
     StrokeStyle ss;
@@ -337,6 +338,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
                 if (v.fill.empty()) continue;
                 Paint paint = Paint::solid(*c);
                 paint.opacity = layer.opacity;
+                canvas.fill_options().exact_overlaps = opts.exact_overlaps;
                 canvas.fill_path(v.fill, paint, opts.fill_rule);
             }
         }
@@ -348,6 +350,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             if (outline.empty()) return;
             Paint paint = Paint::solid(*line_color);
             paint.opacity = layer.opacity;
+            canvas.fill_options().exact_overlaps = true;  // a shared border's two copies must not add up
             canvas.fill_path(outline, paint, FillRule::NonZero);
             outline.clear();
         };

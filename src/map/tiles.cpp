@@ -61,6 +61,7 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
     MapOptions mo;
     mo.seamless = opts.seamless;
     mo.tolerance = opts.tolerance;
+    mo.exact_overlaps = opts.exact_overlaps;
 
     std::mutex mu;  // guards sink, stats, progress, error
     TileStats stats;
