@@ -56,4 +56,18 @@ fi
 run svg "$here/data/shapes.svg" -o "$out/shapes.png"
 run svg "$here/data/shapes.svg" --scale 3 -o "$out/shapes-3x.png"
 
+# Maps: the Natural Earth 110m countries (tests/data/maps), one colour per country, seamless
+# borders stroked once; the hand-made sample across the antimeridian; a few Web Mercator tiles.
+world="$root/tests/data/maps/countries-110m.json"
+run map "$world" --layer countries --width 1600 --projection "+proj=robin" --fill-by name \
+  --stroke "#4a4a4a" --stroke-width 0.6 --background white --padding 8 -o "$out/world-countries.png"
+run map "$world" --layer countries --width 1024 --projection mercator --fill "#2f6f4f" --background "#dfeaf2" \
+  -o "$out/world-mercator-seamless.png"
+run map "$root/tests/data/maps/sample.geojson" --width 800 --bbox -180,-60,180,70 --fill-by kind \
+  --stroke black --stroke-width 1 --point-radius 5 --background "#f7f7f7" -o "$out/sample-map.png"
+rm -rf "$out/tiles"
+"$cj" tiles "$world" --layer countries --zoom 0-2 --fill-by name --stroke "#4a4a4a" --stroke-width 0.6 \
+  --background "#dfeaf2" -q -o "$out/tiles"
+n=$((n + 21))
+
 echo "casteljau demo: wrote $n images to $out"

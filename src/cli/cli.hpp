@@ -10,7 +10,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "casteljau/flatten.hpp"
+#include "casteljau/geojson.hpp"
 #include "casteljau/geometry.hpp"
+#include "casteljau/map.hpp"
 #include "casteljau/paint.hpp"
 
 namespace casteljau::cli {
@@ -28,11 +31,25 @@ Affine parse_affine_option(const std::string& option, const std::string& text);
 // Reads a whole input file ("-" reads standard input) as text; throws Error(Io).
 std::string read_text_input(const std::string& path);
 
+// Options shared by `map` and `tiles` (cmd_map.cpp).
+struct MapCliStyle {
+    std::string fill = "black", stroke, join = "round", cap = "round", background = "transparent";
+    std::string fill_by, ramp, style_file, projection = "equirectangular", layer;
+    double stroke_width = 1, point_radius = 3, opacity = 1, tolerance = kDefaultTolerance;
+    bool separate = false, no_exact = false;
+};
+void add_map_style_options(CLI::App* cmd, MapCliStyle& o);
+MapStyle build_map_style(const MapCliStyle& o);
+// Reads a map file by its extension (.geojsonl/.ndjson: GeoJSON lines, .topojson) or content.
+MapData read_map_input(const std::string& path, const std::string& layer);
+
 void register_path(CLI::App& app);
 void register_svg(CLI::App& app);
 void register_bezier(CLI::App& app);
 void register_spline(CLI::App& app);
 void register_surface(CLI::App& app);
 void register_text(CLI::App& app);
+void register_map(CLI::App& app);
+void register_tiles(CLI::App& app);
 
 }  // namespace casteljau::cli

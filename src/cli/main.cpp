@@ -1,6 +1,8 @@
 // casteljau: command-line tool. A thin shell over the library: parse options, call the library,
 // map errors to exit codes (1: bad data, 2: bad usage) with a one-line message on stderr.
+#include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <exception>
 #include <iostream>
 #include <string_view>
@@ -24,12 +26,20 @@ int main(int argc, char** argv) {
     static constexpr Command kCommands[] = {
         {"path", cli::register_path},     {"svg", cli::register_svg},         {"bezier", cli::register_bezier},
         {"spline", cli::register_spline}, {"surface", cli::register_surface}, {"text", cli::register_text},
+        {"map", cli::register_map},       {"tiles", cli::register_tiles},     {"tiles-merge", cli::register_tiles},
     };
+    // One registration function may add several commands (tiles and tiles-merge): each runs once.
     const Command* only = nullptr;
     for (const Command& c : kCommands)
         if (argc > 1 && std::string_view(argv[1]) == c.name) only = &c;
-    for (const Command& c : kCommands)
-        if (only == nullptr || only == &c) c.add(app);
+    void (*added[std::size(kCommands)])(CLI::App&) = {};
+    std::size_t n_added = 0;
+    for (const Command& c : kCommands) {
+        if (only != nullptr && only != &c) continue;
+        if (std::find(added, added + n_added, c.add) != added + n_added) continue;
+        c.add(app);
+        added[n_added++] = c.add;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,263 @@
+// bench/map_bench: filling a world map, casteljau side by side with AGG and Cairo in one process.
+//
+// Usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME]
+//   (FILE: GeoJSON or TopoJSON; bench/setup_map_data.sh installs world-atlas 10m from npm.)
+// The map is read and projected (equirectangular, --bbox -180,-90,180,90 onto width x width/2)
+// once, outside the timed region, into pixel-space polygons per feature (antimeridian split with
+// casteljau's public split_ring_at_antimeridian). Timed, per round (thread CPU time, best of
+// --rounds; see timer.hpp):
+//   fill:         every feature filled in file order, nonzero, opaque black on a cleared image:
+//                 casteljau separate (Canvas::fill_path, source-over; and with
+//                 FillOptions::exact_overlaps off, plain accumulation), casteljau seamless
+//                 (AreaCompositor, conflation-free), AGG (rasterizer_scanline_aa + scanline_p8,
+//                 rgba8 pre), Cairo (image surface ARGB32, cairo_fill, antialias default).
+//   fill+stroke:  the same plus a 0.8 px stroke of every ring with round joins: casteljau as the
+//                 map command does it (all outlines in one nonzero path: shared borders drawn once),
+//                 AGG conv_stroke per feature, Cairo cairo_stroke per feature.
+//   render_map:   casteljau's whole map stage from MapData (projection + paths + seamless + strokes).
+// Prints peak RSS at the end.
+#include <agg_conv_stroke.h>
+#include <agg_path_storage.h>
+#include <agg_pixfmt_rgba.h>
+#include <agg_rasterizer_scanline_aa.h>
+#include <agg_renderer_base.h>
+#include <agg_renderer_scanline.h>
+#include <agg_rendering_buffer.h>
+#include <agg_scanline_p.h>
+#include <cairo.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "casteljau/canvas.hpp"
+#include "casteljau/geojson.hpp"
+#include "casteljau/map.hpp"
+#include "casteljau/png.hpp"
+#include "casteljau/seamless.hpp"
+#include "casteljau/stroke.hpp"
+#include "timer.hpp"
+
+using namespace casteljau;
+
+namespace {
+
+using Rings = std::vector<std::vector<Point>>;
+
+double best_of(int rounds, const std::function<void()>& f) {
+    double best = 1e300;
+    for (int r = 0; r < rounds; ++r) {
+        const double t0 = bench::thread_cpu_seconds();
+        f();
+        best = std::min(best, bench::thread_cpu_seconds() - t0);
+    }
+    return best;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME]\n");
+        return 2;
+    }
+    int W = 4096, rounds = 5;
+    std::string layer;
+    for (int i = 2; i + 1 < argc; i += 2) {
+        if (!std::strcmp(argv[i], "--width")) W = std::atoi(argv[i + 1]);
+        else if (!std::strcmp(argv[i], "--rounds")) rounds = std::atoi(argv[i + 1]);
+        else if (!std::strcmp(argv[i], "--layer")) layer = argv[i + 1];
+    }
+    const int H = W / 2;
+    const auto bytes = read_file(argv[1]);
+    const MapData data = read_map_data(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), layer);
+    // Pixel-space polygons per feature.
+    std::vector<Rings> features;
+    std::size_t vertices = 0;
+    for (const Feature& f : data.features) {
+        Rings rings;
+        for (const Geometry& g : f.geometries) {
+            if (g.kind != GeometryKind::Polygons) continue;
+            std::size_t start = 0;
+            for (std::uint32_t end : g.ring_ends) {
+                Rings pieces;
+                split_ring_at_antimeridian(std::span<const Point>(g.points).subspan(start, end - start), pieces);
+                for (auto& p : pieces) {
+                    for (Point& q : p) q = {(q.x + 180.0) / 360.0 * W, (90.0 - q.y) / 180.0 * H};
+                    vertices += p.size();
+                    rings.push_back(std::move(p));
+                }
+                start = end;
+            }
+        }
+        features.push_back(std::move(rings));
+    }
+    std::vector<Path> paths;
+    for (const Rings& rs : features) {
+        Path p;
+        for (const auto& r : rs) p.add_polygon(r, true);
+        paths.push_back(std::move(p));
+    }
+    std::printf("map_bench: %s, %zu features, %zu vertices, %d x %d, best of %d rounds (thread CPU time)\n", argv[1],
+                features.size(), vertices, W, H, rounds);
+
+    Pixmap pm(W, H);
+    const double t_sep = best_of(rounds, [&] {
+        pm.fill(Color::transparent());
+        Canvas c(pm);
+        for (const Path& p : paths) c.fill_path(p, Paint::solid(Color::black()));
+    });
+    const double t_sep_plain = best_of(rounds, [&] {
+        pm.fill(Color::transparent());
+        Canvas c(pm);
+        c.fill_options().exact_overlaps = false;
+        for (const Path& p : paths) c.fill_path(p, Paint::solid(Color::black()));
+    });
+    AreaCompositor ac(W, H);
+    Rasterizer raster;
+    const double t_seam = best_of(rounds, [&] {
+        pm.fill(Color::transparent());
+        ac.clear();
+        for (std::size_t i = paths.size(); i-- > 0;) ac.add(raster, paths[i], FillOptions{}, Color::black());
+        ac.composite_onto(pm);
+    });
+    StrokeStyle ss;
+    ss.width = 0.8;
+    ss.join = LineJoin::Round;
+    ss.cap = LineCap::Round;
+    const double t_seam_stroke = best_of(rounds, [&] {
+        pm.fill(Color::transparent());
+        ac.clear();
+        for (std::size_t i = paths.size(); i-- > 0;) ac.add(raster, paths[i], FillOptions{}, Color::rgba(200, 200, 200));
+        ac.composite_onto(pm);
+        Path outline;
+        for (const Path& p : paths) outline.append(stroke(p, ss));
+        Canvas c(pm);
+        c.fill_path(outline, Paint::solid(Color::black()));
+    });
+
+    // AGG.
+    std::vector<std::uint8_t> agg_buf(static_cast<std::size_t>(W) * H * 4);
+    agg::rendering_buffer rb(agg_buf.data(), W, H, W * 4);
+    agg::pixfmt_rgba32_pre pf(rb);
+    agg::renderer_base<agg::pixfmt_rgba32_pre> ren(pf);
+    agg::rasterizer_scanline_aa<> ras;
+    agg::scanline_p8 sl;
+    std::vector<agg::path_storage> agg_paths(features.size());
+    for (std::size_t i = 0; i < features.size(); ++i)
+        for (const auto& r : features[i]) {
+            agg_paths[i].move_to(r[0].x, r[0].y);
+            for (std::size_t k = 1; k < r.size(); ++k) agg_paths[i].line_to(r[k].x, r[k].y);
+            agg_paths[i].close_polygon();
+        }
+    const double t_agg = best_of(rounds, [&] {
+        ren.clear(agg::rgba8(0, 0, 0, 0));
+        for (auto& p : agg_paths) {
+            ras.reset();
+            ras.filling_rule(agg::fill_non_zero);
+            ras.add_path(p);
+            agg::render_scanlines_aa_solid(ras, sl, ren, agg::rgba8(0, 0, 0, 255));
+        }
+    });
+    const double t_agg_stroke = best_of(rounds, [&] {
+        ren.clear(agg::rgba8(0, 0, 0, 0));
+        for (auto& p : agg_paths) {
+            ras.reset();
+            ras.filling_rule(agg::fill_non_zero);
+            ras.add_path(p);
+            agg::render_scanlines_aa_solid(ras, sl, ren, agg::rgba8(200, 200, 200, 255));
+        }
+        for (auto& p : agg_paths) {
+            agg::conv_stroke<agg::path_storage> st(p);
+            st.width(0.8);
+            st.line_join(agg::round_join);
+            st.line_cap(agg::round_cap);
+            ras.reset();
+            ras.filling_rule(agg::fill_non_zero);
+            ras.add_path(st);
+            agg::render_scanlines_aa_solid(ras, sl, ren, agg::rgba8(0, 0, 0, 255));
+        }
+    });
+
+    // Cairo.
+    cairo_surface_t* surf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, W, H);
+    cairo_t* cr = cairo_create(surf);
+    auto cairo_path = [&](const Rings& rs) {
+        for (const auto& r : rs) {
+            cairo_move_to(cr, r[0].x, r[0].y);
+            for (std::size_t k = 1; k < r.size(); ++k) cairo_line_to(cr, r[k].x, r[k].y);
+            cairo_close_path(cr);
+        }
+    };
+    auto cairo_clear = [&] {
+        cairo_set_operator(cr, CAIRO_OPERATOR_CLEAR);
+        cairo_paint(cr);
+        cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
+    };
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    const double t_cairo = best_of(rounds, [&] {
+        cairo_clear();
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        for (const Rings& rs : features) {
+            cairo_path(rs);
+            cairo_fill(cr);
+        }
+        cairo_surface_flush(surf);
+    });
+    cairo_set_line_width(cr, 0.8);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    const double t_cairo_stroke = best_of(rounds, [&] {
+        cairo_clear();
+        for (const Rings& rs : features) {
+            cairo_path(rs);
+            cairo_set_source_rgb(cr, 0.78, 0.78, 0.78);
+            cairo_fill_preserve(cr);
+            cairo_set_source_rgb(cr, 0, 0, 0);
+            cairo_stroke(cr);
+        }
+        cairo_surface_flush(surf);
+    });
+    cairo_destroy(cr);
+    cairo_surface_destroy(surf);
+
+    // The whole map stage from MapData.
+    MapStyle style;
+    style.layers[0].fill = Color::rgba(200, 200, 200);
+    MapOptions mo;
+    mo.width = W;
+    mo.height = H;
+    mo.bbox = Rect{-180, -90, 180, 90};
+    const MapProjection eq;
+    const double t_map = best_of(rounds, [&] { (void)render_map(data, eq, style, mo); });
+    mo.exact_overlaps = false;
+    const double t_map_plain = best_of(rounds, [&] { (void)render_map(data, eq, style, mo); });
+    mo.exact_overlaps = true;
+    style.layers[0].stroke = Color::black();
+    style.layers[0].stroke_width = 0.8;
+    const double t_map_stroke = best_of(rounds, [&] { (void)render_map(data, eq, style, mo); });
+
+    std::printf("%-44s %10s %10s\n", "case", "ms", "vs best peer");
+    const double peer_fill = std::min(t_agg, t_cairo), peer_stroke = std::min(t_agg_stroke, t_cairo_stroke);
+    auto row = [](const char* name, double t, double ref) { std::printf("%-44s %10.1f %10.2fx\n", name, t * 1e3, ref / t); };
+    row("fill: casteljau separate (source-over)", t_sep, peer_fill);
+    row("fill: casteljau separate, exact_overlaps off", t_sep_plain, peer_fill);
+    row("fill: casteljau seamless (area compositor)", t_seam, peer_fill);
+    row("fill: AGG 2.6", t_agg, peer_fill);
+    row("fill: Cairo", t_cairo, peer_fill);
+    row("fill+stroke: casteljau seamless + union stroke", t_seam_stroke, peer_stroke);
+    row("fill+stroke: AGG 2.6", t_agg_stroke, peer_stroke);
+    row("fill+stroke: Cairo", t_cairo_stroke, peer_stroke);
+    row("render_map fill (projection included)", t_map, peer_fill);
+    row("render_map fill, exact_overlaps off", t_map_plain, peer_fill);
+    row("render_map fill+stroke", t_map_stroke, peer_stroke);
+    rusage ru{};
+    getrusage(RUSAGE_SELF, &ru);
+    std::printf("peak RSS: %.1f MB (input file %.1f MB)\n", ru.ru_maxrss / 1024.0, bytes.size() / 1e6);
+    return 0;
+}

@@ -1,0 +1,279 @@
+// Formats stage: the GeoJSON reader (RFC 7946) and its newline-delimited form. Parses with
+// simdjson's DOM, copies positions into MapData (see include/casteljau/geojson.hpp), then lets
+// the parsed tree go.
+#include <cmath>
+#include <string>
+
+#include "casteljau/error.hpp"
+#include "casteljau/geojson.hpp"
+#include "formats/geojson_build.hpp"
+#include "formats/json_support.hpp"
+
+namespace casteljau {
+
+namespace geo_detail {
+
+void check_position(Point p, const json::JsonPath& path) {
+    if (!(std::fabs(p.x) <= 360.0) || !(std::fabs(p.y) <= 90.0))
+        path.fail(ErrorKind::InvalidData, "position (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                                              ") is outside longitude -360..360 / latitude -90..90");
+}
+
+void check_ring(const Geometry& g, std::size_t begin, const json::JsonPath& path) {
+    const std::size_t n = g.points.size() - begin;
+    if (n < 4) path.fail(ErrorKind::InvalidData, "a polygon ring needs at least 4 positions, got " + std::to_string(n));
+    if (!(g.points[begin] == g.points.back()))
+        path.fail(ErrorKind::InvalidData, "polygon ring is not closed (its last position differs from its first)");
+}
+
+void count_positions(std::size_t& total, std::size_t add, const json::JsonPath& path) {
+    total += add;
+    if (total > limits::kMaxMapPositions)
+        path.fail(ErrorKind::Limit, "more than " + std::to_string(limits::kMaxMapPositions) + " positions in one map");
+}
+
+}  // namespace geo_detail
+
+namespace {
+
+using simdjson::dom::array;
+using simdjson::dom::element;
+using simdjson::dom::object;
+using json::JsonPath;
+
+struct Reader {
+    JsonPath path;
+    std::size_t positions = 0;
+    int depth = 0;
+
+    array get_array(element e, const char* what) {
+        array a;
+        if (e.get_array().get(a) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, std::string("expected ") + what);
+        return a;
+    }
+
+    Point position(element e) {
+        array a = get_array(e, "a position (an array of numbers)");
+        if (a.size() < 2) path.fail(ErrorKind::InvalidData, "a position needs 2 numbers, got " + std::to_string(a.size()));
+        double v[2];
+        for (int k = 0; k < 2; ++k) {
+            auto scope = path.index(static_cast<std::size_t>(k));
+            if (a.at(static_cast<std::size_t>(k)).get_double().get(v[k]) != simdjson::SUCCESS)
+                path.fail(ErrorKind::Parse, "expected a number");
+        }
+        const Point p{v[0], v[1]};
+        geo_detail::check_position(p, path);
+        return p;
+    }
+
+    // An array of positions appended to g.points.
+    void positions_into(element e, Geometry& g, bool ring) {
+        array a = get_array(e, ring ? "a ring (an array of positions)" : "an array of positions");
+        geo_detail::count_positions(positions, a.size(), path);
+        const std::size_t begin = g.points.size();
+        std::size_t i = 0;
+        for (element p : a) {
+            auto scope = path.index(i++);
+            g.points.push_back(position(p));
+        }
+        if (ring) geo_detail::check_ring(g, begin, path);
+        g.ring_ends.push_back(static_cast<std::uint32_t>(g.points.size()));
+    }
+
+    void polygon_into(element e, Geometry& g) {
+        array rings = get_array(e, "a polygon (an array of rings)");
+        std::size_t i = 0;
+        for (element r : rings) {
+            auto scope = path.index(i++);
+            positions_into(r, g, true);
+        }
+        if (i > 0) g.polygon_ends.push_back(static_cast<std::uint32_t>(g.ring_ends.size()));
+    }
+
+    void geometry(element e, Feature& f) {
+        if (e.is_null()) return;  // a Feature without geometry
+        object obj;
+        if (e.get_object().get(obj) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected a geometry object or null");
+        if (++depth > limits::kMaxNestingDepth) path.fail(ErrorKind::Limit, "geometry collections nested too deeply");
+        std::string_view type;
+        {
+            auto scope = path.key("type");
+            if (obj["type"].get_string().get(type) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "missing or not a string");
+        }
+        if (type == "GeometryCollection") {
+            auto scope = path.key("geometries");
+            element gs;
+            if (obj["geometries"].get(gs) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "missing");
+            std::size_t i = 0;
+            for (element g : get_array(gs, "an array of geometries")) {
+                auto s2 = path.index(i++);
+                geometry(g, f);
+            }
+            --depth;
+            return;
+        }
+        Geometry g;
+        if (type == "Point" || type == "MultiPoint") g.kind = GeometryKind::Points;
+        else if (type == "LineString" || type == "MultiLineString") g.kind = GeometryKind::Lines;
+        else if (type == "Polygon" || type == "MultiPolygon") g.kind = GeometryKind::Polygons;
+        else {
+            auto scope = path.key("type");
+            path.fail(ErrorKind::Parse, "unknown geometry type \"" + std::string(type) +
+                                            "\" (expected Point, MultiPoint, LineString, MultiLineString, Polygon, "
+                                            "MultiPolygon or GeometryCollection)");
+        }
+        auto scope = path.key("coordinates");
+        element c;
+        if (obj["coordinates"].get(c) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "missing");
+        if (type == "Point") {
+            geo_detail::count_positions(positions, 1, path);
+            g.points.push_back(position(c));
+        } else if (type == "MultiPoint") {
+            positions_into(c, g, false);
+            g.ring_ends.clear();
+        } else if (type == "LineString") {
+            positions_into(c, g, false);
+        } else if (type == "MultiLineString") {
+            std::size_t i = 0;
+            for (element l : get_array(c, "an array of lines")) {
+                auto s2 = path.index(i++);
+                positions_into(l, g, false);
+            }
+        } else if (type == "Polygon") {
+            polygon_into(c, g);
+        } else {
+            std::size_t i = 0;
+            for (element p : get_array(c, "an array of polygons")) {
+                auto s2 = path.index(i++);
+                polygon_into(p, g);
+            }
+        }
+        --depth;
+        if (!g.points.empty()) f.geometries.push_back(std::move(g));
+    }
+
+    void feature(object obj, MapData& out) {
+        Feature f;
+        element e;
+        if (obj["geometry"].get(e) == simdjson::SUCCESS) {
+            auto scope = path.key("geometry");
+            geometry(e, f);
+        } else {
+            path.fail(ErrorKind::Parse, "a Feature needs a \"geometry\" member (null for none)");
+        }
+        if (obj["properties"].get(e) == simdjson::SUCCESS) {
+            auto scope = path.key("properties");
+            f.properties = json::to_properties(e, path);
+        }
+        if (obj["id"].get(e) == simdjson::SUCCESS) f.id = json::id_text(e);
+        out.features.push_back(std::move(f));
+    }
+
+    // A FeatureCollection, a Feature or a bare geometry.
+    void document(element root, MapData& out, bool allow_collection) {
+        object obj;
+        if (root.get_object().get(obj) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected a GeoJSON object");
+        std::string_view type;
+        if (obj["type"].get_string().get(type) != simdjson::SUCCESS) {
+            auto scope = path.key("type");
+            path.fail(ErrorKind::Parse, "missing or not a string");
+        }
+        if (type == "FeatureCollection" && allow_collection) {
+            auto scope = path.key("features");
+            element fs;
+            if (obj["features"].get(fs) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "missing");
+            array a = get_array(fs, "an array of features");
+            out.features.reserve(out.features.size() + a.size());
+            std::size_t i = 0;
+            for (element fe : a) {
+                auto s2 = path.index(i++);
+                object fo;
+                std::string_view ft;
+                if (fe.get_object().get(fo) != simdjson::SUCCESS || fo["type"].get_string().get(ft) != simdjson::SUCCESS ||
+                    ft != "Feature")
+                    path.fail(ErrorKind::Parse, "expected an object with \"type\": \"Feature\"");
+                feature(fo, out);
+            }
+        } else if (type == "Feature") {
+            feature(obj, out);
+        } else {
+            Feature f;
+            geometry(root, f);
+            out.features.push_back(std::move(f));
+        }
+    }
+};
+
+}  // namespace
+
+MapData read_geojson(std::string_view text) {
+    simdjson::dom::parser parser;
+    const element root = json::parse(parser, text, "GeoJSON");
+    MapData out;
+    Reader r;
+    r.document(root, out, true);
+    return out;
+}
+
+MapData read_geojson_lines(std::string_view text) {
+    simdjson::dom::parser parser;
+    MapData out;
+    Reader r;
+    std::size_t line_no = 0, pos = 0;
+    while (pos < text.size()) {
+        std::size_t end = text.find('\n', pos);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view line = text.substr(pos, end - pos);
+        ++line_no;
+        const std::size_t line_start = pos;
+        pos = end + 1;
+        // RFC 8142 record separators and blank lines are skipped.
+        std::size_t a = 0;
+        while (a < line.size() && (line[a] == ' ' || line[a] == '\t' || line[a] == '\r' || line[a] == '\x1e')) ++a;
+        line.remove_prefix(a);
+        if (line.empty()) continue;
+        const std::string where = "GeoJSON line " + std::to_string(line_no);
+        element root;
+        try {
+            root = json::parse(parser, line, where);
+        } catch (const Error& e) {
+            // Add the offset in the whole file to the message.
+            throw Error(e.kind(), std::string(e.what()) + " (line starts at byte " + std::to_string(line_start + a) + ")");
+        }
+        r.path.set_prefix("line " + std::to_string(line_no) + " ");
+        r.document(root, out, false);
+    }
+    return out;
+}
+
+MapData read_map_data(std::string_view text, std::string_view topojson_object) {
+    // Topology: look for "type" : "Topology" near the start (the member order is free, so look
+    // at the whole text's top-level type only through a parse when the cheap check is unsure).
+    std::size_t i = 0;
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n' || text[i] == '\x1e')) ++i;
+    const std::size_t eol = text.find('\n', i);
+    if (eol != std::string_view::npos) {
+        std::string_view first = text.substr(i, eol - i);
+        while (!first.empty() && (first.back() == '\r' || first.back() == ' ' || first.back() == '\t')) first.remove_suffix(1);
+        std::size_t j = eol + 1;
+        while (j < text.size() && (text[j] == ' ' || text[j] == '\t' || text[j] == '\r' || text[j] == '\n' || text[j] == '\x1e')) ++j;
+        if (first.size() >= 2 && first.front() == '{' && first.back() == '}' && j < text.size() && text[j] == '{')
+            return read_geojson_lines(text);
+    }
+    {
+        simdjson::dom::parser parser;
+        const element root = json::parse(parser, text, "map data");
+        std::string_view type;
+        if (root["type"].get_string().get(type) == simdjson::SUCCESS && type == "Topology") {
+            return geo_detail::topojson_from(root, topojson_object);
+        }
+        if (!topojson_object.empty())
+            throw Error(ErrorKind::InvalidArgument, "--layer selects a TopoJSON object, but the input is GeoJSON");
+        MapData out;
+        Reader r;
+        r.document(root, out, true);
+        return out;
+    }
+}
+
+}  // namespace casteljau

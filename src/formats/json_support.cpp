@@ -1,0 +1,256 @@
+// Formats stage: helpers shared by the JSON readers (see json_support.hpp).
+#include "formats/json_support.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+namespace casteljau::json {
+
+namespace {
+
+bool is_ws(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+}  // namespace
+
+// A validating scan of RFC 8259 JSON with an explicit stack (no recursion), returning the offset of
+// the first byte that cannot continue a valid document.
+std::size_t syntax_error_offset(std::string_view s) {
+    std::size_t i = 0;
+    const std::size_t n = s.size();
+    std::vector<char> stack;  // '{' or '['
+    auto skip_ws = [&] { while (i < n && is_ws(s[i])) ++i; };
+    // Scans one scalar at i; returns false at the offending byte.
+    auto scalar = [&]() -> bool {
+        if (i >= n) return false;
+        const char c = s[i];
+        if (c == '"') {
+            ++i;
+            while (i < n) {
+                const unsigned char ch = static_cast<unsigned char>(s[i]);
+                if (ch == '"') { ++i; return true; }
+                if (ch < 0x20) return false;
+                if (ch == '\\') {
+                    ++i;
+                    if (i >= n) return false;
+                    const char e = s[i];
+                    if (e == 'u') {
+                        for (int k = 0; k < 4; ++k) {
+                            ++i;
+                            if (i >= n || !std::isxdigit(static_cast<unsigned char>(s[i]))) return false;
+                        }
+                    } else if (std::string_view("\"\\/bfnrt").find(e) == std::string_view::npos) {
+                        return false;
+                    }
+                }
+                ++i;
+            }
+            return false;
+        }
+        for (std::string_view lit : {std::string_view("true"), std::string_view("false"), std::string_view("null")}) {
+            if (c == lit[0]) {
+                for (char l : lit) {
+                    if (i >= n || s[i] != l) return false;
+                    ++i;
+                }
+                return true;
+            }
+        }
+        if (c == '-' || (c >= '0' && c <= '9')) {
+            if (s[i] == '-') ++i;
+            if (i >= n || !std::isdigit(static_cast<unsigned char>(s[i]))) return false;
+            if (s[i] == '0') ++i;
+            else while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+            if (i < n && s[i] == '.') {
+                ++i;
+                if (i >= n || !std::isdigit(static_cast<unsigned char>(s[i]))) return false;
+                while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+            }
+            if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+                ++i;
+                if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
+                if (i >= n || !std::isdigit(static_cast<unsigned char>(s[i]))) return false;
+                while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+            }
+            return true;
+        }
+        return false;
+    };
+    // Expecting a value at i.
+    for (;;) {
+        skip_ws();
+        if (i >= n) return n;
+        bool value_done = false;
+        if (s[i] == '{') {
+            stack.push_back('{');
+            ++i;
+            skip_ws();
+            if (i < n && s[i] == '}') { ++i; stack.pop_back(); value_done = true; }
+            else {
+                if (i >= n) return n;
+                if (s[i] != '"' || !scalar()) return i;
+                skip_ws();
+                if (i >= n) return n;
+                if (s[i] != ':') return i;
+                ++i;
+                continue;
+            }
+        } else if (s[i] == '[') {
+            stack.push_back('[');
+            ++i;
+            skip_ws();
+            if (i < n && s[i] == ']') { ++i; stack.pop_back(); value_done = true; }
+            else continue;
+        } else {
+            if (!scalar()) return i >= n ? n : i;
+            value_done = true;
+        }
+        // After a value: close containers or move to the next element.
+        while (value_done) {
+            skip_ws();
+            if (stack.empty()) return i < n ? i : n;  // trailing content (or, at n, none: valid)
+            if (i >= n) return n;
+            const char top = stack.back();
+            if (s[i] == ',') {
+                ++i;
+                if (top == '{') {
+                    skip_ws();
+                    if (i >= n) return n;
+                    if (s[i] != '"' || !scalar()) return i;
+                    skip_ws();
+                    if (i >= n) return n;
+                    if (s[i] != ':') return i;
+                    ++i;
+                }
+                value_done = false;
+            } else if ((top == '{' && s[i] == '}') || (top == '[' && s[i] == ']')) {
+                ++i;
+                stack.pop_back();
+            } else {
+                return i;
+            }
+        }
+    }
+}
+
+simdjson::dom::element parse(simdjson::dom::parser& parser, std::string_view text, const std::string& what) {
+    simdjson::dom::element root;
+    const auto err = parser.parse(text.data(), text.size(), true).get(root);
+    if (err == simdjson::SUCCESS) return root;
+    if (err == simdjson::DEPTH_ERROR) throw Error(ErrorKind::Limit, what + ": JSON nesting is too deep");
+    if (err == simdjson::MEMALLOC || err == simdjson::CAPACITY)
+        throw Error(ErrorKind::Limit, what + ": JSON document too large (" + std::to_string(text.size()) + " bytes)");
+    const std::size_t at = syntax_error_offset(text);
+    std::string msg = what + ": invalid JSON";
+    if (at < text.size()) msg += " at byte " + std::to_string(at);
+    else msg += " (ends early, at byte " + std::to_string(text.size()) + ")";
+    msg += ": ";
+    msg += simdjson::error_message(err);
+    throw Error(ErrorKind::Parse, msg);
+}
+
+std::string JsonPath::str() const {
+    std::string s = prefix_;
+    for (const Part& p : parts_) {
+        if (p.is_key) {
+            if (!s.empty() && s.back() != ' ') s += '.';
+            s += p.name;
+        } else {
+            s += '[' + std::to_string(p.index) + ']';
+        }
+    }
+    return s.empty() ? "(root)" : s;
+}
+
+void JsonPath::fail(ErrorKind kind, const std::string& what) const { throw Error(kind, str() + ": " + what); }
+
+namespace {
+std::string number_text(double v) {
+    char buf[32];
+    auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+}  // namespace
+
+PropertyValue to_property(simdjson::dom::element e) {
+    PropertyValue v;
+    switch (e.type()) {
+        case simdjson::dom::element_type::NULL_VALUE: break;
+        case simdjson::dom::element_type::BOOL:
+            v.type = PropertyValue::Type::Bool;
+            v.number = e.get_bool().value_unsafe() ? 1 : 0;
+            break;
+        case simdjson::dom::element_type::INT64:
+        case simdjson::dom::element_type::UINT64:
+        case simdjson::dom::element_type::DOUBLE:
+            v.type = PropertyValue::Type::Number;
+            v.number = e.get_double().value_unsafe();
+            break;
+        case simdjson::dom::element_type::STRING:
+            v.type = PropertyValue::Type::String;
+            v.text = std::string(e.get_string().value_unsafe());
+            break;
+        default:
+            v.type = PropertyValue::Type::Json;
+            v.text = simdjson::minify(e);
+            break;
+    }
+    return v;
+}
+
+std::vector<std::pair<std::string, PropertyValue>> to_properties(simdjson::dom::element e, JsonPath& path) {
+    std::vector<std::pair<std::string, PropertyValue>> out;
+    if (e.is_null()) return out;
+    simdjson::dom::object obj;
+    if (e.get_object().get(obj) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "\"properties\" must be an object or null");
+    for (auto field : obj) out.emplace_back(std::string(field.key), to_property(field.value));
+    return out;
+}
+
+std::string id_text(simdjson::dom::element e) {
+    const PropertyValue v = to_property(e);
+    return v.type == PropertyValue::Type::Null ? std::string() : v.to_string();
+}
+
+}  // namespace casteljau::json
+
+namespace casteljau {
+
+std::string PropertyValue::to_string() const {
+    switch (type) {
+        case Type::Null: return "null";
+        case Type::Bool: return number != 0 ? "true" : "false";
+        case Type::Number: return json::number_text(number);
+        case Type::String:
+        case Type::Json: return text;
+    }
+    return {};
+}
+
+const PropertyValue* Feature::property(std::string_view name) const {
+    for (const auto& [k, v] : properties)
+        if (k == name) return &v;
+    return nullptr;
+}
+
+Rect MapData::bounds() const {
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    for (const Feature& f : features)
+        for (const Geometry& g : f.geometries)
+            for (const Point& p : g.points) {
+                x0 = std::min(x0, p.x); y0 = std::min(y0, p.y);
+                x1 = std::max(x1, p.x); y1 = std::max(y1, p.y);
+            }
+    if (x0 > x1) return Rect{};
+    return Rect{x0, y0, x1, y1};
+}
+
+std::size_t MapData::position_count() const {
+    std::size_t n = 0;
+    for (const Feature& f : features)
+        for (const Geometry& g : f.geometries) n += g.points.size();
+    return n;
+}
+
+}  // namespace casteljau

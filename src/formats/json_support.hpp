@@ -1,0 +1,52 @@
+// Formats stage: helpers shared by the JSON readers (GeoJSON, TopoJSON, map style files):
+// parsing with simdjson's DOM into an Error that names the byte offset of malformed JSON, a JSON
+// path for messages (`features[12].geometry.coordinates[0][3]`), and property values.
+#pragma once
+
+#include <simdjson.h>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "casteljau/error.hpp"
+#include "casteljau/geojson.hpp"
+
+namespace casteljau::json {
+
+// Parses `text` (copied into simdjson's padded buffer). Throws Error(Parse) "what: invalid JSON at
+// byte N: reason" for malformed text, Error(Limit) for nesting beyond limits::kMaxNestingDepth * 4.
+simdjson::dom::element parse(simdjson::dom::parser& parser, std::string_view text, const std::string& what);
+
+// Byte offset of the first syntax error in `text` (text.size() when it ends too early), found by a
+// small validating scan; used only after simdjson has rejected the text.
+std::size_t syntax_error_offset(std::string_view text);
+
+// A JSON path built only when a message needs it: a stack of member names and indices.
+class JsonPath {
+public:
+    struct Scope {
+        JsonPath& p;
+        ~Scope() { p.parts_.pop_back(); }
+    };
+    Scope key(std::string_view k) { parts_.push_back({std::string(k), 0, true}); return {*this}; }
+    Scope index(std::size_t i) { parts_.push_back({{}, i, false}); return {*this}; }
+    std::string str() const;
+    void set_prefix(std::string p) { prefix_ = std::move(p); }
+    [[noreturn]] void fail(ErrorKind kind, const std::string& what) const;
+
+private:
+    struct Part {
+        std::string name;
+        std::size_t index;
+        bool is_key;
+    };
+    std::vector<Part> parts_;
+    std::string prefix_;
+};
+
+PropertyValue to_property(simdjson::dom::element e);
+std::vector<std::pair<std::string, PropertyValue>> to_properties(simdjson::dom::element e, JsonPath& path);
+std::string id_text(simdjson::dom::element e);
+
+}  // namespace casteljau::json

@@ -1,0 +1,215 @@
+// Formats stage: where tiles go: a folder tree DIR/z/x/y.png or an MBTiles 1.3 SQLite file
+// (see include/casteljau/tiles.hpp).
+#include <sqlite3.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+
+#include "casteljau/error.hpp"
+#include "casteljau/png.hpp"
+#include "casteljau/tiles.hpp"
+
+namespace casteljau {
+
+TileFolderWriter::TileFolderWriter(std::string dir) : dir_(std::move(dir)) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir_, ec);
+    if (ec || !std::filesystem::is_directory(dir_))
+        throw Error(ErrorKind::Io, "cannot create the tile folder '" + dir_ + "': " + (ec ? ec.message() : "not a folder"));
+}
+
+std::string TileFolderWriter::tile_path(int z, int x, int y) const {
+    return dir_ + "/" + std::to_string(z) + "/" + std::to_string(x) + "/" + std::to_string(y) + ".png";
+}
+
+bool TileFolderWriter::exists(int z, int x, int y) const {
+    struct stat st;
+    return ::stat(tile_path(z, x, y).c_str(), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0;
+}
+
+void TileFolderWriter::write(int z, int x, int y, const std::vector<std::uint8_t>& png) {
+    const std::string folder = dir_ + "/" + std::to_string(z) + "/" + std::to_string(x);
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (ec) throw Error(ErrorKind::Io, "cannot create '" + folder + "': " + ec.message());
+    write_file_atomic(tile_path(z, x, y), png);
+}
+
+struct MbtilesWriter::Impl {
+    std::string path, tmp;
+    sqlite3* db = nullptr;
+    sqlite3_stmt* insert = nullptr;
+    bool finished = false;
+
+    [[noreturn]] void fail(const std::string& what) {
+        const std::string msg = "MBTiles '" + path + "': " + what + (db ? std::string(": ") + sqlite3_errmsg(db) : "");
+        throw Error(ErrorKind::Io, msg);
+    }
+    void exec(const char* sql) {
+        char* err = nullptr;
+        if (sqlite3_exec(db, sql, nullptr, nullptr, &err) != SQLITE_OK) {
+            const std::string m = err ? err : "error";
+            sqlite3_free(err);
+            throw Error(ErrorKind::Io, "MBTiles '" + path + "': " + m);
+        }
+    }
+    void close_and_remove() {
+        if (insert) sqlite3_finalize(insert);
+        insert = nullptr;
+        if (db) sqlite3_close(db);
+        db = nullptr;
+        if (!tmp.empty()) {
+            std::remove(tmp.c_str());
+            std::remove((tmp + "-journal").c_str());
+        }
+    }
+};
+
+MbtilesWriter::MbtilesWriter(std::string path, const std::string& name, int min_zoom, int max_zoom, const Rect& b)
+    : impl_(new Impl) {
+    impl_->path = std::move(path);
+    impl_->tmp = impl_->path + ".tmp-" + std::to_string(::getpid());
+    try {
+        std::remove(impl_->tmp.c_str());
+        if (sqlite3_open_v2(impl_->tmp.c_str(), &impl_->db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK)
+            impl_->fail("cannot create the database");
+        impl_->exec(
+            "PRAGMA journal_mode=OFF; PRAGMA synchronous=OFF;"
+            "CREATE TABLE metadata (name text, value text);"
+            "CREATE TABLE tiles (zoom_level integer, tile_column integer, tile_row integer, tile_data blob);"
+            "CREATE UNIQUE INDEX tile_index on tiles (zoom_level, tile_column, tile_row);"
+            "BEGIN;");
+        sqlite3_stmt* st = nullptr;
+        if (sqlite3_prepare_v2(impl_->db, "INSERT INTO metadata VALUES (?, ?)", -1, &st, nullptr) != SQLITE_OK)
+            impl_->fail("cannot prepare");
+        std::ostringstream bounds, center;
+        bounds.precision(10);
+        center.precision(10);
+        bounds << b.x0 << "," << b.y0 << "," << b.x1 << "," << b.y1;
+        center << (b.x0 + b.x1) / 2 << "," << (b.y0 + b.y1) / 2 << "," << min_zoom;
+        const std::pair<std::string, std::string> meta[] = {
+            {"name", name}, {"format", "png"}, {"type", "overlay"}, {"version", "1.3"},
+            {"description", "rendered by casteljau"}, {"bounds", bounds.str()}, {"center", center.str()},
+            {"minzoom", std::to_string(min_zoom)}, {"maxzoom", std::to_string(max_zoom)}};
+        for (const auto& [k, v] : meta) {
+            sqlite3_reset(st);
+            sqlite3_bind_text(st, 1, k.c_str(), -1, SQLITE_TRANSIENT);
+            sqlite3_bind_text(st, 2, v.c_str(), -1, SQLITE_TRANSIENT);
+            if (sqlite3_step(st) != SQLITE_DONE) {
+                sqlite3_finalize(st);
+                impl_->fail("cannot write metadata");
+            }
+        }
+        sqlite3_finalize(st);
+        if (sqlite3_prepare_v2(impl_->db, "INSERT OR REPLACE INTO tiles VALUES (?, ?, ?, ?)", -1, &impl_->insert, nullptr) !=
+            SQLITE_OK)
+            impl_->fail("cannot prepare");
+    } catch (...) {
+        impl_->close_and_remove();
+        delete impl_;
+        throw;
+    }
+}
+
+MbtilesWriter::~MbtilesWriter() {
+    if (!impl_->finished) impl_->close_and_remove();
+    delete impl_;
+}
+
+void MbtilesWriter::write(int z, int x, int y, const std::vector<std::uint8_t>& png) {
+    sqlite3_stmt* st = impl_->insert;
+    sqlite3_reset(st);
+    sqlite3_bind_int(st, 1, z);
+    sqlite3_bind_int64(st, 2, x);
+    sqlite3_bind_int64(st, 3, (std::int64_t{1} << z) - 1 - y);  // TMS row
+    sqlite3_bind_blob(st, 4, png.data(), static_cast<int>(png.size()), SQLITE_TRANSIENT);
+    if (sqlite3_step(st) != SQLITE_DONE) impl_->fail("cannot write tile");
+}
+
+void MbtilesWriter::finish() {
+    impl_->exec("COMMIT;");
+    sqlite3_finalize(impl_->insert);
+    impl_->insert = nullptr;
+    if (sqlite3_close(impl_->db) != SQLITE_OK) impl_->fail("cannot close");
+    impl_->db = nullptr;
+    if (std::rename(impl_->tmp.c_str(), impl_->path.c_str()) != 0) {
+        const std::string reason = std::strerror(errno);
+        impl_->close_and_remove();
+        throw Error(ErrorKind::Io, "cannot rename the MBTiles file into '" + impl_->path + "': " + reason);
+    }
+    impl_->finished = true;
+}
+
+namespace {
+
+struct ReadDb {
+    sqlite3* db = nullptr;
+    explicit ReadDb(const std::string& path) {
+        if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
+            const std::string m = db ? sqlite3_errmsg(db) : "cannot open";
+            if (db) sqlite3_close(db);
+            throw Error(ErrorKind::Io, "cannot open MBTiles '" + path + "': " + m);
+        }
+    }
+    ~ReadDb() { sqlite3_close(db); }
+};
+
+}  // namespace
+
+void merge_mbtiles(const std::vector<std::string>& inputs, const std::string& output) {
+    if (inputs.empty()) throw Error(ErrorKind::InvalidArgument, "tiles-merge needs at least one input");
+    int minz = limits::kMaxTileZoom, maxz = 0;
+    Rect b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    std::string name = "casteljau";
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        ReadDb in(inputs[i]);
+        sqlite3_stmt* st = nullptr;
+        if (sqlite3_prepare_v2(in.db, "SELECT name, value FROM metadata", -1, &st, nullptr) != SQLITE_OK)
+            throw Error(ErrorKind::InvalidData, "'" + inputs[i] + "' is not an MBTiles file (no metadata table)");
+        while (sqlite3_step(st) == SQLITE_ROW) {
+            const std::string k = reinterpret_cast<const char*>(sqlite3_column_text(st, 0));
+            const char* vt = reinterpret_cast<const char*>(sqlite3_column_text(st, 1));
+            const std::string v = vt ? vt : "";
+            if (k == "minzoom") minz = std::min(minz, std::atoi(v.c_str()));
+            if (k == "maxzoom") maxz = std::max(maxz, std::atoi(v.c_str()));
+            if (k == "name" && i == 0) name = v;
+            if (k == "bounds") {
+                double w, s, e, n;
+                if (std::sscanf(v.c_str(), "%lf,%lf,%lf,%lf", &w, &s, &e, &n) == 4) {
+                    b.x0 = std::min(b.x0, w); b.y0 = std::min(b.y0, s);
+                    b.x1 = std::max(b.x1, e); b.y1 = std::max(b.y1, n);
+                }
+            }
+        }
+        sqlite3_finalize(st);
+    }
+    if (minz > maxz) minz = maxz = 0;
+    if (!(b.x0 <= b.x1)) b = Rect{-180, -85.0511287798, 180, 85.0511287798};
+    MbtilesWriter out(output, name, minz, maxz, b);
+    for (const std::string& path : inputs) {
+        ReadDb in(path);
+        sqlite3_stmt* st = nullptr;
+        if (sqlite3_prepare_v2(in.db, "SELECT zoom_level, tile_column, tile_row, tile_data FROM tiles", -1, &st, nullptr) !=
+            SQLITE_OK)
+            throw Error(ErrorKind::InvalidData, "'" + path + "' is not an MBTiles file (no tiles table)");
+        while (sqlite3_step(st) == SQLITE_ROW) {
+            const int z = sqlite3_column_int(st, 0);
+            const std::int64_t x = sqlite3_column_int64(st, 1), row = sqlite3_column_int64(st, 2);
+            const auto* blob = static_cast<const std::uint8_t*>(sqlite3_column_blob(st, 3));
+            const int n = sqlite3_column_bytes(st, 3);
+            if (z < 0 || z > limits::kMaxTileZoom) continue;
+            std::vector<std::uint8_t> png(blob, blob + n);
+            out.write(z, static_cast<int>(x), static_cast<int>((std::int64_t{1} << z) - 1 - row), png);
+        }
+        sqlite3_finalize(st);
+    }
+    out.finish();
+}
+
+}  // namespace casteljau

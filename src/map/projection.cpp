@@ -1,0 +1,112 @@
+// Map stage: projections (see include/casteljau/projection.hpp). The two built-in ones are plain
+// formulas; everything else is delegated to PROJ.
+#include "casteljau/projection.hpp"
+
+#include <proj.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <numbers>
+
+#include "casteljau/error.hpp"
+
+namespace casteljau {
+
+struct MapProjection::ProjState {
+    PJ_CONTEXT* ctx = nullptr;
+    PJ* pj = nullptr;
+    bool radians_in = false;  // a bare operation ("+proj=robin") takes radians
+    ~ProjState() {
+        if (pj) proj_destroy(pj);
+        if (ctx) proj_context_destroy(ctx);
+    }
+};
+
+MapProjection::MapProjection() = default;
+MapProjection::~MapProjection() = default;
+MapProjection::MapProjection(MapProjection&&) noexcept = default;
+MapProjection& MapProjection::operator=(MapProjection&&) noexcept = default;
+
+namespace {
+
+std::string lower(std::string_view s) {
+    std::string o(s);
+    for (char& c : o) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return o;
+}
+
+}  // namespace
+
+MapProjection MapProjection::parse(std::string_view spec) {
+    MapProjection p;
+    const std::string l = lower(spec);
+    p.spec_ = std::string(spec);
+    if (l == "equirectangular" || l == "plate-carree" || l == "latlon" || l == "epsg:4326") {
+        p.kind_ = Kind::Equirectangular;
+        return p;
+    }
+    if (l == "mercator" || l == "webmercator" || l == "web-mercator" || l == "epsg:3857" || l == "epsg:900913") {
+        p.kind_ = Kind::WebMercator;
+        return p;
+    }
+    if (spec.empty()) throw Error(ErrorKind::InvalidArgument, "empty projection");
+    auto st = std::make_unique<ProjState>();
+    st->ctx = proj_context_create();
+    if (!st->ctx) throw Error(ErrorKind::Io, "PROJ: cannot create a context");
+    proj_log_level(st->ctx, PJ_LOG_NONE);
+    const std::string text(spec);
+    PJ* obj = proj_create(st->ctx, text.c_str());
+    if (!obj)
+        throw Error(ErrorKind::InvalidArgument, "unknown projection '" + text +
+                                                    "' (expected equirectangular, mercator, a PROJ string such as "
+                                                    "'+proj=robin' or a CRS such as 'EPSG:3035')");
+    if (proj_is_crs(obj)) {
+        PJ* op = proj_create_crs_to_crs(st->ctx, "EPSG:4326", text.c_str(), nullptr);
+        proj_destroy(obj);
+        if (!op) throw Error(ErrorKind::InvalidArgument, "PROJ: no transformation from EPSG:4326 to '" + text + "'");
+        PJ* norm = proj_normalize_for_visualization(st->ctx, op);
+        proj_destroy(op);
+        if (!norm) throw Error(ErrorKind::InvalidArgument, "PROJ: cannot normalize the axes of '" + text + "'");
+        st->pj = norm;
+        st->radians_in = false;
+    } else {
+        st->pj = obj;
+        st->radians_in = proj_angular_input(obj, PJ_FWD) != 0;
+    }
+    p.kind_ = Kind::Proj;
+    p.proj_ = std::move(st);
+    return p;
+}
+
+MapProjection MapProjection::clone() const { return parse(spec_); }
+
+bool MapProjection::project(Point ll, Point& out) const {
+    switch (kind_) {
+        case Kind::Equirectangular:
+            out = ll;
+            return true;
+        case Kind::WebMercator: {
+            constexpr double d2r = std::numbers::pi / 180.0;
+            const double lat = std::clamp(ll.y, -kWebMercatorMaxLatitude, kWebMercatorMaxLatitude);
+            out.x = kWebMercatorRadius * ll.x * d2r;
+            out.y = kWebMercatorRadius * std::log(std::tan(std::numbers::pi / 4 + lat * d2r / 2));
+            return true;
+        }
+        case Kind::Proj: {
+            PJ_COORD c;
+            if (proj_->radians_in) c = proj_coord(proj_torad(ll.x), proj_torad(ll.y), 0, 0);
+            else c = proj_coord(ll.x, ll.y, 0, 0);
+            proj_errno_reset(proj_->pj);
+            const PJ_COORD r = proj_trans(proj_->pj, PJ_FWD, c);
+            if (proj_errno(proj_->pj) != 0 || !std::isfinite(r.xy.x) || !std::isfinite(r.xy.y) ||
+                std::fabs(r.xy.x) > 1e30 || std::fabs(r.xy.y) > 1e30)
+                return false;
+            out = {r.xy.x, r.xy.y};
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace casteljau

@@ -1,0 +1,159 @@
+// Map stage: tile pyramids by metatiles, sharding and worker threads (see include/casteljau/tiles.hpp).
+#include "casteljau/tiles.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <numbers>
+#include <thread>
+
+#include "casteljau/error.hpp"
+#include "casteljau/png.hpp"
+
+namespace casteljau {
+
+std::vector<Metatile> list_metatiles(int min_zoom, int max_zoom, int metatile) {
+    std::vector<Metatile> out;
+    for (int z = min_zoom; z <= max_zoom; ++z) {
+        const std::int64_t dim = std::int64_t{1} << z;
+        const int n = static_cast<int>(std::min<std::int64_t>(metatile, dim));
+        for (std::int64_t y = 0; y < dim; y += n)
+            for (std::int64_t x = 0; x < dim; x += n) out.push_back({z, static_cast<int>(x), static_cast<int>(y), n});
+    }
+    return out;
+}
+
+std::pair<std::size_t, std::size_t> shard_range(std::size_t count, int shard, int shards) {
+    const auto c = static_cast<unsigned long long>(count);
+    return {static_cast<std::size_t>(c * static_cast<unsigned>(shard) / static_cast<unsigned>(shards)),
+            static_cast<std::size_t>(c * static_cast<unsigned>(shard + 1) / static_cast<unsigned>(shards))};
+}
+
+namespace {
+
+void check_options(const TileOptions& o) {
+    auto bad = [](const std::string& m) { throw Error(ErrorKind::InvalidArgument, m); };
+    if (o.min_zoom < 0 || o.max_zoom > limits::kMaxTileZoom || o.min_zoom > o.max_zoom)
+        bad("zoom range must be within 0.." + std::to_string(limits::kMaxTileZoom) + " with min <= max");
+    if (o.tile_px < 16 || o.tile_px > 4096) bad("tile size must be 16 to 4096 pixels");
+    if (o.metatile < 1 || o.metatile > 64) bad("metatile must be 1 to 64 tiles");
+    if (o.buffer < 0 || o.buffer > 1024) bad("buffer must be 0 to 1024 pixels");
+    if (o.threads < 1 || o.threads > 256) bad("threads must be 1 to 256");
+    if (o.shards < 1 || o.shard < 0 || o.shard >= o.shards) bad("shard must be I/N with 0 <= I < N");
+    const long long side = static_cast<long long>(o.metatile) * o.tile_px + 2LL * o.buffer;
+    if (side > limits::kMaxCanvasDimension || side * side > limits::kMaxCanvasPixels)
+        bad("metatile x tile size + 2 x buffer exceeds the canvas limits");
+}
+
+}  // namespace
+
+TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOptions& opts, const TileSink& sink,
+                       const TileExists& exists, const std::function<void(std::uint64_t, std::uint64_t)>& progress) {
+    check_options(opts);
+    const std::vector<Metatile> all = list_metatiles(opts.min_zoom, opts.max_zoom, opts.metatile);
+    const std::pair<std::size_t, std::size_t> range = shard_range(all.size(), opts.shard, opts.shards);
+    const std::size_t begin = range.first, end = range.second;
+    const std::uint64_t total = end - begin;
+    const MapProjection merc = MapProjection::parse("mercator");
+    const PremulPixel bg = premultiply(style.background);
+    MapOptions mo;
+    mo.seamless = opts.seamless;
+    mo.tolerance = opts.tolerance;
+    mo.exact_overlaps = opts.exact_overlaps;
+
+    std::mutex mu;  // guards sink, stats, progress, error
+    TileStats stats;
+    std::exception_ptr error;
+    std::atomic<std::size_t> next{begin};
+    std::atomic<bool> stop{false};
+    std::uint64_t done = 0;
+
+    auto work = [&] {
+        try {
+            std::vector<std::uint8_t> row_buf;
+            for (;;) {
+                if (stop.load()) return;
+                const std::size_t k = next.fetch_add(1);
+                if (k >= end) return;
+                const Metatile& m = all[k];
+                const std::int64_t dim = std::int64_t{1} << m.z;
+                const int nx = static_cast<int>(std::min<std::int64_t>(m.n, dim - m.x0));
+                const int ny = static_cast<int>(std::min<std::int64_t>(m.n, dim - m.y0));
+                std::vector<char> todo(static_cast<std::size_t>(nx * ny), 1);
+                std::uint64_t existing = 0;
+                if (opts.resume && exists) {
+                    for (int j = 0; j < ny; ++j)
+                        for (int i = 0; i < nx; ++i)
+                            if (exists(m.z, m.x0 + i, m.y0 + j)) {
+                                todo[static_cast<std::size_t>(j * nx + i)] = 0;
+                                ++existing;
+                            }
+                }
+                std::vector<std::tuple<int, int, std::vector<std::uint8_t>>> tiles;
+                std::uint64_t empty = 0;
+                if (existing < static_cast<std::uint64_t>(nx * ny)) {
+                    const int T = opts.tile_px, B = opts.buffer;
+                    const int W = nx * T + 2 * B, H = ny * T + 2 * B;
+                    const double world = static_cast<double>(T) * static_cast<double>(dim);
+                    const double half = std::numbers::pi * kWebMercatorRadius;
+                    const double s = world / (2 * half);
+                    const double ox = static_cast<double>(m.x0) * T - B, oy = static_cast<double>(m.y0) * T - B;
+                    MapFrame fr;
+                    fr.width = W;
+                    fr.height = H;
+                    fr.to_pixel = Affine{s, 0, 0, -s, half * s - ox, half * s - oy};
+                    Pixmap pm(W, H);
+                    render_map(data, merc, fr, style, mo, pm);
+                    Pixmap tile(T, T);
+                    for (int j = 0; j < ny; ++j)
+                        for (int i = 0; i < nx; ++i) {
+                            if (!todo[static_cast<std::size_t>(j * nx + i)]) continue;
+                            bool is_empty = true;
+                            for (int r = 0; r < T; ++r) {
+                                const std::uint8_t* src = pm.row(B + j * T + r) + static_cast<std::size_t>(B + i * T) * 4;
+                                std::copy(src, src + static_cast<std::size_t>(T) * 4, tile.row(r));
+                                if (is_empty)
+                                    for (int c = 0; c < T; ++c)
+                                        if (!(PremulPixel{src[c * 4], src[c * 4 + 1], src[c * 4 + 2], src[c * 4 + 3]} == bg)) {
+                                            is_empty = false;
+                                            break;
+                                        }
+                            }
+                            if (is_empty && opts.skip_empty) {
+                                ++empty;
+                                continue;
+                            }
+                            tiles.emplace_back(m.x0 + i, m.y0 + j, encode_png(tile));
+                        }
+                }
+                std::lock_guard<std::mutex> lock(mu);
+                if (stop.load()) return;
+                for (auto& [x, y, png] : tiles) sink(m.z, x, y, png);
+                stats.metatiles += 1;
+                stats.written += tiles.size();
+                stats.skipped_empty += empty;
+                stats.skipped_existing += existing;
+                ++done;
+                if (progress) progress(done, total);
+            }
+        } catch (...) {
+            std::lock_guard<std::mutex> lock(mu);
+            if (!error) error = std::current_exception();
+            stop.store(true);
+        }
+    };
+    const int nthreads = static_cast<int>(std::min<std::uint64_t>(static_cast<std::uint64_t>(opts.threads), std::max<std::uint64_t>(total, 1)));
+    if (nthreads <= 1) {
+        work();
+    } else {
+        std::vector<std::thread> pool;
+        for (int t = 0; t < nthreads; ++t) pool.emplace_back(work);
+        for (auto& t : pool) t.join();
+    }
+    if (error) std::rethrow_exception(error);
+    return stats;
+}
+
+}  // namespace casteljau

@@ -1,0 +1,384 @@
+// The map stage: fit, projections, antimeridian split, seamless (area) compositing, strokes drawn
+// once, styles; checked against the independent exact-area reference (tests/reference_area).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "casteljau/error.hpp"
+#include "casteljau/map.hpp"
+#include "casteljau/seamless.hpp"
+#include "map_test_util.hpp"
+
+using namespace casteljau;
+using casteljau::test::EquirectFrame;
+
+namespace {
+
+MapOptions world_options(int w, int h, bool seamless) {
+    MapOptions o;
+    o.width = w;
+    o.height = h;
+    o.bbox = Rect{-180, -90, 180, 90};
+    o.seamless = seamless;
+    return o;
+}
+
+// Per-feature reference coverage of the world at W x H (computed once per size).
+struct WorldReference {
+    std::vector<ref::CoverageGrid> grids;  // one per feature, over its pixel bounds
+};
+
+const WorldReference& world_reference(const MapData& world, int w, int h) {
+    static std::map<std::pair<int, int>, WorldReference> cache;
+    auto it = cache.find({w, h});
+    if (it != cache.end()) return it->second;
+    WorldReference r;
+    const EquirectFrame fr{w, h};
+    const IRect image{0, 0, w, h};
+    for (const Feature& f : world.features) {
+        const ref::Contours cs = test::reference_contours(f, fr);
+        IRect b = ref::pixel_bounds(cs, 1);
+        b = IRect{std::max(b.x0, 0), std::max(b.y0, 0), std::min(b.x1, image.x1), std::min(b.y1, image.y1)};
+        if (b.x0 >= b.x1 || b.y0 >= b.y1) b = IRect{0, 0, 1, 1};
+        r.grids.push_back(ref::slab_area(cs, FillRule::EvenOdd, b));
+    }
+    return cache.emplace(std::make_pair(w, h), std::move(r)).first->second;
+}
+
+}  // namespace
+
+TEST_CASE("Map fit: --bbox maps the extent pixel-exactly", "[map]") {
+    const MapData d = read_geojson(R"({"type":"Point","coordinates":[0,0]})");
+    const MapProjection eq;
+    const MapFrame fr = fit_map(d, eq, world_options(2048, 1024, true));
+    CHECK(fr.width == 2048);
+    CHECK(fr.height == 1024);
+    CHECK(fr.to_pixel.apply({-180, 90}) == Point{0, 0});
+    CHECK(fr.to_pixel.apply({180, -90}) == Point{2048, 1024});
+    CHECK(fr.to_pixel.apply({0, 0}) == Point{1024, 512});
+    // Height from the bbox aspect ratio when not given.
+    MapOptions o = world_options(1000, 0, true);
+    o.bbox = Rect{0, 0, 20, 10};
+    CHECK(fit_map(d, eq, o).height == 500);
+    // A square of 10 x 10 pixels at the top-left corner covers exactly those pixels.
+    const MapData sq = read_geojson(
+        R"({"type":"Polygon","coordinates":[[[-180,90],[-180,88.2421875],[-178.2421875,88.2421875],[-178.2421875,90],[-180,90]]]})");
+    const Pixmap pm = render_map(sq, eq, MapStyle{}, world_options(2048, 1024, true));
+    CHECK(pm.pixel(0, 0).a == 255);
+    CHECK(pm.pixel(9, 9).a == 255);
+    CHECK(pm.pixel(10, 9).a == 0);
+    CHECK(pm.pixel(9, 10).a == 0);
+}
+
+TEST_CASE("Map fit: data extent plus padding, aspect kept", "[map]") {
+    const MapData d = read_geojson(R"({"type":"Polygon","coordinates":[[[0,0],[40,0],[40,10],[0,10],[0,0]]]})");
+    MapOptions o;
+    o.width = 420;
+    o.padding = 10;
+    const MapFrame fr = fit_map(d, MapProjection{}, o);
+    CHECK(fr.height == 120);  // 400 px for 40 degrees, 100 px for 10, plus padding
+    CHECK(fr.to_pixel.apply({0, 10}).x == Approx(10));
+    CHECK(fr.to_pixel.apply({0, 10}).y == Approx(10));
+    CHECK(fr.to_pixel.apply({40, 0}).x == Approx(410));
+    CHECK(fr.to_pixel.apply({40, 0}).y == Approx(110));
+    o.height = 300;  // taller image: the extent is centred vertically
+    const MapFrame tall = fit_map(d, MapProjection{}, o);
+    CHECK(tall.to_pixel.apply({0, 5}).y == Approx(150));
+    CHECK(tall.to_pixel.apply({40, 5}).x == Approx(410));
+    // Nothing to fit.
+    CHECK_THROWS_AS(fit_map(read_geojson(R"({"type":"FeatureCollection","features":[]})"), MapProjection{}, o), Error);
+    o.padding = 300;
+    CHECK_THROWS_AS(fit_map(d, MapProjection{}, o), Error);
+}
+
+TEST_CASE("Map projections: Web Mercator, PROJ strings and CRSs", "[map][projection]") {
+    const MapProjection m = MapProjection::parse("mercator");
+    CHECK(m.kind() == MapProjection::Kind::WebMercator);
+    CHECK(MapProjection::parse("EPSG:3857").kind() == MapProjection::Kind::WebMercator);
+    Point p;
+    REQUIRE(m.project({0, 0}, p));
+    CHECK(p.x == Approx(0).margin(1e-9));
+    CHECK(p.y == Approx(0).margin(1e-9));
+    REQUIRE(m.project({180, 85.0511287798}, p));
+    CHECK(p.x == Approx(20037508.342789244));
+    CHECK(p.y == Approx(20037508.342789244));
+    Point q;
+    REQUIRE(m.project({180, 89.9}, q));  // clamped
+    CHECK(q.y == p.y);
+    const MapProjection robin = MapProjection::parse("+proj=robin");
+    CHECK(robin.kind() == MapProjection::Kind::Proj);
+    REQUIRE(robin.project({0, 0}, p));
+    CHECK(p.x == Approx(0).margin(1e-6));
+    const MapProjection laea = MapProjection::parse("EPSG:3035");
+    REQUIRE(laea.project({10, 52}, p));  // the projection centre
+    CHECK(p.x == Approx(4321000).margin(0.01));
+    CHECK(p.y == Approx(3210000).margin(0.01));
+    try {
+        (void)MapProjection::parse("+proj=nonsense");
+        FAIL("expected an error");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::InvalidArgument);
+        CHECK(std::string(e.what()).find("unknown projection '+proj=nonsense'") != std::string::npos);
+    }
+    CHECK_THROWS_AS(MapProjection::parse("EPSG:999999"), Error);
+    CHECK_THROWS_AS(MapProjection::parse(""), Error);
+}
+
+TEST_CASE("Antimeridian: ring and line pieces", "[map][antimeridian]") {
+    std::vector<std::vector<Point>> out;
+    const std::vector<Point> ring = {{170, -10}, {-170, -10}, {-170, 10}, {170, 10}, {170, -10}};
+    split_ring_at_antimeridian(ring, out);
+    REQUIRE(out.size() == 2);
+    for (const auto& piece : out) {
+        for (const Point& p : piece) CHECK(std::fabs(p.x) <= 180);
+    }
+    out.clear();
+    const std::vector<Point> plain = {{0, 0}, {10, 0}, {10, 10}, {0, 0}};
+    split_ring_at_antimeridian(plain, out);
+    REQUIRE(out.size() == 1);
+    CHECK(out[0].size() == 3);
+    out.clear();
+    split_line_at_antimeridian(std::vector<Point>{{170, 0}, {-170, 20}, {-160, 20}}, out);
+    REQUIRE(out.size() == 2);
+    CHECK(out[0].back() == Point{180, 10});
+    CHECK(out[1].front() == Point{-180, 10});
+    CHECK(out[1].back() == Point{-160, 20});
+}
+
+TEST_CASE("Antimeridian: a polygon crossing 180 matches the exact reference, no band", "[map][antimeridian]") {
+    const MapData d = read_geojson(R"({"type":"Feature","properties":{},"geometry":{"type":"Polygon",
+        "coordinates":[[[170.3,-10.1],[-170.2,-10.1],[-169.7,10.4],[170.3,10.4],[170.3,-10.1]]]}})");
+    const Pixmap pm = render_map(d, MapProjection{}, MapStyle{}, world_options(720, 360, false));
+    const EquirectFrame fr{720, 360};
+    const ref::CoverageGrid g = ref::slab_area(test::reference_contours(d.features[0], fr), FillRule::EvenOdd, {0, 0, 720, 360});
+    double max_err = 0;
+    for (int y = 0; y < 360; ++y)
+        for (int x = 0; x < 720; ++x) max_err = std::max(max_err, std::fabs(pm.pixel(x, y).a / 255.0 - g.at(x, y)));
+    CHECK(max_err <= 0.5 / 255 + 1e-9);
+    // No band: the middle of the map stays empty on the polygon's rows.
+    for (int x = 25; x < 690; ++x) REQUIRE(pm.pixel(x, 180).a == 0);
+    CHECK(pm.pixel(2, 180).a == 255);
+    CHECK(pm.pixel(717, 180).a == 255);
+    // A line crossing 180 leaves no streak either.
+    MapStyle st;
+    st.layers[0].stroke = Color::black();
+    const MapData l = read_geojson(R"({"type":"LineString","coordinates":[[170,0],[-170,5]]})");
+    const Pixmap lp = render_map(l, MapProjection{}, st, world_options(720, 360, true));
+    for (int x = 25; x < 690; ++x)
+        for (int y = 160; y < 200; ++y) REQUIRE(lp.pixel(x, y).a == 0);
+    CHECK(lp.pixel(5, 173).a > 0);
+    CHECK(lp.pixel(715, 176).a > 0);
+}
+
+TEST_CASE("Antimeridian: Fiji, Russia and Antarctica against the exact reference", "[map][antimeridian]") {
+    const MapData world = test::load_world();
+    const EquirectFrame fr{2048, 1024};
+    for (const char* name : {"Fiji", "Russia", "Antarctica"}) {
+        MapData one;
+        for (const Feature& f : world.features)
+            if (f.property("name") && f.property("name")->text == name) one.features.push_back(f);
+        REQUIRE(one.features.size() == 1);
+        const Pixmap pm = render_map(one, MapProjection{}, MapStyle{}, world_options(2048, 1024, false));
+        const ref::CoverageGrid g =
+            ref::slab_area(test::reference_contours(one.features[0], fr), FillRule::EvenOdd, {0, 0, 2048, 1024});
+        double sum_err = 0, max_err = 0;
+        for (int y = 0; y < 1024; ++y)
+            for (int x = 0; x < 2048; ++x) {
+                const double e = std::fabs(pm.pixel(x, y).a / 255.0 - g.at(x, y));
+                sum_err += e;
+                max_err = std::max(max_err, e);
+            }
+        INFO(name << " max error " << max_err * 255 << "/255");
+        CHECK(max_err <= 1.0 / 255 + 1e-9);
+        CHECK(sum_err / (2048.0 * 1024) <= 0.01 / 255);
+    }
+    // Antarctica reaches the bottom of the map (its ring winds around the south pole).
+    MapData ant;
+    for (const Feature& f : world.features)
+        if (f.property("name")->text == "Antarctica") ant.features.push_back(f);
+    const Pixmap pm = render_map(ant, MapProjection{}, MapStyle{}, world_options(2048, 1024, true));
+    CHECK(pm.pixel(1024, 1023).a == 255);
+    CHECK(pm.pixel(1024, 500).a == 0);
+}
+
+TEST_CASE("Map --separate: world countries at 2048x1024 within 0.5/255 of the exact reference", "[map][accuracy]") {
+    const MapData world = test::load_world();
+    const int W = 2048, H = 1024;
+    const WorldReference& r = world_reference(world, W, H);
+    // Source-over of each feature's exact coverage, in file order.
+    std::vector<double> alpha(static_cast<std::size_t>(W) * H, 0.0);
+    for (const ref::CoverageGrid& g : r.grids)
+        for (int y = g.bounds.y0; y < g.bounds.y1; ++y)
+            for (int x = g.bounds.x0; x < g.bounds.x1; ++x) {
+                double& a = alpha[static_cast<std::size_t>(y) * W + x];
+                a = a + g.at(x, y) * (1 - a);
+            }
+    // Natural Earth polygons are valid, so plain accumulation (exact_overlaps off) is exact too.
+    for (bool exact : {true, false}) {
+        MapOptions o = world_options(W, H, false);
+        o.exact_overlaps = exact;
+        const Pixmap pm = render_map(world, MapProjection{}, MapStyle{}, o);
+        double sum = 0, max_err = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const double e = std::fabs(pm.pixel(x, y).a / 255.0 - alpha[static_cast<std::size_t>(y) * W + x]);
+                sum += e;
+                max_err = std::max(max_err, e);
+            }
+        const double mean = sum / (static_cast<double>(W) * H);
+        INFO("exact_overlaps " << exact << ": mean abs error " << mean * 255 << "/255, max " << max_err * 255 << "/255");
+        CHECK(mean <= 0.5 / 255);
+        CHECK(max_err <= 2.0 / 255);
+    }
+}
+
+TEST_CASE("Seamless: world countries show no seam, --separate does", "[map][seamless]") {
+    const MapData world = test::load_world();
+    const int W = 2048, H = 1024;
+    const WorldReference& r = world_reference(world, W, H);
+    std::vector<double> sum(static_cast<std::size_t>(W) * H, 0.0);
+    for (const ref::CoverageGrid& g : r.grids)
+        for (int y = g.bounds.y0; y < g.bounds.y1; ++y)
+            for (int x = g.bounds.x0; x < g.bounds.x1; ++x) sum[static_cast<std::size_t>(y) * W + x] += g.at(x, y);
+    const Pixmap seamless = render_map(world, MapProjection{}, MapStyle{}, world_options(W, H, true));
+    const Pixmap separate = render_map(world, MapProjection{}, MapStyle{}, world_options(W, H, false));
+    int full = 0, seamless_gaps = 0, separate_gaps = 0, shared = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const double s = sum[static_cast<std::size_t>(y) * W + x];
+            if (s < 1 - 1e-9) continue;  // not fully covered by the countries together
+            ++full;
+            bool partial = false;  // covered by two or more features sharing the pixel
+            for (const ref::CoverageGrid& g : r.grids) {
+                const double c = g.at(x, y);
+                if (c > 1e-9 && c < 1 - 1e-9) { partial = true; break; }
+            }
+            if (partial) ++shared;
+            if (seamless.pixel(x, y).a != 255) ++seamless_gaps;
+            if (separate.pixel(x, y).a != 255) ++separate_gaps;
+        }
+    INFO(full << " fully covered pixels, " << shared << " on shared borders");
+    CHECK(shared > 1000);
+    CHECK(seamless_gaps == 0);
+    CHECK(separate_gaps > shared / 2);  // the seams the default mode removes
+}
+
+TEST_CASE("Seamless: two squares sharing an edge at fractional x leave no lighter pixel", "[map][seamless]") {
+    // bbox 0..100 x 0..50 degrees on 200 x 100 pixels: 2 px per degree; the shared edge at
+    // longitude 25.15 lies at x = 50.3.
+    const MapData d = read_geojson(R"({"type":"FeatureCollection","features":[
+      {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[5,5],[25.15,5],[25.15,45],[5,45],[5,5]]]}},
+      {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[25.15,5],[45,5],[45,45],[25.15,45],[25.15,5]]]}}]})");
+    MapStyle st;
+    st.background = Color::white();
+    st.layers[0].fill = Color::rgba(51, 102, 204);
+    MapOptions o;
+    o.width = 200;
+    o.height = 100;
+    o.bbox = Rect{0, 0, 100, 50};
+    const Pixmap pm = render_map(d, MapProjection{}, st, o);
+    const PremulPixel fill = premultiply(Color::rgba(51, 102, 204));
+    for (int y = 11; y < 89; ++y)
+        for (int x = 11; x < 89; ++x) REQUIRE(pm.pixel(x, y) == fill);
+    o.seamless = false;
+    const Pixmap sep = render_map(d, MapProjection{}, st, o);
+    CHECK(sep.pixel(50, 50).r > fill.r);  // the seam the default mode avoids
+}
+
+TEST_CASE("Seamless: complementary coverages of a shared edge always sum to full", "[map][seamless]") {
+    std::mt19937 rng(14);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Rasterizer raster;
+    for (int trial = 0; trial < 300; ++trial) {
+        // A shared slanted edge from (x0, 0) to (x1, 32) with random fractional positions.
+        const double x0 = 8 + 16 * u(rng), x1 = 8 + 16 * u(rng), y0 = 4 * u(rng), y1 = 28 + 4 * u(rng);
+        Path left, right;
+        left.move_to(0, y0).line_to(x0, y0).line_to(x1, y1).line_to(0, y1).close();
+        right.move_to(x0, y0).line_to(32, y0).line_to(32, y1).line_to(x1, y1).close();
+        AreaCompositor ac(32, 32);
+        ac.add(raster, right, FillOptions{}, Color::black());
+        ac.add(raster, left, FillOptions{}, Color::black());
+        const int r0 = static_cast<int>(std::ceil(y0)), r1 = static_cast<int>(std::floor(y1));
+        for (int y = r0; y < r1; ++y)
+            for (int x = 0; x < 32; ++x) REQUIRE(ac.taken(x, y) == 255);
+        Pixmap pm(32, 32);
+        ac.composite_onto(pm);
+        for (int y = r0; y < r1; ++y)
+            for (int x = 0; x < 32; ++x) REQUIRE(pm.pixel(x, y).a == 255);
+    }
+}
+
+TEST_CASE("Seamless: earlier fills take precedence where fills overlap", "[map][seamless]") {
+    Rasterizer raster;
+    AreaCompositor ac(8, 8);
+    Path a, b;
+    a.add_rect(Rect{0, 0, 8, 8});
+    b.add_rect(Rect{0, 0, 4.5, 8});
+    ac.add(raster, b, FillOptions{}, Color::rgba(255, 0, 0));
+    ac.add(raster, a, FillOptions{}, Color::rgba(0, 0, 255));
+    Pixmap pm(8, 8);
+    pm.fill(Color::white());
+    ac.composite_onto(pm);
+    CHECK(pm.pixel(1, 1) == PremulPixel{255, 0, 0, 255});
+    CHECK(pm.pixel(6, 1) == PremulPixel{0, 0, 255, 255});
+    CHECK(pm.pixel(4, 1) == PremulPixel{128, 0, 127, 255});  // half red, half blue, no white
+}
+
+TEST_CASE("Map strokes: a shared border is stroked once, not twice darker", "[map][stroke]") {
+    const MapData d = read_geojson(R"({"type":"FeatureCollection","features":[
+      {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[10,10],[50,10],[50,40],[10,40],[10,10]]]}},
+      {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[50,10],[90,10],[90,40],[50,40],[50,10]]]}}]})");
+    MapStyle st;
+    st.layers[0].fill.reset();
+    st.layers[0].stroke = Color::rgba(0, 0, 0, 128);
+    st.layers[0].stroke_width = 4;
+    MapOptions o;
+    o.width = 100;
+    o.height = 50;
+    o.bbox = Rect{0, 0, 100, 50};
+    const Pixmap pm = render_map(d, MapProjection{}, st, o);
+    const int shared = pm.pixel(50, 25).a, outer = pm.pixel(10, 25).a;
+    CHECK(outer == 128);
+    CHECK(shared == 128);
+}
+
+TEST_CASE("Map styles: categorical palette, numeric ramp, points, style file", "[map][style]") {
+    const MapData d = read_geojson(R"({"type":"FeatureCollection","features":[
+      {"type":"Feature","properties":{"kind":"a","v":0},"geometry":{"type":"Polygon","coordinates":[[[0,0],[10,0],[10,10],[0,10],[0,0]]]}},
+      {"type":"Feature","properties":{"kind":"b","v":10},"geometry":{"type":"Polygon","coordinates":[[[20,0],[30,0],[30,10],[20,10],[20,0]]]}},
+      {"type":"Feature","properties":{"kind":"a","v":5},"geometry":{"type":"Point","coordinates":[45,5]}}]})");
+    MapOptions o;
+    o.width = 100;
+    o.height = 20;
+    o.bbox = Rect{0, 0, 50, 10};
+    MapStyle st;
+    st.layers[0].fill_by = "kind";
+    st.point_radius = 4;
+    Pixmap pm = render_map(d, MapProjection{}, st, o);
+    const Color ca = *st.layers[0].fill_for(d.features[0]);
+    CHECK(ca == *st.layers[0].fill_for(d.features[2]));
+    CHECK(!(ca == *st.layers[0].fill_for(d.features[1])));
+    CHECK(pm.pixel(10, 10) == premultiply(ca));
+    CHECK(pm.pixel(90, 10) == premultiply(ca));  // the point disk (radius 4 px)
+    CHECK(pm.pixel(95, 10).a == 0);
+    st.layers[0].ramp = ColorRamp{0, 10, Color::rgba(0, 0, 0), Color::rgba(200, 100, 50)};
+    st.layers[0].fill_by = "v";
+    pm = render_map(d, MapProjection{}, st, o);
+    CHECK(pm.pixel(10, 10) == PremulPixel{0, 0, 0, 255});
+    CHECK(pm.pixel(50, 10) == PremulPixel{200, 100, 50, 255});
+    CHECK(pm.pixel(90, 10) == PremulPixel{100, 50, 25, 255});
+    // A style file with a filter.
+    const MapStyle file = read_map_style(R"({"background":"white","layers":[
+        {"filter":{"property":"kind","==":"b"},"fill":"#ff0000"},
+        {"filter":{"property":"v","<":3},"fill":"#0000ff","opacity":0.5}]})");
+    REQUIRE(file.layers.size() == 2);
+    pm = render_map(d, MapProjection{}, file, o);
+    CHECK(pm.pixel(50, 10) == PremulPixel{255, 0, 0, 255});
+    CHECK(pm.pixel(10, 10) == PremulPixel{127, 127, 255, 255});
+    CHECK(pm.pixel(90, 10) == PremulPixel{255, 255, 255, 255});
+    CHECK_THROWS_AS(read_map_style(R"({"layers":[{"filter":{"property":"x"}}]})"), Error);
+    CHECK_THROWS_AS(read_map_style(R"({"layers":[{"fill":"notacolour"}]})"), Error);
+    CHECK_THROWS_AS(read_map_style(R"({"layers":{}})"), Error);
+}
