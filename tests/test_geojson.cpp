@@ -6,6 +6,10 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/geojson.hpp"
+#include "casteljau/png.hpp"
+#include "temp_dir.hpp"
+
+#include <fstream>
 
 using namespace casteljau;
 
@@ -182,5 +186,35 @@ TEST_CASE("read_map_data refuses a TopoJSON layer name for GeoJSON", "[geojson][
         FAIL("expected an error");
     } catch (const Error& e) {
         CHECK(e.kind() == ErrorKind::InvalidArgument);
+    }
+}
+
+TEST_CASE("read_map_file reads in place like read_map_data and reports errors", "[geojson]") {
+    const std::string world = std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/maps/countries-110m.json";
+    const auto bytes = read_file(world);
+    const MapData a = read_map_file(world, "countries");
+    const MapData b = read_map_data(std::string(bytes.begin(), bytes.end()), "countries");
+    REQUIRE(a.features.size() == b.features.size());
+    CHECK(a.position_count() == b.position_count());
+    CHECK(a.features[17].geometries.at(0).points == b.features[17].geometries.at(0).points);
+    const std::string sample = std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/maps/sample.geojson";
+    CHECK(read_map_file(sample).features.size() == 7);
+    try {
+        (void)read_map_file("/nonexistent/file.geojson");
+        FAIL("expected an error");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::Io);
+    }
+    const std::string bad = (casteljau::testing::process_temp_dir() / "bad.geojson").string();
+    {
+        std::ofstream f(bad, std::ios::binary);
+        f << R"({"type":"FeatureCollection","features":[}]})";
+    }
+    try {
+        (void)read_map_file(bad);
+        FAIL("expected an error");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::Parse);
+        CHECK(std::string(e.what()).find("invalid JSON at byte 40") != std::string::npos);
     }
 }

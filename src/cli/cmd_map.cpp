@@ -67,14 +67,14 @@ ColorRamp parse_ramp(const std::string& text) {
 }  // namespace
 
 MapData read_map_input(const std::string& path, const std::string& layer) {
-    const std::string text = read_text_input(path);
     if (ends_with(path, ".geojsonl") || ends_with(path, ".geojsons") || ends_with(path, ".ndjson") ||
         ends_with(path, ".geojsonseq")) {
         if (!layer.empty()) throw UsageError("--layer selects a TopoJSON object, but the input is GeoJSON lines");
-        return read_geojson_lines(text);
+        return read_geojson_lines(read_text_input(path));
     }
-    if (ends_with(path, ".topojson")) return read_topojson(text, layer);
-    return read_map_data(text, layer);
+    if (ends_with(path, ".topojson")) return read_topojson(read_text_input(path), layer);
+    if (path == "-") return read_map_data(read_text_input(path), layer);
+    return read_map_file(path, layer);  // parsed in place, the text released before MapData is built
 }
 
 void add_map_style_options(CLI::App* cmd, MapCliStyle& o) {

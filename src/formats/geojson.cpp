@@ -149,7 +149,10 @@ struct Reader {
             }
         }
         --depth;
-        if (!g.points.empty()) f.geometries.push_back(std::move(g));
+        if (!g.points.empty()) {
+            g.points.shrink_to_fit();  // one exact copy of the coordinates, not up to twice that
+            f.geometries.push_back(std::move(g));
+        }
     }
 
     void feature(object obj, MapData& out) {
@@ -246,34 +249,53 @@ MapData read_geojson_lines(std::string_view text) {
     return out;
 }
 
-MapData read_map_data(std::string_view text, std::string_view topojson_object) {
-    // Topology: look for "type" : "Topology" near the start (the member order is free, so look
-    // at the whole text's top-level type only through a parse when the cheap check is unsure).
+namespace {
+
+bool looks_like_lines(std::string_view text) {
     std::size_t i = 0;
     while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n' || text[i] == '\x1e')) ++i;
     const std::size_t eol = text.find('\n', i);
-    if (eol != std::string_view::npos) {
-        std::string_view first = text.substr(i, eol - i);
-        while (!first.empty() && (first.back() == '\r' || first.back() == ' ' || first.back() == '\t')) first.remove_suffix(1);
-        std::size_t j = eol + 1;
-        while (j < text.size() && (text[j] == ' ' || text[j] == '\t' || text[j] == '\r' || text[j] == '\n' || text[j] == '\x1e')) ++j;
-        if (first.size() >= 2 && first.front() == '{' && first.back() == '}' && j < text.size() && text[j] == '{')
-            return read_geojson_lines(text);
-    }
-    {
-        simdjson::dom::parser parser;
-        const element root = json::parse(parser, text, "map data");
-        std::string_view type;
-        if (root["type"].get_string().get(type) == simdjson::SUCCESS && type == "Topology") {
-            return geo_detail::topojson_from(root, topojson_object);
-        }
-        if (!topojson_object.empty())
-            throw Error(ErrorKind::InvalidArgument, "--layer selects a TopoJSON object, but the input is GeoJSON");
-        MapData out;
-        Reader r;
-        r.document(root, out, true);
-        return out;
-    }
+    if (eol == std::string_view::npos) return false;
+    std::string_view first = text.substr(i, eol - i);
+    while (!first.empty() && (first.back() == '\r' || first.back() == ' ' || first.back() == '\t')) first.remove_suffix(1);
+    std::size_t j = eol + 1;
+    while (j < text.size() && (text[j] == ' ' || text[j] == '\t' || text[j] == '\r' || text[j] == '\n' || text[j] == '\x1e')) ++j;
+    return first.size() >= 2 && first.front() == '{' && first.back() == '}' && j < text.size() && text[j] == '{';
+}
+
+MapData from_root(element root, std::string_view topojson_object) {
+    std::string_view type;
+    if (root["type"].get_string().get(type) == simdjson::SUCCESS && type == "Topology")
+        return geo_detail::topojson_from(root, topojson_object);
+    if (!topojson_object.empty())
+        throw Error(ErrorKind::InvalidArgument, "--layer selects a TopoJSON object, but the input is GeoJSON");
+    MapData out;
+    Reader r;
+    r.document(root, out, true);
+    return out;
+}
+
+}  // namespace
+
+MapData read_map_file(const std::string& path, std::string_view topojson_object) {
+    simdjson::padded_string text;
+    if (simdjson::padded_string::load(path).get(text) != simdjson::SUCCESS)
+        throw Error(ErrorKind::Io, "cannot read '" + path + "'");
+    if (looks_like_lines(text)) return read_geojson_lines(text);
+    simdjson::dom::parser parser;
+    element root;
+    const auto err = parser.parse(text).get(root);
+    if (err != simdjson::SUCCESS) json::parse(parser, text, "map data");  // throws with the byte offset
+    // The parsed tree holds its own copy of the strings: the text can go before MapData is built.
+    text = simdjson::padded_string();
+    return from_root(root, topojson_object);
+}
+
+MapData read_map_data(std::string_view text, std::string_view topojson_object) {
+    if (looks_like_lines(text)) return read_geojson_lines(text);
+    simdjson::dom::parser parser;
+    const element root = json::parse(parser, text, "map data");
+    return from_root(root, topojson_object);
 }
 
 }  // namespace casteljau

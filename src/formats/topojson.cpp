@@ -226,7 +226,10 @@ struct TopoReader {
             }
         }
         --depth;
-        if (!g.points.empty()) f.geometries.push_back(std::move(g));
+        if (!g.points.empty()) {
+            g.points.shrink_to_fit();  // one exact copy of the coordinates, not up to twice that
+            f.geometries.push_back(std::move(g));
+        }
     }
 
     void feature(object obj) {
