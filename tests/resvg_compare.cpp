@@ -6,7 +6,6 @@
 #include <cstdlib>
 #include <vector>
 
-#include "casteljau/canvas.hpp"
 #include "casteljau/svg.hpp"
 
 using casteljau::Pixmap;
@@ -98,13 +97,9 @@ Pixmap diff_image(const Pixmap& actual, const Pixmap& reference) {
 }
 
 Pixmap render_reference_size(const casteljau::SvgDocument& doc, bool native) {
-    const int iw = doc.width(), ih = doc.height();
-    const int W = native ? iw : 300;
-    const int H = native ? ih : static_cast<int>(std::ceil(300.0 * ih / iw));
-    Pixmap pm(W, H);
-    casteljau::Canvas canvas(pm);
-    doc.render(canvas, casteljau::Affine::scale(static_cast<double>(W) / iw, static_cast<double>(H) / ih));
-    return pm;
+    if (native) return doc.render();
+    const auto [w, h] = doc.output_size_for_width(300);
+    return doc.render_size(w, h);
 }
 
 std::filesystem::path shared_dir() {

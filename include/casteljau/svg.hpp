@@ -13,6 +13,8 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/paint.hpp"
@@ -30,9 +32,19 @@ public:
     SvgDocument& operator=(SvgDocument&&) noexcept;
     ~SvgDocument();
 
-    // Output size in pixels (the root's width and height, rounded up to whole pixels).
+    // Output size in pixels: the root's width and height (96 dpi) rounded to the nearest whole
+    // pixel, at least 1 (resvg's rule). The fractional intrinsic size is kept for scaling.
     int width() const;
     int height() const;
+    double intrinsic_width() const;
+    double intrinsic_height() const;
+    // Output sizes for a requested width, height or zoom, the way resvg and rsvg-convert choose
+    // them: the other side is ceil(requested x the rounded aspect ratio); a zoom multiplies the
+    // rounded size and rounds up. So width="16.031" height="16" at width 256 is 256 x 256.
+    // Throws Error(Limit) past the canvas limits.
+    std::pair<int, int> output_size_for_width(int width) const;
+    std::pair<int, int> output_size_for_height(int height) const;
+    std::pair<int, int> output_size_for_zoom(double zoom) const;
     // Warnings collected while reading (unsupported features, recovered path-data errors).
     const std::vector<std::string>& warnings() const;
 
@@ -40,6 +52,9 @@ public:
     void render(Canvas& canvas, const Affine& base = {}) const;
     // A transparent Pixmap of width() x height() with the document drawn.
     Pixmap render() const;
+    // A transparent Pixmap of width x height, the document scaled to fill it exactly (the
+    // intrinsic size, fractional, maps onto the whole pixmap).
+    Pixmap render_size(int width, int height) const;
 
 private:
     struct Impl;

@@ -330,11 +330,40 @@ public:
     }
 };
 
+constexpr std::string_view kSvgNamespace = "http://www.w3.org/2000/svg";
+
+// Elements written with a prefix bound to the SVG namespace (<svg:svg xmlns:svg="...">) get their
+// local name, so the reader sees <svg>; elements of other namespaces keep their prefixed names and
+// are skipped as unknown. `prefixes` holds the prefixes bound to the SVG namespace in scope.
+void normalise_namespaces(pugi::xml_node node, std::vector<std::string> prefixes) {
+    std::vector<std::pair<pugi::xml_node, std::vector<std::string>>> stack;
+    stack.emplace_back(node, std::move(prefixes));
+    while (!stack.empty()) {
+        auto [n, scope] = std::move(stack.back());
+        stack.pop_back();
+        for (const pugi::xml_attribute& a : n.attributes()) {
+            const std::string_view name = a.name();
+            if (name.substr(0, 6) != "xmlns:") continue;
+            const std::string prefix(name.substr(6));
+            std::erase(scope, prefix);
+            if (a.value() == kSvgNamespace) scope.push_back(prefix);
+        }
+        const std::string_view name = n.name();
+        if (const std::size_t colon = name.find(':'); colon != std::string_view::npos) {
+            const std::string prefix(name.substr(0, colon));
+            if (std::find(scope.begin(), scope.end(), prefix) != scope.end()) n.set_name(std::string(name.substr(colon + 1)).c_str());
+        }
+        for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling())
+            if (c.type() == pugi::node_element) stack.emplace_back(c, scope);
+    }
+}
+
 }  // namespace
 
 struct SvgDocument::Impl {
     pugi::xml_document doc;
-    int width = 0, height = 0;
+    int width = 0, height = 0;   // output size: the intrinsic size rounded, at least 1
+    double fwidth = 0, fheight = 0;  // intrinsic size, fractional
     Affine view;  // viewBox -> pixels
     std::vector<Item> items;
     std::vector<std::string> warnings;
@@ -346,6 +375,8 @@ SvgDocument& SvgDocument::operator=(SvgDocument&&) noexcept = default;
 SvgDocument::~SvgDocument() = default;
 int SvgDocument::width() const { return impl_->width; }
 int SvgDocument::height() const { return impl_->height; }
+double SvgDocument::intrinsic_width() const { return impl_->fwidth; }
+double SvgDocument::intrinsic_height() const { return impl_->fheight; }
 const std::vector<std::string>& SvgDocument::warnings() const { return impl_->warnings; }
 
 SvgDocument SvgDocument::load(const std::string& path) {
@@ -361,6 +392,7 @@ SvgDocument SvgDocument::parse(std::string_view text) {
     if (!res)
         throw Error(ErrorKind::Parse, std::string("malformed SVG (XML) at byte ") + std::to_string(res.offset) + ": " +
                                           res.description());
+    normalise_namespaces(impl->doc.document_element(), {});
     const pugi::xml_node root = impl->doc.document_element();
     if (std::string_view(root.name()) != "svg")
         throw Error(ErrorKind::InvalidData, std::string("root element is <") + root.name() + ">, expected <svg>");
@@ -397,9 +429,14 @@ SvgDocument SvgDocument::parse(std::string_view text) {
     if (!(*w > 0) || !(*h > 0))
         throw Error(ErrorKind::InvalidData, "SVG width and height must be positive, got " + std::to_string(*w) + " x " +
                                                 std::to_string(*h));
-    check_canvas_size(std::ceil(*w), std::ceil(*h));
-    impl->width = static_cast<int>(std::ceil(*w));
-    impl->height = static_cast<int>(std::ceil(*h));
+    // The output size is the intrinsic size rounded to whole pixels (at least 1), as resvg does;
+    // the fractional size stays for the scale (render() fills the whole output).
+    const double rw = std::max(1.0, std::round(*w)), rh = std::max(1.0, std::round(*h));
+    check_canvas_size(rw, rh);
+    impl->width = static_cast<int>(rw);
+    impl->height = static_cast<int>(rh);
+    impl->fwidth = *w;
+    impl->fheight = *h;
 
     // viewBox -> viewport with preserveAspectRatio.
     Affine view;
@@ -493,11 +530,34 @@ void SvgDocument::render(Canvas& canvas, const Affine& base) const {
     }
 }
 
-Pixmap SvgDocument::render() const {
-    Pixmap pm(impl_->width, impl_->height);
+Pixmap SvgDocument::render() const { return render_size(impl_->width, impl_->height); }
+
+Pixmap SvgDocument::render_size(int width, int height) const {
+    Pixmap pm(width, height);
     Canvas c(pm);
-    render(c);
+    render(c, Affine::scale(width / impl_->fwidth, height / impl_->fheight));
     return pm;
+}
+
+std::pair<int, int> SvgDocument::output_size_for_width(int width) const {
+    check_canvas_size(width, 1);
+    const double h = std::ceil(static_cast<double>(width) * impl_->height / impl_->width);
+    check_canvas_size(width, h);
+    return {width, static_cast<int>(h)};
+}
+
+std::pair<int, int> SvgDocument::output_size_for_height(int height) const {
+    check_canvas_size(1, height);
+    const double w = std::ceil(static_cast<double>(height) * impl_->width / impl_->height);
+    check_canvas_size(w, height);
+    return {static_cast<int>(w), height};
+}
+
+std::pair<int, int> SvgDocument::output_size_for_zoom(double zoom) const {
+    if (!(zoom > 0) || !std::isfinite(zoom)) throw Error(ErrorKind::InvalidArgument, "zoom must be positive");
+    const double w = std::ceil(impl_->width * zoom), h = std::ceil(impl_->height * zoom);
+    check_canvas_size(w, h);
+    return {static_cast<int>(w), static_cast<int>(h)};
 }
 
 }  // namespace casteljau
