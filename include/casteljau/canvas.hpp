@@ -7,27 +7,37 @@
 // Thread-safety: a Canvas and its Pixmap belong to one thread at a time.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "casteljau/geometry.hpp"
 #include "casteljau/paint.hpp"
 #include "casteljau/path.hpp"
 #include "casteljau/raster.hpp"
+#include "casteljau/shader.hpp"
 #include "casteljau/stroke.hpp"
 
 namespace casteljau {
 
+// What a fill paints: a solid colour, or a Shader (gradient) evaluated per pixel when `shader` is
+// set (then `color` is ignored). The shader's own transform maps its space to the user space of
+// the fill; the Canvas's current transform at the time of the fill goes on top.
 struct Paint {
     Color color = Color::black();
     double opacity = 1.0;        // multiplies the colour's alpha
-    bool linear_blend = false;   // blend coverage in linear light (gamma-correct) instead of sRGB
+    bool linear_blend = false;   // blend coverage in linear light (gamma-correct) instead of sRGB; solid colours only
+    std::shared_ptr<const Shader> shader;
 
     static Paint solid(Color c) { Paint p; p.color = c; return p; }
+    static Paint shaded(Shader s) { Paint p; p.shader = std::make_shared<const Shader>(std::move(s)); return p; }
 };
 
 // Source-over of `paint` x coverage onto one row of premultiplied pixels (exposed for tests and
-// for callers that rasterize themselves). `dst` points at pixel x of the row.
+// for callers that rasterize themselves). `dst` points at pixel x of the row; a shader paint is
+// not handled here (see composite_span_premul).
 void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, const Paint& paint);
+// Source-over of per-pixel premultiplied RGBA8 colours `src` x coverage onto one row.
+void composite_span_premul(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src);
 
 class Canvas {
 public:
@@ -57,7 +67,8 @@ public:
     // Strokes `path` with `style` in user space (so a non-uniform transform gives an elliptical
     // pen, as SVG requires) and fills the outline with the nonzero rule.
     void stroke_path(const Path& path, const StrokeStyle& style, const Paint& paint);
-    // Composites an A8 mask (pixel space, the current transform is not applied) with `paint`.
+    // Composites an A8 mask (pixel space, the current transform is not applied to the mask; it
+    // is to a shader's coordinates) with `paint`.
     void fill_mask(const Mask& mask, const Paint& paint);
 
     Rasterizer& rasterizer() { return raster_; }
@@ -72,6 +83,7 @@ private:
     std::vector<State> stack_;
     FillOptions fill_options_;
     Rasterizer raster_;
+    std::vector<std::uint8_t> scratch_;  // a row of shader colours
 };
 
 }  // namespace casteljau

@@ -92,4 +92,21 @@ void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage,
     }
 }
 
+void composite_span_premul(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src) {
+    for (int i = 0; i < length; ++i, dst += 4, src += 4) {
+        const unsigned c = coverage[i];
+        if (c == 0 || src[3] == 0) continue;
+        if (c == 255 && src[3] == 255) {
+            std::memcpy(dst, src, 4);
+            continue;
+        }
+        const unsigned sa = mul_div255(src[3], c);
+        const unsigned inv = 255 - sa;
+        dst[0] = static_cast<std::uint8_t>(mul_div255(src[0], c) + mul_div255(dst[0], inv));
+        dst[1] = static_cast<std::uint8_t>(mul_div255(src[1], c) + mul_div255(dst[1], inv));
+        dst[2] = static_cast<std::uint8_t>(mul_div255(src[2], c) + mul_div255(dst[2], inv));
+        dst[3] = static_cast<std::uint8_t>(sa + mul_div255(dst[3], inv));
+    }
+}
+
 }  // namespace casteljau
