@@ -10,11 +10,14 @@
 #include <charconv>
 #include <cmath>
 #include <optional>
+#include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "casteljau/error.hpp"
 #include "casteljau/png.hpp"
+#include "casteljau/shader.hpp"
 #include "casteljau/stroke.hpp"
 #include "casteljau/svg_path.hpp"
 
@@ -27,17 +30,35 @@ struct Item {
     Path path;          // user space
     Affine transform;   // user space -> document pixel space
     Color color;
+    std::shared_ptr<const Shader> shader;  // a gradient instead of `color`
     FillRule rule = FillRule::NonZero;
     double opacity = 1;  // fill/stroke: multiplies colour alpha; layer: group opacity
     StrokeStyle stroke;  // Stroke items
 };
 
+// A fill or stroke as specified: none, a colour, or a paint server (url(#id)) with its fallback.
+struct PaintRef {
+    enum Kind { None, Solid, Server } kind = None;
+    Color color = Color::black();
+    std::string id;                    // Server: the referenced element's id
+    Kind fallback = None;              // Server: what to paint when the reference is unusable
+    Color fallback_color = Color::black();
+    static PaintRef solid(Color c) { PaintRef p; p.kind = Solid; p.color = c; return p; }
+};
+
+Item layer_item(Item::Kind kind, double opacity) {
+    Item it;
+    it.kind = kind;
+    it.opacity = opacity;
+    return it;
+}
+
 struct Style {
-    std::optional<Color> fill = Color::black();  // nullopt: none
+    PaintRef fill = PaintRef::solid(Color::black());
     Color color = Color::black();                // currentColor
     FillRule fill_rule = FillRule::NonZero;
     double fill_opacity = 1;
-    std::optional<Color> stroke;  // nullopt: none (the SVG default)
+    PaintRef stroke;  // none (the SVG default)
     double stroke_opacity = 1;
     StrokeStyle stroke_style;
 };
@@ -125,22 +146,40 @@ public:
         return props;
     }
 
-    // A fill or stroke value: none, currentColor, inherit (keeps the inherited paint), a colour;
-    // paint servers (url(...)) are not supported yet and paint nothing, with a warning.
-    void apply_paint(const std::string& property, std::string_view value, Color current, std::optional<Color>& paint) {
-        if (value == "none") paint = std::nullopt;
-        else if (value == "currentColor") paint = current;
-        else if (value == "inherit") {}
-        else if (value.substr(0, 4) == "url(") {
-            warn("paint servers (" + std::string(value) + ") are not supported yet; " + property + " is none");
-            paint = std::nullopt;
-        } else {
+    // A fill or stroke value: none, currentColor, inherit (keeps the inherited paint), a colour,
+    // or url(#id) with an optional fallback (none or a colour) after it.
+    void apply_paint(const std::string& property, std::string_view value, Color current, PaintRef& paint) {
+        auto simple = [&](std::string_view v, PaintRef::Kind& kind, Color& color) -> bool {
+            if (v == "none") { kind = PaintRef::None; return true; }
+            if (v == "currentColor") { kind = PaintRef::Solid; color = current; return true; }
             try {
-                paint = parse_color(value);
+                color = parse_color(v);
+                kind = PaintRef::Solid;
+                return true;
             } catch (const Error&) {
-                warn("invalid " + property + " '" + std::string(value) + "'");
+                return false;
             }
+        };
+        if (value == "inherit") return;
+        if (value.substr(0, 4) == "url(") {
+            const std::size_t close = value.find(')');
+            if (close == std::string_view::npos) {
+                warn("invalid " + property + " '" + std::string(value) + "'");
+                return;
+            }
+            std::string_view ref = trim(value.substr(4, close - 4));
+            if (ref.size() >= 2 && (ref.front() == '\'' || ref.front() == '"')) ref = ref.substr(1, ref.size() - 2);
+            PaintRef p;
+            p.kind = PaintRef::Server;
+            p.id = ref.empty() || ref.front() != '#' ? std::string() : std::string(ref.substr(1));
+            const std::string_view rest = trim(value.substr(close + 1));
+            if (!rest.empty() && !simple(rest, p.fallback, p.fallback_color)) p.fallback = PaintRef::None;
+            paint = p;
+            return;
         }
+        PaintRef p;
+        if (simple(value, p.kind, p.color)) paint = p;
+        else warn("invalid " + property + " '" + std::string(value) + "'");
     }
 
     void apply_style(const pugi::xml_node& node, Style& st) {
@@ -257,6 +296,170 @@ public:
         return p;
     }
 
+    // Element ids of the whole document (the first element with an id wins).
+    std::unordered_map<std::string, pugi::xml_node> ids;
+
+    void index_ids(const pugi::xml_node& root) {
+        for (pugi::xml_node n = root; n;) {
+            if (const char* id = n.attribute("id").value(); *id) ids.emplace(id, n);
+            if (pugi::xml_node c = n.first_child(); c) { n = c; continue; }
+            while (n && !n.next_sibling() && n != root) n = n.parent();
+            if (!n || n == root) break;
+            n = n.next_sibling();
+        }
+    }
+
+    pugi::xml_node lookup(std::string_view id) const {
+        const auto it = ids.find(std::string(id));
+        return it == ids.end() ? pugi::xml_node() : it->second;
+    }
+
+    // `href` takes precedence over `xlink:href` (SVG 2).
+    static const char* href(const pugi::xml_node& n) {
+        if (const char* h = n.attribute("href").value(); *h) return h;
+        return n.attribute("xlink:href").value();
+    }
+
+    static std::string own_property(const pugi::xml_node& n, const std::string& name) {
+        std::string out;
+        for (const auto& [k, v] : properties(n))
+            if (k == name) out = std::string(trim(v));
+        return out == "inherit" ? std::string() : out;
+    }
+
+    // The value of property `name` on `n` or its nearest ancestor that sets it (not `inherit`).
+    static std::string inherited(pugi::xml_node n, const std::string& name) {
+        for (; n && n.type() == pugi::node_element; n = n.parent())
+            for (const auto& [k, v] : properties(n))
+                if (k == name && trim(v) != "inherit") return std::string(trim(v));
+        return {};
+    }
+
+    // Sets the colour or shader of `it` for `ref` drawn on `path` (user space, for
+    // objectBoundingBox units); false when nothing is to be painted.
+    bool resolve_paint(const PaintRef& ref, const Path& path, double vw, double vh, Item& it) {
+        if (ref.kind == PaintRef::None) return false;
+        if (ref.kind == PaintRef::Solid) {
+            it.color = ref.color;
+            return true;
+        }
+        const pugi::xml_node server = lookup(ref.id);
+        const std::string_view kind = server ? server.name() : "";
+        if (kind == "linearGradient" || kind == "radialGradient") return gradient(server, path, vw, vh, it);
+        if (!server || ref.fallback != PaintRef::None) {
+            if (ref.fallback == PaintRef::Solid) {
+                it.color = ref.fallback_color;
+                return true;
+            }
+            if (!server) warn("paint server '#" + ref.id + "' not found; painted as none");
+            return false;
+        }
+        warn("<" + std::string(kind) + "> paint servers are not supported yet; painted as none");
+        return false;
+    }
+
+    // A linearGradient or radialGradient with its href chain: attributes come from the first
+    // element of the chain that has them, stops from the first that has any.
+    bool gradient(const pugi::xml_node& node, const Path& path, double vw, double vh, Item& it) {
+        std::vector<pugi::xml_node> chain{node};
+        while (chain.size() < 32) {
+            const char* h = href(chain.back());
+            if (*h != '#') break;
+            const pugi::xml_node next = lookup(h + 1);
+            const std::string_view nk = next ? next.name() : "";
+            if (nk != "linearGradient" && nk != "radialGradient") break;
+            if (std::find(chain.begin(), chain.end(), next) != chain.end()) break;  // a cycle ends the chain
+            chain.push_back(next);
+        }
+        const std::string_view kind = node.name();
+        auto attr = [&](const char* name, bool same_kind_only) -> std::string_view {
+            for (const pugi::xml_node& n : chain) {
+                if (same_kind_only && std::string_view(n.name()) != kind) continue;
+                if (const char* v = n.attribute(name).value(); *v) return v;
+            }
+            return {};
+        };
+        // Stops.
+        std::vector<GradientStop> stops;
+        for (const pugi::xml_node& n : chain) {
+            for (const pugi::xml_node& s : n.children("stop")) {
+                GradientStop st;
+                std::string_view off = trim(s.attribute("offset").value());
+                double o = 0;
+                if (!off.empty() && off.back() == '%') {
+                    if (auto v = parse_number(off.substr(0, off.size() - 1))) o = *v / 100;
+                } else if (auto v = parse_number(off)) {
+                    o = *v;
+                }
+                st.offset = std::clamp(o, 0.0, 1.0);
+                if (!stops.empty()) st.offset = std::max(st.offset, stops.back().offset);
+                Color color = Color::black();
+                double opacity = 1;
+                for (const auto& [k, v] : properties(s)) {
+                    std::string val(trim(v));
+                    // stop-color and stop-opacity are not inherited: `inherit` takes the parent's
+                    // own value, or the initial one.
+                    if (val == "inherit") val = k == "stop-color" || k == "stop-opacity" ? own_property(s.parent(), k) : "";
+                    if (k == "stop-color" && !val.empty()) {
+                        if (val == "currentColor") val = inherited(s, "color");
+                        try { color = parse_color(val.empty() ? "black" : val); } catch (const Error&) { warn("invalid stop-color '" + v + "'"); }
+                    } else if (k == "stop-opacity") {
+                        if (auto op = parse_opacity(val)) opacity = *op;
+                    }
+                }
+                st.color = color.with_opacity(opacity);
+                stops.push_back(st);
+            }
+            if (!stops.empty()) break;
+        }
+        if (stops.empty()) return false;  // no stops: painted as none
+        if (stops.size() == 1) {
+            it.color = stops.front().color;
+            return true;
+        }
+        const bool bbox_units = attr("gradientUnits", false) != "userSpaceOnUse";
+        Affine gt;
+        if (const std::string_view t = attr("gradientTransform", false); !t.empty()) {
+            try {
+                gt = parse_svg_transform(t);
+                if (!gt.inverse()) gt = Affine{};  // a singular gradientTransform is ignored
+            } catch (const Error&) {
+                warn("invalid gradientTransform; ignored");
+            }
+        }
+        SpreadMethod spread = SpreadMethod::Pad;
+        if (const std::string_view sm = attr("spreadMethod", false); sm == "reflect") spread = SpreadMethod::Reflect;
+        else if (sm == "repeat") spread = SpreadMethod::Repeat;
+        const double diag = std::sqrt((vw * vw + vh * vh) / 2);
+        auto coord = [&](const char* name, double percent_of, double fallback) {
+            const std::string_view v = attr(name, true);
+            if (v.empty()) return fallback;
+            auto l = parse_length(v, bbox_units ? 1.0 : percent_of);
+            return l ? *l : fallback;
+        };
+        Affine units;
+        if (bbox_units) {
+            const Rect b = path.bounds();
+            if (!(b.width() > 0) || !(b.height() > 0)) return false;  // objectBoundingBox of a zero-size box
+            units = Affine::translate(b.x0, b.y0) * Affine::scale(b.width(), b.height());
+        }
+        if (kind == "linearGradient") {
+            const Point p0{coord("x1", vw, 0), coord("y1", vh, 0)};
+            const Point p1{coord("x2", vw, bbox_units ? 1.0 : vw), coord("y2", vh, 0)};
+            it.shader = std::make_shared<const Shader>(Shader::linear(p0, p1, std::move(stops), spread, units * gt));
+            return true;
+        }
+        const double half_w = bbox_units ? 0.5 : vw / 2, half_h = bbox_units ? 0.5 : vh / 2;
+        const double cx = coord("cx", vw, half_w), cy = coord("cy", vh, half_h);
+        // A negative radius is invalid and falls back to the default.
+        double r = coord("r", diag, bbox_units ? 0.5 : diag / 2);
+        if (r < 0) r = bbox_units ? 0.5 : diag / 2;
+        const double fx = coord("fx", vw, cx), fy = coord("fy", vh, cy);
+        const double fr = std::max(0.0, coord("fr", diag, 0));
+        it.shader = std::make_shared<const Shader>(Shader::radial({cx, cy}, r, {fx, fy}, fr, std::move(stops), spread, units * gt));
+        return true;
+    }
+
     void walk(const pugi::xml_node& node, Style st, const Affine& m, double vw, double vh, int depth) {
         if (depth > limits::kMaxNestingDepth)
             throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
@@ -288,9 +491,9 @@ public:
             if (name == "g" || name == "a" || name == "switch") {
                 if (opacity <= 0) continue;
                 const bool layer = opacity < 1;
-                if (layer) items.push_back({Item::BeginLayer, {}, {}, {}, FillRule::NonZero, opacity, {}});
+                if (layer) items.push_back(layer_item(Item::BeginLayer, opacity));
                 walk(child, cst, cm, vw, vh, depth + 1);
-                if (layer) items.push_back({Item::EndLayer, {}, {}, {}, FillRule::NonZero, opacity, {}});
+                if (layer) items.push_back(layer_item(Item::EndLayer, opacity));
                 continue;
             }
             if (name == "svg") {
@@ -306,23 +509,22 @@ public:
             }
             if (p->empty()) continue;
             // A line has no interior; a polyline fills like a polygon (closed implicitly).
-            if (cst.fill && name != "line") {
-                Item it;
-                it.kind = Item::Fill;
-                it.path = *p;
-                it.transform = cm;
-                it.color = *cst.fill;
-                it.rule = cst.fill_rule;
-                it.opacity = cst.fill_opacity * opacity;
-                items.push_back(std::move(it));
+            Item fill_item;
+            if (name != "line" && resolve_paint(cst.fill, *p, vw, vh, fill_item)) {
+                fill_item.kind = Item::Fill;
+                fill_item.path = *p;
+                fill_item.transform = cm;
+                fill_item.rule = cst.fill_rule;
+                fill_item.opacity = cst.fill_opacity * opacity;
+                items.push_back(std::move(fill_item));
             }
-            if (!cst.stroke || !(cst.stroke_style.width > 0)) continue;
+            if (!(cst.stroke_style.width > 0)) continue;
             Item it;
+            if (!resolve_paint(cst.stroke, *p, vw, vh, it)) continue;
             it.kind = Item::Stroke;
             it.stroke = cst.stroke_style;
             it.path = std::move(*p);
             it.transform = cm;
-            it.color = *cst.stroke;
             it.opacity = cst.stroke_opacity * opacity;
             items.push_back(std::move(it));
             continue;
@@ -463,6 +665,7 @@ SvgDocument SvgDocument::parse(std::string_view text) {
     impl->view = view;
 
     Reader reader;
+    reader.index_ids(root);
     Style st;
     reader.apply_style(root, st);
     Affine root_m = view;
@@ -521,6 +724,7 @@ void SvgDocument::render(Canvas& canvas, const Affine& base) const {
             continue;
         }
         Paint paint = Paint::solid(it.color);
+        paint.shader = it.shader;
         paint.opacity = it.opacity;
         const Affine saved = cur->transform();
         cur->set_transform(base * it.transform);

@@ -74,6 +74,10 @@ bool Shader::parameter(Point p, double& t) const {
         t = ((p.x - p0_.x) * dx + (p.y - p0_.y) * dy) / len2;
         return true;
     }
+    if (r1_ == 0) {
+        t = 1;  // a zero end radius paints the last stop everywhere (SVG)
+        return true;
+    }
     // |p - c(t)| = r(t) with c(t) = f + t (c - f), r(t) = r0 + t (r1 - r0):
     // a t^2 - 2 b t + k = 0, a = |c - f|^2 - dr^2, b = (p - f).(c - f) + r0 dr, k = |p - f|^2 - r0^2.
     const double cdx = p1_.x - p0_.x, cdy = p1_.y - p0_.y, dr = r1_ - r0_;
@@ -84,7 +88,11 @@ bool Shader::parameter(Point p, double& t) const {
     auto radius_ok = [&](double u) { return r0_ + u * dr >= 0; };
     const double scale = cdx * cdx + cdy * cdy + dr * dr + r0_ * r0_ + 1e-300;
     if (std::fabs(a) <= 1e-9 * scale) {
-        if (b == 0) return false;
+        if (b == 0) {
+            // Concentric circles of one radius: inside them takes the first stop.
+            t = 0;
+            return k <= 0;
+        }
         t = k / (2 * b);
         return radius_ok(t);
     }
@@ -99,7 +107,7 @@ bool Shader::parameter(Point p, double& t) const {
 }
 
 void Shader::color_at(double t, float rgba[4]) const {
-    const bool constant = (kind_ == Kind::Linear && p0_ == p1_) || (kind_ == Kind::Radial && r1_ == 0 && r0_ == 0);
+    const bool constant = (kind_ == Kind::Linear && p0_ == p1_) || (kind_ == Kind::Radial && r1_ == 0);
     const double u = constant ? 1.0 : spread_t(t, spread_);
     auto put = [&](const Color& c) {
         rgba[0] = c.r / 255.0f;
