@@ -10,6 +10,7 @@
 // Thread-safety: SvgDocument is an immutable value after parsing; render from any thread.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -20,6 +21,13 @@
 #include "casteljau/paint.hpp"
 
 namespace casteljau {
+
+namespace limits {
+// Elements drawn or expanded while reading one document, counting every copy a <use> makes:
+// nested uses can multiply to billions (a "use bomb"); past this the document is refused with
+// Error(Limit).
+inline constexpr std::size_t kMaxSvgElements = 1'000'000;
+}  // namespace limits
 
 class SvgDocument {
 public:

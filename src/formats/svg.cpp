@@ -26,7 +26,7 @@ namespace casteljau {
 namespace {
 
 struct Item {
-    enum Kind { Fill, Stroke, BeginLayer, EndLayer } kind = Fill;
+    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip } kind = Fill;
     Path path;          // user space
     Affine transform;   // user space -> document pixel space
     Color color;
@@ -61,6 +61,7 @@ struct Style {
     PaintRef stroke;  // none (the SVG default)
     double stroke_opacity = 1;
     StrokeStyle stroke_style;
+    bool visible = true;  // visibility (inherited)
 };
 
 std::string_view trim(std::string_view s) {
@@ -115,6 +116,61 @@ std::optional<double> parse_opacity(std::string_view text) {
     auto v = parse_number(text);
     if (!v) return std::nullopt;
     return std::clamp(*v, 0.0, 1.0);
+}
+
+// A viewBox "x y w h" (commas or spaces); nullopt when absent or invalid (w or h not positive).
+std::optional<Rect> parse_viewbox(std::string_view text) {
+    if (trim(text).empty()) return std::nullopt;
+    std::string s(text);
+    for (char& c : s)
+        if (c == ',') c = ' ';
+    double n[4];
+    std::size_t pos = 0;
+    for (double& x : n) {
+        while (pos < s.size() && std::isspace(static_cast<unsigned char>(s[pos]))) ++pos;
+        if (pos < s.size() && s[pos] == '+') ++pos;
+        auto r = std::from_chars(s.data() + pos, s.data() + s.size(), x);
+        if (r.ec != std::errc() || !std::isfinite(x)) return std::nullopt;
+        pos = static_cast<std::size_t>(r.ptr - s.data());
+    }
+    if (!(n[2] > 0) || !(n[3] > 0)) return std::nullopt;
+    return Rect::from_xywh(n[0], n[1], n[2], n[3]);
+}
+
+// The viewBox -> viewport (0, 0, w, h) mapping under preserveAspectRatio
+// "[defer] <none | x{Min,Mid,Max}Y{Min,Mid,Max}> [meet | slice]" (default xMidYMid meet; an
+// invalid value is the default).
+Affine viewbox_transform(const Rect& vb, std::string_view par, double w, double h) {
+    std::vector<std::string_view> words;
+    for (std::string_view rest = trim(par); !rest.empty();) {
+        const std::size_t sp = rest.find_first_of(" \t\r\n");
+        words.push_back(rest.substr(0, sp));
+        rest = sp == std::string_view::npos ? std::string_view{} : trim(rest.substr(sp));
+    }
+    if (!words.empty() && words.front() == "defer") words.erase(words.begin());
+    std::string_view align = "xMidYMid";
+    bool slice = false;
+    if (!words.empty()) {
+        const std::string_view a = words[0];
+        const bool ok = a == "none" || (a.size() == 8 && a[0] == 'x' && a[4] == 'Y' &&
+                                        (a.substr(1, 3) == "Min" || a.substr(1, 3) == "Mid" || a.substr(1, 3) == "Max") &&
+                                        (a.substr(5, 3) == "Min" || a.substr(5, 3) == "Mid" || a.substr(5, 3) == "Max"));
+        if (ok && words.size() <= 2 && (words.size() == 1 || words[1] == "meet" || words[1] == "slice")) {
+            align = a;
+            slice = words.size() == 2 && words[1] == "slice";
+        }
+    }
+    const double sx = w / vb.width(), sy = h / vb.height();
+    if (align == "none") return {sx, 0, 0, sy, -vb.x0 * sx, -vb.y0 * sy};
+    const double s = slice ? std::max(sx, sy) : std::min(sx, sy);
+    double tx = -vb.x0 * s, ty = -vb.y0 * s;
+    const double ex = w - vb.width() * s, ey = h - vb.height() * s;
+    const std::string_view xa = align.substr(1, 3), ya = align.substr(5, 3);
+    if (xa == "Mid") tx += ex / 2;
+    else if (xa == "Max") tx += ex;
+    if (ya == "Mid") ty += ey / 2;
+    else if (ya == "Max") ty += ey;
+    return {s, 0, 0, s, tx, ty};
 }
 
 class Reader {
@@ -237,6 +293,9 @@ public:
                     }
                     if (!ok) st.stroke_style.dashes.clear();
                 }
+            } else if (k == "visibility") {
+                if (val == "visible") st.visible = true;
+                else if (val == "hidden" || val == "collapse") st.visible = false;
             } else if (k == "stroke-dashoffset") {
                 if (auto l = parse_length(val, 100)) st.stroke_style.dash_offset = *l;
             }
@@ -460,75 +519,196 @@ public:
         return true;
     }
 
-    void walk(const pugi::xml_node& node, Style st, const Affine& m, double vw, double vh, int depth) {
+    // Elements drawn or expanded so far (each `use` copy counts again): the bound on use bombs.
+    std::size_t expanded = 0;
+    // The `use` elements being expanded (innermost last): a use whose target contains one of
+    // them, or is one of them, is a cycle.
+    std::vector<pugi::xml_node> use_stack;
+
+    void walk(const pugi::xml_node& node, const Style& st, const Affine& m, double vw, double vh, int depth) {
         if (depth > limits::kMaxNestingDepth)
             throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
+        const bool is_switch = std::string_view(node.name()) == "switch";
         for (const pugi::xml_node& child : node.children()) {
             if (child.type() != pugi::node_element) continue;
-            const std::string_view name = child.name();
-            if (name == "defs" || name == "title" || name == "desc" || name == "metadata" || name == "style" ||
-                name == "clipPath" || name == "mask" || name == "pattern" || name == "linearGradient" ||
-                name == "radialGradient" || name == "symbol" || name == "marker" || name == "filter")
-                continue;
-            if (std::string_view(child.attribute("display").value()) == "none") continue;
-            Style cst = st;
-            apply_style(child, cst);
-            Affine cm = m;
-            if (const char* t = child.attribute("transform").value(); *t) {
-                try {
-                    cm = m * parse_svg_transform(t);
-                } catch (const Error& e) {
-                    warn(std::string("<") + child.name() + ">: " + e.what() + "; element skipped");
-                    continue;
-                }
-            }
-            double opacity = 1;
-            if (const char* o = child.attribute("opacity").value(); *o)
-                if (auto v = parse_opacity(o)) opacity = *v;
-            for (const auto& [k, v] : properties(child))
-                if (k == "opacity")
-                    if (auto ov = parse_opacity(v)) opacity = *ov;
-            if (name == "g" || name == "a" || name == "switch") {
-                if (opacity <= 0) continue;
-                const bool layer = opacity < 1;
-                if (layer) items.push_back(layer_item(Item::BeginLayer, opacity));
-                walk(child, cst, cm, vw, vh, depth + 1);
-                if (layer) items.push_back(layer_item(Item::EndLayer, opacity));
-                continue;
-            }
-            if (name == "svg") {
-                warn("nested <svg> is not supported yet; skipped");
-                continue;
-            }
-            std::optional<Path> p = shape_path(child, vw, vh);
-            if (!p) {
-                if (name != "path" && name != "rect" && name != "circle" && name != "ellipse" && name != "line" &&
-                    name != "polyline" && name != "polygon")
-                    warn("<" + std::string(name) + "> is not supported; skipped");
-                continue;
-            }
-            if (p->empty()) continue;
-            // A line has no interior; a polyline fills like a polygon (closed implicitly).
-            Item fill_item;
-            if (name != "line" && resolve_paint(cst.fill, *p, vw, vh, fill_item)) {
-                fill_item.kind = Item::Fill;
-                fill_item.path = *p;
-                fill_item.transform = cm;
-                fill_item.rule = cst.fill_rule;
-                fill_item.opacity = cst.fill_opacity * opacity;
-                items.push_back(std::move(fill_item));
-            }
-            if (!(cst.stroke_style.width > 0)) continue;
-            Item it;
-            if (!resolve_paint(cst.stroke, *p, vw, vh, it)) continue;
-            it.kind = Item::Stroke;
-            it.stroke = cst.stroke_style;
-            it.path = std::move(*p);
-            it.transform = cm;
-            it.opacity = cst.stroke_opacity * opacity;
-            items.push_back(std::move(it));
-            continue;
+            if (!conditions_pass(child)) continue;
+            element(child, st, m, vw, vh, depth);
+            if (is_switch && known_element(child.name())) break;  // a switch draws its first passing child only
         }
+    }
+
+    static bool known_element(std::string_view n) {
+        return n == "g" || n == "a" || n == "switch" || n == "svg" || n == "use" || n == "path" || n == "rect" ||
+               n == "circle" || n == "ellipse" || n == "line" || n == "polyline" || n == "polygon" || n == "image" ||
+               n == "text" || n == "foreignObject";
+    }
+
+    // Conditional processing: systemLanguage (the user language is English), requiredExtensions
+    // (none supported); requiredFeatures is always true (SVG 2).
+    static bool conditions_pass(const pugi::xml_node& n) {
+        if (const pugi::xml_attribute ext = n.attribute("requiredExtensions"); ext) return false;
+        if (const pugi::xml_attribute lang = n.attribute("systemLanguage"); lang) {
+            std::string_view v = lang.value();
+            bool any = false;
+            while (!v.empty()) {
+                const std::size_t comma = v.find(',');
+                std::string_view l = trim(v.substr(0, comma));
+                v = comma == std::string_view::npos ? std::string_view{} : v.substr(comma + 1);
+                if (l == "en" || l.substr(0, 3) == "en-") any = true;
+            }
+            if (!any) return false;
+        }
+        return true;
+    }
+
+    // A clip to `r` (user space of `m`) around the items that `draw` adds.
+    template <class F>
+    void clipped(const Rect& r, const Affine& m, F&& draw) {
+        Item push;
+        push.kind = Item::PushClip;
+        push.path.add_rect(r);
+        push.transform = m;
+        items.push_back(std::move(push));
+        draw();
+        Item pop;
+        pop.kind = Item::PopClip;
+        items.push_back(std::move(pop));
+    }
+
+    // A new viewport (nested svg, or a symbol or svg instanced by use) at x, y, w x h in the
+    // user space of `m`, with its viewBox and preserveAspectRatio; clipped unless overflow is
+    // visible or auto.
+    void viewport(const pugi::xml_node& n, const Style& st, const Affine& m, double x, double y, double w, double h,
+                  int depth, bool is_symbol) {
+        if (!(w > 0) || !(h > 0)) return;
+        Affine inner = m * Affine::translate(x, y);
+        double nvw = w, nvh = h;
+        if (auto vb = parse_viewbox(n.attribute("viewBox").value())) {
+            inner = inner * viewbox_transform(*vb, n.attribute("preserveAspectRatio").value(), w, h);
+            nvw = vb->width();
+            nvh = vb->height();
+        }
+        if (is_symbol) {
+            const double rx = length_attr(n, "refX", nvw), ry = length_attr(n, "refY", nvh);
+            inner = inner * Affine::translate(-rx, -ry);
+        }
+        std::string overflow;
+        for (const auto& [k, v] : properties(n))
+            if (k == "overflow") overflow = std::string(trim(v));
+        auto draw = [&] { walk(n, st, inner, nvw, nvh, depth + 1); };
+        if (overflow == "visible" || overflow == "auto") draw();
+        else clipped(Rect::from_xywh(x, y, w, h), m, draw);
+    }
+
+    void use(const pugi::xml_node& u, const Style& st, const Affine& m, double vw, double vh, int depth) {
+        const char* h = href(u);
+        const pugi::xml_node target = *h == '#' ? lookup(h + 1) : pugi::xml_node();
+        if (!target) {
+            if (*h) warn(std::string("<use> target '") + h + "' not found; skipped");
+            return;
+        }
+        // A cycle: the target is the use itself or one of its ancestors, or contains a use being
+        // expanded.
+        for (pugi::xml_node a = u; a; a = a.parent())
+            if (a == target) {
+                warn(std::string("<use> '") + h + "' references itself; skipped");
+                return;
+            }
+        for (const pugi::xml_node& active : use_stack)
+            for (pugi::xml_node a = active; a; a = a.parent())
+                if (a == target) {
+                    warn(std::string("<use> '") + h + "' is part of a reference cycle; skipped");
+                    return;
+                }
+        const double x = length_attr(u, "x", vw), y = length_attr(u, "y", vh);
+        use_stack.push_back(u);
+        const std::string_view tn = target.name();
+        if (tn == "symbol" || tn == "svg") {
+            const pugi::xml_node size_from = u.attribute("width") ? u : target;
+            const pugi::xml_node hsize_from = u.attribute("height") ? u : target;
+            const double w = length_attr(size_from, "width", vw, vw), hh = length_attr(hsize_from, "height", vh, vh);
+            const double tx = tn == "svg" ? length_attr(target, "x", vw) : 0, ty = tn == "svg" ? length_attr(target, "y", vh) : 0;
+            Style tst = st;
+            apply_style(target, tst);
+            viewport(target, tst, m, x + tx, y + ty, w, hh, depth + 1, tn == "symbol");
+        } else {
+            element(target, st, m * Affine::translate(x, y), vw, vh, depth + 1);
+        }
+        use_stack.pop_back();
+    }
+
+    void element(const pugi::xml_node& child, const Style& st, const Affine& m, double vw, double vh, int depth) {
+        if (depth > limits::kMaxNestingDepth)
+            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
+        if (++expanded > limits::kMaxSvgElements)
+            throw Error(ErrorKind::Limit, "SVG expands to more than " + std::to_string(limits::kMaxSvgElements) +
+                                              " elements (nested <use> references)");
+        const std::string_view name = child.name();
+        if (name == "defs" || name == "title" || name == "desc" || name == "metadata" || name == "style" ||
+            name == "clipPath" || name == "mask" || name == "pattern" || name == "linearGradient" ||
+            name == "radialGradient" || name == "symbol" || name == "marker" || name == "filter")
+            return;
+        Style cst = st;
+        apply_style(child, cst);
+        for (const auto& [k, v] : properties(child))
+            if (k == "display" && trim(v) == "none") return;
+        Affine cm = m;
+        if (const char* t = child.attribute("transform").value(); *t) {
+            try {
+                cm = m * parse_svg_transform(t);
+            } catch (const Error& e) {
+                warn(std::string("<") + child.name() + ">: " + e.what() + "; element skipped");
+                return;
+            }
+        }
+        double opacity = 1;
+        for (const auto& [k, v] : properties(child))
+            if (k == "opacity")
+                if (auto ov = parse_opacity(v)) opacity = *ov;
+        const bool container = name == "g" || name == "a" || name == "switch" || name == "svg" || name == "use";
+        if (container) {
+            if (opacity <= 0) return;
+            const bool layer = opacity < 1;
+            if (layer) items.push_back(layer_item(Item::BeginLayer, opacity));
+            if (name == "svg") {
+                const double w = length_attr(child, "width", vw, vw), h = length_attr(child, "height", vh, vh);
+                viewport(child, cst, cm, length_attr(child, "x", vw), length_attr(child, "y", vh), w, h, depth, false);
+            } else if (name == "use") {
+                use(child, cst, cm, vw, vh, depth);
+            } else {
+                walk(child, cst, cm, vw, vh, depth + 1);
+            }
+            if (layer) items.push_back(layer_item(Item::EndLayer, opacity));
+            return;
+        }
+        std::optional<Path> p = shape_path(child, vw, vh);
+        if (!p) {
+            if (name != "path" && name != "rect" && name != "circle" && name != "ellipse" && name != "line" &&
+                name != "polyline" && name != "polygon")
+                warn("<" + std::string(name) + "> is not supported; skipped");
+            return;
+        }
+        if (p->empty()) return;
+        if (!cst.visible) return;
+        // A line has no interior; a polyline fills like a polygon (closed implicitly).
+        Item fill_item;
+        if (name != "line" && resolve_paint(cst.fill, *p, vw, vh, fill_item)) {
+            fill_item.kind = Item::Fill;
+            fill_item.path = *p;
+            fill_item.transform = cm;
+            fill_item.rule = cst.fill_rule;
+            fill_item.opacity = cst.fill_opacity * opacity;
+            items.push_back(std::move(fill_item));
+        }
+        if (!(cst.stroke_style.width > 0)) return;
+        Item it;
+        if (!resolve_paint(cst.stroke, *p, vw, vh, it)) return;
+        it.kind = Item::Stroke;
+        it.stroke = cst.stroke_style;
+        it.path = std::move(*p);
+        it.transform = cm;
+        it.opacity = cst.stroke_opacity * opacity;
+        items.push_back(std::move(it));
     }
 };
 
@@ -599,24 +779,9 @@ SvgDocument SvgDocument::parse(std::string_view text) {
     if (std::string_view(root.name()) != "svg")
         throw Error(ErrorKind::InvalidData, std::string("root element is <") + root.name() + ">, expected <svg>");
 
-    // viewBox
-    std::optional<Rect> vb;
-    if (const char* v = root.attribute("viewBox").value(); *v) {
-        std::string s = v;
-        for (char& c : s)
-            if (c == ',') c = ' ';
-        double n[4];
-        std::size_t pos = 0;
-        bool ok = true;
-        for (double& x : n) {
-            while (pos < s.size() && std::isspace(static_cast<unsigned char>(s[pos]))) ++pos;
-            auto r = std::from_chars(s.data() + pos, s.data() + s.size(), x);
-            if (r.ec != std::errc() || !std::isfinite(x)) { ok = false; break; }
-            pos = static_cast<std::size_t>(r.ptr - s.data());
-        }
-        if (ok && n[2] > 0 && n[3] > 0) vb = Rect::from_xywh(n[0], n[1], n[2], n[3]);
-        else impl->warnings.push_back(std::string("invalid viewBox '") + v + "' ignored");
-    }
+    const char* vb_text = root.attribute("viewBox").value();
+    const std::optional<Rect> vb = parse_viewbox(vb_text);
+    if (!vb && *vb_text) impl->warnings.push_back(std::string("invalid viewBox '") + vb_text + "' ignored");
     auto root_length = [&](const char* name, double vb_size) -> std::optional<double> {
         const char* v = root.attribute(name).value();
         if (!*v) return std::nullopt;
@@ -646,21 +811,7 @@ SvgDocument SvgDocument::parse(std::string_view text) {
     if (vb) {
         vw = vb->width();
         vh = vb->height();
-        std::string par = root.attribute("preserveAspectRatio").value();
-        double sx = *w / vb->width(), sy = *h / vb->height();
-        if (par.find("none") == std::string::npos) {
-            const bool slice = par.find("slice") != std::string::npos;
-            const double s = slice ? std::max(sx, sy) : std::min(sx, sy);
-            double tx = -vb->x0 * s, ty = -vb->y0 * s;
-            const double ex = *w - vb->width() * s, ey = *h - vb->height() * s;
-            if (par.find("xMid") != std::string::npos || par.empty()) tx += ex / 2;
-            else if (par.find("xMax") != std::string::npos) tx += ex;
-            if (par.find("YMid") != std::string::npos || par.empty()) ty += ey / 2;
-            else if (par.find("YMax") != std::string::npos) ty += ey;
-            view = {s, 0, 0, s, tx, ty};
-        } else {
-            view = {sx, 0, 0, sy, -vb->x0 * sx, -vb->y0 * sy};
-        }
+        view = viewbox_transform(*vb, root.attribute("preserveAspectRatio").value(), *w, *h);
     }
     impl->view = view;
 
@@ -693,6 +844,18 @@ void SvgDocument::render(Canvas& canvas, const Affine& base) const {
             cur = &canvases.back();
             continue;
         }
+        if (it.kind == Item::PushClip) {
+            cur->save();
+            const Affine saved = cur->transform();
+            cur->set_transform(base * it.transform);
+            cur->clip_rect(it.path.bounds());
+            cur->set_transform(saved);
+            continue;
+        }
+        if (it.kind == Item::PopClip) {
+            cur->restore();
+            continue;
+        }
         if (it.kind == Item::EndLayer) {
             if (layers.empty()) continue;
             Pixmap layer = std::move(layers.back());
@@ -704,10 +867,11 @@ void SvgDocument::render(Canvas& canvas, const Affine& base) const {
             // Source-over of the layer scaled by the group opacity.
             Pixmap& dst = cur->target();
             const unsigned o = static_cast<unsigned>(std::lround(op * 255));
-            for (int y = 0; y < dst.height(); ++y) {
-                const std::uint8_t* s = layer.row(y);
-                std::uint8_t* d = dst.row(y);
-                for (int x = 0; x < dst.width(); ++x, s += 4, d += 4) {
+            const IRect clip = cur->clip();
+            for (int y = clip.y0; y < clip.y1; ++y) {
+                const std::uint8_t* s = layer.row(y) + 4 * static_cast<std::size_t>(clip.x0);
+                std::uint8_t* d = dst.row(y) + 4 * static_cast<std::size_t>(clip.x0);
+                for (int x = clip.x0; x < clip.x1; ++x, s += 4, d += 4) {
                     if (s[3] == 0) continue;
                     unsigned sc[4];
                     for (int k = 0; k < 4; ++k) {
