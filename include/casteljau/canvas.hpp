@@ -39,6 +39,16 @@ void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage,
 // Source-over of per-pixel premultiplied RGBA8 colours `src` x coverage onto one row.
 void composite_span_premul(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src);
 
+// Layers and masks (src/canvas/layer.cpp): a group with opacity, a clip path or a mask is drawn
+// into a transparent layer of the target's size, multiplied by coverage masks, and composited once.
+// A8 coverage of a layer: its alpha channel (clip paths, mask-type alpha)...
+Mask mask_from_alpha(const Pixmap& layer);
+// ...or the luminance 0.2125 R + 0.7154 G + 0.0721 B of its premultiplied colour, i.e. the
+// colour's luminance times its alpha (luminance masks, sRGB values).
+Mask mask_from_luminance(const Pixmap& layer);
+// Multiplies every channel of `layer` by the mask's coverage (0 outside the mask's bounds).
+void apply_mask(Pixmap& layer, const Mask& mask);
+
 class Canvas {
 public:
     explicit Canvas(Pixmap& target);
@@ -70,6 +80,10 @@ public:
     // Composites an A8 mask (pixel space, the current transform is not applied to the mask; it
     // is to a shader's coordinates) with `paint`.
     void fill_mask(const Mask& mask, const Paint& paint);
+
+    // Source-over of `layer` (same size as the target, pixel space) times `opacity`, inside the
+    // current clip rectangle.
+    void draw_layer(const Pixmap& layer, double opacity = 1.0);
 
     Rasterizer& rasterizer() { return raster_; }
 

@@ -26,7 +26,8 @@ namespace casteljau {
 namespace {
 
 struct Item {
-    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip } kind = Fill;
+    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask } kind = Fill;
+    bool luminance = false;  // BeginMask: luminance (true) or alpha mask
     Path path;          // user space
     Affine transform;   // user space -> document pixel space
     Color color;
@@ -637,6 +638,202 @@ public:
         use_stack.pop_back();
     }
 
+    // clip-path and mask references being expanded: a reference back to one of them is a cycle.
+    std::vector<pugi::xml_node> active_refs;
+
+    bool is_active(const pugi::xml_node& n) const {
+        return std::find(active_refs.begin(), active_refs.end(), n) != active_refs.end();
+    }
+
+    // The element a clip-path or mask property (url(#id), not inherited) names; `missing` is set
+    // when it names nothing of kind `want`.
+    pugi::xml_node reference(const pugi::xml_node& n, const char* property, std::string_view want, bool& missing) {
+        std::string value;
+        for (const auto& [k, v] : properties(n))
+            if (k == property) value = std::string(trim(v));
+        if (value.empty() || value == "none" || value.substr(0, 4) != "url(") return {};
+        const std::size_t close = value.find(')');
+        std::string_view ref = trim(std::string_view(value).substr(4, close == std::string::npos ? std::string::npos : close - 4));
+        if (ref.size() >= 2 && (ref.front() == '\'' || ref.front() == '"')) ref = ref.substr(1, ref.size() - 2);
+        const pugi::xml_node target = !ref.empty() && ref.front() == '#' ? lookup(ref.substr(1)) : pugi::xml_node();
+        if (!target || std::string_view(target.name()) != want) {
+            missing = true;
+            return {};
+        }
+        return target;
+    }
+
+    // Bounding box, in the user space of `m`, of the fills and strokes among items[first..]
+    // (leaving out the content of clips and masks); the path geometry, not the stroke outline.
+    std::optional<Rect> items_bbox(std::size_t first, const Affine& m) const {
+        const auto inv = m.inverse();
+        if (!inv) return std::nullopt;
+        std::optional<Rect> box;
+        int hidden = 0;
+        for (std::size_t i = first; i < items.size(); ++i) {
+            const Item& it = items[i];
+            if (it.kind == Item::BeginClip || it.kind == Item::BeginMask) ++hidden;
+            else if (it.kind == Item::EndMask) --hidden;
+            else if (hidden == 0 && (it.kind == Item::Fill || it.kind == Item::Stroke)) {
+                const Rect b = transform_bounds(*inv * it.transform, it.path.bounds());
+                box = box ? box->united(b) : b;
+            }
+        }
+        return box;
+    }
+
+    // A clipPath's children drawn as opaque coverage into a mask layer that multiplies the
+    // enclosing layer. clipPathUnits objectBoundingBox maps 0..1 onto `box`.
+    void emit_clip(const pugi::xml_node& clip, const Affine& cm, const std::optional<Rect>& box, double vw, double vh, int depth) {
+        active_refs.push_back(clip);
+        Item begin;
+        begin.kind = Item::BeginClip;
+        items.push_back(std::move(begin));
+        Affine m = cm;
+        bool ok = true;
+        if (const char* t = clip.attribute("transform").value(); *t) {
+            try {
+                m = m * parse_svg_transform(t);
+            } catch (const Error&) {
+                ok = false;  // an invalid transform clips everything away
+            }
+        }
+        if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
+            if (!box || !(box->width() > 0) || !(box->height() > 0)) ok = false;
+            else m = m * Affine::translate(box->x0, box->y0) * Affine::scale(box->width(), box->height());
+        }
+        bool inner_missing = false;
+        const pugi::xml_node inner = reference(clip, "clip-path", "clipPath", inner_missing);
+        if (inner && is_active(inner)) ok = false;
+        if (ok) {
+            if (inner) items.push_back(layer_item(Item::BeginLayer, 1));
+            FillRule rule = FillRule::NonZero;
+            for (const auto& [k, v] : properties(clip))
+                if (k == "clip-rule") rule = trim(v) == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
+            for (const pugi::xml_node& c : clip.children())
+                if (c.type() == pugi::node_element) clip_child(c, c, m, rule, vw, vh, depth + 1);
+            if (inner) {
+                emit_clip(inner, cm, box, vw, vh, depth + 1);
+                items.push_back(layer_item(Item::EndLayer, 1));
+            }
+        }
+        Item end;
+        end.kind = Item::EndMask;
+        items.push_back(std::move(end));
+        active_refs.pop_back();
+    }
+
+    // One child of a clipPath: a shape (or a use of a shape), its own transform, clip-rule and
+    // clip-path; fill, stroke and opacity have no effect.
+    void clip_child(const pugi::xml_node& c, const pugi::xml_node& props, const Affine& m, FillRule rule, double vw, double vh, int depth) {
+        if (depth > limits::kMaxNestingDepth)
+            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
+        if (++expanded > limits::kMaxSvgElements)
+            throw Error(ErrorKind::Limit, "SVG expands to more than " + std::to_string(limits::kMaxSvgElements) + " elements");
+        if (!conditions_pass(c)) return;
+        bool visible = true;
+        for (const auto& [k, v] : properties(c)) {
+            const std::string_view val = trim(v);
+            if (k == "display" && val == "none") return;
+            if (k == "visibility") visible = val == "visible";
+            if (k == "clip-rule") rule = val == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
+        }
+        if (!visible) return;
+        Affine cm = m;
+        if (const char* t = c.attribute("transform").value(); *t) {
+            try {
+                cm = m * parse_svg_transform(t);
+            } catch (const Error&) {
+                return;
+            }
+        }
+        const std::string_view name = c.name();
+        if (name == "use") {
+            const char* h = href(c);
+            const pugi::xml_node target = *h == '#' ? lookup(h + 1) : pugi::xml_node();
+            if (!target || is_active(target)) return;
+            const std::string_view tn = target.name();
+            if (tn != "path" && tn != "rect" && tn != "circle" && tn != "ellipse" && tn != "polyline" && tn != "polygon" &&
+                tn != "text")
+                return;  // only shapes may be used inside a clipPath
+            active_refs.push_back(target);
+            clip_child(target, c, cm * Affine::translate(length_attr(c, "x", vw), length_attr(c, "y", vh)), rule, vw, vh, depth + 1);
+            active_refs.pop_back();
+            return;
+        }
+        (void)props;
+        std::optional<Path> p = shape_path(c, vw, vh);
+        if (!p || p->empty() || name == "line") return;
+        bool missing = false;
+        const pugi::xml_node own = reference(c, "clip-path", "clipPath", missing);
+        if (own && is_active(own)) return;
+        if (own) items.push_back(layer_item(Item::BeginLayer, 1));
+        Item it;
+        it.kind = Item::Fill;
+        it.color = Color::black();
+        it.rule = rule;
+        it.transform = cm;
+        const Rect b = p->bounds();
+        it.path = std::move(*p);
+        items.push_back(std::move(it));
+        if (own) {
+            emit_clip(own, cm, b, vw, vh, depth + 1);
+            items.push_back(layer_item(Item::EndLayer, 1));
+        }
+    }
+
+    // A mask's content drawn into a mask layer (luminance, or alpha with mask-type="alpha"),
+    // clipped to the mask region, that multiplies the enclosing layer.
+    void emit_mask(const pugi::xml_node& mask, const Affine& cm, const std::optional<Rect>& box, double vw, double vh, int depth) {
+        active_refs.push_back(mask);
+        Item begin;
+        begin.kind = Item::BeginMask;
+        std::string type;
+        for (const auto& [k, v] : properties(mask))
+            if (k == "mask-type") type = std::string(trim(v));
+        begin.luminance = type != "alpha";
+        items.push_back(std::move(begin));
+        const bool bbox_units = std::string_view(mask.attribute("maskUnits").value()) != "userSpaceOnUse";
+        const bool content_bbox = std::string_view(mask.attribute("maskContentUnits").value()) == "objectBoundingBox";
+        const bool have_box = box && box->width() > 0 && box->height() > 0;
+        if (have_box || (!bbox_units && !content_bbox)) {
+            Rect region;
+            auto frac = [&](const char* name, double fallback) {
+                const char* v = mask.attribute(name).value();
+                if (!*v) return fallback;
+                auto l = parse_length(v, 1.0);
+                return l ? *l : fallback;
+            };
+            if (bbox_units) {
+                region = Rect::from_xywh(box->x0 + frac("x", -0.1) * box->width(), box->y0 + frac("y", -0.1) * box->height(),
+                                         frac("width", 1.2) * box->width(), frac("height", 1.2) * box->height());
+            } else {
+                region = Rect::from_xywh(length_attr(mask, "x", vw, -0.1 * vw), length_attr(mask, "y", vh, -0.1 * vh),
+                                         length_attr(mask, "width", vw, 1.2 * vw), length_attr(mask, "height", vh, 1.2 * vh));
+            }
+            if (region.width() > 0 && region.height() > 0) {
+                Affine content_m = cm;
+                if (content_bbox) content_m = cm * Affine::translate(box->x0, box->y0) * Affine::scale(box->width(), box->height());
+                bool inner_missing = false;
+                const pugi::xml_node inner = reference(mask, "mask", "mask", inner_missing);
+                const bool inner_ok = inner && !is_active(inner);
+                clipped(region, cm, [&] {
+                    if (inner_ok) items.push_back(layer_item(Item::BeginLayer, 1));
+                    Style st;
+                    walk(mask, st, content_m, vw, vh, depth + 1);
+                    if (inner_ok) {
+                        emit_mask(inner, cm, box, vw, vh, depth + 1);
+                        items.push_back(layer_item(Item::EndLayer, 1));
+                    }
+                });
+            }
+        }
+        Item end;
+        end.kind = Item::EndMask;
+        items.push_back(std::move(end));
+        active_refs.pop_back();
+    }
+
     void element(const pugi::xml_node& child, const Style& st, const Affine& m, double vw, double vh, int depth) {
         if (depth > limits::kMaxNestingDepth)
             throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
@@ -665,9 +862,31 @@ public:
         for (const auto& [k, v] : properties(child))
             if (k == "opacity")
                 if (auto ov = parse_opacity(v)) opacity = *ov;
+        if (opacity <= 0) return;
+        bool clip_missing = false, mask_missing = false;
+        const pugi::xml_node clip = reference(child, "clip-path", "clipPath", clip_missing);
+        const pugi::xml_node mask = reference(child, "mask", "mask", mask_missing);
+        if (mask_missing) return;  // a mask that does not exist hides the element
+        if ((clip && is_active(clip)) || (mask && is_active(mask))) {
+            warn(std::string("<") + child.name() + ">: recursive clip-path or mask; element not drawn");
+            return;
+        }
+        const bool layered = opacity < 1 || clip || mask;
+        const std::size_t first = items.size();
+        if (layered) items.push_back(layer_item(Item::BeginLayer, opacity));
+        content(child, cst, cm, vw, vh, depth, layered ? 1.0 : opacity);
+        if (layered) {
+            const std::optional<Rect> box = items_bbox(first + 1, cm);
+            if (clip) emit_clip(clip, cm, box, vw, vh, depth);
+            if (mask) emit_mask(mask, cm, box, vw, vh, depth);
+            items.push_back(layer_item(Item::EndLayer, opacity));
+        }
+    }
+
+    void content(const pugi::xml_node& child, const Style& cst, const Affine& cm, double vw, double vh, int depth, double opacity) {
+        const std::string_view name = child.name();
         const bool container = name == "g" || name == "a" || name == "switch" || name == "svg" || name == "use";
         if (container) {
-            if (opacity <= 0) return;
             const bool layer = opacity < 1;
             if (layer) items.push_back(layer_item(Item::BeginLayer, opacity));
             if (name == "svg") {
@@ -828,73 +1047,67 @@ SvgDocument SvgDocument::parse(std::string_view text) {
 }
 
 void SvgDocument::render(Canvas& canvas, const Affine& base) const {
-    // Layers for group opacity: each is a transparent pixmap the size of the target.
-    std::vector<Pixmap> layers;
-    std::vector<Canvas> canvases;
-    canvases.reserve(static_cast<std::size_t>(limits::kMaxNestingDepth) + 1);
-    layers.reserve(static_cast<std::size_t>(limits::kMaxNestingDepth) + 1);
-    Canvas* cur = &canvas;
-    std::vector<double> layer_opacity;
+    // Layers: groups with opacity, clip paths or masks (BeginLayer .. EndLayer), and the content of
+    // clip paths and masks (BeginClip/BeginMask .. EndMask), which becomes a coverage mask that
+    // multiplies the layer it closes in.
+    struct Frame {
+        Pixmap pm;
+        Canvas canvas;
+        double opacity = 1;
+        bool luminance = false;
+        Frame(int w, int h) : pm(w, h), canvas(pm) {}
+    };
+    std::vector<std::unique_ptr<Frame>> frames;
+    auto cur = [&]() -> Canvas& { return frames.empty() ? canvas : frames.back()->canvas; };
     for (const Item& it : impl_->items) {
-        if (it.kind == Item::BeginLayer) {
-            layers.emplace_back(canvas.width(), canvas.height());
-            canvases.emplace_back(layers.back());
-            canvases.back().fill_options() = canvas.fill_options();
-            layer_opacity.push_back(it.opacity);
-            cur = &canvases.back();
-            continue;
-        }
-        if (it.kind == Item::PushClip) {
-            cur->save();
-            const Affine saved = cur->transform();
-            cur->set_transform(base * it.transform);
-            cur->clip_rect(it.path.bounds());
-            cur->set_transform(saved);
-            continue;
-        }
-        if (it.kind == Item::PopClip) {
-            cur->restore();
-            continue;
-        }
-        if (it.kind == Item::EndLayer) {
-            if (layers.empty()) continue;
-            Pixmap layer = std::move(layers.back());
-            layers.pop_back();
-            canvases.pop_back();
-            const double op = layer_opacity.back();
-            layer_opacity.pop_back();
-            cur = canvases.empty() ? &canvas : &canvases.back();
-            // Source-over of the layer scaled by the group opacity.
-            Pixmap& dst = cur->target();
-            const unsigned o = static_cast<unsigned>(std::lround(op * 255));
-            const IRect clip = cur->clip();
-            for (int y = clip.y0; y < clip.y1; ++y) {
-                const std::uint8_t* s = layer.row(y) + 4 * static_cast<std::size_t>(clip.x0);
-                std::uint8_t* d = dst.row(y) + 4 * static_cast<std::size_t>(clip.x0);
-                for (int x = clip.x0; x < clip.x1; ++x, s += 4, d += 4) {
-                    if (s[3] == 0) continue;
-                    unsigned sc[4];
-                    for (int k = 0; k < 4; ++k) {
-                        const unsigned t = s[k] * o + 128;
-                        sc[k] = (t + (t >> 8)) >> 8;
-                    }
-                    const unsigned inv = 255 - sc[3];
-                    for (int k = 0; k < 4; ++k) {
-                        const unsigned t = d[k] * inv + 128;
-                        d[k] = static_cast<std::uint8_t>(sc[k] + ((t + (t >> 8)) >> 8));
-                    }
-                }
+        switch (it.kind) {
+            case Item::BeginLayer:
+            case Item::BeginClip:
+            case Item::BeginMask: {
+                frames.push_back(std::make_unique<Frame>(canvas.width(), canvas.height()));
+                frames.back()->canvas.fill_options() = canvas.fill_options();
+                frames.back()->opacity = it.opacity;
+                frames.back()->luminance = it.kind == Item::BeginMask && it.luminance;
+                continue;
             }
-            continue;
+            case Item::EndLayer: {
+                if (frames.empty()) continue;
+                std::unique_ptr<Frame> f = std::move(frames.back());
+                frames.pop_back();
+                cur().draw_layer(f->pm, f->opacity);
+                continue;
+            }
+            case Item::EndMask: {
+                if (frames.size() < 2) continue;
+                std::unique_ptr<Frame> f = std::move(frames.back());
+                frames.pop_back();
+                apply_mask(frames.back()->pm, f->luminance ? mask_from_luminance(f->pm) : mask_from_alpha(f->pm));
+                continue;
+            }
+            case Item::PushClip: {
+                Canvas& c = cur();
+                c.save();
+                const Affine saved = c.transform();
+                c.set_transform(base * it.transform);
+                c.clip_rect(it.path.bounds());
+                c.set_transform(saved);
+                continue;
+            }
+            case Item::PopClip:
+                cur().restore();
+                continue;
+            case Item::Fill:
+            case Item::Stroke: break;
         }
+        Canvas& c = cur();
         Paint paint = Paint::solid(it.color);
         paint.shader = it.shader;
         paint.opacity = it.opacity;
-        const Affine saved = cur->transform();
-        cur->set_transform(base * it.transform);
-        if (it.kind == Item::Stroke) cur->stroke_path(it.path, it.stroke, paint);
-        else cur->fill_path(it.path, paint, it.rule);
-        cur->set_transform(saved);
+        const Affine saved = c.transform();
+        c.set_transform(base * it.transform);
+        if (it.kind == Item::Stroke) c.stroke_path(it.path, it.stroke, paint);
+        else c.fill_path(it.path, paint, it.rule);
+        c.set_transform(saved);
     }
 }
 
