@@ -87,3 +87,15 @@ TEST_CASE("svg: 10,000 nested groups are refused with a limit error, not a crash
         CHECK(e.kind() == ErrorKind::Limit);
     }
 }
+
+TEST_CASE("svg transform-origin: the transform turns about the origin given", "[svg]") {
+    // scale(0.5) about the centre of a 20x20 viewport keeps the square centred: 5..15.
+    const Pixmap pm = doc("<rect width='20' height='20' fill='green' transform='scale(0.5)' transform-origin='center'/>").render();
+    CHECK(pm.pixel(10, 10) == kGreen);
+    CHECK(pm.pixel(6, 6) == kGreen);
+    CHECK(pm.pixel(3, 3).a == 0);
+    CHECK(pm.pixel(16, 16).a == 0);
+    const Pixmap px = doc("<rect width='20' height='20' fill='green' transform='scale(0.5)' transform-origin='20px 0'/>").render();
+    CHECK(px.pixel(15, 5) == kGreen);
+    CHECK(px.pixel(5, 5).a == 0);
+}

@@ -483,6 +483,7 @@ public:
             try {
                 gt = parse_svg_transform(t);
                 if (!gt.inverse()) gt = Affine{};  // a singular gradientTransform is ignored
+                gt = bbox_units ? with_origin(node, gt, 1, 1) : with_origin(node, gt, vw, vh);
             } catch (const Error&) {
                 warn("invalid gradientTransform; ignored");
             }
@@ -574,6 +575,50 @@ public:
         Item pop;
         pop.kind = Item::PopClip;
         items.push_back(std::move(pop));
+    }
+
+    // transform-origin ("x [y]": lengths, percentages of the viewport, or the keywords left,
+    // center, right, top, bottom in either order) wrapped around a transform `t`:
+    // translate(origin) * t * translate(-origin).
+    Affine with_origin(const pugi::xml_node& n, const Affine& t, double vw, double vh) {
+        std::string value;
+        for (const auto& [k, v] : properties(n))
+            if (k == "transform-origin") value = std::string(trim(v));
+        if (value.empty()) return t;
+        std::vector<std::string> words;
+        std::string w;
+        for (char c : value + " ") {
+            if (std::isspace(static_cast<unsigned char>(c)) || c == ',') {
+                if (!w.empty()) words.push_back(w);
+                w.clear();
+            } else {
+                w += c;
+            }
+        }
+        if (words.empty() || words.size() > 3) return t;
+        if (words.size() == 2 && (words[0] == "top" || words[0] == "bottom" || words[1] == "left" || words[1] == "right"))
+            std::swap(words[0], words[1]);
+        auto axis = [&](const std::string& word, double size, bool horizontal) -> double {
+            if (word == "center") return size / 2;
+            if (horizontal ? word == "left" : word == "top") return 0;
+            if (horizontal ? word == "right" : word == "bottom") return size;
+            auto l = parse_length(word, size);
+            return l ? *l : size / 2;
+        };
+        double ox, oy;
+        if (words.size() == 1) {
+            if (words[0] == "top" || words[0] == "bottom") {
+                ox = vw / 2;
+                oy = axis(words[0], vh, false);
+            } else {
+                ox = axis(words[0], vw, true);
+                oy = vh / 2;
+            }
+        } else {
+            ox = axis(words[0], vw, true);
+            oy = axis(words[1], vh, false);
+        }
+        return Affine::translate(ox, oy) * t * Affine::translate(-ox, -oy);
     }
 
     // A new viewport (nested svg, or a symbol or svg instanced by use) at x, y, w x h in the
@@ -693,7 +738,7 @@ public:
         bool ok = true;
         if (const char* t = clip.attribute("transform").value(); *t) {
             try {
-                m = m * parse_svg_transform(t);
+                m = m * with_origin(clip, parse_svg_transform(t), vw, vh);
             } catch (const Error&) {
                 ok = false;  // an invalid transform clips everything away
             }
@@ -742,7 +787,7 @@ public:
         Affine cm = m;
         if (const char* t = c.attribute("transform").value(); *t) {
             try {
-                cm = m * parse_svg_transform(t);
+                cm = m * with_origin(c, parse_svg_transform(t), vw, vh);
             } catch (const Error&) {
                 return;
             }
@@ -852,7 +897,7 @@ public:
         Affine cm = m;
         if (const char* t = child.attribute("transform").value(); *t) {
             try {
-                cm = m * parse_svg_transform(t);
+                cm = m * with_origin(child, parse_svg_transform(t), vw, vh);
             } catch (const Error& e) {
                 warn(std::string("<") + child.name() + ">: " + e.what() + "; element skipped");
                 return;
