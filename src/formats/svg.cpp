@@ -20,6 +20,7 @@
 #include "casteljau/shader.hpp"
 #include "casteljau/stroke.hpp"
 #include "casteljau/svg_path.hpp"
+#include "formats/css.hpp"
 
 namespace casteljau {
 
@@ -184,23 +185,54 @@ public:
     }
 
     // Presentation attributes and the style attribute of `node`, later ones winning.
-    static std::vector<std::pair<std::string, std::string>> properties(const pugi::xml_node& node) {
-        std::vector<std::pair<std::string, std::string>> props;
+    using Properties = std::vector<std::pair<std::string, std::string>>;
+    css::StyleSheet sheet;  // all <style> elements of the document, in order
+    std::unordered_map<const void*, Properties> property_cache;
+
+    // The cascade for `node`, lowest priority first (later entries win): presentation attributes,
+    // then style sheet declarations by specificity and order, then the style attribute, then
+    // !important sheet declarations, then !important style attribute declarations.
+    const Properties& properties(const pugi::xml_node& node) {
+        const auto cached = property_cache.find(node.internal_object());
+        if (cached != property_cache.end()) return cached->second;
+        Properties props;
         for (const pugi::xml_attribute& a : node.attributes()) props.emplace_back(a.name(), a.value());
-        if (const char* style = node.attribute("style").value(); *style) {
-            std::string_view s = style;
-            while (!s.empty()) {
-                const std::size_t semi = s.find(';');
-                std::string_view decl = s.substr(0, semi);
-                s = semi == std::string_view::npos ? std::string_view{} : s.substr(semi + 1);
-                const std::size_t colon = decl.find(':');
-                if (colon == std::string_view::npos) continue;
-                std::string_view value = trim(decl.substr(colon + 1));
-                if (value.size() > 10 && value.substr(value.size() - 10) == "!important") value = trim(value.substr(0, value.size() - 10));
-                props.emplace_back(std::string(trim(decl.substr(0, colon))), std::string(value));
-            }
+        std::vector<const css::Rule*> matched;
+        for (const css::Rule& r : sheet.rules)
+            if (css::matches(r.selector, node)) matched.push_back(&r);
+        std::stable_sort(matched.begin(), matched.end(), [](const css::Rule* a, const css::Rule* b) {
+            return a->selector.specificity < b->selector.specificity;
+        });
+        const std::vector<css::Declaration> inline_decls = css::parse_declarations(node.attribute("style").value());
+        for (bool important : {false, true}) {
+            for (const css::Rule* r : matched)
+                for (const css::Declaration& d : r->declarations)
+                    if (d.important == important) props.emplace_back(d.name, d.value);
+            for (const css::Declaration& d : inline_decls)
+                if (d.important == important) props.emplace_back(d.name, d.value);
         }
-        return props;
+        return property_cache.emplace(node.internal_object(), std::move(props)).first->second;
+    }
+
+    // Reads every <style> element (type empty or text/css) into the sheet.
+    void read_style_sheets(const pugi::xml_node& root) {
+        for (pugi::xml_node n = root; n;) {
+            if (std::string_view(n.name()) == "style") {
+                const std::string_view type = trim(n.attribute("type").value());
+                if (type.empty() || type == "text/css") {
+                    std::string text;
+                    for (const pugi::xml_node& c : n.children())
+                        if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) text += c.value();
+                    css::parse_stylesheet(text, sheet);
+                }
+            }
+            if (pugi::xml_node c = n.first_child(); c && std::string_view(n.name()) != "style") { n = c; continue; }
+            while (n && !n.next_sibling() && n != root) n = n.parent();
+            if (!n || n == root) break;
+            n = n.next_sibling();
+        }
+        if (sheet.truncated)
+            warn("style sheets hold more than " + std::to_string(css::kMaxRules) + " rules; the rest are ignored");
     }
 
     // A fill or stroke value: none, currentColor, inherit (keeps the inherited paint), a colour,
@@ -380,7 +412,7 @@ public:
         return n.attribute("xlink:href").value();
     }
 
-    static std::string own_property(const pugi::xml_node& n, const std::string& name) {
+    std::string own_property(const pugi::xml_node& n, const std::string& name) {
         std::string out;
         for (const auto& [k, v] : properties(n))
             if (k == name) out = std::string(trim(v));
@@ -388,7 +420,7 @@ public:
     }
 
     // The value of property `name` on `n` or its nearest ancestor that sets it (not `inherit`).
-    static std::string inherited(pugi::xml_node n, const std::string& name) {
+    std::string inherited(pugi::xml_node n, const std::string& name) {
         for (; n && n.type() == pugi::node_element; n = n.parent())
             for (const auto& [k, v] : properties(n))
                 if (k == name && trim(v) != "inherit") return std::string(trim(v));
@@ -1081,6 +1113,7 @@ SvgDocument SvgDocument::parse(std::string_view text) {
 
     Reader reader;
     reader.index_ids(root);
+    reader.read_style_sheets(root);
     Style st;
     reader.apply_style(root, st);
     Affine root_m = view;
