@@ -6,9 +6,11 @@
 #include <pugixml.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <memory>
 #include <string>
@@ -48,6 +50,8 @@ struct PaintRef {
     static PaintRef solid(Color c) { PaintRef p; p.kind = Solid; p.color = c; return p; }
 };
 
+constexpr double kPi = 3.14159265358979323846;
+
 Item layer_item(Item::Kind kind, double opacity) {
     Item it;
     it.kind = kind;
@@ -64,6 +68,8 @@ struct Style {
     double stroke_opacity = 1;
     StrokeStyle stroke_style;
     bool visible = true;  // visibility (inherited)
+    std::array<int, 3> paint_order{0, 1, 2};  // paint-order: 0 fill, 1 stroke, 2 markers (inherited)
+    std::string marker_start, marker_mid, marker_end;  // marker ids (inherited)
 };
 
 std::string_view trim(std::string_view s) {
@@ -326,6 +332,35 @@ public:
                     }
                     if (!ok) st.stroke_style.dashes.clear();
                 }
+            } else if (k == "paint-order") {
+                // The keywords given, in their order, then the missing ones in the normal order.
+                std::array<int, 3> order{};
+                std::size_t n = 0;
+                bool ok = true;
+                for (std::string_view rest = val; !rest.empty() && val != "normal";) {
+                    const std::size_t sp = rest.find(' ');
+                    const std::string_view w = rest.substr(0, sp);
+                    rest = sp == std::string_view::npos ? std::string_view{} : trim(rest.substr(sp));
+                    const int id = w == "fill" ? 0 : w == "stroke" ? 1 : w == "markers" ? 2 : -1;
+                    if (id < 0 || std::find(order.begin(), order.begin() + n, id) != order.begin() + n) { ok = false; break; }
+                    order[n++] = id;
+                }
+                if (ok) {
+                    for (int id = 0; id < 3; ++id)
+                        if (std::find(order.begin(), order.begin() + n, id) == order.begin() + n) order[n++] = id;
+                    st.paint_order = order;
+                }
+            } else if (k == "marker-start" || k == "marker-mid" || k == "marker-end" || k == "marker") {
+                std::string id;
+                if (val.substr(0, 5) == "url(#") {
+                    const std::size_t close = val.find(')');
+                    if (close != std::string_view::npos) id = std::string(trim(val.substr(5, close - 5)));
+                } else if (val != "none") {
+                    continue;
+                }
+                if (k == "marker-start" || k == "marker") st.marker_start = id;
+                if (k == "marker-mid" || k == "marker") st.marker_mid = id;
+                if (k == "marker-end" || k == "marker") st.marker_end = id;
             } else if (k == "visibility") {
                 if (val == "visible") st.visible = true;
                 else if (val == "hidden" || val == "collapse") st.visible = false;
@@ -987,24 +1022,152 @@ public:
         if (p->empty()) return;
         if (!cst.visible) return;
         // A line has no interior; a polyline fills like a polygon (closed implicitly).
-        Item fill_item;
-        if (name != "line" && resolve_paint(cst.fill, *p, vw, vh, fill_item)) {
-            fill_item.kind = Item::Fill;
-            fill_item.path = *p;
-            fill_item.transform = cm;
-            fill_item.rule = cst.fill_rule;
-            fill_item.opacity = cst.fill_opacity * opacity;
-            items.push_back(std::move(fill_item));
+        std::optional<Item> fill_item, stroke_item;
+        if (Item f; name != "line" && resolve_paint(cst.fill, *p, vw, vh, f)) {
+            f.kind = Item::Fill;
+            f.path = *p;
+            f.transform = cm;
+            f.rule = cst.fill_rule;
+            f.opacity = cst.fill_opacity * opacity;
+            fill_item = std::move(f);
         }
-        if (!(cst.stroke_style.width > 0)) return;
-        Item it;
-        if (!resolve_paint(cst.stroke, *p, vw, vh, it)) return;
-        it.kind = Item::Stroke;
-        it.stroke = cst.stroke_style;
-        it.path = std::move(*p);
-        it.transform = cm;
-        it.opacity = cst.stroke_opacity * opacity;
-        items.push_back(std::move(it));
+        const Path path_copy = *p;
+        if (Item st; cst.stroke_style.width > 0 && resolve_paint(cst.stroke, *p, vw, vh, st)) {
+            st.kind = Item::Stroke;
+            st.stroke = cst.stroke_style;
+            st.path = std::move(*p);
+            st.transform = cm;
+            st.opacity = cst.stroke_opacity * opacity;
+            stroke_item = std::move(st);
+        }
+        const bool markable = name == "path" || name == "line" || name == "polyline" || name == "polygon";
+        for (int part : cst.paint_order) {
+            if (part == 0 && fill_item) items.push_back(std::move(*fill_item));
+            if (part == 1 && stroke_item) items.push_back(std::move(*stroke_item));
+            if (part == 2 && markable) emit_markers(path_copy, cst, cm, vw, vh, depth);
+        }
+    }
+
+    // Markers at the vertices of `path`: marker-start at the first, marker-end at the last,
+    // marker-mid at the others; each oriented (orient auto / auto-start-reverse / an angle),
+    // scaled by the stroke width (markerUnits strokeWidth), mapped by its viewBox and refX/refY,
+    // and clipped to markerWidth x markerHeight unless overflow is visible.
+    void emit_markers(const Path& path, const Style& st, const Affine& cm, double vw, double vh, int depth) {
+        if (st.marker_start.empty() && st.marker_mid.empty() && st.marker_end.empty()) return;
+        struct Vertex {
+            Point p;
+            std::optional<Vec> in, out;
+        };
+        std::vector<Vertex> vs;
+        std::size_t subpath_first = 0;
+        auto dir = [](Point a, Point b) -> std::optional<Vec> {
+            const Vec d{b.x - a.x, b.y - a.y};
+            if (d.x == 0 && d.y == 0) return std::nullopt;
+            return d;
+        };
+        auto segment = [&](Point p0, std::initializer_list<Point> rest) {
+            std::vector<Point> pts{p0};
+            pts.insert(pts.end(), rest.begin(), rest.end());
+            std::optional<Vec> start, end;
+            for (std::size_t i = 1; i < pts.size() && !start; ++i) start = dir(p0, pts[i]);
+            for (std::size_t i = pts.size() - 1; i-- > 0 && !end;) end = dir(pts[i], pts.back());
+            if (!vs.empty() && !vs.back().out) vs.back().out = start;
+            vs.push_back({pts.back(), end, std::nullopt});
+        };
+        auto close = [&](Point last, Point first) {
+            if (!(last == first)) segment(last, {first});
+            // A closed subpath: its end vertex turns into its first segment, and its start vertex
+            // comes in from its closing segment.
+            if (subpath_first < vs.size()) {
+                vs.back().out = vs[subpath_first].out;
+                vs[subpath_first].in = vs.back().in;
+            }
+        };
+        struct Visitor {
+            std::function<void(Point)> on_move;
+            std::function<void(Point, std::initializer_list<Point>)> on_segment;
+            std::function<void(Point, Point)> on_close;
+            void move(Point p) { on_move(p); }
+            void line(Point a, Point b) { on_segment(a, {b}); }
+            void quad(Point a, Point c, Point b) { on_segment(a, {c, b}); }
+            void cubic(Point a, Point c1, Point c2, Point b) { on_segment(a, {c1, c2, b}); }
+            void conic(Point a, Point c, Point b, double) { on_segment(a, {c, b}); }
+            void close(Point last, Point first) { on_close(last, first); }
+        };
+        path.visit(Visitor{[&](Point p) {
+                               subpath_first = vs.size();
+                               vs.push_back({p, std::nullopt, std::nullopt});
+                           },
+                           segment, close});
+        if (vs.empty()) return;
+        for (std::size_t i = 0; i < vs.size(); ++i) {
+            const std::string& id = i == 0 ? st.marker_start : i + 1 == vs.size() ? st.marker_end : st.marker_mid;
+            if (id.empty()) continue;
+            const pugi::xml_node marker = lookup(id);
+            if (!marker || std::string_view(marker.name()) != "marker" || is_active(marker)) continue;
+            const Vertex& v = vs[i];
+            double angle = 0;
+            const std::string_view orient = trim(marker.attribute("orient").value());
+            if (orient == "auto" || orient == "auto-start-reverse") {
+                const std::optional<Vec>& a = v.in ? v.in : v.out;
+                const std::optional<Vec>& b = v.out ? v.out : v.in;
+                if (a && b) {
+                    const double ai = std::atan2(a->y, a->x), ao = std::atan2(b->y, b->x);
+                    angle = (ai + ao) / 2;
+                    if (std::fabs(ai - ao) > kPi) angle += kPi;
+                }
+                if (orient == "auto-start-reverse" && i == 0) angle += kPi;
+            } else if (!orient.empty()) {
+                std::string_view o = orient;
+                double unit = kPi / 180;
+                if (o.size() > 3 && o.substr(o.size() - 3) == "deg") o.remove_suffix(3);
+                else if (o.size() > 3 && o.substr(o.size() - 3) == "rad") { o.remove_suffix(3); unit = 1; }
+                if (auto n = parse_number(o)) angle = *n * unit;
+            }
+            emit_marker(marker, st, cm * Affine::translate(v.p.x, v.p.y) * Affine::rotate(angle), vw, vh, depth);
+        }
+    }
+
+    void emit_marker(const pugi::xml_node& marker, const Style& st, const Affine& at, double vw, double vh, int depth) {
+        double scale = 1;
+        if (std::string_view(marker.attribute("markerUnits").value()) != "userSpaceOnUse") scale = st.stroke_style.width;
+        if (!(scale > 0)) return;
+        const double mw = length_attr(marker, "markerWidth", vw, 3), mh = length_attr(marker, "markerHeight", vh, 3);
+        if (!(mw > 0) || !(mh > 0)) return;
+        Affine vbt;
+        double nvw = mw, nvh = mh;
+        if (auto vb = parse_viewbox(marker.attribute("viewBox").value())) {
+            vbt = viewbox_transform(*vb, marker.attribute("preserveAspectRatio").value(), mw, mh);
+            nvw = vb->width();
+            nvh = vb->height();
+        }
+        const Point ref = vbt.apply({length_attr(marker, "refX", nvw), length_attr(marker, "refY", nvh)});
+        const Affine box = at * Affine::scale(scale) * Affine::translate(-ref.x, -ref.y);
+        const Affine content_m = box * vbt;
+        std::string overflow;
+        for (const auto& [k, v] : properties(marker))
+            if (k == "overflow") overflow = std::string(trim(v));
+        const bool clip = !(overflow == "visible" || overflow == "auto");
+        active_refs.push_back(marker);
+        Style mst;
+        apply_style(marker, mst);
+        items.push_back(layer_item(Item::BeginLayer, 1));
+        walk(marker, mst, content_m, nvw, nvh, depth + 1);
+        if (clip) {
+            Item begin;
+            begin.kind = Item::BeginClip;
+            items.push_back(std::move(begin));
+            Item r;
+            r.kind = Item::Fill;
+            r.path.add_rect(Rect::from_xywh(0, 0, mw, mh));
+            r.transform = box;
+            items.push_back(std::move(r));
+            Item end;
+            end.kind = Item::EndMask;
+            items.push_back(std::move(end));
+        }
+        items.push_back(layer_item(Item::EndLayer, 1));
+        active_refs.pop_back();
     }
 };
 
