@@ -1,6 +1,6 @@
 // casteljau/shader.hpp: paint servers evaluated per pixel by the compositor (paint stage).
 //
-// A Shader gives the colour of every pixel a fill covers: linear and radial (two-point conical,
+// A Shader gives the colour of every pixel a fill covers: a raster image, or linear and radial (two-point conical,
 // SVG 2: centre circle (cx, cy, r), focal circle (fx, fy, fr)) gradients with colour stops and the
 // SVG spread methods pad, reflect and repeat. Colours between stops are interpolated in sRGB with
 // straight alpha, then premultiplied (SVG's rule), in float, and rounded to 8 bits once per pixel,
@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "casteljau/geometry.hpp"
@@ -28,7 +29,7 @@ struct GradientStop {
 
 class Shader {
 public:
-    enum class Kind { Linear, Radial };
+    enum class Kind { Linear, Radial, Image };
 
     // The gradient from `p0` (offset 0) to `p1` (offset 1); colours are constant along lines
     // perpendicular to p0-p1. Offsets are clamped to [0, 1] and made non-decreasing (a stop
@@ -41,6 +42,11 @@ public:
     // through it with a radius >= 0, and points no such circle reaches stay unpainted.
     static Shader radial(Point center, double r, Point focal, double fr, std::vector<GradientStop> stops,
                          SpreadMethod spread = SpreadMethod::Pad, const Affine& transform = {});
+
+    // A raster image: gradient space is the image's pixel space ([0, w] x [0, h]); outside it the
+    // shader is transparent. `smooth`: bilinear sampling of the premultiplied pixels (edges
+    // clamped); otherwise the nearest pixel. Throws Error(InvalidArgument) for a null or empty image.
+    static Shader image(std::shared_ptr<const Pixmap> image, bool smooth = true, const Affine& transform = {});
 
     Kind kind() const { return kind_; }
     const Affine& transform() const { return transform_; }
@@ -66,6 +72,9 @@ private:
     std::vector<GradientStop> stops_;
     SpreadMethod spread_ = SpreadMethod::Pad;
     Affine transform_;
+    std::shared_ptr<const Pixmap> image_;
+    bool smooth_ = true;
+    void shade_image_row(const Affine& pixel_to_image, int x, int y, int length, double opacity, std::uint8_t* out) const;
 };
 
 }  // namespace casteljau

@@ -27,14 +27,33 @@ namespace limits {
 // nested uses can multiply to billions (a "use bomb"); past this the document is refused with
 // Error(Limit).
 inline constexpr std::size_t kMaxSvgElements = 1'000'000;
+// SVG documents drawn as <image> inside SVG documents, nested at most this deep (deeper ones are
+// skipped with a warning: an image that shows itself stops there).
+inline constexpr int kMaxSvgImageNesting = 4;
+// Decompressed size of an .svgz.
+inline constexpr std::size_t kMaxSvgzBytes = 64u << 20;
 }  // namespace limits
+
+// Where <image> may read files from. Nothing is ever fetched over the network (http:, https:,
+// any URL scheme but data: is refused), absolute paths are refused, and a relative href resolves
+// against `base_dir` and must stay inside `resource_root` (default: base_dir itself) after
+// symbolic links are resolved. An empty base_dir (text parsed from memory) refuses every file;
+// data: URIs always work.
+struct SvgOptions {
+    std::string base_dir;
+    std::string resource_root;
+    int nesting = 0;  // SVG images nest at most limits::kMaxSvgImageNesting deep
+};
 
 class SvgDocument {
 public:
-    // Parses SVG text. Throws Error(Parse) for malformed XML, Error(InvalidData) for an unusable
-    // root (missing size, negative or zero size), Error(Limit) beyond the limits.
-    static SvgDocument parse(std::string_view text);
-    static SvgDocument load(const std::string& path);
+    // Parses SVG text (or gzip-compressed SVG text: .svgz). Throws Error(Parse) for malformed XML,
+    // Error(InvalidData) for an unusable root (missing size, negative or zero size), Error(Limit)
+    // beyond the limits.
+    static SvgDocument parse(std::string_view text, const SvgOptions& options = {});
+    // Reads a file (.svg or .svgz); images resolve against the file's folder, and may not leave it
+    // unless `resource_root` names a wider folder.
+    static SvgDocument load(const std::string& path, const std::string& resource_root = {});
 
     SvgDocument(SvgDocument&&) noexcept;
     SvgDocument& operator=(SvgDocument&&) noexcept;

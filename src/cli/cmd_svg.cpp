@@ -11,7 +11,7 @@ namespace casteljau::cli {
 
 void register_svg(CLI::App& app) {
     struct Opts {
-        std::string input, output, background = "transparent";
+        std::string input, output, background = "transparent", resources;
         double zoom = 1;
         int width = 0, height = 0;
         double tolerance = kDefaultTolerance;
@@ -35,11 +35,13 @@ void register_svg(CLI::App& app) {
     cmd->add_option("--tolerance", o->tolerance, "Flattening tolerance in pixels")
         ->check(CLI::Range(1e-4, 10.0))
         ->capture_default_str();
+    cmd->add_option("--resources", o->resources,
+                    "Folder that <image> files may be read from (default: the input's own folder; nothing for standard input)");
     cmd->add_flag("-q,--quiet", o->quiet, "Do not print warnings about unsupported SVG features");
     cmd->callback([o] {
         const Color bg = parse_color_option("--background", o->background);
-        const std::string text = read_text_input(o->input);
-        const SvgDocument doc = SvgDocument::parse(text);
+        // A file resolves relative <image> hrefs against its folder; standard input has none.
+        const SvgDocument doc = o->input == "-" ? SvgDocument::parse(read_text_input(o->input)) : SvgDocument::load(o->input, o->resources);
         if (!o->quiet)
             for (const std::string& w : doc.warnings()) std::cerr << "casteljau: warning: " << w << "\n";
         // Output size as resvg and rsvg-convert choose it (svg.hpp): from the rounded intrinsic

@@ -4,12 +4,16 @@
 #include "casteljau/svg.hpp"
 
 #include <pugixml.hpp>
+#include <zlib.h>
 
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <climits>
+#include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <memory>
@@ -18,6 +22,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/image.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/shader.hpp"
 #include "casteljau/stroke.hpp"
@@ -29,12 +34,13 @@ namespace casteljau {
 namespace {
 
 struct Item {
-    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask } kind = Fill;
+    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask, SvgImage } kind = Fill;
     bool luminance = false;  // BeginMask: luminance (true) or alpha mask
     Path path;          // user space
     Affine transform;   // user space -> document pixel space
     Color color;
-    std::shared_ptr<const Shader> shader;  // a gradient instead of `color`
+    std::shared_ptr<const Shader> shader;  // a gradient or image instead of `color`
+    std::shared_ptr<const SvgDocument> svg_image;  // SvgImage: drawn with `transform` as its base
     FillRule rule = FillRule::NonZero;
     double opacity = 1;  // fill/stroke: multiplies colour alpha; layer: group opacity
     StrokeStyle stroke;  // Stroke items
@@ -946,6 +952,136 @@ public:
         active_refs.pop_back();
     }
 
+    SvgOptions options;
+
+    // The bytes an <image> href names: a data: URI (base64 or plain), or a relative file inside
+    // the resource root; nullopt (with a warning) for anything refused or unreadable.
+    std::optional<std::vector<std::uint8_t>> image_bytes(std::string_view ref) {
+        ref = trim(ref);
+        if (ref.substr(0, 5) == "data:") {
+            const std::size_t comma = ref.find(',');
+            if (comma == std::string_view::npos) return std::nullopt;
+            const std::string_view meta = ref.substr(5, comma - 5);
+            const std::string_view payload = ref.substr(comma + 1);
+            std::vector<std::uint8_t> out;
+            if (meta.size() >= 7 && meta.substr(meta.size() - 7) == ";base64") {
+                unsigned acc = 0;
+                int bits = 0;
+                for (char ch : payload) {
+                    int v;
+                    if (ch >= 'A' && ch <= 'Z') v = ch - 'A';
+                    else if (ch >= 'a' && ch <= 'z') v = ch - 'a' + 26;
+                    else if (ch >= '0' && ch <= '9') v = ch - '0' + 52;
+                    else if (ch == '+' || ch == '-') v = 62;
+                    else if (ch == '/' || ch == '_') v = 63;
+                    else continue;  // whitespace, padding
+                    acc = (acc << 6) | static_cast<unsigned>(v);
+                    bits += 6;
+                    if (bits >= 8) {
+                        bits -= 8;
+                        out.push_back(static_cast<std::uint8_t>(acc >> bits));
+                        acc &= (1u << bits) - 1;
+                    }
+                }
+            } else {
+                out.assign(payload.begin(), payload.end());
+            }
+            return out;
+        }
+        if (ref.find(':') != std::string_view::npos || ref.empty() || ref.front() == '/' || ref.front() == '#') {
+            warn("image '" + std::string(ref.substr(0, 80)) + "' refused: only data: URIs and relative files are read");
+            return std::nullopt;
+        }
+        if (options.base_dir.empty()) {
+            warn("image '" + std::string(ref) + "' refused: the document has no folder to resolve it against");
+            return std::nullopt;
+        }
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        const fs::path root = fs::weakly_canonical(options.resource_root.empty() ? options.base_dir : options.resource_root, ec);
+        const fs::path file = fs::weakly_canonical(fs::path(options.base_dir) / std::string(ref), ec);
+        const std::string r = root.string(), f = file.string();
+        if (ec || r.empty() || f.size() <= r.size() || f.compare(0, r.size(), r) != 0 || (f[r.size()] != '/' && r.back() != '/')) {
+            warn("image '" + std::string(ref) + "' refused: outside the document's folder");
+            return std::nullopt;
+        }
+        try {
+            return read_file(f);
+        } catch (const Error& e) {
+            warn(std::string("image: ") + e.what());
+            return std::nullopt;
+        }
+    }
+
+    void image(const pugi::xml_node& n, const Style& st, const Affine& cm, double vw, double vh, double opacity) {
+        if (!st.visible) return;
+        const std::optional<std::vector<std::uint8_t>> bytes = image_bytes(href(n));
+        if (!bytes) return;
+        std::shared_ptr<const Pixmap> raster;
+        std::shared_ptr<const SvgDocument> svg;
+        double iw = 0, ih = 0;
+        try {
+            if (sniff_image(*bytes) == ImageFormat::Svg) {
+                if (options.nesting + 1 > limits::kMaxSvgImageNesting) {
+                    warn("SVG images nested deeper than " + std::to_string(limits::kMaxSvgImageNesting) + "; skipped");
+                    return;
+                }
+                SvgOptions inner = options;
+                inner.nesting++;
+                svg = std::make_shared<const SvgDocument>(
+                    SvgDocument::parse(std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()), inner));
+                iw = svg->intrinsic_width();
+                ih = svg->intrinsic_height();
+            } else {
+                raster = std::make_shared<const Pixmap>(decode_image(*bytes));
+                iw = raster->width();
+                ih = raster->height();
+            }
+        } catch (const Error& e) {
+            warn(std::string("image not drawn: ") + e.what());
+            return;
+        }
+        auto size_attr = [&](const char* name, double percent_of) -> std::optional<double> {
+            std::string_view v = trim(n.attribute(name).value());
+            for (const auto& [k, val] : properties(n))
+                if (k == name) v = trim(val);
+            if (v.empty() || v == "auto") return std::nullopt;
+            return parse_length(v, percent_of);
+        };
+        std::optional<double> w = size_attr("width", vw), h = size_attr("height", vh);
+        if (!w && !h) {
+            w = iw;
+            h = ih;
+        } else if (!w) {
+            w = *h * iw / ih;
+        } else if (!h) {
+            h = *w * ih / iw;
+        }
+        if (!(*w > 0) || !(*h > 0) || !(iw > 0) || !(ih > 0)) return;
+        const double x = length_attr(n, "x", vw), y = length_attr(n, "y", vh);
+        const std::string_view par = n.attribute("preserveAspectRatio").value();
+        const Affine m = cm * Affine::translate(x, y) * viewbox_transform(Rect::from_xywh(0, 0, iw, ih), par, *w, *h);
+        const bool slice = par.find("slice") != std::string_view::npos;
+        const std::string rendering = inherited(n, "image-rendering");
+        const bool smooth = !(rendering == "optimizeSpeed" || rendering == "pixelated" || rendering == "crisp-edges");
+        auto draw = [&] {
+            Item it;
+            it.transform = m;
+            it.opacity = opacity;
+            if (svg) {
+                it.kind = Item::SvgImage;
+                it.svg_image = svg;
+            } else {
+                it.kind = Item::Fill;
+                it.path.add_rect(Rect::from_xywh(0, 0, iw, ih));
+                it.shader = std::make_shared<const Shader>(Shader::image(raster, smooth));
+            }
+            items.push_back(std::move(it));
+        };
+        if (slice || svg) clipped(Rect::from_xywh(x, y, *w, *h), cm, draw);
+        else draw();
+    }
+
     void element(const pugi::xml_node& child, const Style& st, const Affine& m, double vw, double vh, int depth) {
         if (depth > limits::kMaxNestingDepth)
             throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
@@ -1012,6 +1148,7 @@ public:
             if (layer) items.push_back(layer_item(Item::EndLayer, opacity));
             return;
         }
+        if (name == "image") return image(child, cst, cm, vw, vh, opacity);
         std::optional<Path> p = shape_path(child, vw, vh);
         if (!p) {
             if (name != "path" && name != "rect" && name != "circle" && name != "ellipse" && name != "line" &&
@@ -1171,6 +1308,38 @@ public:
     }
 };
 
+// Inflates gzip data (an .svgz), up to limits::kMaxSvgzBytes. Throws Error(InvalidData) for
+// corrupt data, Error(Limit) past the limit.
+std::string gunzip(std::string_view data) {
+    z_stream z{};
+    if (inflateInit2(&z, 16 + MAX_WBITS) != Z_OK) throw Error(ErrorKind::InvalidData, "zlib initialisation failed");
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data.data()));
+    z.avail_in = static_cast<uInt>(std::min<std::size_t>(data.size(), UINT32_MAX));
+    std::string out;
+    char buf[65536];
+    int rc = Z_OK;
+    while (rc != Z_STREAM_END) {
+        z.next_out = reinterpret_cast<Bytef*>(buf);
+        z.avail_out = sizeof buf;
+        rc = inflate(&z, Z_NO_FLUSH);
+        if (rc != Z_OK && rc != Z_STREAM_END) {
+            inflateEnd(&z);
+            throw Error(ErrorKind::InvalidData, "corrupt gzip data (.svgz)");
+        }
+        out.append(buf, sizeof buf - z.avail_out);
+        if (out.size() > limits::kMaxSvgzBytes) {
+            inflateEnd(&z);
+            throw Error(ErrorKind::Limit, "an .svgz inflates to more than " + std::to_string(limits::kMaxSvgzBytes) + " bytes");
+        }
+        if (rc == Z_OK && z.avail_in == 0 && z.avail_out != 0) {
+            inflateEnd(&z);
+            throw Error(ErrorKind::InvalidData, "truncated gzip data (.svgz)");
+        }
+    }
+    inflateEnd(&z);
+    return out;
+}
+
 constexpr std::string_view kSvgNamespace = "http://www.w3.org/2000/svg";
 
 // Elements written with a prefix bound to the SVG namespace (<svg:svg xmlns:svg="...">) get their
@@ -1220,12 +1389,20 @@ double SvgDocument::intrinsic_width() const { return impl_->fwidth; }
 double SvgDocument::intrinsic_height() const { return impl_->fheight; }
 const std::vector<std::string>& SvgDocument::warnings() const { return impl_->warnings; }
 
-SvgDocument SvgDocument::load(const std::string& path) {
+SvgDocument SvgDocument::load(const std::string& path, const std::string& resource_root) {
     const std::vector<std::uint8_t> bytes = read_file(path);
-    return parse(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    SvgOptions o;
+    std::error_code ec;
+    o.base_dir = std::filesystem::absolute(std::filesystem::path(path), ec).parent_path().string();
+    o.resource_root = resource_root;
+    return parse(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), o);
 }
 
-SvgDocument SvgDocument::parse(std::string_view text) {
+SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options) {
+    std::string inflated;
+    if (input.size() >= 2 && static_cast<unsigned char>(input[0]) == 0x1f && static_cast<unsigned char>(input[1]) == 0x8b)
+        inflated = gunzip(input);
+    const std::string_view text = inflated.empty() ? input : std::string_view(inflated);
     auto impl = std::make_unique<Impl>();
     if (trim(text).empty()) throw Error(ErrorKind::Parse, "SVG input is empty");
     const pugi::xml_parse_result res =
@@ -1275,6 +1452,7 @@ SvgDocument SvgDocument::parse(std::string_view text) {
     impl->view = view;
 
     Reader reader;
+    reader.options = options;
     reader.index_ids(root);
     reader.read_style_sheets(root);
     Style st;
@@ -1336,6 +1514,9 @@ void SvgDocument::render(Canvas& canvas, const Affine& base) const {
             }
             case Item::PopClip:
                 cur().restore();
+                continue;
+            case Item::SvgImage:
+                if (it.svg_image) it.svg_image->render(cur(), base * it.transform);
                 continue;
             case Item::Fill:
             case Item::Stroke: break;

@@ -63,7 +63,53 @@ Shader Shader::radial(Point center, double r, Point focal, double fr, std::vecto
     return s;
 }
 
+Shader Shader::image(std::shared_ptr<const Pixmap> image, bool smooth, const Affine& transform) {
+    if (!image || image->width() < 1 || image->height() < 1) throw Error(ErrorKind::InvalidArgument, "an image shader needs an image");
+    Shader s;
+    s.kind_ = Kind::Image;
+    s.image_ = std::move(image);
+    s.smooth_ = smooth;
+    s.transform_ = transform;
+    s.stops_ = {{0, Color::transparent()}};
+    return s;
+}
+
+void Shader::shade_image_row(const Affine& inv, int x, int y, int length, double opacity, std::uint8_t* out) const {
+    const Pixmap& im = *image_;
+    const int w = im.width(), h = im.height();
+    const unsigned op = static_cast<unsigned>(std::lround(std::clamp(opacity, 0.0, 1.0) * 255));
+    Point p = inv.apply({x + 0.5, y + 0.5});
+    for (int i = 0; i < length; ++i, out += 4, p.x += inv.a, p.y += inv.b) {
+        if (!(p.x >= 0 && p.y >= 0 && p.x <= w && p.y <= h)) {
+            out[0] = out[1] = out[2] = out[3] = 0;
+            continue;
+        }
+        float c[4];
+        if (!smooth_) {
+            const int ix = std::min(static_cast<int>(p.x), w - 1), iy = std::min(static_cast<int>(p.y), h - 1);
+            const std::uint8_t* s = im.row(iy) + 4 * static_cast<std::size_t>(ix);
+            for (int k = 0; k < 4; ++k) c[k] = s[k];
+        } else {
+            const double u = p.x - 0.5, v = p.y - 0.5;
+            const double fu = std::floor(u), fv = std::floor(v);
+            const float au = static_cast<float>(u - fu), av = static_cast<float>(v - fv);
+            const int x0 = std::clamp(static_cast<int>(fu), 0, w - 1), x1 = std::clamp(static_cast<int>(fu) + 1, 0, w - 1);
+            const int y0 = std::clamp(static_cast<int>(fv), 0, h - 1), y1 = std::clamp(static_cast<int>(fv) + 1, 0, h - 1);
+            const std::uint8_t* a = im.row(y0) + 4 * static_cast<std::size_t>(x0);
+            const std::uint8_t* b = im.row(y0) + 4 * static_cast<std::size_t>(x1);
+            const std::uint8_t* cc = im.row(y1) + 4 * static_cast<std::size_t>(x0);
+            const std::uint8_t* d = im.row(y1) + 4 * static_cast<std::size_t>(x1);
+            for (int k = 0; k < 4; ++k) {
+                const float top = a[k] + (b[k] - a[k]) * au, bottom = cc[k] + (d[k] - cc[k]) * au;
+                c[k] = top + (bottom - top) * av;
+            }
+        }
+        for (int k = 0; k < 4; ++k) out[k] = static_cast<std::uint8_t>(std::min(255.0f, c[k] * op / 255.0f + 0.5f));
+    }
+}
+
 bool Shader::parameter(Point p, double& t) const {
+    if (kind_ == Kind::Image) return false;
     if (kind_ == Kind::Linear) {
         const double dx = p1_.x - p0_.x, dy = p1_.y - p0_.y;
         const double len2 = dx * dx + dy * dy;
@@ -130,6 +176,7 @@ void Shader::color_at(double t, float rgba[4]) const {
 }
 
 void Shader::shade_row(const Affine& inv, int x, int y, int length, double opacity, std::uint8_t* out) const {
+    if (kind_ == Kind::Image) return shade_image_row(inv, x, y, length, opacity, out);
     const float op = static_cast<float>(std::clamp(opacity, 0.0, 1.0));
     Point p = inv.apply({x + 0.5, y + 0.5});
     for (int i = 0; i < length; ++i, out += 4, p.x += inv.a, p.y += inv.b) {

@@ -110,7 +110,8 @@ Outcome run_one(const fs::path& suite, const Entry& e, const fs::path& out_dir, 
         const Pixmap ref = read_png((suite / e.png).string());
         Pixmap actual;
         try {
-            const SvgDocument doc = SvgDocument::load((suite / e.svg).string());
+            // Images may read the suite's resources/ folder (outside each test's own folder).
+            const SvgDocument doc = SvgDocument::load((suite / e.svg).string(), suite.string());
             actual = resvg_compare::render_reference_size(doc);
         } catch (const Error& err) {
             o.why = std::string("error: ") + err.what();
