@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <string_view>
 #include <vector>
 
 #include "casteljau/geometry.hpp"
@@ -49,6 +50,19 @@ Mask mask_from_luminance(const Pixmap& layer);
 // Multiplies every channel of `layer` by the mask's coverage (0 outside the mask's bounds).
 void apply_mask(Pixmap& layer, const Mask& mask);
 
+// How a layer combines with what is under it (W3C Compositing and Blending Level 1): the blend
+// function B(Cb, Cs) on straight colours, then source-over:
+// co = cs (1 - ab) + cb (1 - as) + as ab B(Cb, Cs), ao = as + ab - as ab (premultiplied c).
+enum class BlendMode {
+    Normal, Multiply, Screen, Overlay, Darken, Lighten, ColorDodge, ColorBurn, HardLight, SoftLight,
+    Difference, Exclusion, Hue, Saturation, Color, Luminosity
+};
+// Parses the CSS names (normal, multiply, ..., color-dodge, ..., luminosity); false when unknown.
+bool parse_blend_mode(std::string_view name, BlendMode& out);
+// The blended straight colour B(cb, cs) of one pixel, channels in [0, 1] (for tests and callers
+// that blend themselves).
+void blend_colors(BlendMode mode, const float cb[3], const float cs[3], float out[3]);
+
 class Canvas {
 public:
     explicit Canvas(Pixmap& target);
@@ -83,7 +97,7 @@ public:
 
     // Source-over of `layer` (same size as the target, pixel space) times `opacity`, inside the
     // current clip rectangle.
-    void draw_layer(const Pixmap& layer, double opacity = 1.0);
+    void draw_layer(const Pixmap& layer, double opacity = 1.0, BlendMode mode = BlendMode::Normal);
 
     Rasterizer& rasterizer() { return raster_; }
 

@@ -36,6 +36,7 @@ namespace {
 struct Item {
     enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask, SvgImage } kind = Fill;
     bool luminance = false;  // BeginMask: luminance (true) or alpha mask
+    BlendMode blend = BlendMode::Normal;  // BeginLayer: mix-blend-mode
     Path path;          // user space
     Affine transform;   // user space -> document pixel space
     Color color;
@@ -1119,9 +1120,19 @@ public:
             warn(std::string("<") + child.name() + ">: recursive clip-path or mask; element not drawn");
             return;
         }
-        const bool layered = opacity < 1 || clip || mask;
+        BlendMode blend = BlendMode::Normal;
+        bool isolate = false;
+        for (const auto& [k, v] : properties(child)) {
+            if (k == "mix-blend-mode") parse_blend_mode(trim(v), blend);
+            if (k == "isolation") isolate = trim(v) == "isolate";
+        }
+        const bool layered = opacity < 1 || clip || mask || blend != BlendMode::Normal || isolate;
         const std::size_t first = items.size();
-        if (layered) items.push_back(layer_item(Item::BeginLayer, opacity));
+        if (layered) {
+            Item begin = layer_item(Item::BeginLayer, opacity);
+            begin.blend = blend;
+            items.push_back(std::move(begin));
+        }
         content(child, cst, cm, vw, vh, depth, layered ? 1.0 : opacity);
         if (layered) {
             const std::optional<Rect> box = items_bbox(first + 1, cm);
@@ -1474,6 +1485,7 @@ void SvgDocument::render(Canvas& canvas, const Affine& base) const {
         Canvas canvas;
         double opacity = 1;
         bool luminance = false;
+        BlendMode blend = BlendMode::Normal;
         Frame(int w, int h) : pm(w, h), canvas(pm) {}
     };
     std::vector<std::unique_ptr<Frame>> frames;
@@ -1487,13 +1499,14 @@ void SvgDocument::render(Canvas& canvas, const Affine& base) const {
                 frames.back()->canvas.fill_options() = canvas.fill_options();
                 frames.back()->opacity = it.opacity;
                 frames.back()->luminance = it.kind == Item::BeginMask && it.luminance;
+                frames.back()->blend = it.blend;
                 continue;
             }
             case Item::EndLayer: {
                 if (frames.empty()) continue;
                 std::unique_ptr<Frame> f = std::move(frames.back());
                 frames.pop_back();
-                cur().draw_layer(f->pm, f->opacity);
+                cur().draw_layer(f->pm, f->opacity, f->blend);
                 continue;
             }
             case Item::EndMask: {
