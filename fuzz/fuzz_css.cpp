@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         "<svg id='root' class='a b'><g class='x'><rect id='r' class='c' data-k='v-1'/><circle/></g><g><g><path/></g></g></svg>";
     pugi::xml_document doc;
     doc.load_string(kDoc);
-    for (pugi::xml_node n : doc.select_nodes("//*"))
-        for (const casteljau::css::Rule& r : sheet.rules) (void)casteljau::css::matches(r.selector, n);
+    for (const pugi::xpath_node& xn : doc.select_nodes("//*"))
+        for (const casteljau::css::Rule& r : sheet.rules) (void)casteljau::css::matches(r.selector, xn.node());
     return 0;
 }

@@ -1,12 +1,23 @@
 // casteljau/svg.hpp: an SVG reader that draws onto a Canvas.
 //
-// Supported now: the root <svg> width/height (px or unitless; percentages and physical units
-// are converted at 96 dpi) and viewBox with preserveAspectRatio; <g> with transform and inherited
-// presentation attributes; <path>, <rect>, <circle>, <ellipse>, <line>, <polyline>, <polygon>;
-// fill (colour or none), fill-rule, fill-opacity, opacity on shapes, the style attribute;
-// transform lists (matrix, translate, scale, rotate, skewX, skewY). Unknown elements are skipped.
+// Supported: the root size (px, physical units at 96 dpi, percentages), viewBox and every
+// preserveAspectRatio form; a root with a prefix bound to the SVG namespace (<svg:svg>); .svgz;
+// shapes (path, rect, circle, ellipse, line, polyline, polygon); fill and stroke with their
+// properties (rules, opacity, width, caps, joins, miter limit, dashes), paint-order, visibility,
+// display; transform lists and transform-origin; g, a, defs, switch (systemLanguage is matched
+// against English, requiredExtensions never passes), use (of elements, symbol and svg, with x, y,
+// width, height), symbol (viewBox, refX/refY), nested svg viewports clipped by overflow; paint
+// servers linearGradient and radialGradient (units, gradientTransform, spreadMethod, href
+// inheritance, stops) drawn through the paint stage's Shader; <style> sheets (src/formats/css.hpp)
+// with the cascade presentation attribute < sheet < style attribute and !important; clipPath and
+// mask (units, clip-rule, mask-type, nested), as exact-area coverage masks of layers; markers;
+// group opacity, mix-blend-mode and isolation; <image> (PNG, JPEG, SVG; see SvgOptions).
+// Not drawn yet: text, filters, patterns, context-fill/context-stroke (warnings name them).
+// Cycles (use, gradient href, clip-path, mask, marker) are broken: the repeated reference is
+// skipped or the element is not drawn.
 // SVG coordinates: user units, y down, mapped to pixels by the viewBox transform.
-// Limits: element nesting depth limits::kMaxNestingDepth; canvas size as for Pixmap.
+// Limits: element nesting depth limits::kMaxNestingDepth, limits::kMaxSvgElements drawn elements
+// (use copies included), limits::kMaxSvgImageNesting; canvas size as for Pixmap.
 // Thread-safety: SvgDocument is an immutable value after parsing; render from any thread.
 #pragma once
 

@@ -479,7 +479,14 @@ public:
         }
         const pugi::xml_node server = lookup(ref.id);
         const std::string_view kind = server ? server.name() : "";
-        if (kind == "linearGradient" || kind == "radialGradient") return gradient(server, path, vw, vh, it);
+        if (kind == "linearGradient" || kind == "radialGradient") {
+            if (gradient(server, path, vw, vh, it)) return true;
+            // An unusable gradient (no stops) takes the fallback colour when there is one.
+            if (ref.fallback != PaintRef::Solid) return false;
+            it.shader.reset();
+            it.color = ref.fallback_color;
+            return true;
+        }
         if (!server || ref.fallback != PaintRef::None) {
             if (ref.fallback == PaintRef::Solid) {
                 it.color = ref.fallback_color;
@@ -822,8 +829,8 @@ public:
             else m = m * Affine::translate(box->x0, box->y0) * Affine::scale(box->width(), box->height());
         }
         bool inner_missing = false;
-        const pugi::xml_node inner = reference(clip, "clip-path", "clipPath", inner_missing);
-        if (inner && is_active(inner)) ok = false;
+        pugi::xml_node inner = reference(clip, "clip-path", "clipPath", inner_missing);
+        if (inner && is_active(inner)) inner = {};  // a reference back into the cycle is ignored (as resvg does)
         if (ok) {
             if (inner) items.push_back(layer_item(Item::BeginLayer, 1));
             FillRule rule = FillRule::NonZero;
@@ -884,8 +891,8 @@ public:
         std::optional<Path> p = shape_path(c, vw, vh);
         if (!p || p->empty() || name == "line") return;
         bool missing = false;
-        const pugi::xml_node own = reference(c, "clip-path", "clipPath", missing);
-        if (own && is_active(own)) return;
+        pugi::xml_node own = reference(c, "clip-path", "clipPath", missing);
+        if (own && is_active(own)) own = {};  // a reference back into the cycle is ignored (as resvg does)
         if (own) items.push_back(layer_item(Item::BeginLayer, 1));
         Item it;
         it.kind = Item::Fill;
