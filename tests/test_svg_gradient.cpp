@@ -65,3 +65,24 @@ TEST_CASE("svg gradient: bad input is drawn as documented", "[svg][gradient]") {
               .pixel(50, 5)
               .a == 0);
 }
+
+TEST_CASE("svg pattern: a tile repeats across the fill", "[svg][pattern]") {
+    const Pixmap pm = draw(
+        "<pattern id='p' patternUnits='userSpaceOnUse' width='10' height='10'>"
+        "<rect width='5' height='10' fill='#00f'/></pattern><rect width='100' height='10' fill='url(#p)'/>");
+    CHECK(pm.pixel(2, 5) == PremulPixel{0, 0, 255, 255});
+    CHECK(pm.pixel(7, 5).a == 0);
+    CHECK(pm.pixel(92, 5) == PremulPixel{0, 0, 255, 255});
+    CHECK(pm.pixel(97, 5).a == 0);
+}
+
+TEST_CASE("svg pattern: a tile of 1e-6 px on a large canvas and a self-referencing pattern", "[svg][pattern][bad-input]") {
+    const SvgDocument doc = SvgDocument::parse(
+        "<svg xmlns='http://www.w3.org/2000/svg' width='4000' height='4000'>"
+        "<pattern id='p' patternUnits='userSpaceOnUse' width='1e-6' height='1e-6'><rect width='1' height='1' fill='#00f'/></pattern>"
+        "<pattern id='q' patternUnits='userSpaceOnUse' width='10' height='10'><rect width='10' height='10' fill='url(#q)'/></pattern>"
+        "<rect width='4000' height='2000' fill='url(#p)'/><rect y='2000' width='4000' height='2000' fill='url(#q)'/></svg>");
+    const Pixmap pm = doc.render();
+    CHECK(pm.pixel(100, 100) == PremulPixel{0, 0, 255, 255});  // the tile is all blue: one pixel, repeated
+    CHECK(pm.pixel(100, 3000).a == 0);                          // the self-reference paints nothing
+}

@@ -46,7 +46,9 @@ public:
     // A raster image: gradient space is the image's pixel space ([0, w] x [0, h]); outside it the
     // shader is transparent. `smooth`: bilinear sampling of the premultiplied pixels (edges
     // clamped); otherwise the nearest pixel. Throws Error(InvalidArgument) for a null or empty image.
-    static Shader image(std::shared_ptr<const Pixmap> image, bool smooth = true, const Affine& transform = {});
+    // `repeat`: the image tiles the whole plane instead (patterns).
+    static Shader image(std::shared_ptr<const Pixmap> image, bool smooth = true, const Affine& transform = {},
+                        bool repeat = false);
 
     Kind kind() const { return kind_; }
     const Affine& transform() const { return transform_; }
@@ -74,6 +76,7 @@ private:
     Affine transform_;
     std::shared_ptr<const Pixmap> image_;
     bool smooth_ = true;
+    bool repeat_ = false;
     void shade_image_row(const Affine& pixel_to_image, int x, int y, int length, double opacity, std::uint8_t* out) const;
 };
 

@@ -33,6 +33,8 @@ namespace casteljau {
 
 namespace {
 
+struct PatternTile;
+
 struct Item {
     enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask, SvgImage } kind = Fill;
     bool luminance = false;  // BeginMask: luminance (true) or alpha mask
@@ -42,6 +44,7 @@ struct Item {
     Color color;
     std::shared_ptr<const Shader> shader;  // a gradient or image instead of `color`
     std::shared_ptr<const SvgDocument> svg_image;  // SvgImage: drawn with `transform` as its base
+    std::shared_ptr<const PatternTile> pattern;    // a pattern instead of `color`: rendered per fill
     FillRule rule = FillRule::NonZero;
     double opacity = 1;  // fill/stroke: multiplies colour alpha; layer: group opacity
     StrokeStyle stroke;  // Stroke items
@@ -55,6 +58,14 @@ struct PaintRef {
     Kind fallback = None;              // Server: what to paint when the reference is unusable
     Color fallback_color = Color::black();
     static PaintRef solid(Color c) { PaintRef p; p.kind = Solid; p.color = c; return p; }
+};
+
+// A pattern's tile: its content (items in the fill's user space), the tile rectangle in pattern
+// space, and the pattern space -> user space transform (patternTransform).
+struct PatternTile {
+    std::vector<Item> items;
+    Rect tile;
+    Affine transform;
 };
 
 constexpr double kPi = 3.14159265358979323846;
@@ -77,6 +88,9 @@ struct Style {
     bool visible = true;  // visibility (inherited)
     std::array<int, 3> paint_order{0, 1, 2};  // paint-order: 0 fill, 1 stroke, 2 markers (inherited)
     std::string marker_start, marker_mid, marker_end;  // marker ids (inherited)
+    // What context-fill and context-stroke name: the fill and stroke of the use element or of the
+    // shape a marker is drawn on (none outside those).
+    PaintRef context_fill, context_stroke;
 };
 
 std::string_view trim(std::string_view s) {
@@ -294,14 +308,18 @@ public:
         for (const auto& [k, v] : properties(node)) {
             const std::string_view val = trim(v);
             if (k == "fill") {
-                apply_paint(k, val, st.color, st.fill);
+                if (val == "context-fill") st.fill = st.context_fill;
+                else if (val == "context-stroke") st.fill = st.context_stroke;
+                else apply_paint(k, val, st.color, st.fill);
             } else if (k == "fill-rule") {
                 if (val == "evenodd") st.fill_rule = FillRule::EvenOdd;
                 else if (val == "nonzero") st.fill_rule = FillRule::NonZero;
             } else if (k == "fill-opacity") {
                 if (auto o = parse_opacity(val)) st.fill_opacity = *o;
             } else if (k == "stroke") {
-                apply_paint(k, val, st.color, st.stroke);
+                if (val == "context-fill") st.stroke = st.context_fill;
+                else if (val == "context-stroke") st.stroke = st.context_stroke;
+                else apply_paint(k, val, st.color, st.stroke);
             } else if (k == "stroke-opacity") {
                 if (auto o = parse_opacity(val)) st.stroke_opacity = *o;
             } else if (k == "stroke-width") {
@@ -495,7 +513,13 @@ public:
             if (!server) warn("paint server '#" + ref.id + "' not found; painted as none");
             return false;
         }
-        warn("<" + std::string(kind) + "> paint servers are not supported yet; painted as none");
+        if (kind == "pattern") {
+            if (pattern(server, path, vw, vh, it)) return true;
+            if (ref.fallback != PaintRef::Solid) return false;
+            it.color = ref.fallback_color;
+            return true;
+        }
+        warn("<" + std::string(kind) + "> is not a paint server; painted as none");
         return false;
     }
 
@@ -749,17 +773,20 @@ public:
                 }
         const double x = length_attr(u, "x", vw), y = length_attr(u, "y", vh);
         use_stack.push_back(u);
+        Style ust = st;
+        ust.context_fill = st.fill;
+        ust.context_stroke = st.stroke;
         const std::string_view tn = target.name();
         if (tn == "symbol" || tn == "svg") {
             const pugi::xml_node size_from = u.attribute("width") ? u : target;
             const pugi::xml_node hsize_from = u.attribute("height") ? u : target;
             const double w = length_attr(size_from, "width", vw, vw), hh = length_attr(hsize_from, "height", vh, vh);
             const double tx = tn == "svg" ? length_attr(target, "x", vw) : 0, ty = tn == "svg" ? length_attr(target, "y", vh) : 0;
-            Style tst = st;
+            Style tst = ust;
             apply_style(target, tst);
             viewport(target, tst, m, x + tx, y + ty, w, hh, depth + 1, tn == "symbol");
         } else {
-            element(target, st, m * Affine::translate(x, y), vw, vh, depth + 1);
+            element(target, ust, m * Affine::translate(x, y), vw, vh, depth + 1);
         }
         use_stack.pop_back();
     }
@@ -1090,6 +1117,105 @@ public:
         else draw();
     }
 
+    int paint_depth = 0;  // patterns inside pattern content
+
+    // A pattern with its href chain (attributes from the first element that has them, content
+    // from the first with child elements): its tile content becomes a PatternTile that the
+    // renderer draws at device resolution and repeats through an image shader.
+    bool pattern(const pugi::xml_node& node, const Path& path, double vw, double vh, Item& it) {
+        std::vector<pugi::xml_node> chain{node};
+        while (chain.size() < 32) {
+            const char* h = href(chain.back());
+            if (*h != '#') break;
+            const pugi::xml_node next = lookup(h + 1);
+            if (!next || std::string_view(next.name()) != "pattern") break;
+            if (std::find(chain.begin(), chain.end(), next) != chain.end()) break;
+            chain.push_back(next);
+        }
+        auto attr = [&](const char* name) -> std::string_view {
+            for (const pugi::xml_node& n : chain)
+                if (const char* v = n.attribute(name).value(); *v) return v;
+            return {};
+        };
+        pugi::xml_node content;
+        for (const pugi::xml_node& n : chain) {
+            for (const pugi::xml_node& c : n.children())
+                if (c.type() == pugi::node_element) {
+                    content = n;
+                    break;
+                }
+            if (content) break;
+        }
+        if (!content || is_active(node) || is_active(content)) return false;
+        const bool units_bbox = attr("patternUnits") != "userSpaceOnUse";
+        const bool content_bbox = attr("patternContentUnits") == "objectBoundingBox";
+        const Rect b = path.bounds();
+        const bool have_box = b.width() > 0 && b.height() > 0;
+        if ((units_bbox || content_bbox) && !have_box) return false;
+        auto num = [&](const char* name, double percent_of) -> double {
+            const std::string_view v = attr(name);
+            if (v.empty()) return 0;
+            auto l = parse_length(v, units_bbox ? 1.0 : percent_of);
+            return l ? *l : 0;
+        };
+        Rect tile;
+        if (units_bbox)
+            tile = Rect::from_xywh(b.x0 + num("x", 1) * b.width(), b.y0 + num("y", 1) * b.height(), num("width", 1) * b.width(),
+                                   num("height", 1) * b.height());
+        else
+            tile = Rect::from_xywh(num("x", vw), num("y", vh), num("width", vw), num("height", vh));
+        if (!(tile.width() > 0) || !(tile.height() > 0) || !std::isfinite(tile.width()) || !std::isfinite(tile.height())) return false;
+        Affine pt;
+        if (const std::string_view t = attr("patternTransform"); !t.empty()) {
+            try {
+                pt = parse_svg_transform(t);
+                if (!pt.inverse()) return false;
+                pt = with_origin(node, pt, vw, vh);
+            } catch (const Error&) {
+                warn("invalid patternTransform; ignored");
+            }
+        }
+        Affine cm;
+        double cvw = vw, cvh = vh;
+        const pugi::xml_node vb_node = [&] {
+            for (const pugi::xml_node& n : chain)
+                if (*n.attribute("viewBox").value()) return n;
+            return pugi::xml_node();
+        }();
+        if (auto vb = vb_node ? parse_viewbox(vb_node.attribute("viewBox").value()) : std::nullopt) {
+            cm = Affine::translate(tile.x0, tile.y0) *
+                 viewbox_transform(*vb, vb_node.attribute("preserveAspectRatio").value(), tile.width(), tile.height());
+            cvw = vb->width();
+            cvh = vb->height();
+        } else if (content_bbox) {
+            cm = Affine::translate(b.x0, b.y0) * Affine::scale(b.width(), b.height());
+        }
+        if (++paint_depth > limits::kMaxNestingDepth)
+            throw Error(ErrorKind::Limit, "patterns nested deeper than " + std::to_string(limits::kMaxNestingDepth));
+        std::vector<Item> saved;
+        std::swap(saved, items);
+        active_refs.push_back(node);
+        active_refs.push_back(content);
+        Style st;
+        apply_style(content, st);
+        try {
+            walk(content, st, cm, cvw, cvh, 1);
+        } catch (...) {
+            std::swap(saved, items);
+            throw;
+        }
+        active_refs.pop_back();
+        active_refs.pop_back();
+        --paint_depth;
+        auto tile_items = std::make_shared<PatternTile>();
+        tile_items->items = std::move(items);
+        tile_items->tile = tile;
+        tile_items->transform = pt;
+        items = std::move(saved);
+        it.pattern = std::move(tile_items);
+        return true;
+    }
+
     void element(const pugi::xml_node& child, const Style& st, const Affine& m, double vw, double vh, int depth) {
         if (depth > limits::kMaxNestingDepth)
             throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
@@ -1305,6 +1431,8 @@ public:
         const bool clip = !(overflow == "visible" || overflow == "auto");
         active_refs.push_back(marker);
         Style mst;
+        mst.context_fill = st.fill;
+        mst.context_stroke = st.stroke;
         apply_style(marker, mst);
         items.push_back(layer_item(Item::BeginLayer, 1));
         walk(marker, mst, content_m, nvw, nvh, depth + 1);
@@ -1483,7 +1611,9 @@ SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options
     return SvgDocument(std::move(impl));
 }
 
-void SvgDocument::render(Canvas& canvas, const Affine& base) const {
+namespace {
+
+void render_items(const std::vector<Item>& items, Canvas& canvas, const Affine& base) {
     // Layers: groups with opacity, clip paths or masks (BeginLayer .. EndLayer), and the content of
     // clip paths and masks (BeginClip/BeginMask .. EndMask), which becomes a coverage mask that
     // multiplies the layer it closes in.
@@ -1497,7 +1627,7 @@ void SvgDocument::render(Canvas& canvas, const Affine& base) const {
     };
     std::vector<std::unique_ptr<Frame>> frames;
     auto cur = [&]() -> Canvas& { return frames.empty() ? canvas : frames.back()->canvas; };
-    for (const Item& it : impl_->items) {
+    for (const Item& it : items) {
         switch (it.kind) {
             case Item::BeginLayer:
             case Item::BeginClip:
@@ -1545,6 +1675,23 @@ void SvgDocument::render(Canvas& canvas, const Affine& base) const {
         Paint paint = Paint::solid(it.color);
         paint.shader = it.shader;
         paint.opacity = it.opacity;
+        if (it.pattern) {
+            // The tile is drawn at the device resolution the fill needs, then repeated.
+            const PatternTile& pt = *it.pattern;
+            const Affine m = base * it.transform * pt.transform;
+            const double sx = std::hypot(m.a, m.b) * pt.tile.width(), sy = std::hypot(m.c, m.d) * pt.tile.height();
+            const int tw = static_cast<int>(std::clamp(std::ceil(sx), 1.0, 2048.0));
+            const int th = static_cast<int>(std::clamp(std::ceil(sy), 1.0, 2048.0));
+            auto tile = std::make_shared<Pixmap>(tw, th);
+            Canvas tc(*tile);
+            tc.fill_options() = c.fill_options();
+            render_items(pt.items, tc,
+                         Affine::scale(tw / pt.tile.width(), th / pt.tile.height()) * Affine::translate(-pt.tile.x0, -pt.tile.y0));
+            paint.shader = std::make_shared<const Shader>(Shader::image(
+                tile, true,
+                pt.transform * Affine::translate(pt.tile.x0, pt.tile.y0) * Affine::scale(pt.tile.width() / tw, pt.tile.height() / th),
+                true));
+        }
         const Affine saved = c.transform();
         c.set_transform(base * it.transform);
         if (it.kind == Item::Stroke) c.stroke_path(it.path, it.stroke, paint);
@@ -1552,6 +1699,10 @@ void SvgDocument::render(Canvas& canvas, const Affine& base) const {
         c.set_transform(saved);
     }
 }
+
+}  // namespace
+
+void SvgDocument::render(Canvas& canvas, const Affine& base) const { render_items(impl_->items, canvas, base); }
 
 Pixmap SvgDocument::render() const { return render_size(impl_->width, impl_->height); }
 
