@@ -1187,8 +1187,10 @@ public:
                  viewbox_transform(*vb, vb_node.attribute("preserveAspectRatio").value(), tile.width(), tile.height());
             cvw = vb->width();
             cvh = vb->height();
-        } else if (content_bbox) {
-            cm = Affine::translate(b.x0, b.y0) * Affine::scale(b.width(), b.height());
+        } else {
+            // The content's origin is the tile's top-left corner.
+            cm = Affine::translate(tile.x0, tile.y0);
+            if (content_bbox) cm = cm * Affine::scale(b.width(), b.height());
         }
         if (++paint_depth > limits::kMaxNestingDepth)
             throw Error(ErrorKind::Limit, "patterns nested deeper than " + std::to_string(limits::kMaxNestingDepth));
