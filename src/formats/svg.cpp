@@ -1250,7 +1250,8 @@ public:
         bool clip_missing = false, mask_missing = false;
         const pugi::xml_node clip = reference(child, "clip-path", "clipPath", clip_missing);
         const pugi::xml_node mask = reference(child, "mask", "mask", mask_missing);
-        if (mask_missing) return;  // a mask that does not exist hides the element
+        (void)clip_missing;  // a clip-path or mask naming nothing is ignored (as browsers do)
+        (void)mask_missing;
         if ((clip && is_active(clip)) || (mask && is_active(mask))) {
             warn(std::string("<") + child.name() + ">: recursive clip-path or mask; element not drawn");
             return;
@@ -1405,6 +1406,8 @@ public:
                 double unit = kPi / 180;
                 if (o.size() > 3 && o.substr(o.size() - 3) == "deg") o.remove_suffix(3);
                 else if (o.size() > 3 && o.substr(o.size() - 3) == "rad") { o.remove_suffix(3); unit = 1; }
+                else if (o.size() > 4 && o.substr(o.size() - 4) == "grad") { o.remove_suffix(4); unit = kPi / 200; }
+                else if (o.size() > 4 && o.substr(o.size() - 4) == "turn") { o.remove_suffix(4); unit = 2 * kPi; }
                 if (auto n = parse_number(o)) angle = *n * unit;
             }
             emit_marker(marker, st, cm * Affine::translate(v.p.x, v.p.y) * Affine::rotate(angle), vw, vh, depth);
