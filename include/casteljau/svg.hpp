@@ -8,11 +8,13 @@
 // against English, requiredExtensions never passes), use (of elements, symbol and svg, with x, y,
 // width, height), symbol (viewBox, refX/refY), nested svg viewports clipped by overflow; paint
 // servers linearGradient and radialGradient (units, gradientTransform, spreadMethod, href
-// inheritance, stops) drawn through the paint stage's Shader; <style> sheets (src/formats/css.hpp)
+// inheritance, stops) and pattern (a tile drawn at device resolution, repeated) drawn through the
+// paint stage's Shader; context-fill/context-stroke in use and markers; <style> sheets (src/formats/css.hpp)
 // with the cascade presentation attribute < sheet < style attribute and !important; clipPath and
 // mask (units, clip-rule, mask-type, nested), as exact-area coverage masks of layers; markers;
 // group opacity, mix-blend-mode and isolation; <image> (PNG, JPEG, SVG; see SvgOptions).
-// Not drawn yet: text, filters, patterns, context-fill/context-stroke (warnings name them).
+// Not drawn yet: text and filters (warnings name them); elements with a filter are drawn
+// unfiltered.
 // Cycles (use, gradient href, clip-path, mask, marker) are broken: the repeated reference is
 // skipped or the element is not drawn.
 // SVG coordinates: user units, y down, mapped to pixels by the viewBox transform.
