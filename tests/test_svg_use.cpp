@@ -3,6 +3,7 @@
 // 10,000 nested groups.
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <string>
 
 #include "casteljau/error.hpp"
@@ -98,4 +99,9 @@ TEST_CASE("svg transform-origin: the transform turns about the origin given", "[
     const Pixmap px = doc("<rect width='20' height='20' fill='green' transform='scale(0.5)' transform-origin='20px 0'/>").render();
     CHECK(px.pixel(15, 5) == kGreen);
     CHECK(px.pixel(5, 5).a == 0);
+}
+
+TEST_CASE("svg use: an instanced symbol keeps its own opacity", "[svg][use]") {
+    const Pixmap pm = doc("<symbol id='s' opacity='0.5'><rect width='20' height='20' fill='#000'/></symbol><use href='#s'/>").render();
+    CHECK(std::abs(pm.pixel(10, 10).a - 128) <= 1);
 }

@@ -784,7 +784,14 @@ public:
             const double tx = tn == "svg" ? length_attr(target, "x", vw) : 0, ty = tn == "svg" ? length_attr(target, "y", vh) : 0;
             Style tst = ust;
             apply_style(target, tst);
+            // The instanced symbol or svg keeps its own opacity.
+            double op = 1;
+            for (const auto& [k, v] : properties(target))
+                if (k == "opacity")
+                    if (auto o = parse_opacity(v)) op = *o;
+            if (op < 1) items.push_back(layer_item(Item::BeginLayer, op));
             viewport(target, tst, m, x + tx, y + ty, w, hh, depth + 1, tn == "symbol");
+            if (op < 1) items.push_back(layer_item(Item::EndLayer, op));
         } else {
             element(target, ust, m * Affine::translate(x, y), vw, vh, depth + 1);
         }
