@@ -10,9 +10,9 @@ seconds=${2:?usage: run_smoke.sh TARGET SECONDS}
 build=${CASTELJAU_FUZZ_BUILD:-$root/build-fuzz}
 if [ ! -f "$build/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASTELJAU_BUILD_FUZZ=ON \
-    -DCASTELJAU_BUILD_TESTS=OFF -DCASTELJAU_BUILD_BENCH=OFF -DCASTELJAU_BUILD_EXAMPLES=OFF > "$build.log"
+    -DCASTELJAU_BUILD_TESTS=OFF -DCASTELJAU_BUILD_BENCH=OFF -DCASTELJAU_BUILD_EXAMPLES=OFF > /dev/null
 fi
-cmake --build "$build" --target "$target" -j"${CASTELJAU_JOBS:-2}" >> "$build.log"
+cmake --build "$build" --target "$target" -j"${CASTELJAU_JOBS:-2}" > "$build/fuzz-build.log" || { tail -30 "$build/fuzz-build.log"; exit 1; }
 corpus=$(mktemp -d)
 trap 'rm -rf "$corpus"' EXIT
 cp -r "$root/fuzz/corpus/${target#fuzz_}/." "$corpus/"
