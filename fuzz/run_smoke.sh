@@ -1,31 +1,34 @@
-#!/bin/sh
-# Builds one libFuzzer target with clang in build-fuzz/ and runs it for SECONDS on a copy of its seed
-# corpus (fuzz/corpus/TARGET-without-fuzz_ plus the matching test data), so the repository is
-# never written to (crash/timeout inputs go to build-fuzz/). Exit status: libFuzzer's (non-zero when it found a crash, leak or timeout).
-# Usage: fuzz/run_smoke.sh fuzz_map_data 60
-set -eu
-target=${1:?usage: fuzz/run_smoke.sh TARGET SECONDS}
-seconds=${2:-60}
+#!/usr/bin/env bash
+# Builds (if needed) and runs one fuzz target for SECONDS on its seed corpus (fuzz/corpus/NAME,
+# where NAME is TARGET without the fuzz_ prefix), in a scratch copy so that the committed corpus is
+# never changed; inputs that crash, leak or time out are written to BUILD/artifacts/. Exits non-zero
+# when the fuzzer finds a crash, leak, timeout or sanitizer report.
+# Usage: fuzz/run_smoke.sh TARGET SECONDS     e.g. fuzz/run_smoke.sh fuzz_svg 60
+# The build folder is $CASTELJAU_FUZZ_BUILD, by default build-fuzz/ in the checkout.
+set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build="$root/build-fuzz"
+target=${1:?usage: run_smoke.sh TARGET SECONDS}
+seconds=${2:?usage: run_smoke.sh TARGET SECONDS}
+build=${CASTELJAU_FUZZ_BUILD:-$root/build-fuzz}
 if [ ! -f "$build/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASTELJAU_BUILD_FUZZ=ON \
-    -DCASTELJAU_BUILD_TESTS=OFF -DCASTELJAU_BUILD_BENCH=OFF -DCASTELJAU_BUILD_EXAMPLES=OFF >/dev/null
+    -DCASTELJAU_BUILD_TESTS=OFF -DCASTELJAU_BUILD_BENCH=OFF -DCASTELJAU_BUILD_EXAMPLES=OFF > /dev/null
 fi
-cmake --build "$build" --target "$target" -j2 >/dev/null
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+cmake --build "$build" --target "$target" -j"${CASTELJAU_JOBS:-2}" > "$build/fuzz-build-$target.log" 2>&1 ||
+  { tail -30 "$build/fuzz-build-$target.log"; exit 1; }
+corpus=$(mktemp -d)
+trap 'rm -rf "$corpus"' EXIT
 name=${target#fuzz_}
-cp -r "$root/fuzz/corpus/$name" "$work/corpus"
+cp -r "$root/fuzz/corpus/$name/." "$corpus/"
 case "$name" in
   map_data)
     # Each seed is tried with every reader: the first byte chooses it (see fuzz_map_data.cpp).
     for f in "$root"/tests/data/maps/*.json "$root"/tests/data/maps/*.geojson "$root"/fuzz/corpus/map_data/*; do
       for b in 0 1 2 3 8 12 19; do
-        { printf "\\$(printf '%03o' "$b")"; cat "$f"; } > "$work/corpus/$(basename "$f").$b"
+        { printf "\\$(printf '%03o' "$b")"; cat "$f"; } > "$corpus/$(basename "$f").$b"
       done
     done ;;
 esac
+mkdir -p "$build/artifacts"
 "$build/fuzz/$target" -max_total_time="$seconds" -max_len=131072 -timeout=10 -rss_limit_mb=2048 \
-  -artifact_prefix="$build/" \
-  -print_final_stats=1 "$work/corpus"
+  -artifact_prefix="$build/artifacts/$target-" -print_final_stats=1 "$corpus"

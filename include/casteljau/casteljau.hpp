@@ -11,6 +11,7 @@
 #include "casteljau/arc.hpp"
 #include "casteljau/bezier.hpp"
 #include "casteljau/canvas.hpp"
+#include "casteljau/shader.hpp"
 #include "casteljau/error.hpp"
 #include "casteljau/flatten.hpp"
 #include "casteljau/geometry.hpp"

@@ -1,38 +1,90 @@
 // casteljau/svg.hpp: an SVG reader that draws onto a Canvas.
 //
-// Supported now: the root <svg> width/height (px or unitless; percentages and physical units
-// are converted at 96 dpi) and viewBox with preserveAspectRatio; <g> with transform and inherited
-// presentation attributes; <path>, <rect>, <circle>, <ellipse>, <line>, <polyline>, <polygon>;
-// fill (colour or none), fill-rule, fill-opacity, opacity on shapes, the style attribute;
-// transform lists (matrix, translate, scale, rotate, skewX, skewY). Unknown elements are skipped.
+// Supported: the root size (px, physical units at 96 dpi, percentages), viewBox and every
+// preserveAspectRatio form; a root with a prefix bound to the SVG namespace (<svg:svg>); .svgz;
+// shapes (path, rect, circle, ellipse, line, polyline, polygon); fill and stroke with their
+// properties (rules, opacity, width, caps, joins, miter limit, dashes), paint-order, visibility,
+// display; transform lists and transform-origin; g, a, defs, switch (systemLanguage is matched
+// against English, requiredExtensions never passes), use (of elements, symbol and svg, with x, y,
+// width, height), symbol (viewBox, refX/refY), nested svg viewports clipped by overflow; paint
+// servers linearGradient and radialGradient (units, gradientTransform, spreadMethod, href
+// inheritance, stops) and pattern (a tile drawn at device resolution, repeated) drawn through the
+// paint stage's Shader; context-fill/context-stroke in use and markers; <style> sheets (src/formats/css.hpp)
+// with the cascade presentation attribute < sheet < style attribute and !important; clipPath and
+// mask (units, clip-rule, mask-type, nested), as exact-area coverage masks of layers; markers;
+// group opacity, mix-blend-mode and isolation; <image> (PNG, JPEG, SVG; see SvgOptions).
+// Not drawn yet: text and filters (warnings name them); elements with a filter are drawn
+// unfiltered.
+// Cycles (use, gradient href, clip-path, mask, marker) are broken: the repeated reference is
+// skipped or the element is not drawn.
 // SVG coordinates: user units, y down, mapped to pixels by the viewBox transform.
-// Limits: element nesting depth limits::kMaxNestingDepth; canvas size as for Pixmap.
+// Limits: element nesting depth limits::kMaxNestingDepth, limits::kMaxSvgElements drawn elements
+// (use copies included), limits::kMaxSvgImageNesting; canvas size as for Pixmap.
 // Thread-safety: SvgDocument is an immutable value after parsing; render from any thread.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/paint.hpp"
 
 namespace casteljau {
 
+namespace limits {
+// Elements drawn or expanded while reading one document, counting every copy a <use> makes:
+// nested uses can multiply to billions (a "use bomb"); past this the document is refused with
+// Error(Limit).
+inline constexpr std::size_t kMaxSvgElements = 1'000'000;
+// SVG documents drawn as <image> inside SVG documents, nested at most this deep (deeper ones are
+// skipped with a warning: an image that shows itself stops there).
+inline constexpr int kMaxSvgImageNesting = 4;
+// Decompressed size of an .svgz.
+inline constexpr std::size_t kMaxSvgzBytes = 64u << 20;
+}  // namespace limits
+
+// Where <image> may read files from. Nothing is ever fetched over the network (http:, https:,
+// any URL scheme but data: is refused), absolute paths are refused, and a relative href resolves
+// against `base_dir` and must stay inside `resource_root` (default: base_dir itself) after
+// symbolic links are resolved. An empty base_dir (text parsed from memory) refuses every file;
+// data: URIs always work.
+struct SvgOptions {
+    std::string base_dir;
+    std::string resource_root;
+    int nesting = 0;  // SVG images nest at most limits::kMaxSvgImageNesting deep
+};
+
 class SvgDocument {
 public:
-    // Parses SVG text. Throws Error(Parse) for malformed XML, Error(InvalidData) for an unusable
-    // root (missing size, negative or zero size), Error(Limit) beyond the limits.
-    static SvgDocument parse(std::string_view text);
-    static SvgDocument load(const std::string& path);
+    // Parses SVG text (or gzip-compressed SVG text: .svgz). Throws Error(Parse) for malformed XML,
+    // Error(InvalidData) for an unusable root (missing size, negative or zero size), Error(Limit)
+    // beyond the limits.
+    static SvgDocument parse(std::string_view text, const SvgOptions& options = {});
+    // Reads a file (.svg or .svgz); images resolve against the file's folder, and may not leave it
+    // unless `resource_root` names a wider folder.
+    static SvgDocument load(const std::string& path, const std::string& resource_root = {});
 
     SvgDocument(SvgDocument&&) noexcept;
     SvgDocument& operator=(SvgDocument&&) noexcept;
     ~SvgDocument();
 
-    // Output size in pixels (the root's width and height, rounded up to whole pixels).
+    // Output size in pixels: the root's width and height (96 dpi) rounded to the nearest whole
+    // pixel, at least 1 (resvg's rule). The fractional intrinsic size is kept for scaling.
     int width() const;
     int height() const;
+    double intrinsic_width() const;
+    double intrinsic_height() const;
+    // Output sizes for a requested width, height or zoom, the way resvg and rsvg-convert choose
+    // them: the other side is ceil(requested x the rounded aspect ratio); a zoom multiplies the
+    // rounded size and rounds up. So width="16.031" height="16" at width 256 is 256 x 256.
+    // Throws Error(Limit) past the canvas limits.
+    std::pair<int, int> output_size_for_width(int width) const;
+    std::pair<int, int> output_size_for_height(int height) const;
+    std::pair<int, int> output_size_for_zoom(double zoom) const;
     // Warnings collected while reading (unsupported features, recovered path-data errors).
     const std::vector<std::string>& warnings() const;
 
@@ -40,6 +92,9 @@ public:
     void render(Canvas& canvas, const Affine& base = {}) const;
     // A transparent Pixmap of width() x height() with the document drawn.
     Pixmap render() const;
+    // A transparent Pixmap of width x height, the document scaled to fill it exactly (the
+    // intrinsic size, fractional, maps onto the whole pixmap).
+    Pixmap render_size(int width, int height) const;
 
 private:
     struct Impl;

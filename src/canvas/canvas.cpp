@@ -11,16 +11,32 @@ namespace casteljau {
 
 namespace {
 
+// Composites coverage rows with a solid paint, or with a shader's colours computed for the row
+// into `scratch` (which grows to the widest row once, not per pixel).
 class CompositeSink final : public SpanSink {
 public:
-    CompositeSink(Pixmap& pm, const Paint& paint) : pm_(pm), paint_(paint) {}
+    CompositeSink(Pixmap& pm, const Paint& paint, const Affine& ctm, std::vector<std::uint8_t>& scratch)
+        : pm_(pm), paint_(paint), scratch_(scratch) {
+        if (paint.shader) {
+            if (auto inv = (ctm * paint.shader->transform()).inverse()) inverse_ = *inv;
+            else skip_ = true;  // a singular gradient transform paints nothing
+        }
+    }
     void row(int y, int x, int length, const std::uint8_t* coverage) override {
-        composite_span(pm_.row(y) + 4 * static_cast<std::size_t>(x), length, coverage, paint_);
+        std::uint8_t* dst = pm_.row(y) + 4 * static_cast<std::size_t>(x);
+        if (!paint_.shader) return composite_span(dst, length, coverage, paint_);
+        if (skip_) return;
+        if (scratch_.size() < 4 * static_cast<std::size_t>(length)) scratch_.resize(4 * static_cast<std::size_t>(length));
+        paint_.shader->shade_row(inverse_, x, y, length, paint_.opacity, scratch_.data());
+        composite_span_premul(dst, length, coverage, scratch_.data());
     }
 
 private:
     Pixmap& pm_;
     const Paint& paint_;
+    std::vector<std::uint8_t>& scratch_;
+    Affine inverse_;
+    bool skip_ = false;
 };
 
 }  // namespace
@@ -60,7 +76,7 @@ void Canvas::fill_path(const Path& path, const Paint& paint, FillRule rule) {
     if (state_.clip.empty() || path.empty()) return;
     FillOptions opts = fill_options_;
     opts.rule = rule;
-    CompositeSink sink(*target_, paint);
+    CompositeSink sink(*target_, paint, state_.transform, scratch_);
     raster_.fill(path, state_.transform, opts, state_.clip, sink);
 }
 
@@ -74,10 +90,11 @@ void Canvas::fill_mask(const Mask& mask, const Paint& paint) {
     const int x0 = std::max(mask.bounds.x0, c.x0), x1 = std::min(mask.bounds.x1, c.x1);
     const int y0 = std::max(mask.bounds.y0, c.y0), y1 = std::min(mask.bounds.y1, c.y1);
     if (x1 <= x0 || y1 <= y0) return;
+    CompositeSink sink(*target_, paint, state_.transform, scratch_);
     for (int y = y0; y < y1; ++y) {
         const std::uint8_t* cov =
             mask.data.data() + static_cast<std::size_t>(y - mask.bounds.y0) * mask.bounds.width() + (x0 - mask.bounds.x0);
-        composite_span(target_->row(y) + 4 * static_cast<std::size_t>(x0), x1 - x0, cov, paint);
+        sink.row(y, x0, x1 - x0, cov);
     }
 }
 

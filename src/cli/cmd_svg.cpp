@@ -11,9 +11,9 @@ namespace casteljau::cli {
 
 void register_svg(CLI::App& app) {
     struct Opts {
-        std::string input, output, background = "transparent";
-        double scale = 1;
-        int width = 0;
+        std::string input, output, background = "transparent", resources;
+        double zoom = 1;
+        int width = 0, height = 0;
         double tolerance = kDefaultTolerance;
         bool quiet = false;
     };
@@ -21,33 +21,42 @@ void register_svg(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("svg", "Render an SVG file to PNG");
     cmd->add_option("INPUT", o->input, "SVG file (- for standard input)")->required();
     cmd->add_option("-o,--output", o->output, "Output PNG file")->required();
-    auto* scale = cmd->add_option("--scale", o->scale, "Scale factor applied to the document size")
-                      ->check(CLI::Range(1e-3, 1e3))
-                      ->capture_default_str();
-    cmd->add_option("--width", o->width, "Output width in pixels (height follows the aspect ratio)")
+    auto* zoom = cmd->add_option("-z,--zoom,--scale", o->zoom, "Zoom factor applied to the document size")
+                     ->check(CLI::Range(1e-3, 1e3))
+                     ->capture_default_str();
+    auto* width = cmd->add_option("-w,--width", o->width, "Output width in pixels (the height follows the aspect ratio)")
+                      ->check(CLI::Range(1, limits::kMaxCanvasDimension))
+                      ->excludes(zoom);
+    cmd->add_option("--height", o->height, "Output height in pixels (the width follows the aspect ratio unless -w is given)")
         ->check(CLI::Range(1, limits::kMaxCanvasDimension))
-        ->excludes(scale);
-    cmd->add_option("--background", o->background, "Background colour (CSS syntax)")->capture_default_str();
+        ->excludes(zoom);
+    (void)width;
+    cmd->add_option("-b,--background", o->background, "Background colour (CSS syntax)")->capture_default_str();
     cmd->add_option("--tolerance", o->tolerance, "Flattening tolerance in pixels")
         ->check(CLI::Range(1e-4, 10.0))
         ->capture_default_str();
+    cmd->add_option("--resources", o->resources,
+                    "Folder that <image> files may be read from (default: the input's own folder; nothing for standard input)");
     cmd->add_flag("-q,--quiet", o->quiet, "Do not print warnings about unsupported SVG features");
     cmd->callback([o] {
         const Color bg = parse_color_option("--background", o->background);
-        const std::string text = read_text_input(o->input);
-        const SvgDocument doc = SvgDocument::parse(text);
+        // A file resolves relative <image> hrefs against its folder; standard input has none.
+        const SvgDocument doc = o->input == "-" ? SvgDocument::parse(read_text_input(o->input)) : SvgDocument::load(o->input, o->resources);
         if (!o->quiet)
             for (const std::string& w : doc.warnings()) std::cerr << "casteljau: warning: " << w << "\n";
-        double s = o->scale;
-        if (o->width > 0) s = static_cast<double>(o->width) / doc.width();
-        const double W = o->width > 0 ? o->width : std::ceil(doc.width() * s);
-        const double H = std::ceil(doc.height() * s);
-        check_canvas_size(W, H);
-        Pixmap pm(static_cast<int>(W), static_cast<int>(H));
+        // Output size as resvg and rsvg-convert choose it (svg.hpp): from the rounded intrinsic
+        // size; the document is then scaled to fill the output exactly.
+        std::pair<int, int> size;
+        if (o->width > 0 && o->height > 0) size = {o->width, o->height};
+        else if (o->width > 0) size = doc.output_size_for_width(o->width);
+        else if (o->height > 0) size = doc.output_size_for_height(o->height);
+        else size = doc.output_size_for_zoom(o->zoom);
+        check_canvas_size(size.first, size.second);
+        Pixmap pm(size.first, size.second);
         pm.fill(bg);
         Canvas canvas(pm);
         canvas.fill_options().tolerance = o->tolerance;
-        doc.render(canvas, Affine::scale(s));
+        doc.render(canvas, Affine::scale(size.first / doc.intrinsic_width(), size.second / doc.intrinsic_height()));
         write_png(pm, o->output);
     });
 }

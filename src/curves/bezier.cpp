@@ -119,16 +119,13 @@ template <CurvePoint P> double Bezier<P>::curvature(double t) const {
 
 template <CurvePoint P>
 double Bezier<P>::signed_curvature(double t) const requires std::same_as<P, Point> {
-    // The body is also compiled for Point3 by clang 14, which instantiates constrained members in
-    // an explicit instantiation; `if constexpr` keeps the 2-D cross product to 2-D points.
-    if constexpr (std::same_as<P, Point>) {
-        const P d1 = derivative(1, t), d2 = derivative(2, t);
-        const double speed = d1.length();
-        if (speed == 0) return std::numeric_limits<double>::infinity();
-        return d1.cross(d2) / (speed * speed * speed);
-    } else {
-        return 0;
-    }
+    const P d1 = derivative(1, t), d2 = derivative(2, t);
+    const double speed = d1.length();
+    if (speed == 0) return std::numeric_limits<double>::infinity();
+    // clang 14 instantiates this member for every P despite the requires clause; if constexpr
+    // keeps the 2-D cross product out of the Point3 instantiation.
+    if constexpr (std::same_as<P, Point>) return d1.cross(d2) / (speed * speed * speed);
+    else return 0;
 }
 
 template <CurvePoint P> std::vector<std::vector<P>> Bezier<P>::triangle(double t) const {

@@ -4,42 +4,93 @@
 #include "casteljau/svg.hpp"
 
 #include <pugixml.hpp>
+#include <zlib.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <climits>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
 #include <optional>
+#include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/image.hpp"
 #include "casteljau/png.hpp"
+#include "casteljau/shader.hpp"
 #include "casteljau/stroke.hpp"
 #include "casteljau/svg_path.hpp"
+#include "formats/css.hpp"
 
 namespace casteljau {
 
 namespace {
 
+struct PatternTile;
+
 struct Item {
-    enum Kind { Fill, Stroke, BeginLayer, EndLayer } kind = Fill;
+    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask, SvgImage } kind = Fill;
+    bool luminance = false;  // BeginMask: luminance (true) or alpha mask
+    BlendMode blend = BlendMode::Normal;  // BeginLayer: mix-blend-mode
     Path path;          // user space
     Affine transform;   // user space -> document pixel space
     Color color;
+    std::shared_ptr<const Shader> shader;  // a gradient or image instead of `color`
+    std::shared_ptr<const SvgDocument> svg_image;  // SvgImage: drawn with `transform` as its base
+    std::shared_ptr<const PatternTile> pattern;    // a pattern instead of `color`: rendered per fill
     FillRule rule = FillRule::NonZero;
     double opacity = 1;  // fill/stroke: multiplies colour alpha; layer: group opacity
     StrokeStyle stroke;  // Stroke items
 };
 
+// A fill or stroke as specified: none, a colour, or a paint server (url(#id)) with its fallback.
+struct PaintRef {
+    enum Kind { None, Solid, Server } kind = None;
+    Color color = Color::black();
+    std::string id;                    // Server: the referenced element's id
+    Kind fallback = None;              // Server: what to paint when the reference is unusable
+    Color fallback_color = Color::black();
+    static PaintRef solid(Color c) { PaintRef p; p.kind = Solid; p.color = c; return p; }
+};
+
+// A pattern's tile: its content (items in the fill's user space), the tile rectangle in pattern
+// space, and the pattern space -> user space transform (patternTransform).
+struct PatternTile {
+    std::vector<Item> items;
+    Rect tile;
+    Affine transform;
+};
+
+constexpr double kPi = 3.14159265358979323846;
+
+Item layer_item(Item::Kind kind, double opacity) {
+    Item it;
+    it.kind = kind;
+    it.opacity = opacity;
+    return it;
+}
+
 struct Style {
-    std::optional<Color> fill = Color::black();  // nullopt: none
+    PaintRef fill = PaintRef::solid(Color::black());
     Color color = Color::black();                // currentColor
     FillRule fill_rule = FillRule::NonZero;
     double fill_opacity = 1;
-    std::optional<Color> stroke;  // nullopt: none (the SVG default)
+    PaintRef stroke;  // none (the SVG default)
     double stroke_opacity = 1;
     StrokeStyle stroke_style;
+    bool visible = true;  // visibility (inherited)
+    std::array<int, 3> paint_order{0, 1, 2};  // paint-order: 0 fill, 1 stroke, 2 markers (inherited)
+    std::string marker_start, marker_mid, marker_end;  // marker ids (inherited)
+    // What context-fill and context-stroke name: the fill and stroke of the use element or of the
+    // shape a marker is drawn on (none outside those).
+    PaintRef context_fill, context_stroke;
 };
 
 std::string_view trim(std::string_view s) {
@@ -96,6 +147,61 @@ std::optional<double> parse_opacity(std::string_view text) {
     return std::clamp(*v, 0.0, 1.0);
 }
 
+// A viewBox "x y w h" (commas or spaces); nullopt when absent or invalid (w or h not positive).
+std::optional<Rect> parse_viewbox(std::string_view text) {
+    if (trim(text).empty()) return std::nullopt;
+    std::string s(text);
+    for (char& c : s)
+        if (c == ',') c = ' ';
+    double n[4];
+    std::size_t pos = 0;
+    for (double& x : n) {
+        while (pos < s.size() && std::isspace(static_cast<unsigned char>(s[pos]))) ++pos;
+        if (pos < s.size() && s[pos] == '+') ++pos;
+        auto r = std::from_chars(s.data() + pos, s.data() + s.size(), x);
+        if (r.ec != std::errc() || !std::isfinite(x)) return std::nullopt;
+        pos = static_cast<std::size_t>(r.ptr - s.data());
+    }
+    if (!(n[2] > 0) || !(n[3] > 0)) return std::nullopt;
+    return Rect::from_xywh(n[0], n[1], n[2], n[3]);
+}
+
+// The viewBox -> viewport (0, 0, w, h) mapping under preserveAspectRatio
+// "[defer] <none | x{Min,Mid,Max}Y{Min,Mid,Max}> [meet | slice]" (default xMidYMid meet; an
+// invalid value is the default).
+Affine viewbox_transform(const Rect& vb, std::string_view par, double w, double h) {
+    std::vector<std::string_view> words;
+    for (std::string_view rest = trim(par); !rest.empty();) {
+        const std::size_t sp = rest.find_first_of(" \t\r\n");
+        words.push_back(rest.substr(0, sp));
+        rest = sp == std::string_view::npos ? std::string_view{} : trim(rest.substr(sp));
+    }
+    if (!words.empty() && words.front() == "defer") words.erase(words.begin());
+    std::string_view align = "xMidYMid";
+    bool slice = false;
+    if (!words.empty()) {
+        const std::string_view a = words[0];
+        const bool ok = a == "none" || (a.size() == 8 && a[0] == 'x' && a[4] == 'Y' &&
+                                        (a.substr(1, 3) == "Min" || a.substr(1, 3) == "Mid" || a.substr(1, 3) == "Max") &&
+                                        (a.substr(5, 3) == "Min" || a.substr(5, 3) == "Mid" || a.substr(5, 3) == "Max"));
+        if (ok && words.size() <= 2 && (words.size() == 1 || words[1] == "meet" || words[1] == "slice")) {
+            align = a;
+            slice = words.size() == 2 && words[1] == "slice";
+        }
+    }
+    const double sx = w / vb.width(), sy = h / vb.height();
+    if (align == "none") return {sx, 0, 0, sy, -vb.x0 * sx, -vb.y0 * sy};
+    const double s = slice ? std::max(sx, sy) : std::min(sx, sy);
+    double tx = -vb.x0 * s, ty = -vb.y0 * s;
+    const double ex = w - vb.width() * s, ey = h - vb.height() * s;
+    const std::string_view xa = align.substr(1, 3), ya = align.substr(5, 3);
+    if (xa == "Mid") tx += ex / 2;
+    else if (xa == "Max") tx += ex;
+    if (ya == "Mid") ty += ey / 2;
+    else if (ya == "Max") ty += ey;
+    return {s, 0, 0, s, tx, ty};
+}
+
 class Reader {
 public:
     std::vector<Item> items;
@@ -106,41 +212,90 @@ public:
     }
 
     // Presentation attributes and the style attribute of `node`, later ones winning.
-    static std::vector<std::pair<std::string, std::string>> properties(const pugi::xml_node& node) {
-        std::vector<std::pair<std::string, std::string>> props;
+    using Properties = std::vector<std::pair<std::string, std::string>>;
+    css::StyleSheet sheet;  // all <style> elements of the document, in order
+    std::unordered_map<const void*, Properties> property_cache;
+
+    // The cascade for `node`, lowest priority first (later entries win): presentation attributes,
+    // then style sheet declarations by specificity and order, then the style attribute, then
+    // !important sheet declarations, then !important style attribute declarations.
+    const Properties& properties(const pugi::xml_node& node) {
+        const auto cached = property_cache.find(node.internal_object());
+        if (cached != property_cache.end()) return cached->second;
+        Properties props;
         for (const pugi::xml_attribute& a : node.attributes()) props.emplace_back(a.name(), a.value());
-        if (const char* style = node.attribute("style").value(); *style) {
-            std::string_view s = style;
-            while (!s.empty()) {
-                const std::size_t semi = s.find(';');
-                std::string_view decl = s.substr(0, semi);
-                s = semi == std::string_view::npos ? std::string_view{} : s.substr(semi + 1);
-                const std::size_t colon = decl.find(':');
-                if (colon == std::string_view::npos) continue;
-                std::string_view value = trim(decl.substr(colon + 1));
-                if (value.size() > 10 && value.substr(value.size() - 10) == "!important") value = trim(value.substr(0, value.size() - 10));
-                props.emplace_back(std::string(trim(decl.substr(0, colon))), std::string(value));
-            }
+        std::vector<const css::Rule*> matched;
+        for (const css::Rule& r : sheet.rules)
+            if (css::matches(r.selector, node)) matched.push_back(&r);
+        std::stable_sort(matched.begin(), matched.end(), [](const css::Rule* a, const css::Rule* b) {
+            return a->selector.specificity < b->selector.specificity;
+        });
+        const std::vector<css::Declaration> inline_decls = css::parse_declarations(node.attribute("style").value());
+        for (bool important : {false, true}) {
+            for (const css::Rule* r : matched)
+                for (const css::Declaration& d : r->declarations)
+                    if (d.important == important) props.emplace_back(d.name, d.value);
+            for (const css::Declaration& d : inline_decls)
+                if (d.important == important) props.emplace_back(d.name, d.value);
         }
-        return props;
+        return property_cache.emplace(node.internal_object(), std::move(props)).first->second;
     }
 
-    // A fill or stroke value: none, currentColor, inherit (keeps the inherited paint), a colour;
-    // paint servers (url(...)) are not supported yet and paint nothing, with a warning.
-    void apply_paint(const std::string& property, std::string_view value, Color current, std::optional<Color>& paint) {
-        if (value == "none") paint = std::nullopt;
-        else if (value == "currentColor") paint = current;
-        else if (value == "inherit") {}
-        else if (value.substr(0, 4) == "url(") {
-            warn("paint servers (" + std::string(value) + ") are not supported yet; " + property + " is none");
-            paint = std::nullopt;
-        } else {
-            try {
-                paint = parse_color(value);
-            } catch (const Error&) {
-                warn("invalid " + property + " '" + std::string(value) + "'");
+    // Reads every <style> element (type empty or text/css) into the sheet.
+    void read_style_sheets(const pugi::xml_node& root) {
+        for (pugi::xml_node n = root; n;) {
+            if (std::string_view(n.name()) == "style") {
+                const std::string_view type = trim(n.attribute("type").value());
+                if (type.empty() || type == "text/css") {
+                    std::string text;
+                    for (const pugi::xml_node& c : n.children())
+                        if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) text += c.value();
+                    css::parse_stylesheet(text, sheet);
+                }
             }
+            if (pugi::xml_node c = n.first_child(); c && std::string_view(n.name()) != "style") { n = c; continue; }
+            while (n && !n.next_sibling() && n != root) n = n.parent();
+            if (!n || n == root) break;
+            n = n.next_sibling();
         }
+        if (sheet.truncated)
+            warn("style sheets hold more than " + std::to_string(css::kMaxRules) + " rules; the rest are ignored");
+    }
+
+    // A fill or stroke value: none, currentColor, inherit (keeps the inherited paint), a colour,
+    // or url(#id) with an optional fallback (none or a colour) after it.
+    void apply_paint(const std::string& property, std::string_view value, Color current, PaintRef& paint) {
+        auto simple = [&](std::string_view v, PaintRef::Kind& kind, Color& color) -> bool {
+            if (v == "none") { kind = PaintRef::None; return true; }
+            if (v == "currentColor") { kind = PaintRef::Solid; color = current; return true; }
+            try {
+                color = parse_color(v);
+                kind = PaintRef::Solid;
+                return true;
+            } catch (const Error&) {
+                return false;
+            }
+        };
+        if (value == "inherit") return;
+        if (value.substr(0, 4) == "url(") {
+            const std::size_t close = value.find(')');
+            if (close == std::string_view::npos) {
+                warn("invalid " + property + " '" + std::string(value) + "'");
+                return;
+            }
+            std::string_view ref = trim(value.substr(4, close - 4));
+            if (ref.size() >= 2 && (ref.front() == '\'' || ref.front() == '"')) ref = ref.substr(1, ref.size() - 2);
+            PaintRef p;
+            p.kind = PaintRef::Server;
+            p.id = ref.empty() || ref.front() != '#' ? std::string() : std::string(ref.substr(1));
+            const std::string_view rest = trim(value.substr(close + 1));
+            if (!rest.empty() && !simple(rest, p.fallback, p.fallback_color)) p.fallback = PaintRef::None;
+            paint = p;
+            return;
+        }
+        PaintRef p;
+        if (simple(value, p.kind, p.color)) paint = p;
+        else warn("invalid " + property + " '" + std::string(value) + "'");
     }
 
     void apply_style(const pugi::xml_node& node, Style& st) {
@@ -153,14 +308,18 @@ public:
         for (const auto& [k, v] : properties(node)) {
             const std::string_view val = trim(v);
             if (k == "fill") {
-                apply_paint(k, val, st.color, st.fill);
+                if (val == "context-fill") st.fill = st.context_fill;
+                else if (val == "context-stroke") st.fill = st.context_stroke;
+                else apply_paint(k, val, st.color, st.fill);
             } else if (k == "fill-rule") {
                 if (val == "evenodd") st.fill_rule = FillRule::EvenOdd;
                 else if (val == "nonzero") st.fill_rule = FillRule::NonZero;
             } else if (k == "fill-opacity") {
                 if (auto o = parse_opacity(val)) st.fill_opacity = *o;
             } else if (k == "stroke") {
-                apply_paint(k, val, st.color, st.stroke);
+                if (val == "context-fill") st.stroke = st.context_fill;
+                else if (val == "context-stroke") st.stroke = st.context_stroke;
+                else apply_paint(k, val, st.color, st.stroke);
             } else if (k == "stroke-opacity") {
                 if (auto o = parse_opacity(val)) st.stroke_opacity = *o;
             } else if (k == "stroke-width") {
@@ -198,6 +357,38 @@ public:
                     }
                     if (!ok) st.stroke_style.dashes.clear();
                 }
+            } else if (k == "paint-order") {
+                // The keywords given, in their order, then the missing ones in the normal order.
+                std::array<int, 3> order{};
+                std::size_t n = 0;
+                bool ok = true;
+                for (std::string_view rest = val; !rest.empty() && val != "normal";) {
+                    const std::size_t sp = rest.find(' ');
+                    const std::string_view w = rest.substr(0, sp);
+                    rest = sp == std::string_view::npos ? std::string_view{} : trim(rest.substr(sp));
+                    const int id = w == "fill" ? 0 : w == "stroke" ? 1 : w == "markers" ? 2 : -1;
+                    if (id < 0 || std::find(order.begin(), order.begin() + n, id) != order.begin() + n) { ok = false; break; }
+                    order[n++] = id;
+                }
+                if (ok) {
+                    for (int id = 0; id < 3; ++id)
+                        if (std::find(order.begin(), order.begin() + n, id) == order.begin() + n) order[n++] = id;
+                    st.paint_order = order;
+                }
+            } else if (k == "marker-start" || k == "marker-mid" || k == "marker-end" || k == "marker") {
+                std::string id;
+                if (val.substr(0, 5) == "url(#") {
+                    const std::size_t close = val.find(')');
+                    if (close != std::string_view::npos) id = std::string(trim(val.substr(5, close - 5)));
+                } else if (val != "none") {
+                    continue;
+                }
+                if (k == "marker-start" || k == "marker") st.marker_start = id;
+                if (k == "marker-mid" || k == "marker") st.marker_mid = id;
+                if (k == "marker-end" || k == "marker") st.marker_end = id;
+            } else if (k == "visibility") {
+                if (val == "visible") st.visible = true;
+                else if (val == "hidden" || val == "collapse") st.visible = false;
             } else if (k == "stroke-dashoffset") {
                 if (auto l = parse_length(val, 100)) st.stroke_style.dash_offset = *l;
             }
@@ -257,84 +448,1090 @@ public:
         return p;
     }
 
-    void walk(const pugi::xml_node& node, Style st, const Affine& m, double vw, double vh, int depth) {
-        if (depth > limits::kMaxNestingDepth)
-            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
-        for (const pugi::xml_node& child : node.children()) {
-            if (child.type() != pugi::node_element) continue;
-            const std::string_view name = child.name();
-            if (name == "defs" || name == "title" || name == "desc" || name == "metadata" || name == "style" ||
-                name == "clipPath" || name == "mask" || name == "pattern" || name == "linearGradient" ||
-                name == "radialGradient" || name == "symbol" || name == "marker" || name == "filter")
-                continue;
-            if (std::string_view(child.attribute("display").value()) == "none") continue;
-            Style cst = st;
-            apply_style(child, cst);
-            Affine cm = m;
-            if (const char* t = child.attribute("transform").value(); *t) {
-                try {
-                    cm = m * parse_svg_transform(t);
-                } catch (const Error& e) {
-                    warn(std::string("<") + child.name() + ">: " + e.what() + "; element skipped");
-                    continue;
-                }
-            }
-            double opacity = 1;
-            if (const char* o = child.attribute("opacity").value(); *o)
-                if (auto v = parse_opacity(o)) opacity = *v;
-            for (const auto& [k, v] : properties(child))
-                if (k == "opacity")
-                    if (auto ov = parse_opacity(v)) opacity = *ov;
-            if (name == "g" || name == "a" || name == "switch") {
-                if (opacity <= 0) continue;
-                const bool layer = opacity < 1;
-                if (layer) items.push_back({Item::BeginLayer, {}, {}, {}, FillRule::NonZero, opacity, {}});
-                walk(child, cst, cm, vw, vh, depth + 1);
-                if (layer) items.push_back({Item::EndLayer, {}, {}, {}, FillRule::NonZero, opacity, {}});
-                continue;
-            }
-            if (name == "svg") {
-                warn("nested <svg> is not supported yet; skipped");
-                continue;
-            }
-            std::optional<Path> p = shape_path(child, vw, vh);
-            if (!p) {
-                if (name != "path" && name != "rect" && name != "circle" && name != "ellipse" && name != "line" &&
-                    name != "polyline" && name != "polygon")
-                    warn("<" + std::string(name) + "> is not supported; skipped");
-                continue;
-            }
-            if (p->empty()) continue;
-            // A line has no interior; a polyline fills like a polygon (closed implicitly).
-            if (cst.fill && name != "line") {
-                Item it;
-                it.kind = Item::Fill;
-                it.path = *p;
-                it.transform = cm;
-                it.color = *cst.fill;
-                it.rule = cst.fill_rule;
-                it.opacity = cst.fill_opacity * opacity;
-                items.push_back(std::move(it));
-            }
-            if (!cst.stroke || !(cst.stroke_style.width > 0)) continue;
-            Item it;
-            it.kind = Item::Stroke;
-            it.stroke = cst.stroke_style;
-            it.path = std::move(*p);
-            it.transform = cm;
-            it.color = *cst.stroke;
-            it.opacity = cst.stroke_opacity * opacity;
-            items.push_back(std::move(it));
-            continue;
+    // Element ids of the whole document (the first element with an id wins).
+    std::unordered_map<std::string, pugi::xml_node> ids;
+
+    void index_ids(const pugi::xml_node& root) {
+        for (pugi::xml_node n = root; n;) {
+            if (const char* id = n.attribute("id").value(); *id) ids.emplace(id, n);
+            if (pugi::xml_node c = n.first_child(); c) { n = c; continue; }
+            while (n && !n.next_sibling() && n != root) n = n.parent();
+            if (!n || n == root) break;
+            n = n.next_sibling();
         }
     }
+
+    pugi::xml_node lookup(std::string_view id) const {
+        const auto it = ids.find(std::string(id));
+        return it == ids.end() ? pugi::xml_node() : it->second;
+    }
+
+    // `href` takes precedence over `xlink:href` (SVG 2).
+    static const char* href(const pugi::xml_node& n) {
+        if (const char* h = n.attribute("href").value(); *h) return h;
+        return n.attribute("xlink:href").value();
+    }
+
+    std::string own_property(const pugi::xml_node& n, const std::string& name) {
+        std::string out;
+        for (const auto& [k, v] : properties(n))
+            if (k == name) out = std::string(trim(v));
+        return out == "inherit" ? std::string() : out;
+    }
+
+    // The value of property `name` on `n` or its nearest ancestor that sets it (not `inherit`).
+    std::string inherited(pugi::xml_node n, const std::string& name) {
+        for (; n && n.type() == pugi::node_element; n = n.parent())
+            for (const auto& [k, v] : properties(n))
+                if (k == name && trim(v) != "inherit") return std::string(trim(v));
+        return {};
+    }
+
+    // Sets the colour or shader of `it` for `ref` drawn on `path` (user space, for
+    // objectBoundingBox units); false when nothing is to be painted.
+    bool resolve_paint(const PaintRef& ref, const Path& path, double vw, double vh, Item& it) {
+        if (ref.kind == PaintRef::None) return false;
+        if (ref.kind == PaintRef::Solid) {
+            it.color = ref.color;
+            return true;
+        }
+        const pugi::xml_node server = lookup(ref.id);
+        const std::string_view kind = server ? server.name() : "";
+        if (kind == "linearGradient" || kind == "radialGradient") {
+            if (gradient(server, path, vw, vh, it)) return true;
+            // An unusable gradient (no stops) takes the fallback colour when there is one.
+            if (ref.fallback != PaintRef::Solid) return false;
+            it.shader.reset();
+            it.color = ref.fallback_color;
+            return true;
+        }
+        if (!server || ref.fallback != PaintRef::None) {
+            if (ref.fallback == PaintRef::Solid) {
+                it.color = ref.fallback_color;
+                return true;
+            }
+            if (!server) warn("paint server '#" + ref.id + "' not found; painted as none");
+            return false;
+        }
+        if (kind == "pattern") {
+            if (pattern(server, path, vw, vh, it)) return true;
+            if (ref.fallback != PaintRef::Solid) return false;
+            it.color = ref.fallback_color;
+            return true;
+        }
+        warn("<" + std::string(kind) + "> is not a paint server; painted as none");
+        return false;
+    }
+
+    // A linearGradient or radialGradient with its href chain: attributes come from the first
+    // element of the chain that has them, stops from the first that has any.
+    bool gradient(const pugi::xml_node& node, const Path& path, double vw, double vh, Item& it) {
+        std::vector<pugi::xml_node> chain{node};
+        while (chain.size() < 32) {
+            const char* h = href(chain.back());
+            if (*h != '#') break;
+            const pugi::xml_node next = lookup(h + 1);
+            const std::string_view nk = next ? next.name() : "";
+            if (nk != "linearGradient" && nk != "radialGradient") break;
+            if (std::find(chain.begin(), chain.end(), next) != chain.end()) break;  // a cycle ends the chain
+            chain.push_back(next);
+        }
+        const std::string_view kind = node.name();
+        auto attr = [&](const char* name, bool same_kind_only) -> std::string_view {
+            for (const pugi::xml_node& n : chain) {
+                if (same_kind_only && std::string_view(n.name()) != kind) continue;
+                if (const char* v = n.attribute(name).value(); *v) return v;
+            }
+            return {};
+        };
+        // Stops.
+        std::vector<GradientStop> stops;
+        for (const pugi::xml_node& n : chain) {
+            for (const pugi::xml_node& s : n.children("stop")) {
+                GradientStop st;
+                std::string_view off = trim(s.attribute("offset").value());
+                double o = 0;
+                if (!off.empty() && off.back() == '%') {
+                    if (auto v = parse_number(off.substr(0, off.size() - 1))) o = *v / 100;
+                } else if (auto v = parse_number(off)) {
+                    o = *v;
+                }
+                st.offset = std::clamp(o, 0.0, 1.0);
+                if (!stops.empty()) st.offset = std::max(st.offset, stops.back().offset);
+                Color color = Color::black();
+                double opacity = 1;
+                for (const auto& [k, v] : properties(s)) {
+                    std::string val(trim(v));
+                    // stop-color and stop-opacity are not inherited: `inherit` takes the parent's
+                    // own value, or the initial one.
+                    if (val == "inherit") val = k == "stop-color" || k == "stop-opacity" ? own_property(s.parent(), k) : "";
+                    if (k == "stop-color" && !val.empty()) {
+                        if (val == "currentColor") val = inherited(s, "color");
+                        try { color = parse_color(val.empty() ? "black" : val); } catch (const Error&) { warn("invalid stop-color '" + v + "'"); }
+                    } else if (k == "stop-opacity") {
+                        if (auto op = parse_opacity(val)) opacity = *op;
+                    }
+                }
+                st.color = color.with_opacity(opacity);
+                stops.push_back(st);
+            }
+            if (!stops.empty()) break;
+        }
+        if (stops.empty()) return false;  // no stops: painted as none
+        if (stops.size() == 1) {
+            it.color = stops.front().color;
+            return true;
+        }
+        const bool bbox_units = attr("gradientUnits", false) != "userSpaceOnUse";
+        Affine gt;
+        if (const std::string_view t = attr("gradientTransform", false); !t.empty()) {
+            try {
+                gt = parse_svg_transform(t);
+                if (!gt.inverse()) gt = Affine{};  // a singular gradientTransform is ignored
+                gt = bbox_units ? with_origin(node, gt, 1, 1) : with_origin(node, gt, vw, vh);
+            } catch (const Error&) {
+                warn("invalid gradientTransform; ignored");
+            }
+        }
+        SpreadMethod spread = SpreadMethod::Pad;
+        if (const std::string_view sm = attr("spreadMethod", false); sm == "reflect") spread = SpreadMethod::Reflect;
+        else if (sm == "repeat") spread = SpreadMethod::Repeat;
+        const double diag = std::sqrt((vw * vw + vh * vh) / 2);
+        auto coord = [&](const char* name, double percent_of, double fallback) {
+            const std::string_view v = attr(name, true);
+            if (v.empty()) return fallback;
+            auto l = parse_length(v, bbox_units ? 1.0 : percent_of);
+            return l ? *l : fallback;
+        };
+        Affine units;
+        if (bbox_units) {
+            const Rect b = path.bounds();
+            if (!(b.width() > 0) || !(b.height() > 0)) return false;  // objectBoundingBox of a zero-size box
+            units = Affine::translate(b.x0, b.y0) * Affine::scale(b.width(), b.height());
+        }
+        if (kind == "linearGradient") {
+            const Point p0{coord("x1", vw, 0), coord("y1", vh, 0)};
+            const Point p1{coord("x2", vw, bbox_units ? 1.0 : vw), coord("y2", vh, 0)};
+            it.shader = std::make_shared<const Shader>(Shader::linear(p0, p1, std::move(stops), spread, units * gt));
+            return true;
+        }
+        const double half_w = bbox_units ? 0.5 : vw / 2, half_h = bbox_units ? 0.5 : vh / 2;
+        const double cx = coord("cx", vw, half_w), cy = coord("cy", vh, half_h);
+        // A negative radius is invalid and falls back to the default.
+        double r = coord("r", diag, bbox_units ? 0.5 : diag / 2);
+        if (r < 0) r = bbox_units ? 0.5 : diag / 2;
+        const double fx = coord("fx", vw, cx), fy = coord("fy", vh, cy);
+        const double fr = std::max(0.0, coord("fr", diag, 0));
+        it.shader = std::make_shared<const Shader>(Shader::radial({cx, cy}, r, {fx, fy}, fr, std::move(stops), spread, units * gt));
+        return true;
+    }
+
+    // Elements drawn or expanded so far (each `use` copy counts again): the bound on use bombs.
+    std::size_t expanded = 0;
+    // The `use` elements being expanded (innermost last): a use whose target contains one of
+    // them, or is one of them, is a cycle.
+    std::vector<pugi::xml_node> use_stack;
+
+    void walk(const pugi::xml_node& node, const Style& st, const Affine& m, double vw, double vh, int depth) {
+        if (depth > limits::kMaxNestingDepth)
+            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
+        const bool is_switch = std::string_view(node.name()) == "switch";
+        for (const pugi::xml_node& child : node.children()) {
+            if (child.type() != pugi::node_element) continue;
+            if (!conditions_pass(child)) continue;
+            element(child, st, m, vw, vh, depth);
+            if (is_switch && known_element(child.name())) break;  // a switch draws its first passing child only
+        }
+    }
+
+    static bool known_element(std::string_view n) {
+        return n == "g" || n == "a" || n == "switch" || n == "svg" || n == "use" || n == "path" || n == "rect" ||
+               n == "circle" || n == "ellipse" || n == "line" || n == "polyline" || n == "polygon" || n == "image" ||
+               n == "text" || n == "foreignObject";
+    }
+
+    // Conditional processing: systemLanguage (the user language is English), requiredExtensions
+    // (none supported); requiredFeatures is always true (SVG 2).
+    static bool conditions_pass(const pugi::xml_node& n) {
+        if (const pugi::xml_attribute ext = n.attribute("requiredExtensions"); ext) return false;
+        if (const pugi::xml_attribute lang = n.attribute("systemLanguage"); lang) {
+            std::string_view v = lang.value();
+            bool any = false;
+            while (!v.empty()) {
+                const std::size_t comma = v.find(',');
+                std::string_view l = trim(v.substr(0, comma));
+                v = comma == std::string_view::npos ? std::string_view{} : v.substr(comma + 1);
+                if (l == "en" || l.substr(0, 3) == "en-") any = true;
+            }
+            if (!any) return false;
+        }
+        return true;
+    }
+
+    // A clip to `r` (user space of `m`) around the items that `draw` adds.
+    template <class F>
+    void clipped(const Rect& r, const Affine& m, F&& draw) {
+        Item push;
+        push.kind = Item::PushClip;
+        push.path.add_rect(r);
+        push.transform = m;
+        items.push_back(std::move(push));
+        draw();
+        Item pop;
+        pop.kind = Item::PopClip;
+        items.push_back(std::move(pop));
+    }
+
+    // transform-origin ("x [y]": lengths, percentages of the viewport, or the keywords left,
+    // center, right, top, bottom in either order) wrapped around a transform `t`:
+    // translate(origin) * t * translate(-origin).
+    Affine with_origin(const pugi::xml_node& n, const Affine& t, double vw, double vh) {
+        std::string value;
+        for (const auto& [k, v] : properties(n))
+            if (k == "transform-origin") value = std::string(trim(v));
+        if (value.empty()) return t;
+        std::vector<std::string> words;
+        std::string w;
+        for (char c : value + " ") {
+            if (std::isspace(static_cast<unsigned char>(c)) || c == ',') {
+                if (!w.empty()) words.push_back(w);
+                w.clear();
+            } else {
+                w += c;
+            }
+        }
+        if (words.empty() || words.size() > 3) return t;
+        if (words.size() == 2 && (words[0] == "top" || words[0] == "bottom" || words[1] == "left" || words[1] == "right"))
+            std::swap(words[0], words[1]);
+        auto axis = [&](const std::string& word, double size, bool horizontal) -> double {
+            if (word == "center") return size / 2;
+            if (horizontal ? word == "left" : word == "top") return 0;
+            if (horizontal ? word == "right" : word == "bottom") return size;
+            auto l = parse_length(word, size);
+            return l ? *l : size / 2;
+        };
+        double ox, oy;
+        if (words.size() == 1) {
+            if (words[0] == "top" || words[0] == "bottom") {
+                ox = vw / 2;
+                oy = axis(words[0], vh, false);
+            } else {
+                ox = axis(words[0], vw, true);
+                oy = vh / 2;
+            }
+        } else {
+            ox = axis(words[0], vw, true);
+            oy = axis(words[1], vh, false);
+        }
+        return Affine::translate(ox, oy) * t * Affine::translate(-ox, -oy);
+    }
+
+    // A new viewport (nested svg, or a symbol or svg instanced by use) at x, y, w x h in the
+    // user space of `m`, with its viewBox and preserveAspectRatio; clipped unless overflow is
+    // visible or auto.
+    void viewport(const pugi::xml_node& n, const Style& st, const Affine& m, double x, double y, double w, double h,
+                  int depth, bool is_symbol) {
+        if (!(w > 0) || !(h > 0)) return;
+        Affine inner = m * Affine::translate(x, y);
+        double nvw = w, nvh = h;
+        if (auto vb = parse_viewbox(n.attribute("viewBox").value())) {
+            inner = inner * viewbox_transform(*vb, n.attribute("preserveAspectRatio").value(), w, h);
+            nvw = vb->width();
+            nvh = vb->height();
+        }
+        if (is_symbol) {
+            const double rx = length_attr(n, "refX", nvw), ry = length_attr(n, "refY", nvh);
+            inner = inner * Affine::translate(-rx, -ry);
+        }
+        std::string overflow;
+        for (const auto& [k, v] : properties(n))
+            if (k == "overflow") overflow = std::string(trim(v));
+        auto draw = [&] { walk(n, st, inner, nvw, nvh, depth + 1); };
+        if (overflow == "visible" || overflow == "auto") draw();
+        else clipped(Rect::from_xywh(x, y, w, h), m, draw);
+    }
+
+    void use(const pugi::xml_node& u, const Style& st, const Affine& m, double vw, double vh, int depth) {
+        const char* h = href(u);
+        const pugi::xml_node target = *h == '#' ? lookup(h + 1) : pugi::xml_node();
+        if (!target) {
+            if (*h) warn(std::string("<use> target '") + h + "' not found; skipped");
+            return;
+        }
+        // A cycle: the target is the use itself or one of its ancestors, or contains a use being
+        // expanded.
+        for (pugi::xml_node a = u; a; a = a.parent())
+            if (a == target) {
+                warn(std::string("<use> '") + h + "' references itself; skipped");
+                return;
+            }
+        for (const pugi::xml_node& active : use_stack)
+            for (pugi::xml_node a = active; a; a = a.parent())
+                if (a == target) {
+                    warn(std::string("<use> '") + h + "' is part of a reference cycle; skipped");
+                    return;
+                }
+        const double x = length_attr(u, "x", vw), y = length_attr(u, "y", vh);
+        use_stack.push_back(u);
+        Style ust = st;
+        ust.context_fill = st.fill;
+        ust.context_stroke = st.stroke;
+        const std::string_view tn = target.name();
+        if (tn == "symbol" || tn == "svg") {
+            const pugi::xml_node size_from = u.attribute("width") ? u : target;
+            const pugi::xml_node hsize_from = u.attribute("height") ? u : target;
+            const double w = length_attr(size_from, "width", vw, vw), hh = length_attr(hsize_from, "height", vh, vh);
+            const double tx = tn == "svg" ? length_attr(target, "x", vw) : 0, ty = tn == "svg" ? length_attr(target, "y", vh) : 0;
+            Style tst = ust;
+            apply_style(target, tst);
+            // The instanced symbol or svg keeps its own opacity.
+            double op = 1;
+            for (const auto& [k, v] : properties(target))
+                if (k == "opacity")
+                    if (auto o = parse_opacity(v)) op = *o;
+            if (op < 1) items.push_back(layer_item(Item::BeginLayer, op));
+            viewport(target, tst, m, x + tx, y + ty, w, hh, depth + 1, tn == "symbol");
+            if (op < 1) items.push_back(layer_item(Item::EndLayer, op));
+        } else {
+            element(target, ust, m * Affine::translate(x, y), vw, vh, depth + 1);
+        }
+        use_stack.pop_back();
+    }
+
+    // clip-path and mask references being expanded: a reference back to one of them is a cycle.
+    std::vector<pugi::xml_node> active_refs;
+
+    bool is_active(const pugi::xml_node& n) const {
+        return std::find(active_refs.begin(), active_refs.end(), n) != active_refs.end();
+    }
+
+    // The element a clip-path or mask property (url(#id), not inherited) names; `missing` is set
+    // when it names nothing of kind `want`.
+    pugi::xml_node reference(const pugi::xml_node& n, const char* property, std::string_view want, bool& missing) {
+        std::string value;
+        for (const auto& [k, v] : properties(n))
+            if (k == property) value = std::string(trim(v));
+        if (value.empty() || value == "none" || value.substr(0, 4) != "url(") return {};
+        const std::size_t close = value.find(')');
+        std::string_view ref = trim(std::string_view(value).substr(4, close == std::string::npos ? std::string::npos : close - 4));
+        if (ref.size() >= 2 && (ref.front() == '\'' || ref.front() == '"')) ref = ref.substr(1, ref.size() - 2);
+        const pugi::xml_node target = !ref.empty() && ref.front() == '#' ? lookup(ref.substr(1)) : pugi::xml_node();
+        if (!target || std::string_view(target.name()) != want) {
+            missing = true;
+            return {};
+        }
+        return target;
+    }
+
+    // Bounding box, in the user space of `m`, of the fills and strokes among items[first..]
+    // (leaving out the content of clips and masks); the path geometry, not the stroke outline.
+    std::optional<Rect> items_bbox(std::size_t first, const Affine& m) const {
+        const auto inv = m.inverse();
+        if (!inv) return std::nullopt;
+        std::optional<Rect> box;
+        int hidden = 0;
+        for (std::size_t i = first; i < items.size(); ++i) {
+            const Item& it = items[i];
+            if (it.kind == Item::BeginClip || it.kind == Item::BeginMask) ++hidden;
+            else if (it.kind == Item::EndMask) --hidden;
+            else if (hidden == 0 && (it.kind == Item::Fill || it.kind == Item::Stroke)) {
+                const Rect b = transform_bounds(*inv * it.transform, it.path.bounds());
+                box = box ? box->united(b) : b;
+            }
+        }
+        return box;
+    }
+
+    // A clipPath's children drawn as opaque coverage into a mask layer that multiplies the
+    // enclosing layer. clipPathUnits objectBoundingBox maps 0..1 onto `box`.
+    void emit_clip(const pugi::xml_node& clip, const Affine& cm, const std::optional<Rect>& box, double vw, double vh, int depth) {
+        active_refs.push_back(clip);
+        Item begin;
+        begin.kind = Item::BeginClip;
+        items.push_back(std::move(begin));
+        Affine m = cm;
+        bool ok = true;
+        if (const char* t = clip.attribute("transform").value(); *t) {
+            try {
+                m = m * with_origin(clip, parse_svg_transform(t), vw, vh);
+            } catch (const Error&) {
+                ok = false;  // an invalid transform clips everything away
+            }
+        }
+        if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
+            if (!box || !(box->width() > 0) || !(box->height() > 0)) ok = false;
+            else m = m * Affine::translate(box->x0, box->y0) * Affine::scale(box->width(), box->height());
+        }
+        bool inner_missing = false;
+        pugi::xml_node inner = reference(clip, "clip-path", "clipPath", inner_missing);
+        if (inner && is_active(inner)) inner = {};  // a reference back into the cycle is ignored (as resvg does)
+        if (ok) {
+            if (inner) items.push_back(layer_item(Item::BeginLayer, 1));
+            FillRule rule = FillRule::NonZero;
+            for (const auto& [k, v] : properties(clip))
+                if (k == "clip-rule") rule = trim(v) == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
+            for (const pugi::xml_node& c : clip.children())
+                if (c.type() == pugi::node_element) clip_child(c, c, m, rule, vw, vh, depth + 1);
+            if (inner) {
+                emit_clip(inner, cm, box, vw, vh, depth + 1);
+                items.push_back(layer_item(Item::EndLayer, 1));
+            }
+        }
+        Item end;
+        end.kind = Item::EndMask;
+        items.push_back(std::move(end));
+        active_refs.pop_back();
+    }
+
+    // One child of a clipPath: a shape (or a use of a shape), its own transform, clip-rule and
+    // clip-path; fill, stroke and opacity have no effect.
+    void clip_child(const pugi::xml_node& c, const pugi::xml_node& props, const Affine& m, FillRule rule, double vw, double vh, int depth) {
+        if (depth > limits::kMaxNestingDepth)
+            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
+        if (++expanded > limits::kMaxSvgElements)
+            throw Error(ErrorKind::Limit, "SVG expands to more than " + std::to_string(limits::kMaxSvgElements) + " elements");
+        if (!conditions_pass(c)) return;
+        bool visible = true;
+        for (const auto& [k, v] : properties(c)) {
+            const std::string_view val = trim(v);
+            if (k == "display" && val == "none") return;
+            if (k == "visibility") visible = val == "visible";
+            if (k == "clip-rule") rule = val == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
+        }
+        if (!visible) return;
+        Affine cm = m;
+        if (const char* t = c.attribute("transform").value(); *t) {
+            try {
+                cm = m * with_origin(c, parse_svg_transform(t), vw, vh);
+            } catch (const Error&) {
+                return;
+            }
+        }
+        const std::string_view name = c.name();
+        if (name == "use") {
+            const char* h = href(c);
+            const pugi::xml_node target = *h == '#' ? lookup(h + 1) : pugi::xml_node();
+            if (!target || is_active(target)) return;
+            const std::string_view tn = target.name();
+            if (tn != "path" && tn != "rect" && tn != "circle" && tn != "ellipse" && tn != "polyline" && tn != "polygon" &&
+                tn != "text")
+                return;  // only shapes may be used inside a clipPath
+            active_refs.push_back(target);
+            clip_child(target, c, cm * Affine::translate(length_attr(c, "x", vw), length_attr(c, "y", vh)), rule, vw, vh, depth + 1);
+            active_refs.pop_back();
+            return;
+        }
+        (void)props;
+        std::optional<Path> p = shape_path(c, vw, vh);
+        if (!p || p->empty() || name == "line") return;
+        bool missing = false;
+        pugi::xml_node own = reference(c, "clip-path", "clipPath", missing);
+        if (own && is_active(own)) own = {};  // a reference back into the cycle is ignored (as resvg does)
+        if (own) items.push_back(layer_item(Item::BeginLayer, 1));
+        Item it;
+        it.kind = Item::Fill;
+        it.color = Color::black();
+        it.rule = rule;
+        it.transform = cm;
+        const Rect b = p->bounds();
+        it.path = std::move(*p);
+        items.push_back(std::move(it));
+        if (own) {
+            emit_clip(own, cm, b, vw, vh, depth + 1);
+            items.push_back(layer_item(Item::EndLayer, 1));
+        }
+    }
+
+    // A mask's content drawn into a mask layer (luminance, or alpha with mask-type="alpha"),
+    // clipped to the mask region, that multiplies the enclosing layer.
+    void emit_mask(const pugi::xml_node& mask, const Affine& cm, const std::optional<Rect>& box, double vw, double vh, int depth) {
+        active_refs.push_back(mask);
+        Item begin;
+        begin.kind = Item::BeginMask;
+        std::string type;
+        for (const auto& [k, v] : properties(mask))
+            if (k == "mask-type") type = std::string(trim(v));
+        begin.luminance = type != "alpha";
+        items.push_back(std::move(begin));
+        const bool bbox_units = std::string_view(mask.attribute("maskUnits").value()) != "userSpaceOnUse";
+        const bool content_bbox = std::string_view(mask.attribute("maskContentUnits").value()) == "objectBoundingBox";
+        const bool have_box = box && box->width() > 0 && box->height() > 0;
+        if (have_box || (!bbox_units && !content_bbox)) {
+            Rect region;
+            auto frac = [&](const char* name, double fallback) {
+                const char* v = mask.attribute(name).value();
+                if (!*v) return fallback;
+                auto l = parse_length(v, 1.0);
+                return l ? *l : fallback;
+            };
+            if (bbox_units) {
+                region = Rect::from_xywh(box->x0 + frac("x", -0.1) * box->width(), box->y0 + frac("y", -0.1) * box->height(),
+                                         frac("width", 1.2) * box->width(), frac("height", 1.2) * box->height());
+            } else {
+                region = Rect::from_xywh(length_attr(mask, "x", vw, -0.1 * vw), length_attr(mask, "y", vh, -0.1 * vh),
+                                         length_attr(mask, "width", vw, 1.2 * vw), length_attr(mask, "height", vh, 1.2 * vh));
+            }
+            if (region.width() > 0 && region.height() > 0) {
+                Affine content_m = cm;
+                if (content_bbox) content_m = cm * Affine::translate(box->x0, box->y0) * Affine::scale(box->width(), box->height());
+                bool inner_missing = false;
+                const pugi::xml_node inner = reference(mask, "mask", "mask", inner_missing);
+                const bool inner_ok = inner && !is_active(inner);
+                clipped(region, cm, [&] {
+                    if (inner_ok) items.push_back(layer_item(Item::BeginLayer, 1));
+                    Style st;
+                    walk(mask, st, content_m, vw, vh, depth + 1);
+                    if (inner_ok) {
+                        emit_mask(inner, cm, box, vw, vh, depth + 1);
+                        items.push_back(layer_item(Item::EndLayer, 1));
+                    }
+                });
+            }
+        }
+        Item end;
+        end.kind = Item::EndMask;
+        items.push_back(std::move(end));
+        active_refs.pop_back();
+    }
+
+    SvgOptions options;
+
+    // The bytes an <image> href names: a data: URI (base64 or plain), or a relative file inside
+    // the resource root; nullopt (with a warning) for anything refused or unreadable.
+    std::optional<std::vector<std::uint8_t>> image_bytes(std::string_view ref) {
+        ref = trim(ref);
+        if (ref.substr(0, 5) == "data:") {
+            const std::size_t comma = ref.find(',');
+            if (comma == std::string_view::npos) return std::nullopt;
+            const std::string_view meta = ref.substr(5, comma - 5);
+            const std::string_view payload = ref.substr(comma + 1);
+            std::vector<std::uint8_t> out;
+            if (meta.size() >= 7 && meta.substr(meta.size() - 7) == ";base64") {
+                unsigned acc = 0;
+                int bits = 0;
+                for (char ch : payload) {
+                    int v;
+                    if (ch >= 'A' && ch <= 'Z') v = ch - 'A';
+                    else if (ch >= 'a' && ch <= 'z') v = ch - 'a' + 26;
+                    else if (ch >= '0' && ch <= '9') v = ch - '0' + 52;
+                    else if (ch == '+' || ch == '-') v = 62;
+                    else if (ch == '/' || ch == '_') v = 63;
+                    else continue;  // whitespace, padding
+                    acc = (acc << 6) | static_cast<unsigned>(v);
+                    bits += 6;
+                    if (bits >= 8) {
+                        bits -= 8;
+                        out.push_back(static_cast<std::uint8_t>(acc >> bits));
+                        acc &= (1u << bits) - 1;
+                    }
+                }
+            } else {
+                out.assign(payload.begin(), payload.end());
+            }
+            return out;
+        }
+        if (ref.find(':') != std::string_view::npos || ref.empty() || ref.front() == '/' || ref.front() == '#') {
+            warn("image '" + std::string(ref.substr(0, 80)) + "' refused: only data: URIs and relative files are read");
+            return std::nullopt;
+        }
+        if (options.base_dir.empty()) {
+            warn("image '" + std::string(ref) + "' refused: the document has no folder to resolve it against");
+            return std::nullopt;
+        }
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        const fs::path root = fs::weakly_canonical(options.resource_root.empty() ? options.base_dir : options.resource_root, ec);
+        const fs::path file = fs::weakly_canonical(fs::path(options.base_dir) / std::string(ref), ec);
+        const std::string r = root.string(), f = file.string();
+        if (ec || r.empty() || f.size() <= r.size() || f.compare(0, r.size(), r) != 0 || (f[r.size()] != '/' && r.back() != '/')) {
+            warn("image '" + std::string(ref) + "' refused: outside the document's folder");
+            return std::nullopt;
+        }
+        try {
+            return read_file(f);
+        } catch (const Error& e) {
+            warn(std::string("image: ") + e.what());
+            return std::nullopt;
+        }
+    }
+
+    void image(const pugi::xml_node& n, const Style& st, const Affine& cm, double vw, double vh, double opacity) {
+        if (!st.visible) return;
+        const std::optional<std::vector<std::uint8_t>> bytes = image_bytes(href(n));
+        if (!bytes) return;
+        std::shared_ptr<const Pixmap> raster;
+        std::shared_ptr<const SvgDocument> svg;
+        double iw = 0, ih = 0;
+        try {
+            if (sniff_image(*bytes) == ImageFormat::Svg) {
+                if (options.nesting + 1 > limits::kMaxSvgImageNesting) {
+                    warn("SVG images nested deeper than " + std::to_string(limits::kMaxSvgImageNesting) + "; skipped");
+                    return;
+                }
+                SvgOptions inner = options;
+                inner.nesting++;
+                svg = std::make_shared<const SvgDocument>(
+                    SvgDocument::parse(std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()), inner));
+                iw = svg->intrinsic_width();
+                ih = svg->intrinsic_height();
+            } else {
+                raster = std::make_shared<const Pixmap>(decode_image(*bytes));
+                iw = raster->width();
+                ih = raster->height();
+            }
+        } catch (const Error& e) {
+            warn(std::string("image not drawn: ") + e.what());
+            return;
+        }
+        auto size_attr = [&](const char* name, double percent_of) -> std::optional<double> {
+            std::string_view v = trim(n.attribute(name).value());
+            for (const auto& [k, val] : properties(n))
+                if (k == name) v = trim(val);
+            if (v.empty() || v == "auto") return std::nullopt;
+            return parse_length(v, percent_of);
+        };
+        std::optional<double> w = size_attr("width", vw), h = size_attr("height", vh);
+        if (!w && !h) {
+            w = iw;
+            h = ih;
+        } else if (!w) {
+            w = *h * iw / ih;
+        } else if (!h) {
+            h = *w * ih / iw;
+        }
+        if (!(*w > 0) || !(*h > 0) || !(iw > 0) || !(ih > 0)) return;
+        const double x = length_attr(n, "x", vw), y = length_attr(n, "y", vh);
+        const std::string_view par = n.attribute("preserveAspectRatio").value();
+        const Affine m = cm * Affine::translate(x, y) * viewbox_transform(Rect::from_xywh(0, 0, iw, ih), par, *w, *h);
+        const bool slice = par.find("slice") != std::string_view::npos;
+        const std::string rendering = inherited(n, "image-rendering");
+        const bool smooth = !(rendering == "optimizeSpeed" || rendering == "pixelated" || rendering == "crisp-edges");
+        auto draw = [&] {
+            Item it;
+            it.transform = m;
+            it.opacity = opacity;
+            if (svg) {
+                it.kind = Item::SvgImage;
+                it.svg_image = svg;
+            } else {
+                it.kind = Item::Fill;
+                it.path.add_rect(Rect::from_xywh(0, 0, iw, ih));
+                it.shader = std::make_shared<const Shader>(Shader::image(raster, smooth));
+            }
+            items.push_back(std::move(it));
+        };
+        if (slice || svg) clipped(Rect::from_xywh(x, y, *w, *h), cm, draw);
+        else draw();
+    }
+
+    int paint_depth = 0;  // patterns inside pattern content
+
+    // A pattern with its href chain (attributes from the first element that has them, content
+    // from the first with child elements): its tile content becomes a PatternTile that the
+    // renderer draws at device resolution and repeats through an image shader.
+    bool pattern(const pugi::xml_node& node, const Path& path, double vw, double vh, Item& it) {
+        std::vector<pugi::xml_node> chain{node};
+        while (chain.size() < 32) {
+            const char* h = href(chain.back());
+            if (*h != '#') break;
+            const pugi::xml_node next = lookup(h + 1);
+            if (!next || std::string_view(next.name()) != "pattern") break;
+            if (std::find(chain.begin(), chain.end(), next) != chain.end()) break;
+            chain.push_back(next);
+        }
+        auto attr = [&](const char* name) -> std::string_view {
+            for (const pugi::xml_node& n : chain)
+                if (const char* v = n.attribute(name).value(); *v) return v;
+            return {};
+        };
+        pugi::xml_node content;
+        for (const pugi::xml_node& n : chain) {
+            for (const pugi::xml_node& c : n.children())
+                if (c.type() == pugi::node_element) {
+                    content = n;
+                    break;
+                }
+            if (content) break;
+        }
+        if (!content || is_active(node) || is_active(content)) return false;
+        const bool units_bbox = attr("patternUnits") != "userSpaceOnUse";
+        const bool content_bbox = attr("patternContentUnits") == "objectBoundingBox";
+        const Rect b = path.bounds();
+        const bool have_box = b.width() > 0 && b.height() > 0;
+        if ((units_bbox || content_bbox) && !have_box) return false;
+        auto num = [&](const char* name, double percent_of) -> double {
+            const std::string_view v = attr(name);
+            if (v.empty()) return 0;
+            auto l = parse_length(v, units_bbox ? 1.0 : percent_of);
+            return l ? *l : 0;
+        };
+        Rect tile;
+        if (units_bbox)
+            tile = Rect::from_xywh(b.x0 + num("x", 1) * b.width(), b.y0 + num("y", 1) * b.height(), num("width", 1) * b.width(),
+                                   num("height", 1) * b.height());
+        else
+            tile = Rect::from_xywh(num("x", vw), num("y", vh), num("width", vw), num("height", vh));
+        if (!(tile.width() > 0) || !(tile.height() > 0) || !std::isfinite(tile.width()) || !std::isfinite(tile.height())) return false;
+        Affine pt;
+        if (const std::string_view t = attr("patternTransform"); !t.empty()) {
+            try {
+                pt = parse_svg_transform(t);
+                if (!pt.inverse()) return false;
+                pt = with_origin(node, pt, vw, vh);
+            } catch (const Error&) {
+                warn("invalid patternTransform; ignored");
+            }
+        }
+        Affine cm;
+        double cvw = vw, cvh = vh;
+        const pugi::xml_node vb_node = [&] {
+            for (const pugi::xml_node& n : chain)
+                if (*n.attribute("viewBox").value()) return n;
+            return pugi::xml_node();
+        }();
+        if (auto vb = vb_node ? parse_viewbox(vb_node.attribute("viewBox").value()) : std::nullopt) {
+            cm = Affine::translate(tile.x0, tile.y0) *
+                 viewbox_transform(*vb, vb_node.attribute("preserveAspectRatio").value(), tile.width(), tile.height());
+            cvw = vb->width();
+            cvh = vb->height();
+        } else {
+            // The content's origin is the tile's top-left corner.
+            cm = Affine::translate(tile.x0, tile.y0);
+            if (content_bbox) cm = cm * Affine::scale(b.width(), b.height());
+        }
+        if (++paint_depth > limits::kMaxNestingDepth)
+            throw Error(ErrorKind::Limit, "patterns nested deeper than " + std::to_string(limits::kMaxNestingDepth));
+        std::vector<Item> saved;
+        std::swap(saved, items);
+        active_refs.push_back(node);
+        active_refs.push_back(content);
+        Style st;
+        apply_style(content, st);
+        try {
+            walk(content, st, cm, cvw, cvh, 1);
+        } catch (...) {
+            std::swap(saved, items);
+            throw;
+        }
+        active_refs.pop_back();
+        active_refs.pop_back();
+        --paint_depth;
+        auto tile_items = std::make_shared<PatternTile>();
+        tile_items->items = std::move(items);
+        tile_items->tile = tile;
+        tile_items->transform = pt;
+        items = std::move(saved);
+        it.pattern = std::move(tile_items);
+        return true;
+    }
+
+    void element(const pugi::xml_node& child, const Style& st, const Affine& m, double vw, double vh, int depth) {
+        if (depth > limits::kMaxNestingDepth)
+            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
+        if (++expanded > limits::kMaxSvgElements)
+            throw Error(ErrorKind::Limit, "SVG expands to more than " + std::to_string(limits::kMaxSvgElements) +
+                                              " elements (nested <use> references)");
+        const std::string_view name = child.name();
+        if (name == "defs" || name == "title" || name == "desc" || name == "metadata" || name == "style" ||
+            name == "clipPath" || name == "mask" || name == "pattern" || name == "linearGradient" ||
+            name == "radialGradient" || name == "symbol" || name == "marker" || name == "filter")
+            return;
+        Style cst = st;
+        apply_style(child, cst);
+        for (const auto& [k, v] : properties(child))
+            if (k == "display" && trim(v) == "none") return;
+        Affine cm = m;
+        if (const char* t = child.attribute("transform").value(); *t) {
+            try {
+                cm = m * with_origin(child, parse_svg_transform(t), vw, vh);
+            } catch (const Error& e) {
+                warn(std::string("<") + child.name() + ">: " + e.what() + "; element skipped");
+                return;
+            }
+        }
+        double opacity = 1;
+        for (const auto& [k, v] : properties(child))
+            if (k == "opacity")
+                if (auto ov = parse_opacity(v)) opacity = *ov;
+        if (opacity <= 0) return;
+        bool clip_missing = false, mask_missing = false;
+        const pugi::xml_node clip = reference(child, "clip-path", "clipPath", clip_missing);
+        const pugi::xml_node mask = reference(child, "mask", "mask", mask_missing);
+        (void)clip_missing;  // a clip-path or mask naming nothing is ignored (as browsers do)
+        (void)mask_missing;
+        if ((clip && is_active(clip)) || (mask && is_active(mask))) {
+            warn(std::string("<") + child.name() + ">: recursive clip-path or mask; element not drawn");
+            return;
+        }
+        BlendMode blend = BlendMode::Normal;
+        bool isolate = false;
+        for (const auto& [k, v] : properties(child)) {
+            if (k == "mix-blend-mode") parse_blend_mode(trim(v), blend);
+            if (k == "isolation") isolate = trim(v) == "isolate";
+        }
+        const bool layered = opacity < 1 || clip || mask || blend != BlendMode::Normal || isolate;
+        const std::size_t first = items.size();
+        if (layered) {
+            Item begin = layer_item(Item::BeginLayer, opacity);
+            begin.blend = blend;
+            items.push_back(std::move(begin));
+        }
+        content(child, cst, cm, vw, vh, depth, layered ? 1.0 : opacity);
+        if (layered) {
+            const std::optional<Rect> box = items_bbox(first + 1, cm);
+            if (clip) emit_clip(clip, cm, box, vw, vh, depth);
+            if (mask) emit_mask(mask, cm, box, vw, vh, depth);
+            items.push_back(layer_item(Item::EndLayer, opacity));
+        }
+    }
+
+    void content(const pugi::xml_node& child, const Style& cst, const Affine& cm, double vw, double vh, int depth, double opacity) {
+        const std::string_view name = child.name();
+        const bool container = name == "g" || name == "a" || name == "switch" || name == "svg" || name == "use";
+        if (container) {
+            const bool layer = opacity < 1;
+            if (layer) items.push_back(layer_item(Item::BeginLayer, opacity));
+            if (name == "svg") {
+                const double w = length_attr(child, "width", vw, vw), h = length_attr(child, "height", vh, vh);
+                viewport(child, cst, cm, length_attr(child, "x", vw), length_attr(child, "y", vh), w, h, depth, false);
+            } else if (name == "use") {
+                use(child, cst, cm, vw, vh, depth);
+            } else {
+                walk(child, cst, cm, vw, vh, depth + 1);
+            }
+            if (layer) items.push_back(layer_item(Item::EndLayer, opacity));
+            return;
+        }
+        if (name == "image") return image(child, cst, cm, vw, vh, opacity);
+        std::optional<Path> p = shape_path(child, vw, vh);
+        if (!p) {
+            if (name != "path" && name != "rect" && name != "circle" && name != "ellipse" && name != "line" &&
+                name != "polyline" && name != "polygon")
+                warn("<" + std::string(name) + "> is not supported; skipped");
+            return;
+        }
+        if (p->empty()) return;
+        if (!cst.visible) return;
+        // A line has no interior; a polyline fills like a polygon (closed implicitly).
+        std::optional<Item> fill_item, stroke_item;
+        if (Item f; name != "line" && resolve_paint(cst.fill, *p, vw, vh, f)) {
+            f.kind = Item::Fill;
+            f.path = *p;
+            f.transform = cm;
+            f.rule = cst.fill_rule;
+            f.opacity = cst.fill_opacity * opacity;
+            fill_item = std::move(f);
+        }
+        const Path path_copy = *p;
+        if (Item st; cst.stroke_style.width > 0 && resolve_paint(cst.stroke, *p, vw, vh, st)) {
+            st.kind = Item::Stroke;
+            st.stroke = cst.stroke_style;
+            st.path = std::move(*p);
+            st.transform = cm;
+            st.opacity = cst.stroke_opacity * opacity;
+            stroke_item = std::move(st);
+        }
+        const bool markable = name == "path" || name == "line" || name == "polyline" || name == "polygon";
+        for (int part : cst.paint_order) {
+            if (part == 0 && fill_item) items.push_back(std::move(*fill_item));
+            if (part == 1 && stroke_item) items.push_back(std::move(*stroke_item));
+            if (part == 2 && markable) emit_markers(path_copy, cst, cm, vw, vh, depth);
+        }
+    }
+
+    // Markers at the vertices of `path`: marker-start at the first, marker-end at the last,
+    // marker-mid at the others; each oriented (orient auto / auto-start-reverse / an angle),
+    // scaled by the stroke width (markerUnits strokeWidth), mapped by its viewBox and refX/refY,
+    // and clipped to markerWidth x markerHeight unless overflow is visible.
+    void emit_markers(const Path& path, const Style& st, const Affine& cm, double vw, double vh, int depth) {
+        if (st.marker_start.empty() && st.marker_mid.empty() && st.marker_end.empty()) return;
+        struct Vertex {
+            Point p;
+            std::optional<Vec> in, out;
+        };
+        std::vector<Vertex> vs;
+        std::size_t subpath_first = 0;
+        auto dir = [](Point a, Point b) -> std::optional<Vec> {
+            const Vec d{b.x - a.x, b.y - a.y};
+            if (d.x == 0 && d.y == 0) return std::nullopt;
+            return d;
+        };
+        auto segment = [&](Point p0, std::initializer_list<Point> rest) {
+            std::vector<Point> pts{p0};
+            pts.insert(pts.end(), rest.begin(), rest.end());
+            std::optional<Vec> start, end;
+            for (std::size_t i = 1; i < pts.size() && !start; ++i) start = dir(p0, pts[i]);
+            for (std::size_t i = pts.size() - 1; i-- > 0 && !end;) end = dir(pts[i], pts.back());
+            if (!vs.empty() && !vs.back().out) vs.back().out = start;
+            vs.push_back({pts.back(), end, std::nullopt});
+        };
+        auto close = [&](Point last, Point first) {
+            if (!(last == first)) segment(last, {first});
+            // A closed subpath: its end vertex turns into its first segment, and its start vertex
+            // comes in from its closing segment.
+            if (subpath_first < vs.size()) {
+                vs.back().out = vs[subpath_first].out;
+                vs[subpath_first].in = vs.back().in;
+            }
+        };
+        struct Visitor {
+            std::function<void(Point)> on_move;
+            std::function<void(Point, std::initializer_list<Point>)> on_segment;
+            std::function<void(Point, Point)> on_close;
+            void move(Point p) { on_move(p); }
+            void line(Point a, Point b) { on_segment(a, {b}); }
+            void quad(Point a, Point c, Point b) { on_segment(a, {c, b}); }
+            void cubic(Point a, Point c1, Point c2, Point b) { on_segment(a, {c1, c2, b}); }
+            void conic(Point a, Point c, Point b, double) { on_segment(a, {c, b}); }
+            void close(Point last, Point first) { on_close(last, first); }
+        };
+        path.visit(Visitor{[&](Point p) {
+                               subpath_first = vs.size();
+                               vs.push_back({p, std::nullopt, std::nullopt});
+                           },
+                           segment, close});
+        if (vs.empty()) return;
+        for (std::size_t i = 0; i < vs.size(); ++i) {
+            const std::string& id = i == 0 ? st.marker_start : i + 1 == vs.size() ? st.marker_end : st.marker_mid;
+            if (id.empty()) continue;
+            const pugi::xml_node marker = lookup(id);
+            if (!marker || std::string_view(marker.name()) != "marker" || is_active(marker)) continue;
+            const Vertex& v = vs[i];
+            double angle = 0;
+            const std::string_view orient = trim(marker.attribute("orient").value());
+            if (orient == "auto" || orient == "auto-start-reverse") {
+                const std::optional<Vec>& a = v.in ? v.in : v.out;
+                const std::optional<Vec>& b = v.out ? v.out : v.in;
+                if (a && b) {
+                    const double ai = std::atan2(a->y, a->x), ao = std::atan2(b->y, b->x);
+                    angle = (ai + ao) / 2;
+                    if (std::fabs(ai - ao) > kPi) angle += kPi;
+                }
+                if (orient == "auto-start-reverse" && i == 0) angle += kPi;
+            } else if (!orient.empty()) {
+                std::string_view o = orient;
+                double unit = kPi / 180;
+                if (o.size() > 3 && o.substr(o.size() - 3) == "deg") o.remove_suffix(3);
+                else if (o.size() > 3 && o.substr(o.size() - 3) == "rad") { o.remove_suffix(3); unit = 1; }
+                else if (o.size() > 4 && o.substr(o.size() - 4) == "grad") { o.remove_suffix(4); unit = kPi / 200; }
+                else if (o.size() > 4 && o.substr(o.size() - 4) == "turn") { o.remove_suffix(4); unit = 2 * kPi; }
+                if (auto n = parse_number(o)) angle = *n * unit;
+            }
+            emit_marker(marker, st, cm * Affine::translate(v.p.x, v.p.y) * Affine::rotate(angle), vw, vh, depth);
+        }
+    }
+
+    void emit_marker(const pugi::xml_node& marker, const Style& st, const Affine& at, double vw, double vh, int depth) {
+        double scale = 1;
+        if (std::string_view(marker.attribute("markerUnits").value()) != "userSpaceOnUse") scale = st.stroke_style.width;
+        if (!(scale > 0)) return;
+        const double mw = length_attr(marker, "markerWidth", vw, 3), mh = length_attr(marker, "markerHeight", vh, 3);
+        if (!(mw > 0) || !(mh > 0)) return;
+        Affine vbt;
+        double nvw = mw, nvh = mh;
+        if (auto vb = parse_viewbox(marker.attribute("viewBox").value())) {
+            vbt = viewbox_transform(*vb, marker.attribute("preserveAspectRatio").value(), mw, mh);
+            nvw = vb->width();
+            nvh = vb->height();
+        }
+        const Point ref = vbt.apply({length_attr(marker, "refX", nvw), length_attr(marker, "refY", nvh)});
+        const Affine box = at * Affine::scale(scale) * Affine::translate(-ref.x, -ref.y);
+        const Affine content_m = box * vbt;
+        std::string overflow;
+        for (const auto& [k, v] : properties(marker))
+            if (k == "overflow") overflow = std::string(trim(v));
+        const bool clip = !(overflow == "visible" || overflow == "auto");
+        active_refs.push_back(marker);
+        Style mst;
+        mst.context_fill = st.fill;
+        mst.context_stroke = st.stroke;
+        apply_style(marker, mst);
+        items.push_back(layer_item(Item::BeginLayer, 1));
+        walk(marker, mst, content_m, nvw, nvh, depth + 1);
+        if (clip) {
+            Item begin;
+            begin.kind = Item::BeginClip;
+            items.push_back(std::move(begin));
+            Item r;
+            r.kind = Item::Fill;
+            r.path.add_rect(Rect::from_xywh(0, 0, mw, mh));
+            r.transform = box;
+            items.push_back(std::move(r));
+            Item end;
+            end.kind = Item::EndMask;
+            items.push_back(std::move(end));
+        }
+        items.push_back(layer_item(Item::EndLayer, 1));
+        active_refs.pop_back();
+    }
 };
+
+// Inflates gzip data (an .svgz), up to limits::kMaxSvgzBytes. Throws Error(InvalidData) for
+// corrupt data, Error(Limit) past the limit.
+std::string gunzip(std::string_view data) {
+    z_stream z{};
+    if (inflateInit2(&z, 16 + MAX_WBITS) != Z_OK) throw Error(ErrorKind::InvalidData, "zlib initialisation failed");
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data.data()));
+    z.avail_in = static_cast<uInt>(std::min<std::size_t>(data.size(), UINT32_MAX));
+    std::string out;
+    char buf[65536];
+    int rc = Z_OK;
+    while (rc != Z_STREAM_END) {
+        z.next_out = reinterpret_cast<Bytef*>(buf);
+        z.avail_out = sizeof buf;
+        rc = inflate(&z, Z_NO_FLUSH);
+        if (rc != Z_OK && rc != Z_STREAM_END) {
+            inflateEnd(&z);
+            throw Error(ErrorKind::InvalidData, "corrupt gzip data (.svgz)");
+        }
+        out.append(buf, sizeof buf - z.avail_out);
+        if (out.size() > limits::kMaxSvgzBytes) {
+            inflateEnd(&z);
+            throw Error(ErrorKind::Limit, "an .svgz inflates to more than " + std::to_string(limits::kMaxSvgzBytes) + " bytes");
+        }
+        if (rc == Z_OK && z.avail_in == 0 && z.avail_out != 0) {
+            inflateEnd(&z);
+            throw Error(ErrorKind::InvalidData, "truncated gzip data (.svgz)");
+        }
+    }
+    inflateEnd(&z);
+    return out;
+}
+
+constexpr std::string_view kSvgNamespace = "http://www.w3.org/2000/svg";
+
+// Elements written with a prefix bound to the SVG namespace (<svg:svg xmlns:svg="...">) get their
+// local name, so the reader sees <svg>; elements of other namespaces keep their prefixed names and
+// are skipped as unknown. `prefixes` holds the prefixes bound to the SVG namespace in scope.
+void normalise_namespaces(pugi::xml_node node, std::vector<std::string> prefixes) {
+    std::vector<std::pair<pugi::xml_node, std::vector<std::string>>> stack;
+    stack.emplace_back(node, std::move(prefixes));
+    while (!stack.empty()) {
+        auto [n, scope] = std::move(stack.back());
+        stack.pop_back();
+        for (const pugi::xml_attribute& a : n.attributes()) {
+            const std::string_view name = a.name();
+            if (name.substr(0, 6) != "xmlns:") continue;
+            const std::string prefix(name.substr(6));
+            std::erase(scope, prefix);
+            if (a.value() == kSvgNamespace) scope.push_back(prefix);
+        }
+        const std::string_view name = n.name();
+        if (const std::size_t colon = name.find(':'); colon != std::string_view::npos) {
+            const std::string prefix(name.substr(0, colon));
+            if (std::find(scope.begin(), scope.end(), prefix) != scope.end()) n.set_name(std::string(name.substr(colon + 1)).c_str());
+        }
+        for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling())
+            if (c.type() == pugi::node_element) stack.emplace_back(c, scope);
+    }
+}
 
 }  // namespace
 
 struct SvgDocument::Impl {
     pugi::xml_document doc;
-    int width = 0, height = 0;
+    int width = 0, height = 0;   // output size: the intrinsic size rounded, at least 1
+    double fwidth = 0, fheight = 0;  // intrinsic size, fractional
     Affine view;  // viewBox -> pixels
     std::vector<Item> items;
     std::vector<std::string> warnings;
@@ -346,14 +1543,24 @@ SvgDocument& SvgDocument::operator=(SvgDocument&&) noexcept = default;
 SvgDocument::~SvgDocument() = default;
 int SvgDocument::width() const { return impl_->width; }
 int SvgDocument::height() const { return impl_->height; }
+double SvgDocument::intrinsic_width() const { return impl_->fwidth; }
+double SvgDocument::intrinsic_height() const { return impl_->fheight; }
 const std::vector<std::string>& SvgDocument::warnings() const { return impl_->warnings; }
 
-SvgDocument SvgDocument::load(const std::string& path) {
+SvgDocument SvgDocument::load(const std::string& path, const std::string& resource_root) {
     const std::vector<std::uint8_t> bytes = read_file(path);
-    return parse(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    SvgOptions o;
+    std::error_code ec;
+    o.base_dir = std::filesystem::absolute(std::filesystem::path(path), ec).parent_path().string();
+    o.resource_root = resource_root;
+    return parse(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), o);
 }
 
-SvgDocument SvgDocument::parse(std::string_view text) {
+SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options) {
+    std::string inflated;
+    if (input.size() >= 2 && static_cast<unsigned char>(input[0]) == 0x1f && static_cast<unsigned char>(input[1]) == 0x8b)
+        inflated = gunzip(input);
+    const std::string_view text = inflated.empty() ? input : std::string_view(inflated);
     auto impl = std::make_unique<Impl>();
     if (trim(text).empty()) throw Error(ErrorKind::Parse, "SVG input is empty");
     const pugi::xml_parse_result res =
@@ -361,28 +1568,14 @@ SvgDocument SvgDocument::parse(std::string_view text) {
     if (!res)
         throw Error(ErrorKind::Parse, std::string("malformed SVG (XML) at byte ") + std::to_string(res.offset) + ": " +
                                           res.description());
+    normalise_namespaces(impl->doc.document_element(), {});
     const pugi::xml_node root = impl->doc.document_element();
     if (std::string_view(root.name()) != "svg")
         throw Error(ErrorKind::InvalidData, std::string("root element is <") + root.name() + ">, expected <svg>");
 
-    // viewBox
-    std::optional<Rect> vb;
-    if (const char* v = root.attribute("viewBox").value(); *v) {
-        std::string s = v;
-        for (char& c : s)
-            if (c == ',') c = ' ';
-        double n[4];
-        std::size_t pos = 0;
-        bool ok = true;
-        for (double& x : n) {
-            while (pos < s.size() && std::isspace(static_cast<unsigned char>(s[pos]))) ++pos;
-            auto r = std::from_chars(s.data() + pos, s.data() + s.size(), x);
-            if (r.ec != std::errc() || !std::isfinite(x)) { ok = false; break; }
-            pos = static_cast<std::size_t>(r.ptr - s.data());
-        }
-        if (ok && n[2] > 0 && n[3] > 0) vb = Rect::from_xywh(n[0], n[1], n[2], n[3]);
-        else impl->warnings.push_back(std::string("invalid viewBox '") + v + "' ignored");
-    }
+    const char* vb_text = root.attribute("viewBox").value();
+    const std::optional<Rect> vb = parse_viewbox(vb_text);
+    if (!vb && *vb_text) impl->warnings.push_back(std::string("invalid viewBox '") + vb_text + "' ignored");
     auto root_length = [&](const char* name, double vb_size) -> std::optional<double> {
         const char* v = root.attribute(name).value();
         if (!*v) return std::nullopt;
@@ -397,9 +1590,14 @@ SvgDocument SvgDocument::parse(std::string_view text) {
     if (!(*w > 0) || !(*h > 0))
         throw Error(ErrorKind::InvalidData, "SVG width and height must be positive, got " + std::to_string(*w) + " x " +
                                                 std::to_string(*h));
-    check_canvas_size(std::ceil(*w), std::ceil(*h));
-    impl->width = static_cast<int>(std::ceil(*w));
-    impl->height = static_cast<int>(std::ceil(*h));
+    // The output size is the intrinsic size rounded to whole pixels (at least 1), as resvg does;
+    // the fractional size stays for the scale (render() fills the whole output).
+    const double rw = std::max(1.0, std::round(*w)), rh = std::max(1.0, std::round(*h));
+    check_canvas_size(rw, rh);
+    impl->width = static_cast<int>(rw);
+    impl->height = static_cast<int>(rh);
+    impl->fwidth = *w;
+    impl->fheight = *h;
 
     // viewBox -> viewport with preserveAspectRatio.
     Affine view;
@@ -407,25 +1605,14 @@ SvgDocument SvgDocument::parse(std::string_view text) {
     if (vb) {
         vw = vb->width();
         vh = vb->height();
-        std::string par = root.attribute("preserveAspectRatio").value();
-        double sx = *w / vb->width(), sy = *h / vb->height();
-        if (par.find("none") == std::string::npos) {
-            const bool slice = par.find("slice") != std::string::npos;
-            const double s = slice ? std::max(sx, sy) : std::min(sx, sy);
-            double tx = -vb->x0 * s, ty = -vb->y0 * s;
-            const double ex = *w - vb->width() * s, ey = *h - vb->height() * s;
-            if (par.find("xMid") != std::string::npos || par.empty()) tx += ex / 2;
-            else if (par.find("xMax") != std::string::npos) tx += ex;
-            if (par.find("YMid") != std::string::npos || par.empty()) ty += ey / 2;
-            else if (par.find("YMax") != std::string::npos) ty += ey;
-            view = {s, 0, 0, s, tx, ty};
-        } else {
-            view = {sx, 0, 0, sy, -vb->x0 * sx, -vb->y0 * sy};
-        }
+        view = viewbox_transform(*vb, root.attribute("preserveAspectRatio").value(), *w, *h);
     }
     impl->view = view;
 
     Reader reader;
+    reader.options = options;
+    reader.index_ids(root);
+    reader.read_style_sheets(root);
     Style st;
     reader.apply_style(root, st);
     Affine root_m = view;
@@ -436,68 +1623,127 @@ SvgDocument SvgDocument::parse(std::string_view text) {
     return SvgDocument(std::move(impl));
 }
 
-void SvgDocument::render(Canvas& canvas, const Affine& base) const {
-    // Layers for group opacity: each is a transparent pixmap the size of the target.
-    std::vector<Pixmap> layers;
-    std::vector<Canvas> canvases;
-    canvases.reserve(static_cast<std::size_t>(limits::kMaxNestingDepth) + 1);
-    layers.reserve(static_cast<std::size_t>(limits::kMaxNestingDepth) + 1);
-    Canvas* cur = &canvas;
-    std::vector<double> layer_opacity;
-    for (const Item& it : impl_->items) {
-        if (it.kind == Item::BeginLayer) {
-            layers.emplace_back(canvas.width(), canvas.height());
-            canvases.emplace_back(layers.back());
-            canvases.back().fill_options() = canvas.fill_options();
-            layer_opacity.push_back(it.opacity);
-            cur = &canvases.back();
-            continue;
-        }
-        if (it.kind == Item::EndLayer) {
-            if (layers.empty()) continue;
-            Pixmap layer = std::move(layers.back());
-            layers.pop_back();
-            canvases.pop_back();
-            const double op = layer_opacity.back();
-            layer_opacity.pop_back();
-            cur = canvases.empty() ? &canvas : &canvases.back();
-            // Source-over of the layer scaled by the group opacity.
-            Pixmap& dst = cur->target();
-            const unsigned o = static_cast<unsigned>(std::lround(op * 255));
-            for (int y = 0; y < dst.height(); ++y) {
-                const std::uint8_t* s = layer.row(y);
-                std::uint8_t* d = dst.row(y);
-                for (int x = 0; x < dst.width(); ++x, s += 4, d += 4) {
-                    if (s[3] == 0) continue;
-                    unsigned sc[4];
-                    for (int k = 0; k < 4; ++k) {
-                        const unsigned t = s[k] * o + 128;
-                        sc[k] = (t + (t >> 8)) >> 8;
-                    }
-                    const unsigned inv = 255 - sc[3];
-                    for (int k = 0; k < 4; ++k) {
-                        const unsigned t = d[k] * inv + 128;
-                        d[k] = static_cast<std::uint8_t>(sc[k] + ((t + (t >> 8)) >> 8));
-                    }
-                }
+namespace {
+
+void render_items(const std::vector<Item>& items, Canvas& canvas, const Affine& base) {
+    // Layers: groups with opacity, clip paths or masks (BeginLayer .. EndLayer), and the content of
+    // clip paths and masks (BeginClip/BeginMask .. EndMask), which becomes a coverage mask that
+    // multiplies the layer it closes in.
+    struct Frame {
+        Pixmap pm;
+        Canvas canvas;
+        double opacity = 1;
+        bool luminance = false;
+        BlendMode blend = BlendMode::Normal;
+        Frame(int w, int h) : pm(w, h), canvas(pm) {}
+    };
+    std::vector<std::unique_ptr<Frame>> frames;
+    auto cur = [&]() -> Canvas& { return frames.empty() ? canvas : frames.back()->canvas; };
+    for (const Item& it : items) {
+        switch (it.kind) {
+            case Item::BeginLayer:
+            case Item::BeginClip:
+            case Item::BeginMask: {
+                frames.push_back(std::make_unique<Frame>(canvas.width(), canvas.height()));
+                frames.back()->canvas.fill_options() = canvas.fill_options();
+                frames.back()->opacity = it.opacity;
+                frames.back()->luminance = it.kind == Item::BeginMask && it.luminance;
+                frames.back()->blend = it.blend;
+                continue;
             }
-            continue;
+            case Item::EndLayer: {
+                if (frames.empty()) continue;
+                std::unique_ptr<Frame> f = std::move(frames.back());
+                frames.pop_back();
+                cur().draw_layer(f->pm, f->opacity, f->blend);
+                continue;
+            }
+            case Item::EndMask: {
+                if (frames.size() < 2) continue;
+                std::unique_ptr<Frame> f = std::move(frames.back());
+                frames.pop_back();
+                apply_mask(frames.back()->pm, f->luminance ? mask_from_luminance(f->pm) : mask_from_alpha(f->pm));
+                continue;
+            }
+            case Item::PushClip: {
+                Canvas& c = cur();
+                c.save();
+                const Affine saved = c.transform();
+                c.set_transform(base * it.transform);
+                c.clip_rect(it.path.bounds());
+                c.set_transform(saved);
+                continue;
+            }
+            case Item::PopClip:
+                cur().restore();
+                continue;
+            case Item::SvgImage:
+                if (it.svg_image) it.svg_image->render(cur(), base * it.transform);
+                continue;
+            case Item::Fill:
+            case Item::Stroke: break;
         }
+        Canvas& c = cur();
         Paint paint = Paint::solid(it.color);
+        paint.shader = it.shader;
         paint.opacity = it.opacity;
-        const Affine saved = cur->transform();
-        cur->set_transform(base * it.transform);
-        if (it.kind == Item::Stroke) cur->stroke_path(it.path, it.stroke, paint);
-        else cur->fill_path(it.path, paint, it.rule);
-        cur->set_transform(saved);
+        if (it.pattern) {
+            // The tile is drawn at the device resolution the fill needs, then repeated.
+            const PatternTile& pt = *it.pattern;
+            const Affine m = base * it.transform * pt.transform;
+            const double sx = std::hypot(m.a, m.b) * pt.tile.width(), sy = std::hypot(m.c, m.d) * pt.tile.height();
+            const int tw = static_cast<int>(std::clamp(std::ceil(sx), 1.0, 2048.0));
+            const int th = static_cast<int>(std::clamp(std::ceil(sy), 1.0, 2048.0));
+            auto tile = std::make_shared<Pixmap>(tw, th);
+            Canvas tc(*tile);
+            tc.fill_options() = c.fill_options();
+            render_items(pt.items, tc,
+                         Affine::scale(tw / pt.tile.width(), th / pt.tile.height()) * Affine::translate(-pt.tile.x0, -pt.tile.y0));
+            paint.shader = std::make_shared<const Shader>(Shader::image(
+                tile, true,
+                pt.transform * Affine::translate(pt.tile.x0, pt.tile.y0) * Affine::scale(pt.tile.width() / tw, pt.tile.height() / th),
+                true));
+        }
+        const Affine saved = c.transform();
+        c.set_transform(base * it.transform);
+        if (it.kind == Item::Stroke) c.stroke_path(it.path, it.stroke, paint);
+        else c.fill_path(it.path, paint, it.rule);
+        c.set_transform(saved);
     }
 }
 
-Pixmap SvgDocument::render() const {
-    Pixmap pm(impl_->width, impl_->height);
+}  // namespace
+
+void SvgDocument::render(Canvas& canvas, const Affine& base) const { render_items(impl_->items, canvas, base); }
+
+Pixmap SvgDocument::render() const { return render_size(impl_->width, impl_->height); }
+
+Pixmap SvgDocument::render_size(int width, int height) const {
+    Pixmap pm(width, height);
     Canvas c(pm);
-    render(c);
+    render(c, Affine::scale(width / impl_->fwidth, height / impl_->fheight));
     return pm;
+}
+
+std::pair<int, int> SvgDocument::output_size_for_width(int width) const {
+    check_canvas_size(width, 1);
+    const double h = std::ceil(static_cast<double>(width) * impl_->height / impl_->width);
+    check_canvas_size(width, h);
+    return {width, static_cast<int>(h)};
+}
+
+std::pair<int, int> SvgDocument::output_size_for_height(int height) const {
+    check_canvas_size(1, height);
+    const double w = std::ceil(static_cast<double>(height) * impl_->width / impl_->height);
+    check_canvas_size(w, height);
+    return {static_cast<int>(w), height};
+}
+
+std::pair<int, int> SvgDocument::output_size_for_zoom(double zoom) const {
+    if (!(zoom > 0) || !std::isfinite(zoom)) throw Error(ErrorKind::InvalidArgument, "zoom must be positive");
+    const double w = std::ceil(impl_->width * zoom), h = std::ceil(impl_->height * zoom);
+    check_canvas_size(w, h);
+    return {static_cast<int>(w), static_cast<int>(h)};
 }
 
 }  // namespace casteljau

@@ -18,6 +18,19 @@ namespace {
 // multiply and a shift).
 inline std::uint8_t div65025(unsigned n) { return static_cast<std::uint8_t>((n + 32512u) / 65025u); }
 
+// Source-over of premultiplied S x coverage c onto premultiplied D, in place:
+// out = S c / 255 + D (1 - Sa c / 255^2), rounded once. Both terms are kept over the common
+// denominator 255^2 = 65025; the numerator stays below 255 x 65025 < 2^24 and, 65025 being odd,
+// never ends in exactly one half, so rounding is never a tie.
+inline void source_over(std::uint8_t* d, const std::uint8_t* s, unsigned c) {
+    const unsigned keep = 65025u - s[3] * c;
+    const unsigned sc = 255u * c;
+    d[0] = div65025(s[0] * sc + d[0] * keep);
+    d[1] = div65025(s[1] * sc + d[1] * keep);
+    d[2] = div65025(s[2] * sc + d[2] * keep);
+    d[3] = div65025(s[3] * sc + d[3] * keep);
+}
+
 struct LinearTables {
     std::array<float, 256> to_linear{};
     std::array<std::uint8_t, 4097> to_srgb{};
@@ -83,15 +96,19 @@ void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage,
             std::memcpy(dst, solid, 4);
             continue;
         }
-        // out = S c / 255 + D (1 - Sa c / 255^2), rounded once: both terms are kept over the
-        // common denominator 255^2 = 65025. The numerator stays below 255 x 65025 < 2^24 and,
-        // 65025 being odd, never ends in exactly one half, so rounding is never a tie.
-        const unsigned keep = 65025u - s.a * c;
-        const unsigned sc = 255u * c;
-        dst[0] = div65025(s.r * sc + dst[0] * keep);
-        dst[1] = div65025(s.g * sc + dst[1] * keep);
-        dst[2] = div65025(s.b * sc + dst[2] * keep);
-        dst[3] = div65025(s.a * sc + dst[3] * keep);
+        source_over(dst, solid, c);
+    }
+}
+
+void composite_span_premul(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src) {
+    for (int i = 0; i < length; ++i, dst += 4, src += 4) {
+        const unsigned c = coverage[i];
+        if (c == 0 || src[3] == 0) continue;
+        if (c == 255 && src[3] == 255) {
+            std::memcpy(dst, src, 4);
+            continue;
+        }
+        source_over(dst, src, c);
     }
 }
 

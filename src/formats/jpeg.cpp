@@ -1,0 +1,139 @@
+// Formats stage: JPEG decoding through libjpeg(-turbo), and the image signature sniffing of
+// include/casteljau/image.hpp. libjpeg reports fatal errors through a longjmp out of its error
+// handler; the setjmp scope holds no C++ objects with destructors.
+// jpeglib.h needs size_t and FILE declared first.
+#include <cstddef>
+#include <cstdio>
+#include <jpeglib.h>
+
+#include <algorithm>
+#include <csetjmp>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "casteljau/error.hpp"
+#include "casteljau/image.hpp"
+#include "casteljau/png.hpp"
+
+namespace casteljau {
+
+namespace {
+
+struct ErrorManager {
+    jpeg_error_mgr pub;
+    std::jmp_buf jump;
+    char message[JMSG_LENGTH_MAX];
+};
+
+[[noreturn]] void on_error(j_common_ptr cinfo) {
+    auto* err = reinterpret_cast<ErrorManager*>(cinfo->err);
+    (*cinfo->err->format_message)(cinfo, err->message);
+    std::longjmp(err->jump, 1);
+}
+
+void on_message(j_common_ptr, int) {}
+
+// Reads the header; false with the message set on a libjpeg error.
+bool read_header(jpeg_decompress_struct* cinfo, ErrorManager* err, const std::uint8_t* data, std::size_t size) {
+    if (setjmp(err->jump)) return false;
+    jpeg_mem_src(cinfo, data, static_cast<unsigned long>(size));
+    jpeg_read_header(cinfo, TRUE);
+    if (cinfo->jpeg_color_space == JCS_CMYK || cinfo->jpeg_color_space == JCS_YCCK) cinfo->out_color_space = JCS_CMYK;
+    else if (cinfo->jpeg_color_space == JCS_GRAYSCALE) cinfo->out_color_space = JCS_GRAYSCALE;
+    else cinfo->out_color_space = JCS_RGB;
+    jpeg_calc_output_dimensions(cinfo);
+    return true;
+}
+
+// Decodes the scanlines into `rgba` (straight RGBA8, opaque); false on a libjpeg error.
+bool read_pixels(jpeg_decompress_struct* cinfo, ErrorManager* err, std::uint8_t* rgba, std::uint8_t* row) {
+    if (setjmp(err->jump)) return false;
+    jpeg_start_decompress(cinfo);
+    const unsigned w = cinfo->output_width;
+    const int comps = cinfo->output_components;
+    while (cinfo->output_scanline < cinfo->output_height) {
+        const unsigned y = cinfo->output_scanline;
+        JSAMPROW rows[1] = {row};
+        jpeg_read_scanlines(cinfo, rows, 1);
+        std::uint8_t* d = rgba + static_cast<std::size_t>(y) * w * 4;
+        for (unsigned x = 0; x < w; ++x, d += 4) {
+            const std::uint8_t* s = row + static_cast<std::size_t>(x) * comps;
+            if (comps == 1) {
+                d[0] = d[1] = d[2] = s[0];
+            } else if (comps == 4) {
+                // Adobe CMYK JPEGs store inverted values: R = C' x K' / 255.
+                d[0] = static_cast<std::uint8_t>(s[0] * s[3] / 255);
+                d[1] = static_cast<std::uint8_t>(s[1] * s[3] / 255);
+                d[2] = static_cast<std::uint8_t>(s[2] * s[3] / 255);
+            } else {
+                d[0] = s[0];
+                d[1] = s[1];
+                d[2] = s[2];
+            }
+            d[3] = 255;
+        }
+    }
+    jpeg_finish_decompress(cinfo);
+    return true;
+}
+
+}  // namespace
+
+ImageFormat sniff_image(std::span<const std::uint8_t> b) {
+    auto starts = [&](std::initializer_list<std::uint8_t> sig) {
+        return b.size() >= sig.size() && std::equal(sig.begin(), sig.end(), b.begin());
+    };
+    if (starts({0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'})) return ImageFormat::Png;
+    if (starts({0xff, 0xd8, 0xff})) return ImageFormat::Jpeg;
+    if (starts({'G', 'I', 'F', '8'})) return ImageFormat::Gif;
+    if (b.size() >= 12 && starts({'R', 'I', 'F', 'F'}) && std::memcmp(b.data() + 8, "WEBP", 4) == 0) return ImageFormat::Webp;
+    if (starts({0x1f, 0x8b})) return ImageFormat::Svg;  // gzip: an .svgz
+    std::size_t i = starts({0xef, 0xbb, 0xbf}) ? 3 : 0;
+    while (i < b.size() && (b[i] == ' ' || b[i] == '\t' || b[i] == '\r' || b[i] == '\n')) ++i;
+    if (i < b.size() && b[i] == '<') return ImageFormat::Svg;
+    return ImageFormat::Unknown;
+}
+
+Pixmap decode_jpeg(std::span<const std::uint8_t> bytes) {
+    if (bytes.empty()) throw Error(ErrorKind::InvalidData, "JPEG data is empty");
+    jpeg_decompress_struct cinfo{};
+    ErrorManager err{};
+    cinfo.err = jpeg_std_error(&err.pub);
+    err.pub.error_exit = on_error;
+    err.pub.emit_message = on_message;
+    jpeg_create_decompress(&cinfo);
+    if (!read_header(&cinfo, &err, bytes.data(), bytes.size())) {
+        jpeg_destroy_decompress(&cinfo);
+        throw Error(ErrorKind::InvalidData, std::string("corrupt JPEG: ") + err.message);
+    }
+    const double w = cinfo.output_width, h = cinfo.output_height;
+    try {
+        check_canvas_size(w, h);
+    } catch (...) {
+        jpeg_destroy_decompress(&cinfo);
+        throw;
+    }
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
+    std::vector<std::uint8_t> row(static_cast<std::size_t>(w) * 4);
+    const bool ok = read_pixels(&cinfo, &err, rgba.data(), row.data());
+    jpeg_destroy_decompress(&cinfo);
+    if (!ok) throw Error(ErrorKind::InvalidData, std::string("corrupt JPEG: ") + err.message);
+    Pixmap pm(static_cast<int>(w), static_cast<int>(h));
+    std::memcpy(pm.data(), rgba.data(), rgba.size());  // opaque: premultiplied equals straight
+    return pm;
+}
+
+Pixmap decode_image(std::span<const std::uint8_t> bytes) {
+    switch (sniff_image(bytes)) {
+        case ImageFormat::Png: return decode_png(bytes);
+        case ImageFormat::Jpeg: return decode_jpeg(bytes);
+        case ImageFormat::Gif: throw Error(ErrorKind::InvalidData, "GIF images are not supported");
+        case ImageFormat::Webp: throw Error(ErrorKind::InvalidData, "WebP images are not supported");
+        case ImageFormat::Svg: throw Error(ErrorKind::InvalidData, "an SVG image is not a raster image");
+        case ImageFormat::Unknown: break;
+    }
+    throw Error(ErrorKind::InvalidData, "unrecognised image data (not PNG or JPEG)");
+}
+
+}  // namespace casteljau
