@@ -55,6 +55,9 @@ fi
 # SVG drawings.
 run svg "$here/data/shapes.svg" -o "$out/shapes.png"
 run svg "$here/data/shapes.svg" --scale 3 -o "$out/shapes-3x.png"
+# Gradients (linear, radial with a focus, reflected), a style sheet, use, a clip path, a mask and
+# markers; librsvg's rsvg-convert draws the same picture.
+run svg "$here/data/badge.svg" --zoom 2 -o "$out/svg-badge.png"
 
 # Maps: the Natural Earth 110m countries (tests/data/maps), one colour per country, seamless
 # borders stroked once; the hand-made sample across the antimeridian; a few Web Mercator tiles.
