@@ -77,6 +77,19 @@ std::size_t syntax_error_offset(std::string_view s) {
         }
         return false;
     };
+    // An object member's key and colon at i (after '{' or ','): kNoError when both are there,
+    // otherwise where the text goes wrong.
+    constexpr std::size_t kNoError = std::string_view::npos;
+    auto member_key = [&]() -> std::size_t {
+        skip_ws();
+        if (i >= n) return n;
+        if (s[i] != '"' || !scalar()) return i;
+        skip_ws();
+        if (i >= n) return n;
+        if (s[i] != ':') return i;
+        ++i;
+        return kNoError;
+    };
     // Expecting a value at i.
     for (;;) {
         skip_ws();
@@ -88,12 +101,7 @@ std::size_t syntax_error_offset(std::string_view s) {
             skip_ws();
             if (i < n && s[i] == '}') { ++i; stack.pop_back(); value_done = true; }
             else {
-                if (i >= n) return n;
-                if (s[i] != '"' || !scalar()) return i;
-                skip_ws();
-                if (i >= n) return n;
-                if (s[i] != ':') return i;
-                ++i;
+                if (const std::size_t bad = member_key(); bad != kNoError) return bad;
                 continue;
             }
         } else if (s[i] == '[') {
@@ -114,15 +122,8 @@ std::size_t syntax_error_offset(std::string_view s) {
             const char top = stack.back();
             if (s[i] == ',') {
                 ++i;
-                if (top == '{') {
-                    skip_ws();
-                    if (i >= n) return n;
-                    if (s[i] != '"' || !scalar()) return i;
-                    skip_ws();
-                    if (i >= n) return n;
-                    if (s[i] != ':') return i;
-                    ++i;
-                }
+                if (top == '{')
+                    if (const std::size_t bad = member_key(); bad != kNoError) return bad;
                 value_done = false;
             } else if ((top == '{' && s[i] == '}') || (top == '[' && s[i] == ']')) {
                 ++i;

@@ -4,6 +4,8 @@
 // Path of one feature lives only while that feature is drawn.
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
@@ -308,6 +310,17 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
         v.point_radius = style.point_radius;
         for (const Geometry& g : f.geometries) pr.geometry(g, v);
     };
+    // The pixel-space fill of feature `f` in `layer` with its colour, or nullopt when the layer's
+    // filter or colour leaves it out or it has no area.
+    auto fill_of = [&](const MapLayerStyle& layer, const Feature& f) -> std::optional<std::pair<Path, Color>> {
+        if (!layer.filter.matches(f)) return std::nullopt;
+        const std::optional<Color> c = layer.fill_for(f);
+        if (!c) return std::nullopt;
+        PathVisitor v;
+        build(f, v);
+        if (v.fill.empty()) return std::nullopt;
+        return std::pair<Path, Color>{std::move(v.fill), *c};
+    };
 
     for (const MapLayerStyle& layer : style.layers) {
         // Fills: seamless (by area, last feature first so that later features win) or source-over in order.
@@ -317,29 +330,20 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             else area->clear();
             bool drew = false;
             for (std::size_t i = data.features.size(); i-- > 0;) {
-                const Feature& f = data.features[i];
-                if (!layer.filter.matches(f)) continue;
-                const std::optional<Color> c = layer.fill_for(f);
-                if (!c) continue;
-                PathVisitor v;
-                build(f, v);
-                if (v.fill.empty()) continue;
-                area->add(raster, v.fill, fo, *c, layer.opacity);
+                const auto fill = fill_of(layer, data.features[i]);
+                if (!fill) continue;
+                area->add(raster, fill->first, fo, fill->second, layer.opacity);
                 drew = true;
             }
             if (drew) area->composite_onto(target);
         } else if (any_fill) {
+            canvas.fill_options().exact_overlaps = opts.exact_overlaps;
             for (const Feature& f : data.features) {
-                if (!layer.filter.matches(f)) continue;
-                const std::optional<Color> c = layer.fill_for(f);
-                if (!c) continue;
-                PathVisitor v;
-                build(f, v);
-                if (v.fill.empty()) continue;
-                Paint paint = Paint::solid(*c);
+                const auto fill = fill_of(layer, f);
+                if (!fill) continue;
+                Paint paint = Paint::solid(fill->second);
                 paint.opacity = layer.opacity;
-                canvas.fill_options().exact_overlaps = opts.exact_overlaps;
-                canvas.fill_path(v.fill, paint, opts.fill_rule);
+                canvas.fill_path(fill->first, paint, opts.fill_rule);
             }
         }
         // Strokes: one outline path per colour, filled once (shared borders drawn once).
