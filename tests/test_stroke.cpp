@@ -801,3 +801,26 @@ TEST_CASE("dash: zero-length dashes become dots or squares along the path", "[st
     CHECK(inside(squares, {2.6, 0}));        // along/across 1.84: inside the rotated square
     CHECK_FALSE(inside(squares, {1.9, 1.9})); // along 2.69: outside it (inside an axis-aligned one)
 }
+
+TEST_CASE("parse_line_cap and parse_line_join read the SVG names and refuse others", "[stroke]") {
+    LineCap cap = LineCap::Butt;
+    CHECK(parse_line_cap("round", cap));
+    CHECK(cap == LineCap::Round);
+    CHECK(parse_line_cap("square", cap));
+    CHECK(cap == LineCap::Square);
+    CHECK(parse_line_cap("butt", cap));
+    CHECK(cap == LineCap::Butt);
+    CHECK_FALSE(parse_line_cap("Round", cap));
+    CHECK_FALSE(parse_line_cap("", cap));
+    CHECK(cap == LineCap::Butt);  // unchanged by a refused name
+    LineJoin join = LineJoin::Round;
+    const std::pair<const char*, LineJoin> joins[] = {
+        {"miter", LineJoin::Miter}, {"miter-clip", LineJoin::MiterClip}, {"round", LineJoin::Round}, {"bevel", LineJoin::Bevel}};
+    for (const auto& [name, want] : joins) {
+        INFO(name);
+        CHECK(parse_line_join(name, join));
+        CHECK(join == want);
+    }
+    CHECK_FALSE(parse_line_join("arcs", join));
+    CHECK(join == LineJoin::Bevel);
+}

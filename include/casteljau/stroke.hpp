@@ -43,6 +43,7 @@
 
 #include <cstddef>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "casteljau/geometry.hpp"
@@ -56,6 +57,11 @@ inline constexpr std::size_t kMaxDashes = 1u << 22;  // dashes produced from one
 
 enum class LineCap { Butt, Round, Square };
 enum class LineJoin { Miter, MiterClip, Round, Bevel };  // SVG 2 names
+
+// The SVG names of caps (butt, round, square) and joins (miter, miter-clip, round, bevel); false
+// when `name` is none of them (`out` is then unchanged).
+bool parse_line_cap(std::string_view name, LineCap& out);
+bool parse_line_join(std::string_view name, LineJoin& out);
 
 struct StrokeStyle {
     double width = 1;

@@ -127,12 +127,8 @@ MapStyle build_map_style(const MapCliStyle& o) {
         st.background = parse_color_option("--background", o.background);
         st.point_radius = o.point_radius;
     }
-    if (o.join == "round") st.join = LineJoin::Round;
-    else if (o.join == "miter") st.join = LineJoin::Miter;
-    else st.join = LineJoin::Bevel;
-    if (o.cap == "round") st.cap = LineCap::Round;
-    else if (o.cap == "butt") st.cap = LineCap::Butt;
-    else st.cap = LineCap::Square;
+    parse_line_join(o.join, st.join);  // the option checks only admit valid names
+    parse_line_cap(o.cap, st.cap);
     if (!o.style_file.empty() && o.background != "transparent") st.background = parse_color_option("--background", o.background);
     return st;
 }

@@ -70,11 +70,8 @@ void register_path(CLI::App& app) {
         if (!o->stroke.empty()) {
             StrokeStyle style;
             style.width = o->stroke_width;
-            style.cap = o->cap == "round" ? LineCap::Round : o->cap == "square" ? LineCap::Square : LineCap::Butt;
-            style.join = o->join == "round"        ? LineJoin::Round
-                         : o->join == "bevel"      ? LineJoin::Bevel
-                         : o->join == "miter-clip" ? LineJoin::MiterClip
-                                                   : LineJoin::Miter;
+            parse_line_cap(o->cap, style.cap);  // the option checks only admit valid names
+            parse_line_join(o->join, style.join);
             style.miter_limit = o->miter_limit;
             if (!o->dashes.empty()) {
                 std::string list = o->dashes;

@@ -327,14 +327,9 @@ public:
                     if (*l >= 0) st.stroke_style.width = *l;
                 }
             } else if (k == "stroke-linecap") {
-                if (val == "butt") st.stroke_style.cap = LineCap::Butt;
-                else if (val == "round") st.stroke_style.cap = LineCap::Round;
-                else if (val == "square") st.stroke_style.cap = LineCap::Square;
+                parse_line_cap(val, st.stroke_style.cap);
             } else if (k == "stroke-linejoin") {
-                if (val == "miter") st.stroke_style.join = LineJoin::Miter;
-                else if (val == "miter-clip") st.stroke_style.join = LineJoin::MiterClip;
-                else if (val == "round") st.stroke_style.join = LineJoin::Round;
-                else if (val == "bevel") st.stroke_style.join = LineJoin::Bevel;
+                parse_line_join(val, st.stroke_style.join);
             } else if (k == "stroke-miterlimit") {
                 if (auto n = parse_number(val); n && *n >= 1) st.stroke_style.miter_limit = *n;
             } else if (k == "stroke-dasharray") {

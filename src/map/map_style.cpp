@@ -90,19 +90,12 @@ MapStyle read_map_style(std::string_view text) {
     }
     if (o["line_join"].get(e) == simdjson::SUCCESS) {
         auto s = path.key("line_join");
-        const std::string j = string_of(e, path);
-        if (j == "round") st.join = LineJoin::Round;
-        else if (j == "miter") st.join = LineJoin::Miter;
-        else if (j == "bevel") st.join = LineJoin::Bevel;
-        else path.fail(ErrorKind::Parse, "expected round, miter or bevel");
+        if (!parse_line_join(string_of(e, path), st.join))
+            path.fail(ErrorKind::Parse, "expected miter, miter-clip, round or bevel");
     }
     if (o["line_cap"].get(e) == simdjson::SUCCESS) {
         auto s = path.key("line_cap");
-        const std::string j = string_of(e, path);
-        if (j == "round") st.cap = LineCap::Round;
-        else if (j == "butt") st.cap = LineCap::Butt;
-        else if (j == "square") st.cap = LineCap::Square;
-        else path.fail(ErrorKind::Parse, "expected round, butt or square");
+        if (!parse_line_cap(string_of(e, path), st.cap)) path.fail(ErrorKind::Parse, "expected butt, round or square");
     }
     auto ls = path.key("layers");
     simdjson::dom::array layers;

@@ -309,4 +309,21 @@ Path dash(const Path& path, std::span<const double> dashes, double offset, const
     return out;
 }
 
+bool parse_line_cap(std::string_view name, LineCap& out) {
+    if (name == "butt") out = LineCap::Butt;
+    else if (name == "round") out = LineCap::Round;
+    else if (name == "square") out = LineCap::Square;
+    else return false;
+    return true;
+}
+
+bool parse_line_join(std::string_view name, LineJoin& out) {
+    if (name == "miter") out = LineJoin::Miter;
+    else if (name == "miter-clip") out = LineJoin::MiterClip;
+    else if (name == "round") out = LineJoin::Round;
+    else if (name == "bevel") out = LineJoin::Bevel;
+    else return false;
+    return true;
+}
+
 }  // namespace casteljau
