@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "casteljau/paint.hpp"
@@ -50,6 +51,9 @@ Pixmap read_png(const std::string& path);
 // a device or FIFO (/dev/null, /dev/stdout) is written directly. Throws Error(Io) naming the path
 // and the system's reason, after removing the temporary file.
 void write_file_atomic(const std::string& path, std::span<const std::uint8_t> bytes);
+// True for the name of a temporary file of write_file_atomic (".NAME.tmp-XXXXXX"), which only a
+// process killed in the middle of a write leaves behind.
+bool is_atomic_write_temporary(std::string_view file_name);
 // Reads a whole file. Throws Error(Io) naming the path and the reason.
 std::vector<std::uint8_t> read_file(const std::string& path);
 

@@ -82,6 +82,9 @@ public:
     void write(int z, int x, int y, const std::vector<std::uint8_t>& png);
     bool exists(int z, int x, int y) const;
     std::string tile_path(int z, int x, int y) const;
+    // Removes the temporary files that writes interrupted by a kill or a crash left in the tile
+    // folders (is_atomic_write_temporary); returns how many. For --resume.
+    std::size_t remove_interrupted_writes() const;
 
 private:
     std::string dir_;

@@ -140,6 +140,7 @@ void register_tiles(CLI::App& app) {
             w.finish();
         } else {
             TileFolderWriter w(o->output);
+            if (o->resume) w.remove_interrupted_writes();
             st = render_tiles(
                 data, style, to, [&](int z, int x, int y, const std::vector<std::uint8_t>& png) { w.write(z, x, y, png); },
                 [&](int z, int x, int y) { return w.exists(z, x, y); }, progress);

@@ -350,6 +350,12 @@ Pixmap decode_png(std::span<const std::uint8_t> bytes) {
     return pixmap;
 }
 
+bool is_atomic_write_temporary(std::string_view name) {
+    constexpr std::string_view kTag = ".tmp-";
+    if (name.size() < 1 + kTag.size() + 6 || name.front() != '.') return false;
+    return name.compare(name.size() - 6 - kTag.size(), kTag.size(), kTag) == 0;
+}
+
 void write_png(const Pixmap& pixmap, const std::string& path, const PngEncodeOptions& options) {
     write_file_atomic(path, encode_png(pixmap, options));
 }

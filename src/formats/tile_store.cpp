@@ -33,6 +33,18 @@ bool TileFolderWriter::exists(int z, int x, int y) const {
     return ::stat(tile_path(z, x, y).c_str(), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0;
 }
 
+std::size_t TileFolderWriter::remove_interrupted_writes() const {
+    std::size_t removed = 0;
+    std::error_code ec;
+    std::filesystem::recursive_directory_iterator it(dir_, ec), end;
+    for (; !ec && it != end; it.increment(ec)) {
+        if (it->is_regular_file(ec) && is_atomic_write_temporary(it->path().filename().string()) &&
+            std::filesystem::remove(it->path(), ec))
+            ++removed;
+    }
+    return removed;
+}
+
 void TileFolderWriter::write(int z, int x, int y, const std::vector<std::uint8_t>& png) {
     const std::string folder = dir_ + "/" + std::to_string(z) + "/" + std::to_string(x);
     std::error_code ec;
