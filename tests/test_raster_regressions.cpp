@@ -5,6 +5,7 @@
 #include FT_FREETYPE_H
 #include FT_OUTLINE_H
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -132,4 +133,10 @@ TEST_CASE("regression: a quadratic from DBL_MAX overflowing to NaN is refused, n
     edge.move_to(0, 0).line_to(limits::kMaxCoordinate, 0).line_to(0, 10).close();
     CHECK_NOTHROW(r.fill_mask(edge, Affine{}, FillOptions{}, IRect{0, 0, 16, 16}));
     CHECK_THROWS_AS(r.fill_mask(edge, Affine::scale(2, 1), FillOptions{}, IRect{0, 0, 16, 16}), Error);
+    // A shape wholly outside the target is skipped whatever its coordinates (text pushed far away
+    // by a huge letter-spacing, say).
+    Path far;
+    far.move_to(1e300, 0).line_to(2e300, 0).line_to(1e300, 10).close();
+    const Mask none = r.fill_mask(far, Affine{}, FillOptions{}, IRect{0, 0, 16, 16});
+    CHECK(std::all_of(none.data.begin(), none.data.end(), [](std::uint8_t c) { return c == 0; }));
 }

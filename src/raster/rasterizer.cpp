@@ -160,15 +160,19 @@ void check_clip(const IRect& clip) {
                                           " pixels per side");
 }
 
-// Transformed control-point bounds; throws for non-finite input (flatten's checks) and for
-// coordinates beyond limits::kMaxCoordinate, whose differences could overflow to infinity or NaN
-// inside the flattener and the clipper.
+// Transformed control-point bounds; throws for non-finite input (flatten's checks).
 Rect transformed_bounds(const Path& path, const Affine& m, double tolerance) {
-    const Rect b = check_flatten_input(path, m, tolerance);
+    return check_flatten_input(path, m, tolerance);
+}
+
+// A shape that reaches into the target is rasterized only when its coordinates stay within
+// limits::kMaxCoordinate: beyond, differences inside the flattener and the clipper could overflow
+// to infinity or NaN. (A shape wholly outside the target is skipped before this, whatever its
+// coordinates.)
+void check_coordinate_range(const Rect& b) {
     const double far = std::max(std::max(-b.x0, b.x1), std::max(-b.y0, b.y1));
     if (far > limits::kMaxCoordinate)
         throw Error(ErrorKind::Limit, "path coordinate beyond +/-1e15 pixels after the transform");
-    return b;
 }
 
 }  // namespace
@@ -210,6 +214,7 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opts
     const double fx1 = std::ceil(std::min(b.x1, static_cast<double>(clip.x1)));
     const double fy1 = std::ceil(std::min(b.y1, static_cast<double>(clip.y1)));
     if (!(fx1 > fx0 && fy1 > fy0)) return;  // nothing of the shape inside the target
+    check_coordinate_range(b);
     const bool inside = b.x0 >= clip.x0 && b.y0 >= clip.y0 && b.x1 <= clip.x1 && b.y1 <= clip.y1;
     if ((fx1 - fx0) * (fy1 - fy0) <= static_cast<double>(kMaxStripCells)) {
         const int ox = static_cast<int>(fx0), oy = static_cast<int>(fy0);
