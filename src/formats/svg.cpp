@@ -643,6 +643,11 @@ public:
         return refs;
     }
 
+    // The elements whose filters are being built, and whether an feImage named one of them (the
+    // filter is then ignored and the element drawn unfiltered, as resvg does).
+    std::vector<pugi::xml_node> filtering;
+    bool filter_self_reference = false;
+
     svg_filter::SvgFilterEnv filter_env(const Style& st, double vw, double vh, int depth) {
         svg_filter::SvgFilterEnv env;
         env.property = [this](const pugi::xml_node& n, const std::string& k) { return own_property(n, k); };
@@ -661,16 +666,20 @@ public:
             const char* h = href(fe);
             if (*h == '#') {
                 const pugi::xml_node target = lookup(h + 1);
-                if (target && !is_active(target)) {
+                if (std::find(filtering.begin(), filtering.end(), target) != filtering.end()) filter_self_reference = true;
+                else if (target && !is_active(target)) {
                     active_refs.push_back(target);
-                    element(target, Style(), Affine::identity(), vw, vh, depth + 1);
+                    // Drawn like a `use`, placed at the subregion's origin (as resvg and Chrome do).
+                    element(target, Style(), Affine::translate(sub.x0, sub.y0), vw, vh, depth + 1);
                     active_refs.pop_back();
                 }
             } else {
                 pugi::xml_document placed;
                 pugi::xml_node img = placed.append_copy(fe);
+                // The image fills the primitive subregion (already in user units).
                 auto set = [&](const char* name, double v) {
-                    if (!img.attribute(name)) img.append_attribute(name) = v;
+                    img.remove_attribute(name);
+                    img.append_attribute(name) = v;
                 };
                 set("x", sub.x0);
                 set("y", sub.y0);
@@ -1350,19 +1359,21 @@ public:
             if (k == "mix-blend-mode") parse_blend_mode(trim(v), blend);
             if (k == "isolation") isolate = trim(v) == "isolate";
         }
-        const std::optional<std::vector<svg_filter::FilterRef>> frefs = filter_refs(child);
+        std::optional<std::vector<svg_filter::FilterRef>> frefs = filter_refs(child);
         std::vector<pugi::xml_node> filter_nodes;
         if (frefs)
             for (const svg_filter::FilterRef& r : *frefs) {
                 if (r.url.empty()) continue;
                 const pugi::xml_node f = lookup(r.url);
                 if (!f || std::string_view(f.name()) != "filter") return;  // a filter naming nothing hides the element
-                if (is_active(f)) {
-                    warn(std::string("<") + child.name() + ">: recursive filter; element not drawn");
-                    return;
-                }
                 filter_nodes.push_back(f);
             }
+        if (std::any_of(filter_nodes.begin(), filter_nodes.end(), [&](const pugi::xml_node& f) { return is_active(f); })) {
+            // Drawn inside its own filter (through feImage): drawn without the filter.
+            warn(std::string("<") + child.name() + ">: recursive filter ignored");
+            frefs.reset();
+            filter_nodes.clear();
+        }
         const bool layered = opacity < 1 || clip || mask || blend != BlendMode::Normal || isolate || frefs;
         const std::size_t first = items.size();
         if (layered) {
@@ -1376,15 +1387,27 @@ public:
         content(child, cst, cm, vw, vh, depth, layered ? 1.0 : opacity);
         active_refs.resize(active_refs.size() - filter_nodes.size());
         if (frefs) {
+            filtering.push_back(child);
+            const bool outer_self_reference = filter_self_reference;
+            filter_self_reference = false;
             auto graphs = build_filters(*frefs, items_bbox(filter_first + 1, cm), cst, vw, vh, depth);
-            if (!graphs) {
+            filtering.pop_back();
+            const bool self_reference = filter_self_reference;
+            filter_self_reference = outer_self_reference;
+            if (self_reference) {
+                warn(std::string("<") + child.name() + ">: feImage references the filtered element; filter ignored");
+                items.erase(items.begin() + static_cast<std::ptrdiff_t>(filter_first));
+                graphs.reset();
+            } else if (!graphs) {
                 items.resize(first);
                 return;
             }
-            Item end = layer_item(Item::EndFilter, 1);
-            end.transform = cm;
-            end.filters = std::make_shared<const std::vector<filter::FilterGraph>>(std::move(*graphs));
-            items.push_back(std::move(end));
+            if (graphs) {
+                Item end = layer_item(Item::EndFilter, 1);
+                end.transform = cm;
+                end.filters = std::make_shared<const std::vector<filter::FilterGraph>>(std::move(*graphs));
+                items.push_back(std::move(end));
+            }
         }
         if (layered) {
             const std::optional<Rect> box = items_bbox(first + 1, cm);

@@ -508,13 +508,10 @@ std::optional<std::vector<FilterRef>> parse_filter_property(std::string_view val
 std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std::optional<Rect>& bbox, const SvgFilterEnv& env) {
     using P = filter::Primitive;
     filter::FilterGraph g;
-    // The region of a filter function: the default objectBoundingBox region, or the viewport for
-    // an element without a bounding box.
-    if (bbox && bbox->width() > 0 && bbox->height() > 0)
-        g.region = Rect::from_xywh(bbox->x0 - 0.1 * bbox->width(), bbox->y0 - 0.1 * bbox->height(), 1.2 * bbox->width(),
-                                   1.2 * bbox->height());
-    else
-        return std::nullopt;
+    // The region of a filter function: -10% .. 110% of the viewport in user space (as resvg
+    // does), so that shadows and blurs are not cut at the element's bounding box.
+    (void)bbox;
+    g.region = Rect::from_xywh(-0.1 * env.vw, -0.1 * env.vh, 1.2 * env.vw, 1.2 * env.vh);
     P p;
     p.linear_rgb = false;
     p.subregion = g.region;
