@@ -33,6 +33,7 @@ inline constexpr long long kMaxFilterPixels = 1LL << 24;   // pixels of one filt
 inline constexpr std::size_t kMaxFilterPrimitives = 1000;  // primitives in one filter
 inline constexpr int kMaxConvolveOrder = 64;               // feConvolveMatrix order per axis
 inline constexpr double kMaxFilterDeviation = 1000;        // blur standard deviation in device pixels (larger is clamped)
+inline constexpr long long kMaxConvolveWork = 1LL << 31;   // feConvolveMatrix kernel taps x region pixels
 }  // namespace limits
 
 namespace filter {
@@ -97,7 +98,8 @@ struct Primitive {
     // user -> device transform (the primitive's own placement already applied by the builder).
     std::function<void(Pixmap&, const Affine&)> draw;
     // Turbulence (the Perlin noise of the SVG specification): base frequency, octaves, seed,
-    // stitchTiles, fractalNoise (true) or turbulence.
+    // stitchTiles, fractalNoise (true) or turbulence. Octaves after the tenth are not computed
+    // (together they move no 8-bit value by more than 1/2).
     double freq_x = 0, freq_y = 0;
     int octaves = 1;
     double seed = 0;

@@ -143,6 +143,11 @@ Pixmap apply_filter(const FilterGraph& graph, const Affine& to_device, const Pix
                     p.kernel.size() != static_cast<std::size_t>(p.order_x) * static_cast<std::size_t>(p.order_y))
                     throw Error(ErrorKind::InvalidData, "feConvolveMatrix kernel must be order x order values with order 1.." +
                                                             std::to_string(limits::kMaxConvolveOrder));
+                if (static_cast<long long>(p.order_x) * p.order_y * ctx.w * ctx.h > limits::kMaxConvolveWork)
+                    throw Error(ErrorKind::Limit, "feConvolveMatrix of " + std::to_string(p.order_x) + " x " + std::to_string(p.order_y) +
+                                                      " over " + std::to_string(ctx.w) + " x " + std::to_string(ctx.h) +
+                                                      " pixels exceeds the limit of " + std::to_string(limits::kMaxConvolveWork) +
+                                                      " kernel taps");
                 res = detail::convolve(input(0), p);
                 break;
             }

@@ -14,7 +14,7 @@ constexpr int kB = 0x100;
 constexpr int kMask = 0xff;
 constexpr int kPerlinN = 0x1000;
 constexpr long kRandM = 2147483647, kRandA = 16807, kRandQ = 127773, kRandR = 2836;
-constexpr int kMaxOctaves = 32;  // further octaves add less than 2^-32 each
+constexpr int kMaxOctaves = 10;  // octave k adds at most 2^-k: the ones after the tenth move no 8-bit value by more than 1/2
 
 struct Noise {
     int lattice[kB + kB + 2];

@@ -409,7 +409,18 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
         if (name.substr(0, 2) != "fe") continue;
         filter::Primitive p;
         p.linear_rgb = env.inherited(n, "color-interpolation-filters") != "sRGB";
-        // Subregion: x, y, width, height default to the filter region.
+        // Subregion: x, y, width, height default to the filter region, except for feOffset, whose
+        // default is the subregion of its input when that is an earlier result (as resvg does; the
+        // union of the input subregions of the specification, for one input), so that an offset
+        // tile stays a tile for feTile.
+        Rect base = g.region;
+        if (name == "feOffset" && !g.primitives.empty()) {
+            const std::string_view in = trim(n.attribute("in").value());
+            const auto it = results.find(in);
+            if (in.empty()) base = g.primitives.back().subregion;
+            else if (it != results.end()) base = g.primitives[static_cast<std::size_t>(it->second)].subregion;
+            else if (in != "SourceGraphic" && in != "SourceAlpha") base = g.primitives.back().subregion;
+        }
         auto sub = [&](const char* a, double def, bool horizontal, bool is_pos) -> std::optional<double> {
             const pugi::xml_attribute at = n.attribute(a);
             if (!at) return def;
@@ -421,8 +432,8 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
             auto l = env.length(at.value(), horizontal ? env.vw : env.vh);
             return l ? *l : def;
         };
-        const double sx = *sub("x", g.region.x0, true, true), sy = *sub("y", g.region.y0, false, true);
-        const double sw = *sub("width", g.region.width(), true, false), sh = *sub("height", g.region.height(), false, false);
+        const double sx = *sub("x", base.x0, true, true), sy = *sub("y", base.y0, false, true);
+        const double sw = *sub("width", base.width(), true, false), sh = *sub("height", base.height(), false, false);
         if (!(sw > 0) || !(sh > 0)) return std::nullopt;
         p.subregion = Rect::from_xywh(sx, sy, sw, sh);
         auto input = [&](const char* a) {
