@@ -85,13 +85,14 @@ TEST_CASE("svg filter: fractal noise is one half at the lattice points, turbulen
     CHECK(nonzero > 300);
 }
 
-TEST_CASE("svg filter: dilating a pixel gives a square, eroding it removes it, an identity kernel keeps it", "[filter][svg]") {
+TEST_CASE("svg filter: dilating a pixel gives a 2r square, eroding it removes it, an identity kernel keeps it", "[filter][svg]") {
     const std::string fu = "filterUnits='userSpaceOnUse' x='0' y='0' width='20' height='20'";
     const std::string dot = "<rect x='10' y='10' width='1' height='1' fill='black' filter='url(#f)'/>";
     const Pixmap dil = render("<filter id='f' " + fu + "><feMorphology operator='dilate' radius='2'/></filter>" + dot);
-    CHECK(dil.pixel(8, 8).a == 255);
+    // The window of radius r covers x - r .. x + r - 1 (resvg's): the pixel at 10 reaches 9 .. 12.
+    CHECK(dil.pixel(9, 9).a == 255);
     CHECK(dil.pixel(12, 12).a == 255);
-    CHECK(dil.pixel(7, 10).a == 0);
+    CHECK(dil.pixel(8, 10).a == 0);
     CHECK(dil.pixel(13, 10).a == 0);
     const Pixmap ero = render("<filter id='f' " + fu + "><feMorphology radius='1'/></filter>" + dot);
     CHECK(ero.pixel(10, 10).a == 0);

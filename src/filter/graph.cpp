@@ -113,9 +113,17 @@ Pixmap apply_filter(const FilterGraph& graph, const Affine& to_device, const Pix
         };
         const IRect sub = device_rect(ctx.to_region, p.subregion, ctx.w, ctx.h);
         Img res;
+        // The rectangle feTile repeats when it reads this result: its subregion, except that
+        // feOffset passes on its input's (as resvg does), so an offset tile stays a tile.
+        std::optional<IRect> tile_sub;
         switch (p.op) {
             case Primitive::Flood: res = flood(ctx.w, ctx.h, p.color, p.linear_rgb); break;
-            case Primitive::Offset: res = detail::offset(input(0), p.dx * ctx.sx, p.dy * ctx.sy); break;
+            case Primitive::Offset: {
+                const Img in = input(0);
+                res = detail::offset(in, p.dx * ctx.sx, p.dy * ctx.sy);
+                tile_sub = in.sub;
+                break;
+            }
             case Primitive::Merge: {
                 res = Img(ctx.w, ctx.h, p.linear_rgb);
                 for (std::size_t k = 0; k < p.inputs.size(); ++k) res = detail::composite(input(k), res, CompositeOp::Over, 0, 0, 0, 0);
@@ -176,6 +184,7 @@ Pixmap apply_filter(const FilterGraph& graph, const Affine& to_device, const Pix
             case Primitive::SpecularLighting: res = detail::lighting(input(0), ctx, p, p.linear_rgb); break;
         }
         clear_outside(res, sub);
+        if (tile_sub) res.sub = *tile_sub;
         results.push_back(std::move(res));
     }
     Img& last = results.back();

@@ -14,7 +14,7 @@ namespace casteljau::filter::detail {
 struct Img {
     int w = 0, h = 0;
     bool linear = false;  // colour space of the values
-    IRect sub;            // the subregion the result was clipped to (region-relative)
+    IRect sub;            // the rectangle feTile repeats (region-relative): the subregion, or for feOffset its input's
     std::vector<float> px;
 
     Img() = default;

@@ -1,5 +1,7 @@
 // Filter stage: feMorphology. Erode (minimum) or dilate (maximum) of each premultiplied channel
-// over the (2 rx + 1) x (2 ry + 1) window, separably, with pixels outside the region transparent.
+// over a window of 2 rx x 2 ry pixels, columns x - rx .. x + rx - 1 and rows likewise (resvg's
+// window, one pixel narrower than the symmetric 2 r + 1), separably, with pixels outside the
+// region transparent.
 // Each line uses the van Herk / Gil-Werman scheme (block prefix and suffix extrema), so the cost
 // per pixel does not grow with the radius.
 #include "filter/image.hpp"
@@ -8,11 +10,11 @@ namespace casteljau::filter::detail {
 
 namespace {
 
-// Replaces line[i] (n values, `stride` apart) by the extremum over [i - r, i + r].
+// Replaces line[i] (n values, `stride` apart) by the extremum over [i - r, i + r - 1].
 void extremum_line(float* line, std::size_t stride, int n, int r, bool dilate, std::vector<float>& ext,
                    std::vector<float>& g, std::vector<float>& h) {
-    const int k = 2 * r + 1;
-    const int len = n + 2 * r;
+    const int k = 2 * r;
+    const int len = n + 2 * r - 1;
     const int blocks = (len + k - 1) / k;
     const std::size_t total = static_cast<std::size_t>(blocks) * static_cast<std::size_t>(k);
     ext.assign(total, 0.0f);
@@ -27,10 +29,10 @@ void extremum_line(float* line, std::size_t stride, int n, int r, bool dilate, s
         h[last] = ext[last];
         for (std::size_t i = last; i > b0; --i) h[i - 1] = pick(h[i], ext[i - 1]);
     }
-    // Window [i, i + 2r] of ext (centred on line pixel i): h at its start, g at its end.
+    // Window [i, i + 2r - 1] of ext (line pixels i - r .. i + r - 1): h at its start, g at its end.
     for (int i = 0; i < n; ++i)
         line[static_cast<std::size_t>(i) * stride] =
-            pick(h[static_cast<std::size_t>(i)], g[static_cast<std::size_t>(i + 2 * r)]);
+            pick(h[static_cast<std::size_t>(i)], g[static_cast<std::size_t>(i + 2 * r - 1)]);
 }
 
 }  // namespace

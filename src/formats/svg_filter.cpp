@@ -266,8 +266,9 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
     } else if (name == "feMorphology") {
         p.op = P::Morphology;
         p.dilate = trim(n.attribute("operator").value()) == "dilate";
-        auto r = n.attribute("radius") ? number_pair(n, "radius") : std::optional<std::pair<double, double>>{std::pair{0.0, 0.0}};
-        if (!r) r = std::pair{0.0, 0.0};
+        // A missing, malformed, zero or negative radius is 1 (as resvg does).
+        auto r = number_pair(n, "radius");
+        if (!r || !(r->first > 0) || !(r->second > 0)) r = std::pair{1.0, 1.0};
         p.rx = u.lx(r->first);
         p.ry = u.ly(r->second);
     } else if (name == "feConvolveMatrix") {
@@ -409,18 +410,8 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
         if (name.substr(0, 2) != "fe") continue;
         filter::Primitive p;
         p.linear_rgb = env.inherited(n, "color-interpolation-filters") != "sRGB";
-        // Subregion: x, y, width, height default to the filter region, except for feOffset, whose
-        // default is the subregion of its input when that is an earlier result (as resvg does; the
-        // union of the input subregions of the specification, for one input), so that an offset
-        // tile stays a tile for feTile.
-        Rect base = g.region;
-        if (name == "feOffset" && !g.primitives.empty()) {
-            const std::string_view in = trim(n.attribute("in").value());
-            const auto it = results.find(in);
-            if (in.empty()) base = g.primitives.back().subregion;
-            else if (it != results.end()) base = g.primitives[static_cast<std::size_t>(it->second)].subregion;
-            else if (in != "SourceGraphic" && in != "SourceAlpha") base = g.primitives.back().subregion;
-        }
+        // Subregion: x, y, width, height default to the filter region.
+        const Rect base = g.region;
         auto sub = [&](const char* a, double def, bool horizontal, bool is_pos) -> std::optional<double> {
             const pugi::xml_attribute at = n.attribute(a);
             if (!at) return def;
