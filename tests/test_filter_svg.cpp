@@ -63,8 +63,8 @@ TEST_CASE("svg filter: flat diffuse and specular lighting give kd and ks times t
     const Pixmap s = render("<filter id='f' " + fu + "><feSpecularLighting specularConstant='0.5' specularExponent='7'>"
                             "<feDistantLight elevation='90'/></feSpecularLighting></filter>"
                             "<rect width='20' height='20' filter='url(#f)'/>");
-    // H = N: ks x 1^n x white = 0.5, alpha the largest channel, premultiplied 0.25.
-    CHECK(s.pixel(10, 10) == PremulPixel{64, 64, 64, 128});
+    // H = N: ks x 1^n x white = 0.5 (premultiplied), alpha the largest channel.
+    CHECK(s.pixel(10, 10) == PremulPixel{128, 128, 128, 128});
 }
 
 TEST_CASE("svg filter: fractal noise is one half at the lattice points, turbulence zero", "[filter][svg]") {

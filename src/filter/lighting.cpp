@@ -5,7 +5,7 @@
 // to device pixels, z scaled by the mean device scale); a spot light scales the light colour by
 // pow(-L.S, specularExponent) inside its cone. Diffuse: kd N.L colour, opaque. Specular:
 // ks pow(N.H, specularExponent) colour with H = L + (0, 0, 1) normalised, alpha the largest
-// channel, premultiplied.
+// channel, the colour taken as premultiplied.
 #include <cmath>
 
 #include "filter/image.hpp"
@@ -75,9 +75,10 @@ Img lighting(const Img& in, const Context& ctx, const Primitive& p, bool linear)
                 const double f = p.specular_constant * std::pow(std::max(0.0, dot(n, hv)), p.specular_exponent);
                 float c[3];
                 for (int k = 0; k < 3; ++k) c[k] = clamp01(static_cast<float>(f * lc[k]));
-                const float a = std::max({c[0], c[1], c[2]});
-                for (int k = 0; k < 3; ++k) o[k] = c[k] * a;
-                o[3] = a;
+                // The colour is already premultiplied by the largest channel (as resvg and Chrome
+                // treat it): no channel exceeds alpha.
+                for (int k = 0; k < 3; ++k) o[k] = c[k];
+                o[3] = std::max({c[0], c[1], c[2]});
             }
         }
     }
