@@ -130,8 +130,13 @@ TEST_CASE("svg filter: CSS filter functions opacity, invert, grayscale and drop-
     const Pixmap s = render("<rect width='10' height='10' fill='#ff0000' filter='drop-shadow(4px 4px #0000ff)'/>");
     CHECK(s.pixel(5, 5) == PremulPixel{255, 0, 0, 255});
     CHECK(s.pixel(12, 12) == PremulPixel{0, 0, 255, 255});
-    // An unknown function makes the whole list invalid: the element is not drawn.
-    CHECK(render("<rect width='20' height='20' filter='grayscale(1) wobble(3)'/>").pixel(10, 10) == kNone);
+    // An unknown function makes the whole list invalid: it is ignored and the element drawn unfiltered.
+    CHECK(render("<rect width='20' height='20' fill='#00ff00' filter='grayscale(1) wobble(3)'/>").pixel(10, 10) ==
+          PremulPixel{0, 255, 0, 255});
+    // A url naming nothing is skipped in a list, and hides the element when alone.
+    CHECK(render("<rect width='20' height='20' fill='#ff0000' filter='url(#none) opacity(0.5)'/>").pixel(10, 10) ==
+          PremulPixel{128, 0, 0, 128});
+    CHECK(render("<rect width='20' height='20' filter='url(#none)'/>").pixel(10, 10) == kNone);
 }
 
 TEST_CASE("svg filter: the filter runs before opacity, clip and mask", "[filter][svg]") {

@@ -1361,13 +1361,33 @@ public:
         }
         std::optional<std::vector<svg_filter::FilterRef>> frefs = filter_refs(child);
         std::vector<pugi::xml_node> filter_nodes;
-        if (frefs)
-            for (const svg_filter::FilterRef& r : *frefs) {
-                if (r.url.empty()) continue;
-                const pugi::xml_node f = lookup(r.url);
-                if (!f || std::string_view(f.name()) != "filter") return;  // a filter naming nothing hides the element
-                filter_nodes.push_back(f);
+        if (frefs) {
+            // An invalid filter function makes the whole property invalid (ignored); a url naming
+            // no filter hides the element when it stands alone and is skipped in a list (as resvg).
+            const svg_filter::SvgFilterEnv env = filter_env(cst, vw, vh, depth);
+            const bool bad_function = std::any_of(frefs->begin(), frefs->end(), [&](const svg_filter::FilterRef& r) {
+                return r.url.empty() && !svg_filter::build_function(r, std::nullopt, env);
+            });
+            if (bad_function) {
+                warn(std::string("<") + child.name() + ">: invalid filter function; filter ignored");
+                frefs.reset();
             }
+        }
+        if (frefs) {
+            std::vector<svg_filter::FilterRef> kept;
+            for (const svg_filter::FilterRef& r : *frefs) {
+                if (!r.url.empty()) {
+                    const pugi::xml_node f = lookup(r.url);
+                    if (!f || std::string_view(f.name()) != "filter") {
+                        if (frefs->size() == 1) return;
+                        continue;
+                    }
+                    filter_nodes.push_back(f);
+                }
+                kept.push_back(r);
+            }
+            *frefs = std::move(kept);
+        }
         if (std::any_of(filter_nodes.begin(), filter_nodes.end(), [&](const pugi::xml_node& f) { return is_active(f); })) {
             // Drawn inside its own filter (through feImage): drawn without the filter.
             warn(std::string("<") + child.name() + ">: recursive filter ignored");
