@@ -85,10 +85,17 @@ std::optional<double> fraction(std::string_view s) {
 Color flood_color(const pugi::xml_node& n, const SvgFilterEnv& env, const char* color_name, const char* opacity_name,
                   Color fallback) {
     Color c = fallback;
-    const std::string cv = env.property(n, color_name);
+    std::string cv = env.property(n, color_name);
+    // `inherit` (not an inherited property otherwise): the parent's value.
+    if (cv.empty() && trim(n.attribute(color_name).value()) == "inherit") cv = env.property(n.parent(), color_name);
     if (!cv.empty()) {
         try {
-            c = cv == "currentColor" ? env.current_color : env.color(cv);
+            if (cv == "currentColor") {
+                const std::string current = env.inherited(n, "color");
+                c = current.empty() || current == "currentColor" ? env.current_color : env.color(current);
+            } else {
+                c = env.color(cv);
+            }
         } catch (const Error&) {
         }
     }
@@ -340,7 +347,6 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
         p.specular_constant = number_attr(n, "specularConstant", 1);
         p.specular_exponent = number_attr(n, "specularExponent", 1);
         if (p.op == P::SpecularLighting && !(p.specular_exponent >= 1 && p.specular_exponent <= 128)) return false;
-        if (p.diffuse_constant < 0 || p.specular_constant < 0) return false;
         p.color = flood_color(n, env, "lighting-color", "lighting-opacity", Color::white());
         if (!read_light(n, u, p.light)) return false;
     } else {
