@@ -497,6 +497,7 @@ std::optional<std::vector<FilterRef>> parse_filter_property(std::string_view val
             for (char c : inner) {
                 if (c == '(') ++d;
                 if (c == ')') --d;
+                if (d == 0 && c == ',') r.commas = true;
                 if (d == 0 && (std::isspace(static_cast<unsigned char>(c)) || c == ',')) {
                     if (!cur.empty()) r.args.push_back(cur);
                     cur.clear();
@@ -524,6 +525,7 @@ std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std
     p.linear_rgb = false;
     p.subregion = g.region;
     const std::string& name = fn.function;
+    if (fn.commas) return std::nullopt;
     // An amount: a number or a percentage; `def` when absent.
     auto amount = [&](double def) -> std::optional<double> {
         if (fn.args.empty()) return def;
@@ -584,8 +586,8 @@ std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std
             auto v = number(a.substr(0, k));
             const std::string_view unit = a.substr(k);
             if (!v) return std::nullopt;
+            // A unitless angle other than 0 is invalid CSS.
             if (unit == "deg" || (unit.empty() && *v == 0)) deg = *v;
-            else if (unit.empty()) deg = *v;
             else if (unit == "grad") deg = *v * 0.9;
             else if (unit == "rad") deg = *v * 180 / kPi;
             else if (unit == "turn") deg = *v * 360;

@@ -38,6 +38,7 @@ struct FilterRef {
     std::string url;                // the id, for url()
     std::string function;           // the function name otherwise
     std::vector<std::string> args;  // its arguments, split at top-level spaces and commas
+    bool commas = false;            // a top-level comma separated them (invalid in every filter function)
 };
 
 // Splits a `filter` value; nullopt when it is malformed (the property is then ignored).
