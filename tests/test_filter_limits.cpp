@@ -14,14 +14,12 @@
 #include "casteljau/filter.hpp"
 #include "casteljau/svg.hpp"
 #include "cli_util.hpp"
+#include "svg_test_util.hpp"
 
 using namespace casteljau;
 
 namespace {
-std::string svg(const std::string& body, int w = 40, int h = 40) {
-    return "<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' width='" + std::to_string(w) +
-           "' height='" + std::to_string(h) + "'>" + body + "</svg>";
-}
+std::string svg(const std::string& body, int w = 40, int h = 40) { return casteljau::test::svg_text(body, w, h); }
 Pixmap render(const std::string& body, int w = 40, int h = 40) { return SvgDocument::parse(svg(body, w, h)).render(); }
 }  // namespace
 

@@ -6,18 +6,12 @@
 namespace casteljau::filter::detail {
 
 void color_matrix(Img& img, const std::array<double, 20>& m) {
-    float* p = img.px.data();
-    for (std::size_t i = 0, n = img.count(); i < n; ++i, p += 4) {
-        const double a = p[3];
-        double c[4] = {0, 0, 0, a};
-        if (a > 0)
-            for (int k = 0; k < 3; ++k) c[k] = std::min(1.0, p[k] / a);
+    for_each_straight(img, [&m](double c[4]) {
         double o[4];
         for (int r = 0; r < 4; ++r)
-            o[r] = std::clamp(m[r * 5] * c[0] + m[r * 5 + 1] * c[1] + m[r * 5 + 2] * c[2] + m[r * 5 + 3] * c[3] + m[r * 5 + 4], 0.0, 1.0);
-        for (int k = 0; k < 3; ++k) p[k] = static_cast<float>(o[k] * o[3]);
-        p[3] = static_cast<float>(o[3]);
-    }
+            o[r] = m[r * 5] * c[0] + m[r * 5 + 1] * c[1] + m[r * 5 + 2] * c[2] + m[r * 5 + 3] * c[3] + m[r * 5 + 4];
+        std::copy(o, o + 4, c);
+    });
 }
 
 }  // namespace casteljau::filter::detail

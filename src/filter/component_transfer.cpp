@@ -31,18 +31,10 @@ double TransferFunction::apply(double c) const {
 namespace detail {
 
 void component_transfer(Img& img, const std::array<TransferFunction, 4>& f) {
-    float* p = img.px.data();
-    for (std::size_t i = 0, n = img.count(); i < n; ++i, p += 4) {
-        const double a = p[3];
-        double c[4] = {0, 0, 0, a};
-        if (a > 0)
-            for (int k = 0; k < 3; ++k) c[k] = std::min(1.0, p[k] / a);
-        for (int k = 0; k < 4; ++k)
-            if (f[static_cast<std::size_t>(k)].type != TransferFunction::Identity)
-                c[k] = std::clamp(f[static_cast<std::size_t>(k)].apply(c[k]), 0.0, 1.0);
-        for (int k = 0; k < 3; ++k) p[k] = static_cast<float>(c[k] * c[3]);
-        p[3] = static_cast<float>(c[3]);
-    }
+    for_each_straight(img, [&f](double c[4]) {
+        for (std::size_t k = 0; k < 4; ++k)
+            if (f[k].type != TransferFunction::Identity) c[k] = f[k].apply(c[k]);
+    });
 }
 
 }  // namespace detail

@@ -5,12 +5,21 @@
 
 namespace casteljau::filter::detail {
 
-Img composite(const Img& a, const Img& b, CompositeOp op, double k1, double k2, double k3, double k4) {
+namespace {
+// out = f(a pixel, b pixel, out pixel) over the image, out in a's colour space.
+template <class F>
+Img combine(const Img& a, const Img& b, F&& f) {
     Img out(a.w, a.h, a.linear);
     const float* s = a.px.data();
     const float* d = b.px.data();
     float* o = out.px.data();
-    for (std::size_t i = 0, n = a.count(); i < n; ++i, s += 4, d += 4, o += 4) {
+    for (std::size_t i = 0, n = a.count(); i < n; ++i, s += 4, d += 4, o += 4) f(s, d, o);
+    return out;
+}
+}  // namespace
+
+Img composite(const Img& a, const Img& b, CompositeOp op, double k1, double k2, double k3, double k4) {
+    return combine(a, b, [&](const float* s, const float* d, float* o) {
         const float as = s[3], ab = d[3];
         switch (op) {
             case CompositeOp::Over: for (int k = 0; k < 4; ++k) o[k] = s[k] + d[k] * (1 - as); break;
@@ -26,16 +35,11 @@ Img composite(const Img& a, const Img& b, CompositeOp op, double k1, double k2, 
                 break;
             }
         }
-    }
-    return out;
+    });
 }
 
 Img blend(const Img& a, const Img& b, BlendMode mode) {
-    Img out(a.w, a.h, a.linear);
-    const float* s = a.px.data();
-    const float* d = b.px.data();
-    float* o = out.px.data();
-    for (std::size_t i = 0, n = a.count(); i < n; ++i, s += 4, d += 4, o += 4) {
+    return combine(a, b, [mode](const float* s, const float* d, float* o) {
         const float as = s[3], ab = d[3];
         float cs[3] = {0, 0, 0}, cb[3] = {0, 0, 0}, bl[3];
         for (int k = 0; k < 3; ++k) {
@@ -45,8 +49,7 @@ Img blend(const Img& a, const Img& b, BlendMode mode) {
         blend_colors(mode, cb, cs, bl);
         for (int k = 0; k < 3; ++k) o[k] = s[k] * (1 - ab) + d[k] * (1 - as) + as * ab * clamp01(bl[k]);
         o[3] = as + ab - as * ab;
-    }
-    return out;
+    });
 }
 
 }  // namespace casteljau::filter::detail

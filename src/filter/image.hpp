@@ -45,6 +45,23 @@ inline float linear_to_srgb(float c) {
     return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
+// Calls f(c) for every pixel with its straight (unpremultiplied) RGBA in [0, 1] as double c[4],
+// then clamps what f left there to [0, 1] and stores it premultiplied.
+template <class F>
+void for_each_straight(Img& img, F&& f) {
+    float* p = img.px.data();
+    for (std::size_t i = 0, n = img.count(); i < n; ++i, p += 4) {
+        const double a = p[3];
+        double c[4] = {0, 0, 0, a};
+        if (a > 0)
+            for (int k = 0; k < 3; ++k) c[k] = std::min(1.0, p[k] / a);
+        f(c);
+        for (double& v : c) v = std::clamp(v, 0.0, 1.0);
+        for (int k = 0; k < 3; ++k) p[k] = static_cast<float>(c[k] * c[3]);
+        p[3] = static_cast<float>(c[3]);
+    }
+}
+
 // Converts `img` to linearRGB (linear = true) or sRGB in place.
 void convert(Img& img, bool linear);
 // Gaussian blur with standard deviations in device pixels (0 on an axis leaves it unblurred).

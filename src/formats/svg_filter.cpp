@@ -540,20 +540,16 @@ std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std
         if (!a) return std::nullopt;
         double v = *a;
         if (name != "saturate" && name != "brightness" && name != "contrast") v = std::min(v, 1.0);
-        if (name == "grayscale") {
+        if (name == "grayscale" || name == "sepia") {
+            // The full effect's 3x3 colour matrix T, applied in proportion v: T + (1 - v) (I - T).
+            static constexpr double kGray[9] = {0.2126, 0.7152, 0.0722, 0.2126, 0.7152, 0.0722, 0.2126, 0.7152, 0.0722};
+            static constexpr double kSepia[9] = {0.393, 0.769, 0.189, 0.349, 0.686, 0.168, 0.272, 0.534, 0.131};
+            const double* t = name == "grayscale" ? kGray : kSepia;
             p.op = P::ColorMatrix;
-            const double s = 1 - v;
-            p.matrix = {0.2126 + 0.7874 * s, 0.7152 - 0.7152 * s, 0.0722 - 0.0722 * s, 0, 0,
-                        0.2126 - 0.2126 * s, 0.7152 + 0.2848 * s, 0.0722 - 0.0722 * s, 0, 0,
-                        0.2126 - 0.2126 * s, 0.7152 - 0.7152 * s, 0.0722 + 0.9278 * s, 0, 0,
-                        0, 0, 0, 1, 0};
-        } else if (name == "sepia") {
-            p.op = P::ColorMatrix;
-            const double s = 1 - v;
-            p.matrix = {0.393 + 0.607 * s, 0.769 - 0.769 * s, 0.189 - 0.189 * s, 0, 0,
-                        0.349 - 0.349 * s, 0.686 + 0.314 * s, 0.168 - 0.168 * s, 0, 0,
-                        0.272 - 0.272 * s, 0.534 - 0.534 * s, 0.131 + 0.869 * s, 0, 0,
-                        0, 0, 0, 1, 0};
+            p.matrix = identity_matrix();
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c)
+                    p.matrix[static_cast<std::size_t>(r * 5 + c)] = t[r * 3 + c] + (1 - v) * ((r == c ? 1.0 : 0.0) - t[r * 3 + c]);
         } else if (name == "saturate") {
             p.op = P::ColorMatrix;
             p.matrix = saturate_matrix(v);
