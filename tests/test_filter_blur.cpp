@@ -97,3 +97,34 @@ TEST_CASE("filter blur: edgeMode none fades at the region border, duplicate keep
     CHECK(wrap.pixel(0, 0).a == 255);
     CHECK(none.pixel(15, 15).a == 255);
 }
+
+TEST_CASE("filter blur: a large region blurred by several threads equals its lines blurred alone", "[filter][blur]") {
+    // 600 x 500 pixels is above the threading threshold (2^18); one row or one column is far below.
+    const int w = 600, h = 500;
+    Pixmap src(w, h);
+    std::uint32_t seed = 12345;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            seed = seed * 1664525u + 1013904223u;
+            const std::uint8_t a = static_cast<std::uint8_t>(seed >> 24);
+            src.set_pixel(x, y, {static_cast<std::uint8_t>(a / 2), static_cast<std::uint8_t>(a / 3), a, a});
+        }
+    for (int axis = 0; axis < 2; ++axis) {
+        const double sx = axis == 0 ? 14 : 0, sy = axis == 0 ? 0 : 14;
+        const Pixmap all = filter::apply_filter(blur_graph(w, h, sx, sy), Affine::identity(), src);
+        int mismatches = 0;
+        for (int k : {0, 123, 299, 499}) {
+            // Line k alone: a row (horizontal blur) or a column (vertical blur).
+            const int lw = axis == 0 ? w : 1, lh = axis == 0 ? 1 : h;
+            Pixmap line(lw, lh);
+            for (int i = 0; i < (axis == 0 ? w : h); ++i)
+                line.set_pixel(axis == 0 ? i : 0, axis == 0 ? 0 : i, axis == 0 ? src.pixel(i, k) : src.pixel(k, i));
+            const Pixmap one = filter::apply_filter(blur_graph(lw, lh, sx, sy), Affine::identity(), line);
+            for (int i = 0; i < (axis == 0 ? w : h); ++i)
+                mismatches += !(one.pixel(axis == 0 ? i : 0, axis == 0 ? 0 : i) == (axis == 0 ? all.pixel(i, k) : all.pixel(k, i)));
+        }
+        INFO("axis " << axis);
+        CHECK(mismatches == 0);
+        CHECK(!(all.pixel(300, 250) == src.pixel(300, 250)));  // blurred at all
+    }
+}
