@@ -285,7 +285,9 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
             order->second != std::floor(order->second))
             return false;
         if (order->first > limits::kMaxConvolveOrder || order->second > limits::kMaxConvolveOrder)
-            throw Error(ErrorKind::Limit, "feConvolveMatrix order above " + std::to_string(limits::kMaxConvolveOrder));
+            throw Error(ErrorKind::Limit, "feConvolveMatrix order " + std::to_string(static_cast<long long>(std::min(order->first, 1e18))) + " x " +
+                                              std::to_string(static_cast<long long>(std::min(order->second, 1e18))) + " exceeds the limit of " +
+                                              std::to_string(limits::kMaxConvolveOrder) + " x " + std::to_string(limits::kMaxConvolveOrder));
         p.order_x = static_cast<int>(order->first);
         p.order_y = static_cast<int>(order->second);
         auto k = numbers(n.attribute("kernelMatrix").value());
