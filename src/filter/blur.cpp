@@ -12,6 +12,7 @@
 #include <cmath>
 #include <exception>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "filter/image.hpp"
@@ -41,31 +42,37 @@ void pad_line(const float* line, std::size_t stride, int n, int pad, EdgeMode ed
 
 // One box pass of width d over `src` into `dst` (both len pixels): dst[i] is the mean of
 // src[i - left .. i - left + d), or with end weight `alpha` > 0 the weighted mean that also takes
-// alpha x src[i - left - 1] and alpha x src[i - left + d].
-void box_pass(const std::vector<float>& src, std::vector<float>& dst, int len, int d, int left, double alpha = 0) {
-    dst.assign(src.size(), 0.0f);
+// alpha x src[i - left - 1] and alpha x src[i - left + d]. `src` is zero outside [lo, hi) (the
+// padding of edgeMode none), so only the pixels that can be non-zero are computed; returns that
+// range of dst.
+std::pair<int, int> box_pass(const float* src, float* dst, int len, int d, int left, double alpha, int lo, int hi) {
+    std::fill(dst, dst + static_cast<std::size_t>(len) * 4, 0.0f);
+    const int ext = alpha > 0 ? 1 : 0;
+    const int nlo = std::max(0, lo + left - d + 1 - ext), nhi = std::min(len, hi + left + ext);
+    auto at = [&](int j) { return src + static_cast<std::size_t>(j) * 4; };
+    auto inside = [&](int j) { return j >= lo && j < hi; };
     double sum[4] = {0, 0, 0, 0};
-    // Window for i is [i - left, i - left + d); start with i = 0.
-    for (int j = -left; j < -left + d; ++j)
-        if (j >= 0 && j < len)
-            for (int k = 0; k < 4; ++k) sum[k] += src[static_cast<std::size_t>(j) * 4 + k];
+    for (int j = std::max(lo, nlo - left); j < std::min(hi, nlo - left + d); ++j)
+        for (int k = 0; k < 4; ++k) sum[k] += at(j)[k];
     const double inv = 1.0 / (d + 2 * alpha);
-    for (int i = 0; i < len; ++i) {
-        double ends[4] = {0, 0, 0, 0};
-        if (alpha > 0) {
+    for (int i = nlo; i < nhi; ++i) {
+        float* o = dst + static_cast<std::size_t>(i) * 4;
+        if (ext) {
             const int l = i - left - 1, r = i - left + d;
-            if (l >= 0 && l < len)
-                for (int k = 0; k < 4; ++k) ends[k] += src[static_cast<std::size_t>(l) * 4 + k];
-            if (r >= 0 && r < len)
-                for (int k = 0; k < 4; ++k) ends[k] += src[static_cast<std::size_t>(r) * 4 + k];
+            const float* pl = inside(l) ? at(l) : nullptr;
+            const float* pr = inside(r) ? at(r) : nullptr;
+            for (int k = 0; k < 4; ++k)
+                o[k] = static_cast<float>((sum[k] + alpha * ((pl ? pl[k] : 0.0f) + (pr ? pr[k] : 0.0f))) * inv);
+        } else {
+            for (int k = 0; k < 4; ++k) o[k] = static_cast<float>(sum[k] * inv);
         }
-        for (int k = 0; k < 4; ++k) dst[static_cast<std::size_t>(i) * 4 + k] = static_cast<float>((sum[k] + alpha * ends[k]) * inv);
         const int out = i - left, in = i - left + d;
-        if (out >= 0 && out < len)
-            for (int k = 0; k < 4; ++k) sum[k] -= src[static_cast<std::size_t>(out) * 4 + k];
-        if (in >= 0 && in < len)
-            for (int k = 0; k < 4; ++k) sum[k] += src[static_cast<std::size_t>(in) * 4 + k];
+        if (inside(out))
+            for (int k = 0; k < 4; ++k) sum[k] -= at(out)[k];
+        if (inside(in))
+            for (int k = 0; k < 4; ++k) sum[k] += at(in)[k];
     }
+    return {nlo, nhi};
 }
 
 struct Plan {
@@ -130,8 +137,11 @@ void blur_line(const float* line, std::size_t stride, float* out, std::size_t ou
         }
         return;
     }
+    b.resize(a.size());
+    std::pair<int, int> support = edge == EdgeMode::None ? std::pair{plan.radius, plan.radius + n} : std::pair{0, len};
     for (int i = 0; i < kBoxPasses; ++i) {
-        box_pass(a, b, len, plan.widths[i], plan.widths[i] / 2, i + 1 == kBoxPasses ? plan.alpha : 0.0);
+        support = box_pass(a.data(), b.data(), len, plan.widths[i], plan.widths[i] / 2, i + 1 == kBoxPasses ? plan.alpha : 0.0,
+                           support.first, support.second);
         std::swap(a, b);
     }
     std::swap(a, b);  // the last pass's output is in b
