@@ -435,8 +435,9 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
         const double sw = *sub("width", base.width(), true, false), sh = *sub("height", base.height(), false, false);
         if (!(sw > 0) || !(sh > 0)) return std::nullopt;
         p.subregion = Rect::from_xywh(sx, sy, sw, sh);
-        auto input = [&](const char* a) {
-            const std::string_view v = trim(n.attribute(a).value());
+        // An `in` value: a standard input, an earlier result, or (empty or unknown) the previous.
+        auto input = [&](const pugi::xml_node& node, const char* a) {
+            const std::string_view v = trim(node.attribute(a).value());
             if (v == "SourceGraphic" || v == "BackgroundImage" || v == "BackgroundAlpha" || v == "FillPaint" || v == "StrokePaint")
                 return filter::Input::source_graphic();
             if (v == "SourceAlpha") return filter::Input::source_alpha();
@@ -446,19 +447,9 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
         };
         if (!read_primitive(n, u, env, p)) return std::nullopt;
         if (p.op == filter::Primitive::Merge) {
-            for (const pugi::xml_node& m : n.children("feMergeNode")) {
-                const std::string_view v = trim(m.attribute("in").value());
-                if (v == "SourceGraphic" || v == "BackgroundImage" || v == "BackgroundAlpha" || v == "FillPaint" || v == "StrokePaint")
-                    p.inputs.push_back(filter::Input::source_graphic());
-                else if (v == "SourceAlpha")
-                    p.inputs.push_back(filter::Input::source_alpha());
-                else if (const auto it = results.find(v); !v.empty() && it != results.end())
-                    p.inputs.push_back(filter::Input::result(it->second));
-                else
-                    p.inputs.push_back(filter::Input{});
-            }
+            for (const pugi::xml_node& m : n.children("feMergeNode")) p.inputs.push_back(input(m, "in"));
         } else {
-            p.inputs = {input("in"), input("in2")};
+            p.inputs = {input(n, "in"), input(n, "in2")};
         }
         if (g.primitives.size() >= limits::kMaxFilterPrimitives)
             throw Error(ErrorKind::Limit, "filter has more than " + std::to_string(limits::kMaxFilterPrimitives) + " primitives");
