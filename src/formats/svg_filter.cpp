@@ -273,9 +273,10 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
     } else if (name == "feMorphology") {
         p.op = P::Morphology;
         p.dilate = trim(n.attribute("operator").value()) == "dilate";
-        // A missing, malformed, zero or negative radius is 1 (as resvg does).
+        // A missing, malformed or negative radius, or zero on both axes, is 1 (as resvg does); zero
+        // on one axis leaves that axis alone.
         auto r = number_pair(n, "radius");
-        if (!r || !(r->first > 0) || !(r->second > 0)) r = std::pair{1.0, 1.0};
+        if (!r || r->first < 0 || r->second < 0 || (r->first == 0 && r->second == 0)) r = std::pair{1.0, 1.0};
         p.rx = u.lx(r->first);
         p.ry = u.ly(r->second);
     } else if (name == "feConvolveMatrix") {
