@@ -6,14 +6,13 @@
 #include <string>
 
 #include "casteljau/svg.hpp"
+#include "svg_test_util.hpp"
 
 using namespace casteljau;
 
 namespace {
 Pixmap draw(const std::string& body, int w = 100, int h = 10) {
-    return SvgDocument::parse("<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' width='" +
-                              std::to_string(w) + "' height='" + std::to_string(h) + "'>" + body + "</svg>")
-        .render();
+    return SvgDocument::parse(casteljau::test::svg_text(body, w, h)).render();
 }
 }  // namespace
 

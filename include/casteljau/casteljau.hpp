@@ -13,6 +13,7 @@
 #include "casteljau/canvas.hpp"
 #include "casteljau/shader.hpp"
 #include "casteljau/error.hpp"
+#include "casteljau/filter.hpp"
 #include "casteljau/flatten.hpp"
 #include "casteljau/geometry.hpp"
 #include "casteljau/nurbs.hpp"

@@ -13,8 +13,10 @@
 // with the cascade presentation attribute < sheet < style attribute and !important; clipPath and
 // mask (units, clip-rule, mask-type, nested), as exact-area coverage masks of layers; markers;
 // group opacity, mix-blend-mode and isolation; <image> (PNG, JPEG, SVG; see SvgOptions).
-// Not drawn yet: text and filters (warnings name them); elements with a filter are drawn
-// unfiltered.
+// Filters: the filter property (url() lists and the CSS filter functions) with every filter
+// primitive, evaluated by the filter stage (casteljau/filter.hpp) in device pixels after the
+// element is drawn into a layer, before its clip, mask and opacity (src/formats/svg_filter.cpp).
+// Not drawn yet: text (warnings name it).
 // Cycles (use, gradient href, clip-path, mask, marker) are broken: the repeated reference is
 // skipped or the element is not drawn.
 // SVG coordinates: user units, y down, mapped to pixels by the viewBox transform.

@@ -22,12 +22,14 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/filter.hpp"
 #include "casteljau/image.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/shader.hpp"
 #include "casteljau/stroke.hpp"
 #include "casteljau/svg_path.hpp"
 #include "formats/css.hpp"
+#include "formats/svg_filter.hpp"
 
 namespace casteljau {
 
@@ -36,7 +38,7 @@ namespace {
 struct PatternTile;
 
 struct Item {
-    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask, SvgImage } kind = Fill;
+    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask, SvgImage, BeginFilter, EndFilter } kind = Fill;
     bool luminance = false;  // BeginMask: luminance (true) or alpha mask
     BlendMode blend = BlendMode::Normal;  // BeginLayer: mix-blend-mode
     Path path;          // user space
@@ -48,6 +50,7 @@ struct Item {
     FillRule rule = FillRule::NonZero;
     double opacity = 1;  // fill/stroke: multiplies colour alpha; layer: group opacity
     StrokeStyle stroke;  // Stroke items
+    std::shared_ptr<const std::vector<filter::FilterGraph>> filters;  // EndFilter: applied in order, in the user space of `transform`
 };
 
 // A fill or stroke as specified: none, a colour, or a paint server (url(#id)) with its fallback.
@@ -201,6 +204,8 @@ Affine viewbox_transform(const Rect& vb, std::string_view par, double w, double 
     else if (ya == "Max") ty += ey;
     return {s, 0, 0, s, tx, ty};
 }
+
+void render_items(const std::vector<Item>& items, Canvas& canvas, const Affine& base);
 
 class Reader {
 public:
@@ -626,6 +631,96 @@ public:
     // The `use` elements being expanded (innermost last): a use whose target contains one of
     // them, or is one of them, is a cycle.
     std::vector<pugi::xml_node> use_stack;
+
+    // Filters (src/formats/svg_filter.cpp builds the graphs; these methods give it the cascade,
+    // ids, lengths and feImage content). The `filter` property of `n` as a list of steps, nullopt
+    // when it is absent, `none` or malformed (then it is ignored).
+    std::optional<std::vector<svg_filter::FilterRef>> filter_refs(const pugi::xml_node& n) {
+        const std::string value = own_property(n, "filter");
+        if (value.empty() || value == "none") return std::nullopt;
+        auto refs = svg_filter::parse_filter_property(value);
+        if (!refs) warn(std::string("<") + n.name() + ">: invalid filter '" + value + "' ignored");
+        return refs;
+    }
+
+    // The elements whose filters are being built, and whether an feImage named one of them (the
+    // filter is then ignored and the element drawn unfiltered, as resvg does).
+    std::vector<pugi::xml_node> filtering;
+    bool filter_self_reference = false;
+
+    svg_filter::SvgFilterEnv filter_env(const Style& st, double vw, double vh, int depth) {
+        svg_filter::SvgFilterEnv env;
+        env.property = [this](const pugi::xml_node& n, const std::string& k) { return own_property(n, k); };
+        env.inherited = [this](const pugi::xml_node& n, const std::string& k) { return inherited(n, k); };
+        env.lookup = [this](std::string_view id) { return lookup(id); };
+        env.length = [](std::string_view t, double pct) { return parse_length(t, pct); };
+        env.color = [](std::string_view t) { return parse_color(t); };
+        env.vw = vw;
+        env.vh = vh;
+        env.current_color = st.color;
+        // feImage: the referenced element (drawn like a `use` in the filtered element's user
+        // space) or the image, captured as items and drawn when the filter runs.
+        env.image = [this, vw, vh, depth](const pugi::xml_node& fe, const Rect& sub) -> std::function<void(Pixmap&, const Affine&)> {
+            std::vector<Item> captured;
+            std::swap(captured, items);
+            const char* h = href(fe);
+            if (*h == '#') {
+                const pugi::xml_node target = lookup(h + 1);
+                if (std::find(filtering.begin(), filtering.end(), target) != filtering.end()) filter_self_reference = true;
+                else if (target && !is_active(target)) {
+                    active_refs.push_back(target);
+                    // Drawn like a `use`, placed at the subregion's origin (as resvg and Chrome do).
+                    element(target, Style(), Affine::translate(sub.x0, sub.y0), vw, vh, depth + 1);
+                    active_refs.pop_back();
+                }
+            } else {
+                pugi::xml_document placed;
+                pugi::xml_node img = placed.append_copy(fe);
+                // The image fills the primitive subregion (already in user units).
+                auto set = [&](const char* name, double v) {
+                    img.remove_attribute(name);
+                    img.append_attribute(name) = v;
+                };
+                set("x", sub.x0);
+                set("y", sub.y0);
+                set("width", sub.width());
+                set("height", sub.height());
+                image(img, Style(), Affine::identity(), vw, vh, 1.0);
+            }
+            std::swap(captured, items);
+            if (captured.empty()) return {};
+            auto shared = std::make_shared<const std::vector<Item>>(std::move(captured));
+            return [shared](Pixmap& pm, const Affine& m) {
+                Canvas c(pm);
+                render_items(*shared, c, m);
+            };
+        };
+        return env;
+    }
+
+    // The graphs of `refs` for element `n` with bounding box `bbox`; nullopt when one of them is
+    // invalid (the element is then not drawn).
+    std::optional<std::vector<filter::FilterGraph>> build_filters(const std::vector<svg_filter::FilterRef>& refs,
+                                                                   const std::optional<Rect>& bbox, const Style& st,
+                                                                   double vw, double vh, int depth) {
+        const svg_filter::SvgFilterEnv env = filter_env(st, vw, vh, depth);
+        std::vector<filter::FilterGraph> out;
+        for (const svg_filter::FilterRef& r : refs) {
+            std::optional<filter::FilterGraph> g;
+            if (!r.url.empty()) {
+                const pugi::xml_node f = lookup(r.url);
+                if (!f || std::string_view(f.name()) != "filter") return std::nullopt;
+                active_refs.push_back(f);
+                g = svg_filter::build_filter(f, bbox, env);
+                active_refs.pop_back();
+            } else {
+                g = svg_filter::build_function(r, bbox, env);
+            }
+            if (!g) return std::nullopt;
+            out.push_back(std::move(*g));
+        }
+        return out;
+    }
 
     void walk(const pugi::xml_node& node, const Style& st, const Affine& m, double vw, double vh, int depth) {
         if (depth > limits::kMaxNestingDepth)
@@ -1264,14 +1359,76 @@ public:
             if (k == "mix-blend-mode") parse_blend_mode(trim(v), blend);
             if (k == "isolation") isolate = trim(v) == "isolate";
         }
-        const bool layered = opacity < 1 || clip || mask || blend != BlendMode::Normal || isolate;
+        std::optional<std::vector<svg_filter::FilterRef>> frefs = filter_refs(child);
+        std::vector<pugi::xml_node> filter_nodes;
+        if (frefs) {
+            // An invalid filter function makes the whole property invalid (ignored); a url naming
+            // no filter hides the element when it stands alone and is skipped in a list (as resvg).
+            const svg_filter::SvgFilterEnv env = filter_env(cst, vw, vh, depth);
+            const bool bad_function = std::any_of(frefs->begin(), frefs->end(), [&](const svg_filter::FilterRef& r) {
+                return r.url.empty() && !svg_filter::build_function(r, std::nullopt, env);
+            });
+            if (bad_function) {
+                warn(std::string("<") + child.name() + ">: invalid filter function; filter ignored");
+                frefs.reset();
+            }
+        }
+        if (frefs) {
+            std::vector<svg_filter::FilterRef> kept;
+            for (const svg_filter::FilterRef& r : *frefs) {
+                if (!r.url.empty()) {
+                    const pugi::xml_node f = lookup(r.url);
+                    if (!f || std::string_view(f.name()) != "filter") {
+                        if (frefs->size() == 1) return;
+                        continue;
+                    }
+                    filter_nodes.push_back(f);
+                }
+                kept.push_back(r);
+            }
+            *frefs = std::move(kept);
+        }
+        if (std::any_of(filter_nodes.begin(), filter_nodes.end(), [&](const pugi::xml_node& f) { return is_active(f); })) {
+            // Drawn inside its own filter (through feImage): drawn without the filter.
+            warn(std::string("<") + child.name() + ">: recursive filter ignored");
+            frefs.reset();
+            filter_nodes.clear();
+        }
+        const bool layered = opacity < 1 || clip || mask || blend != BlendMode::Normal || isolate || frefs;
         const std::size_t first = items.size();
         if (layered) {
             Item begin = layer_item(Item::BeginLayer, opacity);
             begin.blend = blend;
             items.push_back(std::move(begin));
         }
+        const std::size_t filter_first = items.size();
+        if (frefs) items.push_back(layer_item(Item::BeginFilter, 1));
+        active_refs.insert(active_refs.end(), filter_nodes.begin(), filter_nodes.end());
         content(child, cst, cm, vw, vh, depth, layered ? 1.0 : opacity);
+        active_refs.resize(active_refs.size() - filter_nodes.size());
+        if (frefs) {
+            filtering.push_back(child);
+            const bool outer_self_reference = filter_self_reference;
+            filter_self_reference = false;
+            auto graphs = build_filters(*frefs, items_bbox(filter_first + 1, cm), cst, vw, vh, depth);
+            filtering.pop_back();
+            const bool self_reference = filter_self_reference;
+            filter_self_reference = outer_self_reference;
+            if (self_reference) {
+                warn(std::string("<") + child.name() + ">: feImage references the filtered element; filter ignored");
+                items.erase(items.begin() + static_cast<std::ptrdiff_t>(filter_first));
+                graphs.reset();
+            } else if (!graphs) {
+                items.resize(first);
+                return;
+            }
+            if (graphs) {
+                Item end = layer_item(Item::EndFilter, 1);
+                end.transform = cm;
+                end.filters = std::make_shared<const std::vector<filter::FilterGraph>>(std::move(*graphs));
+                items.push_back(std::move(end));
+            }
+        }
         if (layered) {
             const std::optional<Rect> box = items_bbox(first + 1, cm);
             if (clip) emit_clip(clip, cm, box, vw, vh, depth);
@@ -1644,6 +1801,20 @@ void render_items(const std::vector<Item>& items, Canvas& canvas, const Affine& 
                 frames.back()->opacity = it.opacity;
                 frames.back()->luminance = it.kind == Item::BeginMask && it.luminance;
                 frames.back()->blend = it.blend;
+                continue;
+            }
+            case Item::BeginFilter:
+                frames.push_back(std::make_unique<Frame>(canvas.width(), canvas.height()));
+                frames.back()->canvas.fill_options() = canvas.fill_options();
+                continue;
+            case Item::EndFilter: {
+                if (frames.empty()) continue;
+                std::unique_ptr<Frame> f = std::move(frames.back());
+                frames.pop_back();
+                Pixmap result = std::move(f->pm);
+                if (it.filters)
+                    for (const filter::FilterGraph& g : *it.filters) result = filter::apply_filter(g, base * it.transform, result);
+                cur().draw_layer(result, 1.0);
                 continue;
             }
             case Item::EndLayer: {
