@@ -6,7 +6,11 @@
 // timed region, into each library's own path type. The timed work is "produce the 8-bit coverage
 // of the glyph's box in a preallocated buffer", for every glyph of the set:
 //   casteljau              Rasterizer::fill with a SpanSink copying rows into a reused buffer
-//                          (cleared first), exact_overlaps on (the default)
+//                          (cleared first), default options: exact, topology decided per fill
+//   casteljau (font path)  the same with each glyph's topology decided once (untimed, in prepare),
+//                          as the glyph cache does per glyph: what text rendering runs
+//   casteljau (exact cells) exact, every glyph through the per-cell overlap check (the design
+//                          before the topology verdict; also the exact reference below)
 //   casteljau (exact off)  the same with exact_overlaps off
 //   fill_mask, fill_mask (exact off)
 //                          Rasterizer::fill_mask, which allocates and returns a fresh Mask
@@ -117,29 +121,50 @@ bool in_list(const std::string& list, const std::string& name) {
 
 // --- casteljau ---------------------------------------------------------------------------------
 
+// How casteljau decides exactness in a run: per fill (the default for raw paths), from a verdict
+// decided once per glyph (what the glyph cache does: the font path), or always the exact cells.
+enum class Verdict { PerFill, Cached, ExactCells };
+
 class CasteljauFill final : public Renderer {
 public:
-    CasteljauFill(bool exact, double tol) : exact_(exact) {
+    CasteljauFill(bool exact, double tol, Verdict verdict = Verdict::PerFill) : exact_(exact), verdict_(verdict) {
         opts_.exact_overlaps = exact;
         opts_.tolerance = tol;
+        if (verdict == Verdict::ExactCells) opts_.topology = casteljau::Topology::Overlapping;
     }
-    std::string name() const override { return exact_ ? "casteljau" : "casteljau (exact off)"; }
+    std::string name() const override {
+        if (!exact_) return "casteljau (exact off)";
+        return verdict_ == Verdict::Cached ? "casteljau (font path)"
+                                           : verdict_ == Verdict::ExactCells ? "casteljau (exact cells)" : "casteljau";
+    }
     void prepare(const GlyphSet& set) override {
         set_ = &set;
         buf_.assign(set.max_box_pixels(), 0);
+        verdicts_.clear();
+        simple_ = 0;
+        if (verdict_ == Verdict::Cached)
+            for (const bench::Glyph& g : set.glyphs()) {
+                verdicts_.push_back(casteljau::classify_topology(g.path));
+                simple_ += verdicts_.back() == casteljau::Topology::Simple;
+            }
     }
     Coverage render(std::size_t i) override {
         const bench::Glyph& g = set_->glyphs()[i];
         std::memset(buf_.data(), 0, g.box.pixels());
         sink_.buf = buf_.data();
         sink_.stride = g.box.width;
+        if (verdict_ == Verdict::Cached) opts_.topology = verdicts_[i];
         rast_.fill(g.path, g.to_box, opts_, casteljau::IRect{0, 0, g.box.width, g.box.height}, sink_);
         return {buf_.data(), g.box.width, g.box};
     }
     const casteljau::RasterStats& stats() const { return rast_.last_stats(); }
+    std::size_t simple_glyphs() const { return simple_; }
 
 private:
     bool exact_;
+    Verdict verdict_;
+    std::vector<casteljau::Topology> verdicts_;
+    std::size_t simple_ = 0;
     casteljau::FillOptions opts_;
     const GlyphSet* set_ = nullptr;
     casteljau::Rasterizer rast_;
@@ -248,6 +273,8 @@ int main(int argc, char** argv) {
         rs.push_back(std::make_unique<CasteljauMask>(true, opt.tolerance));
         rs.push_back(std::make_unique<CasteljauMask>(false, opt.tolerance));
         rs.push_back(std::make_unique<FreeTypeRenderer>());
+        rs.push_back(std::make_unique<CasteljauFill>(true, opt.tolerance, Verdict::Cached));
+        rs.push_back(std::make_unique<CasteljauFill>(true, opt.tolerance, Verdict::ExactCells));
 #ifdef CASTELJAU_HAVE_AGG
         rs.push_back(bench::make_agg_renderer());
 #endif
@@ -290,7 +317,7 @@ int main(int argc, char** argv) {
 
             // Agreement: every renderer against FreeType, against casteljau and against the exact
             // reference (casteljau at kReferenceTolerance, exact overlaps on), glyph by glyph.
-            CasteljauFill reference(true, kReferenceTolerance);
+            CasteljauFill reference(true, kReferenceTolerance, Verdict::ExactCells);
             reference.prepare(set);
             SizeInfo& in = info[si];
             in = {n, set.total_box_pixels(), 0, 0, 0};

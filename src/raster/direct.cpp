@@ -83,7 +83,7 @@ bool ends_alternate(double ta0, double ta1, double tb0, double tb1) {
 
 }  // namespace
 
-void Direct::begin(int w, int h, bool track) {
+void Direct::begin(int w, int h, bool track, bool exact) {
     w_ = w;
     h_ = h;
     stride_ = static_cast<std::size_t>(w) + 2;
@@ -101,7 +101,7 @@ void Direct::begin(int w, int h, bool track) {
     }
     dirty_ = true;
     const int lanes = row_vector_lanes();
-    vec_ = !track && w <= kRowVectorMax * lanes;
+    vec_ = !track && !exact && w <= kRowVectorMax * lanes;
     if (vec_) {
         vstride_ = std::max(1, (w + lanes - 1) / lanes) * lanes;
         const std::size_t n = static_cast<std::size_t>(vstride_) * static_cast<std::size_t>(h);

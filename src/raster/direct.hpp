@@ -16,8 +16,10 @@ namespace casteljau::raster {
 // cell) instead of per-edge tags. See the comment at the top of direct.cpp.
 class Direct {
 public:
-    // Starts a shape of w x h cells. `track`: record visits for the exact overlap check.
-    void begin(int w, int h, bool track);
+    // Starts a shape of w x h cells. `track`: record visits for the exact overlap check. `exact`:
+    // the coverage must be the exact area correctly rounded, so accumulate in double (the cell
+    // walk); otherwise narrow shapes may use the float row vectors.
+    void begin(int w, int h, bool track, bool exact);
     // One straight edge in cell coordinates (clamped to [0, w] x [0, h]).
     inline void push(double x0, double y0, double x1, double y1);
     // The current contour is complete (its closing edge was pushed).

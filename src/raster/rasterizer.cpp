@@ -193,23 +193,30 @@ Rasterizer::~Rasterizer() = default;
 Rasterizer::Rasterizer(Rasterizer&&) noexcept = default;
 Rasterizer& Rasterizer::operator=(Rasterizer&&) noexcept = default;
 
-void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opts, const IRect& clip, SpanSink& sink) {
+void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& options, const IRect& clip, SpanSink& sink) {
     stats_ = {};
     check_clip(clip);
     if (clip.empty() || path.empty()) return;
-    const Rect b = transformed_bounds(path, m, opts.tolerance);
+    const Rect b = transformed_bounds(path, m, options.tolerance);
     // The shape's bounds inside the target; when that box fits one buffer, the direct path.
     const double fx0 = std::floor(std::max(b.x0, static_cast<double>(clip.x0)));
     const double fy0 = std::floor(std::max(b.y0, static_cast<double>(clip.y0)));
     const double fx1 = std::ceil(std::min(b.x1, static_cast<double>(clip.x1)));
     const double fy1 = std::ceil(std::min(b.y1, static_cast<double>(clip.y1)));
     if (!(fx1 > fx0 && fy1 > fy0)) return;  // nothing of the shape inside the target
+    // Exactness is decided here, once for the shape: a simple one is accumulated plainly (exact
+    // for it), any other takes the overlap check.
+    FillOptions opts = options;
+    if (opts.exact_overlaps) {
+        stats_.topology = opts.topology != Topology::Unknown ? opts.topology : classify_topology(path);
+        opts.exact_overlaps = stats_.topology != Topology::Simple;
+    }
     const bool inside = b.x0 >= clip.x0 && b.y0 >= clip.y0 && b.x1 <= clip.x1 && b.y1 <= clip.y1;
     if ((fx1 - fx0) * (fy1 - fy0) <= static_cast<double>(kMaxStripCells)) {
         const int ox = static_cast<int>(fx0), oy = static_cast<int>(fy0);
         const int bw = static_cast<int>(fx1) - ox, bh = static_cast<int>(fy1) - oy;
         raster::Direct& d = impl_->direct;
-        d.begin(bw, bh, opts.exact_overlaps);
+        d.begin(bw, bh, opts.exact_overlaps, options.exact_overlaps);
         const Affine local = Affine::translate(-ox, -oy) * m;
         if (inside) {
             EdgeSink<false, raster::Direct> es{d};
