@@ -6,11 +6,12 @@
 // timed region, into each library's own path type. The timed work is "produce the 8-bit coverage
 // of the glyph's box in a preallocated buffer", for every glyph of the set:
 //   casteljau              Rasterizer::fill with a SpanSink copying rows into a reused buffer
-//                          (cleared first), default options: exact, topology decided per fill
+//                          (cleared first), default options: exact, no topology given (so the
+//                          per-cell overlap check for every glyph: the raw-path figure)
 //   casteljau (font path)  the same with each glyph's topology decided once (untimed, in prepare),
 //                          as the glyph cache does per glyph: what text rendering runs
-//   casteljau (exact cells) exact, every glyph through the per-cell overlap check (the design
-//                          before the topology verdict; also the exact reference below)
+//   casteljau (exact cells) exact, topology given as Overlapping: every glyph through the per-cell
+//                          overlap check (also the exact reference below)
 //   casteljau (exact off)  the same with exact_overlaps off
 //   fill_mask, fill_mask (exact off)
 //                          Rasterizer::fill_mask, which allocates and returns a fresh Mask
@@ -121,7 +122,7 @@ bool in_list(const std::string& list, const std::string& name) {
 
 // --- casteljau ---------------------------------------------------------------------------------
 
-// How casteljau decides exactness in a run: per fill (the default for raw paths), from a verdict
+// How casteljau decides exactness in a run: default options (no topology given), from a verdict
 // decided once per glyph (what the glyph cache does: the font path), or always the exact cells.
 enum class Verdict { PerFill, Cached, ExactCells };
 

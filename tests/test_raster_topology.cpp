@@ -10,7 +10,9 @@
 #include <random>
 #include <string>
 
+#include "casteljau/font.hpp"
 #include "casteljau/raster.hpp"
+#include "casteljau/text.hpp"
 #include "glyph_outline.hpp"
 #include "raster_check.hpp"
 #include "reference_area.hpp"
@@ -176,13 +178,21 @@ TEST_CASE("topology: DejaVu Sans glyphs, Simple ones render plainly within the e
 TEST_CASE("topology: the rasterizer uses the verdict and the caller's verdict", "[raster][topology]") {
     Rasterizer r;
     Mask m;
-    m = r.fill_mask(square(1, 1, 8), Affine::identity());
-    CHECK(r.last_stats().topology == Topology::Simple);
-    CHECK(r.last_stats().exact_cells == 0);
+    // Without a verdict: the overlap check.
     const Path stacked = join(square(1.5, 1.5, 8), square(1.5, 1.5, 8));
     m = r.fill_mask(stacked, Affine::identity());
-    CHECK(r.last_stats().topology == Topology::Overlapping);
+    CHECK(r.last_stats().topology == Topology::Unknown);
+    CHECK(r.last_stats().exact_cells > 0);
     CHECK(m.at(1, 1) == 64);  // a quarter of the pixel, not half (the two copies do not add up)
+    FillOptions classified;
+    classified.topology = classify_topology(stacked);
+    m = r.fill_mask(stacked, Affine::identity(), classified);
+    CHECK(r.last_stats().topology == Topology::Overlapping);
+    CHECK(m.at(1, 1) == 64);
+    classified.topology = classify_topology(square(1, 1, 8));
+    m = r.fill_mask(square(1, 1, 8), Affine::identity(), classified);
+    CHECK(r.last_stats().topology == Topology::Simple);
+    CHECK(r.last_stats().exact_cells == 0);
     // A caller's Simple verdict is trusted: the stacked copy then adds up (which is why the verdict
     // must come from classify_topology).
     FillOptions trusted;
@@ -195,4 +205,20 @@ TEST_CASE("topology: the rasterizer uses the verdict and the caller's verdict", 
     off.exact_overlaps = false;
     m = r.fill_mask(stacked, Affine::identity(), off);
     CHECK(r.last_stats().topology == Topology::Unknown);
+}
+
+TEST_CASE("topology: the glyph cache hands each glyph's verdict to the rasterizer", "[raster][topology][text]") {
+    const Font font = Font::load(testing::dejavu_sans_path());
+    GlyphCache cache(1u << 20, kDefaultTolerance);
+    Rasterizer r;
+    const Mask& o = cache.mask(font, font.glyph_index(U'o'), 20.0, {0, 0}, r);
+    CHECK(r.last_stats().topology == Topology::Simple);
+    CHECK(r.last_stats().exact_cells == 0);
+    CHECK(!o.data.empty());
+    // A c with cedilla: the cedilla component crosses the c (DejaVu Sans).
+    (void)cache.mask(font, font.glyph_index(U'\u00e7'), 20.0, {0, 0}, r);
+    CHECK(r.last_stats().topology == Topology::Overlapping);
+    // Another size of the same glyph keeps the verdict decided once.
+    (void)cache.mask(font, font.glyph_index(U'o'), 33.0, {0.5, 0}, r);
+    CHECK(r.last_stats().topology == Topology::Simple);
 }

@@ -5,11 +5,12 @@
 // Coverage of a pixel is the exact area of the pixel square covered by the flattened shape under
 // the fill rule, rounded to 1/255. Plain accumulation (the integral of the winding number over the
 // pixel) is that area exactly wherever the winding number stays within one unit interval. Whether
-// it does is decided per shape before rasterizing (classify_topology): a shape proven "simple"
-// (no two segments meet, winding values only 0 and 1, or only 0 and -1: most glyphs, most map
-// polygons) is accumulated plainly; any other shape takes the exact path, where every pixel in
-// which edges could make accumulation inexact (crossings, overlapping or stacked contours) is
-// recomputed exactly from the edges inside it (see src/raster/exact_cell.cpp).
+// it does is decided per shape before rasterizing (classify_topology, once per outline: the glyph
+// cache keeps each glyph's verdict): a shape proven "simple" (no two segments meet, winding values
+// only 0 and 1, or only 0 and -1: about 97 % of DejaVu Sans glyphs) is accumulated plainly; any
+// other shape, or one whose topology the caller did not give, takes the overlap check, where every
+// pixel in which edges could make accumulation inexact (crossings, overlapping or stacked
+// contours) is recomputed exactly from the edges inside it (see src/raster/exact_cell.cpp).
 //
 // Range: geometry is clipped in double precision before it is converted to float cell coordinates,
 // so any finite coordinate up to limits::kMaxCoordinate is accepted; the target rectangle is at
@@ -55,8 +56,8 @@ struct FillOptions {
     double tolerance = kDefaultTolerance;  // flattening tolerance in pixels
     bool exact_overlaps = true;            // exact coverage where edges overlap (off: plain accumulation everywhere)
     // The path's topology when the caller knows it (classify_topology of this very path, under any
-    // affine map); Unknown: decided by the rasterizer. A Simple path is accumulated plainly, which
-    // is exact for it. Only read when exact_overlaps is on.
+    // affine map): a Simple path is accumulated plainly, which is exact for it; Unknown and
+    // Overlapping take the per-cell overlap check. Only read when exact_overlaps is on.
     Topology topology = Topology::Unknown;
 };
 

@@ -204,12 +204,15 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opti
     const double fx1 = std::ceil(std::min(b.x1, static_cast<double>(clip.x1)));
     const double fy1 = std::ceil(std::min(b.y1, static_cast<double>(clip.y1)));
     if (!(fx1 > fx0 && fy1 > fy0)) return;  // nothing of the shape inside the target
-    // Exactness is decided here, once for the shape: a simple one is accumulated plainly (exact
-    // for it), any other takes the overlap check.
+    // Exactness is decided before rasterizing, once for the shape: one the caller proved simple
+    // (classify_topology, cached per outline) is accumulated plainly, exact for it; any other takes
+    // the per-cell overlap check. An unknown topology is not classified here: classifying costs
+    // about 3 us per glyph-sized outline (BENCHMARKS.md), more than the per-cell check of the
+    // same shape, so it pays only when its verdict is reused.
     FillOptions opts = options;
     if (opts.exact_overlaps) {
-        stats_.topology = opts.topology != Topology::Unknown ? opts.topology : classify_topology(path);
-        opts.exact_overlaps = stats_.topology != Topology::Simple;
+        stats_.topology = opts.topology;
+        opts.exact_overlaps = opts.topology != Topology::Simple;
     }
     const bool inside = b.x0 >= clip.x0 && b.y0 >= clip.y0 && b.x1 <= clip.x1 && b.y1 <= clip.y1;
     if ((fx1 - fx0) * (fy1 - fy0) <= static_cast<double>(kMaxStripCells)) {
