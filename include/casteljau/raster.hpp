@@ -16,7 +16,7 @@
 // so any finite coordinate up to limits::kMaxCoordinate is accepted; the target rectangle is at
 // most limits::kMaxCanvasDimension on each side. Memory grows with the clipped bounds of the shape,
 // never with the canvas area: a shape whose clipped bounds hold at most 2^18 pixels is accumulated
-// in one buffer as it is flattened; larger ones are swept in strips of at most 2^18 cells.
+// in one buffer as it is flattened; larger ones are swept in bands (strips) of at most 2^18 cells.
 //
 // Thread-safety: a Rasterizer holds scratch buffers; use one per thread. Masks are values.
 #pragma once
@@ -79,7 +79,7 @@ struct Mask {
 struct RasterStats {
     std::size_t segments = 0;        // line segments accumulated
     std::size_t exact_cells = 0;     // cells recomputed exactly
-    std::size_t strips = 0;
+    std::size_t strips = 0;          // dense buffers run: 1, or the bands of a large shape
     Topology topology = Topology::Unknown;  // the verdict the fill used (Unknown: exact_overlaps off)
 };
 
