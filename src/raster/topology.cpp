@@ -15,7 +15,7 @@
 //      tested, to a fixed depth. Consecutive segments meet at one point S; they meet nowhere else
 //      when the directions from S to their other control points fill two disjoint angular sectors,
 //      each under a half turn (else both are split and the parts tested again). Segments are
-//      paired by a sweep over their boxes sorted by top, so far-apart segments cost nothing.
+//      paired on a uniform grid over their boxes, so far-apart segments cost nothing.
 //   2. So every contour is a simple closed curve and contours do not meet. Its orientation is the
 //      sign of its area (closed-form Bezier area).
 //   3. The winding number of every region: a region touches some contour A, on A's inside or its
@@ -163,6 +163,22 @@ bool Classifier::separated(const Point* a, int na, const Point* b, int nb) {
 bool Classifier::disjoint(const Seg& a, const Seg& b, int depth) {
     if (boxes_apart(a.box, b.box)) return true;
     if (budget_ <= 0) return false;
+    if (a.n == 2 && b.n == 2) {
+        // Two straight segments are apart when the line of one has both ends of the other
+        // strictly on one side; they cross when each line separates the other's ends; anything
+        // else (collinear, nearly touching) goes to the general test.
+        auto side = [&](const Seg& u, Point q) {
+            const Point d = u.p[1] - u.p[0];
+            const double v = cross(d, q - u.p[0]);
+            const double margin = delta_ * std::max(std::abs(d.x), std::abs(d.y));
+            return v > margin ? 1 : (v < -margin ? -1 : 0);
+        };
+        const int s0 = side(a, b.p[0]), s1 = side(a, b.p[1]);
+        if (s0 != 0 && s0 == s1) return true;
+        const int t0 = side(b, a.p[0]), t1 = side(b, a.p[1]);
+        if (t0 != 0 && t0 == t1) return true;
+        if (s0 * s1 < 0 && t0 * t1 < 0) return false;  // a proper crossing
+    }
     if (separated(a.p, a.n, b.p, b.n)) return true;
     if (depth == 0) return false;
     Seg h0, h1;
@@ -220,6 +236,18 @@ bool Classifier::sectors_apart(const Seg& a, const Seg& b) const {
 bool Classifier::meet_only_at_end(const Seg& a, const Seg& b, int depth) {
     if (budget_ <= 0) return false;
     --budget_;
+    if (a.n == 2 && b.n == 2) {
+        // Two straight segments from S meet only at S unless they fold back onto each other:
+        // apart when they turn by more than the margin, or continue forwards.
+        const Point u = a.p[0] - b.p[0], v = b.p[1] - b.p[0];
+        const double lu = std::max(std::abs(u.x), std::abs(u.y)), lv = std::max(std::abs(v.x), std::abs(v.y));
+        const double min_len = delta_ * double(1 << 10);
+        if (lu >= min_len && lv >= min_len) {
+            const double c = cross(u, v), dot = u.x * v.x + u.y * v.y;
+            // |u| |v| <= 2 lu lv: the turn exceeds the angular margin, or u and v point apart.
+            if (std::abs(c) > 2 * lu * lv / double(1 << 20) || dot < -0.5 * lu * lv) return true;
+        }
+    }
     if (sectors_apart(a, b)) return true;
     if (depth == 0) return false;
     Seg a0, a1, b0, b1;
@@ -382,34 +410,61 @@ Topology Classifier::run(const Path& path) {
     if (segs_.empty()) return Topology::Simple;
     budget_ = 200 * static_cast<long>(segs_.size()) + 20000;
 
-    // 1. Pairs of segments with overlapping boxes, by a sweep over boxes sorted by top.
+    // 1. Pairs of segments with overlapping boxes, found on a uniform grid of about one cell per
+    // segment over the path's bounds: each segment is listed in the cells its box covers, and a
+    // pair is tested in one cell only (the corner cell of the two boxes' overlap), so segments far
+    // apart cost nothing and a pair is never tested twice.
     constexpr int kDepth = 10;
-    std::vector<std::uint32_t> order(segs_.size());
-    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return segs_[a].box.y0 < segs_[b].box.y0; });
-    std::vector<std::uint32_t> active;
-    for (std::uint32_t i : order) {
-        const Seg& s = segs_[i];
-        std::size_t keep = 0;
-        for (std::uint32_t j : active)
-            if (segs_[j].box.y1 + delta_ >= s.box.y0) active[keep++] = j;
-        active.resize(keep);
-        for (std::uint32_t j : active) {
-            const Seg& t = segs_[j];
-            if (boxes_apart(s.box, t.box)) continue;
-            bool ok;
-            const std::size_t count = contour_at_[static_cast<std::size_t>(s.contour) + 1] - contour_at_[static_cast<std::size_t>(s.contour)];
-            const int last = static_cast<int>(count) - 1;
-            if (s.contour == t.contour && (t.index == s.index + 1 || (s.index == last && t.index == 0)))
-                ok = meet_only_at_end(s, t, kDepth);
-            else if (s.contour == t.contour && (s.index == t.index + 1 || (t.index == last && s.index == 0)))
-                ok = meet_only_at_end(t, s, kDepth);
-            else
-                ok = disjoint(s, t, kDepth);
-            if (!ok) return Topology::Overlapping;
-        }
-        active.push_back(i);
+    const std::size_t n = segs_.size();
+    const int grid = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(n))), 1, 1024);
+    const double gx = grid / std::max(cb.width() + 2 * delta_, delta_), gy = grid / std::max(cb.height() + 2 * delta_, delta_);
+    auto cell_x = [&](double x) { return std::clamp(static_cast<int>((x - cb.x0 + delta_) * gx), 0, grid - 1); };
+    auto cell_y = [&](double y) { return std::clamp(static_cast<int>((y - cb.y0 + delta_) * gy), 0, grid - 1); };
+    struct Cells {
+        int x0, y0, x1, y1;
+    };
+    std::vector<Cells> span(n);
+    std::vector<std::uint32_t> cstart(static_cast<std::size_t>(grid) * grid + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Rect& b = segs_[i].box;
+        span[i] = {cell_x(b.x0 - delta_), cell_y(b.y0 - delta_), cell_x(b.x1 + delta_), cell_y(b.y1 + delta_)};
+        for (int y = span[i].y0; y <= span[i].y1; ++y)
+            for (int x = span[i].x0; x <= span[i].x1; ++x) ++cstart[static_cast<std::size_t>(y) * grid + x + 1];
     }
+    for (std::size_t c = 1; c < cstart.size(); ++c) cstart[c] += cstart[c - 1];
+    if (cstart.back() > 64 * n + 100000) return Topology::Overlapping;  // long segments everywhere: not worth it
+    std::vector<std::uint32_t> members(cstart.back());
+    {
+        std::vector<std::uint32_t> fill(cstart.begin(), cstart.end() - 1);
+        for (std::uint32_t i = 0; i < n; ++i)
+            for (int y = span[i].y0; y <= span[i].y1; ++y)
+                for (int x = span[i].x0; x <= span[i].x1; ++x) members[fill[static_cast<std::size_t>(y) * grid + x]++] = i;
+    }
+    long box_tests = 0;
+    for (int cy = 0; cy < grid; ++cy)
+        for (int cx = 0; cx < grid; ++cx) {
+            const std::size_t c = static_cast<std::size_t>(cy) * grid + cx;
+            for (std::uint32_t k = cstart[c]; k < cstart[c + 1]; ++k)
+                for (std::uint32_t l = k + 1; l < cstart[c + 1]; ++l) {
+                    if (++box_tests > 256 * static_cast<long>(n) + 100000) return Topology::Overlapping;
+                    const std::uint32_t i = members[k], j = members[l];
+                    if (std::max(span[i].x0, span[j].x0) != cx || std::max(span[i].y0, span[j].y0) != cy) continue;
+                    const Seg& s = segs_[i];
+                    const Seg& t = segs_[j];
+                    if (boxes_apart(s.box, t.box)) continue;
+                    bool ok;
+                    const std::size_t count =
+                        contour_at_[static_cast<std::size_t>(s.contour) + 1] - contour_at_[static_cast<std::size_t>(s.contour)];
+                    const int last = static_cast<int>(count) - 1;
+                    if (s.contour == t.contour && (t.index == s.index + 1 || (s.index == last && t.index == 0)))
+                        ok = meet_only_at_end(s, t, kDepth);
+                    else if (s.contour == t.contour && (s.index == t.index + 1 || (t.index == last && s.index == 0)))
+                        ok = meet_only_at_end(t, s, kDepth);
+                    else
+                        ok = disjoint(s, t, kDepth);
+                    if (!ok) return Topology::Overlapping;
+                }
+        }
 
     // 2 and 3. Orientation of each contour and winding numbers of the others along it.
     std::vector<Rect> boxes(ncontours);
