@@ -27,7 +27,8 @@
 // casteljau disagrees with FreeType beyond kMaxMeanVsFreeType or fill and fill_mask differ.
 //
 // Usage: compare_glyphs [--quick] [--runs R] [--min-time S] [--sizes 12,24,...] [--only NAMES]
-//                       [--passes N] [--tolerance PX] [--no-check]
+//                       [--passes N] [--tolerance PX] [--no-check] [--font FILE]
+//   --font      another font (default DejaVu Sans; e.g. fonts/LinLibertine_R.otf, CFF outlines)
 //   --quick     smoke test: one pass, one run (used by ctest)
 //   --no-check  skip the agreement pass (and its tables): for profiling the timed part alone
 //   --only      time only the renderers named (comma-separated, exact names as in the table header,
@@ -70,12 +71,13 @@ struct Options : bench::CommonOptions {
     int passes = 0;  // fixed passes per run (0: calibrate; --quick: 1)
     std::string only;
     double tolerance = casteljau::kDefaultTolerance;
+    std::string font = CASTELJAU_BENCH_FONT;  // --font: another TrueType or CFF (.otf) font
 };
 
 [[noreturn]] void usage(const char* msg) {
     std::fprintf(stderr,
                  "compare_glyphs: %s\nusage: compare_glyphs [--quick] [--runs R] [--min-time S] [--sizes 12,24,...]\n"
-                 "                      [--only NAMES] [--passes N] [--tolerance PX] [--no-check]\n",
+                 "                      [--only NAMES] [--passes N] [--tolerance PX] [--no-check] [--font FILE]\n",
                  msg);
     std::exit(2);
 }
@@ -96,6 +98,8 @@ Options parse(int argc, char** argv) {
             o.passes = std::max(1, std::atoi(value(i).c_str()));
         } else if (a == "--only") {
             o.only = value(i);
+        } else if (a == "--font") {
+            o.font = value(i);
         } else if (a == "--tolerance") {
             o.tolerance = std::atof(value(i).c_str());
             if (!(o.tolerance > 0)) usage("--tolerance must be positive");
@@ -267,7 +271,7 @@ std::string fmt(const char* f, double v) {
 int main(int argc, char** argv) {
     const Options opt = parse(argc, argv);
     try {
-        bench::Font font;
+        bench::Font font(opt.font);
         std::vector<std::unique_ptr<Renderer>> rs;
         rs.push_back(std::make_unique<CasteljauFill>(true, opt.tolerance));
         rs.push_back(std::make_unique<CasteljauFill>(false, opt.tolerance));
@@ -286,7 +290,7 @@ int main(int argc, char** argv) {
         rs.push_back(bench::make_stb_renderer(false));
         rs.push_back(bench::make_stb_renderer(true));
 #endif
-        const std::size_t kCast = 0, kCastOff = 1, kMask = 2, kMaskOff = 3, kFT = 4;
+        const std::size_t kCast = 0, kCastOff = 1, kMask = 2, kMaskOff = 3, kFT = 4, kFont = 5;
         std::vector<bool> timed(rs.size(), true);
         if (!opt.only.empty())
             for (std::size_t r = 0; r < rs.size(); ++r) timed[r] = in_list(opt.only, rs[r]->name());
@@ -378,7 +382,8 @@ int main(int argc, char** argv) {
             }
             for (std::size_t r = 0; r < rs.size(); ++r)
                 if (timed[r]) results[si][r].glyphs_per_s = static_cast<double>(n) * results[si][r].passes / best[r];
-            std::fprintf(stderr, "  %d px done\n", opt.sizes[si]);
+            std::fprintf(stderr, "  %d px done (%zu of %zu glyphs proven simple by classify_topology)\n", opt.sizes[si],
+                         static_cast<CasteljauFill*>(rs[kFont].get())->simple_glyphs(), n);
         }
 
         // --- tables (Markdown) ---
