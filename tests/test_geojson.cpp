@@ -218,3 +218,34 @@ TEST_CASE("read_map_file reads in place like read_map_data and reports errors", 
         CHECK(std::string(e.what()).find("invalid JSON at byte 40") != std::string::npos);
     }
 }
+
+TEST_CASE("GeoJSON FeatureCollection read feature by feature equals the same features read as lines", "[geojson]") {
+    const std::string f1 = R"({"type":"Feature","properties":{"n":"a\"]}"},"geometry":{"type":"Point","coordinates":[1,2]}})";
+    const std::string f2 = R"({"type":"Feature","properties":{"n":[[{}]]},"geometry":{"type":"LineString","coordinates":[[0,0],[3,4]]}})";
+    const MapData lines = read_geojson_lines(f1 + "\n" + f2 + "\n");
+    // Member order, escaped keys, whitespace and foreign members must not matter.
+    for (const std::string& text : {
+             R"({"type":"FeatureCollection","features":[)" + f1 + "," + f2 + "]}",
+             " {\n \"features\" : [ " + f1 + " ,\n " + f2 + " ] , \"bbox\":[0,0,3,4], \"type\" : \"FeatureCollection\" } ",
+             R"({"typ\u0065":"FeatureCollection","feat\u0075res":[)" + f1 + "," + f2 + "]}",
+         }) {
+        INFO(text);
+        const MapData d = read_geojson(text);
+        REQUIRE(d.features.size() == 2);
+        for (std::size_t i = 0; i < 2; ++i) {
+            CHECK(d.features[i].geometries.at(0).points == lines.features[i].geometries.at(0).points);
+            CHECK(d.features[i].property("n")->to_string() == lines.features[i].property("n")->to_string());
+        }
+        CHECK(read_map_data(text).features.size() == 2);
+    }
+    // An error in the second feature names its index in the whole collection.
+    const std::string bad = R"({"type":"FeatureCollection","features":[)" + f1 + R"(,{"type":"Feature","properties":{},"geometry":{"type":"Point","coordinates":[1,95]}}]})";
+    try {
+        (void)read_geojson(bad);
+        FAIL("expected an error");
+    } catch (const Error& e) {
+        CHECK(std::string(e.what()).find("features[1].geometry.coordinates") != std::string::npos);
+    }
+    // Invalid UTF-8 outside any feature is still refused.
+    CHECK_THROWS_AS(read_geojson("{\"name\":\"\xff\",\"type\":\"FeatureCollection\",\"features\":[]}"), Error);
+}

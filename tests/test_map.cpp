@@ -382,3 +382,30 @@ TEST_CASE("Map styles: categorical palette, numeric ramp, points, style file", "
     CHECK_THROWS_AS(read_map_style(R"({"layers":[{"fill":"notacolour"}]})"), Error);
     CHECK_THROWS_AS(read_map_style(R"({"layers":{}})"), Error);
 }
+
+TEST_CASE("Map threads: 1, 2 and 5 threads give the same pixels in every mode", "[map][threads]") {
+    const MapData world = test::load_world();
+    MapStyle style;
+    style.layers[0].fill_by = "name";
+    style.layers[0].stroke = Color::rgba(40, 40, 40);
+    style.layers[0].stroke_width = 0.8;
+    for (bool seamless : {true, false}) {
+        MapOptions o = world_options(1500, 750, seamless);
+        o.threads = 1;
+        const Pixmap one = render_map(world, MapProjection{}, style, o);
+        for (int t : {2, 5}) {
+            o.threads = t;
+            const Pixmap many = render_map(world, MapProjection{}, style, o);
+            INFO("seamless " << seamless << ", " << t << " threads");
+            REQUIRE(many.width() == one.width());
+            REQUIRE(many.height() == one.height());
+            std::size_t differ = 0;
+            for (int y = 0; y < one.height(); ++y)
+                for (int x = 0; x < one.width(); ++x) differ += !(many.pixel(x, y) == one.pixel(x, y));
+            CHECK(differ == 0);
+        }
+    }
+    MapOptions bad = world_options(100, 50, true);
+    bad.threads = -1;
+    CHECK_THROWS_AS(render_map(world, MapProjection{}, style, bad), Error);
+}

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "casteljau/error.hpp"
 #include "casteljau/raster.hpp"
 
 using namespace casteljau;
@@ -106,4 +107,29 @@ TEST_CASE("regression: thousands of crossings in one pixel finish and stay accur
         CHECK(std::abs(m.at(3, 2) - truth) <= 3.0);  // sampling noise of 40,000 points is ~1/255
         CHECK(m.at(0, 0) == 0);
     }
+}
+
+TEST_CASE("regression: a quadratic from DBL_MAX overflowing to NaN is refused, not walked", "[raster][regression]") {
+    // Found by fuzz_raster: a control point at the smallest denormal between two end points at
+    // DBL_MAX passed the finiteness check, and the flattener's differences overflowed to
+    // infinity and NaN, which the cell walk then turned into out-of-range indices.
+    const double big = 1.7976931348623157e308;
+    Path p;
+    p.move_to(big, 3.984375).quad_to({4.9406564584124654e-324, 0}, {big, 3.984375});
+    Rasterizer r;
+    FillOptions o;
+    o.rule = FillRule::EvenOdd;
+    o.exact_overlaps = false;
+    try {
+        (void)r.fill_mask(p, Affine{}, o, IRect{73, -20, 324, 147});
+        FAIL("expected an error");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::Limit);
+        CHECK(std::string(e.what()).find("coordinate") != std::string::npos);
+    }
+    // The limit itself: 1e15 px after the transform is drawn, beyond it is an error.
+    Path edge;
+    edge.move_to(0, 0).line_to(limits::kMaxCoordinate, 0).line_to(0, 10).close();
+    CHECK_NOTHROW(r.fill_mask(edge, Affine{}, FillOptions{}, IRect{0, 0, 16, 16}));
+    CHECK_THROWS_AS(r.fill_mask(edge, Affine::scale(2, 1), FillOptions{}, IRect{0, 0, 16, 16}), Error);
 }

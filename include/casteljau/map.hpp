@@ -29,6 +29,8 @@
 // pixels filled like polygons.
 //
 // Thread-safety: free functions; a MapProjection must not be shared between threads (clone it).
+// render_map() runs MapOptions::threads worker threads of its own (each with a clone of the
+// projection) and returns when they are done; MapData is only read.
 #pragma once
 
 #include <optional>
@@ -102,6 +104,9 @@ struct MapOptions {
     // Earth 10m) and still exact for valid polygons (simple rings, holes inside their exterior),
     // whose winding numbers stay within 0..1. Strokes are always exact (their outlines overlap).
     bool exact_overlaps = true;
+    // Threads that project and draw (0: all cores, at most 256). The image is cut into horizontal
+    // bands by its height alone, so the pixels are the same whatever the number of threads.
+    int threads = 0;
 };
 
 // Projected space -> pixel space, and the image size.
@@ -119,6 +124,9 @@ MapFrame fit_map(const MapData& data, const MapProjection& proj, const MapOption
 // Draws the map onto `target` (its own size), background first.
 void render_map(const MapData& data, const MapProjection& proj, const MapFrame& frame, const MapStyle& style,
                 const MapOptions& opts, Pixmap& target);
+// The number of threads MapOptions::threads asks for (0: std::thread::hardware_concurrency()).
+// Throws Error(InvalidArgument) outside 0..256.
+int map_threads(int requested);
 // Convenience: fit + a new Pixmap + render.
 Pixmap render_map(const MapData& data, const MapProjection& proj, const MapStyle& style, const MapOptions& opts);
 

@@ -22,7 +22,8 @@
 // allocated once; per covered pixel a few integer operations more than source-over. Time is that of
 // rasterizing each fill once plus one pass over the pixels at the end.
 //
-// Coordinates: pixel space of the target (x right, y down). Thread-safety: one thread at a time.
+// Coordinates: pixel space of the target (x right, y down). Thread-safety: one thread at a time,
+// except add() with disjoint clip rectangles.
 #pragma once
 
 #include <cstdint>
@@ -45,6 +46,9 @@ public:
     // Adds the fill of `path` (pixel space) in `color` with `opacity` (multiplies the alpha).
     // Fills added earlier take precedence where they overlap.
     void add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity = 1.0);
+    // The same inside `clip` only (pixel rectangle within the compositor). Calls with disjoint
+    // clips touch disjoint pixels, so they may run on different threads at once.
+    void add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity, const IRect& clip);
     // Coverage already taken in pixel (x, y), 0..255.
     std::uint8_t taken(int x, int y) const { return cov_[static_cast<std::size_t>(y) * width_ + x]; }
     // Source-over of the layer onto `dst` (same size).

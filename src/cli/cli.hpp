@@ -1,9 +1,9 @@
 // The command-line front end: shared declarations for the subcommand files.
 //
 // Each subcommand lives in its own file src/cli/cmd_NAME.cpp and exposes one registration
-// function, declared here and called from main.cpp, that adds a CLI11 subcommand and its callback.
+// function, declared here and called from run.cpp, that adds a CLI11 subcommand and its callback.
 // Callbacks report bad data by throwing casteljau::Error (exit 1) and bad usage by throwing
-// cli::UsageError (exit 2); main.cpp prints the one-line "casteljau: error: ..." message.
+// cli::UsageError (exit 2); run.cpp prints the one-line "casteljau: error: ..." message.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -42,6 +42,11 @@ void add_map_style_options(CLI::App* cmd, MapCliStyle& o);
 MapStyle build_map_style(const MapCliStyle& o);
 // Reads a map file by its extension (.geojsonl/.ndjson: GeoJSON lines, .topojson) or content.
 MapData read_map_input(const std::string& path, const std::string& layer);
+
+// Parses argv and, when `execute`, runs the command it names; returns the exit status (0, 1 bad
+// data, 2 bad usage), with help on `out` and the one-line error on `err`. Without `execute` only
+// the arguments are parsed and checked (for the CLI fuzz target).
+int run(int argc, char** argv, bool execute, std::ostream& out, std::ostream& err);
 
 void register_path(CLI::App& app);
 void register_svg(CLI::App& app);

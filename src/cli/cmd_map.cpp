@@ -138,6 +138,7 @@ void register_map(CLI::App& app) {
         std::string input, output, bbox;
         int width = 0, height = 0;
         double padding = 0;
+        int threads = 0;
         MapCliStyle style;
     };
     auto o = std::make_shared<Opts>();
@@ -151,9 +152,12 @@ void register_map(CLI::App& app) {
     cmd->add_option("--padding", o->padding, "Padding in pixels around the data extent")
         ->check(CLI::Range(0.0, 1e5))
         ->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Threads (default: all cores; the image is the same for any number)")
+        ->check(CLI::Range(1, 256));
     add_map_style_options(cmd, o->style);
     cmd->callback([o] {
         MapOptions mo;
+        mo.threads = o->threads;
         mo.width = o->width;
         mo.height = o->height;
         mo.padding = o->padding;

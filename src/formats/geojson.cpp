@@ -1,7 +1,9 @@
-// Formats stage: the GeoJSON reader (RFC 7946) and its newline-delimited form. Parses with
-// simdjson's DOM, copies positions into MapData (see include/casteljau/geojson.hpp), then lets
-// the parsed tree go.
+// Formats stage: the GeoJSON reader (RFC 7946) and its newline-delimited form. A
+// FeatureCollection is checked for well-formedness in one pass and then parsed one feature at a
+// time with simdjson's DOM, so that memory holds the text, the MapData (see
+// include/casteljau/geojson.hpp) and the tape of a single feature; other documents are parsed whole.
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "casteljau/error.hpp"
@@ -172,6 +174,29 @@ struct Reader {
         out.features.push_back(std::move(f));
     }
 
+    // An element of a FeatureCollection's "features".
+    void collection_member(element fe, MapData& out) {
+        object fo;
+        std::string_view ft;
+        if (fe.get_object().get(fo) != simdjson::SUCCESS || fo["type"].get_string().get(ft) != simdjson::SUCCESS ||
+            ft != "Feature")
+            path.fail(ErrorKind::Parse, "expected an object with \"type\": \"Feature\"");
+        feature(fo, out);
+    }
+
+    // The features of a FeatureCollection in `text`, each parsed on its own, so that simdjson's
+    // tape (16 bytes per number, several times the text) only ever holds one feature.
+    void collection(std::string_view text, const std::vector<json::RawValue>& elements, MapData& out) {
+        simdjson::dom::parser parser;
+        auto scope = path.key("features");
+        out.features.reserve(out.features.size() + elements.size());
+        std::size_t i = 0;
+        for (const json::RawValue& v : elements) {
+            auto s2 = path.index(i++);
+            collection_member(json::parse(parser, text.substr(v.begin, v.end - v.begin), "GeoJSON"), out);
+        }
+    }
+
     // A FeatureCollection, a Feature or a bare geometry.
     void document(element root, MapData& out, bool allow_collection) {
         object obj;
@@ -190,12 +215,7 @@ struct Reader {
             std::size_t i = 0;
             for (element fe : a) {
                 auto s2 = path.index(i++);
-                object fo;
-                std::string_view ft;
-                if (fe.get_object().get(fo) != simdjson::SUCCESS || fo["type"].get_string().get(ft) != simdjson::SUCCESS ||
-                    ft != "Feature")
-                    path.fail(ErrorKind::Parse, "expected an object with \"type\": \"Feature\"");
-                feature(fo, out);
+                collection_member(fe, out);
             }
         } else if (type == "Feature") {
             feature(obj, out);
@@ -209,14 +229,42 @@ struct Reader {
 
 }  // namespace
 
-MapData read_geojson(std::string_view text) {
-    simdjson::dom::parser parser;
-    const element root = json::parse(parser, text, "GeoJSON");
+namespace {
+
+// A top-level FeatureCollection of well-formed text, as the ranges of its features; nullopt for
+// any other document (or malformed text), which then goes through simdjson's DOM whole.
+std::optional<std::vector<json::RawValue>> collection_elements(std::string_view text) {
+    if (json::syntax_error_offset(text) != std::string_view::npos || !simdjson::validate_utf8(text.data(), text.size()))
+        return std::nullopt;
+    const auto members = json::raw_object_members(text);
+    const json::RawValue* type = nullptr;
+    const json::RawValue* features = nullptr;
+    for (const auto& [key, v] : members) {  // the first of duplicate members, as simdjson's lookup does
+        if (key == "type" && !type) type = &v;
+        if (key == "features" && !features) features = &v;
+    }
+    if (!type || !features || text.substr(type->begin, type->end - type->begin) != "\"FeatureCollection\"")
+        return std::nullopt;
+    return json::raw_array_elements(text, *features);
+}
+
+// `elements`: collection_elements(text).
+MapData geojson_document(std::string_view text, const std::optional<std::vector<json::RawValue>>& elements,
+                         std::string_view what) {
     MapData out;
     Reader r;
-    r.document(root, out, true);
+    if (elements) {
+        r.collection(text, *elements, out);
+        return out;
+    }
+    simdjson::dom::parser parser;
+    r.document(json::parse(parser, text, std::string(what)), out, true);
     return out;
 }
+
+}  // namespace
+
+MapData read_geojson(std::string_view text) { return geojson_document(text, collection_elements(text), "GeoJSON"); }
 
 MapData read_geojson_lines(std::string_view text) {
     simdjson::dom::parser parser;
@@ -263,7 +311,15 @@ bool looks_like_lines(std::string_view text) {
     return first.size() >= 2 && first.front() == '{' && first.back() == '}' && j < text.size() && text[j] == '{';
 }
 
-MapData from_root(element root, std::string_view topojson_object) {
+MapData from_text(std::string_view text, std::string_view topojson_object) {
+    if (looks_like_lines(text)) return read_geojson_lines(text);
+    if (const auto elements = collection_elements(text)) {
+        if (!topojson_object.empty())
+            throw Error(ErrorKind::InvalidArgument, "--layer selects a TopoJSON object, but the input is GeoJSON");
+        return geojson_document(text, elements, "map data");
+    }
+    simdjson::dom::parser parser;
+    const element root = json::parse(parser, text, "map data");
     std::string_view type;
     if (root["type"].get_string().get(type) == simdjson::SUCCESS && type == "Topology")
         return geo_detail::topojson_from(root, topojson_object);
@@ -281,21 +337,9 @@ MapData read_map_file(const std::string& path, std::string_view topojson_object)
     simdjson::padded_string text;
     if (simdjson::padded_string::load(path).get(text) != simdjson::SUCCESS)
         throw Error(ErrorKind::Io, "cannot read '" + path + "'");
-    if (looks_like_lines(text)) return read_geojson_lines(text);
-    simdjson::dom::parser parser;
-    element root;
-    const auto err = parser.parse(text).get(root);
-    if (err != simdjson::SUCCESS) json::parse(parser, text, "map data");  // throws with the byte offset
-    // The parsed tree holds its own copy of the strings: the text can go before MapData is built.
-    text = simdjson::padded_string();
-    return from_root(root, topojson_object);
+    return from_text(text, topojson_object);
 }
 
-MapData read_map_data(std::string_view text, std::string_view topojson_object) {
-    if (looks_like_lines(text)) return read_geojson_lines(text);
-    simdjson::dom::parser parser;
-    const element root = json::parse(parser, text, "map data");
-    return from_root(root, topojson_object);
-}
+MapData read_map_data(std::string_view text, std::string_view topojson_object) { return from_text(text, topojson_object); }
 
 }  // namespace casteljau

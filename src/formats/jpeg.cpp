@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <csetjmp>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ struct ErrorManager {
 
 void on_message(j_common_ptr, int) {}
 
+// Working memory libjpeg may allocate beyond the output image (README, Limits).
+constexpr long kMaxJpegWorkingMemory = 512L << 20;
+
 // Reads the header; false with the message set on a libjpeg error.
 bool read_header(jpeg_decompress_struct* cinfo, ErrorManager* err, const std::uint8_t* data, std::size_t size) {
     if (setjmp(err->jump)) return false;
@@ -46,8 +50,8 @@ bool read_header(jpeg_decompress_struct* cinfo, ErrorManager* err, const std::ui
     return true;
 }
 
-// Decodes the scanlines into `rgba` (straight RGBA8, opaque); false on a libjpeg error.
-bool read_pixels(jpeg_decompress_struct* cinfo, ErrorManager* err, std::uint8_t* rgba, std::uint8_t* row) {
+// Decodes the scanlines into `pm` (opaque, so premultiplied equals straight); false on a libjpeg error.
+bool read_pixels(jpeg_decompress_struct* cinfo, ErrorManager* err, Pixmap& pm, std::uint8_t* row) {
     if (setjmp(err->jump)) return false;
     jpeg_start_decompress(cinfo);
     const unsigned w = cinfo->output_width;
@@ -56,7 +60,7 @@ bool read_pixels(jpeg_decompress_struct* cinfo, ErrorManager* err, std::uint8_t*
         const unsigned y = cinfo->output_scanline;
         JSAMPROW rows[1] = {row};
         jpeg_read_scanlines(cinfo, rows, 1);
-        std::uint8_t* d = rgba + static_cast<std::size_t>(y) * w * 4;
+        std::uint8_t* d = pm.row(static_cast<int>(y));
         for (unsigned x = 0; x < w; ++x, d += 4) {
             const std::uint8_t* s = row + static_cast<std::size_t>(x) * comps;
             if (comps == 1) {
@@ -108,20 +112,23 @@ Pixmap decode_jpeg(std::span<const std::uint8_t> bytes) {
         throw Error(ErrorKind::InvalidData, std::string("corrupt JPEG: ") + err.message);
     }
     const double w = cinfo.output_width, h = cinfo.output_height;
+    std::optional<Pixmap> pm;
+    std::vector<std::uint8_t> row;
     try {
         check_canvas_size(w, h);
+        pm.emplace(static_cast<int>(w), static_cast<int>(h));
+        row.resize(static_cast<std::size_t>(w) * 4);
     } catch (...) {
         jpeg_destroy_decompress(&cinfo);
         throw;
     }
-    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
-    std::vector<std::uint8_t> row(static_cast<std::size_t>(w) * 4);
-    const bool ok = read_pixels(&cinfo, &err, rgba.data(), row.data());
+    // libjpeg's own working memory (whole-image coefficient buffers of progressive files) is
+    // bounded too: past it, decoding stops with "insufficient memory".
+    cinfo.mem->max_memory_to_use = kMaxJpegWorkingMemory;
+    const bool ok = read_pixels(&cinfo, &err, *pm, row.data());
     jpeg_destroy_decompress(&cinfo);
     if (!ok) throw Error(ErrorKind::InvalidData, std::string("corrupt JPEG: ") + err.message);
-    Pixmap pm(static_cast<int>(w), static_cast<int>(h));
-    std::memcpy(pm.data(), rgba.data(), rgba.size());  // opaque: premultiplied equals straight
-    return pm;
+    return std::move(*pm);
 }
 
 Pixmap decode_image(std::span<const std::uint8_t> bytes) {

@@ -117,7 +117,7 @@ std::size_t syntax_error_offset(std::string_view s) {
         // After a value: close containers or move to the next element.
         while (value_done) {
             skip_ws();
-            if (stack.empty()) return i < n ? i : n;  // trailing content (or, at n, none: valid)
+            if (stack.empty()) return i < n ? i : std::string_view::npos;  // trailing content, or valid
             if (i >= n) return n;
             const char top = stack.back();
             if (s[i] == ',') {
@@ -135,6 +135,86 @@ std::size_t syntax_error_offset(std::string_view s) {
     }
 }
 
+namespace {
+
+std::size_t skip_ws(std::string_view s, std::size_t i) {
+    while (i < s.size() && is_ws(s[i])) ++i;
+    return i;
+}
+
+// The end of the string whose opening quote is at i, in valid JSON.
+std::size_t string_end(std::string_view s, std::size_t i) {
+    for (++i; i < s.size(); ++i) {
+        if (s[i] == '\\') ++i;
+        else if (s[i] == '"') return i + 1;
+    }
+    return s.size();
+}
+
+// The end of the value starting at i (no leading whitespace), in valid JSON. Iterative, so that
+// deep nesting costs no stack.
+std::size_t value_end(std::string_view s, std::size_t i) {
+    if (i >= s.size()) return s.size();
+    if (s[i] == '"') return string_end(s, i);
+    if (s[i] != '{' && s[i] != '[') {
+        while (i < s.size() && s[i] != ',' && s[i] != '}' && s[i] != ']' && !is_ws(s[i])) ++i;
+        return i;
+    }
+    std::size_t depth = 0;
+    while (i < s.size()) {
+        const char c = s[i];
+        if (c == '"') {
+            i = string_end(s, i);
+            continue;
+        }
+        if (c == '{' || c == '[') ++depth;
+        else if ((c == '}' || c == ']') && --depth == 0) return i + 1;
+        ++i;
+    }
+    return s.size();
+}
+
+std::string unescaped_key(std::string_view quoted) {
+    if (quoted.find('\\') == std::string_view::npos) return std::string(quoted.substr(1, quoted.size() - 2));
+    simdjson::dom::parser p;
+    std::string_view k;
+    if (p.parse(quoted.data(), quoted.size(), true).get_string().get(k) != simdjson::SUCCESS) return {};
+    return std::string(k);
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, RawValue>> raw_object_members(std::string_view s) {
+    std::vector<std::pair<std::string, RawValue>> out;
+    std::size_t i = skip_ws(s, 0);
+    if (i >= s.size() || s[i] != '{') return out;
+    i = skip_ws(s, i + 1);
+    while (i < s.size() && s[i] == '"') {
+        const std::size_t key_end = string_end(s, i);
+        std::string key = unescaped_key(s.substr(i, key_end - i));
+        i = skip_ws(s, key_end) + 1;  // past ':'
+        i = skip_ws(s, i);
+        const std::size_t v_end = value_end(s, i);
+        out.push_back({std::move(key), RawValue{i, v_end}});
+        i = skip_ws(s, v_end);
+        if (i < s.size() && s[i] == ',') i = skip_ws(s, i + 1);
+    }
+    return out;
+}
+
+std::optional<std::vector<RawValue>> raw_array_elements(std::string_view s, RawValue v) {
+    if (v.begin >= v.end || s[v.begin] != '[') return std::nullopt;
+    std::vector<RawValue> out;
+    std::size_t i = skip_ws(s, v.begin + 1);
+    while (i < v.end && s[i] != ']') {
+        const std::size_t e = value_end(s, i);
+        out.push_back(RawValue{i, e});
+        i = skip_ws(s, e);
+        if (i < v.end && s[i] == ',') i = skip_ws(s, i + 1);
+    }
+    return out;
+}
+
 simdjson::dom::element parse(simdjson::dom::parser& parser, std::string_view text, const std::string& what) {
     simdjson::dom::element root;
     const auto err = parser.parse(text.data(), text.size(), true).get(root);
@@ -145,7 +225,7 @@ simdjson::dom::element parse(simdjson::dom::parser& parser, std::string_view tex
     const std::size_t at = syntax_error_offset(text);
     std::string msg = what + ": invalid JSON";
     if (at < text.size()) msg += " at byte " + std::to_string(at);
-    else msg += " (ends early, at byte " + std::to_string(text.size()) + ")";
+    else if (at == text.size()) msg += " (ends early, at byte " + std::to_string(text.size()) + ")";
     msg += ": ";
     msg += simdjson::error_message(err);
     throw Error(ErrorKind::Parse, msg);

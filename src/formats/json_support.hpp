@@ -5,6 +5,7 @@
 
 #include <simdjson.h>
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,9 +19,24 @@ namespace casteljau::json {
 // byte N: reason" for malformed text, Error(Limit) for nesting beyond limits::kMaxNestingDepth * 4.
 simdjson::dom::element parse(simdjson::dom::parser& parser, std::string_view text, const std::string& what);
 
-// Byte offset of the first syntax error in `text` (text.size() when it ends too early), found by a
-// small validating scan; used only after simdjson has rejected the text.
+// Byte offset of the first syntax error in `text` (text.size() when it ends too early), or
+// std::string_view::npos when the text is valid JSON apart from its UTF-8 (which the scan does not
+// check), found by a small validating scan with an explicit stack.
 std::size_t syntax_error_offset(std::string_view text);
+
+// A value inside JSON text, as the byte range [begin, end) of its text.
+struct RawValue {
+    std::size_t begin = 0, end = 0;
+};
+
+// The members of the top-level object of `valid` (text that syntax_error_offset found valid), each
+// with its unescaped key, in document order; empty when the top-level value is not an object.
+// Together with raw_array_elements this lets a reader parse a large document one piece at a time
+// instead of building simdjson's tape (16 bytes per number) for all of it.
+std::vector<std::pair<std::string, RawValue>> raw_object_members(std::string_view valid);
+
+// The elements of the array whose text is valid[v.begin, v.end), or nullopt when it is not an array.
+std::optional<std::vector<RawValue>> raw_array_elements(std::string_view valid, RawValue v);
 
 // A JSON path built only when a message needs it: a stack of member names and indices.
 class JsonPath {

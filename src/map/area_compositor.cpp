@@ -55,12 +55,19 @@ struct AreaSink final : SpanSink {
 }  // namespace
 
 void AreaCompositor::add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity) {
+    add(raster, path, opts, color, opacity, IRect{0, 0, width_, height_});
+}
+
+void AreaCompositor::add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity,
+                         const IRect& clip) {
+    const IRect c{std::max(clip.x0, 0), std::max(clip.y0, 0), std::min(clip.x1, width_), std::min(clip.y1, height_)};
+    if (c.empty()) return;
     AreaSink sink;
     sink.layer = layer_.data();
     sink.cov = cov_.data();
     sink.width = width_;
     sink.c = premultiply(color.with_opacity(std::clamp(opacity, 0.0, 1.0)));
-    raster.fill(path, Affine{}, opts, IRect{0, 0, width_, height_}, sink);
+    raster.fill(path, Affine{}, opts, c, sink);
 }
 
 void AreaCompositor::composite_onto(Pixmap& dst) const {

@@ -1,8 +1,15 @@
 // Map stage: fitting the projected data to the image and drawing the features (see
 // include/casteljau/map.hpp). Features are projected twice, once to measure the extent and once
-// to draw, so that only one copy of the coordinates (the MapData) is ever held: the pixel-space
-// Path of one feature lives only while that feature is drawn.
+// to draw, so that only one copy of the coordinates (the MapData) is ever held whole: the
+// pixel-space paths exist a chunk of features at a time. Each chunk is projected by all threads
+// (a feature each), then drawn by all threads (a horizontal band of the image each).
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -286,95 +293,214 @@ MapFrame fit_map(const MapData& data, const MapProjection& proj, const MapOption
     return fr;
 }
 
+namespace {
+
+// Features are projected and drawn in chunks of about this many input positions, so that only one
+// chunk's pixel-space paths exist at a time.
+constexpr std::size_t kChunkPositions = std::size_t(1) << 20;
+
+// Horizontal bands of the image, each drawn by one thread at a time. How the image is cut depends
+// only on its height, never on the number of threads, so the pixels are the same for any thread
+// count (the rasterizer works relative to its clip's origin, so a different cut could round a
+// coverage differently).
+std::vector<IRect> bands_of(int width, int height) {
+    const int n = std::clamp((height + 255) / 256, 1, 16);
+    std::vector<IRect> bands;
+    for (int i = 0; i < n; ++i) {
+        const int y0 = static_cast<int>(static_cast<long long>(height) * i / n);
+        const int y1 = static_cast<int>(static_cast<long long>(height) * (i + 1) / n);
+        if (y1 > y0) bands.push_back(IRect{0, y0, width, y1});
+    }
+    return bands;
+}
+
+bool overlaps(const Rect& r, const IRect& band) { return r.y1 >= band.y0 && r.y0 <= band.y1; }
+
+// Runs task(worker, i) once for every i in [0, n) on up to `workers` threads (worker 0 is the
+// calling thread). The first exception thrown stops the remaining tasks and is rethrown.
+template <class Task>
+void run_parallel(int workers, std::size_t n, Task&& task) {
+    workers = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(workers, 1)), n));
+    if (workers <= 1) {
+        for (std::size_t i = 0; i < n; ++i) task(0, i);
+        return;
+    }
+    std::atomic<std::size_t> next{0};
+    std::mutex mu;
+    std::exception_ptr error;
+    auto loop = [&](int w) {
+        try {
+            for (std::size_t i; (i = next.fetch_add(1)) < n;) task(w, i);
+        } catch (...) {
+            const std::lock_guard<std::mutex> lock(mu);
+            if (!error) error = std::current_exception();
+            next.store(n);
+        }
+    };
+    std::vector<std::thread> pool;
+    pool.reserve(static_cast<std::size_t>(workers - 1));
+    for (int w = 1; w < workers; ++w) pool.emplace_back(loop, w);
+    loop(0);
+    for (std::thread& t : pool) t.join();
+    if (error) std::rethrow_exception(error);
+}
+
+// One feature made ready to draw: its pixel-space fill (or stroke outline) and colour.
+struct Drawable {
+    Path path;
+    Color color;
+    Rect box;  // control bounds of path
+};
+
+}  // namespace
+
+int map_threads(int requested) {
+    if (requested < 0 || requested > 256) throw Error(ErrorKind::InvalidArgument, "threads must be 0 (all cores) to 256");
+    if (requested > 0) return requested;
+    return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
+}
+
 void render_map(const MapData& data, const MapProjection& proj, const MapFrame& frame, const MapStyle& style,
                 const MapOptions& opts, Pixmap& target) {
     if (target.width() != frame.width || target.height() != frame.height)
         throw Error(ErrorKind::InvalidArgument, "render_map: the pixmap does not have the frame's size");
+    const int threads = map_threads(opts.threads);
     target.fill(style.background);
-    Canvas canvas(target);
-    canvas.fill_options().tolerance = opts.tolerance;
     FillOptions fo;
     fo.rule = opts.fill_rule;
     fo.tolerance = opts.tolerance;
     fo.exact_overlaps = opts.exact_overlaps;
-    Projector pr(proj);
-    Rasterizer& raster = canvas.rasterizer();
+    FillOptions outline_fo = fo;
+    outline_fo.rule = FillRule::NonZero;
+    outline_fo.exact_overlaps = true;  // a shared border's two copies must not add up
     StrokeStyle ss;
     ss.join = style.join;
     ss.cap = style.cap;
     ss.miter_limit = style.miter_limit;
+    const std::vector<IRect> bands = bands_of(frame.width, frame.height);
+
+    // Per worker: a projection of its own (PROJ objects are not shared), a projector, a canvas.
+    std::vector<MapProjection> projections;
+    std::vector<std::unique_ptr<Projector>> projectors;
+    std::vector<std::unique_ptr<Canvas>> canvases;
+    for (int w = 0; w < threads; ++w) projections.push_back(w == 0 ? proj.clone() : projections[0].clone());
+    for (int w = 0; w < threads; ++w) {
+        projectors.push_back(std::make_unique<Projector>(projections[static_cast<std::size_t>(w)]));
+        canvases.push_back(std::make_unique<Canvas>(target));
+        canvases.back()->fill_options() = fo;
+    }
     std::optional<AreaCompositor> area;
 
-    auto build = [&](const Feature& f, PathVisitor& v) {
+    auto build = [&](int w, const Feature& f, PathVisitor& v) {
         v.m = frame.to_pixel;
         v.point_radius = style.point_radius;
-        for (const Geometry& g : f.geometries) pr.geometry(g, v);
+        for (const Geometry& g : f.geometries) projectors[static_cast<std::size_t>(w)]->geometry(g, v);
     };
-    // The pixel-space fill of feature `f` in `layer` with its colour, or nullopt when the layer's
-    // filter or colour leaves it out or it has no area.
-    auto fill_of = [&](const MapLayerStyle& layer, const Feature& f) -> std::optional<std::pair<Path, Color>> {
-        if (!layer.filter.matches(f)) return std::nullopt;
-        const std::optional<Color> c = layer.fill_for(f);
-        if (!c) return std::nullopt;
-        PathVisitor v;
-        build(f, v);
-        if (v.fill.empty()) return std::nullopt;
-        return std::pair<Path, Color>{std::move(v.fill), *c};
+    auto positions_of = [](const Feature& f) {
+        std::size_t n = 0;
+        for (const Geometry& g : f.geometries) n += g.points.size();
+        return n;
+    };
+    // Calls make(worker, feature, out) for the features in `order`, a chunk at a time built in
+    // parallel, then draw(chunk) with the chunk's drawables in the same order.
+    auto chunked = [&](const std::vector<std::size_t>& order, auto&& make, auto&& draw) {
+        std::vector<std::optional<Drawable>> chunk;
+        for (std::size_t begin = 0; begin < order.size();) {
+            std::size_t end = begin, positions = 0;
+            while (end < order.size() && (end == begin || positions < kChunkPositions))
+                positions += positions_of(data.features[order[end++]]);
+            chunk.assign(end - begin, std::nullopt);
+            run_parallel(threads, end - begin, [&](int w, std::size_t i) {
+                make(w, data.features[order[begin + i]], chunk[i]);
+                if (chunk[i]) chunk[i]->box = chunk[i]->path.control_bounds();
+            });
+            draw(chunk);
+            begin = end;
+        }
     };
 
     for (const MapLayerStyle& layer : style.layers) {
+        std::vector<std::size_t> order;
+        for (std::size_t i = 0; i < data.features.size(); ++i)
+            if (layer.filter.matches(data.features[i])) order.push_back(i);
         // Fills: seamless (by area, last feature first so that later features win) or source-over in order.
-        const bool any_fill = layer.fill.has_value();
-        if (any_fill && opts.seamless) {
+        auto make_fill = [&](int w, const Feature& f, std::optional<Drawable>& out) {
+            const std::optional<Color> c = layer.fill_for(f);
+            if (!c) return;
+            PathVisitor v;
+            build(w, f, v);
+            if (!v.fill.empty()) out = Drawable{std::move(v.fill), *c, Rect{}};
+        };
+        if (layer.fill && opts.seamless) {
             if (!area) area.emplace(frame.width, frame.height);
             else area->clear();
+            std::reverse(order.begin(), order.end());
             bool drew = false;
-            for (std::size_t i = data.features.size(); i-- > 0;) {
-                const auto fill = fill_of(layer, data.features[i]);
-                if (!fill) continue;
-                area->add(raster, fill->first, fo, fill->second, layer.opacity);
-                drew = true;
-            }
+            chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
+                run_parallel(threads, bands.size(), [&](int w, std::size_t b) {
+                    Rasterizer& raster = canvases[static_cast<std::size_t>(w)]->rasterizer();
+                    for (const auto& d : chunk)
+                        if (d && overlaps(d->box, bands[b])) area->add(raster, d->path, fo, d->color, layer.opacity, bands[b]);
+                });
+                for (const auto& d : chunk) drew = drew || d.has_value();
+            });
+            std::reverse(order.begin(), order.end());
             if (drew) area->composite_onto(target);
-        } else if (any_fill) {
-            canvas.fill_options().exact_overlaps = opts.exact_overlaps;
-            for (const Feature& f : data.features) {
-                const auto fill = fill_of(layer, f);
-                if (!fill) continue;
-                Paint paint = Paint::solid(fill->second);
-                paint.opacity = layer.opacity;
-                canvas.fill_path(fill->first, paint, opts.fill_rule);
-            }
+        } else if (layer.fill) {
+            chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
+                run_parallel(threads, bands.size(), [&](int w, std::size_t b) {
+                    Canvas& canvas = *canvases[static_cast<std::size_t>(w)];
+                    canvas.save();
+                    canvas.clip_rect(Rect{0.0, double(bands[b].y0), double(bands[b].x1), double(bands[b].y1)});
+                    for (const auto& d : chunk) {
+                        if (!d || !overlaps(d->box, bands[b])) continue;
+                        Paint paint = Paint::solid(d->color);
+                        paint.opacity = layer.opacity;
+                        canvas.fill_path(d->path, paint, opts.fill_rule);
+                    }
+                    canvas.restore();
+                });
+            });
         }
-        // Strokes: one outline path per colour, filled once (shared borders drawn once).
+        // Strokes: the outlines of every feature in one path per colour, filled once with the
+        // nonzero rule, so that a border shared by two features is drawn once.
         const std::optional<Color> line_color = layer.stroke ? layer.stroke : layer.fill;
         if (!line_color || !(layer.stroke_width > 0)) continue;
+        ss.width = layer.stroke_width;
         Path outline;
         auto flush = [&] {
             if (outline.empty()) return;
+            const Rect box = outline.control_bounds();
             Paint paint = Paint::solid(*line_color);
             paint.opacity = layer.opacity;
-            canvas.fill_options().exact_overlaps = true;  // a shared border's two copies must not add up
-            canvas.fill_path(outline, paint, FillRule::NonZero);
+            run_parallel(threads, bands.size(), [&](int w, std::size_t b) {
+                if (!overlaps(box, bands[b])) return;
+                Canvas& canvas = *canvases[static_cast<std::size_t>(w)];
+                canvas.save();
+                canvas.clip_rect(Rect{0.0, double(bands[b].y0), double(bands[b].x1), double(bands[b].y1)});
+                canvas.fill_options() = outline_fo;
+                canvas.fill_path(outline, paint, FillRule::NonZero);
+                canvas.fill_options() = fo;
+                canvas.restore();
+            });
             outline.clear();
         };
-        ss.width = layer.stroke_width;
-        for (const Feature& f : data.features) {
-            if (!layer.filter.matches(f)) continue;
+        auto make_outline = [&](int w, const Feature& f, std::optional<Drawable>& out) {
             PathVisitor v;
-            build(f, v);
-            if (layer.stroke && !v.fill.empty()) {
-                // Polygon outlines (point disks too) with the stroke colour.
-                const Path o = stroke(v.fill, ss, Affine{}, opts.tolerance);
-                if (outline.points().size() + o.points().size() > limits::kMaxPathPoints / 2) flush();
-                outline.append(o);
+            build(w, f, v);
+            Path o;
+            // Polygon outlines (point disks too) take the stroke colour; lines are always stroked.
+            if (layer.stroke && !v.fill.empty()) o = stroke(v.fill, ss, Affine{}, opts.tolerance);
+            if (!v.lines.empty()) o.append(stroke(v.lines, ss, Affine{}, opts.tolerance));
+            if (!o.empty()) out = Drawable{std::move(o), *line_color, Rect{}};
+        };
+        chunked(order, make_outline, [&](const std::vector<std::optional<Drawable>>& chunk) {
+            for (const auto& d : chunk) {
+                if (!d) continue;
+                if (outline.points().size() + d->path.points().size() > limits::kMaxPathPoints / 2) flush();
+                outline.append(d->path);
             }
-            if (!v.lines.empty()) {
-                const Path o = stroke(v.lines, ss, Affine{}, opts.tolerance);
-                if (outline.points().size() + o.points().size() > limits::kMaxPathPoints / 2) flush();
-                outline.append(o);
-            }
-        }
+        });
         flush();
     }
 }

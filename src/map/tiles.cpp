@@ -62,6 +62,7 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
     mo.seamless = opts.seamless;
     mo.tolerance = opts.tolerance;
     mo.exact_overlaps = opts.exact_overlaps;
+    mo.threads = 1;  // the worker threads take a metatile each
 
     std::mutex mu;  // guards sink, stats, progress, error
     TileStats stats;

@@ -71,9 +71,15 @@ void check_clip(const IRect& clip) {
                                           " pixels per side");
 }
 
-// Transformed control-point bounds; throws for non-finite input (flatten's checks).
+// Transformed control-point bounds; throws for non-finite input (flatten's checks) and for
+// coordinates beyond limits::kMaxCoordinate, whose differences could overflow to infinity or NaN
+// inside the flattener and the clipper.
 Rect transformed_bounds(const Path& path, const Affine& m, double tolerance) {
-    return check_flatten_input(path, m, tolerance);
+    const Rect b = check_flatten_input(path, m, tolerance);
+    const double far = std::max(std::max(-b.x0, b.x1), std::max(-b.y0, b.y1));
+    if (far > limits::kMaxCoordinate)
+        throw Error(ErrorKind::Limit, "path coordinate beyond +/-1e15 pixels after the transform");
+    return b;
 }
 
 }  // namespace

@@ -1,0 +1,42 @@
+// libFuzzer target: the stroker and dasher on arbitrary paths (fuzz/path_gen.hpp) and styles
+// (widths from 0 to 1e30 and NaN, every cap and join, miter limits, dash arrays with zero, negative
+// and huge entries, offsets), then the outline filled into a small mask. Invariants: bad input ends
+// in casteljau::Error; the outline of a finite path with a finite positive width is finite.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "casteljau/raster.hpp"
+#include "casteljau/stroke.hpp"
+#include "harness.hpp"
+#include "path_gen.hpp"
+
+using namespace casteljau;
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    fuzz::Bytes in(data, size);
+    StrokeStyle st;
+    st.width = in.flag() ? in.number(40) : in.range(0, 40) / 4.0;
+    st.cap = static_cast<LineCap>(in.range(0, 2));
+    st.join = static_cast<LineJoin>(in.range(0, 3));
+    st.miter_limit = in.flag() ? in.number(10) : 4;
+    const int ndash = in.range(0, 6);
+    for (int i = 0; i < ndash; ++i) st.dashes.push_back(in.flag() ? in.number(20) : in.range(0, 20) / 2.0);
+    st.dash_offset = in.flag() ? in.number(50) : 0;
+    Affine m{};
+    if (in.flag()) m = Affine{in.number(4), in.number(1), in.number(1), in.number(4), 0, 0};
+    const Path path = fuzz::random_path(in, 200);
+    fuzz::run([&] {
+        const Path outline = stroke(path, st, m, 0.05);
+        bool finite_in = std::isfinite(st.width) && st.width > 0;
+        for (const Point& p : path.points()) finite_in = finite_in && std::isfinite(p.x) && std::isfinite(p.y);
+        if (finite_in && std::abs(st.width) < 1e6) {
+            bool finite_out = true;
+            for (const Point& p : outline.points()) finite_out = finite_out && std::isfinite(p.x) && std::isfinite(p.y);
+            fuzz::require(finite_out, "a finite path stroked with a finite width gave a non-finite outline");
+        }
+        Rasterizer raster;
+        (void)raster.fill_mask(outline, m, FillOptions{}, IRect{0, 0, 128, 128});
+    });
+    return 0;
+}
