@@ -12,8 +12,8 @@
 //      |difference| <= 1/255 at every pixel;
 //   2. for straight-edged paths, default options against the independent exact-area reference of
 //      tests/reference_area.* (slab integration): within 1/255 at every pixel;
-//   3. a path classified Simple renders with plain accumulation (exact_overlaps off) within 1/255
-//      of the exact cells.
+//   3. a path classify_topology proves Simple renders through the fast path (that verdict given
+//      in FillOptions::topology) and with plain accumulation within 1/255 of the exact cells.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -122,7 +122,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         exact.topology = Topology::Overlapping;
         const Mask cells = render(r, path, m, exact);
         expect_close("default vs exact cells", fast, cells);
-        if (verdict == Topology::Simple) {
+        // The verdict: a path classify_topology proves simple, filled with that verdict (plain
+        // accumulation) and with exact overlaps off, must match the exact cells.
+        if (verdict == Topology::Simple || classify_topology(path) == Topology::Simple) {
+            FillOptions given = opts;
+            given.topology = Topology::Simple;
+            expect_close("a Simple path through the fast path vs exact cells", render(r, path, m, given), cells);
             FillOptions plain = opts;
             plain.exact_overlaps = false;
             expect_close("plain accumulation of a Simple path vs exact cells", render(r, path, m, plain), cells);

@@ -6,7 +6,9 @@
 // -1) over the whole plane: then nonzero and even-odd agree with |integral| in every pixel. The
 // classifier proves this from the path's control points, in the path's own coordinates, in three
 // steps:
-//   1. No two segments meet, except consecutive segments of a contour at their shared end point.
+//   1. No segment crosses itself (a cubic must have control points monotone in x or in y; lines,
+//      quadratics and conics cannot), and no two segments meet, except consecutive segments of a
+//      contour at their shared end point.
 //      Every segment (line, quadratic, cubic, conic with a positive weight) lies in the convex hull
 //      of its control points, and so does every chord the flattener draws between two of its
 //      points. Two segments are apart when a line separates their hulls: the candidate lines run
@@ -15,7 +17,10 @@
 //      tested, to a fixed depth. Consecutive segments meet at one point S; they meet nowhere else
 //      when the directions from S to their other control points fill two disjoint angular sectors,
 //      each under a half turn (else both are split and the parts tested again). Segments are
-//      paired on a uniform grid over their boxes, so far-apart segments cost nothing.
+//      paired on a uniform grid over their boxes, so far-apart segments cost nothing. Pairs are
+//      decided on whole segments (no splitting): the flattener's chords can span any part of a
+//      segment but stay inside its whole hull, so the verdict holds for the flattened polygon at
+//      any tolerance.
 //   2. So every contour is a simple closed curve and contours do not meet. Its orientation is the
 //      sign of its area (closed-form Bezier area).
 //   3. The winding number of every region: a region touches some contour A, on A's inside or its
@@ -27,7 +32,7 @@
 // Every test is decided with a margin of 2^-40 of the path's extent (2^-20 rad for sectors), far
 // above double rounding: a "simple" verdict is never an artefact of rounding, and configurations
 // that touch or come closer than the margin are "overlapping". Nothing here depends on the affine
-// map later applied, since affine maps keep convex hulls, separating lines, crossings and
+// map later applied (nor on the flattening tolerance), since affine maps keep convex hulls, separating lines, crossings and
 // orientations (a mirror flips every orientation together, which keeps winding values in {0, s}).
 // A work budget bounds the splitting; past it the verdict is "overlapping" (the exact path).
 #include <algorithm>
@@ -354,6 +359,7 @@ Topology Classifier::run(const Path& path) {
     // without segments whose control points all coincide (they draw nothing).
     std::vector<Seg> contour;
     Point start{}, cur{};
+    bool self_crossing = false;  // a cubic not proven free of loops
     auto push = [&](std::initializer_list<Point> pts, bool conic, double w) {
         Seg s;
         s.n = 0;
@@ -363,6 +369,15 @@ Topology Classifier::run(const Path& path) {
         bool degenerate = true;
         for (int i = 1; i < s.n; ++i) degenerate = degenerate && s.p[i] == s.p[0];
         if (degenerate) return;
+        if (s.n == 4) {
+            // A cubic may loop on itself. One whose control points are monotone in x or in y is
+            // monotone there too, and so is every polygon inscribed in it: no self-crossing.
+            auto mono = [&](double Point::*c) {
+                const double a = s.p[0].*c, b = s.p[1].*c, d = s.p[2].*c, e = s.p[3].*c;
+                return (a <= b && b <= d && d <= e) || (a >= b && b >= d && d >= e);
+            };
+            if (!mono(&Point::x) && !mono(&Point::y)) self_crossing = true;
+        }
         s.box = box_of(s);
         contour.push_back(s);
     };
@@ -407,6 +422,7 @@ Topology Classifier::run(const Path& path) {
     end_contour();
     contour_at_.push_back(segs_.size());
     const std::size_t ncontours = contour_at_.size() - 1;
+    if (self_crossing) return Topology::Overlapping;
     if (segs_.empty()) return Topology::Simple;
     budget_ = 200 * static_cast<long>(segs_.size()) + 20000;
 
@@ -414,7 +430,10 @@ Topology Classifier::run(const Path& path) {
     // segment over the path's bounds: each segment is listed in the cells its box covers, and a
     // pair is tested in one cell only (the corner cell of the two boxes' overlap), so segments far
     // apart cost nothing and a pair is never tested twice.
-    constexpr int kDepth = 10;
+    // Pairs are decided on the segments' whole hulls, without splitting: the flattener's chords may
+    // span any part of a segment, and they stay inside its whole hull, so only a separation of whole
+    // hulls also holds for the flattened polygon at any tolerance.
+    constexpr int kDepth = 0;
     const std::size_t n = segs_.size();
     const int grid = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(n))), 1, 1024);
     const double gx = grid / std::max(cb.width() + 2 * delta_, delta_), gy = grid / std::max(cb.height() + 2 * delta_, delta_);
@@ -485,7 +504,7 @@ Topology Classifier::run(const Path& path) {
         for (std::size_t b = 0; b < ncontours; ++b) {
             if (b == a || boxes_apart(boxes[b], Rect{p.x, p.y, p.x, p.y})) continue;
             for (std::size_t i = contour_at_[b]; i < contour_at_[b + 1]; ++i)
-                if (!winding_about(segs_[i], p, kDepth + 10, w)) return Topology::Overlapping;
+                if (!winding_about(segs_[i], p, 20, w)) return Topology::Overlapping;
         }
         lo = std::min({lo, w, w + orient[a]});
         hi = std::max({hi, w, w + orient[a]});
