@@ -6,7 +6,12 @@
 // timed region, into each library's own path type. The timed work is "produce the 8-bit coverage
 // of the glyph's box in a preallocated buffer", for every glyph of the set:
 //   casteljau              Rasterizer::fill with a SpanSink copying rows into a reused buffer
-//                          (cleared first), exact_overlaps on (the default)
+//                          (cleared first), default options: exact, no topology given (so the
+//                          per-cell overlap check for every glyph: the raw-path figure)
+//   casteljau (font path)  the same with each glyph's topology decided once (untimed, in prepare),
+//                          as the glyph cache does per glyph: what text rendering runs
+//   casteljau (exact cells) exact, topology given as Overlapping: every glyph through the per-cell
+//                          overlap check (also the exact reference below)
 //   casteljau (exact off)  the same with exact_overlaps off
 //   fill_mask, fill_mask (exact off)
 //                          Rasterizer::fill_mask, which allocates and returns a fresh Mask
@@ -22,7 +27,8 @@
 // casteljau disagrees with FreeType beyond kMaxMeanVsFreeType or fill and fill_mask differ.
 //
 // Usage: compare_glyphs [--quick] [--runs R] [--min-time S] [--sizes 12,24,...] [--only NAMES]
-//                       [--passes N] [--tolerance PX] [--no-check]
+//                       [--passes N] [--tolerance PX] [--no-check] [--font FILE]
+//   --font      another font (default DejaVu Sans; e.g. fonts/LinLibertine_R.otf, CFF outlines)
 //   --quick     smoke test: one pass, one run (used by ctest)
 //   --no-check  skip the agreement pass (and its tables): for profiling the timed part alone
 //   --only      time only the renderers named (comma-separated, exact names as in the table header,
@@ -65,12 +71,13 @@ struct Options : bench::CommonOptions {
     int passes = 0;  // fixed passes per run (0: calibrate; --quick: 1)
     std::string only;
     double tolerance = casteljau::kDefaultTolerance;
+    std::string font = CASTELJAU_BENCH_FONT;  // --font: another TrueType or CFF (.otf) font
 };
 
 [[noreturn]] void usage(const char* msg) {
     std::fprintf(stderr,
                  "compare_glyphs: %s\nusage: compare_glyphs [--quick] [--runs R] [--min-time S] [--sizes 12,24,...]\n"
-                 "                      [--only NAMES] [--passes N] [--tolerance PX] [--no-check]\n",
+                 "                      [--only NAMES] [--passes N] [--tolerance PX] [--no-check] [--font FILE]\n",
                  msg);
     std::exit(2);
 }
@@ -91,6 +98,8 @@ Options parse(int argc, char** argv) {
             o.passes = std::max(1, std::atoi(value(i).c_str()));
         } else if (a == "--only") {
             o.only = value(i);
+        } else if (a == "--font") {
+            o.font = value(i);
         } else if (a == "--tolerance") {
             o.tolerance = std::atof(value(i).c_str());
             if (!(o.tolerance > 0)) usage("--tolerance must be positive");
@@ -117,29 +126,50 @@ bool in_list(const std::string& list, const std::string& name) {
 
 // --- casteljau ---------------------------------------------------------------------------------
 
+// How casteljau decides exactness in a run: default options (no topology given), from a verdict
+// decided once per glyph (what the glyph cache does: the font path), or always the exact cells.
+enum class Verdict { PerFill, Cached, ExactCells };
+
 class CasteljauFill final : public Renderer {
 public:
-    CasteljauFill(bool exact, double tol) : exact_(exact) {
+    CasteljauFill(bool exact, double tol, Verdict verdict = Verdict::PerFill) : exact_(exact), verdict_(verdict) {
         opts_.exact_overlaps = exact;
         opts_.tolerance = tol;
+        if (verdict == Verdict::ExactCells) opts_.topology = casteljau::Topology::Overlapping;
     }
-    std::string name() const override { return exact_ ? "casteljau" : "casteljau (exact off)"; }
+    std::string name() const override {
+        if (!exact_) return "casteljau (exact off)";
+        return verdict_ == Verdict::Cached ? "casteljau (font path)"
+                                           : verdict_ == Verdict::ExactCells ? "casteljau (exact cells)" : "casteljau";
+    }
     void prepare(const GlyphSet& set) override {
         set_ = &set;
         buf_.assign(set.max_box_pixels(), 0);
+        verdicts_.clear();
+        simple_ = 0;
+        if (verdict_ == Verdict::Cached)
+            for (const bench::Glyph& g : set.glyphs()) {
+                verdicts_.push_back(casteljau::classify_topology(g.path));
+                simple_ += verdicts_.back() == casteljau::Topology::Simple;
+            }
     }
     Coverage render(std::size_t i) override {
         const bench::Glyph& g = set_->glyphs()[i];
         std::memset(buf_.data(), 0, g.box.pixels());
         sink_.buf = buf_.data();
         sink_.stride = g.box.width;
+        if (verdict_ == Verdict::Cached) opts_.topology = verdicts_[i];
         rast_.fill(g.path, g.to_box, opts_, casteljau::IRect{0, 0, g.box.width, g.box.height}, sink_);
         return {buf_.data(), g.box.width, g.box};
     }
     const casteljau::RasterStats& stats() const { return rast_.last_stats(); }
+    std::size_t simple_glyphs() const { return simple_; }
 
 private:
     bool exact_;
+    Verdict verdict_;
+    std::vector<casteljau::Topology> verdicts_;
+    std::size_t simple_ = 0;
     casteljau::FillOptions opts_;
     const GlyphSet* set_ = nullptr;
     casteljau::Rasterizer rast_;
@@ -241,13 +271,15 @@ std::string fmt(const char* f, double v) {
 int main(int argc, char** argv) {
     const Options opt = parse(argc, argv);
     try {
-        bench::Font font;
+        bench::Font font(opt.font);
         std::vector<std::unique_ptr<Renderer>> rs;
         rs.push_back(std::make_unique<CasteljauFill>(true, opt.tolerance));
         rs.push_back(std::make_unique<CasteljauFill>(false, opt.tolerance));
         rs.push_back(std::make_unique<CasteljauMask>(true, opt.tolerance));
         rs.push_back(std::make_unique<CasteljauMask>(false, opt.tolerance));
         rs.push_back(std::make_unique<FreeTypeRenderer>());
+        rs.push_back(std::make_unique<CasteljauFill>(true, opt.tolerance, Verdict::Cached));
+        rs.push_back(std::make_unique<CasteljauFill>(true, opt.tolerance, Verdict::ExactCells));
 #ifdef CASTELJAU_HAVE_AGG
         rs.push_back(bench::make_agg_renderer());
 #endif
@@ -258,7 +290,7 @@ int main(int argc, char** argv) {
         rs.push_back(bench::make_stb_renderer(false));
         rs.push_back(bench::make_stb_renderer(true));
 #endif
-        const std::size_t kCast = 0, kCastOff = 1, kMask = 2, kMaskOff = 3, kFT = 4;
+        const std::size_t kCast = 0, kCastOff = 1, kMask = 2, kMaskOff = 3, kFT = 4, kFont = 5;
         std::vector<bool> timed(rs.size(), true);
         if (!opt.only.empty())
             for (std::size_t r = 0; r < rs.size(); ++r) timed[r] = in_list(opt.only, rs[r]->name());
@@ -290,7 +322,7 @@ int main(int argc, char** argv) {
 
             // Agreement: every renderer against FreeType, against casteljau and against the exact
             // reference (casteljau at kReferenceTolerance, exact overlaps on), glyph by glyph.
-            CasteljauFill reference(true, kReferenceTolerance);
+            CasteljauFill reference(true, kReferenceTolerance, Verdict::ExactCells);
             reference.prepare(set);
             SizeInfo& in = info[si];
             in = {n, set.total_box_pixels(), 0, 0, 0};
@@ -350,7 +382,8 @@ int main(int argc, char** argv) {
             }
             for (std::size_t r = 0; r < rs.size(); ++r)
                 if (timed[r]) results[si][r].glyphs_per_s = static_cast<double>(n) * results[si][r].passes / best[r];
-            std::fprintf(stderr, "  %d px done\n", opt.sizes[si]);
+            std::fprintf(stderr, "  %d px done (%zu of %zu glyphs proven simple by classify_topology)\n", opt.sizes[si],
+                         static_cast<CasteljauFill*>(rs[kFont].get())->simple_glyphs(), n);
         }
 
         // --- tables (Markdown) ---

@@ -7,8 +7,9 @@
 // casteljau's public split_ring_at_antimeridian). Timed, per round (thread CPU time, best of
 // --rounds; see timer.hpp):
 //   fill:         every feature filled in file order, nonzero, opaque black on a cleared image:
-//                 casteljau separate (Canvas::fill_path, source-over; and with
-//                 FillOptions::exact_overlaps off, plain accumulation), casteljau seamless
+//                 casteljau separate (Canvas::fill_path, source-over; with the topology of each
+//                 feature classified in the timed loop, so simple features are accumulated
+//                 plainly; and with FillOptions::exact_overlaps off, plain accumulation), casteljau seamless
 //                 (AreaCompositor, conflation-free), AGG (rasterizer_scanline_aa + scanline_p8,
 //                 rgba8 pre), Cairo (image surface ARGB32, cairo_fill, antialias default).
 //   fill+stroke:  the same plus a 0.8 px stroke of every ring with round joins: casteljau as the
@@ -112,6 +113,29 @@ int main(int argc, char** argv) {
         Canvas c(pm);
         for (const Path& p : paths) c.fill_path(p, Paint::solid(Color::black()));
     });
+    // The topology verdict decided per feature inside the timed loop (classify_topology, then the
+    // plain accumulation for features proven simple), and its agreement with the exact cells.
+    std::vector<std::uint8_t> exact_alpha(static_cast<std::size_t>(W) * H);
+    for (std::size_t i = 0; i < exact_alpha.size(); ++i) exact_alpha[i] = pm.data()[4 * i + 3];
+    std::size_t simple = 0;
+    const double t_sep_verdict = best_of(rounds, [&] {
+        pm.fill(Color::transparent());
+        Canvas c(pm);
+        simple = 0;
+        for (const Path& p : paths) {
+            c.fill_options().topology = classify_topology(p);
+            simple += c.fill_options().topology == Topology::Simple;
+            c.fill_path(p, Paint::solid(Color::black()));
+        }
+    });
+    const double t_classify = best_of(rounds, [&] {
+        std::size_t n = 0;
+        for (const Path& p : paths) n += classify_topology(p) == Topology::Simple;
+        if (n != simple) std::abort();
+    });
+    int verdict_max_diff = 0;
+    for (std::size_t i = 0; i < exact_alpha.size(); ++i)
+        verdict_max_diff = std::max(verdict_max_diff, std::abs(int(pm.data()[4 * i + 3]) - int(exact_alpha[i])));
     const double t_sep_plain = best_of(rounds, [&] {
         pm.fill(Color::transparent());
         Canvas c(pm);
@@ -246,6 +270,8 @@ int main(int argc, char** argv) {
     const double peer_fill = std::min(t_agg, t_cairo), peer_stroke = std::min(t_agg_stroke, t_cairo_stroke);
     auto row = [](const char* name, double t, double ref) { std::printf("%-44s %10.1f %10.2fx\n", name, t * 1e3, ref / t); };
     row("fill: casteljau separate (source-over)", t_sep, peer_fill);
+    row("fill: casteljau separate, topology per feature", t_sep_verdict, peer_fill);
+    row("  of which classify_topology alone", t_classify, peer_fill);
     row("fill: casteljau separate, exact_overlaps off", t_sep_plain, peer_fill);
     row("fill: casteljau seamless (area compositor)", t_seam, peer_fill);
     row("fill: AGG 2.6", t_agg, peer_fill);
@@ -256,6 +282,8 @@ int main(int argc, char** argv) {
     row("render_map fill (projection included)", t_map, peer_fill);
     row("render_map fill, exact_overlaps off", t_map_plain, peer_fill);
     row("render_map fill+stroke", t_map_stroke, peer_stroke);
+    std::printf("topology per feature: %zu of %zu features simple; max |alpha difference| against the exact cells: %d/255\n",
+                simple, paths.size(), verdict_max_diff);
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
     std::printf("peak RSS: %.1f MB (input file %.1f MB)\n", ru.ru_maxrss / 1024.0, bytes.size() / 1e6);

@@ -211,7 +211,7 @@ TEST_CASE("flatten and fill: more than limits::kMaxFlattenedSegments segments is
 }
 
 TEST_CASE("fill: a rasterizer interrupted by the edge limit renders the next shape as a fresh one does", "[flatten][limits]") {
-    // The limit hit inside the direct path (a small box) leaves its per-cell state half written:
+    // The limit hit inside the engine (a small box) leaves its per-cell state half written:
     // a zigzag drawn twice over the whole box first makes every cell it crosses a candidate.
     Path big;
     for (int pass = 0; pass < 2; ++pass) {

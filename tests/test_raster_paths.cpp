@@ -1,8 +1,7 @@
-// The rasterizer has two ways through: the direct path (the shape's box inside the target fits one
-// buffer: edges accumulate as they are flattened, overlaps found by runs of edges per cell) and the
-// strip path (larger boxes: an edge list swept in strips, overlaps found by per-edge cell tags).
-// Both compute exact coverage, so they must agree; and the direct path must survive a sink that
-// throws halfway. The row scan is SIMD with runtime dispatch: every instruction set this CPU and
+// The rasterizer's one engine has two storage policies: one dense buffer (the shape's box inside
+// the target fits it: edges accumulate as they are flattened) and bands (larger boxes: the edges
+// are kept and swept band by band, each band a dense buffer). Both compute exact coverage, so they
+// must agree; and the engine must survive a sink that throws halfway. The row scan is SIMD with runtime dispatch: every instruction set this CPU and
 // the build support must give the same pixels.
 #include <catch2/catch.hpp>
 #include "raster/simd_dispatch.hpp"
@@ -21,7 +20,7 @@ using namespace casteljau::testing;
 namespace {
 
 // Overlapping, self-intersecting polygons plus curved contours in both orientations, about
-// 900 x 700 px: 630,000 cells, past the direct path's 2^18.
+// 900 x 700 px: 630,000 cells, past one dense buffer's 2^18.
 Path busy_scene() {
     std::mt19937 rng(77);
     Path p;
@@ -43,7 +42,7 @@ Path busy_scene() {
 
 }  // namespace
 
-TEST_CASE("raster paths: the strip path and the direct path (tiles, clipped) agree", "[raster]") {
+TEST_CASE("raster paths: banded and dense storage (tiles, clipped) agree", "[raster]") {
     const Path scene = busy_scene();
     const Affine m = Affine::translate(0.37, 0.61);
     const IRect whole{0, 0, 910, 720};
@@ -53,7 +52,7 @@ TEST_CASE("raster paths: the strip path and the direct path (tiles, clipped) agr
         Rasterizer r;
         const Rendered big = render(r, scene, m, o, whole);
         REQUIRE(big.contract_violation.empty());
-        CHECK(big.stats.strips > 1);  // the strip path
+        CHECK(big.stats.strips > 1);  // bands
         int worst = 0, worst_x = 0, worst_y = 0, direct_tiles = 0, tiles = 0;
         for (int ty = 0; ty < whole.y1; ty += 150) {
             for (int tx = 0; tx < whole.x1; tx += 130) {

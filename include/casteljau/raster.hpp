@@ -3,15 +3,20 @@
 // Pipeline position: Path --(Affine)--> flatten --> clip to the target rectangle --> accumulate
 // cover/area per cell --> per-row prefix sum --> fill rule --> 8-bit coverage spans --> sink.
 // Coverage of a pixel is the exact area of the pixel square covered by the flattened shape under
-// the fill rule, rounded to 1/255. Where two or more edges share a pixel in a way that makes plain
-// accumulation inexact (crossings, overlapping or stacked contours), that pixel is recomputed
-// exactly from the edges inside it (see src/raster/exact_cell.cpp).
+// the fill rule, rounded to 1/255. Plain accumulation (the integral of the winding number over the
+// pixel) is that area exactly wherever the winding number stays within one unit interval. Whether
+// it does is decided per shape before rasterizing (classify_topology, once per outline: the glyph
+// cache keeps each glyph's verdict): a shape proven "simple" (no two segments meet, winding values
+// only 0 and 1, or only 0 and -1: about 97 % of DejaVu Sans glyphs) is accumulated plainly; any
+// other shape, or one whose topology the caller did not give, takes the overlap check, where every
+// pixel in which edges could make accumulation inexact (crossings, overlapping or stacked
+// contours) is recomputed exactly from the edges inside it (see src/raster/exact_cell.cpp).
 //
 // Range: geometry is clipped in double precision before it is converted to float cell coordinates,
 // so any finite coordinate up to limits::kMaxCoordinate is accepted; the target rectangle is at
 // most limits::kMaxCanvasDimension on each side. Memory grows with the clipped bounds of the shape,
 // never with the canvas area: a shape whose clipped bounds hold at most 2^18 pixels is accumulated
-// in one buffer as it is flattened; larger ones are swept in strips of at most 2^18 cells.
+// in one buffer as it is flattened; larger ones are swept in bands (strips) of at most 2^18 cells.
 //
 // Thread-safety: a Rasterizer holds scratch buffers; use one per thread. Masks are values.
 #pragma once
@@ -28,10 +33,32 @@ namespace casteljau {
 
 enum class FillRule { NonZero, EvenOdd };
 
+// What a path's outline allows plain accumulation to do (classify_topology).
+enum class Topology : std::uint8_t {
+    Unknown,      // not decided yet: the rasterizer decides
+    Simple,       // no two segments meet (beyond consecutive ones at their shared point) and the
+                  // winding number takes only the values 0 and 1, or only 0 and -1: plain
+                  // accumulation is exact under both fill rules
+    Overlapping,  // anything else (or not proven simple): pixels where edges interact are computed exactly
+};
+
+// Decides the topology of `path` from its control points, in its own coordinates. The verdict
+// holds for the path under every invertible affine map, so callers may compute it once per outline
+// (the glyph cache does, per glyph and variation instance) and pass it in FillOptions::topology.
+// Each test keeps a margin of 2^-40 of the path's extent, far above double rounding: shapes whose
+// parts touch or nearly touch are "overlapping". Cost: a sweep over segment boxes, O(n log n) for
+// outlines whose segments are apart; bounded work (then "overlapping") for adversarial ones.
+// See src/raster/topology.cpp. Thread-safe (no shared state).
+Topology classify_topology(const Path& path);
+
 struct FillOptions {
     FillRule rule = FillRule::NonZero;
     double tolerance = kDefaultTolerance;  // flattening tolerance in pixels
-    bool exact_overlaps = true;            // recompute multi-edge pixels exactly (off: plain accumulation)
+    bool exact_overlaps = true;            // exact coverage where edges overlap (off: plain accumulation everywhere)
+    // The path's topology when the caller knows it (classify_topology of this very path, under any
+    // affine map): a Simple path is accumulated plainly, which is exact for it; Unknown and
+    // Overlapping take the per-cell overlap check. Only read when exact_overlaps is on.
+    Topology topology = Topology::Unknown;
 };
 
 // Receives coverage one row at a time, rows in increasing y. `coverage[i]` belongs to pixel
@@ -52,7 +79,8 @@ struct Mask {
 struct RasterStats {
     std::size_t segments = 0;        // line segments accumulated
     std::size_t exact_cells = 0;     // cells recomputed exactly
-    std::size_t strips = 0;
+    std::size_t strips = 0;          // dense buffers run: 1, or the bands of a large shape
+    Topology topology = Topology::Unknown;  // the verdict the fill used (Unknown: exact_overlaps off)
 };
 
 class Rasterizer {

@@ -98,10 +98,6 @@ HWY_INLINE double ScanRange(double* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT
     return sum;
 }
 
-double AccumulateRowImpl(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule) {
-    return ScanRange(acc, cov, from, to, start, rule);
-}
-
 // One row (see ScanRows in raster_internal.hpp); valid coverage is cov[from, end), from = end = 0
 // when no block was touched.
 struct ScanSpan {
@@ -195,7 +191,6 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace casteljau::raster {
-CASTELJAU_SIMD_EXPORT(AccumulateRowImpl);
 CASTELJAU_SIMD_EXPORT(ScanRowsImpl);
 
 CASTELJAU_SIMD_EXPORT(RowVectorLanesImpl);
@@ -211,8 +206,5 @@ void row_vector_accumulate(const RowPiece* pieces, std::size_t n, float* acc, in
 }
 void row_vector_emit(const RowVectorRows& rows, SpanSink& sink) { CASTELJAU_SIMD_DISPATCH(RowVectorEmitImpl)(rows, sink); }
 
-double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule) {
-    return CASTELJAU_SIMD_DISPATCH(AccumulateRowImpl)(acc, cov, from, to, start, rule);
-}
 }  // namespace casteljau::raster
 #endif

@@ -14,12 +14,59 @@
 //   3. A = W0 + sum(L x area) fixes W0 (an integer: rounded), and the coverage is
 //      sum(f(W0 + L) x area).
 // Only the cell's own edges are needed, never the rest of its row.
+// Also here: the cell geometry the overlap check shares (cell_portion, segments_meet).
 #include <algorithm>
 #include <cmath>
 
 #include "raster/raster_internal.hpp"
 
 namespace casteljau::raster {
+
+// Cell geometry shared with the overlap check (engine.cpp).
+
+bool segments_meet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+    if (std::max(ax, bx) < std::min(cx, dx) || std::max(cx, dx) < std::min(ax, bx) ||
+        std::max(ay, by) < std::min(cy, dy) || std::max(cy, dy) < std::min(ay, by))
+        return false;
+    const double d1 = orient(cx, cy, dx, dy, ax, ay), d2 = orient(cx, cy, dx, dy, bx, by);
+    const double d3 = orient(ax, ay, bx, by, cx, cy), d4 = orient(ax, ay, bx, by, dx, dy);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+    auto on = [](double px, double py, double qx, double qy, double rx, double ry) {
+        return std::min(px, qx) <= rx && rx <= std::max(px, qx) && std::min(py, qy) <= ry && ry <= std::max(py, qy);
+    };
+    return (d1 == 0 && on(cx, cy, dx, dy, ax, ay)) || (d2 == 0 && on(cx, cy, dx, dy, bx, by)) ||
+           (d3 == 0 && on(ax, ay, bx, by, cx, cy)) || (d4 == 0 && on(ax, ay, bx, by, dx, dy));
+}
+
+
+bool cell_portion(const Edge& e, double cx, double ry, double& ax, double& ay, double& bx, double& by) {
+    // Liang-Barsky clip of the segment to the closed square, keeping the edge's direction.
+    double t0 = 0, t1 = 1;
+    const double dx = e.x1 - e.x0, dy = e.y1 - e.y0;
+    // One reciprocal per axis instead of a division per side (not for tiny steps, whose
+    // reciprocal could overflow: 0 means "divide").
+    const double ix = std::abs(dx) > 1e-200 ? 1.0 / dx : 0.0, iy = std::abs(dy) > 1e-200 ? 1.0 / dy : 0.0;
+    auto clip = [&](double p, double q, double inv) {  // p t <= q; inv = 1 / p, or 0
+        if (p == 0) return q >= 0;
+        const double r = inv != 0 ? q * inv : q / p;
+        if (p < 0) {
+            if (r > t1) return false;
+            if (r > t0) t0 = r;
+        } else {
+            if (r < t0) return false;
+            if (r < t1) t1 = r;
+        }
+        return true;
+    };
+    const double qx0 = e.x0 - cx, qx1 = cx + 1 - e.x0, qy0 = e.y0 - ry, qy1 = ry + 1 - e.y0;
+    if (!clip(-dx, qx0, -ix) || !clip(dx, qx1, ix) || !clip(-dy, qy0, -iy) || !clip(dy, qy1, iy))
+        return false;
+    ax = e.x0 + dx * t0;
+    ay = e.y0 + dy * t0;
+    bx = e.x0 + dx * t1;
+    by = e.y0 + dy * t1;
+    return t1 > t0 || (dx == 0 && dy == 0);
+}
 
 namespace {
 

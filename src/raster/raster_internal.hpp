@@ -1,15 +1,13 @@
 // Internal types of the raster stage, shared by its files:
-//   rasterizer.cpp  flatten straight into edges (clipping them when the shape leaves the target);
-//                   boxes of at most 2^18 cells go to the direct path, larger ones are split into
-//                   strips and driven through the stages below
-//   direct.cpp      the direct path: accumulate while flattening, find overlapping cells by runs
-//                   of edges per cell, resolve them exactly, scan only the touched blocks (or,
-//                   without the overlap check and for narrow shapes, accumulate by row vectors)
-//   accumulate.cpp  walk each edge through the cells of a strip: cover/area into a dense buffer,
-//                   and mark the cells where plain accumulation may be inexact
-//   exact_cell.cpp  exact coverage of a marked cell from the edges inside it
-//   coverage.cpp    per-row prefix sum + fill rule -> 8-bit coverage, and the row-vector
-//                   accumulation of narrow shapes (Highway, runtime dispatch)
+//   rasterizer.cpp    the driver: exactness verdict, the shape's box, dense buffer or bands
+//   edge_builder.hpp  flattened points -> edges local to the box, clipped to it when needed
+//   topology.cpp      classify_topology: may plain accumulation render this path exactly?
+//   engine.hpp/.cpp   the engine: the cell walk (cover/area accumulation), the overlap check by
+//                     visits, and, without the check for narrow shapes, row-vector accumulation
+//   exact_cell.cpp    exact coverage of one cell from the edges inside it, and the cell geometry
+//                     (clip of an edge to a cell, segment meeting test) the overlap check uses
+//   coverage.cpp      per-row prefix sum + fill rule -> 8-bit coverage, row-vector kernels
+//                     (Highway, runtime dispatch)
 #pragma once
 
 #include <cstdint>
@@ -27,43 +25,6 @@ struct Edge {
     double x0, y0, x1, y1;
     std::int32_t prev, next;
 };
-
-// Tag word per cell: the last two edges that touched it (id + 1, 27 bits each), how many pieces
-// touched it (saturating at 3), the directions seen along a polyline through it (to know whether
-// the polyline is monotone in x or in y), whether the pieces form one polyline, and whether the
-// cell is marked for exact recomputation.
-inline constexpr std::uint64_t kTagIdMask = (std::uint64_t(1) << 27) - 1;
-inline constexpr int kTagPrevShift = 27;
-inline constexpr int kTagCountShift = 54;
-inline constexpr int kTagDirShift = 56;  // 4 bits: +x, -x, +y, -y seen
-inline constexpr std::uint64_t kTagDirMask = std::uint64_t(15) << kTagDirShift;
-inline constexpr std::uint64_t kTagChain = std::uint64_t(1) << 62;   // the pieces are one polyline
-inline constexpr std::uint64_t kTagMarked = std::uint64_t(1) << 63;
-
-// (cell, edge) pairs recorded for marked cells: every edge that touches a marked cell is logged.
-struct CellEdge {
-    std::uint32_t cell;
-    std::uint32_t edge;
-    bool operator<(const CellEdge& o) const { return cell != o.cell ? cell < o.cell : edge < o.edge; }
-};
-
-// One strip of rows [y0, y0 + rows) of the shape's bounds, `width` cells wide (plus 2 spill cells).
-struct Strip {
-    int y0 = 0;
-    int rows = 0;
-    int width = 0;
-    std::size_t stride = 0;          // cells per row in acc/tags (width + 2)
-    double* acc = nullptr;           // cover/area accumulation (double: windings of hundreds stay exact)
-    std::uint64_t* tags = nullptr;   // nullptr when exact overlaps are off
-    int* row_min = nullptr;          // first touched cell per row (INT_MAX when untouched)
-    int* row_max = nullptr;          // last touched cell per row (-1 when untouched)
-    const Edge* edges = nullptr;     // all edges (tags refer to them by index)
-    std::vector<std::uint32_t>* marked = nullptr;  // marked cells (row * stride + col)
-    std::vector<CellEdge>* log = nullptr;          // edges touching marked cells
-};
-
-// Walks edge `e` (index `id`) through the strip's rows and cells.
-void accumulate_edge(const Edge& e, std::uint32_t id, Strip& s);
 
 // The part of `e` inside the closed cell [cx, cx + 1] x [ry, ry + 1]; false when there is none.
 bool cell_portion(const Edge& e, double cx, double ry, double& ax, double& ay, double& bx, double& by);
@@ -102,7 +63,7 @@ inline double orient(double ax, double ay, double bx, double by, double cx, doub
     return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
 }
 
-// Do the closed segments ab and cd share a point? (accumulate.cpp)
+// Do the closed segments ab and cd share a point? (exact_cell.cpp)
 bool segments_meet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy);
 
 // 8-bit coverage of an exact area in [0, 1], rounded to nearest.
@@ -125,11 +86,7 @@ inline std::uint8_t coverage_u8(double a, FillRule rule) {
     return static_cast<std::uint8_t>(v * 255.0 + 0.5);
 }
 
-// Prefix sum over acc[from, to) starting from `start`, mapped through the fill rule into 8-bit
-// coverage cov[from, to). Returns the running sum after `to`. Clears acc[from, to).
-double accumulate_row(double* acc, std::uint8_t* cov, int from, int to, double start, FillRule rule);
-
-// The rows of the direct path. Per row, bit b of its `words` 64-bit words of `blocks` says cells
+// The rows of the engine's dense buffer. Per row, bit b of its `words` 64-bit words of `blocks` says cells
 // [b << kScanBlockShift, (b + 1) << kScanBlockShift) were touched. Runs of touched blocks are
 // prefix-summed into cov and cleared in acc; the gaps between them get the constant coverage of the
 // running sum. Cells at or past `w` (spill cells, up to `stride`) are cleared, never delivered.
@@ -149,7 +106,7 @@ struct ScanRows {
 };
 void scan_rows(const ScanRows& rows, SpanSink& sink);
 
-// Row-vector accumulation (the direct path for narrow shapes without the overlap check). A piece of an edge inside pixel row
+// Row-vector accumulation (the engine's accumulation for narrow shapes when exactness is not asked for). A piece of an edge inside pixel row
 // r, spanning [xl, xr] (xr > xl) with signed height dy, adds to pixel c of the row the integral
 // over its height of clamp(c + 1 - x, 0, 1): its part inside [c, c + 1] contributes its height
 // times the distance of that part's middle to the pixel's right side, its part left of the pixel

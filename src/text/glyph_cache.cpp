@@ -2,7 +2,9 @@
 //
 // glyph outline (font units) --[s 0 0 -s dx dy]--> Rasterizer::fill_mask --> Mask stored under
 // (font, variation, glyph, size, subpixel offset). The whole cache is emptied when the masks pass
-// the byte budget.
+// the byte budget. Each glyph's topology (classify_topology: may plain accumulation render it
+// exactly?) is decided once per (font, variation, glyph) in font units, kept across sizes and
+// offsets (it holds under every affine map), and handed to the rasterizer with the fill.
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
@@ -64,6 +66,7 @@ struct GlyphCache::Impl {
     FillOptions fill;
     std::unordered_map<MaskKey, Mask, MaskKeyHash> masks;
     std::unordered_map<OutlineKey, Path, OutlineKeyHash> outlines;
+    std::unordered_map<OutlineKey, Topology, OutlineKeyHash> topologies;  // a few bytes each, not counted
     std::unordered_map<const void*, std::weak_ptr<const int>> fonts;  // lifetime tokens seen
     GlyphCacheStats stats;
     Path scratch;
@@ -71,6 +74,7 @@ struct GlyphCache::Impl {
     void clear() {
         masks.clear();
         outlines.clear();
+        topologies.clear();
         fonts.clear();
         stats.entries = 0;
         stats.bytes = 0;
@@ -84,6 +88,7 @@ struct GlyphCache::Impl {
         if (stats.bytes + bytes > max_bytes && (!masks.empty() || !outlines.empty())) {
             masks.clear();
             outlines.clear();
+            topologies.clear();
             stats.entries = 0;
             stats.bytes = 0;
             ++stats.flushes;
@@ -144,7 +149,12 @@ const Mask& GlyphCache::mask(const Font& font, std::uint32_t glyph, double size,
     Mask m;
     if (!c.scratch.empty()) {
         const Affine to_pixels = font.glyph_transform(size, offset);
-        m = raster.fill_mask(c.scratch, to_pixels, c.fill);
+        FillOptions fill = c.fill;
+        const OutlineKey okey{&font.impl(), font.variation_key(), glyph};
+        auto t = c.topologies.find(okey);
+        if (t == c.topologies.end()) t = c.topologies.emplace(okey, classify_topology(c.scratch)).first;
+        fill.topology = t->second;
+        m = raster.fill_mask(c.scratch, to_pixels, fill);
     }
     c.admit(m.data.size() + kEntryOverhead);
     return c.masks.emplace(key, std::move(m)).first->second;

@@ -1,15 +1,16 @@
-// Raster stage, direct path: accumulate edges as the flattener emits them, check overlaps by
-// visits, resolve the few cells that need it exactly, scan the rows.
+// Raster stage, the engine: accumulate edges as they arrive, check overlaps by visits, resolve the
+// few cells that need it exactly, scan the rows.
 //
-// Used when the shape's clipped bounds fit one buffer (rasterizer.cpp decides). Accumulation is the
-// cover/area scheme of accumulate.cpp (acc[k] gets the piece's height times the part of cell k to
-// its right, acc[k + 1] the rest; a prefix sum along the row gives the integral of the winding
-// number over each pixel), on a dense double buffer. Without the overlap check, shapes at most
+// One dense buffer per run: the shape's whole box, or one band of a larger box (rasterizer.cpp
+// decides). Accumulation is the cover/area scheme of FreeType's gray rasterizer and font-rs: for a
+// piece of an edge inside one row with signed height d, acc[k] gets d times the part of cell k to
+// the piece's right, acc[k + 1] the rest; a prefix sum along the row gives the integral of the
+// winding number over each pixel. The buffer is double: windings of hundreds stay exact. Without the overlap check, shapes at most
 // kRowVectorMax SIMD vectors wide use row vectors instead (RowPiece in raster_internal.hpp): the
 // walk lists each edge's pieces per row, and finish() adds every piece's area to its whole row.
 //
-// Overlap check. Plain accumulation is exact in a cell whose winding numbers lie in one unit
-// interval. Edges arrive in contour order, so the walk knows, for every cell it enters, that the
+// Overlap check (only for shapes not proven simple before rasterizing: see topology.cpp). Plain
+// accumulation is exact in a cell whose winding numbers lie in one unit interval. Edges arrive in contour order, so the walk knows, for every cell it enters, that the
 // contour is starting a new "visit" there: a maximal run of consecutive edges inside that cell.
 //   - A cell with one visit whose run cannot cross itself and which enters and leaves through the
 //     cell's boundary is split by it into two regions whose windings differ by one: exact. A run
@@ -35,7 +36,7 @@
 #include <string>
 
 #include "casteljau/error.hpp"
-#include "raster/direct.hpp"
+#include "raster/engine.hpp"
 
 namespace casteljau::raster {
 
@@ -83,7 +84,7 @@ bool ends_alternate(double ta0, double ta1, double tb0, double tb1) {
 
 }  // namespace
 
-void Direct::begin(int w, int h, bool track) {
+void Engine::begin(int w, int h, bool track, bool exact) {
     w_ = w;
     h_ = h;
     stride_ = static_cast<std::size_t>(w) + 2;
@@ -101,7 +102,7 @@ void Direct::begin(int w, int h, bool track) {
     }
     dirty_ = true;
     const int lanes = row_vector_lanes();
-    vec_ = !track && w <= kRowVectorMax * lanes;
+    vec_ = !track && !exact && w <= kRowVectorMax * lanes;
     if (vec_) {
         vstride_ = std::max(1, (w + lanes - 1) / lanes) * lanes;
         const std::size_t n = static_cast<std::size_t>(vstride_) * static_cast<std::size_t>(h);
@@ -124,7 +125,7 @@ void Direct::begin(int w, int h, bool track) {
     px_ = py_ = NAN;
 }
 
-void Direct::contour_end() {
+void Engine::contour_end() {
     // The run through the contour's start vertex: its last part (now) continues into its first.
     if (track_ && cur_visit_ >= 0 && static_cast<std::size_t>(cur_visit_) > contour_visit_ &&
         contour_visit_ < visits_.size() && contour_started_ && px_ == sx_ && py_ == sy_) {
@@ -151,7 +152,7 @@ void Direct::contour_end() {
 }
 
 // The pieces of visit v (and of its merged first part) inside cell (col, row), in travel order.
-void Direct::gather(const Visit& v, int col, int row, std::vector<ExactScratch::Piece>& out) const {
+void Engine::gather(const Visit& v, int col, int row, std::vector<ExactScratch::Piece>& out) const {
     out.clear();
     auto add = [&](const Visit& u) {
         for (std::uint32_t s = u.s0; s <= u.s1; ++s) {
@@ -167,7 +168,7 @@ void Direct::gather(const Visit& v, int col, int row, std::vector<ExactScratch::
 
 // Two monotone runs in one cell: harmless when they do not meet and the end of one is next to the
 // start of the other around the cell's boundary (see the top of the file).
-bool Direct::harmless_two(const Visit& a, const Visit& b, int col, int row) {
+bool Engine::harmless_two(const Visit& a, const Visit& b, int col, int row) {
     // Closed form for the common case (the two sides of a stem): each run is one edge that passes
     // through the cell (no end point inside the open cell), so its piece is its whole line inside
     // the cell and splits the cell in two. When each edge lies strictly on one side of the other's
@@ -211,7 +212,7 @@ bool Direct::harmless_two(const Visit& a, const Visit& b, int col, int row) {
 
 // Where run v enters and leaves the cell, as boundary parameters; false when its first or last
 // edge has no piece of positive length in the cell or an end of the run is inside the cell.
-bool Direct::run_ends(const Visit& v, int col, int row, double& t0, double& t1) const {
+bool Engine::run_ends(const Visit& v, int col, int row, double& t0, double& t1) const {
     double ax, ay, bx, by;
     if (!cell_portion(segs_[v.s0], col, row, ax, ay, bx, by) || (ax == bx && ay == by)) return false;
     t0 = boundary_param(ax - col, ay - row);
@@ -222,7 +223,7 @@ bool Direct::run_ends(const Visit& v, int col, int row, double& t0, double& t1) 
 
 // The edges of run v in travel order (its merged first part first) into out[0, kMaxRunEdges);
 // returns how many, or -1 when there are more.
-int Direct::run_edges(const Visit& v, std::uint32_t* out) const {
+int Engine::run_edges(const Visit& v, std::uint32_t* out) const {
     int n = 0;
     auto add = [&](const Visit& u) {
         for (std::uint32_t s = u.s0; s <= u.s1; ++s) {
@@ -238,7 +239,7 @@ int Direct::run_edges(const Visit& v, std::uint32_t* out) const {
 // A run that cannot cross itself: monotone in x or in y, at most two edges (one bend), or (up to
 // kMaxRunEdges edges) no two of its edges meet except consecutive ones at their shared vertex,
 // and no two consecutive ones fold back onto each other.
-bool Direct::simple_run(const Visit& v) const {
+bool Engine::simple_run(const Visit& v) const {
     if (monotone(v.dirs)) return true;
     std::uint32_t ids[kMaxRunEdges];
     const int n = run_edges(v, ids);
@@ -263,7 +264,7 @@ bool Direct::simple_run(const Visit& v) const {
 // cell's boundary, so the windings in the cell are those met going around the boundary, where
 // they change by -1 at every entry and +1 at every exit: accumulation is exact when they take
 // two values at most.
-bool Direct::harmless_many(const Visit* const* runs, int n, int col, int row) const {
+bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) const {
     std::uint32_t ids[kMaxRuns][kMaxRunEdges];
     int counts[kMaxRuns];
     struct End {
@@ -303,7 +304,7 @@ bool Direct::harmless_many(const Visit* const* runs, int n, int col, int row) co
     return hi - lo <= 1;
 }
 
-void Direct::classify() {
+void Engine::classify() {
     exact_.clear();
     exact_at_.clear();
     exact_ids_.clear();
@@ -339,7 +340,7 @@ void Direct::classify() {
     exact_at_.push_back(static_cast<std::uint32_t>(exact_ids_.size()));
 }
 
-void Direct::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats) {
+void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats) {
     stats.segments = count_;
     stats.strips = 1;
     if (track_) {

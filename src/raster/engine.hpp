@@ -1,5 +1,5 @@
-// Internal: the direct path of the raster stage (see direct.cpp). The per-edge walk is here, in
-// the header, so that it inlines into the flattener's loop in rasterizer.cpp.
+// Internal: the raster stage's engine (see engine.cpp). The per-edge cell walk is here, in the
+// header, so that it inlines into the flattener's loop in rasterizer.cpp.
 #pragma once
 
 #include <algorithm>
@@ -10,14 +10,16 @@
 
 namespace casteljau::raster {
 
-// The direct path (direct.cpp), used when the shape's clipped bounds fit one buffer: edges are
-// accumulated the moment the flattener produces them, with no edge list and no strips, and the
+// The engine (engine.cpp): one dense buffer of w x h cells, the whole shape's box or one band of
+// it (rasterizer.cpp chooses). Edges are accumulated as they arrive, in contour order, and the
 // overlap check works on "visits" (maximal runs of consecutive edges of one contour inside one
-// cell) instead of per-edge tags. See the comment at the top of direct.cpp.
-class Direct {
+// cell). See the comment at the top of engine.cpp.
+class Engine {
 public:
-    // Starts a shape of w x h cells. `track`: record visits for the exact overlap check.
-    void begin(int w, int h, bool track);
+    // Starts a shape of w x h cells. `track`: record visits for the exact overlap check. `exact`:
+    // the coverage must be the exact area correctly rounded, so accumulate in double (the cell
+    // walk); otherwise narrow shapes may use the float row vectors.
+    void begin(int w, int h, bool track, bool exact);
     // One straight edge in cell coordinates (clamped to [0, w] x [0, h]).
     inline void push(double x0, double y0, double x1, double y1);
     // The current contour is complete (its closing edge was pushed).
@@ -103,7 +105,7 @@ private:
     bool contour_started_ = false;
 };
 
-[[gnu::always_inline]] inline void Direct::touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits) {
+[[gnu::always_inline]] inline void Engine::touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits) {
     if (cell == cur_cell_) {
         Visit& v = visits_[static_cast<std::size_t>(cur_visit_)];
         v.s1 = sid;
@@ -127,7 +129,7 @@ private:
 }
 
 // Marks cells [c0, c1] of row r as touched.
-[[gnu::always_inline]] inline void Direct::mark(int r, int c0, int c1) {
+[[gnu::always_inline]] inline void Engine::mark(int r, int c0, int c1) {
     std::uint64_t* m = blocks_.data() + static_cast<std::size_t>(r) * words_;
     const unsigned b0 = static_cast<unsigned>(c0) >> kBlockShift, b1 = static_cast<unsigned>(c1) >> kBlockShift;
     if (b1 < 64) {
@@ -138,14 +140,22 @@ private:
 }
 
 // One piece of an edge for the row-vector accumulation; c0 = its first column.
-[[gnu::always_inline]] inline void Direct::add_piece(int r, int c0, double xl, double xr, double dy) {
+[[gnu::always_inline]] inline void Engine::add_piece(int r, int c0, double xl, double xr, double dy) {
     pieces_.push_back(make_row_piece(r, static_cast<float>(xl), static_cast<float>(xr), static_cast<float>(dy)));
     int& from = row_from_[static_cast<std::size_t>(r)];
     if (c0 < from) from = c0;
 }
 
+// The cover/area step, the only one: a piece of signed height d spanning [u0, u1] inside cell c
+// of a row adds d times the part of the cell right of it to acc[c], the rest of d to acc[c + 1].
+[[gnu::always_inline]] inline void add_cell(double* acc, int c, double d, double u0, double u1) {
+    const double a = d * ((c + 1) - 0.5 * (u0 + u1));
+    acc[c] += a;
+    acc[c + 1] += d - a;
+}
+
 template <bool kTrack, bool kVec>
-[[gnu::always_inline]] inline void Direct::row_piece(int r, double xa, double ya, double xb, double yb,
+[[gnu::always_inline]] inline void Engine::row_piece(int r, double xa, double ya, double xb, double yb,
                                                      std::uint32_t sid, std::uint8_t bits) {
     const double dy = yb - ya;
     const double xl = xa < xb ? xa : xb, xr = xa < xb ? xb : xa;
@@ -158,9 +168,7 @@ template <bool kTrack, bool kVec>
     }
     double* acc = acc_.data() + static_cast<std::size_t>(r) * stride_;
     if (c1 <= c0) {
-        const double a = dy * ((c0 + 1) - 0.5 * (xl + xr));
-        acc[c0] += a;
-        acc[c0 + 1] += dy - a;
+        add_cell(acc, c0, dy, xl, xr);
         mark(r, c0, c0 + 1);
         if constexpr (kTrack) {
             if (xl == xr && xl == c0) cur_cell_ = kNoCell;  // on the cell's left side: no visit
@@ -178,10 +186,7 @@ template <bool kTrack, bool kVec>
         double u0 = xa;
         for (int c = c0; c <= c1; ++c) {
             const double u1 = c == c1 ? xb : c + 1.0;
-            const double d = s * (u1 - u0);
-            const double a = d * ((c + 1) - 0.5 * (u0 + u1));
-            acc[c] += a;
-            acc[c + 1] += d - a;
+            add_cell(acc, c, s * (u1 - u0), u0, u1);
             if constexpr (kTrack) touch(base + static_cast<std::uint32_t>(c), sid, bits);
             u0 = u1;
         }
@@ -189,17 +194,14 @@ template <bool kTrack, bool kVec>
         double u1 = xa;
         for (int c = c1; c >= c0; --c) {
             const double u0 = c == c0 ? xb : static_cast<double>(c);
-            const double d = s * (u1 - u0);
-            const double a = d * ((c + 1) - 0.5 * (u0 + u1));
-            acc[c] += a;
-            acc[c + 1] += d - a;
+            add_cell(acc, c, s * (u1 - u0), u0, u1);
             if constexpr (kTrack) touch(base + static_cast<std::uint32_t>(c), sid, bits);
             u1 = u0;
         }
     }
 }
 
-inline void Direct::push(double x0, double y0, double x1, double y1) {
+inline void Engine::push(double x0, double y0, double x1, double y1) {
     const double W = w_, H = h_;
     x0 = std::clamp(x0, 0.0, W);
     x1 = std::clamp(x1, 0.0, W);
@@ -215,7 +217,7 @@ inline void Direct::push(double x0, double y0, double x1, double y1) {
 }
 
 template <bool kTrack, bool kVec>
-[[gnu::always_inline]] inline void Direct::walk(double x0, double y0, double x1, double y1) {
+[[gnu::always_inline]] inline void Engine::walk(double x0, double y0, double x1, double y1) {
     std::uint32_t sid = 0;
     std::uint8_t bits = 0;
     if constexpr (kTrack) {

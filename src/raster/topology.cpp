@@ -1,0 +1,523 @@
+// Raster stage, topology: decides before rasterizing whether plain accumulation is exact for a
+// path (classify_topology in include/casteljau/raster.hpp).
+//
+// Plain cover/area accumulation gives each pixel the integral of the winding number over it. That
+// is the covered area exactly when the winding number takes only the values 0 and 1 (or only 0 and
+// -1) over the whole plane: then nonzero and even-odd agree with |integral| in every pixel. The
+// classifier proves this from the path's control points, in the path's own coordinates, in three
+// steps:
+//   1. No segment crosses itself (a cubic must have control points monotone in x or in y; lines,
+//      quadratics and conics cannot), and no two segments meet, except consecutive segments of a
+//      contour at their shared end point.
+//      Every segment (line, quadratic, cubic, conic with a positive weight) lies in the convex hull
+//      of its control points, and so does every chord the flattener draws between two of its
+//      points. Two segments are apart when a line separates their hulls: the candidate lines run
+//      through two control points of either segment, or perpendicular to such a pair. When no
+//      candidate separates them, the larger is split in halves (de Casteljau) and the halves are
+//      tested, to a fixed depth. Consecutive segments meet at one point S; they meet nowhere else
+//      when the directions from S to their other control points fill two disjoint angular sectors,
+//      each under a half turn (else both are split and the parts tested again). Segments are
+//      paired on a uniform grid over their boxes, so far-apart segments cost nothing. Pairs are
+//      decided on whole segments (no splitting): the flattener's chords can span any part of a
+//      segment but stay inside its whole hull, so the verdict holds for the flattened polygon at
+//      any tolerance.
+//   2. So every contour is a simple closed curve and contours do not meet. Its orientation is the
+//      sign of its area (closed-form Bezier area).
+//   3. The winding number of every region: a region touches some contour A, on A's inside or its
+//      outside, so it is w(A) or w(A) + orientation(A), where w(A) is the winding number of the
+//      other contours at a point of A (the same all along A since no contour meets A). Winding
+//      numbers at a point P come from control polygons: a segment may be replaced by its control
+//      polygon without changing the winding number around any P outside its hull (the straight
+//      homotopy between them stays inside the hull), and segments whose hull holds P are split.
+// Every test is decided with a margin of 2^-40 of the path's extent (2^-20 rad for sectors), far
+// above double rounding: a "simple" verdict is never an artefact of rounding, and configurations
+// that touch or come closer than the margin are "overlapping". Nothing here depends on the affine
+// map later applied (nor on the flattening tolerance), since affine maps keep convex hulls, separating lines, crossings and
+// orientations (a mirror flips every orientation together, which keeps winding values in {0, s}).
+// A work budget bounds the splitting; past it the verdict is "overlapping" (the exact path).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "casteljau/raster.hpp"
+
+namespace casteljau {
+
+namespace {
+
+struct Seg {
+    Point p[4];
+    int n = 2;          // control points: 2 line, 3 quadratic or conic, 4 cubic
+    bool conic = false;
+    double w = 1;       // conic weight
+    int contour = 0;
+    int index = 0;      // position in its contour
+    Rect box;
+};
+
+Rect box_of(const Seg& s) {
+    Rect r{s.p[0].x, s.p[0].y, s.p[0].x, s.p[0].y};
+    for (int i = 1; i < s.n; ++i) {
+        r.x0 = std::min(r.x0, s.p[i].x);
+        r.y0 = std::min(r.y0, s.p[i].y);
+        r.x1 = std::max(r.x1, s.p[i].x);
+        r.y1 = std::max(r.y1, s.p[i].y);
+    }
+    return r;
+}
+
+inline Point mid(Point a, Point b) { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}; }
+inline double cross(Point a, Point b) { return a.x * b.y - a.y * b.x; }
+
+// Splits s at t = 1/2 (parameter midpoint; for a conic, of its standard parametrization).
+void split(const Seg& s, Seg& a, Seg& b) {
+    a = s;
+    b = s;
+    if (s.conic) {
+        // Homogeneous de Casteljau: (p0, 1), (w p1, w), (p2, 1); both halves get weight sqrt((1 + w) / 2).
+        const double w = s.w;
+        const Point q0{(s.p[0].x + w * s.p[1].x) / (1 + w), (s.p[0].y + w * s.p[1].y) / (1 + w)};
+        const Point q1{(w * s.p[1].x + s.p[2].x) / (1 + w), (w * s.p[1].y + s.p[2].y) / (1 + w)};
+        const Point m{(s.p[0].x + 2 * w * s.p[1].x + s.p[2].x) / (2 + 2 * w),
+                      (s.p[0].y + 2 * w * s.p[1].y + s.p[2].y) / (2 + 2 * w)};
+        a.p[1] = q0;
+        a.p[2] = m;
+        b.p[0] = m;
+        b.p[1] = q1;
+        a.w = b.w = std::sqrt(0.5 * (1 + w));
+    } else if (s.n == 2) {
+        const Point m = mid(s.p[0], s.p[1]);
+        a.p[1] = m;
+        b.p[0] = m;
+    } else if (s.n == 3) {
+        const Point m01 = mid(s.p[0], s.p[1]), m12 = mid(s.p[1], s.p[2]), m = mid(m01, m12);
+        a.p[1] = m01;
+        a.p[2] = m;
+        b.p[0] = m;
+        b.p[1] = m12;
+    } else {
+        const Point m01 = mid(s.p[0], s.p[1]), m12 = mid(s.p[1], s.p[2]), m23 = mid(s.p[2], s.p[3]);
+        const Point m012 = mid(m01, m12), m123 = mid(m12, m23), m = mid(m012, m123);
+        a.p[1] = m01;
+        a.p[2] = m012;
+        a.p[3] = m;
+        b.p[0] = m;
+        b.p[1] = m123;
+        b.p[2] = m23;
+    }
+    a.box = box_of(a);
+    b.box = box_of(b);
+}
+
+class Classifier {
+public:
+    Topology run(const Path& path);
+
+private:
+    std::vector<Seg> segs_;
+    std::vector<std::size_t> contour_at_;  // first segment of each contour (+ end)
+    double delta_ = 0;                     // distance margin (path units)
+    long budget_ = 0;                      // hull tests left
+
+    void add_contour(std::vector<Seg>& c);
+    bool boxes_apart(const Rect& a, const Rect& b) const {
+        return a.x1 + delta_ < b.x0 || b.x1 + delta_ < a.x0 || a.y1 + delta_ < b.y0 || b.y1 + delta_ < a.y0;
+    }
+    bool separated(const Point* a, int na, const Point* b, int nb);
+    bool disjoint(const Seg& a, const Seg& b, int depth);
+    bool sectors_apart(const Seg& a, const Seg& b) const;
+    bool meet_only_at_end(const Seg& a, const Seg& b, int depth);
+    bool winding_about(const Seg& s, Point p, int depth, int& w);
+    bool orientation(std::size_t c, int& o) const;
+};
+
+// Is there a line, through two control points of a or of b or perpendicular to such a pair, with
+// a's hull and b's hull strictly on its two sides (by more than delta)?
+bool Classifier::separated(const Point* a, int na, const Point* b, int nb) {
+    --budget_;
+    auto try_dir = [&](Point o, Point d) {
+        const double len = std::max(std::abs(d.x), std::abs(d.y));
+        if (len == 0) return false;
+        const double margin = delta_ * len;
+        double amin = INFINITY, amax = -INFINITY, bmin = INFINITY, bmax = -INFINITY;
+        for (int i = 0; i < na; ++i) {
+            const double v = cross(d, a[i] - o);
+            amin = std::min(amin, v);
+            amax = std::max(amax, v);
+        }
+        for (int i = 0; i < nb; ++i) {
+            const double v = cross(d, b[i] - o);
+            bmin = std::min(bmin, v);
+            bmax = std::max(bmax, v);
+        }
+        return amax + margin < bmin || bmax + margin < amin;
+    };
+    for (int pass = 0; pass < 2; ++pass) {
+        const Point* q = pass == 0 ? a : b;
+        const int n = pass == 0 ? na : nb;
+        for (int i = 0; i < n; ++i)
+            for (int k = i + 1; k < n; ++k) {
+                const Point d = q[k] - q[i];
+                if (try_dir(q[i], d) || try_dir(q[i], Point{-d.y, d.x})) return true;
+            }
+    }
+    return false;
+}
+
+bool Classifier::disjoint(const Seg& a, const Seg& b, int depth) {
+    if (boxes_apart(a.box, b.box)) return true;
+    if (budget_ <= 0) return false;
+    if (a.n == 2 && b.n == 2) {
+        // Two straight segments are apart when the line of one has both ends of the other
+        // strictly on one side; they cross when each line separates the other's ends; anything
+        // else (collinear, nearly touching) goes to the general test.
+        auto side = [&](const Seg& u, Point q) {
+            const Point d = u.p[1] - u.p[0];
+            const double v = cross(d, q - u.p[0]);
+            const double margin = delta_ * std::max(std::abs(d.x), std::abs(d.y));
+            return v > margin ? 1 : (v < -margin ? -1 : 0);
+        };
+        const int s0 = side(a, b.p[0]), s1 = side(a, b.p[1]);
+        if (s0 != 0 && s0 == s1) return true;
+        const int t0 = side(b, a.p[0]), t1 = side(b, a.p[1]);
+        if (t0 != 0 && t0 == t1) return true;
+        if (s0 * s1 < 0 && t0 * t1 < 0) return false;  // a proper crossing
+    }
+    if (separated(a.p, a.n, b.p, b.n)) return true;
+    if (depth == 0) return false;
+    Seg h0, h1;
+    const bool split_a = std::max(a.box.width(), a.box.height()) >= std::max(b.box.width(), b.box.height());
+    split(split_a ? a : b, h0, h1);
+    const Seg& other = split_a ? b : a;
+    return disjoint(h0, other, depth - 1) && disjoint(h1, other, depth - 1);
+}
+
+// a ends where b starts (at S). The directions from S to a's other control points span a sector
+// under a half turn, so do b's, and the two sectors are apart by more than the angular margin:
+// then the hulls share S only.
+bool Classifier::sectors_apart(const Seg& a, const Seg& b) const {
+    constexpr double kTwoPi = 2 * std::numbers::pi;
+    constexpr double kAngleMargin = 1.0 / (1 << 20);
+    const Point s = b.p[0];
+    const double min_len = delta_ * double(1 << 10);  // angles of shorter vectors are not trusted
+    struct Sector {
+        double start, length;
+    };
+    auto sector = [&](const Point* q, int n, Sector& out) {
+        double ang[3];
+        int k = 0;
+        for (int i = 0; i < n; ++i) {
+            const Point v = q[i] - s;
+            if (v.x == 0 && v.y == 0) continue;
+            if (std::max(std::abs(v.x), std::abs(v.y)) < min_len) return false;
+            ang[k++] = std::atan2(v.y, v.x);
+        }
+        if (k == 0) return false;
+        for (int i = 1; i < k; ++i)  // insertion sort of at most three angles
+            for (int j = i; j > 0 && ang[j] < ang[j - 1]; --j) std::swap(ang[j], ang[j - 1]);
+        // The sector is the circle minus its largest gap between consecutive directions.
+        double gap = ang[0] + kTwoPi - ang[k - 1];
+        int after = 0;
+        for (int i = 1; i < k; ++i)
+            if (ang[i] - ang[i - 1] > gap) {
+                gap = ang[i] - ang[i - 1];
+                after = i;
+            }
+        out = {ang[after], kTwoPi - gap};
+        return out.length < std::numbers::pi - kAngleMargin;
+    };
+    auto inside = [&](double phi, const Sector& sec) {
+        double d = std::fmod(phi - sec.start, kTwoPi);
+        if (d < 0) d += kTwoPi;
+        return d <= sec.length + kAngleMargin || d >= kTwoPi - kAngleMargin;
+    };
+    Sector sa, sb;
+    // a's other points: all but its end; b's: all but its start.
+    if (!sector(a.p, a.n - 1, sa) || !sector(b.p + 1, b.n - 1, sb)) return false;
+    return !inside(sa.start, sb) && !inside(sb.start, sa);
+}
+
+bool Classifier::meet_only_at_end(const Seg& a, const Seg& b, int depth) {
+    if (budget_ <= 0) return false;
+    --budget_;
+    if (a.n == 2 && b.n == 2) {
+        // Two straight segments from S meet only at S unless they fold back onto each other:
+        // apart when they turn by more than the margin, or continue forwards.
+        const Point u = a.p[0] - b.p[0], v = b.p[1] - b.p[0];
+        const double lu = std::max(std::abs(u.x), std::abs(u.y)), lv = std::max(std::abs(v.x), std::abs(v.y));
+        const double min_len = delta_ * double(1 << 10);
+        if (lu >= min_len && lv >= min_len) {
+            const double c = cross(u, v), dot = u.x * v.x + u.y * v.y;
+            // |u| |v| <= 2 lu lv: the turn exceeds the angular margin, or u and v point apart.
+            if (std::abs(c) > 2 * lu * lv / double(1 << 20) || dot < -0.5 * lu * lv) return true;
+        }
+    }
+    if (sectors_apart(a, b)) return true;
+    if (depth == 0) return false;
+    Seg a0, a1, b0, b1;
+    split(a, a0, a1);
+    split(b, b0, b1);
+    return disjoint(a0, b, depth - 1) && disjoint(a1, b1, depth - 1) && meet_only_at_end(a1, b0, depth - 1);
+}
+
+// Adds to w the crossings of s's control polygon with the ray from p to +x (Sunday's rule: +1
+// upwards with p on the left), splitting s while p lies in its hull.
+bool Classifier::winding_about(const Seg& s, Point p, int depth, int& w) {
+    if (budget_ <= 0) return false;
+    const bool apart = boxes_apart(s.box, Rect{p.x, p.y, p.x, p.y}) || separated(s.p, s.n, &p, 1);
+    if (!apart) {
+        if (depth == 0) return false;
+        Seg h0, h1;
+        split(s, h0, h1);
+        return winding_about(h0, p, depth - 1, w) && winding_about(h1, p, depth - 1, w);
+    }
+    for (int i = 0; i + 1 < s.n; ++i) {
+        const Point u = s.p[i], v = s.p[i + 1];
+        const double side = cross(v - u, p - u);  // > 0: p left of u -> v
+        if (u.y <= p.y) {
+            if (v.y > p.y && side > 0) ++w;
+        } else if (v.y <= p.y && side < 0) {
+            --w;
+        }
+    }
+    return true;
+}
+
+// Sign of contour c's area (closed-form areas of lines, quadratics and cubics relative to the
+// contour's first point; a conic's bulge lies between 0 and its control triangle, so both bounds
+// must agree). False when the area is within the margin of zero.
+bool Classifier::orientation(std::size_t c, int& o) const {
+    const Point origin = segs_[contour_at_[c]].p[0];
+    double lo = 0, hi = 0;  // twice the area, bounds
+    double scale = 0;
+    for (std::size_t i = contour_at_[c]; i < contour_at_[c + 1]; ++i) {
+        const Seg& s = segs_[i];
+        Point q[4];
+        for (int k = 0; k < s.n; ++k) {
+            q[k] = s.p[k] - origin;
+            scale = std::max({scale, std::abs(q[k].x), std::abs(q[k].y)});
+        }
+        double a = 0;
+        if (s.n == 2) {
+            a = cross(q[0], q[1]);
+        } else if (s.conic) {
+            const double chord = cross(q[0], q[2]);
+            const double tri = cross(q[1] - q[0], q[2] - q[1]);
+            lo += chord + std::min(0.0, tri);
+            hi += chord + std::max(0.0, tri);
+            continue;
+        } else if (s.n == 3) {
+            a = (2 * cross(q[0], q[1]) + cross(q[0], q[2]) + 2 * cross(q[1], q[2])) / 3;
+        } else {
+            a = 0.6 * cross(q[0], q[1]) + 0.3 * cross(q[0], q[2]) + 0.1 * cross(q[0], q[3]) + 0.3 * cross(q[1], q[2]) +
+                0.3 * cross(q[1], q[3]) + 0.6 * cross(q[2], q[3]);
+        }
+        lo += a;
+        hi += a;
+    }
+    const double margin = delta_ * scale * 64;
+    if (lo > margin) o = 1;
+    else if (hi < -margin) o = -1;
+    else return false;
+    return true;
+}
+
+void Classifier::add_contour(std::vector<Seg>& c) {
+    if (c.empty()) return;
+    // At least three segments, so that consecutive segments share exactly one end point.
+    while (c.size() < 3) {
+        std::vector<Seg> halves;
+        for (const Seg& s : c) {
+            Seg a, b;
+            split(s, a, b);
+            halves.push_back(a);
+            halves.push_back(b);
+        }
+        c.swap(halves);
+    }
+    const int id = static_cast<int>(contour_at_.size());
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        c[i].contour = id;
+        c[i].index = static_cast<int>(i);
+        segs_.push_back(c[i]);
+    }
+    contour_at_.push_back(segs_.size() - c.size());
+    c.clear();
+}
+
+Topology Classifier::run(const Path& path) {
+    if (!path.is_finite()) return Topology::Overlapping;
+    const Rect cb = path.control_bounds();
+    if (!(cb.x1 >= cb.x0)) return Topology::Simple;  // no points
+    const double extent = std::max({std::abs(cb.x0), std::abs(cb.x1), std::abs(cb.y0), std::abs(cb.y1),
+                                    cb.width(), cb.height()});
+    if (extent == 0) return Topology::Simple;
+    delta_ = std::ldexp(extent, -40);
+
+    // Segments per contour (each contour closed by a line when it does not end at its start),
+    // without segments whose control points all coincide (they draw nothing).
+    std::vector<Seg> contour;
+    Point start{}, cur{};
+    bool self_crossing = false;  // a cubic not proven free of loops
+    auto push = [&](std::initializer_list<Point> pts, bool conic, double w) {
+        Seg s;
+        s.n = 0;
+        for (Point q : pts) s.p[s.n++] = q;
+        s.conic = conic;
+        s.w = w;
+        bool degenerate = true;
+        for (int i = 1; i < s.n; ++i) degenerate = degenerate && s.p[i] == s.p[0];
+        if (degenerate) return;
+        if (s.n == 4) {
+            // A cubic may loop on itself. One whose control points are monotone in x or in y is
+            // monotone there too, and so is every polygon inscribed in it: no self-crossing.
+            auto mono = [&](double Point::*c) {
+                const double a = s.p[0].*c, b = s.p[1].*c, d = s.p[2].*c, e = s.p[3].*c;
+                return (a <= b && b <= d && d <= e) || (a >= b && b >= d && d >= e);
+            };
+            if (!mono(&Point::x) && !mono(&Point::y)) self_crossing = true;
+        }
+        s.box = box_of(s);
+        contour.push_back(s);
+    };
+    auto end_contour = [&]() {
+        if (!contour.empty() && !(cur == start)) push({cur, start}, false, 1);
+        add_contour(contour);
+    };
+    struct Visitor {
+        decltype(push)& push_;
+        decltype(end_contour)& end_;
+        Point& start_;
+        Point& cur_;
+        void move(Point p) {
+            end_();
+            start_ = cur_ = p;
+        }
+        void line(Point a, Point b) {
+            push_({a, b}, false, 1);
+            cur_ = b;
+        }
+        void quad(Point a, Point c, Point b) {
+            push_({a, c, b}, false, 1);
+            cur_ = b;
+        }
+        void cubic(Point a, Point c1, Point c2, Point b) {
+            push_({a, c1, c2, b}, false, 1);
+            cur_ = b;
+        }
+        void conic(Point a, Point c, Point b, double w) {
+            push_({a, c, b}, true, w);
+            cur_ = b;
+        }
+        void close(Point last, Point first) {
+            if (!(last == first)) push_({last, first}, false, 1);
+            cur_ = start_ = first;
+            add_contour_now();
+        }
+        void add_contour_now() { end_(); }
+    };
+    Visitor v{push, end_contour, start, cur};
+    path.visit(v);
+    end_contour();
+    contour_at_.push_back(segs_.size());
+    const std::size_t ncontours = contour_at_.size() - 1;
+    if (self_crossing) return Topology::Overlapping;
+    if (segs_.empty()) return Topology::Simple;
+    budget_ = 200 * static_cast<long>(segs_.size()) + 20000;
+
+    // 1. Pairs of segments with overlapping boxes, found on a uniform grid of about one cell per
+    // segment over the path's bounds: each segment is listed in the cells its box covers, and a
+    // pair is tested in one cell only (the corner cell of the two boxes' overlap), so segments far
+    // apart cost nothing and a pair is never tested twice.
+    // Pairs are decided on the segments' whole hulls, without splitting: the flattener's chords may
+    // span any part of a segment, and they stay inside its whole hull, so only a separation of whole
+    // hulls also holds for the flattened polygon at any tolerance.
+    constexpr int kDepth = 0;
+    const std::size_t n = segs_.size();
+    const int grid = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(n))), 1, 1024);
+    const double gx = grid / std::max(cb.width() + 2 * delta_, delta_), gy = grid / std::max(cb.height() + 2 * delta_, delta_);
+    auto cell_x = [&](double x) { return std::clamp(static_cast<int>((x - cb.x0 + delta_) * gx), 0, grid - 1); };
+    auto cell_y = [&](double y) { return std::clamp(static_cast<int>((y - cb.y0 + delta_) * gy), 0, grid - 1); };
+    struct Cells {
+        int x0, y0, x1, y1;
+    };
+    std::vector<Cells> span(n);
+    std::vector<std::uint32_t> cstart(static_cast<std::size_t>(grid) * grid + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Rect& b = segs_[i].box;
+        span[i] = {cell_x(b.x0 - delta_), cell_y(b.y0 - delta_), cell_x(b.x1 + delta_), cell_y(b.y1 + delta_)};
+        for (int y = span[i].y0; y <= span[i].y1; ++y)
+            for (int x = span[i].x0; x <= span[i].x1; ++x) ++cstart[static_cast<std::size_t>(y) * grid + x + 1];
+    }
+    for (std::size_t c = 1; c < cstart.size(); ++c) cstart[c] += cstart[c - 1];
+    if (cstart.back() > 64 * n + 100000) return Topology::Overlapping;  // long segments everywhere: not worth it
+    std::vector<std::uint32_t> members(cstart.back());
+    {
+        std::vector<std::uint32_t> fill(cstart.begin(), cstart.end() - 1);
+        for (std::uint32_t i = 0; i < n; ++i)
+            for (int y = span[i].y0; y <= span[i].y1; ++y)
+                for (int x = span[i].x0; x <= span[i].x1; ++x) members[fill[static_cast<std::size_t>(y) * grid + x]++] = i;
+    }
+    long box_tests = 0;
+    for (int cy = 0; cy < grid; ++cy)
+        for (int cx = 0; cx < grid; ++cx) {
+            const std::size_t c = static_cast<std::size_t>(cy) * grid + cx;
+            for (std::uint32_t k = cstart[c]; k < cstart[c + 1]; ++k)
+                for (std::uint32_t l = k + 1; l < cstart[c + 1]; ++l) {
+                    if (++box_tests > 256 * static_cast<long>(n) + 100000) return Topology::Overlapping;
+                    const std::uint32_t i = members[k], j = members[l];
+                    if (std::max(span[i].x0, span[j].x0) != cx || std::max(span[i].y0, span[j].y0) != cy) continue;
+                    const Seg& s = segs_[i];
+                    const Seg& t = segs_[j];
+                    if (boxes_apart(s.box, t.box)) continue;
+                    bool ok;
+                    const std::size_t count =
+                        contour_at_[static_cast<std::size_t>(s.contour) + 1] - contour_at_[static_cast<std::size_t>(s.contour)];
+                    const int last = static_cast<int>(count) - 1;
+                    if (s.contour == t.contour && (t.index == s.index + 1 || (s.index == last && t.index == 0)))
+                        ok = meet_only_at_end(s, t, kDepth);
+                    else if (s.contour == t.contour && (s.index == t.index + 1 || (t.index == last && s.index == 0)))
+                        ok = meet_only_at_end(t, s, kDepth);
+                    else
+                        ok = disjoint(s, t, kDepth);
+                    if (!ok) return Topology::Overlapping;
+                }
+        }
+
+    // 2 and 3. Orientation of each contour and winding numbers of the others along it.
+    std::vector<Rect> boxes(ncontours);
+    std::vector<int> orient(ncontours);
+    for (std::size_t c = 0; c < ncontours; ++c) {
+        if (!orientation(c, orient[c])) return Topology::Overlapping;
+        Rect b = segs_[contour_at_[c]].box;
+        for (std::size_t i = contour_at_[c]; i < contour_at_[c + 1]; ++i) {
+            const Rect& sb = segs_[i].box;
+            b = {std::min(b.x0, sb.x0), std::min(b.y0, sb.y0), std::max(b.x1, sb.x1), std::max(b.y1, sb.y1)};
+        }
+        boxes[c] = b;
+    }
+    int lo = 0, hi = 0;
+    for (std::size_t a = 0; a < ncontours; ++a) {
+        const Point p = segs_[contour_at_[a]].p[0];
+        int w = 0;
+        for (std::size_t b = 0; b < ncontours; ++b) {
+            if (b == a || boxes_apart(boxes[b], Rect{p.x, p.y, p.x, p.y})) continue;
+            for (std::size_t i = contour_at_[b]; i < contour_at_[b + 1]; ++i)
+                if (!winding_about(segs_[i], p, 20, w)) return Topology::Overlapping;
+        }
+        lo = std::min({lo, w, w + orient[a]});
+        hi = std::max({hi, w, w + orient[a]});
+        if (hi - lo > 1) return Topology::Overlapping;
+    }
+    return Topology::Simple;
+}
+
+}  // namespace
+
+Topology classify_topology(const Path& path) {
+    Classifier c;
+    return c.run(path);
+}
+
+}  // namespace casteljau

@@ -1,0 +1,224 @@
+// Topology decided before rasterizing (classify_topology, src/raster/topology.cpp): verdicts on
+// shapes whose winding values are known by construction, and the contract that makes the fast path
+// safe: every shape classified Simple renders with plain accumulation within the exact path's
+// bound of the exact-area reference.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <random>
+#include <string>
+
+#include "casteljau/font.hpp"
+#include "casteljau/raster.hpp"
+#include "casteljau/text.hpp"
+#include "glyph_outline.hpp"
+#include "raster_check.hpp"
+#include "reference_area.hpp"
+
+using namespace casteljau;
+using casteljau::testing::compare;
+using casteljau::testing::render;
+
+namespace {
+
+Path polygon(std::initializer_list<Point> pts) {
+    Path p;
+    bool first = true;
+    for (Point q : pts) {
+        if (first) p.move_to(q);
+        else p.line_to(q);
+        first = false;
+    }
+    p.close();
+    return p;
+}
+
+Path square(double x0, double y0, double s, bool clockwise = true) {
+    if (clockwise) return polygon({{x0, y0}, {x0 + s, y0}, {x0 + s, y0 + s}, {x0, y0 + s}});
+    return polygon({{x0, y0}, {x0, y0 + s}, {x0 + s, y0 + s}, {x0 + s, y0}});
+}
+
+Path join(const Path& a, const Path& b) {
+    Path p = a;
+    p.append(b);
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("topology: simple shapes are Simple", "[raster][topology]") {
+    CHECK(classify_topology(square(0, 0, 10)) == Topology::Simple);
+    CHECK(classify_topology(square(0, 0, 10, false)) == Topology::Simple);
+    Path circle;
+    circle.add_circle({50, 50}, 30);
+    CHECK(classify_topology(circle) == Topology::Simple);
+    // A ring: outer clockwise, hole counter-clockwise (windings 0, 1, 0).
+    Path ring;
+    ring.add_circle({50, 50}, 30);
+    ring.append(Path().add_circle({50, 50}, 10).reversed());
+    CHECK(classify_topology(ring) == Topology::Simple);
+    // An island in a hole of the same direction as the outer contour (windings 0, 1, 0, 1).
+    Path island = join(join(square(0, 0, 100), square(20, 20, 60, false)), square(40, 40, 20));
+    CHECK(classify_topology(island) == Topology::Simple);
+    // Two apart shapes of opposite directions (windings 0, 1 and 0, -1 do not meet).
+    // Their values are 0, 1 and -1: not one unit interval, so not Simple.
+    CHECK(classify_topology(join(square(0, 0, 10), square(20, 0, 10, false))) == Topology::Overlapping);
+    // Open contour (closed implicitly by the rasterizer), quadratic and conic segments.
+    Path open;
+    open.move_to(0, 0).quad_to({10, -10}, {20, 0}).conic_to({20, 20}, {0, 20}, 0.7);
+    CHECK(classify_topology(open) == Topology::Simple);
+    CHECK(classify_topology(Path()) == Topology::Simple);
+}
+
+TEST_CASE("topology: crossings, nesting and stacked copies are Overlapping", "[raster][topology]") {
+    // Nested contours of one direction: winding 2 inside.
+    CHECK(classify_topology(join(square(0, 0, 100), square(20, 20, 20))) == Topology::Overlapping);
+    // Two overlapping squares.
+    CHECK(classify_topology(join(square(0, 0, 10), square(5, 5, 10))) == Topology::Overlapping);
+    // A stacked copy.
+    CHECK(classify_topology(join(square(0, 0, 10), square(0, 0, 10))) == Topology::Overlapping);
+    // A figure eight (self-crossing).
+    CHECK(classify_topology(polygon({{0, 0}, {10, 10}, {10, 0}, {0, 10}})) == Topology::Overlapping);
+    // A self-crossing cubic loop.
+    Path loop;
+    loop.move_to(0, 0).cubic_to({30, 30}, {-20, 30}, {10, 0}).close();
+    CHECK(classify_topology(loop) == Topology::Overlapping);
+    // Contours that touch at a vertex are not proven simple (the margin).
+    CHECK(classify_topology(join(square(0, 0, 10), square(10, 10, 10))) == Topology::Overlapping);
+    // A spike going back on itself.
+    CHECK(classify_topology(polygon({{0, 0}, {10, 0}, {20, 0}, {10, 0}, {10, 10}})) == Topology::Overlapping);
+    // Non-finite coordinates never claim simplicity.
+    CHECK(classify_topology(polygon({{0, 0}, {NAN, 0}, {5, 5}})) == Topology::Overlapping);
+}
+
+TEST_CASE("topology: verdicts do not change under affine maps", "[raster][topology]") {
+    std::mt19937 rng(7);
+    const Affine maps[] = {Affine::scale(1e-3, 1e-3), Affine::scale(-3, 2), Affine::rotate(0.7) * Affine::translate(1e6, -5e5),
+                           Affine{0.5, 0.1, -0.2, 0.9, 3, 4}};
+    for (int trial = 0; trial < 60; ++trial) {
+        const ref::Contour c = testing::random_polygon(rng, Rect{0, 0, 50, 50}, 3 + trial % 6);
+        const Path p = ref::to_path({c});
+        const Topology t = classify_topology(p);
+        for (const Affine& m : maps) CHECK(classify_topology(p.transformed(m)) == t);
+    }
+}
+
+TEST_CASE("topology: random shapes classified Simple render plainly within the exact bound", "[raster][topology]") {
+    std::mt19937 rng(1234);
+    Rasterizer r;
+    int simple = 0, overlapping = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        ref::Contours cs;
+        const int n = 1 + trial % 3;
+        for (int k = 0; k < n; ++k) {
+            if (trial % 2) cs.push_back(testing::random_simple_polygon(rng, {12.0 + 9 * k, 14.0 + 5 * k}, 2, 9, 5 + k));
+            else cs.push_back(testing::random_polygon(rng, Rect{1, 1, 30, 30}, 3 + trial % 4));
+        }
+        const Path p = ref::to_path(cs);
+        const Topology t = classify_topology(p);
+        (t == Topology::Simple ? simple : overlapping)++;
+        if (t != Topology::Simple) continue;
+        const IRect clip{0, 0, 40, 40};
+        FillOptions plain;
+        plain.exact_overlaps = false;
+        for (FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
+            plain.rule = rule;
+            const auto out = render(r, p, Affine::identity(), plain, clip);
+            const auto cmp = compare(out, ref::slab_area(cs, rule, clip));
+            INFO("trial " << trial << ": " << cmp.text());
+            CHECK(cmp.max_err <= 1.0);
+        }
+    }
+    // Both verdicts occur, so both branches above are exercised.
+    CHECK(simple > 50);
+    CHECK(overlapping > 50);
+}
+
+TEST_CASE("topology: DejaVu Sans glyphs, Simple ones render plainly within the exact bound", "[raster][topology]") {
+    testing::GlyphFont font(testing::dejavu_sans_path());
+    Rasterizer r;
+    int simple = 0, total = 0;
+    std::string overlapping;
+    for (char32_t cp = 0x21; cp < 0x180; ++cp) {
+        if (cp >= 0x7f && cp < 0xa1) continue;
+        Path glyph;
+        font.append_glyph(cp, 1000.0, {0, 0}, glyph);  // classified at one scale ...
+        if (glyph.empty()) continue;
+        ++total;
+        const Topology t = classify_topology(glyph);
+        if (t != Topology::Simple) {
+            overlapping += std::to_string(static_cast<unsigned>(cp)) + " ";
+            continue;
+        }
+        ++simple;
+        // Rendered at another scale, plainly and through the exact cells (the same flattening):
+        // they must agree to rounding.
+        Path small;
+        font.append_glyph(cp, 23.0, {2.3, 25.6}, small);
+        const IRect clip{0, 0, 32, 32};
+        FillOptions plain, cells;
+        plain.exact_overlaps = false;
+        cells.topology = Topology::Overlapping;
+        const auto a = render(r, small, Affine::identity(), plain, clip);
+        const auto b = render(r, small, Affine::identity(), cells, clip);
+        int worst = 0;
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 32; ++x) worst = std::max(worst, std::abs(a.at(x, y) - b.at(x, y)));
+        INFO("U+" << std::hex << static_cast<unsigned>(cp));
+        CHECK(worst <= 1);
+    }
+    INFO("overlapping: " << overlapping);
+    // About 3 % of DejaVu Sans glyphs have crossing contours (cedilla, ogonek and horn components).
+    CHECK(simple >= total * 85 / 100);
+    CHECK(simple < total);
+}
+
+TEST_CASE("topology: the rasterizer uses the verdict and the caller's verdict", "[raster][topology]") {
+    Rasterizer r;
+    Mask m;
+    // Without a verdict: the overlap check.
+    const Path stacked = join(square(1.5, 1.5, 8), square(1.5, 1.5, 8));
+    m = r.fill_mask(stacked, Affine::identity());
+    CHECK(r.last_stats().topology == Topology::Unknown);
+    CHECK(r.last_stats().exact_cells > 0);
+    CHECK(m.at(1, 1) == 64);  // a quarter of the pixel, not half (the two copies do not add up)
+    FillOptions classified;
+    classified.topology = classify_topology(stacked);
+    m = r.fill_mask(stacked, Affine::identity(), classified);
+    CHECK(r.last_stats().topology == Topology::Overlapping);
+    CHECK(m.at(1, 1) == 64);
+    classified.topology = classify_topology(square(1, 1, 8));
+    m = r.fill_mask(square(1, 1, 8), Affine::identity(), classified);
+    CHECK(r.last_stats().topology == Topology::Simple);
+    CHECK(r.last_stats().exact_cells == 0);
+    // A caller's Simple verdict is trusted: the stacked copy then adds up (which is why the verdict
+    // must come from classify_topology).
+    FillOptions trusted;
+    trusted.topology = Topology::Simple;
+    m = r.fill_mask(stacked, Affine::identity(), trusted);
+    CHECK(r.last_stats().topology == Topology::Simple);
+    CHECK(m.at(1, 1) == 128);
+    // Exact overlaps off: no verdict is taken.
+    FillOptions off;
+    off.exact_overlaps = false;
+    m = r.fill_mask(stacked, Affine::identity(), off);
+    CHECK(r.last_stats().topology == Topology::Unknown);
+}
+
+TEST_CASE("topology: the glyph cache hands each glyph's verdict to the rasterizer", "[raster][topology][text]") {
+    const Font font = Font::load(testing::dejavu_sans_path());
+    GlyphCache cache(1u << 20, kDefaultTolerance);
+    Rasterizer r;
+    const Mask& o = cache.mask(font, font.glyph_index(U'o'), 20.0, {0, 0}, r);
+    CHECK(r.last_stats().topology == Topology::Simple);
+    CHECK(r.last_stats().exact_cells == 0);
+    CHECK(!o.data.empty());
+    // A c with cedilla: the cedilla component crosses the c (DejaVu Sans).
+    (void)cache.mask(font, font.glyph_index(U'\u00e7'), 20.0, {0, 0}, r);
+    CHECK(r.last_stats().topology == Topology::Overlapping);
+    // Another size of the same glyph keeps the verdict decided once.
+    (void)cache.mask(font, font.glyph_index(U'o'), 33.0, {0.5, 0}, r);
+    CHECK(r.last_stats().topology == Topology::Simple);
+}
