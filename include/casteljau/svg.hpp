@@ -13,7 +13,9 @@
 // with the cascade presentation attribute < sheet < style attribute and !important; clipPath and
 // mask (units, clip-rule, mask-type, nested), as exact-area coverage masks of layers; markers;
 // group opacity, mix-blend-mode and isolation; <image> (PNG, JPEG, SVG; see SvgOptions).
-// Not drawn yet: text and filters (warnings name them); elements with a filter are drawn
+// text, tspan, tref, textPath and a inside text (src/formats/svg_text.hpp: fonts through
+// FontDatabase, shaping through casteljau's HarfBuzz engine, glyphs become ordinary filled and
+// stroked paths). Not drawn yet: filters (warnings name them); elements with a filter are drawn
 // unfiltered.
 // Cycles (use, gradient href, clip-path, mask, marker) are broken: the repeated reference is
 // skipped or the element is not drawn.
@@ -31,6 +33,7 @@
 #include <vector>
 
 #include "casteljau/canvas.hpp"
+#include "casteljau/font_database.hpp"
 #include "casteljau/paint.hpp"
 
 namespace casteljau {
@@ -45,6 +48,11 @@ inline constexpr std::size_t kMaxSvgElements = 1'000'000;
 inline constexpr int kMaxSvgImageNesting = 4;
 // Decompressed size of an .svgz.
 inline constexpr std::size_t kMaxSvgzBytes = 64u << 20;
+// Characters laid out per <text> element (after white-space processing); the rest is dropped with
+// a warning. Bounds the outline memory of a huge text node (about 1 KB of path per glyph).
+inline constexpr std::size_t kMaxSvgTextChars = 100'000;
+// Largest font-size (user units) drawn; text with a larger one is skipped with a warning.
+inline constexpr double kMaxSvgFontSize = 1e5;
 }  // namespace limits
 
 // Where <image> may read files from. Nothing is ever fetched over the network (http:, https:,
@@ -52,10 +60,24 @@ inline constexpr std::size_t kMaxSvgzBytes = 64u << 20;
 // against `base_dir` and must stay inside `resource_root` (default: base_dir itself) after
 // symbolic links are resolved. An empty base_dir (text parsed from memory) refuses every file;
 // data: URIs always work.
+//
+// Text is drawn with fonts from `font_dirs` and `font_files` plus the system's (fontconfig) unless
+// `system_fonts` is false; or, when `font_database` is set, from that database alone (share one
+// between documents so that each font file is read once). The generic CSS families map to the
+// `*_family` names, and `font_family` ends every font-family list (the defaults are resvg's).
 struct SvgOptions {
     std::string base_dir;
     std::string resource_root;
     int nesting = 0;  // SVG images nest at most limits::kMaxSvgImageNesting deep
+    std::vector<std::string> font_dirs, font_files;
+    bool system_fonts = true;
+    std::string font_family = "Times New Roman";
+    std::string serif_family = "Times New Roman";
+    std::string sans_serif_family = "Arial";
+    std::string cursive_family = "Comic Sans MS";
+    std::string fantasy_family = "Impact";
+    std::string monospace_family = "Courier New";
+    std::shared_ptr<const FontDatabase> font_database;
 };
 
 class SvgDocument {
@@ -67,6 +89,8 @@ public:
     // Reads a file (.svg or .svgz); images resolve against the file's folder, and may not leave it
     // unless `resource_root` names a wider folder.
     static SvgDocument load(const std::string& path, const std::string& resource_root = {});
+    // Same with options (fonts, resource_root); base_dir is set to the file's folder.
+    static SvgDocument load(const std::string& path, const SvgOptions& options);
 
     SvgDocument(SvgDocument&&) noexcept;
     SvgDocument& operator=(SvgDocument&&) noexcept;

@@ -287,6 +287,12 @@ void Font::Impl::variations_changed() {
     metrics.line_gap = pos(HB_OT_METRICS_TAG_HORIZONTAL_LINE_GAP);
     metrics.underline_position = pos(HB_OT_METRICS_TAG_UNDERLINE_OFFSET);
     metrics.underline_thickness = pos(HB_OT_METRICS_TAG_UNDERLINE_SIZE);
+    metrics.strikeout_position = pos(HB_OT_METRICS_TAG_STRIKEOUT_OFFSET);
+    metrics.strikeout_thickness = pos(HB_OT_METRICS_TAG_STRIKEOUT_SIZE);
+    metrics.x_height = pos(HB_OT_METRICS_TAG_X_HEIGHT);
+    metrics.cap_height = pos(HB_OT_METRICS_TAG_CAP_HEIGHT);
+    metrics.subscript_offset = pos(HB_OT_METRICS_TAG_SUBSCRIPT_EM_Y_OFFSET);
+    metrics.superscript_offset = pos(HB_OT_METRICS_TAG_SUPERSCRIPT_EM_Y_OFFSET);
     if (metrics.ascender <= metrics.descender) {  // broken tables: fall back to the em box
         metrics.ascender = 0.8 * face->units_per_EM;
         metrics.descender = -0.2 * face->units_per_EM;
