@@ -48,8 +48,8 @@ struct FontDatabaseOptions {
 
 class FontDatabase {
 public:
-    // Scans the folders, files and (optionally) the system fonts. A folder that does not exist or
-    // holds no fonts throws Error(Io); files that are not fonts are skipped.
+    // Scans the folders, files and (optionally) the system fonts. A folder or file that does not
+    // exist throws Error(Io); files in a folder that are not fonts are skipped.
     explicit FontDatabase(const FontDatabaseOptions& options);
     ~FontDatabase();
     FontDatabase(const FontDatabase&) = delete;

@@ -1828,6 +1828,7 @@ public:
             const pugi::xml_node target = *h == '#' ? lookup(h + 1) : pugi::xml_node();
             std::optional<Path> p;
             if (target && std::string_view(target.name()) == "path") p = shape_path(target, vw, vh);
+            if (p && p->control_bounds().width() == 0 && p->control_bounds().height() == 0) p.reset();  // no length
             if (!p || p->empty()) {
                 warn("<textPath> references no usable path; its text is not drawn");
                 return;

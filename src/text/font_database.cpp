@@ -83,6 +83,23 @@ struct FontDatabase::Impl {
         FcObjectSetDestroy(os);
         FcPatternDestroy(pat);
         if (!set) return;
+        add_set(set);
+        FcFontSetDestroy(set);
+    }
+
+    // Adds the faces of font files read directly (no fontconfig configuration or cache involved).
+    void add_files(const std::vector<std::string>& files) {
+        FcFontSet* set = FcFontSetCreate();
+        if (!set) throw std::bad_alloc();
+        for (const std::string& f : files) {
+            int count = 0;
+            FcFreeTypeQueryAll(reinterpret_cast<const FcChar8*>(f.c_str()), -1, nullptr, &count, set);
+        }
+        add_set(set);
+        FcFontSetDestroy(set);
+    }
+
+    void add_set(FcFontSet* set) {
         std::map<std::pair<std::string, int>, std::size_t> seen;
         for (std::size_t i = 0; i < faces.size(); ++i) seen[{faces[i].path, faces[i].index}] = i;
         // fontconfig lists in no particular order: sort by file so that the database order (the
@@ -145,33 +162,34 @@ struct FontDatabase::Impl {
             faces.push_back(std::move(info));
             charsets.push_back(cs ? FcCharSetCopy(cs) : nullptr);
         }
-        FcFontSetDestroy(set);
     }
 };
 
 FontDatabase::FontDatabase(const FontDatabaseOptions& options) : impl_(std::make_unique<Impl>()) {
-    if (!options.font_dirs.empty() || !options.font_files.empty()) {
-        FcConfig* config = FcConfigCreate();
-        if (!config) throw std::bad_alloc();
-        for (const std::string& dir : options.font_dirs) {
-            std::error_code ec;
-            if (!std::filesystem::is_directory(dir, ec)) {
-                FcConfigDestroy(config);
-                throw Error(ErrorKind::Io, "font folder '" + dir + "' does not exist or is not a folder");
-            }
-            FcConfigAppFontAddDir(config, reinterpret_cast<const FcChar8*>(dir.c_str()));
-        }
-        for (const std::string& file : options.font_files) {
-            std::error_code ec;
-            if (!std::filesystem::is_regular_file(file, ec)) {
-                FcConfigDestroy(config);
-                throw Error(ErrorKind::Io, "font file '" + file + "' does not exist");
-            }
-            FcConfigAppFontAddFile(config, reinterpret_cast<const FcChar8*>(file.c_str()));
-        }
-        impl_->add_from(config);
-        FcConfigDestroy(config);
+    namespace fs = std::filesystem;
+    std::vector<std::string> files;
+    auto is_font = [](const fs::path& p) {
+        std::string ext = p.extension().string();
+        for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return ext == ".ttf" || ext == ".otf" || ext == ".ttc" || ext == ".otc";
+    };
+    for (const std::string& dir : options.font_dirs) {
+        std::error_code ec;
+        if (!fs::is_directory(dir, ec))
+            throw Error(ErrorKind::Io, "font folder '" + dir + "' does not exist or is not a folder");
+        std::vector<std::string> found;
+        for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied, ec);
+             !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+            if (it->is_regular_file(ec) && is_font(it->path())) found.push_back(it->path().string());
+        std::sort(found.begin(), found.end());
+        files.insert(files.end(), found.begin(), found.end());
     }
+    for (const std::string& file : options.font_files) {
+        std::error_code ec;
+        if (!fs::is_regular_file(file, ec)) throw Error(ErrorKind::Io, "font file '" + file + "' does not exist");
+        files.push_back(file);
+    }
+    impl_->add_files(files);
     if (options.system_fonts) {
         if (FcConfig* config = FcInitLoadConfigAndFonts()) {
             impl_->add_from(config);
