@@ -1960,6 +1960,11 @@ public:
             if (k == "direction") dir = std::string(trim(v));
         if (dir.empty()) dir = inherited(node, "direction");
         b.in.direction = dir == "rtl" ? TextDirection::RightToLeft : TextDirection::LeftToRight;
+        std::string wm;
+        for (const auto& [k, v] : properties(node))
+            if (k == "writing-mode") wm = std::string(trim(v));
+        if (wm.empty()) wm = inherited(node, "writing-mode");
+        b.in.vertical = wm == "tb" || wm == "tb-rl" || wm == "vertical-rl" || wm == "vertical-lr";
         styles = std::move(b.styles);
         return svg_text::layout(b.in, *text_fonts(), warnings);
     }

@@ -36,9 +36,17 @@ struct Cluster {
     double x = 0, y = 0;  // origin on the baseline (before baseline offsets)
     double step = 0;      // distance to the next cluster's origin (advance + spacing)
     double scale_x = 1;   // lengthAdjust="spacingAndGlyphs"
-    bool hidden = false;
+    bool upright = false;  // vertical text: drawn upright (else turned 90 degrees clockwise)
     const Font* font = nullptr;  // metrics for baselines and decorations
 };
+
+// Characters set upright in vertical text (CJK, kana, hangul, full-width forms, emoji); others
+// are turned sideways (Unicode's vertical orientation U and Tu, approximately).
+bool is_upright(char32_t c) {
+    return (c >= 0x1100 && c <= 0x11ff) || (c >= 0x2e80 && c <= 0xa4cf) || (c >= 0xac00 && c <= 0xd7af) ||
+           (c >= 0xf900 && c <= 0xfaff) || (c >= 0xfe30 && c <= 0xfe4f) || (c >= 0xff00 && c <= 0xffef) ||
+           (c >= 0x1f000 && c <= 0x1faff) || (c >= 0x20000 && c <= 0x3ffff);
+}
 
 bool is_word_space(char32_t c) { return c == U' ' || c == 0xa0 || c == 0x1361 || c == 0x10100 || c == 0x10101 || c == 0x3000; }
 
@@ -206,7 +214,10 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
         std::vector<RunClusters> all_runs;
         for (std::size_t sb = cb; sb < ce;) {
             std::size_t se = sb + 1;
-            while (se < ce && span_of[se] == span_of[sb] && levels[se - cb] == levels[sb - cb]) ++se;
+            const bool upright = in.vertical && is_upright(text[sb]);
+            while (se < ce && span_of[se] == span_of[sb] && levels[se - cb] == levels[sb - cb] &&
+                   (!in.vertical || is_upright(text[se]) == upright))
+                ++se;
             const Span& span = in.spans[span_of[sb]];
             const std::u32string_view seg(text.data() + sb, se - sb);
             const std::vector<const Font*> chain = fonts.chain(span.font, seg);
@@ -221,10 +232,10 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
             ts.features = span.font.features;
             std::unique_ptr<text_detail::Shaper> shaper;
             try {
-                shaper = std::make_unique<text_detail::Shaper>(std::span<const Font* const>(chain), ts);
+                shaper = std::make_unique<text_detail::Shaper>(std::span<const Font* const>(chain), ts, upright);
             } catch (const Error&) {
                 ts.features.clear();
-                shaper = std::make_unique<text_detail::Shaper>(std::span<const Font* const>(chain), ts);
+                shaper = std::make_unique<text_detail::Shaper>(std::span<const Font* const>(chain), ts, upright);
             }
             shaper->shape_paragraph(seg, std::span<const std::uint8_t>(levels.data() + (sb - cb), se - sb), runs);
             for (const text_detail::ShapedRun& run : runs) {
@@ -243,13 +254,19 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                     k.nch = (next == starts.end() ? run.end : *next) - cl;
                     k.span = span_of[sb];
                     k.font = chain[run.glyphs[g].font];
+                    k.upright = upright;
                     double pen = 0;
                     for (; g < run.glyphs.size() && run.glyphs[g].cluster == cl; ++g) {
                         const auto& sg = run.glyphs[g];
-                        k.glyphs.push_back({chain[sg.font], sg.glyph, pen + sg.x_offset, -sg.y_offset});
-                        pen += sg.advance;
+                        if (upright) {  // top to bottom: HarfBuzz's pen moves down (y up)
+                            k.glyphs.push_back({chain[sg.font], sg.glyph, sg.x_offset, -(pen + sg.y_offset)});
+                            pen += sg.y_advance;
+                        } else {
+                            k.glyphs.push_back({chain[sg.font], sg.glyph, pen + sg.x_offset, -sg.y_offset});
+                            pen += sg.advance;
+                        }
                     }
-                    k.advance = pen;
+                    k.advance = upright ? -pen : pen;
                     rc.clusters.push_back(std::move(k));
                 }
                 all_runs.push_back(std::move(rc));
@@ -281,7 +298,11 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
             pen_x = in.paths[static_cast<std::size_t>(first_span.path)].start_offset;
             pen_y = 0;
         }
-        const double start_x = pen_x;
+        // Vertical text advances along y; `along` is the coordinate that advances.
+        const bool vert = in.vertical && !on_path;
+        auto along = [&](Cluster& g) -> double& { return vert ? g.y : g.x; };
+        double& pen_along = vert ? pen_y : pen_x;
+        const double start_x = pen_along;
         for (std::size_t k = 0; k < cl.size(); ++k) {
             Cluster& g = cl[k];
             for (std::size_t i = g.ch; i < g.ch + g.nch && i < n; ++i) {
@@ -294,7 +315,7 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
             double step = g.advance + sp.letter_spacing;
             if (is_word_space(text[g.ch])) step += sp.word_spacing;
             g.step = step;
-            pen_x += step;
+            pen_along += step;
         }
         // textLength on ranges inside this chunk.
         for (const LengthRange& lr : in.lengths) {
@@ -302,10 +323,10 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
             for (Cluster& g : cl)
                 if (g.ch >= lr.begin && g.ch < lr.end) in_range.push_back(&g);
             if (in_range.empty() || !(lr.length > 0)) continue;
-            double lo = in_range.front()->x, hi = lo;
+            double lo = along(*in_range.front()), hi = lo;
             for (Cluster* g : in_range) {
-                lo = std::min(lo, g->x);
-                hi = std::max(hi, g->x + g->advance);
+                lo = std::min(lo, along(*g));
+                hi = std::max(hi, along(*g) + g->advance);
             }
             const double width = hi - lo;
             if (!(width > 0)) continue;
@@ -313,35 +334,35 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
             if (lr.spacing_and_glyphs) {
                 const double s = lr.length / width;
                 for (Cluster* g : in_range) {
-                    g->x = lo + (g->x - lo) * s;
+                    along(*g) = lo + (along(*g) - lo) * s;
                     g->scale_x = s;
                     g->step *= s;
                 }
                 shift_after = lr.length - width;
             } else if (in_range.size() > 1) {
                 const double extra = (lr.length - width) / static_cast<double>(in_range.size() - 1);
-                for (std::size_t i = 0; i < in_range.size(); ++i) in_range[i]->x += extra * static_cast<double>(i);
+                for (std::size_t i = 0; i < in_range.size(); ++i) along(*in_range[i]) += extra * static_cast<double>(i);
                 shift_after = lr.length - width;
             }
             bool after = false;
             for (Cluster& g : cl) {
-                if (after) g.x += shift_after;
+                if (after) along(g) += shift_after;
                 if (&g == in_range.back()) after = true;
             }
-            pen_x += shift_after;
+            pen_along += shift_after;
         }
         // text-anchor (the chunk's first character's); start and end swap in right-to-left text.
         if (!cl.empty()) {
             Anchor a = first_span.anchor;
             if (chunk_level[c] & 1) a = a == Anchor::Start ? Anchor::End : a == Anchor::End ? Anchor::Start : a;
-            double lo = cl.front().x, hi = lo;
-            for (const Cluster& g : cl) {
-                lo = std::min(lo, g.x);
-                hi = std::max(hi, g.x + g.advance * g.scale_x);
+            double lo = along(cl.front()), hi = lo;
+            for (Cluster& g : cl) {
+                lo = std::min(lo, along(g));
+                hi = std::max(hi, along(g) + g.advance * g.scale_x);
             }
             const double width = hi - std::min(lo, start_x);
             const double shift = a == Anchor::Middle ? width / 2 : a == Anchor::End ? width : 0;
-            for (Cluster& g : cl) g.x -= shift;
+            for (Cluster& g : cl) along(g) -= shift;
             if (cl.size() > 0) cl.back().step = cl.back().advance * cl.back().scale_x;
         }
     }
@@ -409,6 +430,16 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                 double angle = 0;
                 if (!w->at(g.x + half, p, angle)) continue;  // off the path: not drawn
                 t = Affine::translate(p.x, p.y) * Affine::rotate(angle) * Affine::translate(-half, by);
+            } else if (in.vertical) {
+                // Upright glyphs carry HarfBuzz's vertical offsets (centred on the line); sideways
+                // ones turn clockwise about the pen with their em box centred on the line.
+                t = Affine::translate(g.x, g.y);
+                if (!g.upright && g.font) {
+                    const FontMetrics& m = g.font->metrics();
+                    t = t * Affine::rotate_degrees(90) *
+                        Affine::translate(0, (m.ascender + m.descender) / 2 * size / m.units_per_em - shift);
+                }
+                if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
             } else {
                 t = Affine::translate(g.x, by);
                 if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
