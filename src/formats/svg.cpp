@@ -1514,6 +1514,7 @@ public:
         int path = -1, path_element = -1;
         std::size_t style = 0;
         std::string direction;
+        double viewport_width = 100;  // percentages of letter- and word-spacing (as resvg)
     };
 
     static std::vector<std::string_view> split_list(std::string_view v) {
@@ -1708,10 +1709,10 @@ public:
                 }
             } else if (k == "letter-spacing") {
                 if (val == "normal") ctx.letter_spacing = 0;
-                else if (auto l = text_length(val, fs, fs)) ctx.letter_spacing = *l;
+                else if (auto l = text_length(val, fs, ctx.viewport_width)) ctx.letter_spacing = *l;
             } else if (k == "word-spacing") {
                 if (val == "normal") ctx.word_spacing = 0;
-                else if (auto l = text_length(val, fs, fs)) ctx.word_spacing = *l;
+                else if (auto l = text_length(val, fs, ctx.viewport_width)) ctx.word_spacing = *l;
             } else if (k == "text-anchor") {
                 if (val == "start") ctx.anchor = svg_text::Anchor::Start;
                 else if (val == "middle") ctx.anchor = svg_text::Anchor::Middle;
@@ -1759,6 +1760,7 @@ public:
         std::vector<Range> ranges;  // elements with position lists, in document order
         std::size_t chars = 0;
         bool last_space = true;     // collapsing: the text so far ends in a space (or is empty)
+        bool last_preserved = false;  // the last character came from xml:space="preserve" text
         bool truncated = false;
         int path_elements = 0;
     };
@@ -1772,10 +1774,15 @@ public:
                 break;
             }
             if (ctx.preserve) {
-                out += (c == U'\n' || c == U'\r' || c == U'\t') ? U' ' : c;
-                b.last_space = false;
+                // Kept as they are (newlines and tabs become spaces); a collapsible space right
+                // after a preserved one still collapses.
+                const char32_t k = (c == U'\n' || c == U'\r' || c == U'\t') ? U' ' : c;
+                out += k;
+                b.last_space = k == U' ';
+                b.last_preserved = true;
                 continue;
             }
+            b.last_preserved = false;
             if (c == U'\n' || c == U'\r') continue;
             if (c == U'\t') c = U' ';
             if (c == U' ') {
@@ -1843,7 +1850,7 @@ public:
             (void)text_m;
             svg_text::TextPath tp;
             tp.path = p->transformed(pt);
-            if (std::string_view(node.attribute("side").value()) == "right") tp.path = tp.path.reversed();
+            // side="right" (SVG 2) is ignored, as resvg and most browsers do.
             if (const char* so = node.attribute("startOffset").value(); *so) {
                 std::string_view sv = trim(so);
                 if (!sv.empty() && sv.back() == '%') {
@@ -1896,7 +1903,7 @@ public:
     std::vector<svg_text::Outline> text_outlines(const pugi::xml_node& node, const Style& st, double vw, double vh,
                                                  std::vector<Style>& styles) {
         TextCtx ctx;
-        ctx.font.families = {};
+        ctx.viewport_width = vw;
         // Inherited text properties from the ancestors, outermost first.
         std::vector<pugi::xml_node> anc;
         for (pugi::xml_node a = node.parent(); a && a.type() == pugi::node_element; a = a.parent()) anc.push_back(a);
@@ -1910,7 +1917,8 @@ public:
         if (b.truncated)
             warn("<text> holds more than " + std::to_string(limits::kMaxSvgTextChars) + " characters; the rest is not drawn");
         // A trailing collapsible space is removed.
-        if (!b.in.spans.empty() && b.last_space && !b.in.spans.back().text.empty() && b.in.spans.back().text.back() == U' ') {
+        if (!b.in.spans.empty() && b.last_space && !b.last_preserved && !b.in.spans.back().text.empty() &&
+            b.in.spans.back().text.back() == U' ') {
             b.in.spans.back().text.pop_back();
             --b.chars;
             if (b.in.spans.back().text.empty()) b.in.spans.pop_back();

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <span>
 
+#include <hb.h>
+
 #include "casteljau/error.hpp"
 #include "text/bidi.hpp"
 #include "text/shape.hpp"
@@ -46,6 +48,20 @@ bool is_upright(char32_t c) {
     return (c >= 0x1100 && c <= 0x11ff) || (c >= 0x2e80 && c <= 0xa4cf) || (c >= 0xac00 && c <= 0xd7af) ||
            (c >= 0xf900 && c <= 0xfaff) || (c >= 0xfe30 && c <= 0xfe4f) || (c >= 0xff00 && c <= 0xffef) ||
            (c >= 0x1f000 && c <= 0x1faff) || (c >= 0x20000 && c <= 0x3ffff);
+}
+
+// Scripts whose letters join or hang from a line: letter-spacing would break them apart, so it is
+// not applied to them (CSS Text 3, 8.2; resvg does the same).
+bool spacing_allowed(char32_t c) {
+    switch (hb_unicode_script(hb_unicode_funcs_get_default(), c)) {
+        case HB_SCRIPT_ARABIC: case HB_SCRIPT_SYRIAC: case HB_SCRIPT_NKO: case HB_SCRIPT_MANICHAEAN:
+        case HB_SCRIPT_PSALTER_PAHLAVI: case HB_SCRIPT_MANDAIC: case HB_SCRIPT_MONGOLIAN: case HB_SCRIPT_PHAGS_PA:
+        case HB_SCRIPT_DEVANAGARI: case HB_SCRIPT_BENGALI: case HB_SCRIPT_GURMUKHI: case HB_SCRIPT_MODI:
+        case HB_SCRIPT_SHARADA: case HB_SCRIPT_SYLOTI_NAGRI: case HB_SCRIPT_TIRHUTA: case HB_SCRIPT_OGHAM:
+            return false;
+        default:
+            return true;
+    }
 }
 
 bool is_word_space(char32_t c) { return c == U' ' || c == 0xa0 || c == 0x1361 || c == 0x10100 || c == 0x10101 || c == 0x3000; }
@@ -292,11 +308,25 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
         const std::size_t cb = chunk_starts[c];
         const Span& first_span = in.spans[span_of[cb]];
         const bool on_path = first_span.path >= 0;
+        const int prev_path = c > 0 ? in.spans[span_of[chunk_starts[c - 1]]].path : -1;
+        if (!on_path && prev_path >= 0) {
+            // Text after a text path goes on from where the path's text ended.
+            const PathWalker w(in.paths[static_cast<std::size_t>(prev_path)].path);
+            Point p;
+            double angle = 0;
+            if (w.at(std::clamp(pen_x, 0.0, w.total()), p, angle)) {
+                pen_x = p.x;
+                pen_y = p.y;
+            }
+        }
         if (pos(cb).x) pen_x = *pos(cb).x;
         if (pos(cb).y) pen_y = *pos(cb).y;
-        if (on_path && (c == 0 || in.spans[span_of[chunk_starts[c - 1]]].path_element != first_span.path_element)) {
-            pen_x = in.paths[static_cast<std::size_t>(first_span.path)].start_offset;
-            pen_y = 0;
+        if (on_path) {
+            const bool first = c == 0 || in.spans[span_of[chunk_starts[c - 1]]].path_element != first_span.path_element;
+            const double offset = in.paths[static_cast<std::size_t>(first_span.path)].start_offset;
+            if (pos(cb).x) pen_x = *pos(cb).x + offset;  // an absolute x is a distance along the path
+            else if (first) pen_x = offset;
+            if (first) pen_y = 0;  // dy moves glyphs off the path
         }
         // Vertical text advances along y; `along` is the coordinate that advances.
         const bool vert = in.vertical && !on_path;
@@ -312,7 +342,7 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
             g.x = pen_x;
             g.y = pen_y;
             const Span& sp = in.spans[g.span];
-            double step = g.advance + sp.letter_spacing;
+            double step = g.advance + (spacing_allowed(text[g.ch]) ? sp.letter_spacing : 0);
             if (is_word_space(text[g.ch])) step += sp.word_spacing;
             g.step = step;
             pen_along += step;
@@ -355,10 +385,13 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
         if (!cl.empty()) {
             Anchor a = first_span.anchor;
             if (chunk_level[c] & 1) a = a == Anchor::Start ? Anchor::End : a == Anchor::End ? Anchor::Start : a;
+            // Trailing spaces do not count (resvg): "end " anchors like "end".
+            std::size_t last = cl.size();
+            while (last > 1 && cl[last - 1].nch == 1 && is_word_space(text[cl[last - 1].ch])) --last;
             double lo = along(cl.front()), hi = lo;
-            for (Cluster& g : cl) {
-                lo = std::min(lo, along(g));
-                hi = std::max(hi, along(g) + g.advance * g.scale_x);
+            for (std::size_t k = 0; k < last; ++k) {
+                lo = std::min(lo, along(cl[k]));
+                hi = std::max(hi, along(cl[k]) + cl[k].advance * cl[k].scale_x);
             }
             const double width = hi - std::min(lo, start_x);
             const double shift = a == Anchor::Middle ? width / 2 : a == Anchor::End ? width : 0;
@@ -430,6 +463,7 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                 double angle = 0;
                 if (!w->at(g.x + half, p, angle)) continue;  // off the path: not drawn
                 t = Affine::translate(p.x, p.y) * Affine::rotate(angle) * Affine::translate(-half, by);
+                if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
             } else if (in.vertical) {
                 // Upright glyphs carry HarfBuzz's vertical offsets (centred on the line); sideways
                 // ones turn clockwise about the pen with their em box centred on the line.
