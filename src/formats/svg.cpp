@@ -1749,6 +1749,8 @@ public:
         for (const std::string& f : ctx.feature_settings) ctx.font.features.push_back(f);
     }
 
+    static constexpr std::size_t kTextElementStyle = static_cast<std::size_t>(-1);
+
     struct TextBuild {
         svg_text::TextInput in;
         std::vector<Style> styles;
@@ -1828,6 +1830,9 @@ public:
         apply_style(node, st);
         ctx.style = b.styles.size();
         b.styles.push_back(st);
+        // Decorations declared outside the text element are painted with the text's own paint.
+        for (svg_text::Decoration& d : ctx.decorations)
+            if (d.style == kTextElementStyle) d.style = ctx.style;
         apply_text_props(node, ctx);
         const std::string_view name = node.name();
         if (name == "textPath") {
@@ -1909,7 +1914,7 @@ public:
         for (pugi::xml_node a = node.parent(); a && a.type() == pugi::node_element; a = a.parent()) anc.push_back(a);
         for (auto it = anc.rbegin(); it != anc.rend(); ++it) {
             apply_text_props(*it, ctx);
-            ctx.decorations.clear();
+            for (svg_text::Decoration& d : ctx.decorations) d.style = kTextElementStyle;
             ctx.baseline_shifts.clear();
         }
         TextBuild b;
@@ -2120,7 +2125,7 @@ SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options
     auto impl = std::make_unique<Impl>();
     if (trim(text).empty()) throw Error(ErrorKind::Parse, "SVG input is empty");
     const pugi::xml_parse_result res =
-        impl->doc.load_buffer(text.data(), text.size(), pugi::parse_default | pugi::parse_ws_pcdata_single);
+        impl->doc.load_buffer(text.data(), text.size(), pugi::parse_default | pugi::parse_ws_pcdata);  // text needs the spaces between tspans
     if (!res)
         throw Error(ErrorKind::Parse, std::string("malformed SVG (XML) at byte ") + std::to_string(res.offset) + ": " +
                                           res.description());
