@@ -253,7 +253,19 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                 ts.features.clear();
                 shaper = std::make_unique<text_detail::Shaper>(std::span<const Font* const>(chain), ts, upright);
             }
-            shaper->shape_paragraph(seg, std::span<const std::uint8_t>(levels.data() + (sb - cb), se - sb), runs);
+            // Shaped with up to kContext neighbours of the same level on each side (from other
+            // spans too), so that kerning and joining work across tspans; only the segment's own
+            // glyphs are kept.
+            constexpr std::size_t kContext = 32;
+            std::size_t wb = sb, we = se;
+            while (wb > cb && sb - wb < kContext && levels[wb - 1 - cb] == levels[sb - cb] &&
+                   (!in.vertical || is_upright(text[wb - 1]) == upright))
+                --wb;
+            while (we < ce && we - se < kContext && levels[we - cb] == levels[sb - cb] &&
+                   (!in.vertical || is_upright(text[we]) == upright))
+                ++we;
+            const std::u32string_view window(text.data() + wb, we - wb);
+            shaper->shape_paragraph(window, std::span<const std::uint8_t>(levels.data() + (wb - cb), we - wb), runs);
             for (const text_detail::ShapedRun& run : runs) {
                 RunClusters rc;
                 rc.level = run.level;
@@ -264,10 +276,14 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                 starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
                 for (std::size_t g = 0; g < run.glyphs.size();) {
                     const std::uint32_t cl = run.glyphs[g].cluster;
+                    if (wb + cl < sb || wb + cl >= se) {  // context: another segment's glyph
+                        ++g;
+                        continue;
+                    }
                     Cluster k;
-                    k.ch = sb + cl;
+                    k.ch = wb + cl;
                     const auto next = std::upper_bound(starts.begin(), starts.end(), cl);
-                    k.nch = (next == starts.end() ? run.end : *next) - cl;
+                    k.nch = std::min<std::size_t>(wb + (next == starts.end() ? run.end : *next), se) - k.ch;
                     k.span = span_of[sb];
                     k.font = chain[run.glyphs[g].font];
                     k.upright = upright;
@@ -285,7 +301,7 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                     k.advance = upright ? -pen : pen;
                     rc.clusters.push_back(std::move(k));
                 }
-                all_runs.push_back(std::move(rc));
+                if (!rc.clusters.empty()) all_runs.push_back(std::move(rc));
             }
             sb = se;
         }
