@@ -113,7 +113,7 @@ struct PathWalker {
 };
 
 std::string variation_key(const FontSpec& spec) {
-    std::string k = std::to_string(spec.weight) + "/" + std::to_string(spec.stretch) + "/" +
+    std::string k = std::to_string(spec.weight) + "/" + std::to_string(spec.stretch) + "/" + std::to_string(spec.size) + "/" +
                     std::to_string(static_cast<int>(spec.slant));
     for (const Variation& v : spec.variations) k += "/" + v.tag + "=" + std::to_string(v.value);
     return k;
@@ -153,6 +153,7 @@ const Font* FontSet::face(std::size_t index, const FontSpec& spec) {
             for (const VariationAxis& a : font->axes()) {
                 if (a.tag == "wght") vars.push_back({"wght", static_cast<double>(spec.weight)});
                 if (a.tag == "wdth") vars.push_back({"wdth", spec.stretch});
+                if (a.tag == "opsz") vars.push_back({"opsz", spec.size});  // font-optical-sizing: auto
             }
             for (const Variation& v : spec.variations) {
                 const bool known = std::any_of(font->axes().begin(), font->axes().end(),
