@@ -210,6 +210,25 @@ TEST_CASE("SVG text: glyph positions equal HarfBuzz's own shaping of the same st
     CHECK(max_diff(actual, draw_positions(font, plain, size, x0, y0, 320, 80)) > 100);
 }
 
+TEST_CASE("SVG text: kerning 0 places glyphs at their plain advances", "[svg_text]") {
+    const std::string s = "AVAV";
+    const std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='60'><text x='10' y='45' "
+                            "font-family='DejaVu Sans' font-size='40' kerning='0'>" + s + "</text></svg>";
+    const Pixmap actual = SvgDocument::parse(svg, repo_options()).render();
+    const Font font = Font::load(kFontDir + "/DejaVuSans.ttf");
+    std::vector<HbGlyph> plain = harfbuzz_positions(kFontDir + "/DejaVuSans.ttf", s);
+    double pen = 0;
+    for (HbGlyph& g : plain) {
+        g.x = pen;
+        pen += font.glyph_metrics(g.id).advance;
+    }
+    CHECK(max_diff(actual, draw_positions(font, plain, 40, 10, 45, 200, 60)) <= 1);
+    // Without kerning="0" the AV pairs move closer.
+    const std::string kerned = "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='60'><text x='10' y='45' "
+                               "font-family='DejaVu Sans' font-size='40'>" + s + "</text></svg>";
+    CHECK(max_diff(SvgDocument::parse(kerned, repo_options()).render(), actual) > 100);
+}
+
 TEST_CASE("SVG text: x, dx, text-anchor and letter-spacing move glyphs by their exact amounts", "[svg_text]") {
     auto render = [](const std::string& attrs) {
         const std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='60'><text y='40' "

@@ -1612,28 +1612,55 @@ public:
     }
 
     // The `font` shorthand: [style] [variant] [weight] [stretch] size[/line-height] family-list.
+    // An invalid value (no size, a size without a unit, no family) changes nothing; a valid one
+    // resets the style, weight, stretch and variant it does not give.
     void apply_font_shorthand(std::string_view v, TextCtx& ctx, double parent_size) {
+        TextCtx t = ctx;
+        t.font.slant = FontSlant::Normal;
+        t.font.weight = 400;
+        t.font.stretch = 100;
+        t.small_caps = false;
         std::size_t i = 0;
         while (i < v.size()) {
             while (i < v.size() && std::isspace(static_cast<unsigned char>(v[i]))) ++i;
             std::size_t e = i;
             while (e < v.size() && !std::isspace(static_cast<unsigned char>(v[e]))) ++e;
-            std::string_view w = v.substr(i, e - i);
-            if (w.empty()) break;
-            if (w == "italic") ctx.font.slant = FontSlant::Italic;
-            else if (w == "oblique") ctx.font.slant = FontSlant::Oblique;
-            else if (w == "small-caps") ctx.small_caps = true;
+            const std::string_view w = v.substr(i, e - i);
+            if (w.empty()) return;
+            if (w == "italic") t.font.slant = FontSlant::Italic;
+            else if (w == "oblique") t.font.slant = FontSlant::Oblique;
+            else if (w == "small-caps") t.small_caps = true;
             else if (w == "normal") {
-            } else if (auto fw = font_weight(w, ctx.font.weight); fw && w.find_first_not_of("0123456789") == std::string_view::npos) {
-                ctx.font.weight = *fw;
             } else if (w == "bold" || w == "bolder" || w == "lighter") {
-                ctx.font.weight = *font_weight(w, ctx.font.weight);
+                t.font.weight = *font_weight(w, ctx.font.weight);
             } else if (auto fs = font_stretch(w)) {
-                ctx.font.stretch = *fs;
+                t.font.stretch = *fs;
             } else {
                 const std::string_view size = w.substr(0, w.find('/'));
-                if (auto s = font_size(size, parent_size)) ctx.font.size = *s;
-                apply_font_family(trim(v.substr(e)), ctx);
+                const bool bare_number = parse_number(size).has_value();
+                if (bare_number && w.find('/') == std::string_view::npos && e < v.size()) {
+                    // A bare number before the size is a weight; a bare number as the size is invalid.
+                    auto fw = font_weight(w, ctx.font.weight);
+                    std::size_t n = e;
+                    while (n < v.size() && std::isspace(static_cast<unsigned char>(v[n]))) ++n;
+                    std::size_t ne = n;
+                    while (ne < v.size() && !std::isspace(static_cast<unsigned char>(v[ne]))) ++ne;
+                    const std::string_view next = v.substr(n, ne - n).substr(0, v.substr(n, ne - n).find('/'));
+                    if (fw && !next.empty() && font_size(next, parent_size) && !parse_number(next)) {
+                        t.font.weight = *fw;
+                        i = e;
+                        continue;
+                    }
+                    return;
+                }
+                if (bare_number && *parse_number(size) != 0) return;
+                auto fsz = font_size(size, parent_size);
+                if (!fsz) return;
+                const std::string_view family = trim(v.substr(e));
+                if (family.empty()) return;
+                t.font.size = *fsz;
+                apply_font_family(family, t);
+                ctx = t;
                 return;
             }
             i = e;
@@ -1668,7 +1695,12 @@ public:
             } else if (k == "font-variant" || k == "font-variant-caps") {
                 ctx.small_caps = val == "small-caps";
             } else if (k == "font-kerning") {
-                ctx.no_kerning = val == "none";
+                // A CSS property only (resvg ignores the presentation attribute).
+                if (!node.attribute("font-kerning")) ctx.no_kerning = val == "none";
+            } else if (k == "kerning") {
+                // SVG 1.1: "auto" or a length; 0 turns kerning off, other lengths are not supported.
+                if (val == "auto") ctx.no_kerning = false;
+                else if (auto l = parse_length(val, 0); l && *l == 0) ctx.no_kerning = true;
             } else if (k == "font-feature-settings") {
                 ctx.feature_settings.clear();
                 if (val != "normal") {

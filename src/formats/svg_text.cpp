@@ -216,14 +216,13 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
     chunk_starts.push_back(n);
 
     std::vector<std::vector<Cluster>> chunks;
-    std::vector<int> chunk_level;
     std::vector<std::uint8_t> levels;
     std::vector<text_detail::ShapedRun> runs;
     bool warned_fonts = false;
     for (std::size_t c = 0; c + 1 < chunk_starts.size(); ++c) {
         const std::size_t cb = chunk_starts[c], ce = chunk_starts[c + 1];
         const std::u32string_view ctext(text.data() + cb, ce - cb);
-        const int para = text_detail::resolve_bidi_levels(ctext, in.direction, levels);
+        text_detail::resolve_bidi_levels(ctext, in.direction, levels);
         struct RunClusters {
             std::uint8_t level;
             std::vector<Cluster> clusters;
@@ -314,7 +313,6 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
         for (std::size_t i : order)
             for (Cluster& k : all_runs[i].clusters) clusters.push_back(std::move(k));
         chunks.push_back(std::move(clusters));
-        chunk_level.push_back(para);
     }
 
     // Positions. The pen carries on from chunk to chunk; dx and dy move it.
@@ -398,10 +396,10 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
             }
             pen_along += shift_after;
         }
-        // text-anchor (the chunk's first character's); start and end swap in right-to-left text.
+        // text-anchor (the chunk's first character's). As in resvg, start is the left end in
+        // right-to-left text too (CSS would take the right end).
         if (!cl.empty()) {
-            Anchor a = first_span.anchor;
-            if (chunk_level[c] & 1) a = a == Anchor::Start ? Anchor::End : a == Anchor::End ? Anchor::Start : a;
+            const Anchor a = first_span.anchor;
             // Trailing spaces do not count (resvg): "end " anchors like "end".
             std::size_t last = cl.size();
             while (last > 1 && cl[last - 1].nch == 1 && is_word_space(text[cl[last - 1].ch])) --last;
