@@ -272,7 +272,7 @@ TEST_CASE("SVG text: fill, stroke and gradients paint text like shapes", "[svg_t
 }
 
 TEST_CASE("SVG text: a textPath to a missing or degenerate path draws nothing and warns", "[svg_text][bad-input]") {
-    for (const std::string& defs : {std::string(""), std::string("<path id='p' d='M 10 10'/>"), std::string("<rect id='p' width='5' height='5'/>")}) {
+    for (const std::string& defs : {std::string(""), std::string("<path id='p' d='M 10 10'/>"), std::string("<circle id='p' r='0'/>")}) {
         const std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><defs>" + defs +
                                 "</defs><text font-family='DejaVu Sans' font-size='20'><textPath href='#p'>Text</textPath></text></svg>";
         const SvgDocument doc = SvgDocument::parse(svg, repo_options());

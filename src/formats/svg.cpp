@@ -1700,7 +1700,7 @@ public:
             } else if (k == "kerning") {
                 // SVG 1.1: "auto" or a length; 0 turns kerning off, other lengths are not supported.
                 if (val == "auto") ctx.no_kerning = false;
-                else if (auto l = parse_length(val, 0); l && *l == 0) ctx.no_kerning = true;
+                else if (auto l = parse_length(val, 1); l && *l == 0) ctx.no_kerning = true;
             } else if (k == "font-feature-settings") {
                 ctx.feature_settings.clear();
                 if (val != "normal") {
@@ -1848,7 +1848,9 @@ public:
     static void all_text(const pugi::xml_node& n, std::string& out) {
         for (const pugi::xml_node& c : n.children()) {
             if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) out += c.value();
-            else if (c.type() == pugi::node_element) all_text(c, out);
+            else if (c.type() == pugi::node_element && std::string_view(c.name()) != "title" &&
+                     std::string_view(c.name()) != "desc" && std::string_view(c.name()) != "metadata")
+                all_text(c, out);
         }
     }
 
@@ -1871,7 +1873,8 @@ public:
             const char* h = href(node);
             const pugi::xml_node target = *h == '#' ? lookup(h + 1) : pugi::xml_node();
             std::optional<Path> p;
-            if (target && std::string_view(target.name()) == "path") p = shape_path(target, vw, vh);
+            // SVG 2: any basic shape may carry the text, not only a path.
+            if (target) p = shape_path(target, vw, vh);
             if (p && p->control_bounds().width() == 0 && p->control_bounds().height() == 0) p.reset();  // no length
             if (!p || p->empty()) {
                 warn("<textPath> references no usable path; its text is not drawn");
@@ -1916,7 +1919,9 @@ public:
         if (name == "tref") {
             const char* h = href(node);
             const pugi::xml_node target = *h == '#' ? lookup(h + 1) : pugi::xml_node();
-            if (target) {
+            // Only SVG elements lend their text (resvg): <not-a-text> gives none.
+            const std::string_view tn = target ? target.name() : "";
+            if (target && (known_element(tn) || tn == "tspan" || tn == "textPath" || tn == "tref" || tn == "g")) {
                 std::string s;
                 all_text(target, s);
                 text_chars(s, ctx, b);
