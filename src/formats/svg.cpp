@@ -1943,7 +1943,7 @@ public:
 
     // Lays out a text element: the outlines of its spans with their styles.
     std::vector<svg_text::Outline> text_outlines(const pugi::xml_node& node, const Style& st, double vw, double vh,
-                                                 std::vector<Style>& styles) {
+                                                 std::vector<Style>& styles, std::optional<Rect>* box = nullptr) {
         TextCtx ctx;
         ctx.viewport_width = vw;
         // Inherited text properties from the ancestors, outermost first.
@@ -2016,21 +2016,17 @@ public:
         if (wm.empty()) wm = inherited(node, "writing-mode");
         b.in.vertical = wm == "tb" || wm == "tb-rl" || wm == "vertical-rl" || wm == "vertical-lr";
         styles = std::move(b.styles);
-        return svg_text::layout(b.in, *text_fonts(), warnings);
+        return svg_text::layout(b.in, *text_fonts(), warnings, box);
     }
 
     void text(const pugi::xml_node& node, const Style& st, const Affine& cm, double vw, double vh, double opacity) {
         std::vector<Style> styles;
-        const std::vector<svg_text::Outline> outlines = text_outlines(node, st, vw, vh, styles);
-        // Paint servers in objectBoundingBox units use the whole text's box.
+        std::optional<Rect> cells;
+        const std::vector<svg_text::Outline> outlines = text_outlines(node, st, vw, vh, styles, &cells);
+        // Paint servers in objectBoundingBox units use the whole text's box (its glyph cells).
+        if (!cells || outlines.empty()) return;
         Path box;
-        {
-            std::optional<Rect> r;
-            for (const svg_text::Outline& o : outlines)
-                if (o.layer == svg_text::Outline::Glyphs && !o.path.empty()) r = r ? r->united(o.path.bounds()) : o.path.bounds();
-            if (!r) return;
-            box.add_rect(*r);
-        }
+        box.add_rect(*cells);
         for (svg_text::Outline::Layer layer : {svg_text::Outline::Under, svg_text::Outline::Glyphs, svg_text::Outline::Over}) {
             for (const svg_text::Outline& o : outlines) {
                 if (o.layer != layer || o.path.empty()) continue;

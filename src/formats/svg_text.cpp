@@ -193,7 +193,7 @@ std::vector<const Font*> FontSet::chain(const FontSpec& spec, std::u32string_vie
     return out;
 }
 
-std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std::string>& warnings) {
+std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std::string>& warnings, std::optional<Rect>* box) {
     std::u32string text;
     std::vector<std::size_t> span_of;
     for (std::size_t s = 0; s < in.spans.size(); ++s) {
@@ -494,6 +494,13 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                 if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
             }
             t = t * Affine::scale(g.scale_x, 1);
+            if (box && g.font) {
+                // The cluster's cell: its advance by the font's ascender to descender.
+                const FontMetrics& m = g.font->metrics();
+                const double s = size / m.units_per_em;
+                const Rect cell = transform_bounds(t, Rect{0, -m.ascender * s, g.advance, -m.descender * s});
+                *box = *box ? (*box)->united(cell) : cell;
+            }
             for (const Glyph& gl : g.glyphs) {
                 const double s = size / gl.font->units_per_em();
                 try {

@@ -107,7 +107,10 @@ private:
     std::vector<std::size_t> broken_;
 };
 
-// Lays out and outlines `in`. Warnings (missing fonts) go to `warnings`.
-std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std::string>& warnings);
+// Lays out and outlines `in`. Warnings (missing fonts) go to `warnings`. `box`, when given,
+// receives the union of the glyph cells (advance by ascender to descender): the text's bounding
+// box for objectBoundingBox units, as resvg and browsers take it (not the ink's).
+std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std::string>& warnings,
+                            std::optional<Rect>* box = nullptr);
 
 }  // namespace casteljau::svg_text
