@@ -1566,6 +1566,25 @@ public:
         if (!fams.empty()) ctx.font.families = std::move(fams);
     }
 
+    // font-feature-settings and font-variation-settings: a comma-separated list of a quoted tag
+    // and an optional value ("'liga' 0, 'smcp'"), as (tag, value) pairs without the quotes.
+    static std::vector<std::pair<std::string, std::string>> tag_value_list(std::string_view v) {
+        std::vector<std::pair<std::string, std::string>> out;
+        std::size_t i = 0;
+        while (i <= v.size()) {
+            std::size_t comma = v.find(',', i);
+            if (comma == std::string_view::npos) comma = v.size();
+            std::string item(trim(v.substr(i, comma - i)));
+            std::erase(item, '"');
+            std::erase(item, '\'');
+            const std::size_t sp = item.find(' ');
+            if (!item.empty())
+                out.emplace_back(item.substr(0, sp), sp == std::string::npos ? std::string() : std::string(trim(std::string_view(item).substr(sp))));
+            i = comma + 1;
+        }
+        return out;
+    }
+
     static std::optional<int> font_weight(std::string_view v, int parent) {
         if (v == "normal") return 400;
         if (v == "bold") return 700;
@@ -1704,41 +1723,17 @@ public:
             } else if (k == "font-feature-settings") {
                 ctx.feature_settings.clear();
                 if (val != "normal") {
-                    std::size_t i = 0;
-                    while (i <= val.size()) {
-                        std::size_t comma = val.find(',', i);
-                        if (comma == std::string_view::npos) comma = val.size();
-                        std::string item(trim(val.substr(i, comma - i)));
-                        std::erase(item, '"');
-                        std::erase(item, '\'');
-                        const std::size_t sp = item.find(' ');
-                        if (sp != std::string::npos) {
-                            std::string tag = item.substr(0, sp), value(trim(std::string_view(item).substr(sp)));
-                            if (value == "on") value = "1";
-                            if (value == "off") value = "0";
-                            item = tag + "=" + value;
-                        }
-                        if (!item.empty()) ctx.feature_settings.push_back(item);
-                        i = comma + 1;
+                    for (auto& [tag, value] : tag_value_list(val)) {
+                        if (value == "on") value = "1";
+                        if (value == "off") value = "0";
+                        ctx.feature_settings.push_back(value.empty() ? tag : tag + "=" + value);
                     }
                 }
             } else if (k == "font-variation-settings") {
                 ctx.font.variations.clear();
-                if (val != "normal") {
-                    std::size_t i = 0;
-                    while (i <= val.size()) {
-                        std::size_t comma = val.find(',', i);
-                        if (comma == std::string_view::npos) comma = val.size();
-                        std::string item(trim(val.substr(i, comma - i)));
-                        std::erase(item, '"');
-                        std::erase(item, '\'');
-                        const std::size_t sp = item.find(' ');
-                        if (sp != std::string::npos && sp <= 4)
-                            if (auto n = parse_number(std::string_view(item).substr(sp + 1)))
-                                ctx.font.variations.push_back({item.substr(0, sp), *n});
-                        i = comma + 1;
-                    }
-                }
+                if (val != "normal")
+                    for (const auto& [tag, value] : tag_value_list(val))
+                        if (auto n = parse_number(value); n && tag.size() <= 4) ctx.font.variations.push_back({tag, *n});
             } else if (k == "letter-spacing") {
                 if (val == "normal") ctx.letter_spacing = 0;
                 else if (auto l = text_length(val, fs, ctx.viewport_width)) ctx.letter_spacing = *l;

@@ -60,6 +60,22 @@ std::pair<int, double> stretch_key(double desired, double have) {
     return have > desired ? std::pair{1, have - desired} : std::pair{2, desired - have};
 }
 
+// The face with the smallest key among those `eligible` accepts (the first one on ties).
+template <class Eligible, class KeyOf>
+std::optional<std::size_t> best_face(const std::vector<FontFaceInfo>& faces, Eligible eligible, KeyOf key_of) {
+    std::optional<std::size_t> best;
+    decltype(key_of(faces.front())) best_key{};
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+        if (!eligible(i)) continue;
+        const auto key = key_of(faces[i]);
+        if (!best || key < best_key) {
+            best = i;
+            best_key = key;
+        }
+    }
+    return best;
+}
+
 }  // namespace
 
 struct FontDatabase::Impl {
@@ -203,21 +219,17 @@ FontDatabase::~FontDatabase() = default;
 const std::vector<FontFaceInfo>& FontDatabase::faces() const { return impl_->faces; }
 
 std::optional<std::size_t> FontDatabase::match(std::string_view family, int weight, FontSlant slant, double stretch) const {
-    std::optional<std::size_t> best;
-    std::tuple<std::pair<int, double>, int, std::pair<int, double>> best_key;
-    for (std::size_t i = 0; i < impl_->faces.size(); ++i) {
-        const FontFaceInfo& f = impl_->faces[i];
-        if (std::none_of(f.families.begin(), f.families.end(), [&](const std::string& n) { return same_name(n, family); }))
-            continue;
-        // Stretch narrows first, then style, then weight (CSS Fonts 4, 5.2 step 4).
-        const auto key = std::make_tuple(stretch_key(stretch, f.stretch), slant_rank(slant, f.slant),
-                                         weight_key(weight, f.min_weight, f.max_weight));
-        if (!best || key < best_key) {
-            best = i;
-            best_key = key;
-        }
-    }
-    return best;
+    // Stretch narrows first, then style, then weight (CSS Fonts 4, 5.2 step 4).
+    return best_face(
+        impl_->faces,
+        [&](std::size_t i) {
+            const auto& names = impl_->faces[i].families;
+            return std::any_of(names.begin(), names.end(), [&](const std::string& n) { return same_name(n, family); });
+        },
+        [&](const FontFaceInfo& f) {
+            return std::make_tuple(stretch_key(stretch, f.stretch), slant_rank(slant, f.slant),
+                                   weight_key(weight, f.min_weight, f.max_weight));
+        });
 }
 
 bool FontDatabase::covers(std::size_t face, char32_t c) const {
@@ -231,19 +243,13 @@ bool FontDatabase::covers(std::size_t face, char32_t c) const {
 }
 
 std::optional<std::size_t> FontDatabase::fallback(char32_t c, int weight, FontSlant slant, double stretch) const {
-    std::optional<std::size_t> best;
-    std::tuple<int, std::pair<int, double>, std::pair<int, double>> best_key;
-    for (std::size_t i = 0; i < impl_->faces.size(); ++i) {
-        if (!covers(i, c)) continue;
-        const FontFaceInfo& f = impl_->faces[i];
-        const auto key = std::make_tuple(slant_rank(slant, f.slant), stretch_key(stretch, f.stretch),
-                                         weight_key(weight, f.min_weight, f.max_weight));
-        if (!best || key < best_key) {
-            best = i;
-            best_key = key;
-        }
-    }
-    return best;
+    // Any family: the style matters most, then stretch and weight.
+    return best_face(
+        impl_->faces, [&](std::size_t i) { return covers(i, c); },
+        [&](const FontFaceInfo& f) {
+            return std::make_tuple(slant_rank(slant, f.slant), stretch_key(stretch, f.stretch),
+                                   weight_key(weight, f.min_weight, f.max_weight));
+        });
 }
 
 Font FontDatabase::open(std::size_t face) const {
