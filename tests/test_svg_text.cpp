@@ -350,3 +350,24 @@ TEST_CASE("casteljau svg: --font-dir and --font-family draw text, a missing font
     CHECK(bad.err.find("missing") != std::string::npos);
     CHECK_FALSE(fs::exists(out2));
 }
+
+TEST_CASE("SVG text: spacing and text paths beyond double range neither fail nor draw garbage", "[svg_text][bad-input]") {
+    const std::string svg =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><defs><path id='p' d='M 0 0 L 1e308 1e308 L -1e308 0'/></defs>"
+        "<text x='5' y='50' font-family='DejaVu Sans' font-size='20' letter-spacing='1e308'>ABC</text>"
+        "<text font-family='DejaVu Sans' font-size='20'><textPath href='#p'>Text</textPath></text></svg>";
+    const SvgDocument doc = SvgDocument::parse(svg, repo_options());
+    const Pixmap pm = doc.render();
+    CHECK(pm.width() == 100);
+    // The first glyph stands where it should; the ones pushed to infinity are left out.
+    CHECK(ink(pm) > 0);
+}
+
+TEST_CASE("SVG text: the character budget counts every use copy of a text", "[svg_text][bad-input]") {
+    std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' width='100' height='100'>"
+                      "<defs><text id='t' font-family='DejaVu Sans' font-size='5'>" + std::string(1000, 'x') + "</text></defs>";
+    for (int i = 0; i < 200; ++i) svg += "<use xlink:href='#t'/>";
+    svg += "</svg>";
+    const SvgDocument doc = SvgDocument::parse(svg, repo_options());
+    CHECK(has_warning(doc, std::to_string(limits::kMaxSvgTextChars) + " characters"));
+}

@@ -48,8 +48,9 @@ inline constexpr std::size_t kMaxSvgElements = 1'000'000;
 inline constexpr int kMaxSvgImageNesting = 4;
 // Decompressed size of an .svgz.
 inline constexpr std::size_t kMaxSvgzBytes = 64u << 20;
-// Characters laid out per <text> element (after white-space processing); the rest is dropped with
-// a warning. Bounds the outline memory of a huge text node (about 1 KB of path per glyph).
+// Characters of text laid out per document (after white-space processing, each use copy counted
+// again); the rest is dropped with a warning. Bounds the outline memory of huge text (about 1 KB
+// of path per glyph).
 inline constexpr std::size_t kMaxSvgTextChars = 100'000;
 // Largest font-size (user units) drawn; text with a larger one is skipped with a warning.
 inline constexpr double kMaxSvgFontSize = 1e5;

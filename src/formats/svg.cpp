@@ -1482,6 +1482,7 @@ public:
     // glyph outlines in the text's user space, painted as ordinary fill and stroke items.
 
     std::unique_ptr<svg_text::FontSet> font_set;
+    std::size_t text_chars_total = 0;  // characters of all text laid out so far (use copies too)
 
     svg_text::FontSet* text_fonts() {
         if (!font_set) {
@@ -1798,7 +1799,7 @@ public:
     void text_chars(std::string_view raw, const TextCtx& ctx, TextBuild& b) {
         std::u32string in = decode_utf8(raw), out;
         for (char32_t c : in) {
-            if (b.chars + out.size() >= limits::kMaxSvgTextChars) {
+            if (text_chars_total + out.size() >= limits::kMaxSvgTextChars) {
                 b.truncated = true;
                 break;
             }
@@ -1836,6 +1837,7 @@ public:
         sp.path = ctx.path;
         sp.path_element = ctx.path_element;
         b.chars += sp.text.size();
+        text_chars_total += sp.text.size();
         b.in.spans.push_back(std::move(sp));
     }
 
@@ -1891,7 +1893,11 @@ public:
                 if (!sv.empty() && sv.back() == '%') {
                     if (auto pct = parse_number(sv.substr(0, sv.size() - 1))) {
                         Polyline poly;
-                        flatten(tp.path, Affine{}, 0.01, poly);
+                        try {
+                            flatten(tp.path, Affine{}, 0.01, poly);
+                        } catch (const Error&) {
+                            poly.clear();  // an unusable path: the text is not drawn (svg_text.cpp)
+                        }
                         double total = 0;
                         std::uint32_t s0 = 0;
                         for (std::size_t c = 0; c < poly.contour_count(); ++c) {
@@ -1952,7 +1958,8 @@ public:
         TextBuild b;
         text_element(node, ctx, st, Affine{}, vw, vh, b, 1);
         if (b.truncated)
-            warn("<text> holds more than " + std::to_string(limits::kMaxSvgTextChars) + " characters; the rest is not drawn");
+            warn("the document's text holds more than " + std::to_string(limits::kMaxSvgTextChars) +
+                 " characters; the rest is not drawn");
         // A trailing collapsible space is removed.
         if (!b.in.spans.empty() && b.last_space && !b.last_preserved && !b.in.spans.back().text.empty() &&
             b.in.spans.back().text.back() == U' ') {

@@ -72,9 +72,14 @@ struct PathWalker {
     std::vector<double> len;  // cumulative length at each point
     std::vector<bool> jump;   // pts[i] starts a new subpath (no segment from pts[i-1])
 
+    // A path that cannot be flattened (non-finite, or too many segments) carries no text.
     explicit PathWalker(const Path& path) {
         Polyline poly;
-        flatten(path, Affine{}, 0.01, poly);
+        try {
+            flatten(path, Affine{}, 0.01, poly);
+        } catch (const Error&) {
+            return;
+        }
         std::uint32_t start = 0;
         for (std::size_t c = 0; c < poly.contour_count(); ++c) {
             const std::uint32_t end = poly.contour_ends[c];
@@ -494,6 +499,7 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                 if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
             }
             t = t * Affine::scale(g.scale_x, 1);
+            if (!t.is_finite()) continue;  // spacing or positions beyond double range: not drawn
             if (box && g.font) {
                 // The cluster's cell: its advance by the font's ascender to descender.
                 const FontMetrics& m = g.font->metrics();
