@@ -18,6 +18,7 @@
 #include "casteljau/png.hpp"
 #include "casteljau/svg.hpp"
 #include "cli_util.hpp"
+#include "text/font_impl.hpp"
 #include "skip.hpp"
 
 using namespace casteljau;
@@ -126,9 +127,11 @@ TEST_CASE("FontDatabase: a font folder lists its faces with their family names a
     CHECK(db->faces()[*dejavu].weight == 400);
     CHECK(db->faces()[*dejavu].slant == FontSlant::Normal);
     CHECK_FALSE(db->match("No Such Family"));
-    // A face opened twice shares the file but is an independent Font.
+    // A face opened twice shares the file's bytes (read once) but is an independent Font.
     const Font a = db->open(*dejavu), b = db->open(*dejavu);
     CHECK(&a.impl() != &b.impl());
+    CHECK(a.impl().face != b.impl().face);
+    CHECK(a.impl().bytes.get() == b.impl().bytes.get());
     CHECK(a.family_name() == "DejaVu Sans");
 }
 

@@ -317,10 +317,15 @@ Font Font::from_memory(std::vector<std::uint8_t> bytes, int face_index, std::str
         throw Error(ErrorKind::Limit, "font '" + name + "' is larger than " +
                                           std::to_string(kMaxFontFileBytes >> 20) + " MiB");
     check_sfnt_directory(bytes, name);
+    return from_shared_bytes(std::make_shared<const std::vector<std::uint8_t>>(std::move(bytes)), face_index, std::move(name));
+}
+
+// A Font over bytes already checked (from_memory), shared with the Fonts cloned from it.
+Font Font::from_shared_bytes(std::shared_ptr<const std::vector<std::uint8_t>> bytes, int face_index, std::string name) {
     auto impl = std::make_unique<Impl>();
     impl->source = std::move(name);
     impl->face_index = face_index;
-    impl->bytes = std::make_shared<const std::vector<std::uint8_t>>(std::move(bytes));
+    impl->bytes = std::move(bytes);
     if (FT_Error err = FT_Init_FreeType(&impl->library)) {
         impl->library = nullptr;
         font_error(impl->source, "cannot start FreeType: " + ft_error_text(err));
@@ -393,7 +398,7 @@ Font Font::from_memory(std::vector<std::uint8_t> bytes, int face_index, std::str
 }
 
 Font Font::clone() const {
-    Font f = from_memory(*impl_->bytes, impl_->face_index, impl_->source);
+    Font f = from_shared_bytes(impl_->bytes, impl_->face_index, impl_->source);
     if (is_variable()) {
         std::vector<Variation> v;
         for (std::size_t i = 0; i < impl_->axes.size(); ++i) v.push_back({impl_->axes[i].tag, impl_->coords[i]});
