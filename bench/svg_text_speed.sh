@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SVG text speed, side by side with rsvg-convert: renders every file of the resvg suite's text/
 # area (379 files) at 300 px wide with each program, one process per file (as a user runs them),
-# ROUNDS times, and prints the median wall time per file. Both use only the suite's fonts:
+# the two programs alternating file by file (both see the same machine load), ROUNDS times, and
+# prints the median over rounds of the wall time per file. Both use only the suite's fonts:
 # casteljau through --font-dir, rsvg-convert through a fontconfig file naming the same folder.
 # Usage: bench/svg_text_speed.sh [BUILD_DIR] [ROUNDS]      (default build, 3)
 set -euo pipefail
@@ -22,24 +23,27 @@ cat > "$work/fonts.conf" <<CONF
 </fontconfig>
 CONF
 files=("$suite"/tests/text/*/*.svg)
-run_casteljau() {
+FONTCONFIG_FILE="$work/fonts.conf" fc-cache > /dev/null 2>&1 || true  # rsvg-convert's font cache, built once
+now() { date +%s%N; }
+# One round: every file with casteljau then with rsvg-convert, alternating, so that both see the
+# same machine load; prints the two totals in nanoseconds.
+round() {
+  local tc=0 tr=0 t0 t1 t2
   for f in "${files[@]}"; do
+    t0=$(now)
     "$build/casteljau" svg "$f" -w 300 -o "$work/c.png" -q --skip-system-fonts --font-dir "$suite/fonts" \
       --font-family "Noto Serif" --serif-family "Noto Serif" --sans-serif-family "Noto Sans" 2> /dev/null || true
-  done
-}
-run_rsvg() {
-  for f in "${files[@]}"; do
+    t1=$(now)
     FONTCONFIG_FILE="$work/fonts.conf" rsvg-convert -w 300 "$f" -o "$work/r.png" 2> /dev/null || true
+    t2=$(now)
+    tc=$((tc + t1 - t0))
+    tr=$((tr + t2 - t1))
   done
+  echo "$tc $tr"
 }
-FONTCONFIG_FILE="$work/fonts.conf" fc-cache > /dev/null 2>&1 || true  # rsvg-convert's font cache, built once
 median() { sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
-for tool in casteljau rsvg; do
-  for ((r = 0; r < rounds; r++)); do
-    start=$(date +%s%N)
-    "run_$tool"
-    end=$(date +%s%N)
-    echo $(((end - start) / ${#files[@]} / 1000))
-  done | median | awk -v t="$tool" -v n="${#files[@]}" '{printf "%-10s %d files, median %.1f ms per file\n", t, n, $1 / 1000}'
-done
+results=()
+for ((r = 0; r < rounds; r++)); do results+=("$(round)"); done
+n=${#files[@]}
+printf '%s\n' "${results[@]}" | awk '{print $1}' | median | awk -v n="$n" '{printf "casteljau     %d files, median of rounds %.1f ms per file\n", n, $1 / n / 1e6}'
+printf '%s\n' "${results[@]}" | awk '{print $2}' | median | awk -v n="$n" '{printf "rsvg-convert  %d files, median of rounds %.1f ms per file\n", n, $1 / n / 1e6}'
