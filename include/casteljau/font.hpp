@@ -54,6 +54,9 @@ struct FontMetrics {
     double descender = 0;  // bottom of the line box (usually < 0)
     double line_gap = 0;
     double underline_position = 0, underline_thickness = 0;
+    double strikeout_position = 0, strikeout_thickness = 0;  // line-through: centre above the baseline
+    double x_height = 0, cap_height = 0;  // OS/2 values, or HarfBuzz's estimates from the glyphs
+    double subscript_offset = 0, superscript_offset = 0;  // OS/2: baseline shift down / up
     // Distance between consecutive baselines: ascender - descender + line_gap.
     double line_spacing() const { return ascender - descender + line_gap; }
 };
@@ -151,6 +154,7 @@ public:
 
 private:
     explicit Font(std::unique_ptr<Impl> impl);
+    static Font from_shared_bytes(std::shared_ptr<const std::vector<std::uint8_t>> bytes, int face_index, std::string name);
     std::unique_ptr<Impl> impl_;
 };
 

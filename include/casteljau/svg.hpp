@@ -16,7 +16,9 @@
 // Filters: the filter property (url() lists and the CSS filter functions) with every filter
 // primitive, evaluated by the filter stage (casteljau/filter.hpp) in device pixels after the
 // element is drawn into a layer, before its clip, mask and opacity (src/formats/svg_filter.cpp).
-// Not drawn yet: text (warnings name it).
+// Text: text, tspan, tref, textPath and a inside text (src/formats/svg_text.hpp: fonts through
+// FontDatabase, shaping through casteljau's HarfBuzz engine, glyphs become ordinary filled and
+// stroked paths).
 // Cycles (use, gradient href, clip-path, mask, marker) are broken: the repeated reference is
 // skipped or the element is not drawn.
 // SVG coordinates: user units, y down, mapped to pixels by the viewBox transform.
@@ -33,6 +35,7 @@
 #include <vector>
 
 #include "casteljau/canvas.hpp"
+#include "casteljau/font_database.hpp"
 #include "casteljau/paint.hpp"
 
 namespace casteljau {
@@ -47,6 +50,12 @@ inline constexpr std::size_t kMaxSvgElements = 1'000'000;
 inline constexpr int kMaxSvgImageNesting = 4;
 // Decompressed size of an .svgz.
 inline constexpr std::size_t kMaxSvgzBytes = 64u << 20;
+// Characters of text laid out per document (after white-space processing, each use copy counted
+// again); the rest is dropped with a warning. Bounds the outline memory of huge text (about 1 KB
+// of path per glyph).
+inline constexpr std::size_t kMaxSvgTextChars = 100'000;
+// Largest font-size (user units) drawn; text with a larger one is skipped with a warning.
+inline constexpr double kMaxSvgFontSize = 1e5;
 }  // namespace limits
 
 // Where <image> may read files from. Nothing is ever fetched over the network (http:, https:,
@@ -54,10 +63,24 @@ inline constexpr std::size_t kMaxSvgzBytes = 64u << 20;
 // against `base_dir` and must stay inside `resource_root` (default: base_dir itself) after
 // symbolic links are resolved. An empty base_dir (text parsed from memory) refuses every file;
 // data: URIs always work.
+//
+// Text is drawn with fonts from `font_dirs` and `font_files` plus the system's (fontconfig) unless
+// `system_fonts` is false; or, when `font_database` is set, from that database alone (share one
+// between documents so that each font file is read once). The generic CSS families map to the
+// `*_family` names, and `font_family` ends every font-family list (the defaults are resvg's).
 struct SvgOptions {
     std::string base_dir;
     std::string resource_root;
     int nesting = 0;  // SVG images nest at most limits::kMaxSvgImageNesting deep
+    std::vector<std::string> font_dirs, font_files;
+    bool system_fonts = true;
+    std::string font_family = "Times New Roman";
+    std::string serif_family = "Times New Roman";
+    std::string sans_serif_family = "Arial";
+    std::string cursive_family = "Comic Sans MS";
+    std::string fantasy_family = "Impact";
+    std::string monospace_family = "Courier New";
+    std::shared_ptr<const FontDatabase> font_database;
 };
 
 class SvgDocument {
@@ -69,6 +92,8 @@ public:
     // Reads a file (.svg or .svgz); images resolve against the file's folder, and may not leave it
     // unless `resource_root` names a wider folder.
     static SvgDocument load(const std::string& path, const std::string& resource_root = {});
+    // Same with options (fonts, resource_root); base_dir is set to the file's folder.
+    static SvgDocument load(const std::string& path, const SvgOptions& options);
 
     SvgDocument(SvgDocument&&) noexcept;
     SvgDocument& operator=(SvgDocument&&) noexcept;

@@ -16,6 +16,8 @@ void register_svg(CLI::App& app) {
         int width = 0, height = 0;
         double tolerance = kDefaultTolerance;
         bool quiet = false;
+        SvgOptions svg;
+        bool skip_system_fonts = false;
     };
     auto o = std::make_shared<Opts>();
     CLI::App* cmd = app.add_subcommand("svg", "Render an SVG file to PNG");
@@ -37,11 +39,31 @@ void register_svg(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--resources", o->resources,
                     "Folder that <image> files may be read from (default: the input's own folder; nothing for standard input)");
+    cmd->add_option("--font-dir", o->svg.font_dirs, "Folder of fonts for text (repeatable); the system's fonts are used too");
+    cmd->add_option("--font-file", o->svg.font_files, "A font file for text (repeatable)");
+    cmd->add_flag("--skip-system-fonts", o->skip_system_fonts, "Do not use the system's fonts (fontconfig) for text");
+    cmd->add_option("--font-family", o->svg.font_family, "Default font family")->capture_default_str();
+    cmd->add_option("--serif-family", o->svg.serif_family, "Font family for 'serif'")->capture_default_str();
+    cmd->add_option("--sans-serif-family", o->svg.sans_serif_family, "Font family for 'sans-serif'")->capture_default_str();
+    cmd->add_option("--cursive-family", o->svg.cursive_family, "Font family for 'cursive'")->capture_default_str();
+    cmd->add_option("--fantasy-family", o->svg.fantasy_family, "Font family for 'fantasy'")->capture_default_str();
+    cmd->add_option("--monospace-family", o->svg.monospace_family, "Font family for 'monospace'")->capture_default_str();
     cmd->add_flag("-q,--quiet", o->quiet, "Do not print warnings about unsupported SVG features");
     cmd->callback([o] {
         const Color bg = parse_color_option("--background", o->background);
         // A file resolves relative <image> hrefs against its folder; standard input has none.
-        const SvgDocument doc = o->input == "-" ? SvgDocument::parse(read_text_input(o->input)) : SvgDocument::load(o->input, o->resources);
+        SvgOptions so = o->svg;
+        so.system_fonts = !o->skip_system_fonts;
+        so.resource_root = o->resources;
+        // One font database for the whole run: each font file is read once.
+        if (!so.font_dirs.empty() || !so.font_files.empty() || so.system_fonts) {
+            FontDatabaseOptions fo;
+            fo.font_dirs = so.font_dirs;
+            fo.font_files = so.font_files;
+            fo.system_fonts = so.system_fonts;
+            so.font_database = std::make_shared<const FontDatabase>(fo);
+        }
+        const SvgDocument doc = o->input == "-" ? SvgDocument::parse(read_text_input(o->input), so) : SvgDocument::load(o->input, so);
         if (!o->quiet)
             for (const std::string& w : doc.warnings()) std::cerr << "casteljau: warning: " << w << "\n";
         // Output size as resvg and rsvg-convert choose it (svg.hpp): from the rounded intrinsic

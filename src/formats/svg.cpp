@@ -28,8 +28,11 @@
 #include "casteljau/shader.hpp"
 #include "casteljau/stroke.hpp"
 #include "casteljau/svg_path.hpp"
+#include "casteljau/flatten.hpp"
+#include "casteljau/text.hpp"
 #include "formats/css.hpp"
 #include "formats/svg_filter.hpp"
+#include "formats/svg_text.hpp"
 
 namespace casteljau {
 
@@ -1012,6 +1015,20 @@ public:
             return;
         }
         (void)props;
+        if (name == "text") {
+            std::vector<Style> styles;
+            for (svg_text::Outline& o : text_outlines(c, Style{}, vw, vh, styles)) {
+                if (o.layer == svg_text::Outline::Glyphs && o.path.empty()) continue;
+                Item it;
+                it.kind = Item::Fill;
+                it.color = Color::black();
+                it.rule = rule;
+                it.transform = cm;
+                it.path = std::move(o.path);
+                items.push_back(std::move(it));
+            }
+            return;
+        }
         std::optional<Path> p = shape_path(c, vw, vh);
         if (!p || p->empty() || name == "line") return;
         bool missing = false;
@@ -1455,6 +1472,7 @@ public:
             return;
         }
         if (name == "image") return image(child, cst, cm, vw, vh, opacity);
+        if (name == "text") return text(child, cst, cm, vw, vh, opacity);
         std::optional<Path> p = shape_path(child, vw, vh);
         if (!p) {
             if (name != "path" && name != "rect" && name != "circle" && name != "ellipse" && name != "line" &&
@@ -1616,6 +1634,584 @@ public:
         items.push_back(layer_item(Item::EndLayer, 1));
         active_refs.pop_back();
     }
+
+    // ---- Text (src/formats/svg_text.hpp): text, tspan, tref, textPath and a inside text become
+    // glyph outlines in the text's user space, painted as ordinary fill and stroke items.
+
+    std::unique_ptr<svg_text::FontSet> font_set;
+    std::size_t text_chars_total = 0;  // characters of all text laid out so far (use copies too)
+
+    svg_text::FontSet* text_fonts() {
+        if (!font_set) {
+            std::shared_ptr<const FontDatabase> db = options.font_database;
+            if (!db) {
+                FontDatabaseOptions fo;
+                fo.font_dirs = options.font_dirs;
+                fo.font_files = options.font_files;
+                fo.system_fonts = options.system_fonts;
+                db = std::make_shared<const FontDatabase>(fo);
+                options.font_database = db;  // nested SVG images share it
+            }
+            font_set = std::make_unique<svg_text::FontSet>(db);
+        }
+        return font_set.get();
+    }
+
+    // Computed text properties along the text/tspan tree.
+    struct TextCtx {
+        svg_text::FontSpec font;
+        bool small_caps = false, no_kerning = false;
+        std::vector<std::string> feature_settings;
+        double letter_spacing = 0, word_spacing = 0;
+        svg_text::Anchor anchor = svg_text::Anchor::Start;
+        svg_text::Baseline dominant = svg_text::Baseline::Alphabetic;
+        svg_text::Baseline baseline = svg_text::Baseline::Alphabetic;  // alignment-baseline or dominant
+        std::vector<svg_text::Span::Shift> baseline_shifts;
+        bool preserve = false;
+        std::vector<svg_text::Decoration> decorations;
+        int path = -1, path_element = -1;
+        std::size_t style = 0;
+        std::string direction;
+        double viewport_width = 100;  // percentages of letter- and word-spacing (as resvg)
+    };
+
+    static std::vector<std::string_view> split_list(std::string_view v) {
+        std::vector<std::string_view> out;
+        std::size_t i = 0;
+        while (i < v.size()) {
+            while (i < v.size() && (std::isspace(static_cast<unsigned char>(v[i])) || v[i] == ',')) ++i;
+            const std::size_t b = i;
+            while (i < v.size() && !std::isspace(static_cast<unsigned char>(v[i])) && v[i] != ',') ++i;
+            if (i > b) out.push_back(v.substr(b, i - b));
+        }
+        return out;
+    }
+
+    // A length for text properties: em and ex relative to `font_size`, percentages of `percent_of`.
+    static std::optional<double> text_length(std::string_view v, double font_size, double percent_of) {
+        v = trim(v);
+        if (v.size() > 2 && v.substr(v.size() - 2) == "em") {
+            auto n = parse_number(v.substr(0, v.size() - 2));
+            return n ? std::optional<double>(*n * font_size) : std::nullopt;
+        }
+        if (v.size() > 2 && v.substr(v.size() - 2) == "ex") {
+            auto n = parse_number(v.substr(0, v.size() - 2));
+            return n ? std::optional<double>(*n * font_size / 2) : std::nullopt;
+        }
+        return parse_length(v, percent_of);
+    }
+
+    std::string generic_family(std::string_view f) const {
+        if (f == "serif") return options.serif_family;
+        if (f == "sans-serif") return options.sans_serif_family;
+        if (f == "cursive") return options.cursive_family;
+        if (f == "fantasy") return options.fantasy_family;
+        if (f == "monospace") return options.monospace_family;
+        return std::string(f);
+    }
+
+    void apply_font_family(std::string_view v, TextCtx& ctx) {
+        std::vector<std::string> fams;
+        std::size_t i = 0;
+        while (i <= v.size()) {
+            std::size_t comma = v.find(',', i);
+            if (comma == std::string_view::npos) comma = v.size();
+            std::string_view f = trim(v.substr(i, comma - i));
+            if (f.size() >= 2 && (f.front() == '\'' || f.front() == '"') && f.back() == f.front()) f = f.substr(1, f.size() - 2);
+            if (!f.empty()) fams.push_back(generic_family(f));
+            i = comma + 1;
+        }
+        if (!fams.empty()) ctx.font.families = std::move(fams);
+    }
+
+    // font-feature-settings and font-variation-settings: a comma-separated list of a quoted tag
+    // and an optional value ("'liga' 0, 'smcp'"), as (tag, value) pairs without the quotes.
+    static std::vector<std::pair<std::string, std::string>> tag_value_list(std::string_view v) {
+        std::vector<std::pair<std::string, std::string>> out;
+        std::size_t i = 0;
+        while (i <= v.size()) {
+            std::size_t comma = v.find(',', i);
+            if (comma == std::string_view::npos) comma = v.size();
+            std::string item(trim(v.substr(i, comma - i)));
+            std::erase(item, '"');
+            std::erase(item, '\'');
+            const std::size_t sp = item.find(' ');
+            if (!item.empty())
+                out.emplace_back(item.substr(0, sp), sp == std::string::npos ? std::string() : std::string(trim(std::string_view(item).substr(sp))));
+            i = comma + 1;
+        }
+        return out;
+    }
+
+    static std::optional<int> font_weight(std::string_view v, int parent) {
+        if (v == "normal") return 400;
+        if (v == "bold") return 700;
+        if (v == "bolder") return parent < 350 ? 400 : parent < 550 ? 700 : 900;
+        if (v == "lighter") return parent < 550 ? 100 : parent < 750 ? 400 : 700;
+        if (auto n = parse_number(v); n && *n >= 1 && *n <= 1000) return static_cast<int>(std::lround(*n));
+        return std::nullopt;
+    }
+
+    static std::optional<double> font_stretch(std::string_view v) {
+        static const std::pair<std::string_view, double> names[] = {
+            {"ultra-condensed", 50}, {"extra-condensed", 62.5}, {"condensed", 75}, {"semi-condensed", 87.5},
+            {"normal", 100}, {"semi-expanded", 112.5}, {"expanded", 125}, {"extra-expanded", 150}, {"ultra-expanded", 200}};
+        for (const auto& [k, p] : names)
+            if (v == k) return p;
+        if (!v.empty() && v.back() == '%')
+            if (auto n = parse_number(v.substr(0, v.size() - 1)); n && *n >= 0) return *n;
+        return std::nullopt;
+    }
+
+    static std::optional<double> font_size(std::string_view v, double parent) {
+        static const std::pair<std::string_view, int> names[] = {{"xx-small", -3}, {"x-small", -2}, {"small", -1}, {"medium", 0},
+                                                                 {"large", 1},     {"x-large", 2},  {"xx-large", 3}, {"xxx-large", 4}};
+        for (const auto& [k, e] : names)
+            if (v == k) return 12.0 * std::pow(1.2, e);
+        if (v == "larger") return parent * 1.2;
+        if (v == "smaller") return parent / 1.2;
+        auto l = text_length(v, parent, parent);
+        if (l && *l >= 0) return l;
+        return std::nullopt;
+    }
+
+    static svg_text::Baseline baseline_kind(std::string_view v, svg_text::Baseline fallback) {
+        using B = svg_text::Baseline;
+        if (v == "middle") return B::Middle;
+        if (v == "central") return B::Central;
+        if (v == "hanging") return B::Hanging;
+        if (v == "mathematical") return B::Mathematical;
+        if (v == "text-before-edge" || v == "text-top" || v == "before-edge") return B::TextTop;
+        if (v == "text-after-edge" || v == "text-bottom" || v == "after-edge") return B::TextBottom;
+        if (v == "ideographic") return B::Ideographic;
+        if (v == "alphabetic") return B::Alphabetic;
+        return fallback;
+    }
+
+    // The `font` shorthand: [style] [variant] [weight] [stretch] size[/line-height] family-list.
+    // An invalid value (no size, a size without a unit, no family) changes nothing; a valid one
+    // resets the style, weight, stretch and variant it does not give.
+    void apply_font_shorthand(std::string_view v, TextCtx& ctx, double parent_size) {
+        TextCtx t = ctx;
+        t.font.slant = FontSlant::Normal;
+        t.font.weight = 400;
+        t.font.stretch = 100;
+        t.small_caps = false;
+        std::size_t i = 0;
+        while (i < v.size()) {
+            while (i < v.size() && std::isspace(static_cast<unsigned char>(v[i]))) ++i;
+            std::size_t e = i;
+            while (e < v.size() && !std::isspace(static_cast<unsigned char>(v[e]))) ++e;
+            const std::string_view w = v.substr(i, e - i);
+            if (w.empty()) return;
+            if (w == "italic") t.font.slant = FontSlant::Italic;
+            else if (w == "oblique") t.font.slant = FontSlant::Oblique;
+            else if (w == "small-caps") t.small_caps = true;
+            else if (w == "normal") {
+            } else if (w == "bold" || w == "bolder" || w == "lighter") {
+                t.font.weight = *font_weight(w, ctx.font.weight);
+            } else if (auto fs = font_stretch(w)) {
+                t.font.stretch = *fs;
+            } else {
+                const std::string_view size = w.substr(0, w.find('/'));
+                const bool bare_number = parse_number(size).has_value();
+                if (bare_number && w.find('/') == std::string_view::npos && e < v.size()) {
+                    // A bare number before the size is a weight; a bare number as the size is invalid.
+                    auto fw = font_weight(w, ctx.font.weight);
+                    std::size_t n = e;
+                    while (n < v.size() && std::isspace(static_cast<unsigned char>(v[n]))) ++n;
+                    std::size_t ne = n;
+                    while (ne < v.size() && !std::isspace(static_cast<unsigned char>(v[ne]))) ++ne;
+                    const std::string_view next = v.substr(n, ne - n).substr(0, v.substr(n, ne - n).find('/'));
+                    if (fw && !next.empty() && font_size(next, parent_size) && !parse_number(next)) {
+                        t.font.weight = *fw;
+                        i = e;
+                        continue;
+                    }
+                    return;
+                }
+                if (bare_number && *parse_number(size) != 0) return;
+                auto fsz = font_size(size, parent_size);
+                if (!fsz) return;
+                const std::string_view family = trim(v.substr(e));
+                if (family.empty()) return;
+                t.font.size = *fsz;
+                apply_font_family(family, t);
+                ctx = t;
+                return;
+            }
+            i = e;
+        }
+    }
+
+    // Applies the text properties `node` sets itself to `ctx` (inherited ones carry on to children).
+    void apply_text_props(const pugi::xml_node& node, TextCtx& ctx) {
+        const double parent_size = ctx.font.size;
+        ctx.baseline = ctx.dominant;
+        for (const auto& [k, v] : properties(node)) {
+            const std::string_view val = trim(v);
+            if (val == "inherit") continue;
+            if (k == "font") apply_font_shorthand(val, ctx, parent_size);
+            else if (k == "font-size") {
+                if (auto s = font_size(val, parent_size)) ctx.font.size = *s;
+            }
+        }
+        const double fs = ctx.font.size;
+        for (const auto& [k, v] : properties(node)) {
+            const std::string_view val = trim(v);
+            if (val == "inherit") continue;
+            if (k == "font-family") apply_font_family(val, ctx);
+            else if (k == "font-weight") {
+                if (auto w = font_weight(val, ctx.font.weight)) ctx.font.weight = *w;
+            } else if (k == "font-style") {
+                if (val == "normal") ctx.font.slant = FontSlant::Normal;
+                else if (val == "italic") ctx.font.slant = FontSlant::Italic;
+                else if (val.substr(0, 7) == "oblique") ctx.font.slant = FontSlant::Oblique;
+            } else if (k == "font-stretch") {
+                if (auto s = font_stretch(val)) ctx.font.stretch = *s;
+            } else if (k == "font-variant" || k == "font-variant-caps") {
+                ctx.small_caps = val == "small-caps";
+            } else if (k == "font-kerning") {
+                // A CSS property only (resvg ignores the presentation attribute).
+                if (!node.attribute("font-kerning")) ctx.no_kerning = val == "none";
+            } else if (k == "kerning") {
+                // SVG 1.1: "auto" or a length; 0 turns kerning off, other lengths are not supported.
+                if (val == "auto") ctx.no_kerning = false;
+                else if (auto l = parse_length(val, 1); l && *l == 0) ctx.no_kerning = true;
+            } else if (k == "font-feature-settings") {
+                ctx.feature_settings.clear();
+                if (val != "normal") {
+                    for (auto& [tag, value] : tag_value_list(val)) {
+                        if (value == "on") value = "1";
+                        if (value == "off") value = "0";
+                        ctx.feature_settings.push_back(value.empty() ? tag : tag + "=" + value);
+                    }
+                }
+            } else if (k == "font-variation-settings") {
+                ctx.font.variations.clear();
+                if (val != "normal")
+                    for (const auto& [tag, value] : tag_value_list(val))
+                        if (auto n = parse_number(value); n && tag.size() <= 4) ctx.font.variations.push_back({tag, *n});
+            } else if (k == "letter-spacing") {
+                if (val == "normal") ctx.letter_spacing = 0;
+                else if (auto l = text_length(val, fs, ctx.viewport_width)) ctx.letter_spacing = *l;
+            } else if (k == "word-spacing") {
+                if (val == "normal") ctx.word_spacing = 0;
+                else if (auto l = text_length(val, fs, ctx.viewport_width)) ctx.word_spacing = *l;
+            } else if (k == "text-anchor") {
+                if (val == "start") ctx.anchor = svg_text::Anchor::Start;
+                else if (val == "middle") ctx.anchor = svg_text::Anchor::Middle;
+                else if (val == "end") ctx.anchor = svg_text::Anchor::End;
+            } else if (k == "dominant-baseline") {
+                ctx.dominant = baseline_kind(val, svg_text::Baseline::Alphabetic);
+                ctx.baseline = ctx.dominant;
+            } else if (k == "alignment-baseline") {
+                ctx.baseline = baseline_kind(val, ctx.dominant);
+            } else if (k == "baseline-shift" && std::string_view(node.name()) != "text") {
+                // Not on the text element itself (as resvg): only tspans shift their baseline.
+                if (val == "sub") ctx.baseline_shifts.push_back({1, 0});
+                else if (val == "super") ctx.baseline_shifts.push_back({2, 0});
+                else if (val != "baseline")
+                    if (auto l = text_length(val, fs, fs)) ctx.baseline_shifts.push_back({0, *l});
+            } else if (k == "text-decoration" || k == "text-decoration-line") {
+                for (std::string_view w : split_list(val)) {
+                    svg_text::Decoration d;
+                    d.style = ctx.style;
+                    if (w == "underline") d.kind = svg_text::Decoration::Underline;
+                    else if (w == "overline") d.kind = svg_text::Decoration::Overline;
+                    else if (w == "line-through") d.kind = svg_text::Decoration::LineThrough;
+                    else continue;
+                    ctx.decorations.push_back(d);
+                }
+            } else if (k == "direction") {
+                ctx.direction = std::string(val);
+            }
+        }
+        if (const char* sp = node.attribute("xml:space").value(); *sp) ctx.preserve = std::string_view(sp) == "preserve";
+        ctx.font.features.clear();
+        if (ctx.small_caps) ctx.font.features.push_back("smcp");
+        if (ctx.no_kerning) ctx.font.features.push_back("kern=0");
+        for (const std::string& f : ctx.feature_settings) ctx.font.features.push_back(f);
+    }
+
+    static constexpr std::size_t kTextElementStyle = static_cast<std::size_t>(-1);
+
+    struct TextBuild {
+        svg_text::TextInput in;
+        std::vector<Style> styles;
+        struct Range {
+            pugi::xml_node node;
+            std::size_t begin = 0, end = 0;
+            double font_size = 12;
+        };
+        std::vector<Range> ranges;  // elements with position lists, in document order
+        std::size_t chars = 0;
+        bool last_space = true;     // collapsing: the text so far ends in a space (or is empty)
+        bool last_preserved = false;  // the last character came from xml:space="preserve" text
+        bool truncated = false;
+        int path_elements = 0;
+    };
+
+    // Appends the characters of a text node under white-space processing (xml:space).
+    void text_chars(std::string_view raw, const TextCtx& ctx, TextBuild& b) {
+        std::u32string in = decode_utf8(raw), out;
+        for (char32_t c : in) {
+            if (text_chars_total + out.size() >= limits::kMaxSvgTextChars) {
+                b.truncated = true;
+                break;
+            }
+            if (ctx.preserve) {
+                // Kept as they are (newlines and tabs become spaces); a collapsible space right
+                // after a preserved one still collapses.
+                const char32_t k = (c == U'\n' || c == U'\r' || c == U'\t') ? U' ' : c;
+                out += k;
+                b.last_space = k == U' ';
+                b.last_preserved = true;
+                continue;
+            }
+            b.last_preserved = false;
+            if (c == U'\n' || c == U'\r') continue;
+            if (c == U'\t') c = U' ';
+            if (c == U' ') {
+                if (b.last_space) continue;
+                b.last_space = true;
+            } else {
+                b.last_space = false;
+            }
+            out += c;
+        }
+        if (out.empty()) return;
+        svg_text::Span sp;
+        sp.style = ctx.style;
+        sp.font = ctx.font;
+        sp.text = std::move(out);
+        sp.letter_spacing = ctx.letter_spacing;
+        sp.word_spacing = ctx.word_spacing;
+        sp.anchor = ctx.anchor;
+        sp.baseline = ctx.baseline;
+        sp.baseline_shifts = ctx.baseline_shifts;
+        sp.decorations = ctx.decorations;
+        sp.path = ctx.path;
+        sp.path_element = ctx.path_element;
+        b.chars += sp.text.size();
+        text_chars_total += sp.text.size();
+        b.in.spans.push_back(std::move(sp));
+    }
+
+    // The text content of an element and its descendants (for tref).
+    static void all_text(const pugi::xml_node& n, std::string& out) {
+        for (const pugi::xml_node& c : n.children()) {
+            if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) out += c.value();
+            else if (c.type() == pugi::node_element && std::string_view(c.name()) != "title" &&
+                     std::string_view(c.name()) != "desc" && std::string_view(c.name()) != "metadata")
+                all_text(c, out);
+        }
+    }
+
+    void text_element(const pugi::xml_node& node, TextCtx ctx, const Style& parent, const Affine& text_m, double vw, double vh,
+                      TextBuild& b, int depth) {
+        if (depth > limits::kMaxNestingDepth)
+            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
+        for (const auto& [k, v] : properties(node))
+            if (k == "display" && trim(v) == "none") return;
+        Style st = parent;
+        apply_style(node, st);
+        ctx.style = b.styles.size();
+        b.styles.push_back(st);
+        // Decorations declared outside the text element are painted with the text's own paint.
+        for (svg_text::Decoration& d : ctx.decorations)
+            if (d.style == kTextElementStyle) d.style = ctx.style;
+        apply_text_props(node, ctx);
+        const std::string_view name = node.name();
+        if (name == "textPath") {
+            const char* h = href(node);
+            const pugi::xml_node target = *h == '#' ? lookup(h + 1) : pugi::xml_node();
+            std::optional<Path> p;
+            // SVG 2: any basic shape may carry the text, not only a path.
+            if (target) p = shape_path(target, vw, vh);
+            if (p && p->control_bounds().width() == 0 && p->control_bounds().height() == 0) p.reset();  // no length
+            if (!p || p->empty()) {
+                warn("<textPath> references no usable path; its text is not drawn");
+                return;
+            }
+            Affine pt;
+            if (const char* t = target.attribute("transform").value(); *t) {
+                try {
+                    pt = parse_svg_transform(t);
+                } catch (const Error&) {
+                }
+            }
+            (void)text_m;
+            svg_text::TextPath tp;
+            tp.path = p->transformed(pt);
+            // side="right" (SVG 2) is ignored, as resvg and most browsers do.
+            if (const char* so = node.attribute("startOffset").value(); *so) {
+                std::string_view sv = trim(so);
+                if (!sv.empty() && sv.back() == '%') {
+                    if (auto pct = parse_number(sv.substr(0, sv.size() - 1))) {
+                        Polyline poly;
+                        try {
+                            flatten(tp.path, Affine{}, 0.01, poly);
+                        } catch (const Error&) {
+                            poly.clear();  // an unusable path: the text is not drawn (svg_text.cpp)
+                        }
+                        double total = 0;
+                        std::uint32_t s0 = 0;
+                        for (std::size_t c = 0; c < poly.contour_count(); ++c) {
+                            for (std::uint32_t i = s0 + 1; i < poly.contour_ends[c]; ++i)
+                                total += std::hypot(poly.points[i].x - poly.points[i - 1].x, poly.points[i].y - poly.points[i - 1].y);
+                            s0 = poly.contour_ends[c];
+                        }
+                        tp.start_offset = *pct / 100 * total;
+                    }
+                } else if (auto l = text_length(sv, ctx.font.size, vw)) {
+                    tp.start_offset = *l;
+                }
+            }
+            ctx.path = static_cast<int>(b.in.paths.size());
+            ctx.path_element = ++b.path_elements;
+            b.in.paths.push_back(std::move(tp));
+        }
+        const std::size_t range_index = b.ranges.size();
+        b.ranges.push_back({node, b.chars, b.chars, ctx.font.size});
+        if (name == "tref") {
+            const char* h = href(node);
+            const pugi::xml_node target = *h == '#' ? lookup(h + 1) : pugi::xml_node();
+            // Only SVG elements lend their text (resvg): <not-a-text> gives none.
+            const std::string_view tn = target ? target.name() : "";
+            if (target && (known_element(tn) || tn == "tspan" || tn == "textPath" || tn == "tref" || tn == "g")) {
+                std::string s;
+                all_text(target, s);
+                text_chars(s, ctx, b);
+            }
+        } else {
+            for (const pugi::xml_node& c : node.children()) {
+                if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) {
+                    text_chars(c.value(), ctx, b);
+                } else if (c.type() == pugi::node_element) {
+                    const std::string_view cn = c.name();
+                    if (!conditions_pass(c)) continue;
+                    if (cn == "tspan" || cn == "a" || cn == "tref" || (cn == "textPath" && ctx.path < 0))
+                        text_element(c, ctx, st, text_m, vw, vh, b, depth + 1);
+                }
+            }
+        }
+        b.ranges[range_index].end = b.chars;
+    }
+
+    // Lays out a text element: the outlines of its spans with their styles.
+    std::vector<svg_text::Outline> text_outlines(const pugi::xml_node& node, const Style& st, double vw, double vh,
+                                                 std::vector<Style>& styles, std::optional<Rect>* box = nullptr) {
+        TextCtx ctx;
+        ctx.viewport_width = vw;
+        // Inherited text properties from the ancestors, outermost first.
+        std::vector<pugi::xml_node> anc;
+        for (pugi::xml_node a = node.parent(); a && a.type() == pugi::node_element; a = a.parent()) anc.push_back(a);
+        for (auto it = anc.rbegin(); it != anc.rend(); ++it) {
+            apply_text_props(*it, ctx);
+            for (svg_text::Decoration& d : ctx.decorations) d.style = kTextElementStyle;
+            ctx.baseline_shifts.clear();
+        }
+        TextBuild b;
+        text_element(node, ctx, st, Affine{}, vw, vh, b, 1);
+        if (b.truncated)
+            warn("the document's text holds more than " + std::to_string(limits::kMaxSvgTextChars) +
+                 " characters; the rest is not drawn");
+        // A trailing collapsible space is removed.
+        if (!b.in.spans.empty() && b.last_space && !b.last_preserved && !b.in.spans.back().text.empty() &&
+            b.in.spans.back().text.back() == U' ') {
+            b.in.spans.back().text.pop_back();
+            --b.chars;
+            if (b.in.spans.back().text.empty()) b.in.spans.pop_back();
+        }
+        for (const svg_text::Span& sp : b.in.spans) {
+            if (!(sp.font.size <= limits::kMaxSvgFontSize)) {
+                warn("font-size above " + std::to_string(static_cast<long long>(limits::kMaxSvgFontSize)) + "; text not drawn");
+                return {};
+            }
+        }
+        if (b.chars == 0) return {};
+        // Every font-family list ends with the default family.
+        for (svg_text::Span& sp : b.in.spans) sp.font.families.push_back(options.font_family);
+        // Position lists: outer elements first, inner ones override.
+        b.in.pos.assign(b.chars, {});
+        for (TextBuild::Range& r : b.ranges) {
+            r.end = std::min(r.end, b.chars);  // the trailing space may have gone
+            r.begin = std::min(r.begin, r.end);
+            auto list = [&](const char* attr, double percent_of, std::optional<double> svg_text::CharPos::*field, bool repeat_last) {
+                const char* v = r.node.attribute(attr).value();
+                if (!*v) return;
+                std::optional<double> last;
+                std::size_t i = r.begin;
+                for (std::string_view w : split_list(v)) {
+                    if (i >= r.end) break;
+                    auto l = std::string_view(attr) == "rotate" ? parse_number(w) : text_length(w, r.font_size, percent_of);
+                    if (!l) return;
+                    b.in.pos[i++].*field = *l;
+                    last = *l;
+                }
+                if (repeat_last && last)
+                    for (; i < r.end; ++i) b.in.pos[i].*field = *last;
+            };
+            list("x", vw, &svg_text::CharPos::x, false);
+            list("y", vh, &svg_text::CharPos::y, false);
+            list("dx", vw, &svg_text::CharPos::dx, false);
+            list("dy", vh, &svg_text::CharPos::dy, false);
+            list("rotate", 1, &svg_text::CharPos::rotate, true);
+            if (const char* tl = r.node.attribute("textLength").value(); *tl && r.end > r.begin) {
+                if (auto l = text_length(tl, r.font_size, vw); l && *l > 0)
+                    b.in.lengths.push_back({r.begin, r.end, *l,
+                                            std::string_view(r.node.attribute("lengthAdjust").value()) == "spacingAndGlyphs"});
+            }
+        }
+        std::string dir;
+        for (const auto& [k, v] : properties(node))
+            if (k == "direction") dir = std::string(trim(v));
+        if (dir.empty()) dir = inherited(node, "direction");
+        b.in.direction = dir == "rtl" ? TextDirection::RightToLeft : TextDirection::LeftToRight;
+        std::string wm;
+        for (const auto& [k, v] : properties(node))
+            if (k == "writing-mode") wm = std::string(trim(v));
+        if (wm.empty()) wm = inherited(node, "writing-mode");
+        b.in.vertical = wm == "tb" || wm == "tb-rl" || wm == "vertical-rl" || wm == "vertical-lr";
+        styles = std::move(b.styles);
+        return svg_text::layout(b.in, *text_fonts(), warnings, box);
+    }
+
+    void text(const pugi::xml_node& node, const Style& st, const Affine& cm, double vw, double vh, double opacity) {
+        std::vector<Style> styles;
+        std::optional<Rect> cells;
+        const std::vector<svg_text::Outline> outlines = text_outlines(node, st, vw, vh, styles, &cells);
+        // Paint servers in objectBoundingBox units use the whole text's box (its glyph cells).
+        if (!cells || outlines.empty()) return;
+        Path box;
+        box.add_rect(*cells);
+        for (svg_text::Outline::Layer layer : {svg_text::Outline::Under, svg_text::Outline::Glyphs, svg_text::Outline::Over}) {
+            for (const svg_text::Outline& o : outlines) {
+                if (o.layer != layer || o.path.empty()) continue;
+                const Style& s = styles[o.style];
+                if (!s.visible) continue;
+                for (int part : s.paint_order) {
+                    Item it;
+                    if (part == 0 && resolve_paint(s.fill, box, vw, vh, it)) {
+                        it.kind = Item::Fill;
+                        it.path = o.path;
+                        it.transform = cm;
+                        it.rule = s.fill_rule;
+                        it.opacity = s.fill_opacity * opacity;
+                        items.push_back(std::move(it));
+                    } else if (part == 1 && s.stroke_style.width > 0 && resolve_paint(s.stroke, box, vw, vh, it)) {
+                        it.kind = Item::Stroke;
+                        it.stroke = s.stroke_style;
+                        it.path = o.path;
+                        it.transform = cm;
+                        it.opacity = s.stroke_opacity * opacity;
+                        items.push_back(std::move(it));
+                    }
+                }
+            }
+        }
+    }
 };
 
 // Inflates gzip data (an .svgz), up to limits::kMaxSvgzBytes. Throws Error(InvalidData) for
@@ -1700,11 +2296,16 @@ double SvgDocument::intrinsic_height() const { return impl_->fheight; }
 const std::vector<std::string>& SvgDocument::warnings() const { return impl_->warnings; }
 
 SvgDocument SvgDocument::load(const std::string& path, const std::string& resource_root) {
-    const std::vector<std::uint8_t> bytes = read_file(path);
     SvgOptions o;
+    o.resource_root = resource_root;
+    return load(path, o);
+}
+
+SvgDocument SvgDocument::load(const std::string& path, const SvgOptions& options) {
+    const std::vector<std::uint8_t> bytes = read_file(path);
+    SvgOptions o = options;
     std::error_code ec;
     o.base_dir = std::filesystem::absolute(std::filesystem::path(path), ec).parent_path().string();
-    o.resource_root = resource_root;
     return parse(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), o);
 }
 
@@ -1716,7 +2317,7 @@ SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options
     auto impl = std::make_unique<Impl>();
     if (trim(text).empty()) throw Error(ErrorKind::Parse, "SVG input is empty");
     const pugi::xml_parse_result res =
-        impl->doc.load_buffer(text.data(), text.size(), pugi::parse_default | pugi::parse_ws_pcdata_single);
+        impl->doc.load_buffer(text.data(), text.size(), pugi::parse_default | pugi::parse_ws_pcdata);  // text needs the spaces between tspans
     if (!res)
         throw Error(ErrorKind::Parse, std::string("malformed SVG (XML) at byte ") + std::to_string(res.offset) + ": " +
                                           res.description());

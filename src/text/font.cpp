@@ -287,6 +287,12 @@ void Font::Impl::variations_changed() {
     metrics.line_gap = pos(HB_OT_METRICS_TAG_HORIZONTAL_LINE_GAP);
     metrics.underline_position = pos(HB_OT_METRICS_TAG_UNDERLINE_OFFSET);
     metrics.underline_thickness = pos(HB_OT_METRICS_TAG_UNDERLINE_SIZE);
+    metrics.strikeout_position = pos(HB_OT_METRICS_TAG_STRIKEOUT_OFFSET);
+    metrics.strikeout_thickness = pos(HB_OT_METRICS_TAG_STRIKEOUT_SIZE);
+    metrics.x_height = pos(HB_OT_METRICS_TAG_X_HEIGHT);
+    metrics.cap_height = pos(HB_OT_METRICS_TAG_CAP_HEIGHT);
+    metrics.subscript_offset = pos(HB_OT_METRICS_TAG_SUBSCRIPT_EM_Y_OFFSET);
+    metrics.superscript_offset = pos(HB_OT_METRICS_TAG_SUPERSCRIPT_EM_Y_OFFSET);
     if (metrics.ascender <= metrics.descender) {  // broken tables: fall back to the em box
         metrics.ascender = 0.8 * face->units_per_EM;
         metrics.descender = -0.2 * face->units_per_EM;
@@ -311,10 +317,15 @@ Font Font::from_memory(std::vector<std::uint8_t> bytes, int face_index, std::str
         throw Error(ErrorKind::Limit, "font '" + name + "' is larger than " +
                                           std::to_string(kMaxFontFileBytes >> 20) + " MiB");
     check_sfnt_directory(bytes, name);
+    return from_shared_bytes(std::make_shared<const std::vector<std::uint8_t>>(std::move(bytes)), face_index, std::move(name));
+}
+
+// A Font over bytes already checked (from_memory), shared with the Fonts cloned from it.
+Font Font::from_shared_bytes(std::shared_ptr<const std::vector<std::uint8_t>> bytes, int face_index, std::string name) {
     auto impl = std::make_unique<Impl>();
     impl->source = std::move(name);
     impl->face_index = face_index;
-    impl->bytes = std::make_shared<const std::vector<std::uint8_t>>(std::move(bytes));
+    impl->bytes = std::move(bytes);
     if (FT_Error err = FT_Init_FreeType(&impl->library)) {
         impl->library = nullptr;
         font_error(impl->source, "cannot start FreeType: " + ft_error_text(err));
@@ -387,7 +398,7 @@ Font Font::from_memory(std::vector<std::uint8_t> bytes, int face_index, std::str
 }
 
 Font Font::clone() const {
-    Font f = from_memory(*impl_->bytes, impl_->face_index, impl_->source);
+    Font f = from_shared_bytes(impl_->bytes, impl_->face_index, impl_->source);
     if (is_variable()) {
         std::vector<Variation> v;
         for (std::size_t i = 0; i < impl_->axes.size(); ++i) v.push_back({impl_->axes[i].tag, impl_->coords[i]});

@@ -28,7 +28,8 @@ bool is_weak_script(hb_script_t s) {
 
 }  // namespace
 
-Shaper::Shaper(std::span<const Font* const> fonts, const TextStyle& style) : fonts_(fonts), size_(style.size) {
+Shaper::Shaper(std::span<const Font* const> fonts, const TextStyle& style, bool vertical)
+    : fonts_(fonts), size_(style.size), vertical_(vertical) {
     for (const std::string& f : style.features) {
         hb_feature_t feat;
         if (!hb_feature_from_string(f.c_str(), static_cast<int>(f.size()), &feat))
@@ -113,7 +114,7 @@ void Shaper::shape_paragraph(std::u32string_view para, std::span<const std::uint
         hb_buffer_clear_contents(buf_);
         hb_buffer_add_utf32(buf_, reinterpret_cast<const std::uint32_t*>(para.data()), static_cast<int>(n),
                             static_cast<unsigned>(b), static_cast<int>(e - b));
-        hb_buffer_set_direction(buf_, (run.level & 1) ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
+        hb_buffer_set_direction(buf_, vertical_ ? HB_DIRECTION_TTB : (run.level & 1) ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
         hb_buffer_set_script(buf_, script_override_ != HB_SCRIPT_INVALID ? script_override_ : script_of_[b]);
         hb_buffer_set_language(buf_, lang);
         unsigned flags = HB_BUFFER_FLAG_DEFAULT;
@@ -137,6 +138,7 @@ void Shaper::shape_paragraph(std::u32string_view para, std::span<const std::uint
             sg.advance = pos[g].x_advance * k;
             sg.x_offset = pos[g].x_offset * k;
             sg.y_offset = pos[g].y_offset * k;
+            sg.y_advance = pos[g].y_advance * k;
         }
         runs.push_back(std::move(run));
         b = e;

@@ -24,6 +24,7 @@ struct ShapedGlyph {
     double advance = 0;         // px
     double x_offset = 0;        // px, x right
     double y_offset = 0;        // px, y UP (HarfBuzz's convention)
+    double y_advance = 0;       // px, y UP: vertical text only (negative: the pen moves down)
 };
 
 struct ShapedRun {
@@ -35,8 +36,10 @@ struct ShapedRun {
 
 class Shaper {
 public:
-    // Validates the style's script, language and features (Error(Parse)).
-    Shaper(std::span<const Font* const> fonts, const TextStyle& style);
+    // Validates the style's script, language and features (Error(Parse)). `vertical`: shape top to
+    // bottom (HarfBuzz's TTB direction, vertical metrics and the 'vert' feature) instead of by the
+    // bidi levels; glyphs then advance by y_advance.
+    Shaper(std::span<const Font* const> fonts, const TextStyle& style, bool vertical = false);
     ~Shaper();
     Shaper(const Shaper&) = delete;
     Shaper& operator=(const Shaper&) = delete;
@@ -47,6 +50,7 @@ public:
 private:
     std::span<const Font* const> fonts_;
     double size_;
+    bool vertical_ = false;
     hb_buffer_t* buf_ = nullptr;
     std::vector<hb_feature_t> features_;
     hb_script_t script_override_ = HB_SCRIPT_INVALID;

@@ -4,8 +4,7 @@
 // of ../shared/conformance/resvg/README.md (tests/resvg_compare.hpp), prints pass counts per area
 // and per feature folder, writes every failure as a diff picture (actual | reference | bad pixels)
 // into the output folder, and fails when a count drops below the minimum recorded in
-// CONFORMANCE.md's counts table (text rows are reported but not enforced: text is not
-// implemented, and its passes are accidents).
+// CONFORMANCE.md's counts table.
 //
 // Usage: svg_conformance [--suite DIR] [--counts FILE] [--out DIR] [--threads N] [--stride N]
 //                        [--only TEXT] [--update] [--no-images]
@@ -104,6 +103,30 @@ std::string table(const std::map<std::string, Count>& counts) {
     return t + kEnd + "\n";
 }
 
+// Text uses the suite's own fonts only, with the generic families its README names, so that the
+// results do not depend on the fonts installed. One database for the whole run.
+SvgOptions suite_options(const fs::path& suite) {
+    static std::mutex m;
+    static std::shared_ptr<const FontDatabase> db;
+    std::lock_guard<std::mutex> lock(m);
+    if (!db) {
+        FontDatabaseOptions fo;
+        fo.font_dirs = {(suite / "fonts").string()};
+        fo.system_fonts = false;
+        db = std::make_shared<const FontDatabase>(fo);
+    }
+    SvgOptions o;
+    o.font_database = db;
+    o.system_fonts = false;
+    o.font_family = "Noto Serif";
+    o.sans_serif_family = "Noto Sans";
+    o.serif_family = "Noto Serif";
+    o.cursive_family = "Yellowtail";
+    o.fantasy_family = "Sedgwick Ave Display";
+    o.monospace_family = "Noto Mono";
+    return o;
+}
+
 Outcome run_one(const fs::path& suite, const Entry& e, const fs::path& out_dir, bool images) {
     Outcome o;
     const auto t0 = std::chrono::steady_clock::now();
@@ -112,7 +135,9 @@ Outcome run_one(const fs::path& suite, const Entry& e, const fs::path& out_dir, 
         Pixmap actual;
         try {
             // Images may read the suite's resources/ folder (outside each test's own folder).
-            const SvgDocument doc = SvgDocument::load((suite / e.svg).string(), suite.string());
+            SvgOptions so = suite_options(suite);
+            so.resource_root = suite.string();
+            const SvgDocument doc = SvgDocument::load((suite / e.svg).string(), so);
             actual = resvg_compare::render_reference_size(doc);
         } catch (const Error& err) {
             o.why = std::string("error: ") + err.what();
@@ -261,8 +286,7 @@ int main(int argc, char** argv) {
         const auto it = counts.find(k);
         const Count now = it == counts.end() ? Count{} : it->second;
         if (now.b < rec.b || now.a < rec.a) {
-            // Text is not implemented: its passes are accidents, so they are reported, not enforced.
-            const bool enforced = k.rfind("text", 0) != 0;
+            const bool enforced = true;
             std::printf("%s %s: rule B %d (minimum %d), rule A %d (minimum %d)\n", enforced ? "DROPPED" : "dropped (not enforced)",
                         k.c_str(), now.b, rec.b, now.a, rec.a);
             dropped += enforced;

@@ -1,0 +1,546 @@
+// Formats stage, SVG text layout (src/formats/svg_text.hpp).
+//
+// characters (per span: one style) --chunks (a new one at every absolute x or y, and at every
+// textPath)--> bidi levels per chunk --> per (span, level) segment: fonts (family list, then
+// fallback faces) and HarfBuzz shaping (src/text/shape.hpp) --> clusters in visual order -->
+// positions: dx/dy, letter- and word-spacing, textLength --> text-anchor --> baselines and
+// baseline-shift --> rotate or placement along a text path --> glyph outlines and decoration lines
+// in user space.
+#include "formats/svg_text.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+#include <hb.h>
+
+#include "casteljau/error.hpp"
+#include "text/bidi.hpp"
+#include "text/shape.hpp"
+
+namespace casteljau::svg_text {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Glyph {
+    const Font* font = nullptr;
+    std::uint32_t id = 0;
+    double x_off = 0, y_off = 0;  // px from the cluster origin, y down
+};
+
+struct Cluster {
+    std::size_t ch = 0, nch = 1;  // characters (global indices)
+    std::size_t span = 0;
+    std::vector<Glyph> glyphs;
+    double advance = 0;
+    double x = 0, y = 0;  // origin on the baseline (before baseline offsets)
+    double step = 0;      // distance to the next cluster's origin (advance + spacing)
+    double scale_x = 1;   // lengthAdjust="spacingAndGlyphs"
+    bool upright = false;  // vertical text: drawn upright (else turned 90 degrees clockwise)
+    const Font* font = nullptr;  // metrics for baselines and decorations
+};
+
+// Characters set upright in vertical text (CJK, kana, hangul, full-width forms, emoji); others
+// are turned sideways (Unicode's vertical orientation U and Tu, approximately).
+bool is_upright(char32_t c) {
+    return (c >= 0x1100 && c <= 0x11ff) || (c >= 0x2e80 && c <= 0xa4cf) || (c >= 0xac00 && c <= 0xd7af) ||
+           (c >= 0xf900 && c <= 0xfaff) || (c >= 0xfe30 && c <= 0xfe4f) || (c >= 0xff00 && c <= 0xffef) ||
+           (c >= 0x1f000 && c <= 0x1faff) || (c >= 0x20000 && c <= 0x3ffff);
+}
+
+// Scripts whose letters join or hang from a line: letter-spacing would break them apart, so it is
+// not applied to them (CSS Text 3, 8.2; resvg does the same).
+bool spacing_allowed(char32_t c) {
+    switch (hb_unicode_script(hb_unicode_funcs_get_default(), c)) {
+        case HB_SCRIPT_ARABIC: case HB_SCRIPT_SYRIAC: case HB_SCRIPT_NKO: case HB_SCRIPT_MANICHAEAN:
+        case HB_SCRIPT_PSALTER_PAHLAVI: case HB_SCRIPT_MANDAIC: case HB_SCRIPT_MONGOLIAN: case HB_SCRIPT_PHAGS_PA:
+        case HB_SCRIPT_DEVANAGARI: case HB_SCRIPT_BENGALI: case HB_SCRIPT_GURMUKHI: case HB_SCRIPT_MODI:
+        case HB_SCRIPT_SHARADA: case HB_SCRIPT_SYLOTI_NAGRI: case HB_SCRIPT_TIRHUTA: case HB_SCRIPT_OGHAM:
+            return false;
+        default:
+            return true;
+    }
+}
+
+bool is_word_space(char32_t c) { return c == U' ' || c == 0xa0 || c == 0x1361 || c == 0x10100 || c == 0x10101 || c == 0x3000; }
+
+// An arc-length parametrised polyline of a path (curves sampled finely enough for glyph placement).
+struct PathWalker {
+    std::vector<Point> pts;
+    std::vector<double> len;  // cumulative length at each point
+    std::vector<bool> jump;   // pts[i] starts a new subpath (no segment from pts[i-1])
+
+    // A path that cannot be flattened (non-finite, or too many segments) carries no text.
+    explicit PathWalker(const Path& path) {
+        Polyline poly;
+        try {
+            flatten(path, Affine{}, 0.01, poly);
+        } catch (const Error&) {
+            return;
+        }
+        std::uint32_t start = 0;
+        for (std::size_t c = 0; c < poly.contour_count(); ++c) {
+            const std::uint32_t end = poly.contour_ends[c];
+            for (std::uint32_t i = start; i < end; ++i) {
+                const bool first = i == start;
+                const Point p = poly.points[i];
+                if (pts.empty()) len.push_back(0);
+                else len.push_back(len.back() + (first ? 0 : std::hypot(p.x - pts.back().x, p.y - pts.back().y)));
+                pts.push_back(p);
+                jump.push_back(first);
+            }
+            if (poly.closed[c] && end > start) {
+                const Point p = poly.points[start];
+                len.push_back(len.back() + std::hypot(p.x - pts.back().x, p.y - pts.back().y));
+                pts.push_back(p);
+                jump.push_back(false);
+            }
+            start = end;
+        }
+    }
+    double total() const { return len.empty() ? 0 : len.back(); }
+    // Point and direction (radians) at distance d along the path.
+    bool at(double d, Point& p, double& angle) const {
+        if (pts.size() < 2 || d < 0 || d > total()) return false;
+        std::size_t i = static_cast<std::size_t>(std::upper_bound(len.begin(), len.end(), d) - len.begin());
+        if (i >= pts.size()) i = pts.size() - 1;
+        while (i > 0 && (jump[i] || len[i] == len[i - 1]) && i + 1 < pts.size()) ++i;
+        if (i == 0) i = 1;
+        const Point a = pts[i - 1], b = pts[i];
+        const double seg = len[i] - len[i - 1];
+        const double t = seg > 0 ? std::clamp((d - len[i - 1]) / seg, 0.0, 1.0) : 0;
+        p = {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+        angle = std::atan2(b.y - a.y, b.x - a.x);
+        return true;
+    }
+};
+
+std::string variation_key(const FontSpec& spec) {
+    std::string k = std::to_string(spec.weight) + "/" + std::to_string(spec.stretch) + "/" + std::to_string(spec.size) + "/" +
+                    std::to_string(static_cast<int>(spec.slant));
+    for (const Variation& v : spec.variations) k += "/" + v.tag + "=" + std::to_string(v.value);
+    return k;
+}
+
+// Offset of the baseline (px, y down) for a dominant or alignment baseline.
+double baseline_offset(Baseline b, const Font* font, double size) {
+    if (!font) return 0;
+    const FontMetrics& m = font->metrics();
+    const double s = size / m.units_per_em;
+    switch (b) {
+        case Baseline::Alphabetic: return 0;
+        case Baseline::Middle: return m.x_height / 2 * s;
+        case Baseline::Central: return (m.ascender + m.descender) / 2 * s;
+        case Baseline::Hanging: return m.ascender * 0.8 * s;
+        case Baseline::Mathematical: return m.ascender * 0.5 * s;
+        case Baseline::TextTop: return m.ascender * s;
+        case Baseline::TextBottom:
+        case Baseline::Ideographic: return m.descender * s;
+    }
+    return 0;
+}
+
+}  // namespace
+
+const Font* FontSet::face(std::size_t index, const FontSpec& spec) {
+    if (std::find(broken_.begin(), broken_.end(), index) != broken_.end()) return nullptr;
+    const FontFaceInfo& info = db_->faces()[index];
+    const std::string key = info.variable || !spec.variations.empty() ? variation_key(spec) : std::string();
+    auto& slot = fonts_[{index, key}];
+    if (slot) return slot.get();
+    try {
+        auto font = std::make_unique<Font>(db_->open(index));
+        if (font->is_variable()) {
+            // The weight and width the style asks for, then font-variation-settings over them.
+            std::vector<Variation> vars;
+            for (const VariationAxis& a : font->axes()) {
+                if (a.tag == "wght") vars.push_back({"wght", static_cast<double>(spec.weight)});
+                if (a.tag == "wdth") vars.push_back({"wdth", spec.stretch});
+                if (a.tag == "opsz") vars.push_back({"opsz", spec.size});  // font-optical-sizing: auto
+            }
+            for (const Variation& v : spec.variations) {
+                const bool known = std::any_of(font->axes().begin(), font->axes().end(),
+                                               [&](const VariationAxis& a) { return a.tag == v.tag; });
+                if (!known) continue;
+                std::erase_if(vars, [&](const Variation& o) { return o.tag == v.tag; });
+                vars.push_back(v);
+            }
+            if (!vars.empty()) font->set_variations(vars);
+        }
+        slot = std::move(font);
+    } catch (const Error&) {
+        broken_.push_back(index);
+        fonts_.erase({index, key});
+        return nullptr;
+    }
+    return slot.get();
+}
+
+std::vector<const Font*> FontSet::chain(const FontSpec& spec, std::u32string_view text) {
+    std::vector<const Font*> out;
+    std::vector<std::size_t> used;
+    auto add = [&](std::size_t idx) {
+        if (std::find(used.begin(), used.end(), idx) != used.end()) return;
+        if (const Font* f = face(idx, spec)) {
+            used.push_back(idx);
+            out.push_back(f);
+        }
+    };
+    for (const std::string& fam : spec.families)
+        if (auto idx = db_->match(fam, spec.weight, spec.slant, spec.stretch)) add(*idx);
+    for (char32_t c : text) {
+        if (c < 0x20 || c == 0x200b || c == 0x200c || c == 0x200d || (c >= 0xfe00 && c <= 0xfe0f)) continue;
+        if (std::any_of(out.begin(), out.end(), [&](const Font* f) { return f->has_glyph(c); })) continue;
+        if (auto idx = db_->fallback(c, spec.weight, spec.slant, spec.stretch)) add(*idx);
+    }
+    return out;
+}
+
+std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std::string>& warnings, std::optional<Rect>* box) {
+    std::u32string text;
+    std::vector<std::size_t> span_of;
+    for (std::size_t s = 0; s < in.spans.size(); ++s) {
+        text += in.spans[s].text;
+        span_of.insert(span_of.end(), in.spans[s].text.size(), s);
+    }
+    const std::size_t n = text.size();
+    std::vector<Outline> out;
+    if (n == 0) return out;
+    auto pos = [&](std::size_t i) -> const CharPos& {
+        static const CharPos none;
+        return i < in.pos.size() ? in.pos[i] : none;
+    };
+
+    // Chunks: a new one at every absolute position and wherever the text path changes.
+    std::vector<std::size_t> chunk_starts{0};
+    for (std::size_t i = 1; i < n; ++i)
+        if (pos(i).x || pos(i).y || in.spans[span_of[i]].path_element != in.spans[span_of[i - 1]].path_element)
+            chunk_starts.push_back(i);
+    chunk_starts.push_back(n);
+
+    std::vector<std::vector<Cluster>> chunks;
+    std::vector<std::uint8_t> levels;
+    std::vector<text_detail::ShapedRun> runs;
+    bool warned_fonts = false;
+    for (std::size_t c = 0; c + 1 < chunk_starts.size(); ++c) {
+        const std::size_t cb = chunk_starts[c], ce = chunk_starts[c + 1];
+        const std::u32string_view ctext(text.data() + cb, ce - cb);
+        text_detail::resolve_bidi_levels(ctext, in.direction, levels);
+        struct RunClusters {
+            std::uint8_t level;
+            std::vector<Cluster> clusters;
+        };
+        std::vector<RunClusters> all_runs;
+        for (std::size_t sb = cb; sb < ce;) {
+            std::size_t se = sb + 1;
+            const bool upright = in.vertical && is_upright(text[sb]);
+            while (se < ce && span_of[se] == span_of[sb] && levels[se - cb] == levels[sb - cb] &&
+                   (!in.vertical || is_upright(text[se]) == upright))
+                ++se;
+            const Span& span = in.spans[span_of[sb]];
+            const std::u32string_view seg(text.data() + sb, se - sb);
+            const std::vector<const Font*> chain = fonts.chain(span.font, seg);
+            if (chain.empty()) {
+                if (!warned_fonts) warnings.push_back("no font found for text; text not drawn");
+                warned_fonts = true;
+                sb = se;
+                continue;
+            }
+            TextStyle ts;
+            ts.size = span.font.size;
+            ts.features = span.font.features;
+            std::unique_ptr<text_detail::Shaper> shaper;
+            try {
+                shaper = std::make_unique<text_detail::Shaper>(std::span<const Font* const>(chain), ts, upright);
+            } catch (const Error&) {
+                ts.features.clear();
+                shaper = std::make_unique<text_detail::Shaper>(std::span<const Font* const>(chain), ts, upright);
+            }
+            // Shaped with up to kContext neighbours of the same level on each side (from other
+            // spans too), so that kerning and joining work across tspans; only the segment's own
+            // glyphs are kept.
+            constexpr std::size_t kContext = 32;
+            std::size_t wb = sb, we = se;
+            while (wb > cb && sb - wb < kContext && levels[wb - 1 - cb] == levels[sb - cb] &&
+                   (!in.vertical || is_upright(text[wb - 1]) == upright))
+                --wb;
+            while (we < ce && we - se < kContext && levels[we - cb] == levels[sb - cb] &&
+                   (!in.vertical || is_upright(text[we]) == upright))
+                ++we;
+            const std::u32string_view window(text.data() + wb, we - wb);
+            shaper->shape_paragraph(window, std::span<const std::uint8_t>(levels.data() + (wb - cb), we - wb), runs);
+            for (const text_detail::ShapedRun& run : runs) {
+                RunClusters rc;
+                rc.level = run.level;
+                // Cluster starts in logical order, to know how many characters each one covers.
+                std::vector<std::uint32_t> starts;
+                for (const auto& g : run.glyphs) starts.push_back(g.cluster);
+                std::sort(starts.begin(), starts.end());
+                starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
+                for (std::size_t g = 0; g < run.glyphs.size();) {
+                    const std::uint32_t cl = run.glyphs[g].cluster;
+                    if (wb + cl < sb || wb + cl >= se) {  // context: another segment's glyph
+                        ++g;
+                        continue;
+                    }
+                    Cluster k;
+                    k.ch = wb + cl;
+                    const auto next = std::upper_bound(starts.begin(), starts.end(), cl);
+                    k.nch = std::min<std::size_t>(wb + (next == starts.end() ? run.end : *next), se) - k.ch;
+                    k.span = span_of[sb];
+                    k.font = chain[run.glyphs[g].font];
+                    k.upright = upright;
+                    double pen = 0;
+                    for (; g < run.glyphs.size() && run.glyphs[g].cluster == cl; ++g) {
+                        const auto& sg = run.glyphs[g];
+                        if (upright) {  // top to bottom: HarfBuzz's pen moves down (y up)
+                            k.glyphs.push_back({chain[sg.font], sg.glyph, sg.x_offset, -(pen + sg.y_offset)});
+                            pen += sg.y_advance;
+                        } else {
+                            k.glyphs.push_back({chain[sg.font], sg.glyph, pen + sg.x_offset, -sg.y_offset});
+                            pen += sg.advance;
+                        }
+                    }
+                    k.advance = upright ? -pen : pen;
+                    rc.clusters.push_back(std::move(k));
+                }
+                if (!rc.clusters.empty()) all_runs.push_back(std::move(rc));
+            }
+            sb = se;
+        }
+        std::vector<std::uint8_t> run_levels;
+        for (const RunClusters& r : all_runs) run_levels.push_back(r.level);
+        std::vector<std::size_t> order;
+        text_detail::visual_order(run_levels, order);
+        std::vector<Cluster> clusters;
+        for (std::size_t i : order)
+            for (Cluster& k : all_runs[i].clusters) clusters.push_back(std::move(k));
+        chunks.push_back(std::move(clusters));
+    }
+
+    // Positions. The pen carries on from chunk to chunk; dx and dy move it.
+    double pen_x = 0, pen_y = 0;
+    std::vector<std::size_t> chunk_first_char;
+    for (std::size_t c = 0; c < chunks.size(); ++c) {
+        std::vector<Cluster>& cl = chunks[c];
+        const std::size_t cb = chunk_starts[c];
+        const Span& first_span = in.spans[span_of[cb]];
+        const bool on_path = first_span.path >= 0;
+        const int prev_path = c > 0 ? in.spans[span_of[chunk_starts[c - 1]]].path : -1;
+        if (!on_path && prev_path >= 0) {
+            // Text after a text path goes on from where the path's text ended.
+            const PathWalker w(in.paths[static_cast<std::size_t>(prev_path)].path);
+            Point p;
+            double angle = 0;
+            if (w.at(std::clamp(pen_x, 0.0, w.total()), p, angle)) {
+                pen_x = p.x;
+                pen_y = p.y;
+            }
+        }
+        if (pos(cb).x) pen_x = *pos(cb).x;
+        if (pos(cb).y) pen_y = *pos(cb).y;
+        if (on_path) {
+            const bool first = c == 0 || in.spans[span_of[chunk_starts[c - 1]]].path_element != first_span.path_element;
+            const double offset = in.paths[static_cast<std::size_t>(first_span.path)].start_offset;
+            if (pos(cb).x) pen_x = *pos(cb).x + offset;  // an absolute x is a distance along the path
+            else if (first) pen_x = offset;
+            if (first) pen_y = 0;  // dy moves glyphs off the path
+        }
+        // Vertical text advances along y; `along` is the coordinate that advances.
+        const bool vert = in.vertical && !on_path;
+        auto along = [&](Cluster& g) -> double& { return vert ? g.y : g.x; };
+        double& pen_along = vert ? pen_y : pen_x;
+        const double start_x = pen_along;
+        for (std::size_t k = 0; k < cl.size(); ++k) {
+            Cluster& g = cl[k];
+            for (std::size_t i = g.ch; i < g.ch + g.nch && i < n; ++i) {
+                if (pos(i).dx) pen_x += *pos(i).dx;
+                if (pos(i).dy) pen_y += *pos(i).dy;
+            }
+            g.x = pen_x;
+            g.y = pen_y;
+            const Span& sp = in.spans[g.span];
+            double step = g.advance + (spacing_allowed(text[g.ch]) ? sp.letter_spacing : 0);
+            if (is_word_space(text[g.ch])) step += sp.word_spacing;
+            g.step = step;
+            pen_along += step;
+        }
+        // textLength on ranges inside this chunk.
+        for (const LengthRange& lr : in.lengths) {
+            std::vector<Cluster*> in_range;
+            for (Cluster& g : cl)
+                if (g.ch >= lr.begin && g.ch < lr.end) in_range.push_back(&g);
+            if (in_range.empty() || !(lr.length > 0)) continue;
+            double lo = along(*in_range.front()), hi = lo;
+            for (Cluster* g : in_range) {
+                lo = std::min(lo, along(*g));
+                hi = std::max(hi, along(*g) + g->advance);
+            }
+            const double width = hi - lo;
+            if (!(width > 0)) continue;
+            double shift_after = 0;
+            if (lr.spacing_and_glyphs) {
+                const double s = lr.length / width;
+                for (Cluster* g : in_range) {
+                    along(*g) = lo + (along(*g) - lo) * s;
+                    g->scale_x = s;
+                    g->step *= s;
+                }
+                shift_after = lr.length - width;
+            } else if (in_range.size() > 1) {
+                const double extra = (lr.length - width) / static_cast<double>(in_range.size() - 1);
+                for (std::size_t i = 0; i < in_range.size(); ++i) along(*in_range[i]) += extra * static_cast<double>(i);
+                shift_after = lr.length - width;
+            }
+            bool after = false;
+            for (Cluster& g : cl) {
+                if (after) along(g) += shift_after;
+                if (&g == in_range.back()) after = true;
+            }
+            pen_along += shift_after;
+        }
+        // text-anchor (the chunk's first character's). As in resvg, start is the left end in
+        // right-to-left text too (CSS would take the right end).
+        if (!cl.empty()) {
+            const Anchor a = first_span.anchor;
+            // Trailing spaces do not count (resvg): "end " anchors like "end".
+            std::size_t last = cl.size();
+            while (last > 1 && cl[last - 1].nch == 1 && is_word_space(text[cl[last - 1].ch])) --last;
+            double lo = along(cl.front()), hi = lo;
+            for (std::size_t k = 0; k < last; ++k) {
+                lo = std::min(lo, along(cl[k]));
+                hi = std::max(hi, along(cl[k]) + cl[k].advance * cl[k].scale_x);
+            }
+            const double width = hi - std::min(lo, start_x);
+            const double shift = a == Anchor::Middle ? width / 2 : a == Anchor::End ? width : 0;
+            for (Cluster& g : cl) along(g) -= shift;
+            if (cl.size() > 0) cl.back().step = cl.back().advance * cl.back().scale_x;
+        }
+    }
+
+    // Outlines.
+    auto outline_for = [&](Outline::Layer layer, std::size_t style) -> Path& {
+        for (Outline& o : out)
+            if (o.layer == layer && o.style == style) return o.path;
+        out.push_back({layer, style, Path()});
+        return out.back().path;
+    };
+    // Decoration lines: one rectangle per run of clusters that continue each other in a straight
+    // line (a stroke outlines the run, not every glyph's piece).
+    struct PendingLine {
+        Decoration d;
+        Affine t;
+        double top = 0, thick = 0, width = 0;
+    };
+    std::vector<PendingLine> pending;
+    auto flush_line = [&](const PendingLine& p) {
+        Path r;
+        r.add_rect(Rect::from_xywh(0, p.top, p.width, p.thick));
+        outline_for(p.d.kind == Decoration::LineThrough ? Outline::Over : Outline::Under, p.d.style).append(r, p.t);
+    };
+    auto flush_decorations = [&] {
+        for (const PendingLine& p : pending) flush_line(p);
+        pending.clear();
+    };
+    auto decorate = [&](const Decoration& d, const Affine& t, double top, double thick, double width) {
+        for (PendingLine& p : pending) {
+            if (p.d.kind != d.kind || p.d.style != d.style) continue;
+            const Point end = p.t.apply({p.width, 0});
+            const bool continues = std::fabs(end.x - t.e) < 1e-6 && std::fabs(end.y - t.f) < 1e-6 && p.t.a == t.a &&
+                                   p.t.b == t.b && p.t.c == t.c && p.t.d == t.d && p.top == top && p.thick == thick;
+            if (continues) {
+                p.width += width;
+                return;
+            }
+            flush_line(p);
+            p = {d, t, top, thick, width};
+            return;
+        }
+        pending.push_back({d, t, top, thick, width});
+    };
+    std::vector<std::unique_ptr<PathWalker>> walkers(in.paths.size());
+    Path glyph;
+    for (const std::vector<Cluster>& cl : chunks) {
+        for (const Cluster& g : cl) {
+            const Span& sp = in.spans[g.span];
+            const double size = sp.font.size;
+            double shift = 0;
+            for (const Span::Shift& bs : sp.baseline_shifts) {
+                const double s = g.font ? size / g.font->units_per_em() : 0;
+                if (bs.kind == 0) shift += bs.value;
+                else if (bs.kind == 1) shift -= g.font ? g.font->metrics().subscript_offset * s : 0.2 * size;
+                else shift += g.font ? g.font->metrics().superscript_offset * s : 0.4 * size;
+            }
+            const double by = g.y + baseline_offset(sp.baseline, g.font, size) - shift;
+            Affine t;
+            if (sp.path >= 0) {
+                auto& w = walkers[static_cast<std::size_t>(sp.path)];
+                if (!w) w = std::make_unique<PathWalker>(in.paths[static_cast<std::size_t>(sp.path)].path);
+                const double half = g.advance * g.scale_x / 2;
+                Point p;
+                double angle = 0;
+                if (!w->at(g.x + half, p, angle)) continue;  // off the path: not drawn
+                t = Affine::translate(p.x, p.y) * Affine::rotate(angle) * Affine::translate(-half, by);
+                if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
+            } else if (in.vertical) {
+                // Upright glyphs carry HarfBuzz's vertical offsets (centred on the line); sideways
+                // ones turn clockwise about the pen with their em box centred on the line.
+                t = Affine::translate(g.x, g.y);
+                if (!g.upright && g.font) {
+                    const FontMetrics& m = g.font->metrics();
+                    t = t * Affine::rotate_degrees(90) *
+                        Affine::translate(0, (m.ascender + m.descender) / 2 * size / m.units_per_em - shift);
+                }
+                if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
+            } else {
+                t = Affine::translate(g.x, by);
+                if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
+            }
+            t = t * Affine::scale(g.scale_x, 1);
+            if (!t.is_finite()) continue;  // spacing or positions beyond double range: not drawn
+            if (box && g.font) {
+                // The cluster's cell: its advance by the font's ascender to descender.
+                const FontMetrics& m = g.font->metrics();
+                const double s = size / m.units_per_em;
+                const Rect cell = transform_bounds(t, Rect{0, -m.ascender * s, g.advance, -m.descender * s});
+                *box = *box ? (*box)->united(cell) : cell;
+            }
+            for (const Glyph& gl : g.glyphs) {
+                const double s = size / gl.font->units_per_em();
+                try {
+                    gl.font->glyph_path(gl.id, glyph);
+                } catch (const Error&) {
+                    continue;
+                }
+                if (glyph.empty()) continue;
+                outline_for(Outline::Glyphs, sp.style).append(glyph, t * Affine::translate(gl.x_off, gl.y_off) * Affine::scale(s, -s));
+            }
+            if (!sp.decorations.empty() && g.font) {
+                const FontMetrics& m = g.font->metrics();
+                const double s = size / m.units_per_em;
+                const double w = g.step / g.scale_x;
+                for (const Decoration& d : sp.decorations) {
+                    // Centred on the font's offset for the line (resvg and browsers).
+                    double centre = 0, thick = 0;
+                    if (d.kind == Decoration::Underline) {
+                        thick = m.underline_thickness > 0 ? m.underline_thickness : m.units_per_em / 14.0;
+                        centre = m.underline_position;
+                    } else if (d.kind == Decoration::Overline) {
+                        thick = m.underline_thickness > 0 ? m.underline_thickness : m.units_per_em / 14.0;
+                        centre = m.ascender;
+                    } else {
+                        thick = m.strikeout_thickness > 0 ? m.strikeout_thickness : m.units_per_em / 14.0;
+                        centre = m.strikeout_position > 0 ? m.strikeout_position : m.x_height / 2;
+                    }
+                    decorate(d, t, (-centre - thick / 2) * s, thick * s, w);
+                }
+            }
+        }
+        flush_decorations();
+    }
+    return out;
+}
+
+}  // namespace casteljau::svg_text
