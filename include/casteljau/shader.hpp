@@ -8,6 +8,7 @@
 // Coordinates: a shader is defined in its own gradient space; `transform` maps that space to the
 // user space of the fill (a Canvas applies its current transform on top when it draws). The
 // colour of a pixel is the colour at the pixel's centre (i + 0.5, j + 0.5).
+// Ownership: an image shader shares ownership of its Pixmap (shared_ptr) and only reads it.
 // Thread-safety: a Shader is an immutable value once built; share it between threads freely.
 #pragma once
 
