@@ -133,20 +133,31 @@ void Shader::color_at(double t, float rgba[4]) const {
 void Shader::shade_row(const Affine& inv, int x, int y, int length, double opacity, std::uint8_t* out) const {
     if (kind_ == Kind::Image) return shade_image_row(inv, x, y, length, opacity, out);
     const float op = static_cast<float>(std::clamp(opacity, 0.0, 1.0));
+    auto put = [op](double t, std::uint8_t* o, const Shader& s) {
+        float c[4];
+        s.color_at(t, c);
+        const float a = c[3] * op;
+        o[0] = static_cast<std::uint8_t>(c[0] * a * 255.0f + 0.5f);
+        o[1] = static_cast<std::uint8_t>(c[1] * a * 255.0f + 0.5f);
+        o[2] = static_cast<std::uint8_t>(c[2] * a * 255.0f + 0.5f);
+        o[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
+    };
     Point p = inv.apply({x + 0.5, y + 0.5});
+    const double dx = p1_.x - p0_.x, dy = p1_.y - p0_.y, len2 = dx * dx + dy * dy;
+    if (kind_ == Kind::Linear && len2 > 0) {
+        // The parameter is affine along the row: t(i) = t0 + i dt, no division per pixel.
+        const double t0 = ((p.x - p0_.x) * dx + (p.y - p0_.y) * dy) / len2;
+        const double dt = (inv.a * dx + inv.b * dy) / len2;
+        for (int i = 0; i < length; ++i, out += 4) put(t0 + i * dt, out, *this);
+        return;
+    }
     for (int i = 0; i < length; ++i, out += 4, p.x += inv.a, p.y += inv.b) {
         double t;
         if (!parameter(p, t)) {
             out[0] = out[1] = out[2] = out[3] = 0;
             continue;
         }
-        float c[4];
-        color_at(t, c);
-        const float a = c[3] * op;
-        out[0] = static_cast<std::uint8_t>(c[0] * a * 255.0f + 0.5f);
-        out[1] = static_cast<std::uint8_t>(c[1] * a * 255.0f + 0.5f);
-        out[2] = static_cast<std::uint8_t>(c[2] * a * 255.0f + 0.5f);
-        out[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
+        put(t, out, *this);
     }
 }
 
