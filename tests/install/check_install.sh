@@ -77,6 +77,16 @@ try:
 except cj.Error as e:
     assert "nonexistent" in str(e)
 assert cj.version() == "0.1.0"
+try:
+    import numpy
+except ImportError:
+    print("check_install: numpy absent, the array view is not checked")
+else:
+    a = c.array()
+    assert a.shape == (2, 4, 4) and a.dtype == numpy.uint8
+    a[1, 3] = (1, 2, 3, 4)  # a view of the canvas pixels, not a copy
+    assert bytes(c.pixels()[c.stride + 12:c.stride + 16]) == bytes((1, 2, 3, 4))
+    print("check_install: numpy array view checked")
 print("check_install: python binding checks passed")
 PY
 
