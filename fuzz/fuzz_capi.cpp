@@ -48,6 +48,16 @@ private:
     std::size_t n_, i_ = 0;
 };
 
+// An enum value from any int, as a C caller may pass it (without a C++ cast, for which a value
+// outside the enumerators' range would be undefined).
+template <class E>
+E as_enum(int v) {
+    static_assert(sizeof(E) == sizeof(int));
+    E e;
+    std::memcpy(&e, &v, sizeof e);
+    return e;
+}
+
 template <class T>
 T* pick(std::vector<T*>& pool, Reader& r) {
     if (pool.empty()) return nullptr;
@@ -110,7 +120,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 casteljau_paint* p = nullptr;
                 const casteljau_matrix m = matrix(r);
                 const bool radial = r.byte() & 1;
-                const auto spread = static_cast<casteljau_spread>(r.small_int());
+                const auto spread = as_enum<casteljau_spread>(r.small_int());
                 if (radial)
                     s = casteljau_paint_create_radial(r.number(), r.number(), r.number(), r.number(), r.number(), r.number(),
                                                       stops, r.byte() % 4, spread, (r.byte() & 1) ? &m : nullptr, &p);
@@ -123,13 +133,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             case 10: {
                 casteljau_paint* p = nullptr;
                 const casteljau_matrix m = matrix(r);
-                s = casteljau_paint_create_image(pick(images, r), static_cast<casteljau_sampling>(r.small_int()), &m,
+                s = casteljau_paint_create_image(pick(images, r), as_enum<casteljau_sampling>(r.small_int()), &m,
                                                  r.byte() & 1, &p);
                 if (p) paints.push_back(p);
                 break;
             }
             case 11: s = casteljau_paint_set_opacity(pick(paints, r), r.number()); break;
-            case 12: s = casteljau_paint_set_blend_mode(pick(paints, r), static_cast<casteljau_blend_mode>(r.small_int())); break;
+            case 12: s = casteljau_paint_set_blend_mode(pick(paints, r), as_enum<casteljau_blend_mode>(r.small_int())); break;
             case 13: {
                 if (images.size() >= 4) break;
                 casteljau_image* im = nullptr;
@@ -149,8 +159,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 if (strokes.size() < 4) strokes.push_back(casteljau_stroke_create());
                 casteljau_stroke* st = pick(strokes, r);
                 s = casteljau_stroke_set_width(st, r.number());
-                casteljau_stroke_set_cap(st, static_cast<casteljau_line_cap>(r.small_int()));
-                casteljau_stroke_set_join(st, static_cast<casteljau_line_join>(r.small_int()), r.number());
+                casteljau_stroke_set_cap(st, as_enum<casteljau_line_cap>(r.small_int()));
+                casteljau_stroke_set_join(st, as_enum<casteljau_line_join>(r.small_int()), r.number());
                 const double d[3] = {r.number(), r.number(), r.number()};
                 casteljau_stroke_set_dashes(st, d, r.byte() % 4, r.number());
                 break;
@@ -166,19 +176,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 break;
             }
             case 22: s = casteljau_canvas_clip_rect(pick(canvases, r), r.number(), r.number(), r.number(), r.number()); break;
-            case 23: s = casteljau_canvas_clip_path(pick(canvases, r), pick(paths, r), static_cast<casteljau_fill_rule>(r.small_int())); break;
+            case 23: s = casteljau_canvas_clip_path(pick(canvases, r), pick(paths, r), as_enum<casteljau_fill_rule>(r.small_int())); break;
             case 24: s = casteljau_canvas_set_opacity(pick(canvases, r), r.number()); break;
-            case 25: s = casteljau_canvas_set_blend_mode(pick(canvases, r), static_cast<casteljau_blend_mode>(r.small_int())); break;
+            case 25: s = casteljau_canvas_set_blend_mode(pick(canvases, r), as_enum<casteljau_blend_mode>(r.small_int())); break;
             case 26: s = casteljau_canvas_clear(pick(canvases, r), color(r)); break;
-            case 27: s = casteljau_canvas_fill_path(pick(canvases, r), pick(paths, r), pick(paints, r), static_cast<casteljau_fill_rule>(r.byte() % 3)); break;
+            case 27: s = casteljau_canvas_fill_path(pick(canvases, r), pick(paths, r), pick(paints, r), as_enum<casteljau_fill_rule>(r.byte() % 3)); break;
             case 28: s = casteljau_canvas_stroke_path(pick(canvases, r), pick(paths, r), pick(strokes, r), pick(paints, r)); break;
             case 29: {
                 const casteljau_matrix m = matrix(r);
                 s = casteljau_canvas_draw_image(pick(canvases, r), pick(images, r), (r.byte() & 1) ? &m : nullptr,
-                                                static_cast<casteljau_sampling>(r.small_int()), r.number());
+                                                as_enum<casteljau_sampling>(r.small_int()), r.number());
                 break;
             }
-            case 30: s = casteljau_canvas_begin_layer(pick(canvases, r), r.number(), static_cast<casteljau_blend_mode>(r.small_int())); break;
+            case 30: s = casteljau_canvas_begin_layer(pick(canvases, r), r.number(), as_enum<casteljau_blend_mode>(r.small_int())); break;
             case 31: {
                 s = casteljau_canvas_end_layer(pick(canvases, r));
                 casteljau_image* im = pick(images, r);

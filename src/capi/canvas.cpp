@@ -21,7 +21,8 @@ void check_finite(std::initializer_list<double> values, const char* what) {
         if (!std::isfinite(v)) throw Error(ErrorKind::InvalidArgument, std::string(what) + " is not finite");
 }
 
-FillRule rule_of(casteljau_fill_rule r) {
+FillRule rule_of(const casteljau_fill_rule& rule) {
+    const int r = casteljau::capi::raw_enum(rule);
     if (r != CASTELJAU_FILL_NONZERO && r != CASTELJAU_FILL_EVENODD) throw Error(ErrorKind::InvalidArgument, "unknown fill rule");
     return r == CASTELJAU_FILL_EVENODD ? FillRule::EvenOdd : FillRule::NonZero;
 }
@@ -95,7 +96,7 @@ casteljau_status casteljau_canvas_set_opacity(casteljau_canvas* canvas, double o
     });
 }
 casteljau_status casteljau_canvas_set_blend_mode(casteljau_canvas* canvas, casteljau_blend_mode mode) {
-    return with(canvas, [&](Canvas& c) { c.set_blend_mode(casteljau::capi::blend_of(mode)); });
+    return with(canvas, [&](Canvas& c) { c.set_blend_mode(casteljau::capi::blend_of(casteljau::capi::raw_enum(mode))); });
 }
 casteljau_status casteljau_canvas_set_tolerance(casteljau_canvas* canvas, double tolerance) {
     return with(canvas, [&](Canvas& c) {
@@ -127,7 +128,7 @@ casteljau_status casteljau_canvas_draw_image(casteljau_canvas* canvas, const cas
                                              casteljau_sampling sampling, double opacity) {
     return with(canvas, [&](Canvas& c) {
         if (!(opacity >= 0 && opacity <= 1)) throw Error(ErrorKind::InvalidArgument, "opacity must be in [0, 1]");
-        c.draw_image(need(image, "image")->pixmap, m ? finite(m) : Affine{}, casteljau::capi::sampling_of(sampling), opacity);
+        c.draw_image(need(image, "image")->pixmap, m ? finite(m) : Affine{}, casteljau::capi::sampling_of(casteljau::capi::raw_enum(sampling)), opacity);
     });
 }
 casteljau_status casteljau_canvas_draw_text(casteljau_canvas* canvas, const casteljau_font* font, const char* text, double size,
@@ -140,7 +141,7 @@ casteljau_status casteljau_canvas_draw_text(casteljau_canvas* canvas, const cast
 casteljau_status casteljau_canvas_begin_layer(casteljau_canvas* canvas, double opacity, casteljau_blend_mode mode) {
     return with(canvas, [&](Canvas& c) {
         if (!(opacity >= 0 && opacity <= 1)) throw Error(ErrorKind::InvalidArgument, "opacity must be in [0, 1]");
-        c.begin_layer(opacity, casteljau::capi::blend_of(mode));
+        c.begin_layer(opacity, casteljau::capi::blend_of(casteljau::capi::raw_enum(mode)));
     });
 }
 casteljau_status casteljau_canvas_end_layer(casteljau_canvas* canvas) {

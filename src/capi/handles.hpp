@@ -2,6 +2,7 @@
 // that turns every C++ exception into a status and a thread-local message.
 #pragma once
 
+#include <cstring>
 #include <memory>
 #include <new>
 #include <string>
@@ -66,9 +67,19 @@ T* need(T* p, const char* name) {
 // A matrix from the C struct (NULL: identity).
 inline Affine affine(const casteljau_matrix* m) { return m ? Affine{m->a, m->b, m->c, m->d, m->e, m->f} : Affine{}; }
 
+// The value a C caller passed for an enum parameter, read as the int it is without an enum-typed
+// load: C allows any int there, while in C++ a value outside the enumerators' range is undefined.
+template <class E>
+int raw_enum(const E& e) {
+    static_assert(sizeof(E) == sizeof(int), "C enums are int-sized here");
+    int v;
+    std::memcpy(&v, &e, sizeof v);
+    return v;
+}
+
 // The C enums as C++ ones; throw Error(InvalidArgument) for a value outside the enum.
-ImageSampling sampling_of(casteljau_sampling s);
-BlendMode blend_of(casteljau_blend_mode m);
+ImageSampling sampling_of(int s);
+BlendMode blend_of(int m);
 
 inline Color color(casteljau_color c) { return Color::rgba(c.r, c.g, c.b, c.a); }
 

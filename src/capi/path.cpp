@@ -106,15 +106,17 @@ casteljau_status casteljau_stroke_set_width(casteljau_stroke* stroke, double wid
     });
 }
 
-casteljau_status casteljau_stroke_set_cap(casteljau_stroke* stroke, casteljau_line_cap cap) {
+casteljau_status casteljau_stroke_set_cap(casteljau_stroke* stroke, casteljau_line_cap line_cap) {
     return guard([&] {
+        const int cap = casteljau::capi::raw_enum(line_cap);
         if (cap < CASTELJAU_CAP_BUTT || cap > CASTELJAU_CAP_SQUARE) throw Error(ErrorKind::InvalidArgument, "unknown line cap");
         need(stroke, "stroke")->style.cap = static_cast<LineCap>(cap);
     });
 }
 
-casteljau_status casteljau_stroke_set_join(casteljau_stroke* stroke, casteljau_line_join join, double miter_limit) {
+casteljau_status casteljau_stroke_set_join(casteljau_stroke* stroke, casteljau_line_join line_join, double miter_limit) {
     return guard([&] {
+        const int join = casteljau::capi::raw_enum(line_join);
         if (join < CASTELJAU_JOIN_MITER || join > CASTELJAU_JOIN_BEVEL) throw Error(ErrorKind::InvalidArgument, "unknown line join");
         if (!std::isfinite(miter_limit)) throw Error(ErrorKind::InvalidArgument, "miter limit must be finite");
         StrokeStyle& s = need(stroke, "stroke")->style;

@@ -169,12 +169,15 @@ int main(int argc, char** argv) {
     CHECK_ERROR(casteljau_path_line_to(path, NAN, 0), CASTELJAU_ERROR_INVALID_ARGUMENT, "finite");
     CHECK_ERROR(casteljau_image_create(0, 10, &badpng), CASTELJAU_ERROR_INVALID_ARGUMENT, "1x1");
     CHECK_ERROR(casteljau_image_create(100000, 100000, &badpng), CASTELJAU_ERROR_LIMIT, "limit");
-    CHECK_ERROR(casteljau_paint_create_linear(0, 0, 1, 0, stops, 0, CASTELJAU_SPREAD_PAD, NULL, &linear),
+    casteljau_paint* nopaint = solid;
+    CHECK_ERROR(casteljau_paint_create_linear(0, 0, 1, 0, stops, 0, CASTELJAU_SPREAD_PAD, NULL, &nopaint),
                 CASTELJAU_ERROR_INVALID_ARGUMENT, "stop");
-    CHECK(linear == NULL);
+    CHECK(nopaint == NULL);
     CHECK_ERROR(casteljau_canvas_set_blend_mode(canvas, (casteljau_blend_mode)99), CASTELJAU_ERROR_INVALID_ARGUMENT,
                 "blend");
-    CHECK_ERROR(casteljau_canvas_create_for_pixels(buffer, 8, 3, 16, &raw), CASTELJAU_ERROR_INVALID_ARGUMENT, "stride");
+    casteljau_canvas* nocanvas = NULL;
+    CHECK_ERROR(casteljau_canvas_create_for_pixels(buffer, 8, 3, 16, &nocanvas), CASTELJAU_ERROR_INVALID_ARGUMENT, "stride");
+    CHECK(nocanvas == NULL);
     CHECK_ERROR(casteljau_canvas_draw_text(canvas, font, "x", NAN, 0, 0, solid), CASTELJAU_ERROR_INVALID_ARGUMENT, "");
     CHECK_ERROR(casteljau_image_write_png(image, "/nonexistent-dir/x.png"), CASTELJAU_ERROR_IO, "nonexistent-dir");
     CHECK_ERROR(casteljau_canvas_set_opacity(canvas, 2), CASTELJAU_ERROR_INVALID_ARGUMENT, "opacity");
@@ -196,6 +199,7 @@ int main(int argc, char** argv) {
     casteljau_path_destroy(circle);
     casteljau_stroke_destroy(stroke);
     casteljau_paint_destroy(solid);
+    casteljau_paint_destroy(linear);
     casteljau_paint_destroy(radial);
     casteljau_paint_destroy(pattern);
     casteljau_font_destroy(font);
