@@ -136,12 +136,11 @@ inline void hand(casteljau::Canvas& c, const Geometry& g, double angle, double l
     c.stroke_path(p, st, casteljau::Paint::solid(color));
 }
 
-inline casteljau::Pixmap draw(const Time& t, int size = 400, const Colors& col = {}) {
+// Draws the clock on `c` (whose pixels it replaces: the background first), `size` pixels square.
+inline void draw_into(casteljau::Canvas& c, const Time& t, int size, const Colors& col = {}) {
     using namespace casteljau;
     const Geometry g{static_cast<double>(size)};
-    Pixmap pix(size, size);
-    pix.fill(col.background);
-    Canvas c(pix);
+    c.clear(col.background);
     const Path case_outline = arcs_path(case_points(g));
     c.fill_path(case_outline, Paint::solid(col.case_fill));
     const Path dial = arcs_path(circle_points(g.center(), g.dial_radius()));
@@ -170,6 +169,12 @@ inline casteljau::Pixmap draw(const Time& t, int size = 400, const Colors& col =
     Path hub;
     hub.add_circle(g.center(), g.hub_radius());
     c.fill_path(hub, Paint::solid(col.hub));
+}
+
+inline casteljau::Pixmap draw(const Time& t, int size = 400, const Colors& col = {}) {
+    casteljau::Pixmap pix(size, size);
+    casteljau::Canvas c(pix);
+    draw_into(c, t, size, col);
     return pix;
 }
 

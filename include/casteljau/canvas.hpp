@@ -1,12 +1,21 @@
 // casteljau/canvas.hpp: the drawing-backend face of casteljau.
 //
-// A Canvas draws onto a Pixmap it does not own: a current transform (user space -> pixel space)
-// with save()/restore(), a rectangular device clip, and fills of Paths with a Paint under a fill
-// rule. Every fill walks the pipeline: Path --transform--> flatten --> rasterize (exact area) -->
-// composite (source-over of premultiplied colour x coverage).
+// A Canvas draws onto a Pixmap it does not own (or straight into caller-owned memory): a state
+// stack (transform, clip, opacity, blend mode) with save()/restore(); clips to rectangles and to
+// any path with exact anti-aliased coverage; fills and strokes of Paths with a Paint (solid,
+// gradients, image patterns; every Porter-Duff operator and CSS blend mode); images; A8 masks;
+// layers. Every fill walks the pipeline: Path --transform--> flatten --> rasterize (exact area)
+// --> x clip coverage --> paint stage (shade, blend, composite; src/paint).
+// Coordinates: user space is mapped to pixel space (x right, y down, pixel (i, j) the square
+// [i, i+1) x [j, j+1)) by the current transform.
+// Ownership: the Canvas borrows its target and owns its layers; Paths, Paints and images passed to
+// it are only read during the call.
 // Thread-safety: a Canvas and its Pixmap belong to one thread at a time.
 #pragma once
 
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -20,31 +29,6 @@
 
 namespace casteljau {
 
-// What a fill paints: a solid colour, or a Shader (gradient) evaluated per pixel when `shader` is
-// set (then `color` is ignored). The shader's own transform maps its space to the user space of
-// the fill; the Canvas's current transform at the time of the fill goes on top.
-struct Paint {
-    Color color = Color::black();
-    double opacity = 1.0;        // multiplies the colour's alpha
-    bool linear_blend = false;   // blend coverage in linear light (gamma-correct) instead of sRGB; solid colours only
-    std::shared_ptr<const Shader> shader;
-
-    static Paint solid(Color c) { Paint p; p.color = c; return p; }
-    static Paint shaded(Shader s) { Paint p; p.shader = std::make_shared<const Shader>(std::move(s)); return p; }
-};
-
-// Source-over of `paint` x coverage onto one row of premultiplied pixels (exposed for tests and
-// for callers that rasterize themselves). `dst` points at pixel x of the row. With S the paint
-// colour premultiplied (alpha = round(a x opacity), channels round(x a / 255)), coverage c and
-// destination D, every channel becomes round((S c 255 + D (255^2 - Sa c)) / 255^2): the exact
-// source-over value rounded once. With linear_blend the colour channels are blended in linear
-// light and re-encoded to sRGB (within one level of the exact value). A shader paint is not handled here (see
-// composite_span_premul).
-void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, const Paint& paint);
-// Source-over of per-pixel premultiplied RGBA8 colours `src` x coverage onto one row, each channel
-// round((S c 255 + D (255^2 - Sa c)) / 255^2) as for composite_span.
-void composite_span_premul(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src);
-
 // Layers and masks (src/canvas/layer.cpp): a group with opacity, a clip path or a mask is drawn
 // into a transparent layer of the target's size, multiplied by coverage masks, and composited once.
 // A8 coverage of a layer: its alpha channel (clip paths, mask-type alpha)...
@@ -55,54 +39,90 @@ Mask mask_from_luminance(const Pixmap& layer);
 // Multiplies every channel of `layer` by the mask's coverage (0 outside the mask's bounds).
 void apply_mask(Pixmap& layer, const Mask& mask);
 
-// How a layer combines with what is under it (W3C Compositing and Blending Level 1): the blend
-// function B(Cb, Cs) on straight colours, then source-over:
-// co = cs (1 - ab) + cb (1 - as) + as ab B(Cb, Cs), ao = as + ab - as ab (premultiplied c).
-enum class BlendMode {
-    Normal, Multiply, Screen, Overlay, Darken, Lighten, ColorDodge, ColorBurn, HardLight, SoftLight,
-    Difference, Exclusion, Hue, Saturation, Color, Luminosity
-};
-// Parses the CSS names (normal, multiply, ..., color-dodge, ..., luminosity); false when unknown.
-bool parse_blend_mode(std::string_view name, BlendMode& out);
-// The blended straight colour B(cb, cs) of one pixel, channels in [0, 1] (for tests and callers
-// that blend themselves).
-void blend_colors(BlendMode mode, const float cb[3], const float cs[3], float out[3]);
-
 class Canvas {
 public:
+    // Draws into `target`, which must outlive the Canvas.
     explicit Canvas(Pixmap& target);
+    // Draws straight into caller-owned premultiplied RGBA8 memory (see Pixmap::borrow): `pixels`,
+    // `height` rows of `stride` bytes. Nothing is copied; the memory must outlive the Canvas.
+    Canvas(std::uint8_t* pixels, int width, int height, std::size_t stride);
+    Canvas(const Canvas&) = delete;
+    Canvas& operator=(const Canvas&) = delete;
+    ~Canvas();
 
+    // The pixmap the Canvas was made for (layers are composited into it by end_layer()).
     Pixmap& target() { return *target_; }
     int width() const { return target_->width(); }
     int height() const { return target_->height(); }
+    // Premultiplied RGBA8 pixels of the target, rows stride() bytes apart.
+    std::uint8_t* pixels() { return target_->data(); }
+    std::size_t stride() const { return target_->stride(); }
 
-    // State stack: transform and clip.
+    // State stack: transform, clip (rectangle and coverage mask), opacity and blend mode.
+    // Throws Error(Limit) past 1024 nested saves.
     void save();
-    void restore();  // no-op when nothing was saved
+    void restore();  // no-op when nothing was saved (or nothing since the innermost begin_layer)
+    int save_count() const { return static_cast<int>(stack_.size()); }
     const Affine& transform() const { return state_.transform; }
     void set_transform(const Affine& m) { state_.transform = m; }
+    void reset_transform() { state_.transform = Affine{}; }
     void concat(const Affine& m) { state_.transform = state_.transform * m; }  // m applies first
     void translate(double tx, double ty) { concat(Affine::translate(tx, ty)); }
     void scale(double sx, double sy) { concat(Affine::scale(sx, sy)); }
     void rotate(double radians) { concat(Affine::rotate(radians)); }
-    // Intersects the clip with the pixel bounds of `r` mapped by the current transform.
+    // Skews x by tan(ax) y and y by tan(ay) x (radians).
+    void skew(double ax, double ay) { concat(Affine{1, std::tan(ay), std::tan(ax), 1, 0, 0}); }
+
+    // Clipping. The clip is the pixel rectangle clip() times an optional exact-area coverage mask
+    // (clip_mask(), covering exactly clip()); every drawing operation is multiplied by it.
+    // Intersects the clip with `r` mapped by the current transform: a rectangle that lands on whole
+    // pixels only shrinks clip(), any other (fractional, rotated, skewed) is clipped as a path.
     void clip_rect(const Rect& r);
+    // Intersects the clip with the exact coverage of `path` (current transform, `rule`): the new
+    // coverage of a pixel is round(old x path coverage / 255), within 1/255 of the exact product.
+    void clip_path(const Path& path, FillRule rule = FillRule::NonZero);
     const IRect& clip() const { return state_.clip; }
+    const Mask* clip_mask() const { return state_.clip_mask.get(); }
 
-    FillOptions& fill_options() { return fill_options_; }  // tolerance, exactness
+    // Multiplies the alpha of everything drawn (fills, strokes, masks, images, layers).
+    void set_opacity(double opacity);
+    double opacity() const { return state_.opacity; }
+    // The blend mode of drawing operations whose Paint says SourceOver.
+    void set_blend_mode(BlendMode mode) { state_.blend = mode; }
+    BlendMode blend_mode() const { return state_.blend; }
 
+    // Default options (tolerance, exactness) of the calls that take none; calls that take
+    // FillOptions use theirs and leave these alone.
+    FillOptions& fill_options() { return fill_options_; }
+
+    // Replaces the pixels inside the clip with `c` (the clip's coverage blends the edges).
     void clear(Color c);
     void fill_path(const Path& path, const Paint& paint, FillRule rule = FillRule::NonZero);
+    void fill_path(const Path& path, const Paint& paint, const FillOptions& options);
+    void fill_rect(const Rect& r, const Paint& paint);
     // Strokes `path` with `style` in user space (so a non-uniform transform gives an elliptical
     // pen, as SVG requires) and fills the outline with the nonzero rule.
     void stroke_path(const Path& path, const StrokeStyle& style, const Paint& paint);
+    void stroke_path(const Path& path, const StrokeStyle& style, const Paint& paint, const FillOptions& options);
     // Composites an A8 mask (pixel space, the current transform is not applied to the mask; it
-    // is to a shader's coordinates) with `paint`.
+    // is to a shader's coordinates) with `paint`, the mask moved by (dx, dy) pixels.
     void fill_mask(const Mask& mask, const Paint& paint);
+    void fill_mask(const Mask& mask, long long dx, long long dy, const Paint& paint);
 
-    // Source-over of `layer` (same size as the target, pixel space) times `opacity`, inside the
-    // current clip rectangle.
+    // Draws `image` (premultiplied, its pixel space [0, w] x [0, h]) mapped by `m` and then by the
+    // current transform, sampled at pixel centres. The image is only read during the call.
+    void draw_image(const Pixmap& image, const Affine& m = {}, ImageSampling sampling = ImageSampling::Bilinear,
+                    double opacity = 1.0);
+
+    // Composites `layer` (same size as the target, pixel space) times `opacity` with `mode`, inside
+    // the current clip (its mask included). Opacity acts as coverage: D + o c (B(S, D) - D).
     void draw_layer(const Pixmap& layer, double opacity = 1.0, BlendMode mode = BlendMode::Normal);
+    // Layers: save(), then draw into a transparent pixmap of the target's size until end_layer(),
+    // which restores the state and composites the layer with `opacity` and `mode` (and the
+    // restored state's clip and opacity). Layers nest; end_layer() without a layer does nothing.
+    void begin_layer(double opacity = 1.0, BlendMode mode = BlendMode::Normal);
+    void end_layer();
+    int layer_depth() const { return static_cast<int>(layers_.size()); }
 
     Rasterizer& rasterizer() { return raster_; }
 
@@ -110,13 +130,21 @@ private:
     struct State {
         Affine transform;
         IRect clip;
+        std::shared_ptr<const Mask> clip_mask;  // null: the rectangle alone
+        double opacity = 1;
+        BlendMode blend = BlendMode::SourceOver;
     };
+    struct Layer;
+    Pixmap& surface();  // the innermost layer, or the target
+    std::unique_ptr<Pixmap> owned_;  // the borrowed-memory pixmap of the raw-pointer constructor
     Pixmap* target_;
     State state_;
     std::vector<State> stack_;
+    std::vector<std::unique_ptr<Layer>> layers_;
     FillOptions fill_options_;
     Rasterizer raster_;
-    std::vector<std::uint8_t> scratch_;  // a row of shader colours
+    std::vector<std::uint8_t> scratch_;   // shader colours of one row
+    std::vector<std::uint8_t> coverage_;  // coverage x clip of one row
 };
 
 }  // namespace casteljau

@@ -2,6 +2,7 @@
 // through libjpeg(-turbo), recognised by their signatures, decoded to a premultiplied Pixmap.
 // JPEG: 8-bit greyscale, RGB and CMYK/YCCK (Adobe inverted) files; no colour management.
 // Limits: the declared size is checked against the canvas limits before pixels are allocated.
+// Ownership: the bytes are only read during the call; the decoded Pixmap belongs to the caller.
 // Thread-safety: free functions on values.
 #pragma once
 

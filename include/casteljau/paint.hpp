@@ -1,14 +1,21 @@
-// casteljau/paint.hpp: colours and the Pixmap (premultiplied RGBA8) that everything draws into.
+// casteljau/paint.hpp: the paint stage's face: colours, the Pixmap (premultiplied RGBA8) that
+// everything draws into, the Paint a fill uses, and the span compositors every drawer goes through.
 //
 // Colours are sRGB with straight (non-premultiplied) alpha in the API; a Pixmap stores
-// premultiplied RGBA8, row-major, 4 bytes per pixel, top row first. PNG files hold straight alpha
-// (png.hpp converts). Thread-safety: values; distinct Pixmaps may be drawn on from distinct threads.
+// premultiplied RGBA8, row-major, 4 bytes per pixel, top row first, rows `stride()` bytes apart.
+// A Pixmap either owns its pixels or borrows caller-owned memory (Pixmap::borrow), which must
+// outlive it. PNG files hold straight alpha (png.hpp converts).
+// Thread-safety: values; distinct Pixmaps may be drawn on from distinct threads. A Paint is a value
+// whose shader is immutable and may be shared between threads.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string_view>
 #include <vector>
 
+#include "casteljau/blend_mode.hpp"
 #include "casteljau/geometry.hpp"
 
 namespace casteljau {
@@ -45,17 +52,33 @@ Color unpremultiply(PremulPixel p);
 class Pixmap {
 public:
     Pixmap() = default;
+    // A transparent pixmap that owns its pixels (stride = 4 x width).
     // Throws Error(Limit) when width or height exceeds limits::kMaxCanvasDimension or the area
     // exceeds limits::kMaxCanvasPixels, Error(InvalidArgument) when either is below 1.
     Pixmap(int width, int height);
+    // A pixmap over caller-owned premultiplied RGBA8 memory (a window's back buffer, a texture):
+    // `pixels` holds `height` rows of `stride` bytes, stride >= 4 x width. Nothing is copied or
+    // cleared; the memory must outlive the Pixmap and every Canvas drawing into it.
+    // Throws Error(InvalidArgument) for a null pointer, a stride below 4 x width or a size below
+    // 1x1, Error(Limit) past the canvas limits.
+    static Pixmap borrow(std::uint8_t* pixels, int width, int height, std::size_t stride);
+
+    // Copies own their pixels (a copy of a borrowed pixmap is an owned, tightly packed copy).
+    Pixmap(const Pixmap& o);
+    Pixmap& operator=(const Pixmap& o);
+    Pixmap(Pixmap&& o) noexcept;
+    Pixmap& operator=(Pixmap&& o) noexcept;
+    ~Pixmap() = default;
 
     int width() const { return width_; }
     int height() const { return height_; }
-    std::size_t stride() const { return static_cast<std::size_t>(width_) * 4; }  // bytes per row
-    std::uint8_t* data() { return data_.data(); }
-    const std::uint8_t* data() const { return data_.data(); }
-    std::uint8_t* row(int y) { return data_.data() + stride() * static_cast<std::size_t>(y); }
-    const std::uint8_t* row(int y) const { return data_.data() + stride() * static_cast<std::size_t>(y); }
+    std::size_t stride() const { return stride_; }  // bytes from one row to the next
+    bool borrowed() const { return pixels_ != nullptr && storage_.empty(); }
+    // The first row. Rows are stride() bytes apart; only an owned pixmap is guaranteed contiguous.
+    std::uint8_t* data() { return pixels_; }
+    const std::uint8_t* data() const { return pixels_; }
+    std::uint8_t* row(int y) { return pixels_ + stride_ * static_cast<std::size_t>(y); }
+    const std::uint8_t* row(int y) const { return pixels_ + stride_ * static_cast<std::size_t>(y); }
 
     PremulPixel pixel(int x, int y) const;
     void set_pixel(int x, int y, PremulPixel p);
@@ -63,8 +86,46 @@ public:
 
 private:
     int width_ = 0, height_ = 0;
-    std::vector<std::uint8_t> data_;
+    std::size_t stride_ = 0;
+    std::vector<std::uint8_t> storage_;  // empty when borrowed
+    std::uint8_t* pixels_ = nullptr;
 };
+
+class Shader;
+
+// What a fill paints: a solid colour, or a Shader (gradient, image pattern; shader.hpp) evaluated
+// per pixel when `shader` is set (then `color` is ignored). The shader's own transform maps its
+// space to the user space of the fill; the Canvas's current transform at the time of the fill goes
+// on top. `blend` combines the painted colour with the destination (blend_mode.hpp); a Canvas uses
+// its own state's blend mode when the paint's is SourceOver.
+struct Paint {
+    Color color = Color::black();
+    double opacity = 1.0;        // multiplies the colour's alpha
+    bool linear_blend = false;   // blend coverage in linear light (gamma-correct) instead of sRGB; solid source-over only
+    std::shared_ptr<const Shader> shader;
+    BlendMode blend = BlendMode::SourceOver;
+
+    static Paint solid(Color c) { Paint p; p.color = c; return p; }
+    static Paint shaded(Shader s);
+};
+
+// Source-over of `paint` x coverage onto one row of premultiplied pixels (exposed for tests and
+// for callers that rasterize themselves). `dst` points at pixel x of the row. With S the paint
+// colour premultiplied (alpha = round(a x opacity), channels round(x a / 255)), coverage c and
+// destination D, every channel becomes round((S c 255 + D (255^2 - Sa c)) / 255^2): the exact
+// source-over value rounded once. With linear_blend the colour channels are blended in linear
+// light and re-encoded to sRGB (within one level of the exact value). Neither a shader nor the
+// paint's blend mode is handled here (see blend_span and Canvas).
+void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, const Paint& paint);
+// Source-over of per-pixel premultiplied RGBA8 colours `src` x coverage onto one row, each channel
+// round((S c 255 + D (255^2 - Sa c)) / 255^2) as for composite_span.
+void composite_span_premul(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src);
+// Any blend mode: every pixel becomes D + c (B(S, D) - D), with B the mode's result for source S
+// and destination D (blend_mode.hpp) and c the coverage / 255 (`coverage` null: full coverage).
+// `src` holds one premultiplied pixel per destination pixel, or one for the whole span when
+// `src_stride` is 0. SourceOver takes composite_span_premul's exact integer path.
+void blend_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src,
+                BlendMode mode, int src_stride = 4);
 
 // Checks a requested canvas size against the limits; throws Error(Limit) / Error(InvalidData).
 void check_canvas_size(double width, double height);

@@ -4,7 +4,8 @@
 // that holds every pixel exactly: grey, grey + alpha, RGB or RGBA; Pixmaps hold premultiplied RGBA,
 // converted on the way in and out. Writing goes to a temporary file in the destination's
 // folder that is renamed over the destination only once complete, so a failure never leaves a
-// half-written file. Thread-safety: free functions; distinct files from distinct threads.
+// half-written file. Ownership: decoded Pixmaps are values owned by the caller; encoders only
+// read the Pixmap they are given. Thread-safety: free functions; distinct files from distinct threads.
 #pragma once
 
 #include <cstdint>

@@ -8,6 +8,7 @@
 // Coordinates: a shader is defined in its own gradient space; `transform` maps that space to the
 // user space of the fill (a Canvas applies its current transform on top when it draws). The
 // colour of a pixel is the colour at the pixel's centre (i + 0.5, j + 0.5).
+// Ownership: an image shader shares ownership of its Pixmap (shared_ptr) and only reads it.
 // Thread-safety: a Shader is an immutable value once built; share it between threads freely.
 #pragma once
 
@@ -21,6 +22,11 @@
 namespace casteljau {
 
 enum class SpreadMethod { Pad, Reflect, Repeat };
+
+// How an image is sampled between its pixel centres: the nearest pixel, bilinear interpolation of
+// the 2x2 neighbours, or bicubic (Catmull-Rom, 4x4 neighbours, clamped to valid premultiplied
+// values). Edges are clamped (or wrap around for a repeating pattern).
+enum class ImageSampling { Nearest, Bilinear, Bicubic };
 
 struct GradientStop {
     double offset = 0;  // in [0, 1]
@@ -49,6 +55,8 @@ public:
     // `repeat`: the image tiles the whole plane instead (patterns).
     static Shader image(std::shared_ptr<const Pixmap> image, bool smooth = true, const Affine& transform = {},
                         bool repeat = false);
+    static Shader image(std::shared_ptr<const Pixmap> image, ImageSampling sampling, const Affine& transform = {},
+                        bool repeat = false);
 
     Kind kind() const { return kind_; }
     const Affine& transform() const { return transform_; }
@@ -75,8 +83,9 @@ private:
     SpreadMethod spread_ = SpreadMethod::Pad;
     Affine transform_;
     std::shared_ptr<const Pixmap> image_;
-    bool smooth_ = true;
+    ImageSampling sampling_ = ImageSampling::Bilinear;
     bool repeat_ = false;
+    void sample_bicubic(double u, double v, float c[4]) const;
     void shade_image_row(const Affine& pixel_to_image, int x, int y, int length, double opacity, std::uint8_t* out) const;
 };
 

@@ -1,4 +1,5 @@
-// Composite stage: source-over of a solid Paint, weighted by 8-bit coverage, onto premultiplied
+// Paint stage, compositing: blend_span (any blend mode, float formula, include/casteljau/blend_mode.hpp)
+// and source-over of a solid Paint, weighted by 8-bit coverage, onto premultiplied
 // RGBA8 pixels. Each channel is the exact source-over value rounded once to the nearest 1/255
 // (tests/test_composite.cpp checks every coverage against that formula); runs of full coverage with
 // an opaque colour are plain stores. Optional linear-light blending converts
@@ -8,15 +9,15 @@
 #include <cmath>
 #include <cstring>
 
-#include "casteljau/canvas.hpp"
+#include "casteljau/paint.hpp"
+#include "paint/pixel_math.hpp"
 
 namespace casteljau {
 
 namespace {
 
-// round(n / 65025) for n < 255 x 65025 + 1 (the compiler turns the constant division into a
-// multiply and a shift).
-inline std::uint8_t div65025(unsigned n) { return static_cast<std::uint8_t>((n + 32512u) / 65025u); }
+using pixel::div65025;
+using pixel::unit_to_byte;
 
 // Source-over of premultiplied S x coverage c onto premultiplied D, in place:
 // out = S c / 255 + D (1 - Sa c / 255^2), rounded once. Both terms are kept over the common
@@ -101,14 +102,36 @@ void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage,
 }
 
 void composite_span_premul(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src) {
-    for (int i = 0; i < length; ++i, dst += 4, src += 4) {
-        const unsigned c = coverage[i];
-        if (c == 0 || src[3] == 0) continue;
-        if (c == 255 && src[3] == 255) {
-            std::memcpy(dst, src, 4);
-            continue;
+    blend_span(dst, length, coverage, src, BlendMode::SourceOver);
+}
+
+void blend_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src, BlendMode mode,
+                int src_stride) {
+    const std::size_t step = src_stride == 0 ? 0 : 4;
+    if (mode == BlendMode::SourceOver) {
+        for (int i = 0; i < length; ++i, dst += 4, src += step) {
+            const unsigned c = coverage ? coverage[i] : 255u;
+            if (c == 0 || src[3] == 0) continue;
+            if (c == 255 && src[3] == 255) {
+                std::memcpy(dst, src, 4);
+                continue;
+            }
+            source_over(dst, src, c);
         }
-        source_over(dst, src, c);
+        return;
+    }
+    if (mode == BlendMode::Destination) return;
+    for (int i = 0; i < length; ++i, dst += 4, src += step) {
+        const unsigned c = coverage ? coverage[i] : 255u;
+        if (c == 0) continue;
+        const float s[4] = {src[0] / 255.0f, src[1] / 255.0f, src[2] / 255.0f, src[3] / 255.0f};
+        const float d[4] = {dst[0] / 255.0f, dst[1] / 255.0f, dst[2] / 255.0f, dst[3] / 255.0f};
+        float r[4];
+        blend_pixel(mode, s, d, r);
+        const float w = c / 255.0f;
+        const std::uint8_t a = unit_to_byte(d[3] + w * (r[3] - d[3]));
+        for (int k = 0; k < 3; ++k) dst[k] = std::min(unit_to_byte(d[k] + w * (r[k] - d[k])), a);
+        dst[3] = a;
     }
 }
 

@@ -6,16 +6,11 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/paint.hpp"
+#include "paint/pixel_math.hpp"
 
 namespace casteljau {
 
-namespace {
-// round(a * b / 255) for a, b in [0, 255], exact for all inputs.
-inline std::uint8_t mul_div255(unsigned a, unsigned b) {
-    const unsigned t = a * b + 128;
-    return static_cast<std::uint8_t>((t + (t >> 8)) >> 8);
-}
-}  // namespace
+using pixel::mul_div255;
 
 Color Color::with_opacity(double opacity) const {
     const double o = std::clamp(std::isfinite(opacity) ? opacity : 0.0, 0.0, 1.0);
@@ -58,7 +53,61 @@ Pixmap::Pixmap(int width, int height) {
     check_canvas_size(width, height);
     width_ = width;
     height_ = height;
-    data_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0);
+    stride_ = static_cast<std::size_t>(width) * 4;
+    storage_.assign(stride_ * static_cast<std::size_t>(height), 0);
+    pixels_ = storage_.data();
+}
+
+Pixmap Pixmap::borrow(std::uint8_t* pixels, int width, int height, std::size_t stride) {
+    if (!pixels) throw Error(ErrorKind::InvalidArgument, "Pixmap::borrow needs pixel memory");
+    if (width < 1 || height < 1) throw Error(ErrorKind::InvalidArgument, "a Pixmap needs at least 1x1 pixels");
+    check_canvas_size(width, height);
+    if (stride < static_cast<std::size_t>(width) * 4)
+        throw Error(ErrorKind::InvalidArgument, "Pixmap::borrow: stride " + std::to_string(stride) +
+                                                    " is below 4 x width (" + std::to_string(4LL * width) + ")");
+    Pixmap p;
+    p.width_ = width;
+    p.height_ = height;
+    p.stride_ = stride;
+    p.pixels_ = pixels;
+    return p;
+}
+
+Pixmap::Pixmap(const Pixmap& o) : width_(o.width_), height_(o.height_), stride_(static_cast<std::size_t>(o.width_) * 4) {
+    if (!o.pixels_) {
+        stride_ = 0;
+        return;
+    }
+    storage_.resize(stride_ * static_cast<std::size_t>(height_));
+    for (int y = 0; y < height_; ++y) std::memcpy(storage_.data() + stride_ * static_cast<std::size_t>(y), o.row(y), stride_);
+    pixels_ = storage_.data();
+}
+
+Pixmap& Pixmap::operator=(const Pixmap& o) {
+    if (this != &o) *this = Pixmap(o);
+    return *this;
+}
+
+Pixmap::Pixmap(Pixmap&& o) noexcept
+    : width_(o.width_), height_(o.height_), stride_(o.stride_), storage_(std::move(o.storage_)), pixels_(o.pixels_) {
+    o.width_ = o.height_ = 0;
+    o.stride_ = 0;
+    o.pixels_ = nullptr;
+    o.storage_.clear();
+}
+
+Pixmap& Pixmap::operator=(Pixmap&& o) noexcept {
+    if (this == &o) return *this;
+    width_ = o.width_;
+    height_ = o.height_;
+    stride_ = o.stride_;
+    storage_ = std::move(o.storage_);
+    pixels_ = o.pixels_;
+    o.width_ = o.height_ = 0;
+    o.stride_ = 0;
+    o.pixels_ = nullptr;
+    o.storage_.clear();
+    return *this;
 }
 
 PremulPixel Pixmap::pixel(int x, int y) const {
@@ -77,7 +126,10 @@ void Pixmap::set_pixel(int x, int y, PremulPixel px) {
 void Pixmap::fill(Color c) {
     const PremulPixel p = premultiply(c);
     const std::uint8_t px[4] = {p.r, p.g, p.b, p.a};
-    for (std::size_t i = 0; i < data_.size(); i += 4) std::memcpy(&data_[i], px, 4);
+    for (int y = 0; y < height_; ++y) {
+        std::uint8_t* r = row(y);
+        for (int x = 0; x < width_; ++x) std::memcpy(r + 4 * static_cast<std::size_t>(x), px, 4);
+    }
 }
 
 }  // namespace casteljau

@@ -63,67 +63,6 @@ Shader Shader::radial(Point center, double r, Point focal, double fr, std::vecto
     return s;
 }
 
-Shader Shader::image(std::shared_ptr<const Pixmap> image, bool smooth, const Affine& transform, bool repeat) {
-    if (!image || image->width() < 1 || image->height() < 1) throw Error(ErrorKind::InvalidArgument, "an image shader needs an image");
-    Shader s;
-    s.kind_ = Kind::Image;
-    s.image_ = std::move(image);
-    s.smooth_ = smooth;
-    s.repeat_ = repeat;
-    s.transform_ = transform;
-    s.stops_ = {{0, Color::transparent()}};
-    return s;
-}
-
-void Shader::shade_image_row(const Affine& inv, int x, int y, int length, double opacity, std::uint8_t* out) const {
-    const Pixmap& im = *image_;
-    const int w = im.width(), h = im.height();
-    const unsigned op = static_cast<unsigned>(std::lround(std::clamp(opacity, 0.0, 1.0) * 255));
-    Point p = inv.apply({x + 0.5, y + 0.5});
-    for (int i = 0; i < length; ++i, out += 4, p.x += inv.a, p.y += inv.b) {
-        if (repeat_) {
-            p.x -= std::floor(p.x / w) * w;
-            p.y -= std::floor(p.y / h) * h;
-        }
-        if (!(p.x >= 0 && p.y >= 0 && p.x <= w && p.y <= h)) {
-            out[0] = out[1] = out[2] = out[3] = 0;
-            continue;
-        }
-        float c[4];
-        if (!smooth_) {
-            const int ix = std::min(static_cast<int>(p.x), w - 1), iy = std::min(static_cast<int>(p.y), h - 1);
-            const std::uint8_t* s = im.row(iy) + 4 * static_cast<std::size_t>(ix);
-            for (int k = 0; k < 4; ++k) c[k] = s[k];
-        } else {
-            const double u = p.x - 0.5, v = p.y - 0.5;
-            const double fu = std::floor(u), fv = std::floor(v);
-            const float au = static_cast<float>(u - fu), av = static_cast<float>(v - fv);
-            int x0 = static_cast<int>(fu), x1 = x0 + 1, y0 = static_cast<int>(fv), y1 = y0 + 1;
-            if (repeat_) {
-                // Neighbours wrap around the tile.
-                x0 = (x0 % w + w) % w;
-                x1 = (x1 % w + w) % w;
-                y0 = (y0 % h + h) % h;
-                y1 = (y1 % h + h) % h;
-            } else {
-                x0 = std::clamp(x0, 0, w - 1);
-                x1 = std::clamp(x1, 0, w - 1);
-                y0 = std::clamp(y0, 0, h - 1);
-                y1 = std::clamp(y1, 0, h - 1);
-            }
-            const std::uint8_t* a = im.row(y0) + 4 * static_cast<std::size_t>(x0);
-            const std::uint8_t* b = im.row(y0) + 4 * static_cast<std::size_t>(x1);
-            const std::uint8_t* cc = im.row(y1) + 4 * static_cast<std::size_t>(x0);
-            const std::uint8_t* d = im.row(y1) + 4 * static_cast<std::size_t>(x1);
-            for (int k = 0; k < 4; ++k) {
-                const float top = a[k] + (b[k] - a[k]) * au, bottom = cc[k] + (d[k] - cc[k]) * au;
-                c[k] = top + (bottom - top) * av;
-            }
-        }
-        for (int k = 0; k < 4; ++k) out[k] = static_cast<std::uint8_t>(std::min(255.0f, c[k] * op / 255.0f + 0.5f));
-    }
-}
-
 bool Shader::parameter(Point p, double& t) const {
     if (kind_ == Kind::Image) return false;
     if (kind_ == Kind::Linear) {
@@ -194,20 +133,31 @@ void Shader::color_at(double t, float rgba[4]) const {
 void Shader::shade_row(const Affine& inv, int x, int y, int length, double opacity, std::uint8_t* out) const {
     if (kind_ == Kind::Image) return shade_image_row(inv, x, y, length, opacity, out);
     const float op = static_cast<float>(std::clamp(opacity, 0.0, 1.0));
+    auto put = [op](double t, std::uint8_t* o, const Shader& s) {
+        float c[4];
+        s.color_at(t, c);
+        const float a = c[3] * op;
+        o[0] = static_cast<std::uint8_t>(c[0] * a * 255.0f + 0.5f);
+        o[1] = static_cast<std::uint8_t>(c[1] * a * 255.0f + 0.5f);
+        o[2] = static_cast<std::uint8_t>(c[2] * a * 255.0f + 0.5f);
+        o[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
+    };
     Point p = inv.apply({x + 0.5, y + 0.5});
+    const double dx = p1_.x - p0_.x, dy = p1_.y - p0_.y, len2 = dx * dx + dy * dy;
+    if (kind_ == Kind::Linear && len2 > 0) {
+        // The parameter is affine along the row: t(i) = t0 + i dt, no division per pixel.
+        const double t0 = ((p.x - p0_.x) * dx + (p.y - p0_.y) * dy) / len2;
+        const double dt = (inv.a * dx + inv.b * dy) / len2;
+        for (int i = 0; i < length; ++i, out += 4) put(t0 + i * dt, out, *this);
+        return;
+    }
     for (int i = 0; i < length; ++i, out += 4, p.x += inv.a, p.y += inv.b) {
         double t;
         if (!parameter(p, t)) {
             out[0] = out[1] = out[2] = out[3] = 0;
             continue;
         }
-        float c[4];
-        color_at(t, c);
-        const float a = c[3] * op;
-        out[0] = static_cast<std::uint8_t>(c[0] * a * 255.0f + 0.5f);
-        out[1] = static_cast<std::uint8_t>(c[1] * a * 255.0f + 0.5f);
-        out[2] = static_cast<std::uint8_t>(c[2] * a * 255.0f + 0.5f);
-        out[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
+        put(t, out, *this);
     }
 }
 

@@ -2,7 +2,7 @@
 //
 // Axis-aligned (translation + uniform scale): glyph origin in device space -> rounded to 1/4 px
 // horizontally and a whole pixel vertically (TextDrawOptions) -> cached Mask at that subpixel
-// offset -> composite_span row by row inside the clip.
+// offset -> Canvas::fill_mask at the glyph's pixel offset (the paint stage, inside the clip).
 // Any other transform: each glyph's outline is filled with Canvas::fill_path under
 // canvas transform x translate(origin + glyph position) x [s 0 0 -s].
 #include <cmath>
@@ -17,22 +17,6 @@ namespace {
 // Farthest glyph origin (device pixels) drawn through the cache; beyond it glyphs are off any
 // canvas anyway and integer arithmetic stays far from overflow.
 constexpr double kMaxCachedOrigin = 1e8;
-
-void composite_mask(Canvas& canvas, const Mask& m, long long ix, long long iy, const Paint& paint) {
-    if (m.bounds.empty()) return;
-    const IRect& clip = canvas.clip();
-    const long long x0 = std::max<long long>(m.bounds.x0 + ix, clip.x0);
-    const long long x1 = std::min<long long>(m.bounds.x1 + ix, clip.x1);
-    const long long y0 = std::max<long long>(m.bounds.y0 + iy, clip.y0);
-    const long long y1 = std::min<long long>(m.bounds.y1 + iy, clip.y1);
-    if (x0 >= x1 || y0 >= y1) return;
-    Pixmap& pm = canvas.target();
-    const long long w = m.bounds.width();
-    for (long long y = y0; y < y1; ++y) {
-        const std::uint8_t* cov = m.data.data() + (y - iy - m.bounds.y0) * w + (x0 - ix - m.bounds.x0);
-        composite_span(pm.row(static_cast<int>(y)) + 4 * x0, static_cast<int>(x1 - x0), cov, paint);
-    }
-}
 
 }  // namespace
 
@@ -64,19 +48,15 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
             const long long iy = (qy >= 0 ? qy : qy - (sy - 1)) / sy;
             const Point offset{static_cast<double>(qx - ix * sx) / sx, static_cast<double>(qy - iy * sy) / sy};
             const Mask& m = gc.mask(*layout.fonts[g.font], g.glyph, device_size, offset, canvas.rasterizer());
-            composite_mask(canvas, m, ix, iy, paint);
+            canvas.fill_mask(m, ix, iy, paint);
         }
         return;
     }
     if (!(options.tolerance >= 1e-4 && options.tolerance <= 10))
         throw Error(ErrorKind::InvalidArgument, "draw_text: tolerance must be in [1e-4, 10] px");
-    const double saved_tolerance = canvas.fill_options().tolerance;
-    canvas.fill_options().tolerance = options.tolerance;
-    struct Restore {
-        Canvas& c;
-        double t;
-        ~Restore() { c.fill_options().tolerance = t; }
-    } restore_tolerance{canvas, saved_tolerance};
+    FillOptions fill = canvas.fill_options();
+    fill.rule = FillRule::NonZero;
+    fill.tolerance = options.tolerance;
     for (const PositionedGlyph& g : layout.glyphs) {
         const Font& font = *layout.fonts[g.font];
         const Path& outline = gc.outline(font, g.glyph);
@@ -85,7 +65,7 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
         canvas.save();
         canvas.set_transform(M * Affine{s, 0, 0, -s, g.position.x, g.position.y});
         try {
-            canvas.fill_path(outline, paint, FillRule::NonZero);
+            canvas.fill_path(outline, paint, fill);
         } catch (...) {
             canvas.restore();
             throw;

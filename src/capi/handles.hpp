@@ -1,0 +1,96 @@
+// C API, internal: what the opaque handles of include/casteljau/casteljau.h hold, and the guard
+// that turns every C++ exception into a status and a thread-local message.
+#pragma once
+
+#include <cstring>
+#include <memory>
+#include <new>
+#include <string>
+
+#include "casteljau/canvas.hpp"
+#include "casteljau/casteljau.h"
+#include "casteljau/error.hpp"
+#include "casteljau/font.hpp"
+#include "casteljau/paint.hpp"
+#include "casteljau/path.hpp"
+#include "casteljau/stroke.hpp"
+
+struct casteljau_path {
+    casteljau::Path path;
+};
+struct casteljau_stroke {
+    casteljau::StrokeStyle style;
+};
+struct casteljau_paint {
+    casteljau::Paint paint;
+};
+struct casteljau_image {
+    casteljau::Pixmap pixmap;
+};
+struct casteljau_font {
+    casteljau::Font font;
+};
+struct casteljau_canvas {
+    std::unique_ptr<casteljau::Canvas> canvas;
+};
+
+namespace casteljau::capi {
+
+// Records `message` as this thread's last error and returns `status`.
+casteljau_status fail(casteljau_status status, const char* message) noexcept;
+casteljau_status status_of(ErrorKind kind) noexcept;
+
+// Runs `f`, mapping every exception to a status and the thread's last-error message.
+template <class F>
+casteljau_status guard(F&& f) noexcept {
+    try {
+        f();
+        return CASTELJAU_OK;
+    } catch (const Error& e) {
+        return fail(status_of(e.kind()), e.what());
+    } catch (const std::bad_alloc&) {
+        return fail(CASTELJAU_ERROR_OUT_OF_MEMORY, "out of memory");
+    } catch (const std::exception& e) {
+        return fail(CASTELJAU_ERROR_INTERNAL, e.what());
+    } catch (...) {
+        return fail(CASTELJAU_ERROR_INTERNAL, "unknown error");
+    }
+}
+
+// Throws Error(InvalidArgument) "NAME is NULL" for a null pointer; returns the pointer.
+template <class T>
+T* need(T* p, const char* name) {
+    if (!p) throw Error(ErrorKind::InvalidArgument, std::string(name) + " is NULL");
+    return p;
+}
+
+// A matrix from the C struct (NULL: identity).
+inline Affine affine(const casteljau_matrix* m) { return m ? Affine{m->a, m->b, m->c, m->d, m->e, m->f} : Affine{}; }
+
+// The value a C caller passed for an enum parameter, read as the int it is without an enum-typed
+// load: C allows any int there, while in C++ a value outside the enumerators' range is undefined.
+template <class E>
+int raw_enum(const E& e) {
+    static_assert(sizeof(E) == sizeof(int), "C enums are int-sized here");
+    int v;
+    std::memcpy(&v, &e, sizeof v);
+    return v;
+}
+
+// The C enums as C++ ones; throw Error(InvalidArgument) for a value outside the enum.
+ImageSampling sampling_of(int s);
+BlendMode blend_of(int m);
+
+inline Color color(casteljau_color c) { return Color::rgba(c.r, c.g, c.b, c.a); }
+
+// Creates a T into *out (checked non-null, set to NULL first) from a callable returning a T.
+template <class T, class Make>
+casteljau_status create(T** out, Make&& make) noexcept {
+    if (out) *out = nullptr;
+    return guard([&] {
+        need(out, "out");
+        *out = new T{make()};
+    });
+}
+
+}  // namespace casteljau::capi

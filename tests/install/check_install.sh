@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# The installed package as users meet it: `cmake --install` into a temporary prefix, then, from
+# outside the source tree, the C++ scene with find_package(casteljau CONFIG), the C scene with
+# pkg-config, and the Python scene with the ctypes binding installed by pip; their PNGs are
+# compared with golden/install_scene.png (tests/install/png_check.py: sampled pixels against the
+# scene's geometry, then pixel for pixel). Also: the shared library's SONAME and its exported
+# symbols (only casteljau_* and the C++ API of namespace casteljau), the CLI and the fonts.
+# Usage: check_install.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build=$(cd "$1" && pwd)
+src=$(cd "$2" && pwd)
+work=$(mktemp -d "${TMPDIR:-/tmp}/casteljau-install.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+prefix=$work/prefix
+fail() { echo "check_install: FAIL: $*" >&2; exit 1; }
+
+cmake --install "$build" --prefix "$prefix" > "$work/install.log" || { cat "$work/install.log"; fail "cmake --install"; }
+libdir=$(dirname "$(find "$prefix" -name 'libcasteljau.so.0' | head -1)")
+[ -n "$libdir" ] && [ -f "$libdir/libcasteljau.a" ] || fail "libcasteljau.so.0 and libcasteljau.a not installed side by side"
+[ -f "$prefix/include/casteljau/casteljau.h" ] && [ -f "$prefix/include/casteljau/canvas.hpp" ] || fail "headers"
+[ -f "$libdir/pkgconfig/casteljau.pc" ] || fail "casteljau.pc"
+[ -f "$libdir/cmake/casteljau/casteljauConfig.cmake" ] || fail "CMake package"
+font=$prefix/share/casteljau/fonts/DejaVuSans.ttf
+[ -f "$font" ] || fail "fonts not installed in share/casteljau/fonts"
+"$prefix/bin/casteljau" --help > /dev/null || fail "installed CLI does not run"
+
+# The shared library: its SONAME carries the major version, and it exports nothing but the API.
+readelf -d "$libdir/libcasteljau.so.0" | grep -q 'SONAME.*libcasteljau\.so\.0' || fail "SONAME is not libcasteljau.so.0"
+nm -D --defined-only "$libdir/libcasteljau.so.0" | awk '{print $3}' | c++filt > "$work/symbols.txt"
+grep -q '^casteljau_canvas_fill_path$' "$work/symbols.txt" || fail "C API not exported"
+grep -q '^casteljau::Canvas::fill_path' "$work/symbols.txt" || fail "C++ API not exported"
+if grep -v -E '^(casteljau_|casteljau::|typeinfo for casteljau::|typeinfo name for casteljau::|vtable for casteljau::|non-virtual thunk to casteljau::)' \
+     "$work/symbols.txt" > "$work/foreign.txt"; then
+  head -20 "$work/foreign.txt" >&2
+  fail "the shared library exports $(wc -l < "$work/foreign.txt") symbols outside the API"
+fi
+
+# C++ with find_package.
+cmake -S "$src/tests/install/cxx" -B "$work/cxx" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_BUILD_RPATH="$libdir" > "$work/cxx.log" 2>&1 || { cat "$work/cxx.log"; fail "configure the C++ consumer"; }
+cmake --build "$work/cxx" >> "$work/cxx.log" 2>&1 || { cat "$work/cxx.log"; fail "build the C++ consumer"; }
+"$work/cxx/scene" "$work/scene_cxx.png" "$font" || fail "C++ scene"
+
+# C with pkg-config.
+export PKG_CONFIG_PATH=$libdir/pkgconfig
+cc -std=c99 -Wall -Wextra -Wpedantic -Werror "$src/examples/c/scene.c" $(pkg-config --cflags --libs casteljau) \
+  -Wl,-rpath,"$libdir" -o "$work/scene_c" || fail "build the C scene with pkg-config"
+"$work/scene_c" "$work/scene_c.png" "$font" > /dev/null || fail "C scene"
+
+# Python: the binding installed with pip (no index: nothing is downloaded; python/ builds its own wheel).
+pydir=$work/python
+if python3 -m pip install --quiet --no-index --no-deps --target "$pydir" "$src/python" \
+     > "$work/pip.log" 2>&1; then
+  echo "check_install: python binding installed with pip"
+else
+  cat "$work/pip.log" >&2
+  fail "pip install of python/"
+fi
+(cd "$work" && PYTHONPATH="$pydir" CASTELJAU_LIBRARY="$libdir/libcasteljau.so.0" \
+   python3 "$src/examples/python/scene.py" "$work/scene_py.png" "$font") || fail "Python scene"
+(cd "$work" && PYTHONPATH="$pydir" CASTELJAU_LIBRARY="$libdir/libcasteljau.so.0" python3 - <<'PY') || fail "Python binding checks"
+import casteljau as cj
+c = cj.Canvas(4, 2)
+c.clear((10, 20, 30))
+v = c.pixels()
+assert v.nbytes == 4 * 4 * 2 and bytes(v[0:4]) == bytes((10, 20, 30, 255)), bytes(v[0:4])
+v[0] = 99  # a view, not a copy
+assert bytes(c.pixels()[0:1]) == bytes((99,))
+try:
+    cj.Path("M 1 2 L")
+    raise SystemExit("bad path data did not raise")
+except cj.Error as e:
+    assert e.status == 2 and str(e), (e.status, str(e))
+try:
+    cj.Font("/nonexistent/font.ttf")
+    raise SystemExit("a missing font did not raise")
+except cj.Error as e:
+    assert "nonexistent" in str(e)
+assert cj.version() == "0.1.0"
+try:
+    import numpy
+except ImportError:
+    print("check_install: numpy absent, the array view is not checked")
+else:
+    a = c.array()
+    assert a.shape == (2, 4, 4) and a.dtype == numpy.uint8
+    a[1, 3] = (1, 2, 3, 4)  # a view of the canvas pixels, not a copy
+    assert bytes(c.pixels()[c.stride + 12:c.stride + 16]) == bytes((1, 2, 3, 4))
+    print("check_install: numpy array view checked")
+print("check_install: python binding checks passed")
+PY
+
+python3 "$src/tests/install/png_check.py" "$src/golden/install_scene.png" \
+  "$work/scene_cxx.png" "$work/scene_c.png" "$work/scene_py.png" || fail "scene PNGs"
+echo "check_install: OK"
