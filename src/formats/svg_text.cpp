@@ -499,7 +499,9 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                 if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
             }
             t = t * Affine::scale(g.scale_x, 1);
-            if (!t.is_finite()) continue;  // spacing or positions beyond double range: not drawn
+            // Spacing or positions beyond double range, or so far out (past limits::kMaxCoordinate
+            // user units) that no canvas shows them and the rasterizer refuses them: not drawn.
+            if (!t.is_finite() || std::max(std::fabs(t.e), std::fabs(t.f)) > limits::kMaxCoordinate) continue;
             if (box && g.font) {
                 // The cluster's cell: its advance by the font's ascender to descender.
                 const FontMetrics& m = g.font->metrics();
