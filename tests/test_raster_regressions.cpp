@@ -140,3 +140,17 @@ TEST_CASE("regression: a quadratic from DBL_MAX overflowing to NaN is refused, n
     const Mask none = r.fill_mask(far, Affine{}, FillOptions{}, IRect{0, 0, 16, 16});
     CHECK(std::all_of(none.data.begin(), none.data.end(), [](std::uint8_t c) { return c == 0; }));
 }
+
+TEST_CASE("regression: a conic whose flattening overflows to NaN is refused, not walked", "[raster][regression]") {
+    // Found by fuzz_raster: finite control points and a finite weight (DBL_MAX) passed every
+    // check, but the conic's flattened points came out NaN and the cell walk indexed out of range.
+    Path p;
+    p.move_to(0, 0).conic_to({100, 100}, {10, 10}, 1.7976931348623157e308).close();
+    Rasterizer r;
+    try {
+        (void)r.fill_mask(p, Affine{}, FillOptions{}, IRect{0, 0, 128, 128});
+        FAIL("expected an error");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::InvalidData);
+    }
+}

@@ -10,7 +10,9 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 
+#include "casteljau/error.hpp"
 #include "casteljau/geometry.hpp"
 #include "path/flatten_internal.hpp"
 
@@ -70,10 +72,12 @@ struct EdgeSink {
 
     void begin(Point p) {
         end();
+        check(p);
         start = cur = p;
         open = true;
     }
     [[gnu::always_inline]] inline void point(Point p) {
+        check(p);
         if constexpr (kClip) add_clipped(cur, p);
         else push(cur.x, cur.y, p.x, p.y);
         cur = p;
@@ -89,6 +93,14 @@ struct EdgeSink {
     [[gnu::always_inline]] inline void push(double x0, double y0, double x1, double y1) { out.push(x0, y0, x1, y1); }
 
     void add_clipped(Point p, Point q) { clip_edge(W, H, p, q, out); }
+
+    // The control points were checked before flattening, but a conic with an extreme weight can
+    // still put a flattened point at NaN or far beyond them; the walk must never see one.
+    [[gnu::always_inline]] static inline void check(Point p) {
+        constexpr double kFar = 4 * limits::kMaxCoordinate;
+        if (!(std::fabs(p.x) <= kFar && std::fabs(p.y) <= kFar)) [[unlikely]]
+            throw Error(ErrorKind::InvalidData, "flattening produced a non-finite or out-of-range point (a conic weight out of range?)");
+    }
 };
 
 // Flattens `path` mapped by `local` (path -> the box's cell coordinates) into `out`. `inside`: the
