@@ -52,7 +52,7 @@
 namespace casteljau {
 
 namespace limits {
-inline constexpr std::size_t kMaxDashes = 1u << 22;  // dashes produced from one path
+inline constexpr std::size_t kMaxDashes = 1u << 18;  // dashes produced from one path (each is stroked and filled)
 }  // namespace limits
 
 enum class LineCap { Butt, Round, Square };
