@@ -228,6 +228,31 @@ TEST_CASE("accuracy: a polygon with many vertices inside one pixel", "[accuracy]
     WARN("many vertices: " << worst.text());
 }
 
+// A shape piling hundreds of crossing pieces into each of dozens of pixels (a scribble, or the
+// stroke of a long zig-zag with round joins) would cost the exact method time quadratic in its
+// size; the fill's exact-work budget bounds it in proportion to the fill (exact_cell.cpp) and the
+// cells past it are integrated line by line, still within 1/32 of a pixel of the exact area.
+TEST_CASE("accuracy: thousands of pieces over many pixels stay within the fill's exact-work budget", "[accuracy]") {
+    Rasterizer r;
+    std::mt19937 rng(12);
+    const Contour pile = random_polygon(rng, {2.05, 2.1, 7.9, 7.95}, 1500);
+    const IRect clip{0, 0, 10, 10};
+    for (FillRule rule : kRules) {
+        FillOptions o;
+        o.rule = rule;
+        const Rendered out = render(r, ref::to_path({pile}), Affine::identity(), o, clip);
+        const RasterStats st = r.last_stats();
+        INFO("exact cells " << st.exact_cells << ", dense " << st.dense_cells << ", work " << st.exact_work);
+        CHECK(st.dense_cells > 0);
+        // The budget: 5e7 plus 2000 per segment, then at most 16 lines of 2 visits per piece in each
+        // cell past it (a few thousand pieces per cell here).
+        CHECK(st.exact_work <= 5e7 + 2000.0 * static_cast<double>(st.segments) + 36 * 2 * 16 * 1500.0);
+        const Comparison c = compare(out, ref::slab_area({pile}, rule, clip));
+        INFO(c.text());
+        CHECK(c.max_err <= 255.0 / 32);
+    }
+}
+
 TEST_CASE("accuracy: polygons under rotation, scale and skew transforms", "[accuracy]") {
     Rasterizer r;
     Worst worst;

@@ -79,6 +79,11 @@ struct Mask {
 struct RasterStats {
     std::size_t segments = 0;        // line segments accumulated
     std::size_t exact_cells = 0;     // cells recomputed exactly
+    // Of those, cells where the exact method would cost too much (thousands of pieces crossing in
+    // one pixel, or the fill's exact-work budget spent) and lines through the cell were integrated
+    // instead: within 1/2048 of a pixel, 1/32 at worst. Real glyphs and maps have none.
+    std::size_t dense_cells = 0;
+    double exact_work = 0;           // piece visits the exact cells cost (bounded by the fill's size)
     std::size_t strips = 0;          // dense buffers run: 1, or the bands of a large shape
     Topology topology = Topology::Unknown;  // the verdict the fill used (Unknown: exact_overlaps off)
 };

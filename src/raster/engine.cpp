@@ -42,6 +42,13 @@ namespace casteljau::raster {
 
 namespace {
 
+// The exact cells of one fill share a work budget (exact_cell.cpp): enough for any real shape to be
+// exact everywhere (a glyph's or a map's exact cells use a small part of it), and growing with the
+// fill's size so that only shapes piling thousands of pieces into many pixels fall back to the
+// dense method.
+constexpr double kExactWorkBase = 5e7;
+constexpr double kExactWorkPerSegment = 2000;
+
 inline bool monotone(std::uint8_t d) { return (d & 3) != 3 || (d & 12) != 12; }
 
 // Position of a point on the boundary of the unit cell (local coordinates) as a parameter in
@@ -367,6 +374,9 @@ void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
     std::size_t row_base = 0;
     double prefix = 0;
     int pos = 0;
+    scratch_.budget = kExactWorkBase + kExactWorkPerSegment * static_cast<double>(count_);
+    scratch_.work = 0;
+    scratch_.dense_cells = 0;
     for (std::size_t ei = 0; ei < exact_.size(); ++ei) {
         const std::size_t cell = exact_[ei];
         const int r = static_cast<int>(cell / stride_);
@@ -383,6 +393,8 @@ void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
         ids.assign(exact_ids_.begin() + exact_at_[ei], exact_ids_.begin() + exact_at_[ei + 1]);
         patches_.push_back({exact_[ei], exact_cell_u8(segs_.data(), ids, col, r, prefix, rule, scratch_)});
     }
+    stats.exact_work += scratch_.work;
+    stats.dense_cells += scratch_.dense_cells;
     // Then every row in one call (one dispatch per shape, not per row).
     const ScanRows rows{acc_.data(), cov_.data(), blocks_.data(), static_cast<int>(words_), w_, h_, static_cast<int>(stride_),
                         rule, patches_.data(), patches_.size(), ox, oy};

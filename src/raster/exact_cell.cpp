@@ -79,15 +79,22 @@ constexpr double kRef[4][2] = {{0.5012345, 0.4987654}, {0.3141593, 0.7182818}, {
                                {0.1414214, 0.8660254}};
 
 // For pathological pixels the slab decomposition (up to cubic in the pieces) gives way to
-// kDenseRows horizontal lines through the cell, each integrated exactly in x: the result is then
-// within about 1/(2 kDenseRows) of the pixel instead of exact, on such pixels only.
-// The switch happens when slabs x pieces (the work of the exact method) would pass kMaxSlabWork
-// (equal break points are merged first: stacked copies of one shape make few distinct slabs), or
-// straight away beyond kMaxExactPieces pieces, where even finding the crossings costs too much.
-// A 500-segment scribble inside one pixel (62,000 crossings) is still computed exactly.
+// horizontal lines through the cell, each integrated exactly in x (the dense method): the result is
+// then within 1/(2 lines) of the pixel instead of exact, on such pixels only. The switch happens
+// when slabs x pieces (the work of the exact method) would pass kMaxSlabWork (equal break points
+// are merged first: stacked copies of one shape make few distinct slabs), or straight away beyond
+// kMaxExactPieces pieces, where even finding the crossings costs too much. A 500-segment scribble
+// inside one pixel (62,000 crossings) is still computed exactly.
+//
+// Each fill also has a work budget for all its exact cells together (ExactScratch::budget, set by
+// the engine from the fill's segment count), so that a shape made of thousands of pieces stacked
+// in many pixels costs time in proportion to its size, not to the square of it: once the budget is
+// spent, cells take the dense method with kDenseRows lines shrinking to kMinDenseRows (within
+// 1/32 of a pixel).
 constexpr std::size_t kMaxExactPieces = 4096;
 constexpr double kMaxSlabWork = 6e7;
 constexpr int kDenseRows = 1024;
+constexpr int kMinDenseRows = 16;
 
 }  // namespace
 
@@ -140,7 +147,11 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         return l;
     };
 
-    bool dense = n > kMaxExactPieces;
+    // Work is counted in piece visits: the pairwise crossing search visits n^2 / 2 pairs, a slab or
+    // a dense line visits its active pieces and, through winding_offset, every piece once more.
+    const double nd = static_cast<double>(n);
+    const double pair_work = 0.5 * nd * nd;
+    bool dense = n > kMaxExactPieces || pair_work > sc.budget;
     if (!dense) {
         // Pairwise crossings of the pieces cut the slabs too.
         for (std::size_t i = 0; i < n && !dense; ++i) {
@@ -155,24 +166,74 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
                 const double y = (b.xa - a.xa + a.ya * ka - b.ya * kb) / (ka - kb);
                 if (y > lo && y < hi) sc.breaks.push_back(y);
             }
-            if (static_cast<double>(sc.breaks.size()) * static_cast<double>(n) > 4 * kMaxSlabWork) dense = true;
+            if (static_cast<double>(sc.breaks.size()) * nd > 4 * kMaxSlabWork) dense = true;
         }
+        sc.budget -= pair_work;
+        sc.work += pair_work;
         std::sort(sc.breaks.begin(), sc.breaks.end());
         sc.breaks.erase(std::unique(sc.breaks.begin(), sc.breaks.end()), sc.breaks.end());
-        if (static_cast<double>(sc.breaks.size()) * static_cast<double>(n) > kMaxSlabWork) dense = true;
+        const double slab_work = 2 * static_cast<double>(sc.breaks.size()) * nd;
+        if (slab_work > 2 * kMaxSlabWork || slab_work > sc.budget) dense = true;
+        else {
+            sc.budget -= slab_work;
+            sc.work += slab_work;
+        }
     }
-    double sum_l = 0;
+    int lines = kDenseRows;
     if (dense) {
-        for (int k = 0; k < kDenseRows; ++k) {
-            const double ym = ry + (k + 0.5) / kDenseRows;
-            sc.active.clear();
-            for (const auto& p : sc.inside) {
-                if (!(p.ya <= ym && ym < p.yb)) continue;
-                const double x = std::clamp(p.xa + (ym - p.ya) * (p.xb - p.xa) / (p.yb - p.ya), cx, cr);
-                sc.active.push_back({x, x, x, p.dir});
+        lines = static_cast<int>(std::clamp(sc.budget / (2 * nd + 1), double{kMinDenseRows}, double{kDenseRows}));
+        sc.budget -= 2 * nd * lines;
+        sc.work += 2 * nd * lines;
+        ++sc.dense_cells;
+    }
+    sc.budget = std::max(sc.budget, 0.0);
+    double sum_l = 0;
+    // Both methods below go down the cell with an active list in x order: pieces enter in order of
+    // their top end and leave past their bottom end, and an insertion sort restores the x order
+    // from the previous line's, so a line costs its active pieces plus the swaps of the pieces that
+    // crossed since the line above, not a full sort.
+    auto& order = sc.order;
+    order.resize(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
+    std::sort(order.begin(), order.end(),
+              [&](std::uint32_t u, std::uint32_t v) { return sc.inside[u].ya < sc.inside[v].ya; });
+    auto& live = sc.live;
+    live.clear();
+    std::size_t next = 0;
+    // Makes `live` the pieces with ya < y < yb (ya <= y when `from_top`), y increasing call to call.
+    auto advance = [&](double y, bool from_top) {
+        std::size_t kept = 0;
+        for (const std::uint32_t i : live)
+            if (y < sc.inside[i].yb) live[kept++] = i;
+        live.resize(kept);
+        for (; next < n && (sc.inside[order[next]].ya < y || (from_top && sc.inside[order[next]].ya == y)); ++next)
+            if (y < sc.inside[order[next]].yb) live.push_back(order[next]);
+    };
+    // Sorts sc.active (filled in `live` order) by xm, carrying `live` along.
+    auto sort_active = [&] {
+        for (std::size_t a = 1; a < live.size(); ++a) {
+            const ExactScratch::Cross c = sc.active[a];
+            const std::uint32_t id = live[a];
+            std::size_t b = a;
+            for (; b > 0 && sc.active[b - 1].xm > c.xm; --b) {
+                sc.active[b] = sc.active[b - 1];
+                live[b] = live[b - 1];
             }
-            std::sort(sc.active.begin(), sc.active.end(),
-                      [](const ExactScratch::Cross& u, const ExactScratch::Cross& v) { return u.xm < v.xm; });
+            sc.active[b] = c;
+            live[b] = id;
+        }
+    };
+    if (dense) {
+        for (int k = 0; k < lines; ++k) {
+            const double ym = ry + (k + 0.5) / lines;
+            advance(ym, true);
+            sc.active.resize(live.size());
+            for (std::size_t a = 0; a < live.size(); ++a) {
+                const auto& p = sc.inside[live[a]];
+                const double x = std::clamp(p.xa + (ym - p.ya) * (p.xb - p.xa) / (p.yb - p.ya), cx, cr);
+                sc.active[a] = {x, x, x, p.dir};
+            }
+            sort_active();
             double px = cx;
             int l = 0;
             bool known = false;
@@ -184,7 +245,7 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
                         l = winding_offset(0.5 * (px + nx), ym);
                         known = true;
                     }
-                    const double area = (nx - px) / kDenseRows;
+                    const double area = (nx - px) / lines;
                     sc.regions.push_back({l, area});
                     sum_l += l * area;
                 }
@@ -197,15 +258,15 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         const double y0 = std::max(sc.breaks[bi], ry), y1 = std::min(sc.breaks[bi + 1], rb);
         if (!(y1 > y0)) continue;
         const double ym = 0.5 * (y0 + y1), h = y1 - y0;
-        sc.active.clear();
-        for (const auto& p : sc.inside) {
-            if (!(p.ya < ym && ym < p.yb)) continue;
+        advance(ym, false);
+        sc.active.resize(live.size());
+        for (std::size_t a = 0; a < live.size(); ++a) {
+            const auto& p = sc.inside[live[a]];
             const double k = (p.xb - p.xa) / (p.yb - p.ya);
-            sc.active.push_back({std::clamp(p.xa + (y0 - p.ya) * k, cx, cr), std::clamp(p.xa + (y1 - p.ya) * k, cx, cr),
-                                 std::clamp(p.xa + (ym - p.ya) * k, cx, cr), p.dir});
+            sc.active[a] = {std::clamp(p.xa + (y0 - p.ya) * k, cx, cr), std::clamp(p.xa + (y1 - p.ya) * k, cx, cr),
+                            std::clamp(p.xa + (ym - p.ya) * k, cx, cr), p.dir};
         }
-        std::sort(sc.active.begin(), sc.active.end(),
-                  [](const ExactScratch::Cross& u, const ExactScratch::Cross& v) { return u.xm < v.xm; });
+        sort_active();
         // The leftmost region's offset by crossings from r; moving right across a piece changes
         // w by the piece's direction (down: +1), the accumulation's own convention.
         double px0 = cx, px1 = cx, pxm = cx;

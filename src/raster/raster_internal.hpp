@@ -40,6 +40,12 @@ struct ExactScratch {
     std::vector<Cross> active;
     struct Region { int b; double area; };
     std::vector<Region> regions;
+    std::vector<std::uint32_t> order, live;  // the pieces by top end, and the active ones
+    // Work left for the exact cells of the current fill, in piece visits (see exact_cell.cpp);
+    // the engine sets it before each fill's exact cells.
+    double budget = 0;
+    double work = 0;              // piece visits spent, for RasterStats
+    std::size_t dense_cells = 0;  // cells given the dense method
 };
 
 // Exact coverage in [0, 1] of cell [cx, cx + 1] x [ry, ry + 1] under `rule`. `ids` lists every edge

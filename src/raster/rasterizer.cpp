@@ -195,6 +195,8 @@ void Rasterizer::Impl::run_bands(const FillOptions& opts, bool exact, int ox, in
         RasterStats part;
         engine.finish(opts.rule, ox, oy + y0, sink, part);
         stats.exact_cells += part.exact_cells;
+        stats.dense_cells += part.dense_cells;
+        stats.exact_work += part.exact_work;
         ++stats.strips;
     }
 }
