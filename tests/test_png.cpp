@@ -601,6 +601,19 @@ TEST_CASE("decode_png: randomly corrupted files never crash", "[png]") {
     CHECK(failures + decoded == 800);
 }
 
+TEST_CASE("decode_png: a chunk declaring more data than the file holds is refused before libpng allocates it", "[png]") {
+    // libpng allocates an ancillary chunk at its declared length before reading it: a text chunk
+    // declaring 2 GB in a small file (found by fuzz_image) must fail on the length, up front.
+    const auto good = encode_png(random_premultiplied(4, 4, 9));
+    std::vector<std::uint8_t> bad(good.begin(), good.begin() + 33);  // signature and IHDR
+    const std::uint8_t text[] = {0x74, 0xff, 0x00, 0x19, 't', 'E', 'X', 't', 'S', 'o', 'f', 't'};
+    bad.insert(bad.end(), std::begin(text), std::end(text));
+    bad.insert(bad.end(), good.begin() + 33, good.end());
+    std::string msg;
+    CHECK(decode_error_kind(bad, &msg) == ErrorKind::InvalidData);
+    CHECK_THAT(msg, Catch::Contains("chunk 'tEXt' at byte 33 declares 1962868761 bytes"));
+}
+
 TEST_CASE("decode_png: a declared size beyond the limits is rejected before allocating", "[png]") {
     // Hand-made headers (signature, IHDR, IEND; no image data): the size check must come first,
     // or these would be reported as missing data, or try to allocate 40 GB.
@@ -613,6 +626,10 @@ TEST_CASE("decode_png: a declared size beyond the limits is rejected before allo
     // At the limits the header is accepted and decoding fails later, on the missing data.
     CHECK(decode_error_kind(png_test::header_only_png(32768, 1), &msg) == ErrorKind::InvalidData);
     CHECK(decode_error_kind(png_test::header_only_png(1, 32768), &msg) == ErrorKind::InvalidData);
+    // ... and before the image is allocated: deflate expands at most 1032:1, so the 9 bytes of
+    // image data these headers carry cannot hold 32768 rows (fuzz_image: small files declaring
+    // 2^28 pixels each cost a 1 GiB allocation).
+    CHECK_THAT(msg, Catch::Contains("1x32768 pixels need at least 159 bytes of compressed data, the file has 9"));
     // A zero or out-of-range (>= 2^31) size is invalid data, not a limit.
     CHECK(decode_error_kind(png_test::header_only_png(0, 5), &msg) == ErrorKind::InvalidData);
     CHECK(decode_error_kind(png_test::header_only_png(0x80000000u, 5), &msg) == ErrorKind::InvalidData);

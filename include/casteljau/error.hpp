@@ -5,6 +5,8 @@
 // they start. Thread-safety: plain value type.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -37,6 +39,8 @@ inline constexpr std::size_t kMaxFlattenedSegments = 1u << 23;  // line segments
 inline constexpr int kMaxFlattenDepth = 16;                  // subdivision depth per curve
 inline constexpr int kMaxNestingDepth = 64;                  // SVG element / group nesting
 inline constexpr double kMaxCoordinate = 1e15;               // |coordinate| after transform
+inline constexpr std::size_t kMaxPngChunkBytes = 16u << 20;  // one PNG chunk's data (text, ICC, Exif)
+inline constexpr std::uint32_t kMaxPngAncillaryChunks = 1000;  // text, sPLT and unknown chunks kept per PNG
 }  // namespace limits
 
 }  // namespace casteljau

@@ -20,12 +20,14 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <csetjmp>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <new>
 #include <string>
+#include <string_view>
 
 #include "casteljau/error.hpp"
 
@@ -301,10 +303,44 @@ std::vector<std::uint8_t> encode_png(const Pixmap& pixmap, const PngEncodeOption
     return out;
 }
 
+namespace {
+
+// libpng allocates an ancillary chunk's buffer at its declared length before reading the data, so
+// a 3 KB file declaring a 2 GB text chunk would have it allocate 2 GB. The whole file is in memory
+// here: walk the chunk headers first and refuse any chunk longer than what is left of the file.
+// Returns the total length of the IDAT chunks.
+std::uint64_t check_chunk_lengths(std::span<const std::uint8_t> bytes) {
+    std::size_t at = 8;
+    std::uint64_t idat = 0;
+    while (at <= bytes.size() && bytes.size() - at >= 8) {
+        const std::uint32_t length = (std::uint32_t{bytes[at]} << 24) | (std::uint32_t{bytes[at + 1]} << 16) |
+                                     (std::uint32_t{bytes[at + 2]} << 8) | std::uint32_t{bytes[at + 3]};
+        const char type[5] = {static_cast<char>(bytes[at + 4]), static_cast<char>(bytes[at + 5]),
+                              static_cast<char>(bytes[at + 6]), static_cast<char>(bytes[at + 7]), 0};
+        const std::size_t left = bytes.size() - at - 8;
+        if (length > left) {
+            bool printable = true;
+            for (int i = 0; i < 4; ++i) printable = printable && type[i] >= 0x21 && type[i] <= 0x7e;
+            throw Error(ErrorKind::InvalidData, "invalid PNG: chunk " +
+                                                    (printable ? "'" + std::string(type) + "'" : std::string("of unknown type")) +
+                                                    " at byte " + std::to_string(at) + " declares " + std::to_string(length) +
+                                                    " bytes but the file has " + std::to_string(left) +
+                                                    " left (truncated or corrupt)");
+        }
+        if (std::string_view(type, 4) == "IDAT") idat += length;
+        at += 12 + static_cast<std::size_t>(length);
+        if (std::string_view(type, 4) == "IEND") break;
+    }
+    return idat;
+}
+
+}  // namespace
+
 Pixmap decode_png(std::span<const std::uint8_t> bytes) {
     if (bytes.empty()) throw Error(ErrorKind::InvalidData, "not a PNG: the data is empty");
     if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0)
         throw Error(ErrorKind::InvalidData, "not a PNG: the PNG signature is missing");
+    const std::uint64_t idat_bytes = check_chunk_lengths(bytes);
     ReadState state;
     state.data = bytes.data();
     state.size = bytes.size();
@@ -317,6 +353,10 @@ Pixmap decode_png(std::span<const std::uint8_t> bytes) {
     // Our own limits apply (below, as Error(Limit)); lift libpng's default 1e6-pixel side limit so
     // that every oversized header is reported the same way.
     png_set_user_limits(h.png, PNG_UINT_31_MAX, PNG_UINT_31_MAX);
+    // Compressed ancillary chunks (zTXt, iTXt, iCCP) inflate into buffers of their own: cap any
+    // one chunk's buffer, and the number of ancillary chunks kept, at limits far above real files'.
+    png_set_chunk_malloc_max(h.png, limits::kMaxPngChunkBytes);
+    png_set_chunk_cache_max(h.png, limits::kMaxPngAncillaryChunks);
 
     png_uint_32 width = 0, height = 0;
     if (!png_read_header(h.png, h.info, &width, &height))
@@ -329,6 +369,18 @@ Pixmap decode_png(std::span<const std::uint8_t> bytes) {
                                           std::to_string(limits::kMaxCanvasDimension) + " pixels per side, " +
                                           std::to_string(limits::kMaxCanvasPixels) + " pixels in all)");
     if (width < 1 || height < 1) throw Error(ErrorKind::InvalidData, "invalid PNG: zero width or height");
+    // Deflate expands at most 1032:1, so image data shorter than the filtered rows / 1032 cannot
+    // hold the image: a header with the data missing or cut. Refuse it before allocating the image.
+    {
+        const int bits = png_get_bit_depth(h.png, h.info) * png_get_channels(h.png, h.info);
+        const double row_bytes = std::ceil(static_cast<double>(width) * bits / 8) + 1;  // + filter byte
+        const double needed = std::ceil(row_bytes * height / 1032);
+        if (static_cast<double>(idat_bytes) < needed)
+            throw Error(ErrorKind::InvalidData, "invalid PNG: " + std::to_string(width) + "x" + std::to_string(height) +
+                                                    " pixels need at least " + std::to_string(static_cast<long long>(needed)) +
+                                                    " bytes of compressed data, the file has " +
+                                                    std::to_string(idat_bytes) + " (truncated, or a corrupt size)");
+    }
 
     Pixmap pixmap(static_cast<int>(width), static_cast<int>(height));
     std::vector<png_bytep> rows(height);
