@@ -7,6 +7,7 @@
 #include <jpeglib.h>
 
 #include <algorithm>
+#include <cmath>
 #include <csetjmp>
 #include <cstring>
 #include <optional>
@@ -112,6 +113,24 @@ Pixmap decode_jpeg(std::span<const std::uint8_t> bytes) {
         throw Error(ErrorKind::InvalidData, std::string("corrupt JPEG: ") + err.message);
     }
     const double w = cinfo.output_width, h = cinfo.output_height;
+    // Huffman coding spends at least one bit on each 8x8 block of a component (its DC difference),
+    // so a file shorter than its largest component's blocks / 8 bytes cannot hold its image: it is
+    // a header with (most of) the data missing, which libjpeg would pad out to any declared size.
+    // Refuse it before allocating the image. (Arithmetic coding can go below a bit per block; no
+    // browser decodes it, and such files are held to the same bound.)
+    double blocks = 0;
+    for (int c = 0; c < cinfo.num_components; ++c)
+        blocks = std::max(blocks, static_cast<double>(cinfo.comp_info[c].width_in_blocks) *
+                                      static_cast<double>(cinfo.comp_info[c].height_in_blocks));
+    if (blocks > 8.0 * static_cast<double>(bytes.size())) {
+        const std::string msg = "corrupt JPEG: " + std::to_string(cinfo.image_width) + "x" +
+                                std::to_string(cinfo.image_height) + " pixels need at least " +
+                                std::to_string(static_cast<long long>(std::ceil(blocks / 8))) +
+                                " bytes of coded data, the file has " + std::to_string(bytes.size()) +
+                                " (truncated, or a corrupt size)";
+        jpeg_destroy_decompress(&cinfo);
+        throw Error(ErrorKind::InvalidData, msg);
+    }
     std::optional<Pixmap> pm;
     std::vector<std::uint8_t> row;
     try {
