@@ -22,8 +22,6 @@ namespace casteljau::svg_text {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 struct Glyph {
     const Font* font = nullptr;
     std::uint32_t id = 0;
