@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <thread>
 
 #include "casteljau/error.hpp"
+#include "casteljau/map.hpp"
 #include "casteljau/tiles.hpp"
 #include "cli/cli.hpp"
 
@@ -110,7 +110,7 @@ void register_tiles(CLI::App& app) {
         to.buffer = o->buffer * o->scale;
         to.skip_empty = o->skip_empty;
         to.resume = o->resume;
-        to.threads = o->threads > 0 ? o->threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+        to.threads = o->threads > 0 ? o->threads : map_threads(0);
         to.seamless = !o->style.separate;
         to.tolerance = o->style.tolerance;
         to.exact_overlaps = !o->style.no_exact;

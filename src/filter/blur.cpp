@@ -10,12 +10,11 @@
 // are blurred by all hardware threads, each taking a band of rows (then of columns).
 #include <algorithm>
 #include <cmath>
-#include <exception>
-#include <thread>
 #include <utility>
 #include <vector>
 
 #include "filter/image.hpp"
+#include "parallel/for_each_index.hpp"
 
 namespace casteljau::filter::detail {
 
@@ -156,44 +155,20 @@ void blur_line(const float* line, std::size_t stride, float* out, std::size_t ou
 
 namespace {
 
-// Runs body(first, last, a, b) over [0, n) lines, split among the hardware threads when the
-// image is large (each thread with its own scratch lines a and b). An exception in a worker
-// (std::bad_alloc of its scratch lines) is rethrown in the caller after every worker joined.
+// Runs body(first, last, a, b) over [0, n) lines, split into one contiguous run of lines per
+// hardware thread when the image is large (each worker with its own scratch lines a and b).
 template <class F>
 void for_lines(int n, std::size_t pixels, F&& body) {
     constexpr std::size_t kThreadedPixels = std::size_t{1} << 18;
-    const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-    const int threads = pixels < kThreadedPixels ? 1 : static_cast<int>(std::min<unsigned>(hw, 16));
-    if (threads <= 1 || n < 2 * threads) {
-        std::vector<float> a, b;
-        body(0, n, a, b);
-        return;
-    }
-    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
-    std::vector<std::thread> pool;
-    pool.reserve(static_cast<std::size_t>(threads - 1));
-    const int chunk = (n + threads - 1) / threads;
-    for (int t = 1; t < threads; ++t) {
-        const int first = t * chunk, last = std::min(n, first + chunk);
-        if (first >= last) break;
-        pool.emplace_back([&body, &errors, t, first, last] {
-            try {
-                std::vector<float> a, b;
-                body(first, last, a, b);
-            } catch (...) {
-                errors[static_cast<std::size_t>(t)] = std::current_exception();
-            }
-        });
-    }
-    try {
-        std::vector<float> a, b;
-        body(0, std::min(n, chunk), a, b);
-    } catch (...) {
-        errors[0] = std::current_exception();
-    }
-    for (std::thread& t : pool) t.join();
-    for (const std::exception_ptr& e : errors)
-        if (e) std::rethrow_exception(e);
+    const int threads = pixels < kThreadedPixels ? 1 : std::min(parallel::hardware_threads(), 16);
+    const int runs = n < 2 * threads ? 1 : threads;
+    const int chunk = (n + runs - 1) / runs;
+    std::vector<std::vector<float>> scratch(2 * static_cast<std::size_t>(runs));
+    parallel::for_each_index(runs, static_cast<std::size_t>(runs), [&](int w, std::size_t r) {
+        const int first = static_cast<int>(r) * chunk, last = std::min(n, first + chunk);
+        const std::size_t k = 2 * static_cast<std::size_t>(w);
+        if (first < last) body(first, last, scratch[k], scratch[k + 1]);
+    });
 }
 
 }  // namespace

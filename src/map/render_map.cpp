@@ -4,20 +4,17 @@
 // pixel-space paths exist a chunk of features at a time. Each chunk is projected by all threads
 // (a feature each), then drawn by all threads (a horizontal band of the image each).
 #include <algorithm>
-#include <atomic>
-#include <exception>
-#include <memory>
-#include <mutex>
-#include <thread>
-#include <vector>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
 #include "casteljau/map.hpp"
 #include "casteljau/seamless.hpp"
+#include "parallel/for_each_index.hpp"
 
 namespace casteljau {
 
@@ -316,35 +313,6 @@ std::vector<IRect> bands_of(int width, int height) {
 
 bool overlaps(const Rect& r, const IRect& band) { return r.y1 >= band.y0 && r.y0 <= band.y1; }
 
-// Runs task(worker, i) once for every i in [0, n) on up to `workers` threads (worker 0 is the
-// calling thread). The first exception thrown stops the remaining tasks and is rethrown.
-template <class Task>
-void run_parallel(int workers, std::size_t n, Task&& task) {
-    workers = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(workers, 1)), n));
-    if (workers <= 1) {
-        for (std::size_t i = 0; i < n; ++i) task(0, i);
-        return;
-    }
-    std::atomic<std::size_t> next{0};
-    std::mutex mu;
-    std::exception_ptr error;
-    auto loop = [&](int w) {
-        try {
-            for (std::size_t i; (i = next.fetch_add(1)) < n;) task(w, i);
-        } catch (...) {
-            const std::lock_guard<std::mutex> lock(mu);
-            if (!error) error = std::current_exception();
-            next.store(n);
-        }
-    };
-    std::vector<std::thread> pool;
-    pool.reserve(static_cast<std::size_t>(workers - 1));
-    for (int w = 1; w < workers; ++w) pool.emplace_back(loop, w);
-    loop(0);
-    for (std::thread& t : pool) t.join();
-    if (error) std::rethrow_exception(error);
-}
-
 // One feature made ready to draw: its pixel-space fill (or stroke outline) and colour.
 struct Drawable {
     Path path;
@@ -357,7 +325,7 @@ struct Drawable {
 int map_threads(int requested) {
     if (requested < 0 || requested > 256) throw Error(ErrorKind::InvalidArgument, "threads must be 0 (all cores) to 256");
     if (requested > 0) return requested;
-    return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
+    return parallel::hardware_threads();
 }
 
 void render_map(const MapData& data, const MapProjection& proj, const MapFrame& frame, const MapStyle& style,
@@ -410,7 +378,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             while (end < order.size() && (end == begin || positions < kChunkPositions))
                 positions += positions_of(data.features[order[end++]]);
             chunk.assign(end - begin, std::nullopt);
-            run_parallel(threads, end - begin, [&](int w, std::size_t i) {
+            parallel::for_each_index(threads, end - begin, [&](int w, std::size_t i) {
                 make(w, data.features[order[begin + i]], chunk[i]);
                 if (chunk[i]) chunk[i]->box = chunk[i]->path.control_bounds();
             });
@@ -437,7 +405,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             std::reverse(order.begin(), order.end());
             bool drew = false;
             chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
-                run_parallel(threads, bands.size(), [&](int w, std::size_t b) {
+                parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
                     Rasterizer& raster = canvases[static_cast<std::size_t>(w)]->rasterizer();
                     for (const auto& d : chunk)
                         if (d && overlaps(d->box, bands[b])) area->add(raster, d->path, fo, d->color, layer.opacity, bands[b]);
@@ -448,7 +416,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             if (drew) area->composite_onto(target);
         } else if (layer.fill) {
             chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
-                run_parallel(threads, bands.size(), [&](int w, std::size_t b) {
+                parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
                     Canvas& canvas = *canvases[static_cast<std::size_t>(w)];
                     canvas.save();
                     canvas.clip_rect(Rect{0.0, double(bands[b].y0), double(bands[b].x1), double(bands[b].y1)});
@@ -473,7 +441,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             const Rect box = outline.control_bounds();
             Paint paint = Paint::solid(*line_color);
             paint.opacity = layer.opacity;
-            run_parallel(threads, bands.size(), [&](int w, std::size_t b) {
+            parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
                 if (!overlaps(box, bands[b])) return;
                 Canvas& canvas = *canvases[static_cast<std::size_t>(w)];
                 canvas.save();

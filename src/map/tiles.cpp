@@ -4,13 +4,12 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <exception>
 #include <mutex>
 #include <numbers>
-#include <thread>
 
 #include "casteljau/error.hpp"
 #include "casteljau/png.hpp"
+#include "parallel/for_each_index.hpp"
 
 namespace casteljau {
 
@@ -64,96 +63,80 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
     mo.exact_overlaps = opts.exact_overlaps;
     mo.threads = 1;  // the worker threads take a metatile each
 
-    std::mutex mu;  // guards sink, stats, progress, error
+    std::mutex mu;  // guards sink, stats and progress
     TileStats stats;
-    std::exception_ptr error;
-    std::atomic<std::size_t> next{begin};
-    std::atomic<bool> stop{false};
+    std::atomic<bool> stop{false};  // a metatile failed: later ones are not handed to the sink
     std::uint64_t done = 0;
 
-    auto work = [&] {
+    // One metatile: rendered whole, cut into tiles, and its tiles handed to the sink in one go.
+    auto metatile = [&](int, std::size_t index) {
         try {
-            std::vector<std::uint8_t> row_buf;
-            for (;;) {
-                if (stop.load()) return;
-                const std::size_t k = next.fetch_add(1);
-                if (k >= end) return;
-                const Metatile& m = all[k];
-                const std::int64_t dim = std::int64_t{1} << m.z;
-                const int nx = static_cast<int>(std::min<std::int64_t>(m.n, dim - m.x0));
-                const int ny = static_cast<int>(std::min<std::int64_t>(m.n, dim - m.y0));
-                std::vector<char> todo(static_cast<std::size_t>(nx * ny), 1);
-                std::uint64_t existing = 0;
-                if (opts.resume && exists) {
-                    for (int j = 0; j < ny; ++j)
-                        for (int i = 0; i < nx; ++i)
-                            if (exists(m.z, m.x0 + i, m.y0 + j)) {
-                                todo[static_cast<std::size_t>(j * nx + i)] = 0;
-                                ++existing;
-                            }
-                }
-                std::vector<std::tuple<int, int, std::vector<std::uint8_t>>> tiles;
-                std::uint64_t empty = 0;
-                if (existing < static_cast<std::uint64_t>(nx * ny)) {
-                    const int T = opts.tile_px, B = opts.buffer;
-                    const int W = nx * T + 2 * B, H = ny * T + 2 * B;
-                    const double world = static_cast<double>(T) * static_cast<double>(dim);
-                    const double half = std::numbers::pi * kWebMercatorRadius;
-                    const double s = world / (2 * half);
-                    const double ox = static_cast<double>(m.x0) * T - B, oy = static_cast<double>(m.y0) * T - B;
-                    MapFrame fr;
-                    fr.width = W;
-                    fr.height = H;
-                    fr.to_pixel = Affine{s, 0, 0, -s, half * s - ox, half * s - oy};
-                    Pixmap pm(W, H);
-                    render_map(data, merc, fr, style, mo, pm);
-                    Pixmap tile(T, T);
-                    for (int j = 0; j < ny; ++j)
-                        for (int i = 0; i < nx; ++i) {
-                            if (!todo[static_cast<std::size_t>(j * nx + i)]) continue;
-                            bool is_empty = true;
-                            for (int r = 0; r < T; ++r) {
-                                const std::uint8_t* src = pm.row(B + j * T + r) + static_cast<std::size_t>(B + i * T) * 4;
-                                std::copy(src, src + static_cast<std::size_t>(T) * 4, tile.row(r));
-                                if (is_empty)
-                                    for (int c = 0; c < T; ++c)
-                                        if (!(PremulPixel{src[c * 4], src[c * 4 + 1], src[c * 4 + 2], src[c * 4 + 3]} == bg)) {
-                                            is_empty = false;
-                                            break;
-                                        }
-                            }
-                            if (is_empty && opts.skip_empty) {
-                                ++empty;
-                                continue;
-                            }
-                            tiles.emplace_back(m.x0 + i, m.y0 + j, encode_png(tile));
+            const Metatile& m = all[begin + index];
+            const std::int64_t dim = std::int64_t{1} << m.z;
+            const int nx = static_cast<int>(std::min<std::int64_t>(m.n, dim - m.x0));
+            const int ny = static_cast<int>(std::min<std::int64_t>(m.n, dim - m.y0));
+            std::vector<char> todo(static_cast<std::size_t>(nx * ny), 1);
+            std::uint64_t existing = 0;
+            if (opts.resume && exists) {
+                for (int j = 0; j < ny; ++j)
+                    for (int i = 0; i < nx; ++i)
+                        if (exists(m.z, m.x0 + i, m.y0 + j)) {
+                            todo[static_cast<std::size_t>(j * nx + i)] = 0;
+                            ++existing;
                         }
-                }
-                std::lock_guard<std::mutex> lock(mu);
-                if (stop.load()) return;
-                for (auto& [x, y, png] : tiles) sink(m.z, x, y, png);
-                stats.metatiles += 1;
-                stats.written += tiles.size();
-                stats.skipped_empty += empty;
-                stats.skipped_existing += existing;
-                ++done;
-                if (progress) progress(done, total);
             }
-        } catch (...) {
+            std::vector<std::tuple<int, int, std::vector<std::uint8_t>>> tiles;
+            std::uint64_t empty = 0;
+            if (existing < static_cast<std::uint64_t>(nx * ny)) {
+                const int T = opts.tile_px, B = opts.buffer;
+                const int W = nx * T + 2 * B, H = ny * T + 2 * B;
+                const double world = static_cast<double>(T) * static_cast<double>(dim);
+                const double half = std::numbers::pi * kWebMercatorRadius;
+                const double s = world / (2 * half);
+                const double ox = static_cast<double>(m.x0) * T - B, oy = static_cast<double>(m.y0) * T - B;
+                MapFrame fr;
+                fr.width = W;
+                fr.height = H;
+                fr.to_pixel = Affine{s, 0, 0, -s, half * s - ox, half * s - oy};
+                Pixmap pm(W, H);
+                render_map(data, merc, fr, style, mo, pm);
+                Pixmap tile(T, T);
+                for (int j = 0; j < ny; ++j)
+                    for (int i = 0; i < nx; ++i) {
+                        if (!todo[static_cast<std::size_t>(j * nx + i)]) continue;
+                        bool is_empty = true;
+                        for (int r = 0; r < T; ++r) {
+                            const std::uint8_t* src = pm.row(B + j * T + r) + static_cast<std::size_t>(B + i * T) * 4;
+                            std::copy(src, src + static_cast<std::size_t>(T) * 4, tile.row(r));
+                            if (is_empty)
+                                for (int c = 0; c < T; ++c)
+                                    if (!(PremulPixel{src[c * 4], src[c * 4 + 1], src[c * 4 + 2], src[c * 4 + 3]} == bg)) {
+                                        is_empty = false;
+                                        break;
+                                    }
+                        }
+                        if (is_empty && opts.skip_empty) {
+                            ++empty;
+                            continue;
+                        }
+                        tiles.emplace_back(m.x0 + i, m.y0 + j, encode_png(tile));
+                    }
+            }
             std::lock_guard<std::mutex> lock(mu);
-            if (!error) error = std::current_exception();
+            if (stop.load()) return;
+            for (auto& [x, y, png] : tiles) sink(m.z, x, y, png);
+            stats.metatiles += 1;
+            stats.written += tiles.size();
+            stats.skipped_empty += empty;
+            stats.skipped_existing += existing;
+            ++done;
+            if (progress) progress(done, total);
+        } catch (...) {
             stop.store(true);
+            throw;
         }
     };
-    const int nthreads = static_cast<int>(std::min<std::uint64_t>(static_cast<std::uint64_t>(opts.threads), std::max<std::uint64_t>(total, 1)));
-    if (nthreads <= 1) {
-        work();
-    } else {
-        std::vector<std::thread> pool;
-        for (int t = 0; t < nthreads; ++t) pool.emplace_back(work);
-        for (auto& t : pool) t.join();
-    }
-    if (error) std::rethrow_exception(error);
+    parallel::for_each_index(opts.threads, static_cast<std::size_t>(total), metatile);
     return stats;
 }
 
