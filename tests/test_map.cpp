@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 #include <random>
 
 #include "casteljau/error.hpp"
@@ -324,6 +325,52 @@ TEST_CASE("Seamless: earlier fills take precedence where fills overlap", "[map][
     CHECK(pm.pixel(1, 1) == PremulPixel{255, 0, 0, 255});
     CHECK(pm.pixel(6, 1) == PremulPixel{0, 0, 255, 255});
     CHECK(pm.pixel(4, 1) == PremulPixel{128, 0, 127, 255});  // half red, half blue, no white
+}
+
+TEST_CASE("Seamless: band compositors give the whole-image compositor's pixels, also on a strided target", "[map][seamless]") {
+    // render_map composites each band in a compositor covering that band only; the result must
+    // equal one compositor over the whole image, and compositing must follow the target's stride.
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<Path> fills;
+    std::vector<Color> colors;
+    for (int i = 0; i < 40; ++i) {
+        Path p;
+        const double cx = 60 * u(rng), cy = 45 * u(rng), r = 2 + 12 * u(rng);
+        p.move_to(cx + r, cy);
+        for (int k = 1; k < 7; ++k) p.line_to(cx + r * std::cos(k * 0.9), cy + r * std::sin(k * 1.3));
+        p.close();
+        fills.push_back(p);
+        colors.push_back(Color::rgba(static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
+                                     static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(128 + rng() % 128)));
+    }
+    Rasterizer raster;
+    AreaCompositor whole(64, 48);
+    for (std::size_t i = 0; i < fills.size(); ++i) whole.add(raster, fills[i], FillOptions{}, colors[i], 0.9);
+    Pixmap expected(64, 48);
+    expected.fill(Color::rgba(10, 20, 30));
+    whole.composite_onto(expected);
+    // The same into caller memory with 7 pixels of padding per row, band by band (17 rows each).
+    const std::size_t stride = (64 + 7) * 4;
+    std::vector<std::uint8_t> memory(stride * 48, 0xAB);
+    Pixmap banded = Pixmap::borrow(memory.data(), 64, 48, stride);
+    banded.fill(Color::rgba(10, 20, 30));
+    std::optional<AreaCompositor> band;
+    for (int y0 = 0; y0 < 48; y0 += 17) {
+        const IRect region{0, y0, 64, std::min(48, y0 + 17)};
+        if (band) band->reset(region);
+        else band.emplace(region);
+        for (std::size_t i = 0; i < fills.size(); ++i) band->add(raster, fills[i], FillOptions{}, colors[i], 0.9, region);
+        band->composite_onto(banded);
+    }
+    int differ = 0;
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 64; ++x) differ += !(banded.pixel(x, y) == expected.pixel(x, y));
+    CHECK(differ == 0);
+    int padding_touched = 0;
+    for (int y = 0; y < 48; ++y)
+        for (std::size_t k = 64 * 4; k < stride; ++k) padding_touched += memory[static_cast<std::size_t>(y) * stride + k] != 0xAB;
+    CHECK(padding_touched == 0);
 }
 
 TEST_CASE("Map strokes: a shared border is stroked once, not twice darker", "[map][stroke]") {

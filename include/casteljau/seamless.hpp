@@ -18,12 +18,15 @@
 // second fill would bring a pixel to exactly 254/255, it is given the last 1/255 as well (a pixel
 // truly left 1/255 uncovered by two fills is drawn full: an error of 1/255 that cannot show).
 //
-// Cost: 5 bytes per pixel of the target (a premultiplied RGBA8 layer and an 8-bit coverage plane),
-// allocated once; per covered pixel a few integer operations more than source-over. Time is that of
-// rasterizing each fill once plus one pass over the pixels at the end.
+// Cost: 5 bytes per pixel of the region it covers (a premultiplied RGBA8 layer and an 8-bit
+// coverage plane); per covered pixel a few integer operations more than source-over. Time is that
+// of rasterizing each fill once plus one pass over the region's pixels at the end. A compositor may
+// cover only a band of the target (render_map gives each thread one band at a time and reuses its
+// memory with reset()), so that its memory stays small and in cache.
 //
-// Coordinates: pixel space of the target (x right, y down). Thread-safety: one thread at a time,
-// except add() with disjoint clip rectangles.
+// Coordinates: pixel space of the target (x right, y down), also for a compositor covering a
+// region only. Thread-safety: one thread at a time, except add() with disjoint clip rectangles;
+// compositors of disjoint regions may composite onto one target at once.
 #pragma once
 
 #include <cstdint>
@@ -37,26 +40,35 @@ namespace casteljau {
 
 class AreaCompositor {
 public:
-    // Throws like Pixmap(width, height) for sizes outside the canvas limits.
+    // Covers the target's pixels [0, width) x [0, height). Throws like Pixmap(width, height) for
+    // sizes outside the canvas limits.
     AreaCompositor(int width, int height);
+    // Covers `region` of the target only (pixel rectangle, non-empty).
+    explicit AreaCompositor(const IRect& region);
 
-    int width() const { return width_; }
-    int height() const { return height_; }
+    int width() const { return region_.x1 - region_.x0; }
+    int height() const { return region_.y1 - region_.y0; }
+    const IRect& region() const { return region_; }
+    // Starts again, empty, over `region` (keeps the memory when the new region is not larger).
+    void reset(const IRect& region);
 
     // Adds the fill of `path` (pixel space) in `color` with `opacity` (multiplies the alpha).
     // Fills added earlier take precedence where they overlap.
     void add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity = 1.0);
-    // The same inside `clip` only (pixel rectangle within the compositor). Calls with disjoint
-    // clips touch disjoint pixels, so they may run on different threads at once.
+    // The same inside `clip` only (pixel rectangle, intersected with the region). Calls with
+    // disjoint clips touch disjoint pixels, so they may run on different threads at once.
     void add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity, const IRect& clip);
-    // Coverage already taken in pixel (x, y), 0..255.
-    std::uint8_t taken(int x, int y) const { return cov_[static_cast<std::size_t>(y) * width_ + x]; }
-    // Source-over of the layer onto `dst` (same size).
+    // Coverage already taken in pixel (x, y) of the region, 0..255.
+    std::uint8_t taken(int x, int y) const {
+        return cov_[static_cast<std::size_t>(y - region_.y0) * static_cast<std::size_t>(width()) +
+                    static_cast<std::size_t>(x - region_.x0)];
+    }
+    // Source-over of the layer onto the region of `dst` (which must contain the region).
     void composite_onto(Pixmap& dst) const;
     void clear();
 
 private:
-    int width_, height_;
+    IRect region_;
     std::vector<std::uint8_t> layer_;  // premultiplied RGBA8
     std::vector<std::uint8_t> cov_;
 };

@@ -8,10 +8,15 @@
 
 namespace casteljau {
 
-AreaCompositor::AreaCompositor(int width, int height) : width_(width), height_(height) {
-    check_canvas_size(width, height);
-    if (width < 1 || height < 1) throw Error(ErrorKind::InvalidArgument, "compositor size must be positive");
-    const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+AreaCompositor::AreaCompositor(int width, int height) : AreaCompositor(IRect{0, 0, width, height}) {}
+
+AreaCompositor::AreaCompositor(const IRect& region) { reset(region); }
+
+void AreaCompositor::reset(const IRect& region) {
+    check_canvas_size(region.x1 - region.x0, region.y1 - region.y0);
+    if (region.empty()) throw Error(ErrorKind::InvalidArgument, "compositor size must be positive");
+    region_ = region;
+    const std::size_t n = static_cast<std::size_t>(width()) * static_cast<std::size_t>(height());
     layer_.assign(n * 4, 0);
     cov_.assign(n, 0);
 }
@@ -28,11 +33,13 @@ inline std::uint8_t mul255(unsigned a, unsigned b) { return static_cast<std::uin
 struct AreaSink final : SpanSink {
     std::uint8_t* layer;
     std::uint8_t* cov;
-    int width;
+    int width, x0, y0;  // the region's width and origin
     PremulPixel c;
     void row(int y, int x, int length, const std::uint8_t* coverage) override {
-        std::uint8_t* L = layer + (static_cast<std::size_t>(y) * width + x) * 4;
-        std::uint8_t* C = cov + static_cast<std::size_t>(y) * width + x;
+        const std::size_t at = static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width) +
+                               static_cast<std::size_t>(x - x0);
+        std::uint8_t* L = layer + at * 4;
+        std::uint8_t* C = cov + at;
         for (int i = 0; i < length; ++i, L += 4) {
             const unsigned a = coverage[i];
             if (a == 0) continue;
@@ -55,36 +62,41 @@ struct AreaSink final : SpanSink {
 }  // namespace
 
 void AreaCompositor::add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity) {
-    add(raster, path, opts, color, opacity, IRect{0, 0, width_, height_});
+    add(raster, path, opts, color, opacity, region_);
 }
 
 void AreaCompositor::add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity,
                          const IRect& clip) {
-    const IRect c{std::max(clip.x0, 0), std::max(clip.y0, 0), std::min(clip.x1, width_), std::min(clip.y1, height_)};
+    const IRect c{std::max(clip.x0, region_.x0), std::max(clip.y0, region_.y0), std::min(clip.x1, region_.x1),
+                  std::min(clip.y1, region_.y1)};
     if (c.empty()) return;
     AreaSink sink;
     sink.layer = layer_.data();
     sink.cov = cov_.data();
-    sink.width = width_;
+    sink.width = width();
+    sink.x0 = region_.x0;
+    sink.y0 = region_.y0;
     sink.c = premultiply(color.with_opacity(std::clamp(opacity, 0.0, 1.0)));
     raster.fill(path, Affine{}, opts, c, sink);
 }
 
 void AreaCompositor::composite_onto(Pixmap& dst) const {
-    if (dst.width() != width_ || dst.height() != height_)
-        throw Error(ErrorKind::InvalidArgument, "AreaCompositor::composite_onto: size mismatch");
-    const std::size_t n = static_cast<std::size_t>(width_) * height_;
-    std::uint8_t* d = dst.data();
-    const std::uint8_t* s = layer_.data();
-    for (std::size_t i = 0; i < n; ++i, d += 4, s += 4) {
-        const unsigned sa = s[3];
-        if (sa == 0) continue;
-        if (sa == 255) {
-            d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; d[3] = 255;
-            continue;
+    if (region_.x0 < 0 || region_.y0 < 0 || region_.x1 > dst.width() || region_.y1 > dst.height())
+        throw Error(ErrorKind::InvalidArgument, "AreaCompositor::composite_onto: the target does not contain the region");
+    const int w = width();
+    for (int y = region_.y0; y < region_.y1; ++y) {
+        std::uint8_t* d = dst.row(y) + static_cast<std::size_t>(region_.x0) * 4;
+        const std::uint8_t* s = layer_.data() + static_cast<std::size_t>(y - region_.y0) * static_cast<std::size_t>(w) * 4;
+        for (int i = 0; i < w; ++i, d += 4, s += 4) {
+            const unsigned sa = s[3];
+            if (sa == 0) continue;
+            if (sa == 255) {
+                d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; d[3] = 255;
+                continue;
+            }
+            const unsigned inv = 255 - sa;
+            for (int k = 0; k < 4; ++k) d[k] = static_cast<std::uint8_t>(s[k] + mul255(d[k], inv));
         }
-        const unsigned inv = 255 - sa;
-        for (int k = 0; k < 4; ++k) d[k] = static_cast<std::uint8_t>(s[k] + mul255(d[k], inv));
     }
 }
 

@@ -357,7 +357,8 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
         canvases.push_back(std::make_unique<Canvas>(target));
         canvases.back()->fill_options() = fo;
     }
-    std::optional<AreaCompositor> area;
+    std::optional<AreaCompositor> area;                                     // the whole image
+    std::vector<std::optional<AreaCompositor>> band_areas(static_cast<std::size_t>(threads));  // one band per worker
 
     auto build = [&](int w, const Feature& f, PathVisitor& v) {
         v.m = frame.to_pixel;
@@ -400,20 +401,46 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             if (!v.fill.empty()) out = Drawable{std::move(v.fill), *c, Rect{}};
         };
         if (layer.fill && opts.seamless) {
-            if (!area) area.emplace(frame.width, frame.height);
-            else area->clear();
             std::reverse(order.begin(), order.end());
-            bool drew = false;
-            chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
-                parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
-                    Rasterizer& raster = canvases[static_cast<std::size_t>(w)]->rasterizer();
-                    for (const auto& d : chunk)
-                        if (d && overlaps(d->box, bands[b])) area->add(raster, d->path, fo, d->color, layer.opacity, bands[b]);
+            std::size_t positions = 0;
+            for (std::size_t i : order) positions += positions_of(data.features[i]);
+            if (positions <= kChunkPositions) {
+                // One chunk: each band is composited on its own, in a compositor of the band's
+                // size that its worker reuses (5 bytes per pixel of one band per thread, not of
+                // the image).
+                chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
+                    parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
+                        Rasterizer& raster = canvases[static_cast<std::size_t>(w)]->rasterizer();
+                        std::optional<AreaCompositor>& band = band_areas[static_cast<std::size_t>(w)];
+                        bool drew = false;
+                        for (const auto& d : chunk) {
+                            if (!d || !overlaps(d->box, bands[b])) continue;
+                            if (!drew) {
+                                if (band) band->reset(bands[b]);
+                                else band.emplace(bands[b]);
+                                drew = true;
+                            }
+                            band->add(raster, d->path, fo, d->color, layer.opacity, bands[b]);
+                        }
+                        if (drew) band->composite_onto(target);
+                    });
                 });
-                for (const auto& d : chunk) drew = drew || d.has_value();
-            });
+            } else {
+                // Several chunks: every chunk adds to one compositor of the whole image.
+                if (!area) area.emplace(frame.width, frame.height);
+                else area->clear();
+                bool drew = false;
+                chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
+                    parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
+                        Rasterizer& raster = canvases[static_cast<std::size_t>(w)]->rasterizer();
+                        for (const auto& d : chunk)
+                            if (d && overlaps(d->box, bands[b])) area->add(raster, d->path, fo, d->color, layer.opacity, bands[b]);
+                    });
+                    for (const auto& d : chunk) drew = drew || d.has_value();
+                });
+                if (drew) area->composite_onto(target);
+            }
             std::reverse(order.begin(), order.end());
-            if (drew) area->composite_onto(target);
         } else if (layer.fill) {
             chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
                 parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
