@@ -13,6 +13,11 @@
 //      one (y down).
 //   3. A = W0 + sum(L x area) fixes W0 (an integer: rounded), and the coverage is
 //      sum(f(W0 + L) x area).
+// L is counted along a path only once per slab: down the vertical through r to the slab's middle
+// (a running sum of the crossings of that vertical), then left past the slab's pieces; moving right
+// across a piece then adds its direction. Any path inside the cell gives the same count, so this
+// equals the straight segment's, which is kept for the slabs where the path would pass within a
+// hair of a piece end.
 // Only the cell's own edges are needed, never the rest of its row.
 // Also here: the cell geometry the overlap check shares (cell_portion, segments_meet).
 #include <algorithm>
@@ -148,7 +153,9 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
     };
 
     // Work is counted in piece visits: the pairwise crossing search visits n^2 / 2 pairs, a slab or
-    // a dense line visits its active pieces and, through winding_offset, every piece once more.
+    // a dense line visits its active pieces and, where its offset cannot be read off the crossings
+    // of the vertical through r (below), every piece once more through winding_offset: 2n per
+    // line, an upper bound.
     const double nd = static_cast<double>(n);
     const double pair_work = 0.5 * nd * nd;
     bool dense = n > kMaxExactPieces || pair_work > sc.budget;
@@ -223,9 +230,47 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
             live[b] = id;
         }
     };
+    // The offset of a line's leftmost region without counting crossings from r for every line:
+    // along the vertical x = rx through r, w changes only where a piece crosses it, by +1 going
+    // down across a piece that runs right to left (onto its negative side) and -1 otherwise. So
+    // L(rx, y) is a running sum over those crossings in y order, and the leftmost region is that
+    // minus the directions of the active pieces left of rx. Lines that pass within kNearRef of a
+    // crossing, or whose active pieces pass that close to rx, use winding_offset instead.
+    constexpr double kNearRef = 1e-9;
+    auto& vc = sc.vcross;
+    vc.clear();
+    for (const ExactScratch::Piece& p : pieces)
+        if ((p.ax < rx) != (p.bx < rx))
+            vc.push_back({p.ay + (rx - p.ax) * (p.by - p.ay) / (p.bx - p.ax), p.bx < p.ax ? 1 : -1});
+    std::sort(vc.begin(), vc.end(), [](const ExactScratch::VCross& u, const ExactScratch::VCross& v) { return u.y < v.y; });
+    int above_r = 0;
+    for (const ExactScratch::VCross& c : vc)
+        if (c.y < ryy) above_r += c.d;
+    std::size_t vi = 0;
+    int vsum = 0;
+    // Sets l to the offset of the leftmost region at height y (y increasing call to call, active
+    // sorted by xm); false when y or an active piece is too close to call.
+    auto leftmost_offset = [&](double y, int& l) {
+        for (; vi < vc.size() && vc[vi].y < y; ++vi) vsum += vc[vi].d;
+        if ((vi < vc.size() && vc[vi].y - y < kNearRef) || (vi > 0 && y - vc[vi - 1].y < kNearRef)) return false;
+        int left = 0;
+        for (const ExactScratch::Cross& a : sc.active) {
+            if (std::abs(a.xm - rx) < kNearRef) return false;
+            if (a.xm > rx) break;
+            left += a.dir;
+        }
+        l = vsum - above_r - left;
+        return true;
+    };
     if (dense) {
+        // Piece ends by height, so that a line passing within kNearRef of one (where rounding may
+        // have left a hair between a clipped piece and the cell's edge) counts crossings from r.
+        std::sort(sc.breaks.begin(), sc.breaks.end());
+        std::size_t bi = 0;
         for (int k = 0; k < lines; ++k) {
             const double ym = ry + (k + 0.5) / lines;
+            while (bi < sc.breaks.size() && sc.breaks[bi] < ym - kNearRef) ++bi;
+            const bool near_end = bi < sc.breaks.size() && sc.breaks[bi] < ym + kNearRef;
             advance(ym, true);
             sc.active.resize(live.size());
             for (std::size_t a = 0; a < live.size(); ++a) {
@@ -236,7 +281,7 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
             sort_active();
             double px = cx;
             int l = 0;
-            bool known = false;
+            bool known = !near_end && leftmost_offset(ym, l);
             const std::size_t na = sc.active.size();
             for (std::size_t i = 0; i <= na; ++i) {
                 const double nx = i < na ? sc.active[i].xm : cr;
@@ -272,7 +317,10 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         double px0 = cx, px1 = cx, pxm = cx;
         const std::size_t na = sc.active.size();
         int l = 0;
-        bool known = false;  // l is computed by crossings at the first region with an area
+        // Else l is computed by crossings from r at the first region with an area. A slab thinner
+        // than 2 kNearRef lies between piece ends that rounding may have left a hair apart (a
+        // piece clipped at the cell's edge): crossings counted along another path could differ.
+        bool known = h > 2 * kNearRef && leftmost_offset(ym, l);
         for (std::size_t i = 0; i <= na; ++i) {
             const double nx0 = i < na ? sc.active[i].x0 : cr, nx1 = i < na ? sc.active[i].x1 : cr;
             const double nxm = i < na ? sc.active[i].xm : cr;

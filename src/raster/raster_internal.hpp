@@ -41,6 +41,8 @@ struct ExactScratch {
     struct Region { int b; double area; };
     std::vector<Region> regions;
     std::vector<std::uint32_t> order, live;  // the pieces by top end, and the active ones
+    struct VCross { double y; int d; };       // a piece crossing the vertical through r
+    std::vector<VCross> vcross;
     // Work left for the exact cells of the current fill, in piece visits (see exact_cell.cpp);
     // the engine sets it before each fill's exact cells.
     double budget = 0;
