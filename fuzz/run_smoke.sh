@@ -4,7 +4,8 @@
 # never changed; inputs that crash, leak or time out are written to BUILD/artifacts/. Exits non-zero
 # when the fuzzer finds a crash, leak, timeout or sanitizer report.
 # Usage: fuzz/run_smoke.sh TARGET SECONDS     e.g. fuzz/run_smoke.sh fuzz_svg 60
-# The build folder is $CASTELJAU_FUZZ_BUILD, by default build-fuzz/ in the checkout.
+# The build folder is $CASTELJAU_FUZZ_BUILD, by default build-fuzz/ in the checkout; an input
+# running longer than $CASTELJAU_FUZZ_TIMEOUT seconds (default 10) is a finding.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 target=${1:?usage: run_smoke.sh TARGET SECONDS}
@@ -30,5 +31,5 @@ case "$name" in
     done ;;
 esac
 mkdir -p "$build/artifacts"
-"$build/fuzz/$target" -max_total_time="$seconds" -max_len=131072 -timeout=10 -rss_limit_mb=2048 \
+"$build/fuzz/$target" -max_total_time="$seconds" -max_len=131072 -timeout="${CASTELJAU_FUZZ_TIMEOUT:-10}" -rss_limit_mb=2048 \
   -artifact_prefix="$build/artifacts/$target-" -print_final_stats=1 "$corpus"
