@@ -8,7 +8,8 @@
 // last item's PNG. The resident set size (VmRSS) is read before the first item, at the middle
 // and after the last; the run fails (exit 1) when it grew from the middle to the end by more than
 // 10% + 4 MiB, which a leak or an ever-growing cache would show. Run under LeakSanitizer (the
-// sanitizer build) it also fails on any leak.
+// sanitizer build) it fails on any leak instead: there AddressSanitizer's quarantine of freed
+// memory makes the resident size grow with the churn, so the growth check is not made.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +28,18 @@
 #include "casteljau/tiles.hpp"
 
 using namespace casteljau;
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
 
 namespace {
 
@@ -154,7 +167,12 @@ int main(int argc, char** argv) {
         if (!out.empty()) write_file_atomic(out, last);
         if (only < 0) {
             std::printf("VmRSS: %ld KiB before, %ld KiB at the middle, %ld KiB after\n", before, middle, after);
-            if (after > middle + middle / 10 + 4096) {
+            if (kAddressSanitizer) {
+                // ASan keeps freed memory in its quarantine (256 MB by default) before reusing it,
+                // so the resident size grows with the churn, not with what is still held; leaks are
+                // LeakSanitizer's to find at exit. The flat-memory check runs in the normal build.
+                std::printf("the growth check is left to the normal build (AddressSanitizer's quarantine)\n");
+            } else if (after > middle + middle / 10 + 4096) {
                 std::fprintf(stderr, "soak: memory grew from %ld KiB at the middle to %ld KiB at the end\n", middle, after);
                 return 1;
             }
