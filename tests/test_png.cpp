@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "casteljau/error.hpp"
@@ -612,6 +613,44 @@ TEST_CASE("decode_png: a chunk declaring more data than the file holds is refuse
     std::string msg;
     CHECK(decode_error_kind(bad, &msg) == ErrorKind::InvalidData);
     CHECK_THAT(msg, Catch::Contains("chunk 'tEXt' at byte 33 declares 1962868761 bytes"));
+}
+
+namespace {
+
+// `png` with `chunks` inserted after IHDR (the signature and IHDR are its first 33 bytes).
+std::vector<std::uint8_t> with_chunks_after_ihdr(const std::vector<std::uint8_t>& png,
+                                                 const std::vector<std::pair<std::string, std::vector<std::uint8_t>>>& chunks) {
+    std::vector<std::uint8_t> out(png.begin(), png.begin() + 33);
+    for (const auto& [type, data] : chunks) png_test::append_chunk(out, type.c_str(), data);
+    out.insert(out.end(), png.begin() + 33, png.end());
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("decode_png: ancillary chunks past the limits are skipped, the image still decodes", "[png]") {
+    const Pixmap original = random_premultiplied(6, 5, 31);
+    const auto good = encode_png(original);
+    // A zTXt chunk inflating to 17 MiB (above limits::kMaxPngChunkBytes): libpng refuses to
+    // inflate it and skips the chunk; the image is unaffected.
+    std::vector<std::uint8_t> text = {'C', 'o', 'm', 'm', 'e', 'n', 't', 0, 0};  // keyword, NUL, method 0
+    {
+        const std::vector<std::uint8_t> zeros(17u << 20, 'a');
+        uLongf len = compressBound(static_cast<uLong>(zeros.size()));
+        std::vector<std::uint8_t> z(len);
+        REQUIRE(compress2(z.data(), &len, zeros.data(), static_cast<uLong>(zeros.size()), 9) == Z_OK);
+        REQUIRE(len < 100000);
+        text.insert(text.end(), z.begin(), z.begin() + static_cast<std::ptrdiff_t>(len));
+    }
+    static_assert(casteljau::limits::kMaxPngChunkBytes == 16u << 20);
+    const Pixmap a = decode_png(with_chunks_after_ihdr(good, {{"zTXt", text}}));
+    CHECK(same_pixels(a, original));
+    // 1,500 text chunks (above limits::kMaxPngAncillaryChunks): the ones past the limit are skipped.
+    std::vector<std::pair<std::string, std::vector<std::uint8_t>>> many;
+    for (int i = 0; i < 1500; ++i) many.push_back({"tEXt", {'k', 0, 'v', static_cast<std::uint8_t>('0' + i % 10)}});
+    static_assert(casteljau::limits::kMaxPngAncillaryChunks == 1000);
+    const Pixmap b = decode_png(with_chunks_after_ihdr(good, many));
+    CHECK(same_pixels(b, original));
 }
 
 TEST_CASE("decode_png: a declared size beyond the limits is rejected before allocating", "[png]") {
