@@ -189,3 +189,29 @@ TEST_CASE("fill_path with per-call options leaves the canvas defaults alone", "[
     CHECK(c.fill_options().tolerance == kDefaultTolerance);
     CHECK(c.fill_options().rule == FillRule::NonZero);
 }
+
+TEST_CASE("canvas limits: save() nests 1024 deep and layers 64 deep, one more is Error(Limit)", "[canvas][limits]") {
+    Pixmap pm(4, 4);
+    Canvas c(pm);
+    for (int i = 0; i < 1024; ++i) c.save();
+    try {
+        c.save();
+        FAIL("save 1025 deep succeeded");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::Limit);
+    }
+    for (int i = 0; i < 1024; ++i) c.restore();
+    for (int i = 0; i < limits::kMaxNestingDepth; ++i) c.begin_layer(0.5);
+    try {
+        c.begin_layer(0.5);
+        FAIL("a layer 65 deep was begun");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::Limit);
+    }
+    // The canvas still works once the layers are unwound.
+    for (int i = 0; i < limits::kMaxNestingDepth; ++i) c.end_layer();
+    Path r;
+    r.add_rect(Rect{0, 0, 4, 4});
+    c.fill_path(r, Paint::solid(Color::black()));
+    CHECK(pm.pixel(1, 1) == PremulPixel{0, 0, 0, 255});
+}

@@ -71,3 +71,20 @@ TEST_CASE("css: a style sheet of 1 MB of garbage is read without error or hang",
     for (int i = 0; i < 60; ++i) body += "</g>";
     CHECK(draw(sel + "circle { fill: red }", body).pixel(5, 5) == kGreen);
 }
+
+TEST_CASE("css: rules past the 10,000th are ignored with a warning", "[svg][css][bad-input][limits]") {
+    // 10,000 rules that do not match, then one that would paint the rect red: it is past the limit.
+    std::string sheet;
+    for (int i = 0; i < 10000; ++i) sheet += ".c" + std::to_string(i) + "{fill:blue}";
+    const std::string tail = "rect{fill:red}";
+    const SvgDocument doc = SvgDocument::parse("<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'><style>" +
+                                               sheet + tail + "</style><rect width='10' height='10' fill='green'/></svg>");
+    bool warned = false;
+    for (const std::string& w : doc.warnings()) warned = warned || w.find("more than 10000 rules") != std::string::npos;
+    CHECK(warned);
+    CHECK(doc.render().pixel(5, 5) == kGreen);
+    // One rule fewer and the last rule applies.
+    std::string fewer;
+    for (int i = 0; i < 9999; ++i) fewer += ".c" + std::to_string(i) + "{fill:blue}";
+    CHECK(draw(fewer + tail, "<rect width='10' height='10' fill='green'/>").pixel(5, 5) == PremulPixel{255, 0, 0, 255});
+}

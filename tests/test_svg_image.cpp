@@ -98,3 +98,24 @@ TEST_CASE("svg: an .svgz file (gzip) is read, a corrupt one is a clear error", "
     CHECK(SvgDocument::parse(bytes).render().pixel(5, 5) == kGreen);
     CHECK_THROWS_AS(SvgDocument::parse(bytes.substr(0, bytes.size() / 2)), Error);
 }
+
+TEST_CASE("svg image: SVG images nest 4 deep, a fifth level is skipped with a warning", "[svg][image][limits]") {
+    static_assert(limits::kMaxSvgImageNesting == 4);
+    const fs::path d = scratch_dir("svg-image-nesting");
+    fs::create_directories(d);
+    // level0.svg draws level1.svg as an image, and so on; the deepest level paints green.
+    auto chain = [&](int levels) {
+        for (int i = 0; i < levels; ++i)
+            write(d / ("level" + std::to_string(i) + ".svg"),
+                  kHead + "<image width='10' height='10' href='level" + std::to_string(i + 1) + ".svg'/></svg>");
+        write(d / ("level" + std::to_string(levels) + ".svg"), kHead + "<rect width='10' height='10' fill='green'/></svg>");
+        return SvgDocument::load((d / "level0.svg").string());
+    };
+    const SvgDocument four = chain(4);  // images at nesting 1..4
+    CHECK(four.render().pixel(5, 5) == kGreen);
+    const SvgDocument five = chain(5);
+    CHECK(five.render().pixel(5, 5).a == 0);
+    bool warned = false;
+    for (const std::string& w : five.warnings()) warned = warned || w.find("nested deeper than 4") != std::string::npos;
+    CHECK(warned);
+}

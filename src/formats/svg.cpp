@@ -1179,6 +1179,9 @@ public:
                 inner.nesting++;
                 svg = std::make_shared<const SvgDocument>(
                     SvgDocument::parse(std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()), inner));
+                // Its warnings are this document's too (a skipped image deep in a chain, a bad
+                // path inside an icon): the reader of this file would otherwise never see them.
+                for (const std::string& w : svg->warnings()) warn("in an SVG image: " + w);
                 iw = svg->intrinsic_width();
                 ih = svg->intrinsic_height();
             } else {

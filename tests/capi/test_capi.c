@@ -187,6 +187,29 @@ int main(int argc, char** argv) {
         CHECK(limit);
         CHECK(strstr(casteljau_last_error(), "1024") != NULL);
     }
+    {
+        /* The documented C API limits: 65536 gradient stops, 4096 dash values. */
+        casteljau_gradient_stop* many = (casteljau_gradient_stop*)calloc(65537, sizeof *many);
+        double* dashes = (double*)calloc(4097, sizeof *dashes);
+        int i;
+        CHECK(many != NULL && dashes != NULL);
+        for (i = 0; i < 65537; ++i) {
+            many[i].offset = i / 65536.0;
+            many[i].color.a = 255;
+        }
+        for (i = 0; i < 4097; ++i) dashes[i] = 1;
+        nopaint = NULL;
+        CHECK_ERROR(casteljau_paint_create_linear(0, 0, 1, 0, many, 65537, CASTELJAU_SPREAD_PAD, NULL, &nopaint),
+                    CASTELJAU_ERROR_LIMIT, "65536");
+        CHECK(nopaint == NULL);
+        CHECK(casteljau_paint_create_linear(0, 0, 1, 0, many, 65536, CASTELJAU_SPREAD_PAD, NULL, &nopaint) == CASTELJAU_OK);
+        casteljau_paint_destroy(nopaint);
+        CHECK_ERROR(casteljau_stroke_set_dashes(stroke, dashes, 4097, 0), CASTELJAU_ERROR_LIMIT, "4096");
+        CHECK(casteljau_stroke_set_dashes(stroke, dashes, 4096, 0) == CASTELJAU_OK);
+        CHECK(casteljau_stroke_set_dashes(stroke, NULL, 0, 0) == CASTELJAU_OK);
+        free(many);
+        free(dashes);
+    }
     CHECK(casteljau_image_width(NULL) == 0 && casteljau_image_data(NULL) == NULL);
 
     /* Destroy everything (NULL is accepted) */
