@@ -97,6 +97,9 @@ struct Style {
     // What context-fill and context-stroke name: the fill and stroke of the use element or of the
     // shape a marker is drawn on (none outside those).
     PaintRef context_fill, context_stroke;
+    // The nearest viewport's size in user units: percentages of stroke-width, stroke-dasharray and
+    // stroke-dashoffset are of its normalised diagonal sqrt((w^2 + h^2) / 2).
+    double viewport_w = 100, viewport_h = 100;
 };
 
 std::string_view trim(std::string_view s) {
@@ -105,8 +108,12 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-// A length with an optional unit; percentages resolve against `percent_of`. nullopt when invalid.
-std::optional<double> parse_length(std::string_view text, double percent_of) {
+// The font size where no element sets one: resvg's default, the size the text engine starts from.
+constexpr double kDefaultFontSize = 12;
+
+// A length with an optional unit; percentages resolve against `percent_of`, em against
+// `font_size` and ex against half of it (as resvg: no x-height from the font). nullopt when invalid.
+std::optional<double> parse_length(std::string_view text, double percent_of, double font_size) {
     text = trim(text);
     if (text.empty()) return std::nullopt;
     const char* b = text.data();
@@ -123,9 +130,14 @@ std::optional<double> parse_length(std::string_view text, double percent_of) {
     if (unit == "mm") return v * 96.0 / 25.4;
     if (unit == "cm") return v * 96.0 / 2.54;
     if (unit == "in") return v * 96.0;
-    if (unit == "em") return v * 16.0;
-    if (unit == "ex") return v * 8.0;
+    if (unit == "em") return v * font_size;
+    if (unit == "ex") return v * font_size / 2;
     return std::nullopt;
+}
+
+// A length where no element's font size is known (em and ex relative to a 16 px font).
+std::optional<double> parse_length(std::string_view text, double percent_of) {
+    return parse_length(text, percent_of, 16.0);
 }
 
 std::optional<double> parse_number(std::string_view text) {
@@ -306,7 +318,32 @@ public:
         else warn("invalid " + property + " '" + std::string(value) + "'");
     }
 
+    // The computed font-size of `node`: the font-size (or `font` shorthand) of its ancestors and
+    // itself applied outermost first, from kDefaultFontSize (em and ex relative to the parent's).
+    std::unordered_map<const void*, double> font_size_cache;
+    double font_size_of(const pugi::xml_node& node) {
+        if (!node || node.type() != pugi::node_element) return kDefaultFontSize;
+        const auto cached = font_size_cache.find(node.internal_object());
+        if (cached != font_size_cache.end()) return cached->second;
+        const double parent = font_size_of(node.parent());
+        double size = parent;
+        for (const auto& [k, v] : properties(node)) {
+            const std::string_view val = trim(v);
+            if (k == "font-size") {
+                if (auto s = font_size(val, parent)) size = *s;
+            } else if (k == "font") {
+                TextCtx t;
+                t.font.size = size;
+                apply_font_shorthand(val, t, parent);
+                size = t.font.size;
+            }
+        }
+        return font_size_cache.emplace(node.internal_object(), size).first->second;
+    }
+
     void apply_style(const pugi::xml_node& node, Style& st) {
+        const double font_size = font_size_of(node);
+        const double diag = std::sqrt((st.viewport_w * st.viewport_w + st.viewport_h * st.viewport_h) / 2);
         // `color` first so that currentColor in the same element resolves to it.
         for (const auto& [k, v] : properties(node)) {
             if (k == "color") {
@@ -331,7 +368,7 @@ public:
             } else if (k == "stroke-opacity") {
                 if (auto o = parse_opacity(val)) st.stroke_opacity = *o;
             } else if (k == "stroke-width") {
-                if (auto l = parse_length(val, 100)) {
+                if (auto l = parse_length(val, diag, font_size)) {
                     if (*l >= 0) st.stroke_style.width = *l;
                 }
             } else if (k == "stroke-linecap") {
@@ -353,7 +390,7 @@ public:
                         if (pos >= list.size()) break;
                         std::size_t end = list.find(' ', pos);
                         if (end == std::string::npos) end = list.size();
-                        auto l = parse_length(std::string_view(list).substr(pos, end - pos), 100);
+                        auto l = parse_length(std::string_view(list).substr(pos, end - pos), diag, font_size);
                         if (!l || *l < 0) { ok = false; break; }
                         st.stroke_style.dashes.push_back(*l);
                         pos = end;
@@ -393,7 +430,7 @@ public:
                 if (val == "visible") st.visible = true;
                 else if (val == "hidden" || val == "collapse") st.visible = false;
             } else if (k == "stroke-dashoffset") {
-                if (auto l = parse_length(val, 100)) st.stroke_style.dash_offset = *l;
+                if (auto l = parse_length(val, diag, font_size)) st.stroke_style.dash_offset = *l;
             }
         }
     }
@@ -401,7 +438,7 @@ public:
     double length_attr(const pugi::xml_node& n, const char* name, double percent_of, double fallback = 0) {
         const char* v = n.attribute(name).value();
         if (!*v) return fallback;
-        auto l = parse_length(v, percent_of);
+        auto l = parse_length(v, percent_of, font_size_of(n));
         if (!l) {
             warn(std::string("invalid ") + name + " '" + v + "' on <" + n.name() + ">");
             return fallback;
@@ -1344,6 +1381,8 @@ public:
             name == "radialGradient" || name == "symbol" || name == "marker" || name == "filter")
             return;
         Style cst = st;
+        cst.viewport_w = vw;
+        cst.viewport_h = vh;
         apply_style(child, cst);
         for (const auto& [k, v] : properties(child))
             if (k == "display" && trim(v) == "none") return;
@@ -2367,6 +2406,8 @@ SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options
     reader.index_ids(root);
     reader.read_style_sheets(root);
     Style st;
+    st.viewport_w = vw;
+    st.viewport_h = vh;
     reader.apply_style(root, st);
     Affine root_m = view;
     if (const char* t = root.attribute("transform").value(); *t) root_m = view * parse_svg_transform(t);
