@@ -243,7 +243,9 @@ public:
         const auto cached = property_cache.find(node.internal_object());
         if (cached != property_cache.end()) return cached->second;
         Properties props;
-        for (const pugi::xml_attribute& a : node.attributes()) props.emplace_back(a.name(), a.value());
+        // `marker` is a shorthand property of CSS only, not a presentation attribute.
+        for (const pugi::xml_attribute& a : node.attributes())
+            if (std::string_view(a.name()) != "marker") props.emplace_back(a.name(), a.value());
         std::vector<const css::Rule*> matched;
         for (const css::Rule& r : sheet.rules)
             if (css::matches(r.selector, node)) matched.push_back(&r);
@@ -1540,7 +1542,10 @@ public:
             st.opacity = cst.stroke_opacity * opacity;
             stroke_item = std::move(st);
         }
-        const bool markable = name == "path" || name == "line" || name == "polyline" || name == "polygon";
+        // SVG 2 draws markers on every shape: a rect, circle or ellipse has the vertices of its path
+        // (the corners, or the ends of its quarter arcs, starting at the right of a circle).
+        const bool markable = name == "path" || name == "line" || name == "polyline" || name == "polygon" ||
+                              name == "rect" || name == "circle" || name == "ellipse";
         for (int part : cst.paint_order) {
             if (part == 0 && fill_item) items.push_back(std::move(*fill_item));
             if (part == 1 && stroke_item) items.push_back(std::move(*stroke_item));
@@ -1630,6 +1635,14 @@ public:
         }
     }
 
+    // The overflow `n` sets itself ("inherit" included), empty when it sets none.
+    std::string own_overflow(const pugi::xml_node& n) {
+        std::string out;
+        for (const auto& [k, v] : properties(n))
+            if (k == "overflow") out = std::string(trim(v));
+        return out;
+    }
+
     void emit_marker(const pugi::xml_node& marker, const Style& st, const Affine& at, double vw, double vh, int depth) {
         double scale = 1;
         if (std::string_view(marker.attribute("markerUnits").value()) != "userSpaceOnUse") scale = st.stroke_style.width;
@@ -1646,9 +1659,13 @@ public:
         const Point ref = vbt.apply({length_attr(marker, "refX", nvw), length_attr(marker, "refY", nvh)});
         const Affine box = at * Affine::scale(scale) * Affine::translate(-ref.x, -ref.y);
         const Affine content_m = box * vbt;
-        std::string overflow;
-        for (const auto& [k, v] : properties(marker))
-            if (k == "overflow") overflow = std::string(trim(v));
+        // overflow: hidden unless set (the user agent style of marker); `inherit` takes the
+        // parent's computed value: what it sets, or the initial value visible when it sets none.
+        std::string overflow = own_overflow(marker);
+        for (pugi::xml_node a = marker.parent(); overflow == "inherit"; a = a.parent()) {
+            overflow = a && a.type() == pugi::node_element ? own_overflow(a) : "";
+            if (overflow.empty()) overflow = "visible";
+        }
         const bool clip = !(overflow == "visible" || overflow == "auto");
         active_refs.push_back(marker);
         Style mst;
