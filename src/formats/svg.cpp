@@ -41,7 +41,8 @@ namespace {
 struct PatternTile;
 
 struct Item {
-    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask, SvgImage, BeginFilter, EndFilter } kind = Fill;
+    // Bounds: a path never drawn that counts in bounding boxes (a hidden or fully transparent element).
+    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask, SvgImage, BeginFilter, EndFilter, Bounds } kind = Fill;
     bool luminance = false;  // BeginMask: luminance (true) or alpha mask
     BlendMode blend = BlendMode::Normal;  // BeginLayer: mix-blend-mode
     Path path;          // user space
@@ -966,7 +967,7 @@ public:
             const Item& it = items[i];
             if (it.kind == Item::BeginClip || it.kind == Item::BeginMask) ++hidden;
             else if (it.kind == Item::EndMask) --hidden;
-            else if (hidden == 0 && (it.kind == Item::Fill || it.kind == Item::Stroke)) {
+            else if (hidden == 0 && (it.kind == Item::Fill || it.kind == Item::Stroke || it.kind == Item::Bounds)) {
                 const Rect b = transform_bounds(*inv * it.transform, it.path.bounds());
                 box = box ? box->united(b) : b;
             }
@@ -1401,7 +1402,21 @@ public:
         for (const auto& [k, v] : properties(child))
             if (k == "opacity")
                 if (auto ov = parse_opacity(v)) opacity = *ov;
-        if (opacity <= 0) return;
+        if (opacity <= 0) {
+            // Not drawn, but it still counts in its group's bounding box: its content's box.
+            const std::size_t first = items.size();
+            content(child, cst, cm, vw, vh, depth, 1.0);
+            const std::optional<Rect> box = items_bbox(first, cm);
+            items.resize(first);
+            if (box) {
+                Item b;
+                b.kind = Item::Bounds;
+                b.path.add_rect(*box);
+                b.transform = cm;
+                items.push_back(std::move(b));
+            }
+            return;
+        }
         bool clip_missing = false, mask_missing = false;
         const pugi::xml_node clip = reference(child, "clip-path", "clipPath", clip_missing);
         const pugi::xml_node mask = reference(child, "mask", "mask", mask_missing);
@@ -1522,7 +1537,15 @@ public:
             return;
         }
         if (p->empty()) return;
-        if (!cst.visible) return;
+        if (!cst.visible) {
+            // Hidden shapes are not drawn but still count in their group's bounding box.
+            Item b;
+            b.kind = Item::Bounds;
+            b.path = std::move(*p);
+            b.transform = cm;
+            items.push_back(std::move(b));
+            return;
+        }
         // A line has no interior; a polyline fills like a polygon (closed implicitly).
         std::optional<Item> fill_item, stroke_item;
         if (Item f; name != "line" && resolve_paint(cst.fill, *p, vw, vh, f)) {
@@ -2504,6 +2527,8 @@ void render_items(const std::vector<Item>& items, Canvas& canvas, const Affine& 
                 continue;
             case Item::SvgImage:
                 if (it.svg_image) it.svg_image->render(cur(), base * it.transform);
+                continue;
+            case Item::Bounds:
                 continue;
             case Item::Fill:
             case Item::Stroke: break;
