@@ -88,3 +88,30 @@ TEST_CASE("svg marker: overflow inherit takes the parent's value, visible when t
                               "<rect x='-4' y='-4' width='12' height='12' fill='green'/></marker>" + path);
     CHECK(plain.pixel(15, 15).a == 0);
 }
+
+TEST_CASE("svg marker: context-fill with a paint server uses the marked shape's box and user space", "[svg][marker]") {
+    // An 8 x 8 marker square filled with context-fill at each vertex of a 40 x 1 strip.
+    const std::string marker =
+        "<marker id='m' markerUnits='userSpaceOnUse' markerWidth='8' markerHeight='8' refX='4' refY='4'>"
+        "<rect width='8' height='8' fill='context-fill'/></marker>";
+    const std::string strip = "d='M 0 20 L 40 20 L 40 21 L 0 21 Z' marker-start='url(#m)' marker-mid='url(#m)'/>";
+    // objectBoundingBox gradient: black on the left half of the strip's box (x < 20), green on the
+    // right half. The marker at x = 0 is all black, the one at x = 40 all green (with the marker's
+    // own box each would be half black, half green).
+    const Pixmap grad = draw("<linearGradient id='g'><stop offset='0.5' stop-color='black'/>"
+                             "<stop offset='0.5' stop-color='green'/></linearGradient>" +
+                             marker + "<path fill='url(#g)' " + strip);
+    CHECK(grad.pixel(1, 17) == PremulPixel{0, 0, 0, 255});
+    CHECK(grad.pixel(3, 17) == PremulPixel{0, 0, 0, 255});
+    CHECK(grad.pixel(37, 17) == kGreen);
+    CHECK(grad.pixel(38, 17) == kGreen);
+    // userSpaceOnUse pattern in the strip's user space: green for x mod 20 < 10, black otherwise.
+    // Around x = 40 the pixels 36..39 are black (marker space would give green at 36..39).
+    const Pixmap patt = draw("<pattern id='p' patternUnits='userSpaceOnUse' width='20' height='40'>"
+                             "<rect width='20' height='40' fill='black'/><rect width='10' height='40' fill='green'/></pattern>" +
+                             marker + "<path fill='url(#p)' " + strip);
+    CHECK(patt.pixel(37, 17) == PremulPixel{0, 0, 0, 255});
+    CHECK(patt.pixel(38, 17) == PremulPixel{0, 0, 0, 255});
+    CHECK(patt.pixel(1, 17) == kGreen);
+    CHECK(patt.pixel(3, 17) == kGreen);
+}

@@ -57,6 +57,15 @@ struct Item {
     std::shared_ptr<const std::vector<filter::FilterGraph>> filters;  // EndFilter: applied in order, in the user space of `transform`
 };
 
+// The element a context-fill or context-stroke paint comes from (the shape a marker is drawn on,
+// or a use element): a paint server is resolved for its bounding box (the bounds of `path`) in its
+// user space (`transform`: that space -> document pixels; vw x vh its viewport).
+struct ContextElement {
+    Path path;
+    Affine transform;
+    double vw = 100, vh = 100;
+};
+
 // A fill or stroke as specified: none, a colour, or a paint server (url(#id)) with its fallback.
 struct PaintRef {
     enum Kind { None, Solid, Server } kind = None;
@@ -64,6 +73,7 @@ struct PaintRef {
     std::string id;                    // Server: the referenced element's id
     Kind fallback = None;              // Server: what to paint when the reference is unusable
     Color fallback_color = Color::black();
+    std::shared_ptr<const ContextElement> context;  // Server: set when the paint is context-fill/-stroke
     static PaintRef solid(Color c) { PaintRef p; p.kind = Solid; p.color = c; return p; }
 };
 
@@ -532,6 +542,24 @@ public:
 
     // Sets the colour or shader of `it` for `ref` drawn on `path` (user space, for
     // objectBoundingBox units); false when nothing is to be painted.
+    // resolve_paint for an element drawn with `cm` (its user space -> document pixels): a context
+    // paint server is resolved for the context element, in its user space, then mapped into ours.
+    bool resolve_paint(const PaintRef& ref, const Path& path, const Affine& cm, double vw, double vh, Item& it) {
+        if (ref.kind != PaintRef::Server || !ref.context) return resolve_paint(ref, path, vw, vh, it);
+        const ContextElement& ctx = *ref.context;
+        if (!resolve_paint(ref, ctx.path, ctx.vw, ctx.vh, it)) return false;
+        const auto inv = cm.inverse();
+        if (!inv) return false;
+        const Affine rel = *inv * ctx.transform;  // context user space -> this element's user space
+        if (it.shader) it.shader = std::make_shared<const Shader>(it.shader->transformed(rel));
+        if (it.pattern) {
+            auto tile = std::make_shared<PatternTile>(*it.pattern);
+            tile->transform = rel * tile->transform;
+            it.pattern = std::move(tile);
+        }
+        return true;
+    }
+
     bool resolve_paint(const PaintRef& ref, const Path& path, double vw, double vh, Item& it) {
         if (ref.kind == PaintRef::None) return false;
         if (ref.kind == PaintRef::Solid) {
@@ -1548,7 +1576,7 @@ public:
         }
         // A line has no interior; a polyline fills like a polygon (closed implicitly).
         std::optional<Item> fill_item, stroke_item;
-        if (Item f; name != "line" && resolve_paint(cst.fill, *p, vw, vh, f)) {
+        if (Item f; name != "line" && resolve_paint(cst.fill, *p, cm, vw, vh, f)) {
             f.kind = Item::Fill;
             f.path = *p;
             f.transform = cm;
@@ -1557,7 +1585,7 @@ public:
             fill_item = std::move(f);
         }
         const Path path_copy = *p;
-        if (Item st; cst.stroke_style.width > 0 && resolve_paint(cst.stroke, *p, vw, vh, st)) {
+        if (Item st; cst.stroke_style.width > 0 && resolve_paint(cst.stroke, *p, cm, vw, vh, st)) {
             st.kind = Item::Stroke;
             st.stroke = cst.stroke_style;
             st.path = std::move(*p);
@@ -1628,6 +1656,7 @@ public:
                            },
                            segment, close});
         if (vs.empty()) return;
+        std::shared_ptr<const ContextElement> context;  // the marked shape, for context-fill/-stroke
         for (std::size_t i = 0; i < vs.size(); ++i) {
             const std::string& id = i == 0 ? st.marker_start : i + 1 == vs.size() ? st.marker_end : st.marker_mid;
             if (id.empty()) continue;
@@ -1654,7 +1683,8 @@ public:
                 else if (o.size() > 4 && o.substr(o.size() - 4) == "turn") { o.remove_suffix(4); unit = 2 * kPi; }
                 if (auto n = parse_number(o)) angle = *n * unit;
             }
-            emit_marker(marker, st, cm * Affine::translate(v.p.x, v.p.y) * Affine::rotate(angle), vw, vh, depth);
+            if (!context) context = std::make_shared<const ContextElement>(ContextElement{path, cm, vw, vh});
+            emit_marker(marker, st, context, cm * Affine::translate(v.p.x, v.p.y) * Affine::rotate(angle), vw, vh, depth);
         }
     }
 
@@ -1666,7 +1696,15 @@ public:
         return out;
     }
 
-    void emit_marker(const pugi::xml_node& marker, const Style& st, const Affine& at, double vw, double vh, int depth) {
+    // `paint` as the context paint of an element drawn with `context`: a paint server keeps the
+    // context element it already has (a context paint passed on), or takes `context`.
+    static PaintRef context_paint(PaintRef paint, const std::shared_ptr<const ContextElement>& context) {
+        if (paint.kind == PaintRef::Server && !paint.context) paint.context = context;
+        return paint;
+    }
+
+    void emit_marker(const pugi::xml_node& marker, const Style& st, const std::shared_ptr<const ContextElement>& context,
+                     const Affine& at, double vw, double vh, int depth) {
         double scale = 1;
         if (std::string_view(marker.attribute("markerUnits").value()) != "userSpaceOnUse") scale = st.stroke_style.width;
         if (!(scale > 0)) return;
@@ -1692,8 +1730,8 @@ public:
         const bool clip = !(overflow == "visible" || overflow == "auto");
         active_refs.push_back(marker);
         Style mst;
-        mst.context_fill = st.fill;
-        mst.context_stroke = st.stroke;
+        mst.context_fill = context_paint(st.fill, context);
+        mst.context_stroke = context_paint(st.stroke, context);
         apply_style(marker, mst);
         items.push_back(layer_item(Item::BeginLayer, 1));
         walk(marker, mst, content_m, nvw, nvh, depth + 1);
