@@ -938,7 +938,31 @@ public:
         ust.context_fill = st.fill;
         ust.context_stroke = st.stroke;
         const std::string_view tn = target.name();
-        if (tn == "symbol" || tn == "svg") {
+        const bool instance = tn == "symbol" || tn == "svg";
+        if ((st.fill.kind == PaintRef::Server && !st.fill.context) || (st.stroke.kind == PaintRef::Server && !st.stroke.context)) {
+            // The use element is the context element of context-fill and context-stroke: a paint
+            // server is resolved for its bounding box, in its user space (with x and y for an
+            // element; the use's own for a symbol or svg). The box is that of the content, taken
+            // from a first pass with solid context paints whose items are then dropped (its
+            // elements still count towards the expansion limit, which bounds the extra work).
+            auto context = std::make_shared<ContextElement>();
+            context->transform = instance ? m : m * Affine::translate(x, y);
+            context->vw = vw;
+            context->vh = vh;
+            const std::size_t first = items.size(), warned = warnings.size(), text_before = text_chars_total;
+            Style probe = st;
+            probe.fill = probe.stroke = PaintRef::solid(Color::black());
+            use_stack.pop_back();
+            use(u, probe, m, vw, vh, depth);
+            use_stack.push_back(u);
+            if (const std::optional<Rect> box = items_bbox(first, context->transform)) context->path.add_rect(*box);
+            items.resize(first);
+            warnings.resize(warned);
+            text_chars_total = text_before;
+            ust.context_fill = context_paint(st.fill, context);
+            ust.context_stroke = context_paint(st.stroke, context);
+        }
+        if (instance) {
             const pugi::xml_node size_from = u.attribute("width") ? u : target;
             const pugi::xml_node hsize_from = u.attribute("height") ? u : target;
             const double w = length_attr(size_from, "width", vw, vw), hh = length_attr(hsize_from, "height", vh, vh);
