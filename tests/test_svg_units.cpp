@@ -78,3 +78,13 @@ TEST_CASE("svg units: em and percent in stroke-dasharray and stroke-dashoffset",
     CHECK(inked(pct, 24, 5));
     CHECK(blank(pct, 26, 5));
 }
+
+TEST_CASE("svg units: em in a CSS filter function is the element's font-size", "[svg][units]") {
+    // font-size 20: the shadow of the 10 x 10 square moves by 1em = 20 (x 20..30), not 16.
+    const Pixmap pm = draw("<rect width='10' height='10' fill='black' font-size='20' filter='drop-shadow(black 1em 0 0)'/>");
+    CHECK(inked(pm, 5, 5));
+    CHECK(blank(pm, 18, 5));
+    CHECK(inked(pm, 21, 5));
+    CHECK(inked(pm, 29, 5));
+    CHECK(blank(pm, 31, 5));
+}

@@ -87,12 +87,24 @@ struct PatternTile {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// A path that counts in bounding boxes without being drawn.
+Item bounds_item(Path path, const Affine& transform) {
+    Item it;
+    it.kind = Item::Bounds;
+    it.path = std::move(path);
+    it.transform = transform;
+    return it;
+}
+
 Item layer_item(Item::Kind kind, double opacity) {
     Item it;
     it.kind = kind;
     it.opacity = opacity;
     return it;
 }
+
+// The font size where no element sets one: resvg's default, the size the text engine starts from.
+constexpr double kDefaultFontSize = 12;
 
 struct Style {
     PaintRef fill = PaintRef::solid(Color::black());
@@ -111,6 +123,7 @@ struct Style {
     // The nearest viewport's size in user units: percentages of stroke-width, stroke-dasharray and
     // stroke-dashoffset are of its normalised diagonal sqrt((w^2 + h^2) / 2).
     double viewport_w = 100, viewport_h = 100;
+    double font_size = kDefaultFontSize;  // the element's computed font-size (em in filter functions)
 };
 
 std::string_view trim(std::string_view s) {
@@ -118,9 +131,6 @@ std::string_view trim(std::string_view s) {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
     return s;
 }
-
-// The font size where no element sets one: resvg's default, the size the text engine starts from.
-constexpr double kDefaultFontSize = 12;
 
 // A length with an optional unit; percentages resolve against `percent_of`, em against
 // `font_size` and ex against half of it (as resvg: no x-height from the font). nullopt when invalid.
@@ -356,6 +366,7 @@ public:
 
     void apply_style(const pugi::xml_node& node, Style& st) {
         const double font_size = font_size_of(node);
+        st.font_size = font_size;
         const double diag = std::sqrt((st.viewport_w * st.viewport_w + st.viewport_h * st.viewport_h) / 2);
         // `color` first so that currentColor in the same element resolves to it.
         for (const auto& [k, v] : properties(node)) {
@@ -724,7 +735,7 @@ public:
         env.property = [this](const pugi::xml_node& n, const std::string& k) { return own_property(n, k); };
         env.inherited = [this](const pugi::xml_node& n, const std::string& k) { return inherited(n, k); };
         env.lookup = [this](std::string_view id) { return lookup(id); };
-        env.length = [](std::string_view t, double pct) { return parse_length(t, pct); };
+        env.length = [fs = st.font_size](std::string_view t, double pct) { return parse_length(t, pct, fs); };
         env.color = [](std::string_view t) { return parse_color(t); };
         env.vw = vw;
         env.vh = vh;
@@ -1460,13 +1471,7 @@ public:
             content(child, cst, cm, vw, vh, depth, 1.0);
             const std::optional<Rect> box = items_bbox(first, cm);
             items.resize(first);
-            if (box) {
-                Item b;
-                b.kind = Item::Bounds;
-                b.path.add_rect(*box);
-                b.transform = cm;
-                items.push_back(std::move(b));
-            }
+            if (box) items.push_back(bounds_item(Path().add_rect(*box), cm));
             return;
         }
         bool clip_missing = false, mask_missing = false;
@@ -1591,11 +1596,7 @@ public:
         if (p->empty()) return;
         if (!cst.visible) {
             // Hidden shapes are not drawn but still count in their group's bounding box.
-            Item b;
-            b.kind = Item::Bounds;
-            b.path = std::move(*p);
-            b.transform = cm;
-            items.push_back(std::move(b));
+            items.push_back(bounds_item(std::move(*p), cm));
             return;
         }
         // A line has no interior; a polyline fills like a polygon (closed implicitly).
