@@ -110,3 +110,19 @@ TEST_CASE("svg: hidden and fully transparent children still count in the group's
     CHECK(control.pixel(25, 20) == PremulPixel{0, 0, 0, 255});
     CHECK(control.pixel(35, 20).a == 0);
 }
+
+TEST_CASE("svg: opacity, display and clip-path on the root svg apply to the whole document", "[svg][opacity]") {
+    auto root = [](const std::string& attrs, const std::string& body) {
+        return SvgDocument::parse("<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10' " + attrs + ">" + body +
+                                  "</svg>")
+            .render();
+    };
+    const std::string red = "<rect width='10' height='10' fill='red'/>";
+    // Group opacity 0.5: alpha round(255 x 0.5) = 128, premultiplied red 128.
+    CHECK(root("opacity='0.5'", red).pixel(5, 5) == PremulPixel{128, 0, 0, 128});
+    CHECK(root("display='none'", red).pixel(5, 5).a == 0);
+    const Pixmap clipped = root("clip-path='url(#c)'", "<clipPath id='c'><rect width='5' height='10'/></clipPath>" + red);
+    CHECK(clipped.pixel(2, 5) == PremulPixel{255, 0, 0, 255});
+    CHECK(clipped.pixel(7, 5).a == 0);
+    CHECK(root("", red).pixel(7, 5) == PremulPixel{255, 0, 0, 255});
+}

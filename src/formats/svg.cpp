@@ -1573,7 +1573,10 @@ public:
         if (container) {
             const bool layer = opacity < 1;
             if (layer) items.push_back(layer_item(Item::BeginLayer, opacity));
-            if (name == "svg") {
+            if (name == "svg" && child.parent() == child.root()) {
+                // The root svg: its viewport is the document's, already set up by the caller.
+                walk(child, cst, cm, vw, vh, depth + 1);
+            } else if (name == "svg") {
                 const double w = length_attr(child, "width", vw, vw), h = length_attr(child, "height", vh, vh);
                 viewport(child, cst, cm, length_attr(child, "x", vw), length_attr(child, "y", vh), w, h, depth, false);
             } else if (name == "use") {
@@ -2508,13 +2511,9 @@ SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options
     reader.options = options;
     reader.index_ids(root);
     reader.read_style_sheets(root);
-    Style st;
-    st.viewport_w = vw;
-    st.viewport_h = vh;
-    reader.apply_style(root, st);
-    Affine root_m = view;
-    if (const char* t = root.attribute("transform").value(); *t) root_m = view * parse_svg_transform(t);
-    reader.walk(root, st, root_m, vw, vh, 1);
+    // The root goes through the element path like any group: its transform, display, opacity,
+    // clip-path, mask, filter and blending apply to the whole document.
+    reader.element(root, Style(), view, vw, vh, 0);
     impl->items = std::move(reader.items);
     impl->warnings.insert(impl->warnings.end(), reader.warnings.begin(), reader.warnings.end());
     return SvgDocument(std::move(impl));
