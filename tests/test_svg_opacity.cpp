@@ -89,3 +89,40 @@ TEST_CASE("svg: group opacity composites the group once, overlaps do not add up"
                 "<g opacity='0.5'><g opacity='0.5'><rect width='10' height='10' fill='#0000ff'/></g></g>");
     CHECK(pm.pixel(5, 5) == PremulPixel{191, 191, 255, 255});
 }
+
+TEST_CASE("svg: hidden and fully transparent children still count in the group's bounding box", "[svg][opacity]") {
+    // An objectBoundingBox clip keeping the left half of the group's box. The visible child covers
+    // x 20..40; a hidden (or opacity 0) child widens the box to x 0..40, so the clip keeps x < 20
+    // only and the visible child disappears. Counted without the hidden child, the box would be
+    // x 20..40 and the clip would keep x 20..30.
+    const std::string clip = "<clipPath id='c' clipPathUnits='objectBoundingBox'><rect width='0.5' height='1'/></clipPath>";
+    const std::string visible = "<rect x='20' y='0' width='20' height='40' fill='black'/>";
+    for (const std::string hidden : {"visibility='hidden'", "visibility='collapse'", "opacity='0'"}) {
+        INFO(hidden);
+        const Pixmap pm = render(clip + "<g clip-path='url(#c)'><rect x='0' y='0' width='40' height='40' fill='red' " + hidden +
+                                     "/>" + visible + "</g>",
+                                 "40");
+        CHECK(pm.pixel(25, 20).a == 0);
+        CHECK(pm.pixel(5, 20).a == 0);  // the hidden child itself is not drawn
+    }
+    // The control: with the hidden child removed, the clip keeps the visible child's left half.
+    const Pixmap control = render(clip + "<g clip-path='url(#c)'>" + visible + "</g>", "40");
+    CHECK(control.pixel(25, 20) == PremulPixel{0, 0, 0, 255});
+    CHECK(control.pixel(35, 20).a == 0);
+}
+
+TEST_CASE("svg: opacity, display and clip-path on the root svg apply to the whole document", "[svg][opacity]") {
+    auto root = [](const std::string& attrs, const std::string& body) {
+        return SvgDocument::parse("<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10' " + attrs + ">" + body +
+                                  "</svg>")
+            .render();
+    };
+    const std::string red = "<rect width='10' height='10' fill='red'/>";
+    // Group opacity 0.5: alpha round(255 x 0.5) = 128, premultiplied red 128.
+    CHECK(root("opacity='0.5'", red).pixel(5, 5) == PremulPixel{128, 0, 0, 128});
+    CHECK(root("display='none'", red).pixel(5, 5).a == 0);
+    const Pixmap clipped = root("clip-path='url(#c)'", "<clipPath id='c'><rect width='5' height='10'/></clipPath>" + red);
+    CHECK(clipped.pixel(2, 5) == PremulPixel{255, 0, 0, 255});
+    CHECK(clipped.pixel(7, 5).a == 0);
+    CHECK(root("", red).pixel(7, 5) == PremulPixel{255, 0, 0, 255});
+}

@@ -105,3 +105,22 @@ TEST_CASE("svg use: an instanced symbol keeps its own opacity", "[svg][use]") {
     const Pixmap pm = doc("<symbol id='s' opacity='0.5'><rect width='20' height='20' fill='#000'/></symbol><use href='#s'/>").render();
     CHECK(std::abs(pm.pixel(10, 10).a - 128) <= 1);
 }
+
+TEST_CASE("svg use: context-fill with a paint server uses the use element's bounding box", "[svg][use]") {
+    // Two 10 x 10 squares 30 apart filled with context-fill; the use's box spans x 0..40, so the
+    // objectBoundingBox gradient (black below offset 0.5, green above) paints the left square all
+    // black and the right one all green. With each square's own box, both would be half and half.
+    const Pixmap pm = doc("<linearGradient id='g'><stop offset='0.5' stop-color='black'/>"
+                          "<stop offset='0.5' stop-color='green'/></linearGradient>"
+                          "<defs><g id='t'><rect width='10' height='10' fill='context-fill'/>"
+                          "<rect x='30' width='10' height='10' fill='context-fill'/></g></defs>"
+                          "<use href='#t' y='5' fill='url(#g)'/>",
+                          40, 20)
+                          .render();
+    CHECK(pm.pixel(1, 10) == PremulPixel{0, 0, 0, 255});
+    CHECK(pm.pixel(8, 10) == PremulPixel{0, 0, 0, 255});
+    CHECK(pm.pixel(31, 10) == kGreen);
+    CHECK(pm.pixel(38, 10) == kGreen);
+    CHECK(pm.pixel(20, 10).a == 0);
+    CHECK(pm.pixel(5, 2).a == 0);  // y = 5 moves the squares down
+}

@@ -60,6 +60,12 @@ public:
 
     Kind kind() const { return kind_; }
     const Affine& transform() const { return transform_; }
+    // This shader with `m` applied after its transform: gradient space -> m x transform().
+    Shader transformed(const Affine& m) const {
+        Shader s = *this;
+        s.transform_ = m * transform_;
+        return s;
+    }
     const std::vector<GradientStop>& stops() const { return stops_; }
     SpreadMethod spread() const { return spread_; }
 

@@ -41,7 +41,8 @@ namespace {
 struct PatternTile;
 
 struct Item {
-    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask, SvgImage, BeginFilter, EndFilter } kind = Fill;
+    // Bounds: a path never drawn that counts in bounding boxes (a hidden or fully transparent element).
+    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask, SvgImage, BeginFilter, EndFilter, Bounds } kind = Fill;
     bool luminance = false;  // BeginMask: luminance (true) or alpha mask
     BlendMode blend = BlendMode::Normal;  // BeginLayer: mix-blend-mode
     Path path;          // user space
@@ -56,6 +57,15 @@ struct Item {
     std::shared_ptr<const std::vector<filter::FilterGraph>> filters;  // EndFilter: applied in order, in the user space of `transform`
 };
 
+// The element a context-fill or context-stroke paint comes from (the shape a marker is drawn on,
+// or a use element): a paint server is resolved for its bounding box (the bounds of `path`) in its
+// user space (`transform`: that space -> document pixels; vw x vh its viewport).
+struct ContextElement {
+    Path path;
+    Affine transform;
+    double vw = 100, vh = 100;
+};
+
 // A fill or stroke as specified: none, a colour, or a paint server (url(#id)) with its fallback.
 struct PaintRef {
     enum Kind { None, Solid, Server } kind = None;
@@ -63,6 +73,7 @@ struct PaintRef {
     std::string id;                    // Server: the referenced element's id
     Kind fallback = None;              // Server: what to paint when the reference is unusable
     Color fallback_color = Color::black();
+    std::shared_ptr<const ContextElement> context;  // Server: set when the paint is context-fill/-stroke
     static PaintRef solid(Color c) { PaintRef p; p.kind = Solid; p.color = c; return p; }
 };
 
@@ -76,12 +87,24 @@ struct PatternTile {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// A path that counts in bounding boxes without being drawn.
+Item bounds_item(Path path, const Affine& transform) {
+    Item it;
+    it.kind = Item::Bounds;
+    it.path = std::move(path);
+    it.transform = transform;
+    return it;
+}
+
 Item layer_item(Item::Kind kind, double opacity) {
     Item it;
     it.kind = kind;
     it.opacity = opacity;
     return it;
 }
+
+// The font size where no element sets one: resvg's default, the size the text engine starts from.
+constexpr double kDefaultFontSize = 12;
 
 struct Style {
     PaintRef fill = PaintRef::solid(Color::black());
@@ -97,6 +120,10 @@ struct Style {
     // What context-fill and context-stroke name: the fill and stroke of the use element or of the
     // shape a marker is drawn on (none outside those).
     PaintRef context_fill, context_stroke;
+    // The nearest viewport's size in user units: percentages of stroke-width, stroke-dasharray and
+    // stroke-dashoffset are of its normalised diagonal sqrt((w^2 + h^2) / 2).
+    double viewport_w = 100, viewport_h = 100;
+    double font_size = kDefaultFontSize;  // the element's computed font-size (em in filter functions)
 };
 
 std::string_view trim(std::string_view s) {
@@ -105,8 +132,9 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-// A length with an optional unit; percentages resolve against `percent_of`. nullopt when invalid.
-std::optional<double> parse_length(std::string_view text, double percent_of) {
+// A length with an optional unit; percentages resolve against `percent_of`, em against
+// `font_size` and ex against half of it (as resvg: no x-height from the font). nullopt when invalid.
+std::optional<double> parse_length(std::string_view text, double percent_of, double font_size) {
     text = trim(text);
     if (text.empty()) return std::nullopt;
     const char* b = text.data();
@@ -123,9 +151,14 @@ std::optional<double> parse_length(std::string_view text, double percent_of) {
     if (unit == "mm") return v * 96.0 / 25.4;
     if (unit == "cm") return v * 96.0 / 2.54;
     if (unit == "in") return v * 96.0;
-    if (unit == "em") return v * 16.0;
-    if (unit == "ex") return v * 8.0;
+    if (unit == "em") return v * font_size;
+    if (unit == "ex") return v * font_size / 2;
     return std::nullopt;
+}
+
+// A length where no element's font size is known (em and ex relative to a 16 px font).
+std::optional<double> parse_length(std::string_view text, double percent_of) {
+    return parse_length(text, percent_of, 16.0);
 }
 
 std::optional<double> parse_number(std::string_view text) {
@@ -231,7 +264,9 @@ public:
         const auto cached = property_cache.find(node.internal_object());
         if (cached != property_cache.end()) return cached->second;
         Properties props;
-        for (const pugi::xml_attribute& a : node.attributes()) props.emplace_back(a.name(), a.value());
+        // `marker` is a shorthand property of CSS only, not a presentation attribute.
+        for (const pugi::xml_attribute& a : node.attributes())
+            if (std::string_view(a.name()) != "marker") props.emplace_back(a.name(), a.value());
         std::vector<const css::Rule*> matched;
         for (const css::Rule& r : sheet.rules)
             if (css::matches(r.selector, node)) matched.push_back(&r);
@@ -306,7 +341,33 @@ public:
         else warn("invalid " + property + " '" + std::string(value) + "'");
     }
 
+    // The computed font-size of `node`: the font-size (or `font` shorthand) of its ancestors and
+    // itself applied outermost first, from kDefaultFontSize (em and ex relative to the parent's).
+    std::unordered_map<const void*, double> font_size_cache;
+    double font_size_of(const pugi::xml_node& node) {
+        if (!node || node.type() != pugi::node_element) return kDefaultFontSize;
+        const auto cached = font_size_cache.find(node.internal_object());
+        if (cached != font_size_cache.end()) return cached->second;
+        const double parent = font_size_of(node.parent());
+        double size = parent;
+        for (const auto& [k, v] : properties(node)) {
+            const std::string_view val = trim(v);
+            if (k == "font-size") {
+                if (auto s = font_size(val, parent)) size = *s;
+            } else if (k == "font") {
+                TextCtx t;
+                t.font.size = size;
+                apply_font_shorthand(val, t, parent);
+                size = t.font.size;
+            }
+        }
+        return font_size_cache.emplace(node.internal_object(), size).first->second;
+    }
+
     void apply_style(const pugi::xml_node& node, Style& st) {
+        const double font_size = font_size_of(node);
+        st.font_size = font_size;
+        const double diag = std::sqrt((st.viewport_w * st.viewport_w + st.viewport_h * st.viewport_h) / 2);
         // `color` first so that currentColor in the same element resolves to it.
         for (const auto& [k, v] : properties(node)) {
             if (k == "color") {
@@ -331,7 +392,7 @@ public:
             } else if (k == "stroke-opacity") {
                 if (auto o = parse_opacity(val)) st.stroke_opacity = *o;
             } else if (k == "stroke-width") {
-                if (auto l = parse_length(val, 100)) {
+                if (auto l = parse_length(val, diag, font_size)) {
                     if (*l >= 0) st.stroke_style.width = *l;
                 }
             } else if (k == "stroke-linecap") {
@@ -353,7 +414,7 @@ public:
                         if (pos >= list.size()) break;
                         std::size_t end = list.find(' ', pos);
                         if (end == std::string::npos) end = list.size();
-                        auto l = parse_length(std::string_view(list).substr(pos, end - pos), 100);
+                        auto l = parse_length(std::string_view(list).substr(pos, end - pos), diag, font_size);
                         if (!l || *l < 0) { ok = false; break; }
                         st.stroke_style.dashes.push_back(*l);
                         pos = end;
@@ -393,7 +454,7 @@ public:
                 if (val == "visible") st.visible = true;
                 else if (val == "hidden" || val == "collapse") st.visible = false;
             } else if (k == "stroke-dashoffset") {
-                if (auto l = parse_length(val, 100)) st.stroke_style.dash_offset = *l;
+                if (auto l = parse_length(val, diag, font_size)) st.stroke_style.dash_offset = *l;
             }
         }
     }
@@ -401,7 +462,7 @@ public:
     double length_attr(const pugi::xml_node& n, const char* name, double percent_of, double fallback = 0) {
         const char* v = n.attribute(name).value();
         if (!*v) return fallback;
-        auto l = parse_length(v, percent_of);
+        auto l = parse_length(v, percent_of, font_size_of(n));
         if (!l) {
             warn(std::string("invalid ") + name + " '" + v + "' on <" + n.name() + ">");
             return fallback;
@@ -492,6 +553,24 @@ public:
 
     // Sets the colour or shader of `it` for `ref` drawn on `path` (user space, for
     // objectBoundingBox units); false when nothing is to be painted.
+    // resolve_paint for an element drawn with `cm` (its user space -> document pixels): a context
+    // paint server is resolved for the context element, in its user space, then mapped into ours.
+    bool resolve_paint(const PaintRef& ref, const Path& path, const Affine& cm, double vw, double vh, Item& it) {
+        if (ref.kind != PaintRef::Server || !ref.context) return resolve_paint(ref, path, vw, vh, it);
+        const ContextElement& ctx = *ref.context;
+        if (!resolve_paint(ref, ctx.path, ctx.vw, ctx.vh, it)) return false;
+        const auto inv = cm.inverse();
+        if (!inv) return false;
+        const Affine rel = *inv * ctx.transform;  // context user space -> this element's user space
+        if (it.shader) it.shader = std::make_shared<const Shader>(it.shader->transformed(rel));
+        if (it.pattern) {
+            auto tile = std::make_shared<PatternTile>(*it.pattern);
+            tile->transform = rel * tile->transform;
+            it.pattern = std::move(tile);
+        }
+        return true;
+    }
+
     bool resolve_paint(const PaintRef& ref, const Path& path, double vw, double vh, Item& it) {
         if (ref.kind == PaintRef::None) return false;
         if (ref.kind == PaintRef::Solid) {
@@ -656,7 +735,7 @@ public:
         env.property = [this](const pugi::xml_node& n, const std::string& k) { return own_property(n, k); };
         env.inherited = [this](const pugi::xml_node& n, const std::string& k) { return inherited(n, k); };
         env.lookup = [this](std::string_view id) { return lookup(id); };
-        env.length = [](std::string_view t, double pct) { return parse_length(t, pct); };
+        env.length = [fs = st.font_size](std::string_view t, double pct) { return parse_length(t, pct, fs); };
         env.color = [](std::string_view t) { return parse_color(t); };
         env.vw = vw;
         env.vh = vh;
@@ -870,7 +949,31 @@ public:
         ust.context_fill = st.fill;
         ust.context_stroke = st.stroke;
         const std::string_view tn = target.name();
-        if (tn == "symbol" || tn == "svg") {
+        const bool instance = tn == "symbol" || tn == "svg";
+        if ((st.fill.kind == PaintRef::Server && !st.fill.context) || (st.stroke.kind == PaintRef::Server && !st.stroke.context)) {
+            // The use element is the context element of context-fill and context-stroke: a paint
+            // server is resolved for its bounding box, in its user space (with x and y for an
+            // element; the use's own for a symbol or svg). The box is that of the content, taken
+            // from a first pass with solid context paints whose items are then dropped (its
+            // elements still count towards the expansion limit, which bounds the extra work).
+            auto context = std::make_shared<ContextElement>();
+            context->transform = instance ? m : m * Affine::translate(x, y);
+            context->vw = vw;
+            context->vh = vh;
+            const std::size_t first = items.size(), warned = warnings.size(), text_before = text_chars_total;
+            Style probe = st;
+            probe.fill = probe.stroke = PaintRef::solid(Color::black());
+            use_stack.pop_back();
+            use(u, probe, m, vw, vh, depth);
+            use_stack.push_back(u);
+            if (const std::optional<Rect> box = items_bbox(first, context->transform)) context->path.add_rect(*box);
+            items.resize(first);
+            warnings.resize(warned);
+            text_chars_total = text_before;
+            ust.context_fill = context_paint(st.fill, context);
+            ust.context_stroke = context_paint(st.stroke, context);
+        }
+        if (instance) {
             const pugi::xml_node size_from = u.attribute("width") ? u : target;
             const pugi::xml_node hsize_from = u.attribute("height") ? u : target;
             const double w = length_attr(size_from, "width", vw, vw), hh = length_attr(hsize_from, "height", vh, vh);
@@ -927,7 +1030,7 @@ public:
             const Item& it = items[i];
             if (it.kind == Item::BeginClip || it.kind == Item::BeginMask) ++hidden;
             else if (it.kind == Item::EndMask) --hidden;
-            else if (hidden == 0 && (it.kind == Item::Fill || it.kind == Item::Stroke)) {
+            else if (hidden == 0 && (it.kind == Item::Fill || it.kind == Item::Stroke || it.kind == Item::Bounds)) {
                 const Rect b = transform_bounds(*inv * it.transform, it.path.bounds());
                 box = box ? box->united(b) : b;
             }
@@ -1347,6 +1450,8 @@ public:
             name == "radialGradient" || name == "symbol" || name == "marker" || name == "filter")
             return;
         Style cst = st;
+        cst.viewport_w = vw;
+        cst.viewport_h = vh;
         apply_style(child, cst);
         for (const auto& [k, v] : properties(child))
             if (k == "display" && trim(v) == "none") return;
@@ -1363,7 +1468,15 @@ public:
         for (const auto& [k, v] : properties(child))
             if (k == "opacity")
                 if (auto ov = parse_opacity(v)) opacity = *ov;
-        if (opacity <= 0) return;
+        if (opacity <= 0) {
+            // Not drawn, but it still counts in its group's bounding box: its content's box.
+            const std::size_t first = items.size();
+            content(child, cst, cm, vw, vh, depth, 1.0);
+            const std::optional<Rect> box = items_bbox(first, cm);
+            items.resize(first);
+            if (box) items.push_back(bounds_item(Path().add_rect(*box), cm));
+            return;
+        }
         bool clip_missing = false, mask_missing = false;
         const pugi::xml_node clip = reference(child, "clip-path", "clipPath", clip_missing);
         const pugi::xml_node mask = reference(child, "mask", "mask", mask_missing);
@@ -1463,7 +1576,10 @@ public:
         if (container) {
             const bool layer = opacity < 1;
             if (layer) items.push_back(layer_item(Item::BeginLayer, opacity));
-            if (name == "svg") {
+            if (name == "svg" && child.parent() == child.root()) {
+                // The root svg: its viewport is the document's, already set up by the caller.
+                walk(child, cst, cm, vw, vh, depth + 1);
+            } else if (name == "svg") {
                 const double w = length_attr(child, "width", vw, vw), h = length_attr(child, "height", vh, vh);
                 viewport(child, cst, cm, length_attr(child, "x", vw), length_attr(child, "y", vh), w, h, depth, false);
             } else if (name == "use") {
@@ -1484,10 +1600,14 @@ public:
             return;
         }
         if (p->empty()) return;
-        if (!cst.visible) return;
+        if (!cst.visible) {
+            // Hidden shapes are not drawn but still count in their group's bounding box.
+            items.push_back(bounds_item(std::move(*p), cm));
+            return;
+        }
         // A line has no interior; a polyline fills like a polygon (closed implicitly).
         std::optional<Item> fill_item, stroke_item;
-        if (Item f; name != "line" && resolve_paint(cst.fill, *p, vw, vh, f)) {
+        if (Item f; name != "line" && resolve_paint(cst.fill, *p, cm, vw, vh, f)) {
             f.kind = Item::Fill;
             f.path = *p;
             f.transform = cm;
@@ -1496,7 +1616,7 @@ public:
             fill_item = std::move(f);
         }
         const Path path_copy = *p;
-        if (Item st; cst.stroke_style.width > 0 && resolve_paint(cst.stroke, *p, vw, vh, st)) {
+        if (Item st; cst.stroke_style.width > 0 && resolve_paint(cst.stroke, *p, cm, vw, vh, st)) {
             st.kind = Item::Stroke;
             st.stroke = cst.stroke_style;
             st.path = std::move(*p);
@@ -1504,7 +1624,10 @@ public:
             st.opacity = cst.stroke_opacity * opacity;
             stroke_item = std::move(st);
         }
-        const bool markable = name == "path" || name == "line" || name == "polyline" || name == "polygon";
+        // SVG 2 draws markers on every shape: a rect, circle or ellipse has the vertices of its path
+        // (the corners, or the ends of its quarter arcs, starting at the right of a circle).
+        const bool markable = name == "path" || name == "line" || name == "polyline" || name == "polygon" ||
+                              name == "rect" || name == "circle" || name == "ellipse";
         for (int part : cst.paint_order) {
             if (part == 0 && fill_item) items.push_back(std::move(*fill_item));
             if (part == 1 && stroke_item) items.push_back(std::move(*stroke_item));
@@ -1564,6 +1687,7 @@ public:
                            },
                            segment, close});
         if (vs.empty()) return;
+        std::shared_ptr<const ContextElement> context;  // the marked shape, for context-fill/-stroke
         for (std::size_t i = 0; i < vs.size(); ++i) {
             const std::string& id = i == 0 ? st.marker_start : i + 1 == vs.size() ? st.marker_end : st.marker_mid;
             if (id.empty()) continue;
@@ -1590,11 +1714,28 @@ public:
                 else if (o.size() > 4 && o.substr(o.size() - 4) == "turn") { o.remove_suffix(4); unit = 2 * kPi; }
                 if (auto n = parse_number(o)) angle = *n * unit;
             }
-            emit_marker(marker, st, cm * Affine::translate(v.p.x, v.p.y) * Affine::rotate(angle), vw, vh, depth);
+            if (!context) context = std::make_shared<const ContextElement>(ContextElement{path, cm, vw, vh});
+            emit_marker(marker, st, context, cm * Affine::translate(v.p.x, v.p.y) * Affine::rotate(angle), vw, vh, depth);
         }
     }
 
-    void emit_marker(const pugi::xml_node& marker, const Style& st, const Affine& at, double vw, double vh, int depth) {
+    // The overflow `n` sets itself ("inherit" included), empty when it sets none.
+    std::string own_overflow(const pugi::xml_node& n) {
+        std::string out;
+        for (const auto& [k, v] : properties(n))
+            if (k == "overflow") out = std::string(trim(v));
+        return out;
+    }
+
+    // `paint` as the context paint of an element drawn with `context`: a paint server keeps the
+    // context element it already has (a context paint passed on), or takes `context`.
+    static PaintRef context_paint(PaintRef paint, const std::shared_ptr<const ContextElement>& context) {
+        if (paint.kind == PaintRef::Server && !paint.context) paint.context = context;
+        return paint;
+    }
+
+    void emit_marker(const pugi::xml_node& marker, const Style& st, const std::shared_ptr<const ContextElement>& context,
+                     const Affine& at, double vw, double vh, int depth) {
         double scale = 1;
         if (std::string_view(marker.attribute("markerUnits").value()) != "userSpaceOnUse") scale = st.stroke_style.width;
         if (!(scale > 0)) return;
@@ -1610,14 +1751,18 @@ public:
         const Point ref = vbt.apply({length_attr(marker, "refX", nvw), length_attr(marker, "refY", nvh)});
         const Affine box = at * Affine::scale(scale) * Affine::translate(-ref.x, -ref.y);
         const Affine content_m = box * vbt;
-        std::string overflow;
-        for (const auto& [k, v] : properties(marker))
-            if (k == "overflow") overflow = std::string(trim(v));
+        // overflow: hidden unless set (the user agent style of marker); `inherit` takes the
+        // parent's computed value: what it sets, or the initial value visible when it sets none.
+        std::string overflow = own_overflow(marker);
+        for (pugi::xml_node a = marker.parent(); overflow == "inherit"; a = a.parent()) {
+            overflow = a && a.type() == pugi::node_element ? own_overflow(a) : "";
+            if (overflow.empty()) overflow = "visible";
+        }
         const bool clip = !(overflow == "visible" || overflow == "auto");
         active_refs.push_back(marker);
         Style mst;
-        mst.context_fill = st.fill;
-        mst.context_stroke = st.stroke;
+        mst.context_fill = context_paint(st.fill, context);
+        mst.context_stroke = context_paint(st.stroke, context);
         apply_style(marker, mst);
         items.push_back(layer_item(Item::BeginLayer, 1));
         walk(marker, mst, content_m, nvw, nvh, depth + 1);
@@ -2369,11 +2514,9 @@ SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options
     reader.options = options;
     reader.index_ids(root);
     reader.read_style_sheets(root);
-    Style st;
-    reader.apply_style(root, st);
-    Affine root_m = view;
-    if (const char* t = root.attribute("transform").value(); *t) root_m = view * parse_svg_transform(t);
-    reader.walk(root, st, root_m, vw, vh, 1);
+    // The root goes through the element path like any group: its transform, display, opacity,
+    // clip-path, mask, filter and blending apply to the whole document.
+    reader.element(root, Style(), view, vw, vh, 0);
     impl->items = std::move(reader.items);
     impl->warnings.insert(impl->warnings.end(), reader.warnings.begin(), reader.warnings.end());
     return SvgDocument(std::move(impl));
@@ -2449,6 +2592,8 @@ void render_items(const std::vector<Item>& items, Canvas& canvas, const Affine& 
                 continue;
             case Item::SvgImage:
                 if (it.svg_image) it.svg_image->render(cur(), base * it.transform);
+                continue;
+            case Item::Bounds:
                 continue;
             case Item::Fill:
             case Item::Stroke: break;
