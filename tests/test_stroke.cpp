@@ -837,3 +837,27 @@ TEST_CASE("regression: a dash pattern too fine for its path is refused before an
     const double fine[] = {1, 1};
     CHECK_NOTHROW(dash(p, fine, 0));
 }
+
+TEST_CASE("regression: round joins at a huge width stop at the path size limit, not after gigabytes", "[stroke][regression]") {
+    // Found by fuzz_stroke in CI: at a width of 1e12 against a 0.05 px tolerance every round join
+    // takes up to 32,768 arc points (the cap of 65,536 per turn), and a 2000-segment zig-zag grew
+    // one contour's sides to a 2 GiB vector before the size limit was checked at its end. The
+    // limit is now checked as the sides grow (fuzz/regressions/stroke/round-joins-at-huge-width-*
+    // fails the replay's 1 GiB allocation limit without it).
+    Path p;
+    p.move_to(0, 0);
+    for (int i = 1; i <= 2000; ++i) p.line_to(i * 0.5, (i & 1) * 3.0);
+    StrokeStyle st;
+    st.width = 1e12;
+    st.join = LineJoin::Round;
+    try {
+        (void)stroke(p, st, Affine{}, 0.05);
+        FAIL("the outline was made");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::Limit);
+        CHECK_THAT(e.what(), Catch::Contains("path size limit"));
+    }
+    // The same path at an ordinary width strokes.
+    st.width = 2;
+    CHECK_FALSE(stroke(p, st, Affine{}, 0.05).empty());
+}

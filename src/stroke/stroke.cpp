@@ -105,6 +105,7 @@ private:
     void arc(std::vector<Point>& dst, Point c, Vec u, double sweep) {
         const int n = static_cast<int>(std::ceil(std::abs(sweep) / step_ - 1e-9));
         if (n <= 1) return;
+        check_size(static_cast<std::size_t>(n));
         const double a = sweep / n, ca = std::cos(a), sa = std::sin(a);
         Vec v = u;
         for (int k = 1; k < n; ++k) {
@@ -148,6 +149,7 @@ private:
 
     // Join at vertex v between the incoming direction d1 and the outgoing d2.
     void join(Point v, Vec d1, Vec d2, double l1, double l2) {
+        check_size(8);
         const double cr = d1.cross(d2), dt = d1.dot(d2);
         if (cr == 0 && dt > 0) {  // straight on
             left_.push_back(v + perp(d1) * h_);
@@ -197,6 +199,14 @@ private:
         inner.push_back(v - n1 * h_);
         inner.push_back(v);
         inner.push_back(v - n2 * h_);
+    }
+
+    // The outline grows by a contour's two sides before emit() sees them: a long contour of round
+    // joins at a fine step (a huge width against the tolerance) must fail as it passes the path
+    // size limit, not after gigabytes of points.
+    void check_size(std::size_t more) const {
+        if (total_ + left_.size() + right_.size() + more > limits::kMaxPathPoints)
+            throw Error(ErrorKind::Limit, "stroke: outline exceeds the path size limit");
     }
 
     void emit(const std::vector<Point>& pts) {
