@@ -923,6 +923,8 @@ public:
         else clipped(Rect::from_xywh(x, y, w, h), m, draw);
     }
 
+    bool measuring_use = false;  // inside the first pass that measures a use element's box
+
     void use(const pugi::xml_node& u, const Style& st, const Affine& m, double vw, double vh, int depth) {
         const char* h = href(u);
         const pugi::xml_node target = *h == '#' ? lookup(h + 1) : pugi::xml_node();
@@ -948,14 +950,22 @@ public:
         Style ust = st;
         ust.context_fill = st.fill;
         ust.context_stroke = st.stroke;
+        if (measuring_use) {
+            // Only geometry counts while measuring: context paint servers become solid.
+            if (ust.context_fill.kind == PaintRef::Server) ust.context_fill = PaintRef::solid(Color::black());
+            if (ust.context_stroke.kind == PaintRef::Server) ust.context_stroke = PaintRef::solid(Color::black());
+        }
         const std::string_view tn = target.name();
         const bool instance = tn == "symbol" || tn == "svg";
-        if ((st.fill.kind == PaintRef::Server && !st.fill.context) || (st.stroke.kind == PaintRef::Server && !st.stroke.context)) {
+        if (!measuring_use &&
+            ((st.fill.kind == PaintRef::Server && !st.fill.context) || (st.stroke.kind == PaintRef::Server && !st.stroke.context))) {
             // The use element is the context element of context-fill and context-stroke: a paint
             // server is resolved for its bounding box, in its user space (with x and y for an
             // element; the use's own for a symbol or svg). The box is that of the content, taken
-            // from a first pass with solid context paints whose items are then dropped (its
-            // elements still count towards the expansion limit, which bounds the extra work).
+            // from a first pass with solid context paints whose items are then dropped. Uses
+            // inside that pass are not measured themselves (only geometry matters there), so
+            // nested uses cost one extra pass each, not a doubling per level; the pass's elements
+            // count towards the expansion limit.
             auto context = std::make_shared<ContextElement>();
             context->transform = instance ? m : m * Affine::translate(x, y);
             context->vw = vw;
@@ -964,7 +974,14 @@ public:
             Style probe = st;
             probe.fill = probe.stroke = PaintRef::solid(Color::black());
             use_stack.pop_back();
-            use(u, probe, m, vw, vh, depth);
+            measuring_use = true;
+            try {
+                use(u, probe, m, vw, vh, depth);
+            } catch (...) {
+                measuring_use = false;
+                throw;
+            }
+            measuring_use = false;
             use_stack.push_back(u);
             if (const std::optional<Rect> box = items_bbox(first, context->transform)) context->path.add_rect(*box);
             items.resize(first);
