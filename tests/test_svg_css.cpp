@@ -71,3 +71,17 @@ TEST_CASE("css: a style sheet of 1 MB of garbage is read without error or hang",
     for (int i = 0; i < 60; ++i) body += "</g>";
     CHECK(draw(sel + "circle { fill: red }", body).pixel(5, 5) == kGreen);
 }
+
+TEST_CASE("css: mix-blend-mode and isolation are set by CSS only, not as presentation attributes", "[svg][css]") {
+    // Red multiplied onto opaque green (0, 128, 0) is black; drawn normally it stays red.
+    const std::string green = "<rect width='10' height='10' fill='green'/>";
+    const PremulPixel red{255, 0, 0, 255}, black{0, 0, 0, 255};
+    CHECK(draw("", green + "<rect width='10' height='10' fill='red' mix-blend-mode='multiply'/>").pixel(5, 5) == red);
+    CHECK(draw("", green + "<rect width='10' height='10' fill='red' style='mix-blend-mode: multiply'/>").pixel(5, 5) == black);
+    CHECK(draw(".m { mix-blend-mode: multiply }", green + "<rect width='10' height='10' fill='red' class='m'/>").pixel(5, 5) ==
+          black);
+    // An isolated group gives its multiplying child a transparent backdrop: the red stays red.
+    const std::string child = "><rect width='10' height='10' fill='red' style='mix-blend-mode: multiply'/></g>";
+    CHECK(draw("", green + "<g isolation='isolate'" + child).pixel(5, 5) == black);
+    CHECK(draw("", green + "<g style='isolation: isolate'" + child).pixel(5, 5) == red);
+}

@@ -264,9 +264,12 @@ public:
         const auto cached = property_cache.find(node.internal_object());
         if (cached != property_cache.end()) return cached->second;
         Properties props;
-        // `marker` is a shorthand property of CSS only, not a presentation attribute.
-        for (const pugi::xml_attribute& a : node.attributes())
-            if (std::string_view(a.name()) != "marker") props.emplace_back(a.name(), a.value());
+        // `marker`, `mix-blend-mode` and `isolation` are CSS properties without a presentation
+        // attribute (SVG 2): only style sheets and the style attribute set them.
+        for (const pugi::xml_attribute& a : node.attributes()) {
+            const std::string_view name = a.name();
+            if (name != "marker" && name != "mix-blend-mode" && name != "isolation") props.emplace_back(a.name(), a.value());
+        }
         std::vector<const css::Rule*> matched;
         for (const css::Rule& r : sheet.rules)
             if (css::matches(r.selector, node)) matched.push_back(&r);
