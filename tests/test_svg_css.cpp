@@ -88,3 +88,17 @@ TEST_CASE("css: rules past the 10,000th are ignored with a warning", "[svg][css]
     for (int i = 0; i < 9999; ++i) fewer += ".c" + std::to_string(i) + "{fill:blue}";
     CHECK(draw(fewer + tail, "<rect width='10' height='10' fill='green'/>").pixel(5, 5) == PremulPixel{255, 0, 0, 255});
 }
+
+TEST_CASE("css: mix-blend-mode and isolation are set by CSS only, not as presentation attributes", "[svg][css]") {
+    // Red multiplied onto opaque green (0, 128, 0) is black; drawn normally it stays red.
+    const std::string green = "<rect width='10' height='10' fill='green'/>";
+    const PremulPixel red{255, 0, 0, 255}, black{0, 0, 0, 255};
+    CHECK(draw("", green + "<rect width='10' height='10' fill='red' mix-blend-mode='multiply'/>").pixel(5, 5) == red);
+    CHECK(draw("", green + "<rect width='10' height='10' fill='red' style='mix-blend-mode: multiply'/>").pixel(5, 5) == black);
+    CHECK(draw(".m { mix-blend-mode: multiply }", green + "<rect width='10' height='10' fill='red' class='m'/>").pixel(5, 5) ==
+          black);
+    // An isolated group gives its multiplying child a transparent backdrop: the red stays red.
+    const std::string child = "><rect width='10' height='10' fill='red' style='mix-blend-mode: multiply'/></g>";
+    CHECK(draw("", green + "<g isolation='isolate'" + child).pixel(5, 5) == black);
+    CHECK(draw("", green + "<g style='isolation: isolate'" + child).pixel(5, 5) == red);
+}

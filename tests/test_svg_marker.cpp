@@ -101,17 +101,14 @@ TEST_CASE("svg marker: context-fill with a paint server uses the marked shape's 
     const Pixmap grad = draw("<linearGradient id='g'><stop offset='0.5' stop-color='black'/>"
                              "<stop offset='0.5' stop-color='green'/></linearGradient>" +
                              marker + "<path fill='url(#g)' " + strip);
-    CHECK(grad.pixel(1, 17) == PremulPixel{0, 0, 0, 255});
-    CHECK(grad.pixel(3, 17) == PremulPixel{0, 0, 0, 255});
-    CHECK(grad.pixel(37, 17) == kGreen);
-    CHECK(grad.pixel(38, 17) == kGreen);
+    const PremulPixel black{0, 0, 0, 255};
+    for (int x : {1, 3}) CHECK(grad.pixel(x, 17) == black);
+    for (int x : {37, 38}) CHECK(grad.pixel(x, 17) == kGreen);
     // userSpaceOnUse pattern in the strip's user space: green for x mod 20 < 10, black otherwise.
     // Around x = 40 the pixels 36..39 are black (marker space would give green at 36..39).
     const Pixmap patt = draw("<pattern id='p' patternUnits='userSpaceOnUse' width='20' height='40'>"
                              "<rect width='20' height='40' fill='black'/><rect width='10' height='40' fill='green'/></pattern>" +
                              marker + "<path fill='url(#p)' " + strip);
-    CHECK(patt.pixel(37, 17) == PremulPixel{0, 0, 0, 255});
-    CHECK(patt.pixel(38, 17) == PremulPixel{0, 0, 0, 255});
-    CHECK(patt.pixel(1, 17) == kGreen);
-    CHECK(patt.pixel(3, 17) == kGreen);
+    for (int x : {37, 38}) CHECK(patt.pixel(x, 17) == black);
+    for (int x : {1, 3}) CHECK(patt.pixel(x, 17) == kGreen);
 }

@@ -124,3 +124,18 @@ TEST_CASE("svg use: context-fill with a paint server uses the use element's boun
     CHECK(pm.pixel(20, 10).a == 0);
     CHECK(pm.pixel(5, 2).a == 0);  // y = 5 moves the squares down
 }
+
+TEST_CASE("svg use: 25 nested uses with a gradient fill draw, without an exponential measuring pass", "[svg][use]") {
+    // Each use measures its content's box for context-fill; uses met while measuring are not
+    // measured again, so this chain costs about 25^2 elements, not 2^25 (which would pass the
+    // 1,000,000-element limit and be refused).
+    std::string body = "<linearGradient id='g'><stop offset='0.5' stop-color='black'/><stop offset='0.5' stop-color='green'/>"
+                       "</linearGradient><defs><rect id='l0' width='20' height='10' fill='context-fill'/>";
+    for (int i = 1; i <= 25; ++i)
+        body += "<g id='l" + std::to_string(i) + "'><use href='#l" + std::to_string(i - 1) + "' fill='url(#g)'/></g>";
+    body += "</defs><use href='#l25' fill='url(#g)'/>";
+    const Pixmap pm = doc(body).render();
+    CHECK(pm.pixel(5, 5) == PremulPixel{0, 0, 0, 255});  // left half of the box: black
+    CHECK(pm.pixel(15, 5) == kGreen);
+    CHECK(pm.pixel(5, 15).a == 0);
+}

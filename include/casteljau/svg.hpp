@@ -9,9 +9,11 @@
 // width, height), symbol (viewBox, refX/refY), nested svg viewports clipped by overflow; paint
 // servers linearGradient and radialGradient (units, gradientTransform, spreadMethod, href
 // inheritance, stops) and pattern (a tile drawn at device resolution, repeated) drawn through the
-// paint stage's Shader; context-fill/context-stroke in use and markers; <style> sheets (src/formats/css.hpp)
+// paint stage's Shader; context-fill/context-stroke in use and markers (paint servers resolved for
+// the context element's box and user space); <style> sheets (src/formats/css.hpp)
 // with the cascade presentation attribute < sheet < style attribute and !important; clipPath and
-// mask (units, clip-rule, mask-type, nested), as exact-area coverage masks of layers; markers;
+// mask (units, clip-rule, mask-type, nested), as exact-area coverage masks of layers; markers
+// (on every shape, SVG 2); the root svg's own opacity, display, clip-path, mask and filter;
 // group opacity, mix-blend-mode and isolation; <image> (PNG, JPEG, SVG; see SvgOptions).
 // Filters: the filter property (url() lists and the CSS filter functions) with every filter
 // primitive, evaluated by the filter stage (casteljau/filter.hpp) in device pixels after the
@@ -21,7 +23,9 @@
 // stroked paths).
 // Cycles (use, gradient href, clip-path, mask, marker) are broken: the repeated reference is
 // skipped or the element is not drawn.
-// SVG coordinates: user units, y down, mapped to pixels by the viewBox transform.
+// SVG coordinates: user units, y down, mapped to pixels by the viewBox transform. Lengths: em and
+// ex are of the element's computed font-size (12 where none is set, ex = em / 2); percentages of
+// stroke-width and dashes are of the nearest viewport's diagonal sqrt((w^2 + h^2) / 2).
 // Limits: element nesting depth limits::kMaxNestingDepth, limits::kMaxSvgElements drawn elements
 // (use copies included), limits::kMaxSvgImageNesting; canvas size as for Pixmap.
 // Thread-safety: SvgDocument is an immutable value after parsing; render from any thread.

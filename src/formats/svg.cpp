@@ -264,9 +264,12 @@ public:
         const auto cached = property_cache.find(node.internal_object());
         if (cached != property_cache.end()) return cached->second;
         Properties props;
-        // `marker` is a shorthand property of CSS only, not a presentation attribute.
-        for (const pugi::xml_attribute& a : node.attributes())
-            if (std::string_view(a.name()) != "marker") props.emplace_back(a.name(), a.value());
+        // `marker`, `mix-blend-mode` and `isolation` are CSS properties without a presentation
+        // attribute (SVG 2): only style sheets and the style attribute set them.
+        for (const pugi::xml_attribute& a : node.attributes()) {
+            const std::string_view name = a.name();
+            if (name != "marker" && name != "mix-blend-mode" && name != "isolation") props.emplace_back(a.name(), a.value());
+        }
         std::vector<const css::Rule*> matched;
         for (const css::Rule& r : sheet.rules)
             if (css::matches(r.selector, node)) matched.push_back(&r);
@@ -923,6 +926,8 @@ public:
         else clipped(Rect::from_xywh(x, y, w, h), m, draw);
     }
 
+    bool measuring_use = false;  // inside the first pass that measures a use element's box
+
     void use(const pugi::xml_node& u, const Style& st, const Affine& m, double vw, double vh, int depth) {
         const char* h = href(u);
         const pugi::xml_node target = *h == '#' ? lookup(h + 1) : pugi::xml_node();
@@ -948,14 +953,22 @@ public:
         Style ust = st;
         ust.context_fill = st.fill;
         ust.context_stroke = st.stroke;
+        if (measuring_use) {
+            // Only geometry counts while measuring: context paint servers become solid.
+            if (ust.context_fill.kind == PaintRef::Server) ust.context_fill = PaintRef::solid(Color::black());
+            if (ust.context_stroke.kind == PaintRef::Server) ust.context_stroke = PaintRef::solid(Color::black());
+        }
         const std::string_view tn = target.name();
         const bool instance = tn == "symbol" || tn == "svg";
-        if ((st.fill.kind == PaintRef::Server && !st.fill.context) || (st.stroke.kind == PaintRef::Server && !st.stroke.context)) {
+        if (!measuring_use &&
+            ((st.fill.kind == PaintRef::Server && !st.fill.context) || (st.stroke.kind == PaintRef::Server && !st.stroke.context))) {
             // The use element is the context element of context-fill and context-stroke: a paint
             // server is resolved for its bounding box, in its user space (with x and y for an
             // element; the use's own for a symbol or svg). The box is that of the content, taken
-            // from a first pass with solid context paints whose items are then dropped (its
-            // elements still count towards the expansion limit, which bounds the extra work).
+            // from a first pass with solid context paints whose items are then dropped. Uses
+            // inside that pass are not measured themselves (only geometry matters there), so
+            // nested uses cost one extra pass each, not a doubling per level; the pass's elements
+            // count towards the expansion limit.
             auto context = std::make_shared<ContextElement>();
             context->transform = instance ? m : m * Affine::translate(x, y);
             context->vw = vw;
@@ -964,7 +977,14 @@ public:
             Style probe = st;
             probe.fill = probe.stroke = PaintRef::solid(Color::black());
             use_stack.pop_back();
-            use(u, probe, m, vw, vh, depth);
+            measuring_use = true;
+            try {
+                use(u, probe, m, vw, vh, depth);
+            } catch (...) {
+                measuring_use = false;
+                throw;
+            }
+            measuring_use = false;
             use_stack.push_back(u);
             if (const std::optional<Rect> box = items_bbox(first, context->transform)) context->path.add_rect(*box);
             items.resize(first);
