@@ -5,6 +5,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/seamless.hpp"
+#include "paint/pixel_math.hpp"
 
 namespace casteljau {
 
@@ -28,7 +29,7 @@ void AreaCompositor::clear() {
 
 namespace {
 
-inline std::uint8_t mul255(unsigned a, unsigned b) { return static_cast<std::uint8_t>((a * b + 127) / 255); }
+using pixel::mul_div255;
 
 struct AreaSink final : SpanSink {
     std::uint8_t* layer;
@@ -50,10 +51,10 @@ struct AreaSink final : SpanSink {
             // Two fills meeting at an edge whose rounded coverages fall one short of full.
             if (total > 0 && take + 1 == rem) take = rem;
             C[i] = static_cast<std::uint8_t>(total + take);
-            const unsigned na = std::min(255u, unsigned(L[3]) + mul255(take, c.a));
-            L[0] = static_cast<std::uint8_t>(std::min(na, unsigned(L[0]) + mul255(take, c.r)));
-            L[1] = static_cast<std::uint8_t>(std::min(na, unsigned(L[1]) + mul255(take, c.g)));
-            L[2] = static_cast<std::uint8_t>(std::min(na, unsigned(L[2]) + mul255(take, c.b)));
+            const unsigned na = std::min(255u, unsigned(L[3]) + mul_div255(take, c.a));
+            L[0] = static_cast<std::uint8_t>(std::min(na, unsigned(L[0]) + mul_div255(take, c.r)));
+            L[1] = static_cast<std::uint8_t>(std::min(na, unsigned(L[1]) + mul_div255(take, c.g)));
+            L[2] = static_cast<std::uint8_t>(std::min(na, unsigned(L[2]) + mul_div255(take, c.b)));
             L[3] = static_cast<std::uint8_t>(na);
         }
     }
@@ -83,21 +84,10 @@ void AreaCompositor::add(Rasterizer& raster, const Path& path, const FillOptions
 void AreaCompositor::composite_onto(Pixmap& dst) const {
     if (region_.x0 < 0 || region_.y0 < 0 || region_.x1 > dst.width() || region_.y1 > dst.height())
         throw Error(ErrorKind::InvalidArgument, "AreaCompositor::composite_onto: the target does not contain the region");
-    const int w = width();
-    for (int y = region_.y0; y < region_.y1; ++y) {
-        std::uint8_t* d = dst.row(y) + static_cast<std::size_t>(region_.x0) * 4;
-        const std::uint8_t* s = layer_.data() + static_cast<std::size_t>(y - region_.y0) * static_cast<std::size_t>(w) * 4;
-        for (int i = 0; i < w; ++i, d += 4, s += 4) {
-            const unsigned sa = s[3];
-            if (sa == 0) continue;
-            if (sa == 255) {
-                d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; d[3] = 255;
-                continue;
-            }
-            const unsigned inv = 255 - sa;
-            for (int k = 0; k < 4; ++k) d[k] = static_cast<std::uint8_t>(s[k] + mul255(d[k], inv));
-        }
-    }
+    const std::size_t row_bytes = static_cast<std::size_t>(width()) * 4;
+    for (int y = region_.y0; y < region_.y1; ++y)
+        composite_span_premul(dst.row(y) + static_cast<std::size_t>(region_.x0) * 4, width(), nullptr,
+                              layer_.data() + static_cast<std::size_t>(y - region_.y0) * row_bytes);
 }
 
 }  // namespace casteljau

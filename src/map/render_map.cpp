@@ -404,42 +404,35 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             std::reverse(order.begin(), order.end());
             std::size_t positions = 0;
             for (std::size_t i : order) positions += positions_of(data.features[i]);
-            if (positions <= kChunkPositions) {
-                // One chunk: each band is composited on its own, in a compositor of the band's
-                // size that its worker reuses (5 bytes per pixel of one band per thread, not of
-                // the image).
-                chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
-                    parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
-                        Rasterizer& raster = canvases[static_cast<std::size_t>(w)]->rasterizer();
-                        std::optional<AreaCompositor>& band = band_areas[static_cast<std::size_t>(w)];
-                        bool drew = false;
-                        for (const auto& d : chunk) {
-                            if (!d || !overlaps(d->box, bands[b])) continue;
-                            if (!drew) {
-                                if (band) band->reset(bands[b]);
-                                else band.emplace(bands[b]);
-                                drew = true;
-                            }
-                            band->add(raster, d->path, fo, d->color, layer.opacity, bands[b]);
-                        }
-                        if (drew) band->composite_onto(target);
-                    });
-                });
-            } else {
-                // Several chunks: every chunk adds to one compositor of the whole image.
+            // A layer that fits in one chunk is composited band by band, each band in a compositor
+            // of its size that the worker reuses (5 bytes per pixel of one band per thread, not of
+            // the image). Several chunks add up in one compositor of the whole image instead,
+            // composited once at the end.
+            const bool banded = positions <= kChunkPositions;
+            if (!banded) {
                 if (!area) area.emplace(frame.width, frame.height);
                 else area->clear();
-                bool drew = false;
-                chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
-                    parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
-                        Rasterizer& raster = canvases[static_cast<std::size_t>(w)]->rasterizer();
-                        for (const auto& d : chunk)
-                            if (d && overlaps(d->box, bands[b])) area->add(raster, d->path, fo, d->color, layer.opacity, bands[b]);
-                    });
-                    for (const auto& d : chunk) drew = drew || d.has_value();
-                });
-                if (drew) area->composite_onto(target);
             }
+            bool drew = false;
+            chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
+                parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
+                    Rasterizer& raster = canvases[static_cast<std::size_t>(w)]->rasterizer();
+                    AreaCompositor* into = banded ? nullptr : &*area;
+                    for (const auto& d : chunk) {
+                        if (!d || !overlaps(d->box, bands[b])) continue;
+                        if (!into) {
+                            std::optional<AreaCompositor>& band = band_areas[static_cast<std::size_t>(w)];
+                            if (band) band->reset(bands[b]);
+                            else band.emplace(bands[b]);
+                            into = &*band;
+                        }
+                        into->add(raster, d->path, fo, d->color, layer.opacity, bands[b]);
+                    }
+                    if (banded && into) into->composite_onto(target);
+                });
+                for (const auto& d : chunk) drew = drew || d.has_value();
+            });
+            if (!banded && drew) area->composite_onto(target);
             std::reverse(order.begin(), order.end());
         } else if (layer.fill) {
             chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {

@@ -158,7 +158,8 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
     // line, an upper bound.
     const double nd = static_cast<double>(n);
     const double pair_work = 0.5 * nd * nd;
-    bool dense = n > kMaxExactPieces || pair_work > sc.budget;
+    auto left = [&] { return std::max(0.0, sc.budget - sc.work); };
+    bool dense = n > kMaxExactPieces || pair_work > left();
     if (!dense) {
         // Pairwise crossings of the pieces cut the slabs too.
         for (std::size_t i = 0; i < n && !dense; ++i) {
@@ -175,25 +176,19 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
             }
             if (static_cast<double>(sc.breaks.size()) * nd > 4 * kMaxSlabWork) dense = true;
         }
-        sc.budget -= pair_work;
         sc.work += pair_work;
         std::sort(sc.breaks.begin(), sc.breaks.end());
         sc.breaks.erase(std::unique(sc.breaks.begin(), sc.breaks.end()), sc.breaks.end());
         const double slab_work = 2 * static_cast<double>(sc.breaks.size()) * nd;
-        if (slab_work > 2 * kMaxSlabWork || slab_work > sc.budget) dense = true;
-        else {
-            sc.budget -= slab_work;
-            sc.work += slab_work;
-        }
+        if (slab_work > 2 * kMaxSlabWork || slab_work > left()) dense = true;
+        else sc.work += slab_work;
     }
     int lines = kDenseRows;
     if (dense) {
-        lines = static_cast<int>(std::clamp(sc.budget / (2 * nd + 1), double{kMinDenseRows}, double{kDenseRows}));
-        sc.budget -= 2 * nd * lines;
+        lines = static_cast<int>(std::clamp(left() / (2 * nd + 1), double{kMinDenseRows}, double{kDenseRows}));
         sc.work += 2 * nd * lines;
         ++sc.dense_cells;
     }
-    sc.budget = std::max(sc.budget, 0.0);
     double sum_l = 0;
     // Both methods below go down the cell with an active list in x order: pieces enter in order of
     // their top end and leave past their bottom end, and an insertion sort restores the x order

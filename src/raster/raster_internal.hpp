@@ -43,10 +43,10 @@ struct ExactScratch {
     std::vector<std::uint32_t> order, live;  // the pieces by top end, and the active ones
     struct VCross { double y; int d; };       // a piece crossing the vertical through r
     std::vector<VCross> vcross;
-    // Work left for the exact cells of the current fill, in piece visits (see exact_cell.cpp);
-    // the engine sets it before each fill's exact cells.
+    // The work the exact cells of the current fill may spend, in piece visits (see
+    // exact_cell.cpp), and what they spent; the engine sets both before each fill's exact cells.
     double budget = 0;
-    double work = 0;              // piece visits spent, for RasterStats
+    double work = 0;
     std::size_t dense_cells = 0;  // cells given the dense method
 };
 
