@@ -3,8 +3,9 @@
 // doubles from a table of awkward values (0, -0, NaN, +/-inf, 1e300, 1e-300, 32769, ...) or as raw
 // 8-byte doubles, and handles from small pools of live objects (NULL when the pool is empty).
 // Image sizes above 256 are kept only when they exceed the canvas limit (so the limit error is
-// exercised without gigabyte allocations). Every object is destroyed at the end, so the leak
-// checker sees anything the API forgets.
+// exercised without gigabyte allocations). One call sets the process-wide limits from random bytes
+// and a random struct size; they are reset after each input. Every object is destroyed at the
+// end, so the leak checker sees anything the API forgets.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -89,7 +90,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::vector<casteljau_stroke*> strokes;
     int steps = 0;
     while (!r.done() && ++steps < 400) {
-        const std::uint8_t op = r.byte() % 32;
+        const std::uint8_t op = r.byte() % 33;
         casteljau_status s = CASTELJAU_OK;
         switch (op) {
             case 0: if (paths.size() < 8) paths.push_back(casteljau_path_create()); break;
@@ -201,6 +202,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 }
                 break;
             }
+            case 32: {
+                // Random bytes over the limits in force, applied with a random size: refused
+                // whole or applied whole, and every later call checks against them.
+                casteljau_limits l;
+                s = casteljau_limits_get(&l, sizeof l);
+                auto* raw = reinterpret_cast<std::uint8_t*>(&l);
+                for (int n = r.byte() % 8; n > 0; --n) raw[r.byte() % sizeof l] = r.byte();
+                const std::size_t size = (r.byte() & 1) ? sizeof l : r.byte() % (sizeof l + 2);
+                s = casteljau_limits_set(&l, size);
+                break;
+            }
         }
         // Every failure leaves a message.
         if (s != CASTELJAU_OK && casteljau_last_error()[0] == '\0') __builtin_trap();
@@ -211,5 +223,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (casteljau_path* p : paths) casteljau_path_destroy(p);
     for (casteljau_paint* p : paints) casteljau_paint_destroy(p);
     for (casteljau_stroke* st : strokes) casteljau_stroke_destroy(st);
+    casteljau_limits_reset();
     return 0;
 }

@@ -2,7 +2,7 @@
 // "Limits"), in bounded time and memory: a 1e9 standard deviation (clamped to
 // limits::kMaxFilterDeviation device pixels), a 1e6 x 1e6 filter region (clipped to the canvas), a
 // 1000 x 1000 convolution kernel (Error(Limit)), feImage referencing its own filter (the filter is
-// ignored), too many primitives, a region above limits::kMaxFilterPixels, and the CLI leaving no
+// ignored), too many primitives, a region above Limits::filter_pixels, and the CLI leaving no
 // output file behind.
 #include <catch2/catch.hpp>
 
@@ -12,6 +12,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/filter.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/svg.hpp"
 #include "cli_util.hpp"
 #include "svg_test_util.hpp"
@@ -75,18 +76,18 @@ TEST_CASE("filter limits: feImage referencing its own filtered element draws the
     CHECK(chain.width() == 40);
 }
 
-TEST_CASE("filter limits: more than kMaxFilterPrimitives primitives is Error(Limit)", "[filter][limits]") {
+TEST_CASE("filter limits: more than Limits::filter_primitives primitives is Error(Limit)", "[filter][limits]") {
     std::string prims;
-    for (std::size_t i = 0; i <= limits::kMaxFilterPrimitives; ++i) prims += "<feOffset/>";
+    for (std::size_t i = 0; i <= current_limits().filter_primitives; ++i) prims += "<feOffset/>";
     CHECK_THROWS_AS(render("<filter id='f'>" + prims + "</filter><rect width='20' height='20' filter='url(#f)'/>"), Error);
     filter::FilterGraph g;
     g.region = Rect::from_xywh(0, 0, 4, 4);
-    g.primitives.resize(limits::kMaxFilterPrimitives + 1);
+    g.primitives.resize(current_limits().filter_primitives + 1);
     Pixmap src(4, 4);
     CHECK_THROWS_AS(filter::apply_filter(g, Affine::identity(), src), Error);
 }
 
-TEST_CASE("filter limits: a region above kMaxFilterPixels is Error(Limit), an input naming a later result Error(InvalidData)", "[filter][limits]") {
+TEST_CASE("filter limits: a region above Limits::filter_pixels is Error(Limit), an input naming a later result Error(InvalidData)", "[filter][limits]") {
     Pixmap big(4200, 4100);
     filter::FilterGraph g;
     g.region = Rect::from_xywh(0, 0, 4200, 4100);

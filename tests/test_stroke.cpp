@@ -828,7 +828,7 @@ TEST_CASE("parse_line_cap and parse_line_join read the SVG names and refuse othe
 TEST_CASE("regression: a dash pattern too fine for its path is refused before any dash is made", "[stroke][regression]") {
     // Found by fuzz_stroke in CI: a 2000-segment path with a dash pattern of tiny values made
     // millions of dashes, each stroked and filled, past the fuzzer's 10 s timeout. The limit is
-    // now limits::kMaxDashes = 2^18 dashes per path, checked before dashing.
+    // now Limits::dashes = 2^18 dashes per path by default, checked before dashing.
     Path p;
     p.move_to(0, 0);
     for (int i = 1; i <= 2000; ++i) p.line_to(i * 0.5, (i & 1) * 3.0);

@@ -3,16 +3,16 @@
 // document's folder), each drawing nothing with a warning, never an error or a crash.
 #include <catch2/catch.hpp>
 
-#include <zlib.h>
-
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/svg.hpp"
 #include "cli_util.hpp"
+#include "svg_test_util.hpp"
 
 using namespace casteljau;
 using namespace casteljau::test;
@@ -83,24 +83,14 @@ TEST_CASE("svg image: relative files inside the folder load, everything else is 
 
 TEST_CASE("svg: an .svgz file (gzip) is read, a corrupt one is a clear error", "[svg][image]") {
     const std::string text = kHead + "<rect width='10' height='10' fill='green'/></svg>";
-    uLongf size = compressBound(static_cast<uLong>(text.size())) + 32;
-    std::vector<std::uint8_t> gz(size);
-    z_stream z{};
-    REQUIRE(deflateInit2(&z, 9, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY) == Z_OK);
-    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
-    z.avail_in = static_cast<uInt>(text.size());
-    z.next_out = gz.data();
-    z.avail_out = static_cast<uInt>(gz.size());
-    REQUIRE(deflate(&z, Z_FINISH) == Z_STREAM_END);
-    gz.resize(z.total_out);
-    deflateEnd(&z);
-    const std::string_view bytes(reinterpret_cast<const char*>(gz.data()), gz.size());
+    const std::string gz = casteljau::test::gzip(text);
+    const std::string_view bytes = gz;
     CHECK(SvgDocument::parse(bytes).render().pixel(5, 5) == kGreen);
     CHECK_THROWS_AS(SvgDocument::parse(bytes.substr(0, bytes.size() / 2)), Error);
 }
 
 TEST_CASE("svg image: SVG images nest 4 deep, a fifth level is skipped with a warning", "[svg][image][limits]") {
-    static_assert(limits::kMaxSvgImageNesting == 4);
+    REQUIRE(current_limits().svg_image_nesting == 4);
     const fs::path d = scratch_dir("svg-image-nesting");
     fs::create_directories(d);
     // level0.svg draws level1.svg as an image, and so on; the deepest level paints green.

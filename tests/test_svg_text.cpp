@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "casteljau/limits.hpp"
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
 #include "casteljau/font.hpp"
@@ -302,7 +303,7 @@ TEST_CASE("SVG text: a 1 MB text node is cut at the documented limit with a warn
     const std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><text x='0' y='50' "
                             "font-family='DejaVu Sans' font-size='10'>" + body + "</text></svg>";
     const SvgDocument doc = SvgDocument::parse(svg, repo_options());
-    CHECK(has_warning(doc, std::to_string(limits::kMaxSvgTextChars) + " characters"));
+    CHECK(has_warning(doc, std::to_string(Limits{}.svg_text_chars) + " characters"));
     CHECK(ink(doc.render()) > 0);
 }
 
@@ -372,5 +373,5 @@ TEST_CASE("SVG text: the character budget counts every use copy of a text", "[sv
     for (int i = 0; i < 200; ++i) svg += "<use xlink:href='#t'/>";
     svg += "</svg>";
     const SvgDocument doc = SvgDocument::parse(svg, repo_options());
-    CHECK(has_warning(doc, std::to_string(limits::kMaxSvgTextChars) + " characters"));
+    CHECK(has_warning(doc, std::to_string(Limits{}.svg_text_chars) + " characters"));
 }

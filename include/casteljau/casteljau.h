@@ -219,6 +219,45 @@ CASTELJAU_API casteljau_status casteljau_canvas_begin_layer(casteljau_canvas* ca
                                                             casteljau_blend_mode mode);
 CASTELJAU_API casteljau_status casteljau_canvas_end_layer(casteljau_canvas* canvas);
 
+/* Resource limits (casteljau::Limits in casteljau/limits.hpp, which gives each field's default
+ * and ceiling; README.md "Limits" lists them): process-wide bounds on what untrusted input may
+ * make the library allocate or compute. Read them with casteljau_limits_get, change fields, apply
+ * them with casteljau_limits_set; each check reads the value in force when it runs, so set them
+ * before drawing. `size` is sizeof(casteljau_limits) as the caller was compiled: later versions
+ * only append fields, and a caller built against an older header gets and sets its prefix. */
+typedef struct casteljau_limits {
+    int32_t canvas_dimension;      /* pixels per side of an image or canvas */
+    int64_t canvas_pixels;         /* pixels of an image or canvas */
+    uint64_t path_points;          /* points of one path (parsed or stroked) */
+    uint64_t flattened_segments;   /* line segments of one fill after flattening */
+    int32_t nesting_depth;         /* SVG elements, patterns, GeoJSON collections, canvas layers */
+    uint64_t svg_elements;         /* elements drawn per SVG document, each use copy counted */
+    int32_t svg_image_nesting;     /* SVG documents drawn as images inside SVG documents (0: none) */
+    uint64_t svgz_bytes;           /* inflated size of an .svgz */
+    uint64_t css_rules;            /* style sheet rules per SVG document */
+    uint64_t svg_text_chars;       /* characters of SVG text per document */
+    int64_t filter_pixels;         /* pixels of one filter region */
+    uint64_t filter_primitives;    /* primitives in one filter */
+    uint64_t map_positions;        /* positions in one GeoJSON or TopoJSON map */
+    uint64_t dashes;               /* dashes produced from one path */
+    uint64_t font_file_bytes;      /* size of a font file */
+    uint64_t png_chunk_bytes;      /* inflated text or ICC chunk of a PNG */
+    uint32_t png_ancillary_chunks; /* text, sPLT and unknown chunks kept per PNG */
+    uint64_t jpeg_working_memory;  /* libjpeg's memory besides the image */
+    uint64_t canvas_save_depth;    /* casteljau_canvas_save nesting */
+    uint64_t text_bytes;           /* UTF-8 bytes of one text drawn */
+} casteljau_limits;
+
+/* Fills the first `size` bytes of *out with the limits in force. INVALID_ARGUMENT for NULL or a
+ * size that is 0, larger than this library's casteljau_limits or cuts a field in two. */
+CASTELJAU_API casteljau_status casteljau_limits_get(casteljau_limits* out, size_t size);
+/* Applies every field within the first `size` bytes of *limits (the others keep their values).
+ * INVALID_ARGUMENT, changing nothing, for a bad pointer or size as above or a field below its
+ * minimum (1; 0 for svg_image_nesting) or above its ceiling; the message names the field. */
+CASTELJAU_API casteljau_status casteljau_limits_set(const casteljau_limits* limits, size_t size);
+/* Restores every default. */
+CASTELJAU_API void casteljau_limits_reset(void);
+
 #ifdef __cplusplus
 }
 #endif

@@ -15,6 +15,7 @@
 #include "casteljau/error.hpp"
 #include "casteljau/filter.hpp"
 #include "casteljau/flatten.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/geometry.hpp"
 #include "casteljau/nurbs.hpp"
 #include "casteljau/paint.hpp"

@@ -29,8 +29,6 @@
 namespace casteljau {
 
 namespace limits {
-inline constexpr long long kMaxFilterPixels = 1LL << 24;   // pixels of one filter region (after clipping to the canvas)
-inline constexpr std::size_t kMaxFilterPrimitives = 1000;  // primitives in one filter
 inline constexpr int kMaxConvolveOrder = 64;               // feConvolveMatrix order per axis
 inline constexpr double kMaxFilterDeviation = 1000;        // blur standard deviation in device pixels (larger is clamped)
 inline constexpr long long kMaxConvolveWork = 1LL << 31;   // feConvolveMatrix kernel taps x region pixels
@@ -119,8 +117,8 @@ struct FilterGraph {
 
 // Evaluates `graph` on `source` (the element drawn alone on a transparent pixmap of the canvas's
 // size, device pixels) and returns the filtered result as a pixmap of the same size, transparent
-// outside the filter region. Throws Error(Limit) above limits::kMaxFilterPixels or
-// kMaxFilterPrimitives, Error(InvalidData) for an input naming a later primitive.
+// outside the filter region. Throws Error(Limit) above Limits::filter_pixels (the region
+// after clipping to the canvas) or Limits::filter_primitives (casteljau/limits.hpp), Error(InvalidData) for an input naming a later primitive.
 Pixmap apply_filter(const FilterGraph& graph, const Affine& to_device, const Pixmap& source);
 
 }  // namespace filter

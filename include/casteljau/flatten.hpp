@@ -49,7 +49,7 @@ struct Polyline {
 };
 
 // Flattens `path` mapped by `m` into `out` (cleared first). Throws Error(InvalidData) for a
-// non-finite point or transform, Error(Limit) beyond limits::kMaxFlattenedSegments. With
+// non-finite point or transform, Error(Limit) beyond Limits::flattened_segments. With
 // FlattenMode::AreaBalanced the result is exactly the polygon Rasterizer::fill scan-converts.
 void flatten(const Path& path, const Affine& m, double tolerance, Polyline& out,
              FlattenMode mode = FlattenMode::Chords);

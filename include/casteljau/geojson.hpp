@@ -18,7 +18,8 @@
 //   (longitudes in (180, 360] are accepted for data stored in 0..360); a polygon ring with fewer
 //   than 4 positions or whose last position differs from its first (RFC 7946 3.1.6); a TopoJSON
 //   arc index out of range.
-// - Limit: nesting deeper than limits::kMaxNestingDepth, or more than kMaxMapPositions positions.
+// - Limit: collections nested deeper than Limits::nesting_depth, or more than Limits::map_positions
+//   positions (casteljau/limits.hpp).
 // TopoJSON rings that quantization collapsed below 4 positions enclose no area and are dropped
 // (with the holes of a collapsed exterior); a GeoJSON ring below 4 positions is an error.
 // Tolerated (RFC 7946 allows them): empty geometries and empty collections, `null` geometry and
@@ -36,10 +37,6 @@
 #include "casteljau/geometry.hpp"
 
 namespace casteljau {
-
-namespace limits {
-inline constexpr std::size_t kMaxMapPositions = 1u << 27;  // positions in one map (2 GiB of doubles)
-}  // namespace limits
 
 enum class GeometryKind : std::uint8_t { Points, Lines, Polygons };
 

@@ -53,8 +53,8 @@ class Pixmap {
 public:
     Pixmap() = default;
     // A transparent pixmap that owns its pixels (stride = 4 x width).
-    // Throws Error(Limit) when width or height exceeds limits::kMaxCanvasDimension or the area
-    // exceeds limits::kMaxCanvasPixels, Error(InvalidArgument) when either is below 1.
+    // Throws Error(Limit) when width or height exceeds Limits::canvas_dimension or the area
+    // exceeds Limits::canvas_pixels (casteljau/limits.hpp), Error(InvalidArgument) when either is below 1.
     Pixmap(int width, int height);
     // A pixmap over caller-owned premultiplied RGBA8 memory (a window's back buffer, a texture):
     // `pixels` holds `height` rows of `stride` bytes, stride >= 4 x width. Nothing is copied or

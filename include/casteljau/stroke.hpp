@@ -36,8 +36,8 @@
 //   relative amount of at most t / 3r).
 // Errors: a non-finite point, transform or style value (width, miter_limit, dash values, offset)
 // throws Error(InvalidData); a tolerance that is not a positive finite number throws
-// Error(InvalidArgument); more than limits::kMaxDashes dashes or limits::kMaxPathPoints output
-// points throws Error(Limit).
+// Error(InvalidArgument); more than Limits::dashes dashes from one path or Limits::path_points
+// output points (casteljau/limits.hpp) throws Error(Limit).
 // Thread-safety: free functions without shared state.
 #pragma once
 
@@ -50,10 +50,6 @@
 #include "casteljau/path.hpp"
 
 namespace casteljau {
-
-namespace limits {
-inline constexpr std::size_t kMaxDashes = 1u << 18;  // dashes produced from one path (each is stroked and filled)
-}  // namespace limits
 
 enum class LineCap { Butt, Round, Square };
 enum class LineJoin { Miter, MiterClip, Round, Bevel };  // SVG 2 names

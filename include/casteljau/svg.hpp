@@ -26,8 +26,12 @@
 // SVG coordinates: user units, y down, mapped to pixels by the viewBox transform. Lengths: em and
 // ex are of the element's computed font-size (12 where none is set, ex = em / 2); percentages of
 // stroke-width and dashes are of the nearest viewport's diagonal sqrt((w^2 + h^2) / 2).
-// Limits: element nesting depth limits::kMaxNestingDepth, limits::kMaxSvgElements drawn elements
-// (use copies included), limits::kMaxSvgImageNesting; canvas size as for Pixmap.
+// Limits (casteljau/limits.hpp, read once per document): Limits::nesting_depth, svg_elements
+// (elements drawn or expanded, every copy a <use> makes counted: past it, a "use bomb", the
+// document is refused with Error(Limit)), svg_image_nesting (SVG images inside SVG images; deeper
+// ones are skipped with a warning), svgz_bytes (inflated .svgz), css_rules (the rest ignored with
+// a warning), svg_text_chars (characters laid out per document after white-space processing, use
+// copies counted; the rest dropped with a warning), the filter limits; canvas size as for Pixmap.
 // Thread-safety: SvgDocument is an immutable value after parsing; render from any thread.
 #pragma once
 
@@ -45,19 +49,6 @@
 namespace casteljau {
 
 namespace limits {
-// Elements drawn or expanded while reading one document, counting every copy a <use> makes:
-// nested uses can multiply to billions (a "use bomb"); past this the document is refused with
-// Error(Limit).
-inline constexpr std::size_t kMaxSvgElements = 1'000'000;
-// SVG documents drawn as <image> inside SVG documents, nested at most this deep (deeper ones are
-// skipped with a warning: an image that shows itself stops there).
-inline constexpr int kMaxSvgImageNesting = 4;
-// Decompressed size of an .svgz.
-inline constexpr std::size_t kMaxSvgzBytes = 64u << 20;
-// Characters of text laid out per document (after white-space processing, each use copy counted
-// again); the rest is dropped with a warning. Bounds the outline memory of huge text (about 1 KB
-// of path per glyph).
-inline constexpr std::size_t kMaxSvgTextChars = 100'000;
 // Largest font-size (user units) drawn; text with a larger one is skipped with a warning.
 inline constexpr double kMaxSvgFontSize = 1e5;
 }  // namespace limits
@@ -75,7 +66,7 @@ inline constexpr double kMaxSvgFontSize = 1e5;
 struct SvgOptions {
     std::string base_dir;
     std::string resource_root;
-    int nesting = 0;  // SVG images nest at most limits::kMaxSvgImageNesting deep
+    int nesting = 0;  // SVG images nest at most Limits::svg_image_nesting deep
     std::vector<std::string> font_dirs, font_files;
     bool system_fonts = true;
     std::string font_family = "Times New Roman";

@@ -17,7 +17,7 @@
 //   "path data column 17: expected a number after 'L', found 'x'" (columns count characters from 1;
 //   multi-byte UTF-8 counts as one). A number that overflows double (1e400), or a relative or
 //   reflected coordinate that does, is "path data column N: number out of range". More points than
-//   SvgPathOptions::max_points (limits::kMaxPathPoints) is Error(ErrorKind::Limit).
+//   SvgPathOptions::max_points (at most Limits::path_points) is Error(ErrorKind::Limit).
 //   SVG itself asks renderers to draw the path up to the first error; parse_svg_path_lenient does
 //   that (the result holds every segment that was complete before the error, as browsers and resvg
 //   draw it) and reports the message instead of throwing.
@@ -38,7 +38,7 @@ namespace casteljau {
 struct SvgPathOptions {
     // Maximum distance in path units between an arc's cubics and the true ellipse (casteljau/arc.hpp).
     double arc_tolerance = kDefaultArcTolerance;
-    // Points the resulting Path may hold; values above limits::kMaxPathPoints count as that limit.
+    // Points the resulting Path may hold; values above Limits::path_points count as that limit.
     std::size_t max_points = limits::kMaxPathPoints;
 };
 

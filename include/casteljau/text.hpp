@@ -42,10 +42,6 @@
 
 namespace casteljau {
 
-namespace limits {
-inline constexpr std::size_t kMaxTextBytes = 16u << 20;  // UTF-8 bytes accepted by layout_text
-}  // namespace limits
-
 // Flattening tolerance (px) used for glyphs. Chosen by measurement (tests/test_font.cpp, "Glyph
 // coverage ..."): against FreeType's rendering of the same outlines supersampled 4-16x, the worst
 // per-glyph mean difference (over the ink box) at 9-200 px is ~5-8/255 at 0.05 px (small dots and
@@ -104,7 +100,7 @@ struct TextLayout {
 
 // Shapes and lays out `utf8` with a fallback chain of fonts (fonts[0] first; at least one). Throws
 // Error(InvalidArgument) for no fonts, a bad size or line height, Error(Limit) past
-// limits::kMaxTextBytes or limits::kMaxFontSize, Error(Parse) for a bad feature or script string.
+// Limits::text_bytes or limits::kMaxFontSize, Error(Parse) for a bad feature or script string.
 // Empty text gives a layout with no lines.
 TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts, const TextStyle& style);
 TextLayout layout_text(std::string_view utf8, const Font& font, const TextStyle& style);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "canvas/layer.hpp"
 #include "paint/pipeline.hpp"
 #include "paint/pixel_math.hpp"
@@ -15,7 +16,6 @@ namespace casteljau {
 
 namespace {
 
-constexpr std::size_t kMaxSaveDepth = 1024;
 
 // Multiplies a row of coverage by the clip mask (when there is one) into `out`; returns the row
 // to use.
@@ -60,7 +60,8 @@ Canvas::Canvas(std::uint8_t* pixels, int width, int height, std::size_t stride)
 }
 
 void Canvas::save() {
-    if (stack_.size() >= kMaxSaveDepth) throw Error(ErrorKind::Limit, "Canvas::save nested more than 1024 deep");
+    if (const std::size_t max_depth = current_limits().canvas_save_depth; stack_.size() >= max_depth)
+        throw Error(ErrorKind::Limit, "Canvas::save nested more than " + std::to_string(max_depth) + " deep");
     stack_.push_back(state_);
 }
 

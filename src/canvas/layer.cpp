@@ -10,6 +10,7 @@
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "canvas/layer.hpp"
 #include "paint/pixel_math.hpp"
 
@@ -78,8 +79,8 @@ void Canvas::restore() {
 }
 
 void Canvas::begin_layer(double opacity, BlendMode mode) {
-    if (layers_.size() >= static_cast<std::size_t>(limits::kMaxNestingDepth))
-        throw Error(ErrorKind::Limit, "Canvas::begin_layer nested more than " + std::to_string(limits::kMaxNestingDepth) + " deep");
+    if (const int max_depth = current_limits().nesting_depth; layers_.size() >= static_cast<std::size_t>(max_depth))
+        throw Error(ErrorKind::Limit, "Canvas::begin_layer nested more than " + std::to_string(max_depth) + " deep");
     save();
     auto layer = std::make_unique<Layer>(Layer{Pixmap(width(), height()), std::isfinite(opacity) ? std::clamp(opacity, 0.0, 1.0) : 0.0,
                                                mode, stack_.size()});

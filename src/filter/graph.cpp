@@ -7,6 +7,7 @@
 #include <string>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "filter/image.hpp"
 
 namespace casteljau::filter {
@@ -65,15 +66,16 @@ Img drop_shadow(const Img& in, const detail::Context& ctx, const Primitive& p) {
 }  // namespace
 
 Pixmap apply_filter(const FilterGraph& graph, const Affine& to_device, const Pixmap& source) {
-    if (graph.primitives.size() > limits::kMaxFilterPrimitives)
+    const Limits lim = current_limits();
+    if (graph.primitives.size() > lim.filter_primitives)
         throw Error(ErrorKind::Limit, "filter has " + std::to_string(graph.primitives.size()) + " primitives (limit " +
-                                          std::to_string(limits::kMaxFilterPrimitives) + ")");
+                                          std::to_string(lim.filter_primitives) + ")");
     Pixmap out(source.width(), source.height());
     const IRect r = device_rect(to_device, graph.region, source.width(), source.height());
     if (r.empty() || graph.primitives.empty()) return out;
-    if (static_cast<long long>(r.width()) * r.height() > limits::kMaxFilterPixels)
+    if (static_cast<long long>(r.width()) * r.height() > lim.filter_pixels)
         throw Error(ErrorKind::Limit, "filter region of " + std::to_string(r.width()) + " x " + std::to_string(r.height()) +
-                                          " pixels exceeds the limit of " + std::to_string(limits::kMaxFilterPixels) + " pixels");
+                                          " pixels exceeds the limit of " + std::to_string(lim.filter_pixels) + " pixels");
     detail::Context ctx;
     ctx.w = r.width();
     ctx.h = r.height();

@@ -4,6 +4,8 @@
 // declaration.
 #include "formats/css.hpp"
 
+#include "casteljau/limits.hpp"
+
 #include <algorithm>
 #include <cctype>
 
@@ -221,6 +223,7 @@ std::vector<Declaration> parse_declarations(std::string_view text) {
 }
 
 void parse_stylesheet(std::string_view text, StyleSheet& sheet) {
+    const std::size_t max_rules = current_limits().css_rules;
     const std::string clean = strip_comments(text);
     const std::string_view s = clean;
     std::size_t i = 0;
@@ -255,7 +258,7 @@ void parse_stylesheet(std::string_view text, StyleSheet& sheet) {
             const std::string_view one = prelude.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
             Selector sel;
             if (parse_selector(one, sel)) {
-                if (sheet.rules.size() >= kMaxRules) {
+                if (sheet.rules.size() >= max_rules) {
                     sheet.truncated = true;
                     return;
                 }

@@ -5,8 +5,8 @@
 // :first-child, joined by descendant (whitespace) and child (>) combinators; declarations with
 // !important; comments. At-rules (@media, @import, @font-face, ...) are skipped whole. Anything
 // it cannot read is skipped up to the next `;` or `}` (CSS error recovery), so garbage never
-// fails a document. Limits: kMaxRules rules (the rest are ignored, with a warning) and selectors
-// of at most kMaxCompounds compounds.
+// fails a document. Limits: Limits::css_rules rules (the rest are ignored, with a warning) and
+// selectors of at most kMaxCompounds compounds.
 // Thread-safety: values; parse and match from any thread.
 #pragma once
 
@@ -18,7 +18,6 @@
 
 namespace casteljau::css {
 
-inline constexpr std::size_t kMaxRules = 10000;
 inline constexpr std::size_t kMaxCompounds = 32;
 
 struct Declaration {
@@ -52,7 +51,7 @@ struct Rule {
 
 struct StyleSheet {
     std::vector<Rule> rules;
-    bool truncated = false;  // more than kMaxRules rules: the rest were ignored
+    bool truncated = false;  // more than Limits::css_rules rules: the rest were ignored
 };
 
 // Appends the rules of `text` to `sheet` (one rule per selector of a group).

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/geojson.hpp"
 #include "formats/geojson_build.hpp"
 #include "formats/json_support.hpp"
@@ -30,8 +31,8 @@ void check_ring(const Geometry& g, std::size_t begin, const json::JsonPath& path
 
 void count_positions(std::size_t& total, std::size_t add, const json::JsonPath& path) {
     total += add;
-    if (total > limits::kMaxMapPositions)
-        path.fail(ErrorKind::Limit, "more than " + std::to_string(limits::kMaxMapPositions) + " positions in one map");
+    if (const std::size_t max_positions = current_limits().map_positions; total > max_positions)
+        path.fail(ErrorKind::Limit, "more than " + std::to_string(max_positions) + " positions in one map");
 }
 
 }  // namespace geo_detail
@@ -96,7 +97,7 @@ struct Reader {
         if (e.is_null()) return;  // a Feature without geometry
         object obj;
         if (e.get_object().get(obj) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected a geometry object or null");
-        if (++depth > limits::kMaxNestingDepth) path.fail(ErrorKind::Limit, "geometry collections nested too deeply");
+        if (++depth > current_limits().nesting_depth) path.fail(ErrorKind::Limit, "geometry collections nested too deeply");
         std::string_view type;
         {
             auto scope = path.key("type");

@@ -10,7 +10,7 @@ namespace casteljau::geo_detail {
 void check_position(Point p, const json::JsonPath& path);
 // The ring g.points[begin..] must hold at least 4 positions and be closed.
 void check_ring(const Geometry& g, std::size_t begin, const json::JsonPath& path);
-// Adds `add` to `total`; throws Limit past limits::kMaxMapPositions.
+// Adds `add` to `total`; throws Limit past Limits::map_positions.
 void count_positions(std::size_t& total, std::size_t add, const json::JsonPath& path);
 
 // The TopoJSON reader on an already parsed document.

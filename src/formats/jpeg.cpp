@@ -7,6 +7,7 @@
 #include <jpeglib.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <csetjmp>
 #include <cstring>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/image.hpp"
 #include "casteljau/png.hpp"
 
@@ -35,9 +37,6 @@ struct ErrorManager {
 }
 
 void on_message(j_common_ptr, int) {}
-
-// Working memory libjpeg may allocate beyond the output image (README, Limits).
-constexpr long kMaxJpegWorkingMemory = 512L << 20;
 
 // Reads the header; false with the message set on a libjpeg error.
 bool read_header(jpeg_decompress_struct* cinfo, ErrorManager* err, const std::uint8_t* data, std::size_t size) {
@@ -143,7 +142,7 @@ Pixmap decode_jpeg(std::span<const std::uint8_t> bytes) {
     }
     // libjpeg's own working memory (whole-image coefficient buffers of progressive files) is
     // bounded too: past it, decoding stops with "insufficient memory".
-    cinfo.mem->max_memory_to_use = kMaxJpegWorkingMemory;
+    cinfo.mem->max_memory_to_use = static_cast<long>(std::min<std::uint64_t>(current_limits().jpeg_working_memory, LONG_MAX));
     const bool ok = read_pixels(&cinfo, &err, *pm, row.data());
     jpeg_destroy_decompress(&cinfo);
     if (!ok) throw Error(ErrorKind::InvalidData, std::string("corrupt JPEG: ") + err.message);

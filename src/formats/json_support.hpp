@@ -16,7 +16,8 @@
 namespace casteljau::json {
 
 // Parses `text` (copied into simdjson's padded buffer). Throws Error(Parse) "what: invalid JSON at
-// byte N: reason" for malformed text, Error(Limit) for nesting beyond limits::kMaxNestingDepth * 4.
+// byte N: reason" for malformed text, Error(Limit) for nesting beyond simdjson's
+// depth (1024 levels) or a document simdjson cannot hold.
 simdjson::dom::element parse(simdjson::dom::parser& parser, std::string_view text, const std::string& what);
 
 // Byte offset of the first syntax error in `text` (text.size() when it ends too early), or

@@ -30,6 +30,7 @@
 #include <string_view>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau {
 
@@ -355,19 +356,18 @@ Pixmap decode_png(std::span<const std::uint8_t> bytes) {
     png_set_user_limits(h.png, PNG_UINT_31_MAX, PNG_UINT_31_MAX);
     // Compressed ancillary chunks (zTXt, iTXt, iCCP) inflate into buffers of their own: cap any
     // one chunk's buffer, and the number of ancillary chunks kept, at limits far above real files'.
-    png_set_chunk_malloc_max(h.png, limits::kMaxPngChunkBytes);
-    png_set_chunk_cache_max(h.png, limits::kMaxPngAncillaryChunks);
+    const Limits lim = current_limits();
+    png_set_chunk_malloc_max(h.png, lim.png_chunk_bytes);
+    png_set_chunk_cache_max(h.png, lim.png_ancillary_chunks);
 
     png_uint_32 width = 0, height = 0;
     if (!png_read_header(h.png, h.info, &width, &height))
         throw Error(ErrorKind::InvalidData, std::string("invalid PNG: ") + state.sink.message);
-    if (width > static_cast<png_uint_32>(limits::kMaxCanvasDimension) ||
-        height > static_cast<png_uint_32>(limits::kMaxCanvasDimension) ||
-        static_cast<long long>(width) * static_cast<long long>(height) > limits::kMaxCanvasPixels)
+    if (width > static_cast<png_uint_32>(lim.canvas_dimension) || height > static_cast<png_uint_32>(lim.canvas_dimension) ||
+        static_cast<long long>(width) * static_cast<long long>(height) > lim.canvas_pixels)
         throw Error(ErrorKind::Limit, "PNG of " + std::to_string(width) + "x" + std::to_string(height) +
-                                          " pixels exceeds the image limits (" +
-                                          std::to_string(limits::kMaxCanvasDimension) + " pixels per side, " +
-                                          std::to_string(limits::kMaxCanvasPixels) + " pixels in all)");
+                                          " pixels exceeds the image limits (" + std::to_string(lim.canvas_dimension) +
+                                          " pixels per side, " + std::to_string(lim.canvas_pixels) + " pixels in all)");
     if (width < 1 || height < 1) throw Error(ErrorKind::InvalidData, "invalid PNG: zero width or height");
     // Deflate expands at most 1032:1, so image data shorter than the filtered rows / 1032 cannot
     // hold the image: a header with the data missing or cut. Refuse it before allocating the image.

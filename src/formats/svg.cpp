@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/filter.hpp"
 #include "casteljau/image.hpp"
 #include "casteljau/png.hpp"
@@ -247,6 +248,7 @@ class Reader {
 public:
     std::vector<Item> items;
     std::vector<std::string> warnings;
+    const Limits limits_ = current_limits();  // read once per document
 
     void warn(const std::string& w) {
         if (warnings.size() < 100) warnings.push_back(w);
@@ -305,7 +307,7 @@ public:
             n = n.next_sibling();
         }
         if (sheet.truncated)
-            warn("style sheets hold more than " + std::to_string(css::kMaxRules) + " rules; the rest are ignored");
+            warn("style sheets hold more than " + std::to_string(current_limits().css_rules) + " rules; the rest are ignored");
     }
 
     // A fill or stroke value: none, currentColor, inherit (keeps the inherited paint), a colour,
@@ -808,8 +810,8 @@ public:
     }
 
     void walk(const pugi::xml_node& node, const Style& st, const Affine& m, double vw, double vh, int depth) {
-        if (depth > limits::kMaxNestingDepth)
-            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
+        if (depth > limits_.nesting_depth)
+            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits_.nesting_depth));
         const bool is_switch = std::string_view(node.name()) == "switch";
         for (const pugi::xml_node& child : node.children()) {
             if (child.type() != pugi::node_element) continue;
@@ -1102,10 +1104,10 @@ public:
     // One child of a clipPath: a shape (or a use of a shape), its own transform, clip-rule and
     // clip-path; fill, stroke and opacity have no effect.
     void clip_child(const pugi::xml_node& c, const pugi::xml_node& props, const Affine& m, FillRule rule, double vw, double vh, int depth) {
-        if (depth > limits::kMaxNestingDepth)
-            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
-        if (++expanded > limits::kMaxSvgElements)
-            throw Error(ErrorKind::Limit, "SVG expands to more than " + std::to_string(limits::kMaxSvgElements) + " elements");
+        if (depth > limits_.nesting_depth)
+            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits_.nesting_depth));
+        if (++expanded > limits_.svg_elements)
+            throw Error(ErrorKind::Limit, "SVG expands to more than " + std::to_string(limits_.svg_elements) + " elements");
         if (!conditions_pass(c)) return;
         bool visible = true;
         for (const auto& [k, v] : properties(c)) {
@@ -1294,8 +1296,8 @@ public:
         double iw = 0, ih = 0;
         try {
             if (sniff_image(*bytes) == ImageFormat::Svg) {
-                if (options.nesting + 1 > limits::kMaxSvgImageNesting) {
-                    warn("SVG images nested deeper than " + std::to_string(limits::kMaxSvgImageNesting) + "; skipped");
+                if (options.nesting + 1 > limits_.svg_image_nesting) {
+                    warn("SVG images nested deeper than " + std::to_string(limits_.svg_image_nesting) + "; skipped");
                     return;
                 }
                 SvgOptions inner = options;
@@ -1432,8 +1434,8 @@ public:
             cm = Affine::translate(tile.x0, tile.y0);
             if (content_bbox) cm = cm * Affine::scale(b.width(), b.height());
         }
-        if (++paint_depth > limits::kMaxNestingDepth)
-            throw Error(ErrorKind::Limit, "patterns nested deeper than " + std::to_string(limits::kMaxNestingDepth));
+        if (++paint_depth > limits_.nesting_depth)
+            throw Error(ErrorKind::Limit, "patterns nested deeper than " + std::to_string(limits_.nesting_depth));
         std::vector<Item> saved;
         std::swap(saved, items);
         active_refs.push_back(node);
@@ -1459,10 +1461,10 @@ public:
     }
 
     void element(const pugi::xml_node& child, const Style& st, const Affine& m, double vw, double vh, int depth) {
-        if (depth > limits::kMaxNestingDepth)
-            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
-        if (++expanded > limits::kMaxSvgElements)
-            throw Error(ErrorKind::Limit, "SVG expands to more than " + std::to_string(limits::kMaxSvgElements) +
+        if (depth > limits_.nesting_depth)
+            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits_.nesting_depth));
+        if (++expanded > limits_.svg_elements)
+            throw Error(ErrorKind::Limit, "SVG expands to more than " + std::to_string(limits_.svg_elements) +
                                               " elements (nested <use> references)");
         const std::string_view name = child.name();
         if (name == "defs" || name == "title" || name == "desc" || name == "metadata" || name == "style" ||
@@ -2124,7 +2126,7 @@ public:
     void text_chars(std::string_view raw, const TextCtx& ctx, TextBuild& b) {
         std::u32string in = decode_utf8(raw), out;
         for (char32_t c : in) {
-            if (text_chars_total + out.size() >= limits::kMaxSvgTextChars) {
+            if (text_chars_total + out.size() >= limits_.svg_text_chars) {
                 b.truncated = true;
                 break;
             }
@@ -2178,8 +2180,8 @@ public:
 
     void text_element(const pugi::xml_node& node, TextCtx ctx, const Style& parent, const Affine& text_m, double vw, double vh,
                       TextBuild& b, int depth) {
-        if (depth > limits::kMaxNestingDepth)
-            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits::kMaxNestingDepth));
+        if (depth > limits_.nesting_depth)
+            throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits_.nesting_depth));
         for (const auto& [k, v] : properties(node))
             if (k == "display" && trim(v) == "none") return;
         Style st = parent;
@@ -2283,7 +2285,7 @@ public:
         TextBuild b;
         text_element(node, ctx, st, Affine{}, vw, vh, b, 1);
         if (b.truncated)
-            warn("the document's text holds more than " + std::to_string(limits::kMaxSvgTextChars) +
+            warn("the document's text holds more than " + std::to_string(limits_.svg_text_chars) +
                  " characters; the rest is not drawn");
         // A trailing collapsible space is removed.
         if (!b.in.spans.empty() && b.last_space && !b.last_preserved && !b.in.spans.back().text.empty() &&
@@ -2382,7 +2384,7 @@ public:
     }
 };
 
-// Inflates gzip data (an .svgz), up to limits::kMaxSvgzBytes. Throws Error(InvalidData) for
+// Inflates gzip data (an .svgz), up to Limits::svgz_bytes. Throws Error(InvalidData) for
 // corrupt data, Error(Limit) past the limit.
 std::string gunzip(std::string_view data) {
     z_stream z{};
@@ -2390,6 +2392,7 @@ std::string gunzip(std::string_view data) {
     z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data.data()));
     z.avail_in = static_cast<uInt>(std::min<std::size_t>(data.size(), UINT32_MAX));
     std::string out;
+    const std::size_t max_bytes = current_limits().svgz_bytes;
     char buf[65536];
     int rc = Z_OK;
     while (rc != Z_STREAM_END) {
@@ -2401,9 +2404,9 @@ std::string gunzip(std::string_view data) {
             throw Error(ErrorKind::InvalidData, "corrupt gzip data (.svgz)");
         }
         out.append(buf, sizeof buf - z.avail_out);
-        if (out.size() > limits::kMaxSvgzBytes) {
+        if (out.size() > max_bytes) {
             inflateEnd(&z);
-            throw Error(ErrorKind::Limit, "an .svgz inflates to more than " + std::to_string(limits::kMaxSvgzBytes) + " bytes");
+            throw Error(ErrorKind::Limit, "an .svgz inflates to more than " + std::to_string(max_bytes) + " bytes");
         }
         if (rc == Z_OK && z.avail_in == 0 && z.avail_out != 0) {
             inflateEnd(&z);

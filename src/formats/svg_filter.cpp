@@ -15,6 +15,7 @@
 #include <map>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau::svg_filter {
 
@@ -452,8 +453,8 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
         } else {
             p.inputs = {input(n, "in"), input(n, "in2")};
         }
-        if (g.primitives.size() >= limits::kMaxFilterPrimitives)
-            throw Error(ErrorKind::Limit, "filter has more than " + std::to_string(limits::kMaxFilterPrimitives) + " primitives");
+        if (const std::size_t max_primitives = current_limits().filter_primitives; g.primitives.size() >= max_primitives)
+            throw Error(ErrorKind::Limit, "filter has more than " + std::to_string(max_primitives) + " primitives");
         if (const char* r = n.attribute("result").value(); *r) results[r] = static_cast<int>(g.primitives.size());
         g.primitives.push_back(std::move(p));
     }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/geojson.hpp"
 #include "formats/geojson_build.hpp"
 #include "formats/json_support.hpp"
@@ -159,7 +160,7 @@ struct TopoReader {
     }
 
     void geometry(object obj, Feature& f) {
-        if (++depth > limits::kMaxNestingDepth) path.fail(ErrorKind::Limit, "geometry collections nested too deeply");
+        if (++depth > current_limits().nesting_depth) path.fail(ErrorKind::Limit, "geometry collections nested too deeply");
         element te;
         std::string_view type;
         if (obj["type"].get(te) != simdjson::SUCCESS) {

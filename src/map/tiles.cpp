@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/png.hpp"
 #include "parallel/for_each_index.hpp"
 
@@ -42,7 +43,7 @@ void check_options(const TileOptions& o) {
     if (o.threads < 1 || o.threads > 256) bad("threads must be 1 to 256");
     if (o.shards < 1 || o.shard < 0 || o.shard >= o.shards) bad("shard must be I/N with 0 <= I < N");
     const long long side = static_cast<long long>(o.metatile) * o.tile_px + 2LL * o.buffer;
-    if (side > limits::kMaxCanvasDimension || side * side > limits::kMaxCanvasPixels)
+    if (const Limits lim = current_limits(); side > lim.canvas_dimension || side * side > lim.canvas_pixels)
         bad("metatile x tile size + 2 x buffer exceeds the canvas limits");
 }
 

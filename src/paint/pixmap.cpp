@@ -5,6 +5,7 @@
 #include <string>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/paint.hpp"
 #include "paint/pixel_math.hpp"
 
@@ -39,12 +40,11 @@ void check_canvas_size(double width, double height) {
     if (width < 1 || height < 1)
         throw Error(ErrorKind::InvalidData, "canvas size must be at least 1x1 pixels, got " +
                                                 std::to_string(width) + "x" + std::to_string(height));
-    if (width > limits::kMaxCanvasDimension || height > limits::kMaxCanvasDimension)
-        throw Error(ErrorKind::Limit, "canvas side exceeds the limit of " +
-                                          std::to_string(limits::kMaxCanvasDimension) + " pixels");
-    if (width * height > static_cast<double>(limits::kMaxCanvasPixels))
-        throw Error(ErrorKind::Limit,
-                    "canvas area exceeds the limit of " + std::to_string(limits::kMaxCanvasPixels) + " pixels");
+    const Limits lim = current_limits();
+    if (width > lim.canvas_dimension || height > lim.canvas_dimension)
+        throw Error(ErrorKind::Limit, "canvas side exceeds the limit of " + std::to_string(lim.canvas_dimension) + " pixels");
+    if (width * height > static_cast<double>(lim.canvas_pixels))
+        throw Error(ErrorKind::Limit, "canvas area exceeds the limit of " + std::to_string(lim.canvas_pixels) + " pixels");
 }
 
 Pixmap::Pixmap(int width, int height) {

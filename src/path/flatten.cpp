@@ -24,6 +24,7 @@
 #include <string>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "path/flatten_internal.hpp"
 
 namespace casteljau {
@@ -44,6 +45,7 @@ namespace {
 // Collects the flattened contours into a Polyline.
 struct PolylineSink {
     Polyline& out;
+    std::size_t max_points = current_limits().flattened_segments;
     bool open = false;
     bool closed_flag = false;
 
@@ -53,9 +55,9 @@ struct PolylineSink {
         point(p);
     }
     void point(Point p) {
-        if (out.points.size() >= limits::kMaxFlattenedSegments)
-            throw Error(ErrorKind::Limit, "path too complex: more than " +
-                                              std::to_string(limits::kMaxFlattenedSegments) + " line segments after flattening");
+        if (out.points.size() >= max_points)
+            throw Error(ErrorKind::Limit, "path too complex: more than " + std::to_string(max_points) +
+                                              " line segments after flattening");
         out.points.push_back(p);
     }
     void mark_closed() { closed_flag = true; }

@@ -17,6 +17,7 @@
 #include <limits>
 #include <vector>
 
+#include "casteljau/limits.hpp"
 #include "path/arc_detail.hpp"
 
 namespace casteljau {
@@ -234,7 +235,7 @@ public:
     PathDataParser(std::string_view d, const SvgPathOptions& options)
         : Scanner(d, "path data"),
           tolerance_(options.arc_tolerance),
-          max_points_(std::min(options.max_points, limits::kMaxPathPoints)) {}
+          max_points_(std::min(options.max_points, current_limits().path_points)) {}
 
     // Parses everything; returns false at the first error (path() then holds the complete segments).
     bool parse() {
@@ -423,7 +424,7 @@ private:
 
 class PointsParser : public Scanner {
 public:
-    explicit PointsParser(std::string_view s) : Scanner(s, "points") {}
+    explicit PointsParser(std::string_view s) : Scanner(s, "points"), max_points_(current_limits().path_points) {}
 
     bool parse(bool close) {
         const bool ok = parse_points();
@@ -448,10 +449,10 @@ private:
             r = scan_number(y);
             if (r == Num::Bad) return false;
             if (r == Num::None) return fail_at(i_, "a number (y of point " + std::to_string(count + 1) + ")");
-            if (count >= limits::kMaxPathPoints) {
+            if (count >= max_points_) {
                 set_error_kind(ErrorKind::Limit);
                 fail_at(pos, nullptr);
-                error_ = "more than " + std::to_string(limits::kMaxPathPoints) + " points";
+                error_ = "more than " + std::to_string(max_points_) + " points";
                 return false;
             }
             if (count == 0) path_.move_to({x, y});
@@ -471,6 +472,7 @@ private:
     }
 
     Path path_;
+    std::size_t max_points_;
 };
 
 void check_options(const SvgPathOptions& options) {

@@ -36,6 +36,7 @@
 #include <string>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "raster/engine.hpp"
 
 namespace casteljau::raster {
@@ -123,6 +124,7 @@ void Engine::begin(int w, int h, bool track, bool exact) {
     }
     segs_.clear();
     count_ = 0;
+    max_edges_ = current_limits().flattened_segments;
     visits_.clear();
     cands_.clear();
     cur_cell_ = kNoCell;

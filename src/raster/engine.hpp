@@ -80,6 +80,7 @@ private:
     inline void mark(int r, int c0, int c1);
     std::vector<Edge> segs_;         // the edges (kept when tracking: exact cells need them)
     std::size_t count_ = 0;          // edges pushed
+    std::size_t max_edges_ = 0;      // Limits::flattened_segments, read by begin()
     std::vector<Visit> visits_;
     std::vector<std::uint32_t> cands_;     // cells with two or more visits, or a non-simple one (each once)
     void add_cand(std::uint32_t cell) {
@@ -208,9 +209,8 @@ inline void Engine::push(double x0, double y0, double x1, double y1) {
     y0 = std::clamp(y0, 0.0, H);
     y1 = std::clamp(y1, 0.0, H);
     if (x0 == x1 && y0 == y1) return;
-    if (++count_ > limits::kMaxFlattenedSegments)
-        throw Error(ErrorKind::Limit,
-                    "path too complex: more than " + std::to_string(limits::kMaxFlattenedSegments) + " edges");
+    if (++count_ > max_edges_)
+        throw Error(ErrorKind::Limit, "path too complex: more than " + std::to_string(max_edges_) + " edges");
     if (track_) walk<true, false>(x0, y0, x1, y1);
     else if (vec_) walk<false, true>(x0, y0, x1, y1);
     else walk<false, false>(x0, y0, x1, y1);

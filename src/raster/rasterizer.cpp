@@ -19,6 +19,7 @@
 #include <string>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "raster/engine.hpp"
 #include "raster/edge_builder.hpp"
 #include "raster/raster_internal.hpp"
@@ -37,12 +38,12 @@ struct EdgeList {
     std::vector<Edge>& edges;
     std::vector<std::uint32_t>& contour;
     std::uint32_t current = 0;
+    std::size_t max_edges = current_limits().flattened_segments;
 
     void push(double x0, double y0, double x1, double y1) {
         if (y0 == y1 && x0 == x1) return;
-        if (edges.size() >= limits::kMaxFlattenedSegments)
-            throw Error(ErrorKind::Limit, "path too complex: more than " +
-                                              std::to_string(limits::kMaxFlattenedSegments) + " edges");
+        if (edges.size() >= max_edges)
+            throw Error(ErrorKind::Limit, "path too complex: more than " + std::to_string(max_edges) + " edges");
         edges.push_back({x0, y0, x1, y1, -1, -1});
         contour.push_back(current);
     }

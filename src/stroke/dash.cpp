@@ -9,6 +9,7 @@
 #include <string>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "stroke/stroke_internal.hpp"
 
 namespace casteljau::stroke_detail {
@@ -37,9 +38,11 @@ struct Dasher {
     std::vector<Point> cur;    // the dash being built
     std::vector<Point> first;  // closed contours: the dash that started at the contour's start
     std::size_t events = 0;
+    std::size_t max_dashes;
+    std::size_t max_points;
 
     void emit(std::span<const Point> pts, bool closed, Point dir) {
-        if (out.points.size() + pts.size() > limits::kMaxFlattenedSegments)
+        if (out.points.size() + pts.size() > max_points)
             throw Error(ErrorKind::Limit, "stroke: dashed path has too many points");
         out.points.insert(out.points.end(), pts.begin(), pts.end());
         out.contour_ends.push_back(static_cast<std::uint32_t>(out.points.size()));
@@ -76,7 +79,7 @@ struct Dasher {
             dir = (b - a) / len;
             double t = 0;
             while (rem < len - t) {
-                if (++events > 2 * limits::kMaxDashes)
+                if (++events > 2 * max_dashes)
                     throw Error(ErrorKind::Limit, "stroke: dash pattern produces too many dashes");
                 t += rem;
                 const Point p = lerp(a, b, t / len);
@@ -141,11 +144,13 @@ void dash_polyline(const Polyline& in, std::span<const double> pattern, double o
         periods += len / total + 1;
         start = end;
     }
-    if (!(periods * static_cast<double>(pattern.size()) <= 2.0 * static_cast<double>(limits::kMaxDashes)))
+    const Limits lim = current_limits();
+    const std::size_t max_dashes = lim.dashes;
+    if (!(periods * static_cast<double>(pattern.size()) <= 2.0 * static_cast<double>(max_dashes)))
         throw Error(ErrorKind::Limit, "stroke: dash pattern too fine for the path (more than " +
-                                          std::to_string(limits::kMaxDashes) + " dashes)");
+                                          std::to_string(max_dashes) + " dashes)");
 
-    Dasher d{pattern, out, dirs, {}, {}, 0};
+    Dasher d{pattern, out, dirs, {}, {}, 0, max_dashes, lim.flattened_segments};
     start = 0;
     for (std::size_t c = 0; c < in.contour_count(); ++c) {
         const std::size_t end = in.contour_ends[c];

@@ -28,6 +28,7 @@
 #include <numbers>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "stroke/stroke_internal.hpp"
 
 namespace casteljau::stroke_detail {
@@ -205,14 +206,14 @@ private:
     // joins at a fine step (a huge width against the tolerance) must fail as it passes the path
     // size limit, not after gigabytes of points.
     void check_size(std::size_t more) const {
-        if (total_ + left_.size() + right_.size() + more > limits::kMaxPathPoints)
+        if (total_ + left_.size() + right_.size() + more > max_points_)
             throw Error(ErrorKind::Limit, "stroke: outline exceeds the path size limit");
     }
 
     void emit(const std::vector<Point>& pts) {
         if (pts.size() < 2) return;
         total_ += pts.size() + 1;
-        if (total_ > limits::kMaxPathPoints)
+        if (total_ > max_points_)
             throw Error(ErrorKind::Limit, "stroke: outline exceeds the path size limit");
         for (const Point& p : pts)
             if (!p.is_finite()) throw Error(ErrorKind::Limit, "stroke: outline coordinates overflow");
@@ -229,6 +230,7 @@ private:
     double eps_ = 0;
     double step_ = kPi / 2;
     std::size_t total_ = 0;
+    const std::size_t max_points_ = current_limits().path_points;
     std::vector<Point> q_, left_, right_;
     std::vector<Vec> dir_;
     std::vector<double> len_;

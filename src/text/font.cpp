@@ -23,14 +23,12 @@
 #include <filesystem>
 #include <sstream>
 
+#include "casteljau/limits.hpp"
 #include "text/font_impl.hpp"
 
 namespace casteljau {
 
 namespace {
-
-// Largest font file read (a sanity limit: real fonts are a few MB; CJK collections ~ 100 MB).
-constexpr std::uintmax_t kMaxFontFileBytes = 512u * 1024u * 1024u;
 
 std::string ft_error_text(FT_Error err) {
     if (const char* s = FT_Error_String(err)) return s;
@@ -102,9 +100,10 @@ std::vector<std::uint8_t> read_font_file(const std::string& path) {
     if (!f) throw Error(ErrorKind::Io, "cannot read font '" + path + "': " + std::strerror(errno));
     // The buffer is reserved at the file's size, so appending never reallocates (nor zero-fills).
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    if (!ec && size > kMaxFontFileBytes) {
+    const std::uint64_t max_bytes = current_limits().font_file_bytes;
+    if (!ec && size > max_bytes) {
         std::fclose(f);
-        throw Error(ErrorKind::Limit, "font '" + path + "' is larger than " + std::to_string(kMaxFontFileBytes >> 20) + " MiB");
+        throw Error(ErrorKind::Limit, "font '" + path + "' is larger than " + std::to_string(max_bytes) + " bytes");
     }
     std::vector<std::uint8_t> bytes;
     if (!ec) bytes.reserve(static_cast<std::size_t>(size));
@@ -112,10 +111,10 @@ std::vector<std::uint8_t> read_font_file(const std::string& path) {
     std::size_t got;
     while ((got = std::fread(buf, 1, sizeof buf, f)) > 0) {
         bytes.insert(bytes.end(), buf, buf + got);
-        if (bytes.size() > kMaxFontFileBytes) {
+        if (bytes.size() > max_bytes) {
             std::fclose(f);
             throw Error(ErrorKind::Limit, "font '" + path + "' is larger than " +
-                                              std::to_string(kMaxFontFileBytes >> 20) + " MiB");
+                                              std::to_string(max_bytes) + " bytes");
         }
     }
     const bool failed = std::ferror(f) != 0;
@@ -313,9 +312,9 @@ Font Font::from_memory(std::vector<std::uint8_t> bytes, int face_index, std::str
     if (face_index < 0 || face_index > 0xffff)
         throw Error(ErrorKind::InvalidArgument, "font '" + name + "': face index must be 0 to 65535, got " +
                                                     std::to_string(face_index));
-    if (bytes.size() > kMaxFontFileBytes)
+    if (const std::uint64_t max_bytes = current_limits().font_file_bytes; bytes.size() > max_bytes)
         throw Error(ErrorKind::Limit, "font '" + name + "' is larger than " +
-                                          std::to_string(kMaxFontFileBytes >> 20) + " MiB");
+                                          std::to_string(max_bytes) + " bytes");
     check_sfnt_directory(bytes, name);
     return from_shared_bytes(std::make_shared<const std::vector<std::uint8_t>>(std::move(bytes)), face_index, std::move(name));
 }

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/text.hpp"
 #include "text/bidi.hpp"
 #include "text/shape.hpp"
@@ -99,9 +100,9 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
     if (!std::isfinite(style.max_width) || style.max_width < 0 || style.max_width > limits::kMaxCanvasDimension * 16.0)
         throw Error(ErrorKind::InvalidArgument, "wrap width must be 0 (no wrapping) or a positive number of pixels up to " +
                                                     std::to_string(limits::kMaxCanvasDimension * 16));
-    if (utf8.size() > limits::kMaxTextBytes)
+    if (const std::size_t max_bytes = current_limits().text_bytes; utf8.size() > max_bytes)
         throw Error(ErrorKind::Limit, "text of " + std::to_string(utf8.size()) + " bytes exceeds the limit of " +
-                                          std::to_string(limits::kMaxTextBytes) + " bytes");
+                                          std::to_string(max_bytes) + " bytes");
 
     TextLayout L;
     L.fonts.assign(fonts.begin(), fonts.end());

@@ -212,6 +212,57 @@ int main(int argc, char** argv) {
     }
     CHECK(casteljau_image_width(NULL) == 0 && casteljau_image_data(NULL) == NULL);
 
+    /* Limits: read, lowered, crossed, a bad value refused, a prefix set, the defaults restored */
+    {
+        casteljau_limits lim, now;
+        casteljau_image* big = NULL;
+        casteljau_path* pts = NULL;
+        casteljau_font* nofont = NULL;
+        casteljau_canvas* small = NULL;
+        int32_t side = 100;
+        int i;
+        CHECK(casteljau_limits_get(&lim, sizeof lim) == CASTELJAU_OK);
+        CHECK(lim.canvas_dimension == 32768 && lim.canvas_pixels == 268435456 && lim.nesting_depth == 64);
+        CHECK(lim.svg_elements == 1000000 && lim.svg_image_nesting == 4 && lim.canvas_save_depth == 1024);
+        CHECK_ERROR(casteljau_limits_get(&lim, 3), CASTELJAU_ERROR_INVALID_ARGUMENT, "size");
+        CHECK_ERROR(casteljau_limits_get(&lim, sizeof lim + 8), CASTELJAU_ERROR_INVALID_ARGUMENT, "size");
+        CHECK_ERROR(casteljau_limits_get(NULL, sizeof lim), CASTELJAU_ERROR_INVALID_ARGUMENT, "NULL");
+
+        lim.canvas_dimension = 40000; /* above its ceiling: refused, nothing changes */
+        lim.canvas_save_depth = 3;
+        CHECK_ERROR(casteljau_limits_set(&lim, sizeof lim), CASTELJAU_ERROR_INVALID_ARGUMENT, "canvas_dimension");
+        CHECK(casteljau_limits_get(&now, sizeof now) == CASTELJAU_OK && now.canvas_save_depth == 1024);
+
+        lim.canvas_dimension = 100;
+        lim.path_points = 10;
+        lim.text_bytes = 5;
+        lim.font_file_bytes = 1000;
+        CHECK(casteljau_limits_set(&lim, sizeof lim) == CASTELJAU_OK);
+        CHECK_ERROR(casteljau_image_create(101, 10, &big), CASTELJAU_ERROR_LIMIT, "100");
+        CHECK(big == NULL);
+        CHECK(casteljau_image_create(100, 10, &big) == CASTELJAU_OK);
+        CHECK_ERROR(casteljau_path_from_svg("M0 0 1 1 2 2 3 3 4 4 5 5 6 6 7 7 8 8 9 9 10 10", &pts), CASTELJAU_ERROR_LIMIT, "10");
+        CHECK(pts == NULL);
+        CHECK_ERROR(casteljau_font_load(font_path, &nofont), CASTELJAU_ERROR_LIMIT, "1000");
+        CHECK_ERROR(casteljau_canvas_draw_text(canvas, font, "hello world", 10, 0, 0, solid), CASTELJAU_ERROR_LIMIT, "5");
+        CHECK(casteljau_canvas_create(big, &small) == CASTELJAU_OK);
+        for (i = 0; i < 3; ++i) CHECK(casteljau_canvas_save(small) == CASTELJAU_OK);
+        CHECK_ERROR(casteljau_canvas_save(small), CASTELJAU_ERROR_LIMIT, "3");
+        casteljau_canvas_destroy(small);
+        casteljau_image_destroy(big);
+
+        /* A caller compiled against a header whose struct held only canvas_dimension. */
+        CHECK(casteljau_limits_set((const casteljau_limits*)&side, sizeof side) == CASTELJAU_OK);
+        CHECK(casteljau_limits_get(&now, sizeof now) == CASTELJAU_OK);
+        CHECK(now.canvas_dimension == 100 && now.path_points == 10);
+
+        casteljau_limits_reset();
+        CHECK(casteljau_limits_get(&now, sizeof now) == CASTELJAU_OK);
+        CHECK(now.canvas_dimension == 32768 && now.path_points == 16777216 && now.canvas_save_depth == 1024);
+        CHECK(casteljau_font_load(font_path, &nofont) == CASTELJAU_OK);
+        casteljau_font_destroy(nofont);
+    }
+
     /* Destroy everything (NULL is accepted) */
     casteljau_canvas_destroy(raw);
     casteljau_canvas_destroy(canvas);
