@@ -10,6 +10,7 @@
 #include "casteljau/error.hpp"
 #include "casteljau/map.hpp"
 #include "casteljau/seamless.hpp"
+#include "casteljau/threads.hpp"
 #include "map_test_util.hpp"
 
 using namespace casteljau;
@@ -436,6 +437,7 @@ TEST_CASE("Map threads: 1, 2 and 5 threads give the same pixels in every mode", 
     style.layers[0].fill_by = "name";
     style.layers[0].stroke = Color::rgba(40, 40, 40);
     style.layers[0].stroke_width = 0.8;
+    set_thread_count(5);  // the pool: five threads even on a smaller machine
     for (bool seamless : {true, false}) {
         MapOptions o = world_options(1500, 750, seamless);
         o.threads = 1;
@@ -452,6 +454,7 @@ TEST_CASE("Map threads: 1, 2 and 5 threads give the same pixels in every mode", 
             CHECK(differ == 0);
         }
     }
+    set_thread_count(0);
     MapOptions bad = world_options(100, 50, true);
     bad.threads = -1;
     CHECK_THROWS_AS(render_map(world, MapProjection{}, style, bad), Error);

@@ -258,6 +258,13 @@ CASTELJAU_API casteljau_status casteljau_limits_set(const casteljau_limits* limi
 /* Restores every default. */
 CASTELJAU_API void casteljau_limits_reset(void);
 
+/* The process-wide pool of threads casteljau's own parallel work runs on (casteljau/threads.hpp):
+ * `threads` in all, the calling thread included; 1 runs everything on the calling thread, 0 (the
+ * default) uses every hardware thread. INVALID_ARGUMENT outside 0..256. Not from inside a
+ * callback casteljau runs. */
+CASTELJAU_API casteljau_status casteljau_set_thread_count(int threads);
+CASTELJAU_API int casteljau_thread_count(void);
+
 #ifdef __cplusplus
 }
 #endif

@@ -27,4 +27,5 @@
 #include "casteljau/surface.hpp"
 #include "casteljau/svg.hpp"
 #include "casteljau/svg_path.hpp"
+#include "casteljau/threads.hpp"
 #include "casteljau/vec.hpp"

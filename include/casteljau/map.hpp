@@ -29,8 +29,9 @@
 // pixels filled like polygons.
 //
 // Thread-safety: free functions; a MapProjection must not be shared between threads (clone it).
-// render_map() runs MapOptions::threads worker threads of its own (each with a clone of the
-// projection) and returns when they are done; MapData is only read.
+// render_map() works on up to MapOptions::threads threads of the process-wide pool
+// (casteljau/threads.hpp; each with a clone of the projection) and returns when they are done;
+// MapData is only read.
 #pragma once
 
 #include <optional>
@@ -104,7 +105,8 @@ struct MapOptions {
     // Earth 10m) and still exact for valid polygons (simple rings, holes inside their exterior),
     // whose winding numbers stay within 0..1. Strokes are always exact (their outlines overlap).
     bool exact_overlaps = true;
-    // Threads that project and draw (0: all cores, at most 256). The image is cut into horizontal
+    // Threads that project and draw (0: all of the pool, casteljau/threads.hpp; more than the
+    // pool's size get the pool's size; at most 256). The image is cut into horizontal
     // bands by its height alone, so the pixels are the same whatever the number of threads.
     int threads = 0;
 };
@@ -124,7 +126,8 @@ MapFrame fit_map(const MapData& data, const MapProjection& proj, const MapOption
 // Draws the map onto `target` (its own size), background first.
 void render_map(const MapData& data, const MapProjection& proj, const MapFrame& frame, const MapStyle& style,
                 const MapOptions& opts, Pixmap& target);
-// The number of threads MapOptions::threads asks for (0: std::thread::hardware_concurrency()).
+// The number of threads MapOptions::threads gets: at most the pool's size (casteljau/threads.hpp),
+// all of it for 0.
 // Throws Error(InvalidArgument) outside 0..256.
 int map_threads(int requested);
 // Convenience: fit + a new Pixmap + render.

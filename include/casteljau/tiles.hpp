@@ -20,7 +20,8 @@
 // Files: every tile PNG is written atomically (temporary file + rename), so --resume can trust any
 // tile it finds; an MBTiles file is built under a temporary name and renamed when complete.
 //
-// Thread-safety: render_tiles() runs its own worker threads; MapData is only read.
+// Thread-safety: render_tiles() renders a metatile per thread on up to TileOptions::threads
+// threads of the process-wide pool (casteljau/threads.hpp); MapData is only read.
 #pragma once
 
 #include <cstdint>
@@ -43,7 +44,7 @@ struct TileOptions {
     int metatile = 8;                // tiles per metatile side (1..64)
     int buffer = 64;                 // pixels rendered around each metatile
     bool skip_empty = false;         // tiles equal to the background everywhere are not written
-    int threads = 1;
+    int threads = 1;                 // 1..256, at most the pool's size are used
     bool resume = false;             // folder output: skip tiles already there
     int shard = 0, shards = 1;       // render only share `shard` of `shards`
     bool seamless = true;

@@ -7,6 +7,7 @@
 #include "casteljau/map.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/projection.hpp"
+#include "casteljau/threads.hpp"
 #include "cli/cli.hpp"
 
 namespace casteljau::cli {
@@ -157,7 +158,8 @@ void register_map(CLI::App& app) {
     add_map_style_options(cmd, o->style);
     cmd->callback([o] {
         MapOptions mo;
-        mo.threads = o->threads;
+        if (o->threads > 0) set_thread_count(o->threads);  // the pool the bands are drawn on
+        mo.threads = 0;
         mo.width = o->width;
         mo.height = o->height;
         mo.padding = o->padding;

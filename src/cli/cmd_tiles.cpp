@@ -9,6 +9,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/map.hpp"
+#include "casteljau/threads.hpp"
 #include "casteljau/tiles.hpp"
 #include "cli/cli.hpp"
 
@@ -110,7 +111,9 @@ void register_tiles(CLI::App& app) {
         to.buffer = o->buffer * o->scale;
         to.skip_empty = o->skip_empty;
         to.resume = o->resume;
-        to.threads = o->threads > 0 ? o->threads : map_threads(0);
+        // --threads sizes the pool the metatiles are rendered on (casteljau/threads.hpp).
+        if (o->threads > 0) set_thread_count(o->threads);
+        to.threads = map_threads(0);
         to.seamless = !o->style.separate;
         to.tolerance = o->style.tolerance;
         to.exact_overlaps = !o->style.no_exact;

@@ -160,7 +160,7 @@ namespace {
 template <class F>
 void for_lines(int n, std::size_t pixels, F&& body) {
     constexpr std::size_t kThreadedPixels = std::size_t{1} << 18;
-    const int threads = pixels < kThreadedPixels ? 1 : std::min(parallel::hardware_threads(), 16);
+    const int threads = pixels < kThreadedPixels ? 1 : std::min(parallel::thread_count(), 16);
     const int runs = n < 2 * threads ? 1 : threads;
     const int chunk = (n + runs - 1) / runs;
     std::vector<std::vector<float>> scratch(2 * static_cast<std::size_t>(runs));

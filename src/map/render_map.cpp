@@ -324,8 +324,8 @@ struct Drawable {
 
 int map_threads(int requested) {
     if (requested < 0 || requested > 256) throw Error(ErrorKind::InvalidArgument, "threads must be 0 (all cores) to 256");
-    if (requested > 0) return requested;
-    return parallel::hardware_threads();
+    const int pool = parallel::thread_count();
+    return requested > 0 ? std::min(requested, pool) : pool;
 }
 
 void render_map(const MapData& data, const MapProjection& proj, const MapFrame& frame, const MapStyle& style,

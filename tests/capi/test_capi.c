@@ -263,6 +263,16 @@ int main(int argc, char** argv) {
         casteljau_font_destroy(nofont);
     }
 
+    /* The thread pool's size */
+    {
+        int hw = casteljau_thread_count();
+        CHECK(hw >= 1);
+        CHECK(casteljau_set_thread_count(3) == CASTELJAU_OK && casteljau_thread_count() == 3);
+        CHECK_ERROR(casteljau_set_thread_count(-1), CASTELJAU_ERROR_INVALID_ARGUMENT, "0 (all cores) to 256");
+        CHECK(casteljau_thread_count() == 3);
+        CHECK(casteljau_set_thread_count(0) == CASTELJAU_OK && casteljau_thread_count() == hw);
+    }
+
     /* Destroy everything (NULL is accepted) */
     casteljau_canvas_destroy(raw);
     casteljau_canvas_destroy(canvas);
