@@ -9,6 +9,7 @@
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
 #include "casteljau/text.hpp"
+#include "casteljau/threads.hpp"
 #include "text/bidi.hpp"
 #include "text_support.hpp"
 
@@ -355,6 +356,73 @@ TEST_CASE("Glyph cache: hits, misses, keys by subpixel offset, size, font and va
     CHECK(small.stats().bytes <= 2000 + 32 * 40);
     cache.clear();
     CHECK(cache.stats().entries == 0);
+}
+
+TEST_CASE("Glyph cache: masks of many glyphs at once equal mask() one by one, on any number of threads", "[text][threads]") {
+    Fonts f;
+    std::vector<GlyphCache::MaskRequest> req;
+    for (char32_t c = U'A'; c <= U'z'; ++c)
+        for (double off : {0.0, 0.25, 0.75}) req.push_back({&f.dejavu, f.dejavu.glyph_index(c), 21, {off, 0.0}});
+    req.push_back(req[3]);  // asked twice
+    req.push_back({&f.libertine, f.libertine.glyph_index(U'g'), 30, {0.5, 0.0}});
+    GlyphCache one_by_one;
+    Rasterizer r;
+    std::vector<std::vector<std::uint8_t>> expected;
+    std::vector<IRect> bounds;
+    for (const auto& q : req) {
+        const Mask& m = one_by_one.mask(*q.font, q.glyph, q.size, q.offset, r);
+        expected.push_back(m.data);
+        bounds.push_back(m.bounds);
+    }
+    for (int threads : {1, 2, 5}) {
+        set_thread_count(threads);
+        GlyphCache batch;
+        const std::vector<const Mask*> got = batch.masks(req, r);
+        REQUIRE(got.size() == req.size());
+        int differ = 0;
+        for (std::size_t i = 0; i < req.size(); ++i)
+            differ += !(got[i]->data == expected[i] && got[i]->bounds == bounds[i]);
+        INFO(threads << " threads");
+        CHECK(differ == 0);
+        CHECK(batch.stats().misses == one_by_one.stats().misses);
+        CHECK(batch.stats().hits == one_by_one.stats().hits);
+        // Asked again, everything is a hit and the same masks come back.
+        CHECK(batch.masks(req, r) == got);
+    }
+    set_thread_count(0);
+    // Masks that cannot fit in the cache together: no pointers (the caller asks one at a time).
+    GlyphCache small(3000);
+    CHECK(small.masks(req, r).empty());
+    CHECK(small.stats().flushes > 0);
+    std::vector<GlyphCache::MaskRequest> bad = {{&f.dejavu, 1, 16, {1.0, 0.0}}};
+    CHECK(error_kind_of([&] { (void)small.masks(bad, r); }) == ErrorKind::InvalidArgument);
+}
+
+TEST_CASE("draw_text: the same pixels with glyph masks made on 1 or 4 threads", "[text][threads]") {
+    Fonts f;
+    TextStyle st;
+    st.size = 19;
+    st.max_width = 400;
+    const TextLayout layout = layout_text(
+        "Sphinx of black quartz, judge my vow! 0123456789 The five boxing wizards jump quickly; "
+        "Pack my box with five dozen liquor jugs.", f.dejavu, st);
+    Pixmap images[2] = {Pixmap(420, 120), Pixmap(420, 120)};
+    int k = 0;
+    for (int threads : {1, 4}) {
+        set_thread_count(threads);
+        Canvas c(images[k]);
+        draw_text(c, layout, {5, 5}, Paint::solid(Color::black()));
+        ++k;
+    }
+    set_thread_count(0);
+    std::size_t differ = 0, ink = 0;
+    for (int y = 0; y < 120; ++y)
+        for (int x = 0; x < 420; ++x) {
+            differ += !(images[0].pixel(x, y) == images[1].pixel(x, y));
+            ink += images[0].pixel(x, y).a > 0;
+        }
+    CHECK(ink > 2000);
+    CHECK(differ == 0);
 }
 
 namespace {

@@ -126,6 +126,20 @@ public:
     // quantized to a few steps per pixel, so that entries are reused. The reference stays valid
     // until the next call on this cache.
     const Mask& mask(const Font& font, std::uint32_t glyph, double size, Point offset, Rasterizer& raster);
+
+    // The masks of several glyphs at once, in the order asked, as mask() gives them one by one.
+    // Those not cached yet are rasterized in parallel on the process-wide pool
+    // (casteljau/threads.hpp; `raster` serves the calling thread), their outlines read from the
+    // fonts on the calling thread. The pointers stay valid until the next call on this cache.
+    // Empty when the masks do not fit in the cache together (it was emptied while adding them):
+    // then ask mask() for one glyph at a time.
+    struct MaskRequest {
+        const Font* font;
+        std::uint32_t glyph;
+        double size;
+        Point offset;
+    };
+    std::vector<const Mask*> masks(std::span<const MaskRequest> requests, Rasterizer& raster);
     // The glyph's outline in font units (font.hpp), cached.
     const Path& outline(const Font& font, std::uint32_t glyph);
 

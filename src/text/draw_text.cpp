@@ -2,10 +2,13 @@
 //
 // Axis-aligned (translation + uniform scale): glyph origin in device space -> rounded to 1/4 px
 // horizontally and a whole pixel vertically (TextDrawOptions) -> cached Mask at that subpixel
-// offset -> Canvas::fill_mask at the glyph's pixel offset (the paint stage, inside the clip).
+// offset (the masks a text lacks are made together, in parallel: GlyphCache::masks) ->
+// Canvas::fill_mask at the glyph's pixel offset (the paint stage, inside the clip).
 // Any other transform: each glyph's outline is filled with Canvas::fill_path under
 // canvas transform x translate(origin + glyph position) x [s 0 0 -s].
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "casteljau/error.hpp"
 #include "casteljau/text.hpp"
@@ -39,6 +42,12 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
                         device_size <= options.max_cached_size && device_size <= limits::kMaxFontSize;
     if (cached) {
         const int sx = options.subpixel_steps, sy = options.subpixel_steps_y;
+        // Each glyph's pixel position and mask request; the masks not cached yet are then made
+        // together (in parallel), and drawn in order.
+        std::vector<GlyphCache::MaskRequest> requests;
+        std::vector<std::pair<long long, long long>> at;
+        requests.reserve(layout.glyphs.size());
+        at.reserve(layout.glyphs.size());
         for (const PositionedGlyph& g : layout.glyphs) {
             const Point p = M.apply(g.position);
             if (!(std::abs(p.x) < kMaxCachedOrigin && std::abs(p.y) < kMaxCachedOrigin)) continue;
@@ -47,8 +56,14 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
             const long long ix = (qx >= 0 ? qx : qx - (sx - 1)) / sx;
             const long long iy = (qy >= 0 ? qy : qy - (sy - 1)) / sy;
             const Point offset{static_cast<double>(qx - ix * sx) / sx, static_cast<double>(qy - iy * sy) / sy};
-            const Mask& m = gc.mask(*layout.fonts[g.font], g.glyph, device_size, offset, canvas.rasterizer());
-            canvas.fill_mask(m, ix, iy, paint);
+            requests.push_back({layout.fonts[g.font], g.glyph, device_size, offset});
+            at.emplace_back(ix, iy);
+        }
+        const std::vector<const Mask*> masks = gc.masks(requests, canvas.rasterizer());
+        for (std::size_t i = 0; i < requests.size(); ++i) {
+            const GlyphCache::MaskRequest& r = requests[i];
+            const Mask& m = masks.empty() ? gc.mask(*r.font, r.glyph, r.size, r.offset, canvas.rasterizer()) : *masks[i];
+            canvas.fill_mask(m, at[i].first, at[i].second, paint);
         }
         return;
     }

@@ -11,6 +11,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/text.hpp"
+#include "parallel/for_each_index.hpp"
 #include "text/font_impl.hpp"
 
 namespace casteljau {
@@ -69,7 +70,6 @@ struct GlyphCache::Impl {
     std::unordered_map<OutlineKey, Topology, OutlineKeyHash> topologies;  // a few bytes each, not counted
     std::unordered_map<const void*, std::weak_ptr<const int>> fonts;  // lifetime tokens seen
     GlyphCacheStats stats;
-    Path scratch;
 
     void clear() {
         masks.clear();
@@ -95,6 +95,46 @@ struct GlyphCache::Impl {
         }
         stats.bytes += bytes;
         ++stats.entries;
+    }
+
+    // The key of a mask request; throws for a bad offset or size (mask() documents which).
+    MaskKey key_of(const Font& font, std::uint32_t glyph, double size, Point offset) {
+        if (!(offset.x >= 0 && offset.x < 1 && offset.y >= 0 && offset.y < 1))
+            throw Error(ErrorKind::InvalidArgument, "glyph cache: the subpixel offset must be in [0, 1)");
+        check_font_size(size);
+        check_font(font);
+        auto bits = [](double v) {
+            std::uint64_t b;
+            std::memcpy(&b, &v, sizeof b);
+            return b;
+        };
+        return MaskKey{&font.impl(), font.variation_key(), bits(size), bits(offset.x + 0.0), bits(offset.y + 0.0), glyph};
+    }
+
+    // What rasterizing one mask needs: the outline in font units (read on the calling thread:
+    // a font's FreeType face serves one thread at a time), its map to pixels and its topology.
+    struct MaskJob {
+        MaskKey key;
+        Path outline;
+        Affine to_pixels;
+        FillOptions fill;
+    };
+    MaskJob job(const MaskKey& key, const Font& font, std::uint32_t glyph, double size, Point offset) {
+        MaskJob j{key, font.glyph_path(glyph), font.glyph_transform(size, offset), fill};
+        if (!j.outline.empty()) {
+            const OutlineKey okey{&font.impl(), font.variation_key(), glyph};
+            auto t = topologies.find(okey);
+            if (t == topologies.end()) t = topologies.emplace(okey, classify_topology(j.outline)).first;
+            j.fill.topology = t->second;
+        }
+        return j;
+    }
+    static Mask rasterize(const MaskJob& j, Rasterizer& raster) {
+        return j.outline.empty() ? Mask{} : raster.fill_mask(j.outline, j.to_pixels, j.fill);
+    }
+    const Mask& store(const MaskKey& key, Mask m) {
+        admit(m.data.size() + kEntryOverhead);
+        return masks.emplace(key, std::move(m)).first->second;
     }
 
     void check_font(const Font& font) {
@@ -130,34 +170,67 @@ const GlyphCacheStats& GlyphCache::stats() const { return impl_->stats; }
 
 const Mask& GlyphCache::mask(const Font& font, std::uint32_t glyph, double size, Point offset, Rasterizer& raster) {
     Impl& c = *impl_;
-    if (!(offset.x >= 0 && offset.x < 1 && offset.y >= 0 && offset.y < 1))
-        throw Error(ErrorKind::InvalidArgument, "glyph cache: the subpixel offset must be in [0, 1)");
-    check_font_size(size);
-    c.check_font(font);
-    auto bits = [](double v) {
-        std::uint64_t b;
-        std::memcpy(&b, &v, sizeof b);
-        return b;
-    };
-    const MaskKey key{&font.impl(), font.variation_key(), bits(size), bits(offset.x + 0.0), bits(offset.y + 0.0), glyph};
+    const MaskKey key = c.key_of(font, glyph, size, offset);
     if (auto it = c.masks.find(key); it != c.masks.end()) {
         ++c.stats.hits;
         return it->second;
     }
     ++c.stats.misses;
-    font.glyph_path(glyph, c.scratch);
-    Mask m;
-    if (!c.scratch.empty()) {
-        const Affine to_pixels = font.glyph_transform(size, offset);
-        FillOptions fill = c.fill;
-        const OutlineKey okey{&font.impl(), font.variation_key(), glyph};
-        auto t = c.topologies.find(okey);
-        if (t == c.topologies.end()) t = c.topologies.emplace(okey, classify_topology(c.scratch)).first;
-        fill.topology = t->second;
-        m = raster.fill_mask(c.scratch, to_pixels, fill);
+    return c.store(key, Impl::rasterize(c.job(key, font, glyph, size, offset), raster));
+}
+
+std::vector<const Mask*> GlyphCache::masks(std::span<const MaskRequest> requests, Rasterizer& raster) {
+    Impl& c = *impl_;
+    // Keys first: a font check may empty the cache, which must happen before any entry is taken.
+    std::vector<MaskKey> keys;
+    keys.reserve(requests.size());
+    for (const MaskRequest& r : requests) {
+        if (!r.font) throw Error(ErrorKind::InvalidArgument, "glyph cache: a mask request has no font");
+        keys.push_back(c.key_of(*r.font, r.glyph, r.size, r.offset));
     }
-    c.admit(m.data.size() + kEntryOverhead);
-    return c.masks.emplace(key, std::move(m)).first->second;
+    std::vector<const Mask*> out(requests.size(), nullptr);
+    std::vector<Impl::MaskJob> jobs;  // one per distinct key not cached
+    std::vector<std::size_t> job_of(requests.size(), SIZE_MAX);
+    std::unordered_map<MaskKey, std::size_t, MaskKeyHash> pending;
+    for (std::size_t i = 0; i < requests.size(); ++i) {
+        if (auto it = c.masks.find(keys[i]); it != c.masks.end()) {
+            ++c.stats.hits;
+            out[i] = &it->second;
+        } else if (auto p = pending.find(keys[i]); p != pending.end()) {
+            ++c.stats.hits;  // as mask() would find it, made by the request before
+            job_of[i] = p->second;
+        } else {
+            ++c.stats.misses;
+            const MaskRequest& r = requests[i];
+            pending.emplace(keys[i], jobs.size());
+            job_of[i] = jobs.size();
+            jobs.push_back(c.job(keys[i], *r.font, r.glyph, r.size, r.offset));
+        }
+    }
+    // Rasterize on the pool: worker 0 is this thread with the caller's rasterizer, the others
+    // make one of their own on first use (each worker id serves one thread at a time).
+    std::vector<Mask> made(jobs.size());
+    std::vector<std::unique_ptr<Rasterizer>> own(static_cast<std::size_t>(parallel::thread_count()));
+    parallel::for_each_index(parallel::thread_count(), jobs.size(), [&](int w, std::size_t j) {
+        Rasterizer* r = &raster;
+        if (w > 0) {
+            std::unique_ptr<Rasterizer>& mine = own[static_cast<std::size_t>(w)];
+            if (!mine) mine = std::make_unique<Rasterizer>();
+            r = mine.get();
+        }
+        made[j] = Impl::rasterize(jobs[j], *r);
+    });
+    const std::size_t flushes = c.stats.flushes;
+    std::vector<const Mask*> stored(jobs.size());
+    for (std::size_t j = 0; j < jobs.size(); ++j) stored[j] = &c.store(jobs[j].key, std::move(made[j]));
+    if (c.stats.flushes != flushes) {
+        // The masks did not fit in the cache together: give each glyph through mask() instead.
+        std::vector<const Mask*> none;
+        return none;
+    }
+    for (std::size_t i = 0; i < requests.size(); ++i)
+        if (!out[i]) out[i] = stored[job_of[i]];
+    return out;
 }
 
 const Path& GlyphCache::outline(const Font& font, std::uint32_t glyph) {
