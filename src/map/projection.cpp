@@ -1,8 +1,6 @@
 // Map stage: projections (see include/casteljau/projection.hpp). The two built-in ones are plain
-// formulas; everything else is delegated to PROJ.
+// formulas; everything else is delegated to PROJ (opened on first use: map/proj_library.hpp).
 #include "casteljau/projection.hpp"
-
-#include <proj.h>
 
 #include <algorithm>
 #include <cctype>
@@ -10,6 +8,7 @@
 #include <numbers>
 
 #include "casteljau/error.hpp"
+#include "map/proj_library.hpp"
 
 namespace casteljau {
 
@@ -18,8 +17,10 @@ struct MapProjection::ProjState {
     PJ* pj = nullptr;
     bool radians_in = false;  // a bare operation ("+proj=robin") takes radians
     ~ProjState() {
-        if (pj) proj_destroy(pj);
-        if (ctx) proj_context_destroy(ctx);
+        // A state exists only once PROJ was loaded.
+        const proj_library::Api& api = proj_library::api();
+        if (pj) api.destroy(pj);
+        if (ctx) api.context_destroy(ctx);
     }
 };
 
@@ -51,28 +52,29 @@ MapProjection MapProjection::parse(std::string_view spec) {
         return p;
     }
     if (spec.empty()) throw Error(ErrorKind::InvalidArgument, "empty projection");
+    const proj_library::Api& api = proj_library::api();
     auto st = std::make_unique<ProjState>();
-    st->ctx = proj_context_create();
+    st->ctx = api.context_create();
     if (!st->ctx) throw Error(ErrorKind::Io, "PROJ: cannot create a context");
-    proj_log_level(st->ctx, PJ_LOG_NONE);
+    api.log_level(st->ctx, PJ_LOG_NONE);
     const std::string text(spec);
-    PJ* obj = proj_create(st->ctx, text.c_str());
+    PJ* obj = api.create(st->ctx, text.c_str());
     if (!obj)
         throw Error(ErrorKind::InvalidArgument, "unknown projection '" + text +
                                                     "' (expected equirectangular, mercator, a PROJ string such as "
                                                     "'+proj=robin' or a CRS such as 'EPSG:3035')");
-    if (proj_is_crs(obj)) {
-        PJ* op = proj_create_crs_to_crs(st->ctx, "EPSG:4326", text.c_str(), nullptr);
-        proj_destroy(obj);
+    if (api.is_crs(obj)) {
+        PJ* op = api.create_crs_to_crs(st->ctx, "EPSG:4326", text.c_str(), nullptr);
+        api.destroy(obj);
         if (!op) throw Error(ErrorKind::InvalidArgument, "PROJ: no transformation from EPSG:4326 to '" + text + "'");
-        PJ* norm = proj_normalize_for_visualization(st->ctx, op);
-        proj_destroy(op);
+        PJ* norm = api.normalize_for_visualization(st->ctx, op);
+        api.destroy(op);
         if (!norm) throw Error(ErrorKind::InvalidArgument, "PROJ: cannot normalize the axes of '" + text + "'");
         st->pj = norm;
         st->radians_in = false;
     } else {
         st->pj = obj;
-        st->radians_in = proj_angular_input(obj, PJ_FWD) != 0;
+        st->radians_in = api.angular_input(obj, PJ_FWD) != 0;
     }
     p.kind_ = Kind::Proj;
     p.proj_ = std::move(st);
@@ -94,12 +96,16 @@ bool MapProjection::project(Point ll, Point& out) const {
             return true;
         }
         case Kind::Proj: {
+            const proj_library::Api& api = proj_library::api();
+            const double to_input = proj_->radians_in ? std::numbers::pi / 180.0 : 1.0;
             PJ_COORD c;
-            if (proj_->radians_in) c = proj_coord(proj_torad(ll.x), proj_torad(ll.y), 0, 0);
-            else c = proj_coord(ll.x, ll.y, 0, 0);
-            proj_errno_reset(proj_->pj);
-            const PJ_COORD r = proj_trans(proj_->pj, PJ_FWD, c);
-            if (proj_errno(proj_->pj) != 0 || !std::isfinite(r.xy.x) || !std::isfinite(r.xy.y) ||
+            c.v[0] = ll.x * to_input;
+            c.v[1] = ll.y * to_input;
+            c.v[2] = 0;
+            c.v[3] = 0;
+            api.errno_reset(proj_->pj);
+            const PJ_COORD r = api.trans(proj_->pj, PJ_FWD, c);
+            if (api.errno_of(proj_->pj) != 0 || !std::isfinite(r.xy.x) || !std::isfinite(r.xy.y) ||
                 std::fabs(r.xy.x) > 1e30 || std::fabs(r.xy.y) > 1e30)
                 return false;
             out = {r.xy.x, r.xy.y};
