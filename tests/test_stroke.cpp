@@ -861,3 +861,28 @@ TEST_CASE("regression: round joins at a huge width stop at the path size limit, 
     st.width = 2;
     CHECK_FALSE(stroke(p, st, Affine{}, 0.05).empty());
 }
+
+TEST_CASE("regression: round joins and caps of segments whose length overflows end in Error(Limit), without a NaN arc",
+          "[stroke][regression]") {
+    // fuzz_stroke (UBSan): directions of segments longer than the double range are NaN, and the
+    // join's arc converted NaN pieces to int (undefined behaviour; the sanitizer build aborts).
+    for (double b : {1e308, 1.7e308})
+        for (LineJoin join : {LineJoin::Round, LineJoin::Miter, LineJoin::Bevel})
+            for (LineCap cap : {LineCap::Round, LineCap::Butt, LineCap::Square}) {
+                Path p;
+                p.move_to({0, 0});
+                p.line_to({b, 0});
+                p.line_to({-b, b});
+                p.line_to({b, -b});
+                StrokeStyle st;
+                st.width = 2;
+                st.join = join;
+                st.cap = cap;
+                try {
+                    (void)stroke(p, st);
+                    FAIL("no error");
+                } catch (const Error& e) {
+                    CHECK(e.kind() == ErrorKind::Limit);
+                }
+            }
+}

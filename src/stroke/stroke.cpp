@@ -104,8 +104,11 @@ public:
 private:
     // Points strictly between c + h u and c + h rot(u, sweep), on the circle of radius h.
     void arc(std::vector<Point>& dst, Point c, Vec u, double sweep) {
-        const int n = static_cast<int>(std::ceil(std::abs(sweep) / step_ - 1e-9));
-        if (n <= 1) return;
+        // A NaN sweep (directions of segments whose length overflows) draws no arc: the outline is
+        // refused as non-finite by emit(). Converting NaN to int would be undefined.
+        const double pieces = std::ceil(std::abs(sweep) / step_ - 1e-9);
+        if (!(pieces > 1)) return;
+        const int n = static_cast<int>(std::min(pieces, kMaxArcStepsPerTurn));
         check_size(static_cast<std::size_t>(n));
         const double a = sweep / n, ca = std::cos(a), sa = std::sin(a);
         Vec v = u;
