@@ -46,6 +46,10 @@ struct FontDatabaseOptions {
     bool system_fonts = true;             // add every face fontconfig knows
 };
 
+// Throws Error(Io), as FontDatabase's constructor does, when a folder or file of `options` does
+// not exist; reads no font. For callers that build the database only once text needs it.
+void check_font_sources(const FontDatabaseOptions& options);
+
 class FontDatabase {
 public:
     // Scans the folders, files and (optionally) the system fonts. A folder or file that does not

@@ -55,14 +55,13 @@ void register_svg(CLI::App& app) {
         SvgOptions so = o->svg;
         so.system_fonts = !o->skip_system_fonts;
         so.resource_root = o->resources;
-        // One font database for the whole run: each font file is read once.
-        if (!so.font_dirs.empty() || !so.font_files.empty() || so.system_fonts) {
-            FontDatabaseOptions fo;
-            fo.font_dirs = so.font_dirs;
-            fo.font_files = so.font_files;
-            fo.system_fonts = so.system_fonts;
-            so.font_database = std::make_shared<const FontDatabase>(fo);
-        }
+        // The font folders and files must exist whether or not the document has text; the font
+        // database itself is built by the SVG reader when the first text needs it (scanning the
+        // system fonts costs more than drawing an icon), once for the document and its images.
+        FontDatabaseOptions fo;
+        fo.font_dirs = so.font_dirs;
+        fo.font_files = so.font_files;
+        check_font_sources(fo);
         const SvgDocument doc = o->input == "-" ? SvgDocument::parse(read_text_input(o->input), so) : SvgDocument::load(o->input, so);
         if (!o->quiet)
             for (const std::string& w : doc.warnings()) std::cerr << "casteljau: warning: " << w << "\n";

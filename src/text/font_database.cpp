@@ -181,8 +181,22 @@ struct FontDatabase::Impl {
     }
 };
 
+void check_font_sources(const FontDatabaseOptions& options) {
+    namespace fs = std::filesystem;
+    for (const std::string& dir : options.font_dirs) {
+        std::error_code ec;
+        if (!fs::is_directory(dir, ec))
+            throw Error(ErrorKind::Io, "font folder '" + dir + "' does not exist or is not a folder");
+    }
+    for (const std::string& file : options.font_files) {
+        std::error_code ec;
+        if (!fs::is_regular_file(file, ec)) throw Error(ErrorKind::Io, "font file '" + file + "' does not exist");
+    }
+}
+
 FontDatabase::FontDatabase(const FontDatabaseOptions& options) : impl_(std::make_unique<Impl>()) {
     namespace fs = std::filesystem;
+    check_font_sources(options);
     std::vector<std::string> files;
     auto is_font = [](const fs::path& p) {
         std::string ext = p.extension().string();
@@ -191,8 +205,6 @@ FontDatabase::FontDatabase(const FontDatabaseOptions& options) : impl_(std::make
     };
     for (const std::string& dir : options.font_dirs) {
         std::error_code ec;
-        if (!fs::is_directory(dir, ec))
-            throw Error(ErrorKind::Io, "font folder '" + dir + "' does not exist or is not a folder");
         std::vector<std::string> found;
         for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied, ec);
              !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
@@ -200,11 +212,7 @@ FontDatabase::FontDatabase(const FontDatabaseOptions& options) : impl_(std::make
         std::sort(found.begin(), found.end());
         files.insert(files.end(), found.begin(), found.end());
     }
-    for (const std::string& file : options.font_files) {
-        std::error_code ec;
-        if (!fs::is_regular_file(file, ec)) throw Error(ErrorKind::Io, "font file '" + file + "' does not exist");
-        files.push_back(file);
-    }
+    files.insert(files.end(), options.font_files.begin(), options.font_files.end());
     impl_->add_files(files);
     if (options.system_fonts) {
         if (FcConfig* config = FcInitLoadConfigAndFonts()) {
