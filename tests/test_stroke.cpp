@@ -886,3 +886,72 @@ TEST_CASE("regression: round joins and caps of segments whose length overflows e
                 }
             }
 }
+
+namespace {
+
+std::size_t move_count(const Path& p) { return static_cast<std::size_t>(std::count(p.verbs().begin(), p.verbs().end(), Verb::Move)); }
+
+// Largest |difference| between two masks over the union of their bounds, in 1/255.
+int mask_difference(const Mask& a, const Mask& b) {
+    const IRect u{std::min(a.bounds.x0, b.bounds.x0), std::min(a.bounds.y0, b.bounds.y0), std::max(a.bounds.x1, b.bounds.x1),
+                  std::max(a.bounds.y1, b.bounds.y1)};
+    auto at = [](const Mask& m, int x, int y) -> int {
+        if (x < m.bounds.x0 || x >= m.bounds.x1 || y < m.bounds.y0 || y >= m.bounds.y1) return 0;
+        return m.data[static_cast<std::size_t>(y - m.bounds.y0) * static_cast<std::size_t>(m.bounds.width()) +
+                      static_cast<std::size_t>(x - m.bounds.x0)];
+    };
+    int worst = 0;
+    for (int y = u.y0; y < u.y1; ++y)
+        for (int x = u.x0; x < u.x1; ++x) worst = std::max(worst, std::abs(at(a, x, y) - at(b, x, y)));
+    return worst;
+}
+
+}  // namespace
+
+TEST_CASE("stroke: a convex closed contour with no room for a hole is outlined by its outer side alone", "[stroke]") {
+    // A circle of radius 4 stroked 8 wide (an icon's dot): the inner side would only pivot through
+    // the centre, over area the outer side covers, and make the centre pixels exact cells.
+    Rasterizer r;
+    StrokeStyle st;
+    st.width = 8;
+    for (LineJoin join : {LineJoin::Round, LineJoin::Miter, LineJoin::Bevel}) {
+        st.join = join;
+        Path dot;
+        dot.add_circle({20.3, 20.6}, 4);
+        const Path out = stroke(dot, st, Affine{}, 0.01);
+        INFO("join " << static_cast<int>(join));
+        CHECK(move_count(out) == 1);
+        if (join == LineJoin::Round) {
+            Path disk;  // the stroke of a circle of radius 4 and half-width 4: the disk of radius 8
+            disk.add_circle({20.3, 20.6}, 8);
+            CHECK(mask_difference(r.fill_mask(out, Affine{}), r.fill_mask(disk, Affine{})) <= 1);
+        }
+    }
+    // A rounded rectangle 3 high stroked 4 wide: no hole either.
+    Path bar;
+    bar.add_round_rect(Rect::from_xywh(2, 2, 30, 3), 1, 1);
+    CHECK(move_count(stroke(bar, st)) == 1);
+
+    // Room for a hole (radius 5 at half-width 4: a hole of radius 1): both sides stay, and the
+    // centre pixel is empty.
+    st.join = LineJoin::Round;
+    Path ring;
+    ring.add_circle({20.5, 20.5}, 5);
+    st.width = 8;
+    const Path out = stroke(ring, st, Affine{}, 0.01);
+    CHECK(move_count(out) == 2);
+    const Mask m = r.fill_mask(out, Affine{});
+    CHECK(m.data[static_cast<std::size_t>(20 - m.bounds.y0) * static_cast<std::size_t>(m.bounds.width()) +
+                 static_cast<std::size_t>(20 - m.bounds.x0)] == 0);
+    // A concave contour keeps its inner side whatever the width.
+    Path l;
+    l.move_to({0, 0});
+    l.line_to({10, 0});
+    l.line_to({10, 3});
+    l.line_to({3, 3});
+    l.line_to({3, 10});
+    l.line_to({0, 10});
+    l.close();
+    st.width = 20;
+    CHECK(move_count(stroke(l, st)) == 2);
+}

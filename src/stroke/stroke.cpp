@@ -81,6 +81,19 @@ public:
                 const std::size_t prev = (i + nseg - 1) % nseg;
                 join(q_[i], dir_[prev], dir_[i], len_[prev], len_[i]);
             }
+            // A convex contour whose inside lies entirely within h of its sides (a dot drawn as a
+            // small stroked circle, a thin rounded rectangle) leaves no hole: its inner side would
+            // only add pivots over area the outer side already covers, and cost exact cells.
+            const int turn = convex_turn();
+            if (turn != 0 && no_hole(turn)) {
+                if (turn > 0) {  // left turns: the outer side is the right one
+                    std::reverse(right_.begin(), right_.end());
+                    emit(right_);
+                } else {
+                    emit(left_);
+                }
+                return;
+            }
             emit(left_);
             std::reverse(right_.begin(), right_.end());
             emit(right_);
@@ -149,6 +162,54 @@ private:
             arc(left_, p, -perp(d), -kPi);
         }
         emit(left_);
+    }
+
+    // +1 when the closed contour q_ is convex and turns left at every vertex (its inside on the
+    // left), -1 when it turns right at every vertex, 0 otherwise (mixed or reversing turns, or a
+    // total turn other than one revolution).
+    int convex_turn() const {
+        const std::size_t n = dir_.size();
+        int sign = 0;
+        double total = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vec a = dir_[(i + n - 1) % n], b = dir_[i];
+            const double cr = a.cross(b), dt = a.dot(b);
+            if (!(std::isfinite(cr) && std::isfinite(dt))) return 0;
+            if (cr == 0 && dt <= 0) return 0;
+            const int s = cr > 0 ? 1 : cr < 0 ? -1 : 0;
+            if (s != 0 && sign != 0 && s != sign) return 0;
+            if (s != 0) sign = s;
+            total += std::atan2(cr, dt);
+        }
+        return std::abs(std::abs(total) - 2 * kPi) < 1e-6 ? sign : 0;
+    }
+
+    // Whether the convex contour's inside, eroded by h, is empty: the half-planes at distance h
+    // inside every side clip the contour's bounding box to nothing. They are taken at h (1 - 1e-9):
+    // a smaller distance leaves a larger region, so rounding can only keep a hole that is not
+    // there, never drop one that is. Contours of more than 512 sides are not tried.
+    bool no_hole(int turn) const {
+        const std::size_t n = dir_.size();
+        if (n > 512) return false;
+        double x0 = q_[0].x, y0 = q_[0].y, x1 = x0, y1 = y0;
+        for (const Point& p : q_) {
+            x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+        }
+        std::vector<Point> poly = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, next;
+        const double d = h_ * (1 - 1e-9);
+        for (std::size_t i = 0; i < n && !poly.empty(); ++i) {
+            const Vec in = perp(dir_[i]) * static_cast<double>(turn);  // towards the inside
+            const double c = in.dot(q_[i]) + d;                       // keep in . x >= c
+            next.clear();
+            for (std::size_t k = 0; k < poly.size(); ++k) {
+                const Point a = poly[k], b = poly[(k + 1) % poly.size()];
+                const double fa = in.dot(a) - c, fb = in.dot(b) - c;
+                if (fa >= 0) next.push_back(a);
+                if ((fa >= 0) != (fb >= 0)) next.push_back(a + (b - a) * (fa / (fa - fb)));
+            }
+            poly.swap(next);
+        }
+        return poly.empty();
     }
 
     // Join at vertex v between the incoming direction d1 and the outgoing d2.
