@@ -10,7 +10,8 @@ import ctypes
 import ctypes.util
 import os
 
-__all__ = ["Error", "Path", "Stroke", "Paint", "Image", "Font", "Canvas", "version", "BLEND_MODES"]
+__all__ = ["Error", "Path", "Stroke", "Paint", "Image", "Font", "Canvas", "version", "BLEND_MODES",
+           "set_thread_count", "thread_count", "limits", "set_limits", "reset_limits"]
 
 
 def _load():
@@ -47,6 +48,16 @@ class _Color(_c.Structure):
 
 class _Stop(_c.Structure):
     _fields_ = [("offset", _c.c_double), ("color", _Color)]
+
+
+class _Limits(_c.Structure):  # casteljau_limits, field for field
+    _fields_ = [("canvas_dimension", _c.c_int32), ("canvas_pixels", _c.c_int64), ("path_points", _c.c_uint64),
+                ("flattened_segments", _c.c_uint64), ("nesting_depth", _c.c_int32), ("svg_elements", _c.c_uint64),
+                ("svg_image_nesting", _c.c_int32), ("svgz_bytes", _c.c_uint64), ("css_rules", _c.c_uint64),
+                ("svg_text_chars", _c.c_uint64), ("filter_pixels", _c.c_int64), ("filter_primitives", _c.c_uint64),
+                ("map_positions", _c.c_uint64), ("dashes", _c.c_uint64), ("font_file_bytes", _c.c_uint64),
+                ("png_chunk_bytes", _c.c_uint64), ("png_ancillary_chunks", _c.c_uint32),
+                ("jpeg_working_memory", _c.c_uint64), ("canvas_save_depth", _c.c_uint64), ("text_bytes", _c.c_uint64)]
 
 
 def _sig(name, restype, *argtypes):
@@ -114,6 +125,11 @@ for _name, _res, _args in [
     ("casteljau_canvas_draw_text", _status, [_vp, _vp, _c.c_char_p, _d, _d, _d, _vp]),
     ("casteljau_canvas_begin_layer", _status, [_vp, _d, _c.c_int]),
     ("casteljau_canvas_end_layer", _status, [_vp]),
+    ("casteljau_limits_get", _status, [_P(_Limits), _c.c_size_t]),
+    ("casteljau_limits_set", _status, [_P(_Limits), _c.c_size_t]),
+    ("casteljau_limits_reset", None, []),
+    ("casteljau_set_thread_count", _status, [_c.c_int]),
+    ("casteljau_thread_count", _c.c_int, []),
 ]:
     _sig(_name, _res, *_args)
 
@@ -171,6 +187,39 @@ def _blend(name):
 
 def version():
     return _lib.casteljau_version_string().decode()
+
+
+def set_thread_count(n):
+    """Sizes the process-wide thread pool casteljau's parallel work shares (0: every core)."""
+    _check(_lib.casteljau_set_thread_count(n))
+
+
+def thread_count():
+    return _lib.casteljau_thread_count()
+
+
+def limits():
+    """The process-wide resource limits in force, as a dict (README "Limits")."""
+    lim = _Limits()
+    _check(_lib.casteljau_limits_get(_c.byref(lim), _c.sizeof(lim)))
+    return {name: getattr(lim, name) for name, _ in _Limits._fields_}
+
+
+def set_limits(**fields):
+    """Changes the named limits (the others keep their values); raises Error, changing nothing,
+    for a value outside the limit's range and ValueError for an unknown name."""
+    lim = _Limits()
+    _check(_lib.casteljau_limits_get(_c.byref(lim), _c.sizeof(lim)))
+    names = {name for name, _ in _Limits._fields_}
+    for name, value in fields.items():
+        if name not in names:
+            raise ValueError("unknown limit %r (expected one of %s)" % (name, ", ".join(sorted(names))))
+        setattr(lim, name, value)
+    _check(_lib.casteljau_limits_set(_c.byref(lim), _c.sizeof(lim)))
+
+
+def reset_limits():
+    _lib.casteljau_limits_reset()
 
 
 class _Handle:

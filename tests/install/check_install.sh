@@ -87,6 +87,25 @@ else:
     a[1, 3] = (1, 2, 3, 4)  # a view of the canvas pixels, not a copy
     assert bytes(c.pixels()[c.stride + 12:c.stride + 16]) == bytes((1, 2, 3, 4))
     print("check_install: numpy array view checked")
+cj.set_thread_count(3)
+assert cj.thread_count() == 3
+cj.set_thread_count(0)
+assert cj.limits()["canvas_dimension"] == 32768 and cj.limits()["svg_image_nesting"] == 4
+cj.set_limits(canvas_dimension=100, css_rules=7)
+assert cj.limits()["canvas_dimension"] == 100 and cj.limits()["css_rules"] == 7
+try:
+    cj.Canvas(101, 1)
+    raise SystemExit("a canvas past the lowered limit did not raise")
+except cj.Error as e:
+    assert e.status == 4 and "100" in str(e), (e.status, str(e))
+try:
+    cj.set_limits(canvas_dimension=40000)
+    raise SystemExit("a limit above its ceiling did not raise")
+except cj.Error as e:
+    assert "canvas_dimension" in str(e)
+assert cj.limits()["canvas_dimension"] == 100
+cj.reset_limits()
+cj.Canvas(101, 1)
 print("check_install: python binding checks passed")
 PY
 
