@@ -35,6 +35,13 @@ void count_positions(std::size_t& total, std::size_t add, const json::JsonPath& 
         path.fail(ErrorKind::Limit, "more than " + std::to_string(max_positions) + " positions in one map");
 }
 
+std::optional<GeometryKind> kind_of(std::string_view type) {
+    if (type == "Point" || type == "MultiPoint") return GeometryKind::Points;
+    if (type == "LineString" || type == "MultiLineString") return GeometryKind::Lines;
+    if (type == "Polygon" || type == "MultiPolygon") return GeometryKind::Polygons;
+    return std::nullopt;
+}
+
 }  // namespace geo_detail
 
 namespace {
@@ -116,9 +123,7 @@ struct Reader {
             return;
         }
         Geometry g;
-        if (type == "Point" || type == "MultiPoint") g.kind = GeometryKind::Points;
-        else if (type == "LineString" || type == "MultiLineString") g.kind = GeometryKind::Lines;
-        else if (type == "Polygon" || type == "MultiPolygon") g.kind = GeometryKind::Polygons;
+        if (const auto kind = geo_detail::kind_of(type)) g.kind = *kind;
         else {
             auto scope = path.key("type");
             path.fail(ErrorKind::Parse, "unknown geometry type \"" + std::string(type) +
@@ -128,35 +133,15 @@ struct Reader {
         auto scope = path.key("coordinates");
         element c;
         if (obj["coordinates"].get(c) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "missing");
-        if (type == "Point") {
-            geo_detail::count_positions(positions, 1, path);
-            g.points.push_back(position(c));
-        } else if (type == "MultiPoint") {
-            positions_into(c, g, false);
-            g.ring_ends.clear();
-        } else if (type == "LineString") {
-            positions_into(c, g, false);
-        } else if (type == "MultiLineString") {
-            std::size_t i = 0;
-            for (element l : get_array(c, "an array of lines")) {
-                auto s2 = path.index(i++);
-                positions_into(l, g, false);
-            }
-        } else if (type == "Polygon") {
-            polygon_into(c, g);
-        } else {
-            std::size_t i = 0;
-            for (element p : get_array(c, "an array of polygons")) {
-                auto s2 = path.index(i++);
-                polygon_into(p, g);
-            }
-        }
+        geo_detail::read_coordinates(*this, type, c, g, f);
         --depth;
-        if (!g.points.empty()) {
-            g.points.shrink_to_fit();  // one exact copy of the coordinates, not up to twice that
-            f.geometries.push_back(std::move(g));
-        }
     }
+
+    // The leaves of read_coordinates.
+    static constexpr const char* kLinesWhat = "an array of lines";
+    Point point(element e) { return position(e); }
+    void line(element e, Geometry& g) { positions_into(e, g, false); }
+    void polygon(element e, Geometry& g) { polygon_into(e, g); }
 
     void feature(object obj, MapData& out) {
         Feature f;

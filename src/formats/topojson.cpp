@@ -188,9 +188,7 @@ struct TopoReader {
         }
         Geometry g;
         const bool is_point = type == "Point" || type == "MultiPoint";
-        if (is_point) g.kind = GeometryKind::Points;
-        else if (type == "LineString" || type == "MultiLineString") g.kind = GeometryKind::Lines;
-        else if (type == "Polygon" || type == "MultiPolygon") g.kind = GeometryKind::Polygons;
+        if (const auto kind = geo_detail::kind_of(type)) g.kind = *kind;
         else {
             auto s = path.key("type");
             path.fail(ErrorKind::Parse, "unknown geometry type \"" + std::string(type) + "\"");
@@ -199,39 +197,13 @@ struct TopoReader {
         auto s = path.key(member);
         element c;
         if (obj[member].get(c) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "missing");
-        if (type == "Point") {
-            geo_detail::count_positions(positions, 1, path);
-            g.points.push_back(point(c));
-        } else if (type == "MultiPoint") {
-            std::size_t i = 0;
-            for (element p : get_array(c, "an array of positions")) {
-                auto s2 = path.index(i++);
-                geo_detail::count_positions(positions, 1, path);
-                g.points.push_back(point(p));
-            }
-        } else if (type == "LineString") {
-            arc_list(c, g, false);
-        } else if (type == "MultiLineString") {
-            std::size_t i = 0;
-            for (element l : get_array(c, "an array of arc lists")) {
-                auto s2 = path.index(i++);
-                arc_list(l, g, false);
-            }
-        } else if (type == "Polygon") {
-            polygon(c, g);
-        } else {
-            std::size_t i = 0;
-            for (element p : get_array(c, "an array of polygons")) {
-                auto s2 = path.index(i++);
-                polygon(p, g);
-            }
-        }
+        geo_detail::read_coordinates(*this, type, c, g, f);
         --depth;
-        if (!g.points.empty()) {
-            g.points.shrink_to_fit();  // one exact copy of the coordinates, not up to twice that
-            f.geometries.push_back(std::move(g));
-        }
     }
+
+    // The leaves of read_coordinates (point() and polygon() above).
+    static constexpr const char* kLinesWhat = "an array of arc lists";
+    void line(element e, Geometry& g) { arc_list(e, g, false); }
 
     void feature(object obj) {
         Feature f;
