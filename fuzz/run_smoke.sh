@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds (if needed) and runs one fuzz target for SECONDS on its seed corpus (fuzz/corpus/NAME,
 # where NAME is TARGET without the fuzz_ prefix), in a scratch copy so that the committed corpus is
-# never changed; inputs that crash, leak or time out are written to BUILD/artifacts/. Exits non-zero
-# when the fuzzer finds a crash, leak, timeout or sanitizer report.
+# never changed, with the dictionary fuzz/dict/NAME.dict when there is one; inputs that crash, leak
+# or time out are written to BUILD/artifacts/. Exits non-zero when the fuzzer finds a crash, leak,
+# timeout or sanitizer report.
 # Usage: fuzz/run_smoke.sh TARGET SECONDS     e.g. fuzz/run_smoke.sh fuzz_svg 60
 # The build folder is $CASTELJAU_FUZZ_BUILD, by default build-fuzz/ in the checkout; an input
 # running longer than $CASTELJAU_FUZZ_TIMEOUT seconds (default 10) is a finding.
@@ -31,5 +32,7 @@ case "$name" in
     done ;;
 esac
 mkdir -p "$build/artifacts"
-"$build/fuzz/$target" -max_total_time="$seconds" -max_len=131072 -timeout="${CASTELJAU_FUZZ_TIMEOUT:-10}" -rss_limit_mb=2048 \
+dict=()
+[ -f "$root/fuzz/dict/$name.dict" ] && dict=(-dict="$root/fuzz/dict/$name.dict")
+"$build/fuzz/$target" "${dict[@]}" -max_total_time="$seconds" -max_len=131072 -timeout="${CASTELJAU_FUZZ_TIMEOUT:-10}" -rss_limit_mb=2048 \
   -artifact_prefix="$build/artifacts/$target-" -print_final_stats=1 "$corpus"
