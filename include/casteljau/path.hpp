@@ -64,6 +64,12 @@ public:
 
     bool empty() const { return verbs_.empty(); }
     void clear();
+    // Makes room for `points` points and `verbs` verbs in all, so that a builder that knows its
+    // size does not regrow the storage as it appends (a hint: the path still grows past it).
+    void reserve(std::size_t points, std::size_t verbs) {
+        points_.reserve(points);
+        verbs_.reserve(verbs);
+    }
     std::span<const Verb> verbs() const { return verbs_; }
     std::span<const Point> points() const { return points_; }
     std::span<const double> weights() const { return weights_; }

@@ -2,6 +2,7 @@
 // pixel's remaining area to the fill being added.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "casteljau/error.hpp"
 #include "casteljau/seamless.hpp"
@@ -45,6 +46,11 @@ struct AreaSink final : SpanSink {
             const unsigned a = coverage[i];
             if (a == 0) continue;
             const unsigned total = C[i];
+            if (a == 255 && total == 0) {  // inside a fill, first to cover: the colour itself
+                C[i] = 255;
+                std::memcpy(L, &c, 4);
+                continue;
+            }
             const unsigned rem = 255u - total;
             if (rem == 0) continue;
             unsigned take = a < rem ? a : rem;
