@@ -3,6 +3,7 @@
 // middle and resumed. Each must end in a one-line error (or, for the kill, a resumed run equal to
 // an uninterrupted one) and never leave a partial file under the final name.
 #include <catch2/catch.hpp>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -153,4 +154,39 @@ TEST_CASE("faults: a tile run killed in the middle and resumed equals an uninter
     CHECK(tiles_in(killed) == tiles_in(whole));
     // Resuming also removed the temporary files of the writes the kill interrupted.
     for (const std::string& n : names_in(killed)) CHECK(n.find(".tmp-") == std::string::npos);
+}
+
+TEST_CASE("faults: an endless input stream ends in the input-size error, with no output", "[faults][cli][limits]") {
+    const fs::path dir = casteljau::test::scratch_dir("faults_endless");
+    const std::string png = (dir / "z.png").string();
+    // /dev/zero never ends: the reader stops at Limits::input_bytes (1 GiB) instead of taking all
+    // the memory there is.
+    auto r = run_cli("svg /dev/zero -o " + shell_quote(png));
+    INFO(r.err);
+    CHECK(r.status == 1);
+    CHECK(r.err == "casteljau: error: '/dev/zero' is larger than 1073741824 bytes (Limits::input_bytes)\n");
+    CHECK(!fs::exists(png));
+}
+
+TEST_CASE("faults: map data from a FIFO is read to its end, and a writer stopping early is a one-line error",
+          "[faults][cli][maps]") {
+    const fs::path dir = casteljau::test::scratch_dir("faults_fifo");
+    const std::string fifo = (dir / "world.json").string();
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    const std::string whole = (dir / "whole.png").string(), cut = (dir / "cut.png").string();
+    // The whole file through the FIFO renders as from the file itself.
+    auto r = run_with("cat " + shell_quote(kWorld) + " > " + shell_quote(fifo) + " &",
+                      "map " + shell_quote(fifo) + " --width 256 -o " + shell_quote(whole));
+    INFO(r.err);
+    CHECK(r.status == 0);
+    r = run_cli("map " + shell_quote(kWorld) + " --width 256 -o " + shell_quote((dir / "file.png").string()));
+    CHECK(r.status == 0);
+    CHECK(casteljau::read_file(whole) == casteljau::read_file((dir / "file.png").string()));
+    // A writer that stops half-way: the text ends early.
+    const std::size_t half = casteljau::read_file(kWorld).size() / 2;
+    r = run_with("head -c " + std::to_string(half) + " " + shell_quote(kWorld) + " > " + shell_quote(fifo) + " &",
+                 "map " + shell_quote(fifo) + " --width 256 -o " + shell_quote(cut));
+    CHECK(r.status == 1);
+    CHECK(r.err.rfind("casteljau: error: map data: invalid JSON", 0) == 0);
+    CHECK(!fs::exists(cut));
 }

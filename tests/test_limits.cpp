@@ -104,6 +104,7 @@ TEST_CASE("limits: the defaults are the documented values, and reset restores th
     CHECK(d.jpeg_working_memory == (std::uint64_t(512) << 20));
     CHECK(d.canvas_save_depth == 1024);
     CHECK(d.text_bytes == (std::size_t(16) << 20));
+    CHECK(d.input_bytes == (std::uint64_t(1) << 30));
     {
         ScopedLimits s([](Limits& l) { l.css_rules = 7; });
         CHECK(current_limits().css_rules == 7);
@@ -333,6 +334,26 @@ TEST_CASE("limits: font_file_bytes bounds font files read from disk and memory",
     CHECK(kind == ErrorKind::Limit);
     CHECK_THAT(msg, Catch::Contains("larger than 1000 bytes"));
     CHECK(error_of([] { Font::from_memory(std::vector<std::uint8_t>(1001, 0)); }).first == ErrorKind::Limit);
+}
+
+TEST_CASE("limits: input_bytes bounds files, devices and map files read whole", "[limits]") {
+    const std::string world = std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/maps/countries-110m.json";
+    const std::string picture = std::string(CASTELJAU_SOURCE_DIR) + "/golden/install_scene.png";
+    const std::size_t size = read_file(picture).size();
+    {
+        // Exactly at the limit still reads.
+        ScopedLimits s([&](Limits& l) { l.input_bytes = size; });
+        CHECK(read_file(picture).size() == size);
+    }
+    ScopedLimits s([&](Limits& l) { l.input_bytes = size - 1; });
+    auto [kind, msg] = error_of([&] { read_file(picture); });
+    CHECK(kind == ErrorKind::Limit);
+    CHECK(msg == "'" + picture + "' is larger than " + std::to_string(size - 1) + " bytes (Limits::input_bytes)");
+    // A device has no size to check first: its bytes are counted as they arrive.
+    CHECK(error_of([] { read_file("/dev/zero"); }).first == ErrorKind::Limit);
+    CHECK(error_of([&] { read_map_file(world); }).first == ErrorKind::Limit);
+    CHECK(error_of([&] { SvgDocument::load(world); }).first == ErrorKind::Limit);
+    CHECK(error_of([&] { read_png(picture); }).first == ErrorKind::Limit);
 }
 
 TEST_CASE("limits: text_bytes bounds the text given to layout_text", "[limits]") {

@@ -246,6 +246,7 @@ typedef struct casteljau_limits {
     uint64_t jpeg_working_memory;  /* libjpeg's memory besides the image */
     uint64_t canvas_save_depth;    /* casteljau_canvas_save nesting */
     uint64_t text_bytes;           /* UTF-8 bytes of one text drawn */
+    uint64_t input_bytes;          /* one input file or stream read whole */
 } casteljau_limits;
 
 /* Fills the first `size` bytes of *out with the limits in force. INVALID_ARGUMENT for NULL or a

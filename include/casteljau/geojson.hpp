@@ -91,7 +91,9 @@ MapData read_topojson(std::string_view json, std::string_view object = {});
 MapData read_map_data(std::string_view text, std::string_view topojson_object = {});
 // The same from a file, with less memory: the file is read once into a padded buffer that simdjson
 // parses in place, and released as soon as it is parsed (peak: the file + simdjson's parsed tree,
-// then the tree + the MapData). Throws Error(Io) when the file cannot be read.
+// then the tree + the MapData); a pipe, FIFO or device is read to its end (read_file) and parsed
+// from a copy. Throws Error(Io) when the file cannot be read, Error(Limit) when it is larger than
+// Limits::input_bytes.
 MapData read_map_file(const std::string& path, std::string_view topojson_object = {});
 
 }  // namespace casteljau

@@ -43,6 +43,7 @@ struct Limits {
     std::uint64_t jpeg_working_memory = std::uint64_t(512) << 20;  // libjpeg's memory besides the image
     std::size_t canvas_save_depth = 1024;                      // Canvas::save() nesting
     std::size_t text_bytes = std::size_t(16) << 20;            // UTF-8 bytes given to layout_text
+    std::uint64_t input_bytes = std::uint64_t(1) << 30;        // one input file or stream read whole (read_file, read_map_file)
 
     // The highest value each field accepts.
     static Limits ceilings() noexcept;

@@ -55,7 +55,12 @@ void write_file_atomic(const std::string& path, std::span<const std::uint8_t> by
 // True for the name of a temporary file of write_file_atomic (".NAME.tmp-XXXXXX"), which only a
 // process killed in the middle of a write leaves behind.
 bool is_atomic_write_temporary(std::string_view file_name);
-// Reads a whole file. Throws Error(Io) naming the path and the reason.
+// Reads a whole file: a regular file, or a pipe, socket or device up to its end. Throws Error(Io)
+// naming the path and the reason, Error(Limit) past Limits::input_bytes (checked against a regular
+// file's size before reading, and as the bytes arrive from anything else, so that /dev/zero or an
+// endless pipe ends in an error, not in all the memory there is).
 std::vector<std::uint8_t> read_file(const std::string& path);
+// Reads standard input to its end, with the same bound and errors as read_file.
+std::vector<std::uint8_t> read_standard_input();
 
 }  // namespace casteljau

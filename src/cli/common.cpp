@@ -2,13 +2,11 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
-#include <fstream>
-#include <iostream>
-#include <iterator>
 #include <sstream>
+#include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/png.hpp"
 #include "cli/cli.hpp"
 
 namespace casteljau::cli {
@@ -58,14 +56,8 @@ Affine parse_affine_option(const std::string& option, const std::string& text) {
 }
 
 std::string read_text_input(const std::string& path) {
-    if (path == "-") {
-        std::ostringstream ss;
-        ss << std::cin.rdbuf();
-        return ss.str();
-    }
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw Error(ErrorKind::Io, "cannot read '" + path + "': " + std::strerror(errno));
-    return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+    const std::vector<std::uint8_t> bytes = path == "-" ? read_standard_input() : read_file(path);
+    return std::string(bytes.begin(), bytes.end());
 }
 
 }  // namespace casteljau::cli

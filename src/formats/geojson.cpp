@@ -2,13 +2,18 @@
 // FeatureCollection is checked for well-formedness in one pass and then parsed one feature at a
 // time with simdjson's DOM, so that memory holds the text, the MapData (see
 // include/casteljau/geojson.hpp) and the tape of a single feature; other documents are parsed whole.
+#include <sys/stat.h>
+
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/geojson.hpp"
+#include "casteljau/png.hpp"
 #include "formats/geojson_build.hpp"
 #include "formats/json_support.hpp"
 
@@ -320,6 +325,15 @@ MapData from_text(std::string_view text, std::string_view topojson_object) {
 }  // namespace
 
 MapData read_map_file(const std::string& path, std::string_view topojson_object) {
+    // simdjson's loader reads as many bytes as a regular file's size: a pipe, a FIFO or a device
+    // (`casteljau map <(gunzip -c world.json.gz)`) is read to its end by read_file instead.
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) {
+        const std::vector<std::uint8_t> bytes = read_file(path);
+        return from_text(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), topojson_object);
+    }
+    if (const std::uint64_t max_bytes = current_limits().input_bytes; static_cast<std::uint64_t>(st.st_size) > max_bytes)
+        throw Error(ErrorKind::Limit, "'" + path + "' is larger than " + std::to_string(max_bytes) + " bytes (Limits::input_bytes)");
     simdjson::padded_string text;
     if (simdjson::padded_string::load(path).get(text) != simdjson::SUCCESS)
         throw Error(ErrorKind::Io, "cannot read '" + path + "'");

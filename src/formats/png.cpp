@@ -475,26 +475,46 @@ void write_file_atomic(const std::string& path, std::span<const std::uint8_t> by
     if (::rename(temp.c_str(), target.c_str()) != 0) fail(errno);
 }
 
-std::vector<std::uint8_t> read_file(const std::string& path) {
-    if (path.empty()) throw Error(ErrorKind::Io, "cannot read a file with an empty name");
-    FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
-    if (fd.get() < 0) throw_io("cannot read", path, errno);
+namespace {
+
+[[noreturn]] void input_too_large(const std::string& name, std::uint64_t max_bytes) {
+    throw Error(ErrorKind::Limit, name + " is larger than " + std::to_string(max_bytes) + " bytes (Limits::input_bytes)");
+}
+
+// Reads fd to its end; `name` names it in errors ("'PATH'" or "standard input").
+std::vector<std::uint8_t> read_descriptor(int fd, const std::string& name) {
+    const std::uint64_t max_bytes = current_limits().input_bytes;
     struct stat st {};
-    if (::fstat(fd.get(), &st) != 0) throw_io("cannot read", path, errno);
-    if (S_ISDIR(st.st_mode)) throw_io("cannot read", path, EISDIR);
+    if (::fstat(fd, &st) != 0) throw Error(ErrorKind::Io, "cannot read " + name + ": " + std::strerror(errno));
+    if (S_ISDIR(st.st_mode)) throw Error(ErrorKind::Io, "cannot read " + name + ": " + std::strerror(EISDIR));
     std::vector<std::uint8_t> out;
-    if (S_ISREG(st.st_mode) && st.st_size > 0) out.reserve(static_cast<std::size_t>(st.st_size));
+    if (S_ISREG(st.st_mode) && st.st_size > 0) {
+        if (static_cast<std::uint64_t>(st.st_size) > max_bytes) input_too_large(name, max_bytes);
+        out.reserve(static_cast<std::size_t>(st.st_size));
+    }
     std::uint8_t buf[65536];
     for (;;) {
-        const ssize_t n = ::read(fd.get(), buf, sizeof buf);
+        const ssize_t n = ::read(fd, buf, sizeof buf);
         if (n < 0) {
             if (errno == EINTR) continue;
-            throw_io("cannot read", path, errno);
+            throw Error(ErrorKind::Io, "cannot read " + name + ": " + std::strerror(errno));
         }
         if (n == 0) break;
+        if (out.size() + static_cast<std::uint64_t>(n) > max_bytes) input_too_large(name, max_bytes);
         out.insert(out.end(), buf, buf + n);
     }
     return out;
 }
+
+}  // namespace
+
+std::vector<std::uint8_t> read_file(const std::string& path) {
+    if (path.empty()) throw Error(ErrorKind::Io, "cannot read a file with an empty name");
+    FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    if (fd.get() < 0) throw_io("cannot read", path, errno);
+    return read_descriptor(fd.get(), quote(path));
+}
+
+std::vector<std::uint8_t> read_standard_input() { return read_descriptor(STDIN_FILENO, "standard input"); }
 
 }  // namespace casteljau

@@ -32,6 +32,7 @@ void each_field(A& a, B& b, F&& f) {
     f(a.jpeg_working_memory, b.jpeg_working_memory, "jpeg_working_memory");
     f(a.canvas_save_depth, b.canvas_save_depth, "canvas_save_depth");
     f(a.text_bytes, b.text_bytes, "text_bytes");
+    f(a.input_bytes, b.input_bytes, "input_bytes");
 }
 
 struct AtomicLimits {
@@ -50,6 +51,7 @@ struct AtomicLimits {
     std::atomic<std::uint64_t> jpeg_working_memory;
     std::atomic<std::size_t> canvas_save_depth;
     std::atomic<std::size_t> text_bytes;
+    std::atomic<std::uint64_t> input_bytes;
 
     AtomicLimits() { store(Limits{}); }
     void store(const Limits& l) {
@@ -81,6 +83,7 @@ Limits Limits::ceilings() noexcept {
     c.jpeg_working_memory = std::uint64_t(4) << 30;
     c.canvas_save_depth = 65536;
     c.text_bytes = std::size_t(256) << 20;
+    c.input_bytes = std::uint64_t(64) << 30;
     return c;
 }
 
