@@ -49,14 +49,11 @@ private:
     std::size_t n_, i_ = 0;
 };
 
-// An enum value from any int, as a C caller may pass it (without a C++ cast, for which a value
-// outside the enumerators' range would be undefined).
+// An enum value from any int, as a C caller may pass it (casteljau.h gives the enumerations int as
+// their underlying type in C++, so every int is a value of them).
 template <class E>
 E as_enum(int v) {
-    static_assert(sizeof(E) == sizeof(int));
-    E e;
-    std::memcpy(&e, &v, sizeof e);
-    return e;
+    return static_cast<E>(v);
 }
 
 template <class T>

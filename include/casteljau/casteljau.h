@@ -48,7 +48,17 @@ extern "C" {
 /* MAJOR * 10000 + MINOR * 100 + PATCH, as casteljau_version() returns for the library linked. */
 #define CASTELJAU_VERSION (CASTELJAU_VERSION_MAJOR * 10000 + CASTELJAU_VERSION_MINOR * 100 + CASTELJAU_VERSION_PATCH)
 
-typedef enum casteljau_status {
+/* Enumerations: in C++ they take int as their underlying type, so that every int a C caller may
+ * pass is a value of the type there too (the library range-checks them: INVALID_ARGUMENT), and not
+ * undefined behaviour in the library's own C++. The size and calling convention are those of the
+ * C enum either way. */
+#ifdef __cplusplus
+#define CASTELJAU_ENUM(name) enum name : int
+#else
+#define CASTELJAU_ENUM(name) enum name
+#endif
+
+typedef CASTELJAU_ENUM(casteljau_status) {
     CASTELJAU_OK = 0,
     CASTELJAU_ERROR_INVALID_ARGUMENT = 1, /* a NULL handle, a value outside the documented domain */
     CASTELJAU_ERROR_PARSE = 2,            /* malformed text (path data, colour) */
@@ -60,17 +70,17 @@ typedef enum casteljau_status {
     CASTELJAU_ERROR_INTERNAL = 8
 } casteljau_status;
 
-typedef enum casteljau_fill_rule { CASTELJAU_FILL_NONZERO = 0, CASTELJAU_FILL_EVENODD = 1 } casteljau_fill_rule;
-typedef enum casteljau_line_cap { CASTELJAU_CAP_BUTT = 0, CASTELJAU_CAP_ROUND = 1, CASTELJAU_CAP_SQUARE = 2 } casteljau_line_cap;
-typedef enum casteljau_line_join {
+typedef CASTELJAU_ENUM(casteljau_fill_rule) { CASTELJAU_FILL_NONZERO = 0, CASTELJAU_FILL_EVENODD = 1 } casteljau_fill_rule;
+typedef CASTELJAU_ENUM(casteljau_line_cap) { CASTELJAU_CAP_BUTT = 0, CASTELJAU_CAP_ROUND = 1, CASTELJAU_CAP_SQUARE = 2 } casteljau_line_cap;
+typedef CASTELJAU_ENUM(casteljau_line_join) {
     CASTELJAU_JOIN_MITER = 0, CASTELJAU_JOIN_MITER_CLIP = 1, CASTELJAU_JOIN_ROUND = 2, CASTELJAU_JOIN_BEVEL = 3
 } casteljau_line_join;
-typedef enum casteljau_spread { CASTELJAU_SPREAD_PAD = 0, CASTELJAU_SPREAD_REFLECT = 1, CASTELJAU_SPREAD_REPEAT = 2 } casteljau_spread;
-typedef enum casteljau_sampling {
+typedef CASTELJAU_ENUM(casteljau_spread) { CASTELJAU_SPREAD_PAD = 0, CASTELJAU_SPREAD_REFLECT = 1, CASTELJAU_SPREAD_REPEAT = 2 } casteljau_spread;
+typedef CASTELJAU_ENUM(casteljau_sampling) {
     CASTELJAU_SAMPLING_NEAREST = 0, CASTELJAU_SAMPLING_BILINEAR = 1, CASTELJAU_SAMPLING_BICUBIC = 2
 } casteljau_sampling;
 /* The values of casteljau::BlendMode (blend_mode.hpp), formulas there. */
-typedef enum casteljau_blend_mode {
+typedef CASTELJAU_ENUM(casteljau_blend_mode) {
     CASTELJAU_BLEND_NORMAL = 0, CASTELJAU_BLEND_MULTIPLY, CASTELJAU_BLEND_SCREEN, CASTELJAU_BLEND_OVERLAY,
     CASTELJAU_BLEND_DARKEN, CASTELJAU_BLEND_LIGHTEN, CASTELJAU_BLEND_COLOR_DODGE, CASTELJAU_BLEND_COLOR_BURN,
     CASTELJAU_BLEND_HARD_LIGHT, CASTELJAU_BLEND_SOFT_LIGHT, CASTELJAU_BLEND_DIFFERENCE, CASTELJAU_BLEND_EXCLUSION,
