@@ -12,23 +12,16 @@
 #include "casteljau/raster.hpp"
 #include "casteljau/stroke.hpp"
 #include "harness.hpp"
-#include "path_gen.hpp"
+#include "stroke_case.hpp"
 
 using namespace casteljau;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     fuzz::Bytes in(data, size);
-    StrokeStyle st;
-    st.width = in.flag() ? in.number(40) : in.range(0, 40) / 4.0;
-    st.cap = static_cast<LineCap>(in.range(0, 2));
-    st.join = static_cast<LineJoin>(in.range(0, 3));
-    st.miter_limit = in.flag() ? in.number(10) : 4;
-    const int ndash = in.range(0, 6);
-    for (int i = 0; i < ndash; ++i) st.dashes.push_back(in.flag() ? in.number(20) : in.range(0, 20) / 2.0);
-    st.dash_offset = in.flag() ? in.number(50) : 0;
-    Affine m{};
-    if (in.flag()) m = Affine{in.number(4), in.number(1), in.number(1), in.number(4), 0, 0};
-    const Path path = fuzz::random_path(in, 200);
+    const fuzz::StrokeCase c = fuzz::read_stroke_case(in);
+    const StrokeStyle& st = c.style;
+    const Affine& m = c.m;
+    const Path& path = c.path;
     fuzz::run([&] {
         const Path outline = stroke(path, st, m, 0.05);
         bool finite_in = std::isfinite(st.width) && st.width > 0;

@@ -7,10 +7,14 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "accuracy_util.hpp"
 #include "alloc_counter.hpp"
 #include "glyph_outline.hpp"
+#include "../fuzz/stroke_case.hpp"
+#include "casteljau/png.hpp"
+#include "casteljau/stroke.hpp"
 
 using namespace casteljau;
 using namespace casteljau::testing;
@@ -251,6 +255,30 @@ TEST_CASE("accuracy: thousands of pieces over many pixels stay within the fill's
         INFO(c.text());
         CHECK(c.max_err <= 255.0 / 32);
     }
+}
+
+TEST_CASE("accuracy: thousands of pieces crossing between the dense method's lines are re-sorted, not swapped one by one",
+          "[accuracy][regression]") {
+    // Found by fuzz_stroke (fuzz/regressions/stroke/huge-width-...): a stroke 1.3e8 wide under a
+    // singular transform puts nearly all of a 27,785-segment outline through each of 270 pixels.
+    // Once the exact-work budget is spent each such pixel is integrated on 16 lines, and between
+    // two lines nearly every pair of pieces swaps: restoring their x order by insertion cost the
+    // square of the pieces per line (5 s in Release). The swaps count as work, so the fill stays
+    // within twice its budget plus the last cell's lines only when the order is re-sorted whole.
+    const std::vector<std::uint8_t> bytes = read_file(std::string(CASTELJAU_SOURCE_DIR) +
+        "/fuzz/regressions/stroke/huge-width-under-a-singular-transform-piles-crossing-pieces-dense-lines-insertion-sort-quadratic");
+    fuzz::Bytes in(bytes.data(), bytes.size());
+    const fuzz::StrokeCase c = fuzz::read_stroke_case(in);
+    const Path outline = stroke(c.path, c.style, c.m, 0.05);
+    Rasterizer r;
+    (void)r.fill_mask(outline, c.m, FillOptions{}, IRect{0, 0, 128, 128});
+    const RasterStats st = r.last_stats();
+    INFO("segments " << st.segments << ", exact cells " << st.exact_cells << ", dense " << st.dense_cells << ", accumulated "
+                     << st.accumulated_cells << ", work " << st.exact_work);
+    CHECK(st.dense_cells > 0);
+    // 16 lines of 2 visits and a sort (log2 of 27,785 pieces < 15 visits) per piece.
+    const double budget = 5e7 + 2000.0 * static_cast<double>(st.segments);
+    CHECK(st.exact_work <= 2 * budget + 16 * (2 + 15) * static_cast<double>(st.segments));
 }
 
 TEST_CASE("accuracy: polygons under rotation, scale and skew transforms", "[accuracy]") {

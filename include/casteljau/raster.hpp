@@ -83,6 +83,10 @@ struct RasterStats {
     // one pixel, or the fill's exact-work budget spent) and lines through the cell were integrated
     // instead: within 1/2048 of a pixel, 1/32 at worst. Real glyphs and maps have none.
     std::size_t dense_cells = 0;
+    // Of those, cells left to plain accumulation (as exact_overlaps = false would give) because the
+    // fill had already spent twice its exact-work budget: only shapes that pile thousands of
+    // crossing pieces into hundreds of pixels get there, and this bounds their time.
+    std::size_t accumulated_cells = 0;
     double exact_work = 0;           // piece visits the exact cells cost (bounded by the fill's size)
     std::size_t strips = 0;          // dense buffers run: 1, or the bands of a large shape
     Topology topology = Topology::Unknown;  // the verdict the fill used (Unknown: exact_overlaps off)

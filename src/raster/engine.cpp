@@ -49,6 +49,10 @@ namespace {
 // dense method.
 constexpr double kExactWorkBase = 5e7;
 constexpr double kExactWorkPerSegment = 2000;
+// Past this many times the budget, the remaining exact cells keep their accumulated coverage: the
+// dense method still costs a sort of the cell's pieces per line, and a singular transform can pass
+// every piece of a shape through hundreds of cells.
+constexpr double kExactWorkCeiling = 2;
 
 inline bool monotone(std::uint8_t d) { return (d & 3) != 3 || (d & 12) != 12; }
 
@@ -328,8 +332,8 @@ void Engine::classify() {
         for (std::int32_t i = head_[cell] - 1; i >= 0; i = visits_[static_cast<std::size_t>(i)].next) {
             const Visit& v = visits_[static_cast<std::size_t>(i)];
             if (v.merged_away) continue;
-            if (n < kMaxRuns) runs[n] = &v;
-            ++n;
+            if (++n > kMaxRuns) break;  // computed exactly whatever its runs are
+            runs[n - 1] = &v;
             all_simple = all_simple && simple_run(v);
         }
         if (all_simple && n == 1) continue;
@@ -391,6 +395,11 @@ void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
         const double* acc_row = acc_.data() + row_base;
         for (; pos <= col; ++pos) prefix += acc_row[pos];
         if (col >= w_) continue;
+        if (scratch_.work >= kExactWorkCeiling * scratch_.budget) {
+            patches_.push_back({exact_[ei], coverage_u8(prefix, rule)});
+            ++stats.accumulated_cells;
+            continue;
+        }
         auto& ids = scratch_.ids;  // exact_cell_coverage does not use scratch_.ids itself
         ids.assign(exact_ids_.begin() + exact_at_[ei], exact_ids_.begin() + exact_at_[ei + 1]);
         patches_.push_back({exact_[ei], exact_cell_u8(segs_.data(), ids, col, r, prefix, rule, scratch_)});

@@ -127,6 +127,7 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         else sc.inside.push_back({by, ay, bx, ax, -1});
     }
     const std::size_t n = sc.inside.size();
+    sc.work += static_cast<double>(ids.size());  // clipping every edge to the cell
     // Reference point in general position: on no piece's line through an end point.
     double rx = cx + kRef[0][0], ryy = ry + kRef[0][1];
     for (const auto& ref : kRef) {
@@ -211,9 +212,16 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         for (; next < n && (sc.inside[order[next]].ya < y || (from_top && sc.inside[order[next]].ya == y)); ++next)
             if (y < sc.inside[order[next]].yb) live.push_back(order[next]);
     };
-    // Sorts sc.active (filled in `live` order) by xm, carrying `live` along.
+    // Sorts sc.active (filled in `live` order) by xm, carrying `live` along. Insertion from the
+    // previous line's order costs the swaps of the pieces that crossed since; when they pass a few
+    // per piece (thousands of pieces crossing every which way between two lines of the dense
+    // method, where the swaps would grow with the square of the pieces), a full sort takes over.
+    // The swaps and the full sorts count as work.
     auto sort_active = [&] {
-        for (std::size_t a = 1; a < live.size(); ++a) {
+        const std::size_t na = live.size();
+        const std::size_t max_swaps = 4 * na + 64;
+        std::size_t swaps = 0;
+        for (std::size_t a = 1; a < na; ++a) {
             const ExactScratch::Cross c = sc.active[a];
             const std::uint32_t id = live[a];
             std::size_t b = a;
@@ -223,7 +231,21 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
             }
             sc.active[b] = c;
             live[b] = id;
+            swaps += a - b;
+            if (swaps > max_swaps) {
+                sc.ranked.resize(na);
+                for (std::size_t i = 0; i < na; ++i) sc.ranked[i] = {sc.active[i], live[i]};
+                std::sort(sc.ranked.begin(), sc.ranked.end(),
+                          [](const ExactScratch::Ranked& u, const ExactScratch::Ranked& v) { return u.c.xm < v.c.xm; });
+                for (std::size_t i = 0; i < na; ++i) {
+                    sc.active[i] = sc.ranked[i].c;
+                    live[i] = sc.ranked[i].id;
+                }
+                sc.work += static_cast<double>(na) * std::log2(static_cast<double>(na));
+                return;
+            }
         }
+        sc.work += static_cast<double>(swaps);
     };
     // The offset of a line's leftmost region without counting crossings from r for every line:
     // along the vertical x = rx through r, w changes only where a piece crosses it, by +1 going

@@ -41,6 +41,8 @@ struct ExactScratch {
     struct Region { int b; double area; };
     std::vector<Region> regions;
     std::vector<std::uint32_t> order, live;  // the pieces by top end, and the active ones
+    struct Ranked { Cross c; std::uint32_t id; };
+    std::vector<Ranked> ranked;               // active pieces re-sorted whole (see sort_active)
     struct VCross { double y; int d; };       // a piece crossing the vertical through r
     std::vector<VCross> vcross;
     // The work the exact cells of the current fill may spend, in piece visits (see

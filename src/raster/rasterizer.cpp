@@ -197,6 +197,7 @@ void Rasterizer::Impl::run_bands(const FillOptions& opts, bool exact, int ox, in
         engine.finish(opts.rule, ox, oy + y0, sink, part);
         stats.exact_cells += part.exact_cells;
         stats.dense_cells += part.dense_cells;
+        stats.accumulated_cells += part.accumulated_cells;
         stats.exact_work += part.exact_work;
         ++stats.strips;
     }
