@@ -325,8 +325,8 @@ MapData from_text(std::string_view text, std::string_view topojson_object) {
 }  // namespace
 
 MapData read_map_file(const std::string& path, std::string_view topojson_object) {
-    // simdjson's loader reads as many bytes as a regular file's size: a pipe, a FIFO or a device
-    // (`casteljau map <(gunzip -c world.json.gz)`) is read to its end by read_file instead.
+    // simdjson's loader needs the file's size, which a pipe, a FIFO or a device lacks
+    // (`casteljau map <(gunzip -c world.json.gz)`): read_file reads those to their end instead.
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) {
         const std::vector<std::uint8_t> bytes = read_file(path);

@@ -320,38 +320,6 @@ struct Drawable {
     Rect box;  // control bounds of path
 };
 
-// The order in which workers take the bands: the heaviest first by an estimate of their work (the
-// path points in each band, plus the bounding-box area of the paths crossing it / 256), so that
-// the bands taken last are light ones and the threads finish together. Only the schedule depends
-// on it, never the pixels.
-std::vector<std::size_t> heaviest_first(const std::vector<IRect>& bands, int height, const std::vector<const Path*>& paths) {
-    const std::size_t n = bands.size();
-    std::vector<double> work(n, 0.0);
-    const double per_row = static_cast<double>(n) / std::max(height, 1);
-    auto band_of = [&](double y) {
-        return static_cast<std::size_t>(std::clamp(y * per_row, 0.0, static_cast<double>(n - 1)));
-    };
-    for (const Path* p : paths) {
-        for (const Point& q : p->points()) work[band_of(q.y)] += 1;
-        const Rect box = p->control_bounds();
-        for (std::size_t b = 0; b < n; ++b) {
-            const double rows = std::min(box.y1, double(bands[b].y1)) - std::max(box.y0, double(bands[b].y0));
-            if (rows > 0) work[b] += rows * box.width() / 256;
-        }
-    }
-    std::vector<std::size_t> order(n);
-    for (std::size_t b = 0; b < n; ++b) order[b] = b;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return work[a] > work[b]; });
-    return order;
-}
-
-std::vector<const Path*> paths_of(const std::vector<std::optional<Drawable>>& chunk) {
-    std::vector<const Path*> out;
-    for (const auto& d : chunk)
-        if (d) out.push_back(&d->path);
-    return out;
-}
-
 }  // namespace
 
 int map_threads(int requested) {
@@ -454,9 +422,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             }
             bool drew = false;
             chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
-                const std::vector<std::size_t> schedule = heaviest_first(bands, frame.height, paths_of(chunk));
-                parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t k) {
-                    const std::size_t b = schedule[k];
+                parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
                     Rasterizer& raster = canvases[static_cast<std::size_t>(w)]->rasterizer();
                     AreaCompositor* into = banded ? nullptr : &*area;
                     for (const auto& d : chunk) {
@@ -477,9 +443,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             std::reverse(order.begin(), order.end());
         } else if (layer.fill) {
             chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
-                const std::vector<std::size_t> schedule = heaviest_first(bands, frame.height, paths_of(chunk));
-                parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t k) {
-                    const std::size_t b = schedule[k];
+                parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
                     Canvas& canvas = *canvases[static_cast<std::size_t>(w)];
                     canvas.save();
                     canvas.clip_rect(Rect{0.0, double(bands[b].y0), double(bands[b].x1), double(bands[b].y1)});
@@ -504,9 +468,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             const Rect box = outline.control_bounds();
             Paint paint = Paint::solid(*line_color);
             paint.opacity = layer.opacity;
-            const std::vector<std::size_t> schedule = heaviest_first(bands, frame.height, {&outline});
-            parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t k) {
-                const std::size_t b = schedule[k];
+            parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
                 if (!overlaps(box, bands[b])) return;
                 Canvas& canvas = *canvases[static_cast<std::size_t>(w)];
                 canvas.save();
