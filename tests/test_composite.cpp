@@ -192,3 +192,40 @@ TEST_CASE("composite_span with linear_blend is the blend in linear light within 
     CHECK(checked > 100000);
     CHECK(worst <= 1);
 }
+
+TEST_CASE("composite_span: runs of empty and full coverage at every offset and length match the per-pixel formula",
+          "[composite]") {
+    // Spans mostly made of runs of 0 and 255 with partial values between them, starting at every
+    // offset and cut at every length, so that runs begin, end and straddle every multiple of eight.
+    std::array<std::uint8_t, 80> coverage{};
+    unsigned seed = 12345;
+    auto next = [&] { return seed = seed * 1103515245u + 12345u, (seed >> 16) & 0x7fff; };
+    for (std::size_t i = 0; i < coverage.size();) {
+        const std::size_t run = 1 + next() % 17;
+        const unsigned kind = next() % 3;
+        for (std::size_t k = 0; k < run && i < coverage.size(); ++k, ++i)
+            coverage[i] = static_cast<std::uint8_t>(kind == 0 ? 0 : kind == 1 ? 255 : 1 + next() % 254);
+    }
+    long wrong = 0, checked = 0;
+    for (const Color& colour : {Color::rgba(10, 200, 30, 255), Color::rgba(10, 200, 30, 128)}) {
+        const Paint paint = Paint::solid(colour);
+        const Rgba s = premultiplied_source(colour, 1.0);
+        const std::array<int, 4> d{20, 40, 60, 200};
+        for (int offset = 0; offset < 9; ++offset)
+            for (int length = 0; offset + length <= static_cast<int>(coverage.size()); ++length) {
+                std::vector<std::uint8_t> px(4 * coverage.size());
+                for (std::size_t i = 0; i < coverage.size(); ++i)
+                    for (int k = 0; k < 4; ++k) px[4 * i + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(d[static_cast<std::size_t>(k)]);
+                composite_span(px.data() + 4 * offset, length, coverage.data() + offset, paint);
+                for (int i = 0; i < static_cast<int>(coverage.size()); ++i) {
+                    const bool inside = i >= offset && i < offset + length;
+                    const auto want = inside ? source_over(s, coverage[static_cast<std::size_t>(i)], d) : d;
+                    const std::uint8_t* p = px.data() + 4 * i;
+                    ++checked;
+                    if (std::array<int, 4>{p[0], p[1], p[2], p[3]} != want) ++wrong;
+                }
+            }
+    }
+    INFO(wrong << " of " << checked << " pixels differ");
+    CHECK(wrong == 0);
+}

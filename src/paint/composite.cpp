@@ -90,14 +90,35 @@ void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage,
     if (paint.linear_blend) return composite_linear(dst, length, coverage, color);
     const PremulPixel s = premultiply(color);
     const std::uint8_t solid[4] = {s.r, s.g, s.b, s.a};
-    for (int i = 0; i < length; ++i, dst += 4) {
-        const unsigned c = coverage[i];
-        if (c == 0) continue;
-        if (c == 255 && s.a == 255) {
-            std::memcpy(dst, solid, 4);
-            continue;
+    // Eight pixels of the opaque colour, for runs of full coverage.
+    std::uint8_t solid8[32];
+    for (int k = 0; k < 8; ++k) std::memcpy(solid8 + 4 * k, solid, 4);
+    const bool opaque = s.a == 255;
+    constexpr std::uint64_t kNone = 0, kFull = ~std::uint64_t(0);
+    int i = 0;
+    while (i < length) {
+        // Coverage is mostly runs of 0 (outside the shape) and 255 (inside): eight at a time.
+        if (i + 8 <= length) {
+            std::uint64_t word;
+            std::memcpy(&word, coverage + i, 8);
+            if (word == kNone) {
+                i += 8;
+                continue;
+            }
+            if (word == kFull && opaque) {
+                std::memcpy(dst + 4 * static_cast<std::size_t>(i), solid8, 32);
+                i += 8;
+                continue;
+            }
         }
-        source_over(dst, solid, c);
+        const int end = std::min(length, i + 8);
+        for (; i < end; ++i) {
+            const unsigned c = coverage[i];
+            if (c == 0) continue;
+            std::uint8_t* d = dst + 4 * static_cast<std::size_t>(i);
+            if (c == 255 && opaque) std::memcpy(d, solid, 4);
+            else source_over(d, solid, c);
+        }
     }
 }
 
