@@ -42,27 +42,51 @@ struct AreaSink final : SpanSink {
                                static_cast<std::size_t>(x - x0);
         std::uint8_t* L = layer + at * 4;
         std::uint8_t* C = cov + at;
-        for (int i = 0; i < length; ++i, L += 4) {
-            const unsigned a = coverage[i];
-            if (a == 0) continue;
-            const unsigned total = C[i];
-            if (a == 255 && total == 0) {  // inside a fill, first to cover: the colour itself
-                C[i] = 255;
-                std::memcpy(L, &c, 4);
-                continue;
+        std::uint8_t colour8[32];
+        for (int k = 0; k < 8; ++k) std::memcpy(colour8 + 4 * k, &c, 4);
+        constexpr std::uint64_t kNone = 0, kFull = ~std::uint64_t(0);
+        int i = 0;
+        while (i < length) {
+            // Eight pixels at a time where the fill leaves them alone (coverage 0) or covers them
+            // fully as their first fill (the colour itself, the pixels taken whole).
+            if (i + 8 <= length) {
+                std::uint64_t a8, t8;
+                std::memcpy(&a8, coverage + i, 8);
+                if (a8 == kNone) {
+                    i += 8;
+                    continue;
+                }
+                std::memcpy(&t8, C + i, 8);
+                if (a8 == kFull && t8 == kNone) {
+                    std::memcpy(C + i, &kFull, 8);
+                    std::memcpy(L + 4 * static_cast<std::size_t>(i), colour8, 32);
+                    i += 8;
+                    continue;
+                }
             }
-            const unsigned rem = 255u - total;
-            if (rem == 0) continue;
-            unsigned take = a < rem ? a : rem;
-            // Two fills meeting at an edge whose rounded coverages fall one short of full.
-            if (total > 0 && take + 1 == rem) take = rem;
-            C[i] = static_cast<std::uint8_t>(total + take);
-            const unsigned na = std::min(255u, unsigned(L[3]) + mul_div255(take, c.a));
-            L[0] = static_cast<std::uint8_t>(std::min(na, unsigned(L[0]) + mul_div255(take, c.r)));
-            L[1] = static_cast<std::uint8_t>(std::min(na, unsigned(L[1]) + mul_div255(take, c.g)));
-            L[2] = static_cast<std::uint8_t>(std::min(na, unsigned(L[2]) + mul_div255(take, c.b)));
-            L[3] = static_cast<std::uint8_t>(na);
+            for (const int end = std::min(length, i + 8); i < end; ++i) pixel(coverage[i], C[i], L + 4 * static_cast<std::size_t>(i));
         }
+    }
+    // One pixel: coverage a of this fill, t the coverage already taken, l the layer's pixel.
+    void pixel(unsigned a, std::uint8_t& t, std::uint8_t* l) const {
+        if (a == 0) return;
+        const unsigned total = t;
+        if (a == 255 && total == 0) {  // inside a fill, first to cover: the colour itself
+            t = 255;
+            std::memcpy(l, &c, 4);
+            return;
+        }
+        const unsigned rem = 255u - total;
+        if (rem == 0) return;
+        unsigned take = a < rem ? a : rem;
+        // Two fills meeting at an edge whose rounded coverages fall one short of full.
+        if (total > 0 && take + 1 == rem) take = rem;
+        t = static_cast<std::uint8_t>(total + take);
+        const unsigned na = std::min(255u, unsigned(l[3]) + mul_div255(take, c.a));
+        l[0] = static_cast<std::uint8_t>(std::min(na, unsigned(l[0]) + mul_div255(take, c.r)));
+        l[1] = static_cast<std::uint8_t>(std::min(na, unsigned(l[1]) + mul_div255(take, c.g)));
+        l[2] = static_cast<std::uint8_t>(std::min(na, unsigned(l[2]) + mul_div255(take, c.b)));
+        l[3] = static_cast<std::uint8_t>(na);
     }
 };
 
