@@ -229,3 +229,42 @@ TEST_CASE("composite_span: runs of empty and full coverage at every offset and l
     INFO(wrong << " of " << checked << " pixels differ");
     CHECK(wrong == 0);
 }
+
+TEST_CASE("blend_span source-over of a whole layer (no coverage): runs of transparent and opaque pixels at every offset",
+          "[composite]") {
+    // A layer as the AreaCompositor leaves it: runs of transparent pixels, of opaque ones and of
+    // translucent ones, composited at every offset and length onto a translucent destination.
+    constexpr std::size_t kPixels = 80;
+    std::vector<std::uint8_t> layer(4 * kPixels);
+    unsigned seed = 777;
+    auto next = [&] { return seed = seed * 1103515245u + 12345u, (seed >> 16) & 0x7fff; };
+    for (std::size_t i = 0; i < kPixels;) {
+        const std::size_t run = 1 + next() % 19;
+        const unsigned kind = next() % 3;
+        for (std::size_t k = 0; k < run && i < kPixels; ++k, ++i) {
+            const unsigned a = kind == 0 ? 0 : kind == 1 ? 255 : 1 + next() % 254;
+            for (int c = 0; c < 3; ++c) layer[4 * i + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(next() % (a + 1));
+            layer[4 * i + 3] = static_cast<std::uint8_t>(a);
+        }
+    }
+    const std::array<int, 4> d{20, 40, 60, 200};
+    long wrong = 0, checked = 0;
+    for (int offset = 0; offset < 9; ++offset)
+        for (int length = 0; offset + length <= static_cast<int>(kPixels); ++length) {
+            std::vector<std::uint8_t> px(4 * kPixels);
+            for (std::size_t i = 0; i < kPixels; ++i)
+                for (int k = 0; k < 4; ++k) px[4 * i + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(d[static_cast<std::size_t>(k)]);
+            blend_span(px.data() + 4 * offset, length, nullptr, layer.data() + 4 * offset, BlendMode::SourceOver);
+            for (int i = 0; i < static_cast<int>(kPixels); ++i) {
+                const std::uint8_t* s = layer.data() + 4 * i;
+                const Rgba src{double(s[0]), double(s[1]), double(s[2]), double(s[3])};
+                const bool inside = i >= offset && i < offset + length;
+                const auto want = inside ? source_over(src, 255, d) : d;
+                const std::uint8_t* p = px.data() + 4 * i;
+                ++checked;
+                if (std::array<int, 4>{p[0], p[1], p[2], p[3]} != want) ++wrong;
+            }
+        }
+    INFO(wrong << " of " << checked << " pixels differ");
+    CHECK(wrong == 0);
+}
