@@ -69,6 +69,10 @@ TEST_CASE("topology: simple shapes are Simple", "[raster][topology]") {
     Path open;
     open.move_to(0, 0).quad_to({10, -10}, {20, 0}).conic_to({20, 20}, {0, 20}, 0.7);
     CHECK(classify_topology(open) == Topology::Simple);
+    // A sharp corner between two curves (their hulls leave the corner in directions 90 degrees apart).
+    Path corner;
+    corner.move_to(0, 0).quad_to({10, 0}, {20, 10}).quad_to({10, 10}, {0, 20}).close();
+    CHECK(classify_topology(corner) == Topology::Simple);
     CHECK(classify_topology(Path()) == Topology::Simple);
 }
 
@@ -87,6 +91,11 @@ TEST_CASE("topology: crossings, nesting and stacked copies are Overlapping", "[r
     CHECK(classify_topology(loop) == Topology::Overlapping);
     // Contours that touch at a vertex are not proven simple (the margin).
     CHECK(classify_topology(join(square(0, 0, 10), square(10, 10, 10))) == Topology::Overlapping);
+    // Consecutive curves whose hulls leave their shared point in overlapping directions: b starts
+    // below a and ends above it, so it crosses a (windings 1 and -1).
+    Path crossing_curves;
+    crossing_curves.move_to(0, 0).quad_to({10, 10}, {20, 0}).quad_to({10, -2}, {0, 4}).close();
+    CHECK(classify_topology(crossing_curves) == Topology::Overlapping);
     // A spike going back on itself.
     CHECK(classify_topology(polygon({{0, 0}, {10, 0}, {20, 0}, {10, 0}, {10, 10}})) == Topology::Overlapping);
     // Non-finite coordinates never claim simplicity.

@@ -37,7 +37,6 @@
 // A work budget bounds the splitting; past it the verdict is "overlapping" (the exact path).
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "casteljau/raster.hpp"
@@ -117,6 +116,15 @@ public:
 private:
     std::vector<Seg> segs_;
     std::vector<std::size_t> contour_at_;  // first segment of each contour (+ end)
+    // Scratch of run(), kept between calls (classify_topology reuses one classifier per thread).
+    struct Cells {
+        int x0, y0, x1, y1;
+    };
+    std::vector<Seg> contour_, halves_;
+    std::vector<Cells> span_;
+    std::vector<std::uint32_t> cstart_, members_, fill_;
+    std::vector<Rect> boxes_;
+    std::vector<int> orient_;
     double delta_ = 0;                     // distance margin (path units)
     long budget_ = 0;                      // hull tests left
 
@@ -195,47 +203,61 @@ bool Classifier::disjoint(const Seg& a, const Seg& b, int depth) {
 
 // a ends where b starts (at S). The directions from S to a's other control points span a sector
 // under a half turn, so do b's, and the two sectors are apart by more than the angular margin:
-// then the hulls share S only.
+// then the hulls share S only. Directions are unit vectors compared by cross and dot products
+// (sin and cos of the angle between them), each sector widened by the margin on both sides.
 bool Classifier::sectors_apart(const Seg& a, const Seg& b) const {
-    constexpr double kTwoPi = 2 * std::numbers::pi;
-    constexpr double kAngleMargin = 1.0 / (1 << 20);
+    // The margin m = 2^-20 rad: sin m and cos m (to double precision).
+    constexpr double kSin = 1.0 / (1 << 20), kCos = 1.0 - 0.5 * kSin * kSin;
     const Point s = b.p[0];
-    const double min_len = delta_ * double(1 << 10);  // angles of shorter vectors are not trusted
+    const double min_len = delta_ * double(1 << 10);  // directions of shorter vectors are not trusted
     struct Sector {
-        double start, length;
+        Point lo, hi;  // its clockwise-most and counter-clockwise-most directions, widened by m
     };
+    // The sector of the directions to q[0..n) (those other than s), widened; false when there is
+    // none, a vector is too short, or the widened sector is not under a half turn.
     auto sector = [&](const Point* q, int n, Sector& out) {
-        double ang[3];
+        Point u[3];
         int k = 0;
         for (int i = 0; i < n; ++i) {
             const Point v = q[i] - s;
             if (v.x == 0 && v.y == 0) continue;
             if (std::max(std::abs(v.x), std::abs(v.y)) < min_len) return false;
-            ang[k++] = std::atan2(v.y, v.x);
+            const double len = std::sqrt(v.x * v.x + v.y * v.y);
+            u[k++] = {v.x / len, v.y / len};
         }
         if (k == 0) return false;
-        for (int i = 1; i < k; ++i)  // insertion sort of at most three angles
-            for (int j = i; j > 0 && ang[j] < ang[j - 1]; --j) std::swap(ang[j], ang[j - 1]);
-        // The sector is the circle minus its largest gap between consecutive directions.
-        double gap = ang[0] + kTwoPi - ang[k - 1];
-        int after = 0;
-        for (int i = 1; i < k; ++i)
-            if (ang[i] - ang[i - 1] > gap) {
-                gap = ang[i] - ang[i - 1];
-                after = i;
-            }
-        out = {ang[after], kTwoPi - gap};
-        return out.length < std::numbers::pi - kAngleMargin;
+        // lo: a direction with every other one counter-clockwise of it (cross >= 0); then hi: the
+        // one furthest counter-clockwise from lo. Within a sector under a half turn both exist.
+        int lo = -1;
+        for (int i = 0; i < k && lo < 0; ++i) {
+            bool all = true;
+            for (int j = 0; j < k; ++j)
+                if (j != i && cross(u[i], u[j]) < 0) all = false;
+            if (all) lo = i;
+        }
+        if (lo < 0) return false;
+        int hi = lo;
+        for (int j = 0; j < k; ++j)
+            if (cross(u[hi], u[j]) > 0 || (cross(u[hi], u[j]) == 0 && u[hi].x * u[j].x + u[hi].y * u[j].y < 0)) hi = j;
+        // Widen: lo turned clockwise by m, hi counter-clockwise by m.
+        const Point l{u[lo].x * kCos + u[lo].y * kSin, -u[lo].x * kSin + u[lo].y * kCos};
+        const Point h{u[hi].x * kCos - u[hi].y * kSin, u[hi].x * kSin + u[hi].y * kCos};
+        // Under a half turn from l to h: h on the left of l (and not straight back).
+        if (!(cross(l, h) > 0) && !(cross(l, h) == 0 && l.x * h.x + l.y * h.y > 0)) return false;
+        // Every direction must lie between l and h (a set spanning more than a half turn has no
+        // valid lo, but rounding must not hide it: check).
+        for (int j = 0; j < k; ++j)
+            if (cross(l, u[j]) < 0 || cross(u[j], h) < 0) return false;
+        out = {l, h};
+        return true;
     };
-    auto inside = [&](double phi, const Sector& sec) {
-        double d = std::fmod(phi - sec.start, kTwoPi);
-        if (d < 0) d += kTwoPi;
-        return d <= sec.length + kAngleMargin || d >= kTwoPi - kAngleMargin;
-    };
+    // Is direction d inside sector x (closed)? Both are under a half turn.
+    auto inside = [](Point d, const Sector& x) { return cross(x.lo, d) >= 0 && cross(d, x.hi) >= 0; };
     Sector sa, sb;
     // a's other points: all but its end; b's: all but its start.
     if (!sector(a.p, a.n - 1, sa) || !sector(b.p + 1, b.n - 1, sb)) return false;
-    return !inside(sa.start, sb) && !inside(sb.start, sa);
+    // Two arcs of a circle, each under a half turn, meet exactly when one's start lies in the other.
+    return !inside(sa.lo, sb) && !inside(sb.lo, sa);
 }
 
 bool Classifier::meet_only_at_end(const Seg& a, const Seg& b, int depth) {
@@ -327,14 +349,14 @@ void Classifier::add_contour(std::vector<Seg>& c) {
     if (c.empty()) return;
     // At least three segments, so that consecutive segments share exactly one end point.
     while (c.size() < 3) {
-        std::vector<Seg> halves;
+        halves_.clear();
         for (const Seg& s : c) {
             Seg a, b;
             split(s, a, b);
-            halves.push_back(a);
-            halves.push_back(b);
+            halves_.push_back(a);
+            halves_.push_back(b);
         }
-        c.swap(halves);
+        c.swap(halves_);
     }
     const int id = static_cast<int>(contour_at_.size());
     for (std::size_t i = 0; i < c.size(); ++i) {
@@ -347,6 +369,9 @@ void Classifier::add_contour(std::vector<Seg>& c) {
 }
 
 Topology Classifier::run(const Path& path) {
+    segs_.clear();
+    contour_at_.clear();
+    contour_.clear();
     if (!path.is_finite()) return Topology::Overlapping;
     const Rect cb = path.control_bounds();
     if (!(cb.x1 >= cb.x0)) return Topology::Simple;  // no points
@@ -357,7 +382,7 @@ Topology Classifier::run(const Path& path) {
 
     // Segments per contour (each contour closed by a line when it does not end at its start),
     // without segments whose control points all coincide (they draw nothing).
-    std::vector<Seg> contour;
+    std::vector<Seg>& contour = contour_;
     Point start{}, cur{};
     bool self_crossing = false;  // a cubic not proven free of loops
     auto push = [&](std::initializer_list<Point> pts, bool conic, double w) {
@@ -439,11 +464,10 @@ Topology Classifier::run(const Path& path) {
     const double gx = grid / std::max(cb.width() + 2 * delta_, delta_), gy = grid / std::max(cb.height() + 2 * delta_, delta_);
     auto cell_x = [&](double x) { return std::clamp(static_cast<int>((x - cb.x0 + delta_) * gx), 0, grid - 1); };
     auto cell_y = [&](double y) { return std::clamp(static_cast<int>((y - cb.y0 + delta_) * gy), 0, grid - 1); };
-    struct Cells {
-        int x0, y0, x1, y1;
-    };
-    std::vector<Cells> span(n);
-    std::vector<std::uint32_t> cstart(static_cast<std::size_t>(grid) * grid + 1, 0);
+    std::vector<Cells>& span = span_;
+    span.resize(n);
+    std::vector<std::uint32_t>& cstart = cstart_;
+    cstart.assign(static_cast<std::size_t>(grid) * grid + 1, 0);
     for (std::size_t i = 0; i < n; ++i) {
         const Rect& b = segs_[i].box;
         span[i] = {cell_x(b.x0 - delta_), cell_y(b.y0 - delta_), cell_x(b.x1 + delta_), cell_y(b.y1 + delta_)};
@@ -452,9 +476,11 @@ Topology Classifier::run(const Path& path) {
     }
     for (std::size_t c = 1; c < cstart.size(); ++c) cstart[c] += cstart[c - 1];
     if (cstart.back() > 64 * n + 100000) return Topology::Overlapping;  // long segments everywhere: not worth it
-    std::vector<std::uint32_t> members(cstart.back());
+    std::vector<std::uint32_t>& members = members_;
+    members.resize(cstart.back());
     {
-        std::vector<std::uint32_t> fill(cstart.begin(), cstart.end() - 1);
+        std::vector<std::uint32_t>& fill = fill_;
+        fill.assign(cstart.begin(), cstart.end() - 1);
         for (std::uint32_t i = 0; i < n; ++i)
             for (int y = span[i].y0; y <= span[i].y1; ++y)
                 for (int x = span[i].x0; x <= span[i].x1; ++x) members[fill[static_cast<std::size_t>(y) * grid + x]++] = i;
@@ -486,8 +512,10 @@ Topology Classifier::run(const Path& path) {
         }
 
     // 2 and 3. Orientation of each contour and winding numbers of the others along it.
-    std::vector<Rect> boxes(ncontours);
-    std::vector<int> orient(ncontours);
+    std::vector<Rect>& boxes = boxes_;
+    boxes.resize(ncontours);
+    std::vector<int>& orient = orient_;
+    orient.resize(ncontours);
     for (std::size_t c = 0; c < ncontours; ++c) {
         if (!orientation(c, orient[c])) return Topology::Overlapping;
         Rect b = segs_[contour_at_[c]].box;
@@ -516,7 +544,8 @@ Topology Classifier::run(const Path& path) {
 }  // namespace
 
 Topology classify_topology(const Path& path) {
-    Classifier c;
+    // One classifier per thread keeps its buffers between calls: no allocation per path once warm.
+    thread_local Classifier c;
     return c.run(path);
 }
 
