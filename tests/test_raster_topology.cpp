@@ -216,6 +216,40 @@ TEST_CASE("topology: the rasterizer uses the verdict and the caller's verdict", 
     CHECK(r.last_stats().topology == Topology::Unknown);
 }
 
+TEST_CASE("topology: the rasterizer classifies shapes large for their number of segments", "[raster][topology]") {
+    Rasterizer r;
+    const IRect clip{0, 0, 300, 300};
+    FillOptions exact;
+    // A ring (two circles, 12 verbs) over 250 px: classified Simple, accumulated plainly, and
+    // within 1/255 of the per-cell check on the same outline.
+    Path rings;
+    rings.add_circle({150, 150}, 120.3);
+    rings.append(Path().add_circle({150, 150}, 60.7).reversed());
+    auto out = render(r, rings, Affine::identity(), exact, clip);
+    CHECK(r.last_stats().topology == Topology::Simple);
+    CHECK(r.last_stats().exact_cells == 0);
+    FillOptions checked;  // the per-cell check on the same flattened outline
+    checked.topology = Topology::Overlapping;
+    const auto with_check = render(r, rings, Affine::identity(), checked, clip);
+    int worst = 0;
+    for (int y = 0; y < 300; ++y)
+        for (int x = 0; x < 300; ++x) worst = std::max(worst, std::abs(out.at(x, y) - with_check.at(x, y)));
+    CHECK(worst <= 1);
+    // Two large squares stacked: classified Overlapping, and exact (a stacked copy adds nothing).
+    const Path stacked = join(square(20.25, 20.25, 200), square(20.25, 20.25, 200));
+    out = render(r, stacked, Affine::identity(), exact, clip);
+    CHECK(r.last_stats().topology == Topology::Overlapping);
+    CHECK(r.last_stats().exact_cells > 0);
+    const auto cmp = compare(out, ref::path_reference(square(20.25, 20.25, 200), Affine::identity(), FillRule::NonZero, clip));
+    INFO(cmp.text());
+    CHECK(cmp.max_err <= 1.0);
+    CHECK(out.at(20, 100) == 191);  // three quarters of the pixel, not clamped double coverage (255)
+    // A glyph-sized box with as many segments: not classified (the per-cell check is cheaper).
+    (void)render(r, join(square(1.5, 1.5, 8), square(1.5, 1.5, 8)), Affine::identity(), exact, clip);
+    CHECK(r.last_stats().topology == Topology::Unknown);
+    CHECK(r.last_stats().exact_cells > 0);
+}
+
 TEST_CASE("topology: the glyph cache hands each glyph's verdict to the rasterizer", "[raster][topology][text]") {
     const Font font = Font::load(testing::dejavu_sans_path());
     GlyphCache cache(1u << 20, kDefaultTolerance);

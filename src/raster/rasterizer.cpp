@@ -1,7 +1,8 @@
 // Raster stage, driver: decides how a shape is rasterized, then runs the one engine on it.
 //
-//   1. Exactness, before rasterizing: a shape whose topology the caller proved Simple
-//      (classify_topology) is accumulated plainly; any other gets the engine's overlap check.
+//   1. Exactness, before rasterizing: a shape whose topology is Simple (classify_topology: given
+//      by the caller, or decided here for shapes large for their number of segments) is
+//      accumulated plainly; any other gets the engine's overlap check.
 //   2. The box: the shape's transformed control bounds inside the target, in whole pixels. The
 //      edge builder (edge_builder.hpp) flattens the path into edges local to it, clipping them to
 //      it unless the control points already lie inside.
@@ -32,6 +33,10 @@ namespace {
 
 // Upper bound on cells in one dense buffer (a whole box or one band): 2^18 cells, 2 MiB of accumulators.
 constexpr std::size_t kMaxStripCells = std::size_t(1) << 18;
+
+// A path without a topology verdict is classified before filling when its box's width + height
+// reaches this many pixels per verb (see Rasterizer::fill).
+constexpr double kClassifyPixelsPerSegment = 4.0;
 
 // The edge list of a banded fill: edges in contour order, with each edge's contour.
 struct EdgeList {
@@ -117,19 +122,24 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opti
     const double fy1 = std::ceil(std::min(b.y1, static_cast<double>(clip.y1)));
     if (!(fx1 > fx0 && fy1 > fy0)) return;  // nothing of the shape inside the target
     check_coordinate_range(b);
-    // Exactness is decided before rasterizing, once for the shape: one the caller proved simple
-    // (classify_topology, cached per outline) is accumulated plainly, exact for it; any other takes
-    // the per-cell overlap check. An unknown topology is not classified here: classifying costs
-    // about 3 us per glyph-sized outline (BENCHMARKS.md), more than the per-cell check of the
-    // same shape, so it pays only when its verdict is reused.
-    FillOptions opts = options;
-    if (opts.exact_overlaps) {
-        stats_.topology = opts.topology;
-        opts.exact_overlaps = opts.topology != Topology::Simple;
-    }
     const bool inside = b.x0 >= clip.x0 && b.y0 >= clip.y0 && b.x1 <= clip.x1 && b.y1 <= clip.y1;
     const int ox = static_cast<int>(fx0), oy = static_cast<int>(fy0);
     const int bw = static_cast<int>(fx1) - ox, bh = static_cast<int>(fy1) - oy;
+    // Exactness is decided before rasterizing, once for the shape: one proven simple
+    // (classify_topology) is accumulated plainly, exact for it; any other takes the per-cell
+    // overlap check. A verdict the caller gives (the glyph cache's, cached per outline) is used
+    // as it is. An unknown one is decided here when the shape is large for its number of
+    // segments: classifying costs about 0.1 us per segment whatever the size, while the per-cell
+    // check costs per boundary pixel, so it pays from about 4 pixels of box side per segment
+    // (a DejaVu glyph from about 64 px; BENCHMARKS.md "Raw paths").
+    FillOptions opts = options;
+    if (opts.exact_overlaps) {
+        if (opts.topology == Topology::Unknown &&
+            static_cast<double>(bw) + bh >= kClassifyPixelsPerSegment * static_cast<double>(path.verbs().size()))
+            opts.topology = classify_topology(path);
+        stats_.topology = opts.topology;
+        opts.exact_overlaps = opts.topology != Topology::Simple;
+    }
     const Affine local = Affine::translate(-ox, -oy) * m;
     if ((fx1 - fx0) * (fy1 - fy0) <= static_cast<double>(kMaxStripCells)) {
         // The box fits one dense buffer: edges go into the engine as the flattener makes them.
