@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "casteljau/error.hpp"
 #include "casteljau/font.hpp"
 #include "casteljau/raster.hpp"
 #include "casteljau/text.hpp"
@@ -264,4 +265,25 @@ TEST_CASE("topology: the glyph cache hands each glyph's verdict to the rasterize
     // Another size of the same glyph keeps the verdict decided once.
     (void)cache.mask(font, font.glyph_index(U'o'), 33.0, {0.5, 0}, r);
     CHECK(r.last_stats().topology == Topology::Simple);
+}
+
+TEST_CASE("regression: classify_topology attempts no proof for extreme conic weights or scales", "[raster][topology]") {
+    // fuzz/regressions/raster/conic-weight-1e154-splits-to-infinity: splitting a conic of weight
+    // 9.5e153 made infinite control points, which the pairing grid converted to int (undefined
+    // behaviour; the sanitizer builds stop on it).
+    Path conic;
+    conic.move_to(100.75, -97.3).conic_to({-45.7, 208}, {167.9, -163.4}, 9.48075e153).close();
+    CHECK(classify_topology(conic) == Topology::Overlapping);
+    // The rasterizer classifies it itself (a large box for two verbs) and fills it exactly or
+    // refuses it, without undefined behaviour.
+    Rasterizer r;
+    try {
+        (void)r.fill_mask(conic, Affine::scale(2, 2));
+    } catch (const Error& e) {
+        CHECK(e.kind() != ErrorKind::Io);
+    }
+    // Coordinates beyond 2^500 or an extent below 2^-500: no proof either.
+    CHECK(classify_topology(square(0, 0, 1).transformed(Affine::scale(1e300, 1e300))) == Topology::Overlapping);
+    CHECK(classify_topology(square(0, 0, 1).transformed(Affine::scale(1e-300, 1e-300))) == Topology::Overlapping);
+    CHECK(classify_topology(square(0, 0, 1).transformed(Affine::scale(1e100, 1e100))) == Topology::Simple);
 }

@@ -378,6 +378,10 @@ Topology Classifier::run(const Path& path) {
     const double extent = std::max({std::abs(cb.x0), std::abs(cb.x1), std::abs(cb.y0), std::abs(cb.y1),
                                     cb.width(), cb.height()});
     if (extent == 0) return Topology::Simple;
+    // Beyond 2^500 products of coordinates (and the grid's cell indices) could overflow, and below
+    // 2^-500 the margin could underflow to nothing: no proof is attempted there (the per-cell
+    // check is exact at any scale).
+    if (!(extent >= 0x1p-500 && extent <= 0x1p500)) return Topology::Overlapping;
     delta_ = std::ldexp(extent, -40);
 
     // Segments per contour (each contour closed by a line when it does not end at its start),
@@ -385,12 +389,18 @@ Topology Classifier::run(const Path& path) {
     std::vector<Seg>& contour = contour_;
     Point start{}, cur{};
     bool self_crossing = false;  // a cubic not proven free of loops
+    // A conic weight outside [2^-500, 2^500] or a non-finite control point as the path hands it
+    // over: no proof is attempted (splitting such a conic would overflow).
+    bool out_of_range = false;
     auto push = [&](std::initializer_list<Point> pts, bool conic, double w) {
         Seg s;
         s.n = 0;
         for (Point q : pts) s.p[s.n++] = q;
         s.conic = conic;
         s.w = w;
+        if (conic && !(w >= 0x1p-500 && w <= 0x1p500)) out_of_range = true;
+        for (int i = 0; i < s.n; ++i)
+            if (!std::isfinite(s.p[i].x) || !std::isfinite(s.p[i].y)) out_of_range = true;
         bool degenerate = true;
         for (int i = 1; i < s.n; ++i) degenerate = degenerate && s.p[i] == s.p[0];
         if (degenerate) return;
@@ -447,7 +457,7 @@ Topology Classifier::run(const Path& path) {
     end_contour();
     contour_at_.push_back(segs_.size());
     const std::size_t ncontours = contour_at_.size() - 1;
-    if (self_crossing) return Topology::Overlapping;
+    if (self_crossing || out_of_range) return Topology::Overlapping;
     if (segs_.empty()) return Topology::Simple;
     budget_ = 200 * static_cast<long>(segs_.size()) + 20000;
 
