@@ -133,14 +133,17 @@ void blend_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, con
         if (!coverage && step == 4) {
             // A whole layer (AreaCompositor, groups) is mostly runs of transparent pixels, which
             // change nothing, and of opaque ones, which replace the destination: eight at a time.
-            constexpr std::uint64_t kAlpha = 0xff000000ff000000ull;
+            // The alpha bytes of two pixels as a 64-bit mask, whatever the byte order.
+            constexpr std::uint8_t kAlphaBytes[8] = {0, 0, 0, 0xff, 0, 0, 0, 0xff};
+            std::uint64_t alpha_mask;
+            std::memcpy(&alpha_mask, kAlphaBytes, 8);
             int i = 0;
             for (; i + 8 <= length; i += 8) {
                 std::uint64_t w[4];
                 std::memcpy(w, src + 4 * static_cast<std::size_t>(i), 32);
                 std::uint8_t* d = dst + 4 * static_cast<std::size_t>(i);
                 if ((w[0] | w[1] | w[2] | w[3]) == 0) continue;
-                if ((w[0] & w[1] & w[2] & w[3] & kAlpha) == kAlpha) {
+                if ((w[0] & w[1] & w[2] & w[3] & alpha_mask) == alpha_mask) {
                     std::memcpy(d, w, 32);
                     continue;
                 }
