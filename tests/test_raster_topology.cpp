@@ -287,3 +287,22 @@ TEST_CASE("regression: classify_topology attempts no proof for extreme conic wei
     CHECK(classify_topology(square(0, 0, 1).transformed(Affine::scale(1e-300, 1e-300))) == Topology::Overlapping);
     CHECK(classify_topology(square(0, 0, 1).transformed(Affine::scale(1e100, 1e100))) == Topology::Simple);
 }
+
+TEST_CASE("topology: verdicts after a path large enough to free the classifier's buffers", "[raster][topology]") {
+    // A simple ring of 2^17 + 1 edges (past the buffers a thread keeps), then a crossing pair and a
+    // simple square: each verdict as when classified alone.
+    Path ring;
+    const int n = (1 << 17) + 1;
+    for (int i = 0; i < n; ++i) {
+        const double t = 2 * M_PI * i / n;
+        const Point q{1000 * std::cos(t), 1000 * std::sin(t)};
+        if (i == 0) ring.move_to(q);
+        else ring.line_to(q);
+    }
+    ring.close();
+    CHECK(classify_topology(ring) == Topology::Simple);
+    CHECK(classify_topology(polygon({{0, 0}, {10, 10}, {10, 0}, {0, 10}})) == Topology::Overlapping);
+    CHECK(classify_topology(square(0, 0, 10)) == Topology::Simple);
+    CHECK(classify_topology(join(ring, ring)) == Topology::Overlapping);
+    CHECK(classify_topology(square(0, 0, 10)) == Topology::Simple);
+}

@@ -112,6 +112,12 @@ void split(const Seg& s, Seg& a, Seg& b) {
 class Classifier {
 public:
     Topology run(const Path& path);
+    // Frees the scratch buffers when a large path left them big, so that a thread that once
+    // classified a map does not keep its memory; small buffers stay for the next glyph.
+    void trim() {
+        if (segs_.capacity() + members_.capacity() / 4 > kKeptSegments) *this = Classifier{};
+    }
+    static constexpr std::size_t kKeptSegments = 1 << 16;
 
 private:
     std::vector<Seg> segs_;
@@ -238,7 +244,7 @@ bool Classifier::sectors_apart(const Seg& a, const Seg& b) const {
         if (lo < 0) return false;
         int hi = lo;
         for (int j = 0; j < k; ++j)
-            if (cross(u[hi], u[j]) > 0 || (cross(u[hi], u[j]) == 0 && u[hi].x * u[j].x + u[hi].y * u[j].y < 0)) hi = j;
+            if (cross(u[hi], u[j]) > 0) hi = j;
         // Widen: lo turned clockwise by m, hi counter-clockwise by m.
         const Point l{u[lo].x * kCos + u[lo].y * kSin, -u[lo].x * kSin + u[lo].y * kCos};
         const Point h{u[hi].x * kCos - u[hi].y * kSin, u[hi].x * kSin + u[hi].y * kCos};
@@ -389,8 +395,8 @@ Topology Classifier::run(const Path& path) {
     std::vector<Seg>& contour = contour_;
     Point start{}, cur{};
     bool self_crossing = false;  // a cubic not proven free of loops
-    // A conic weight outside [2^-500, 2^500] or a non-finite control point as the path hands it
-    // over: no proof is attempted (splitting such a conic would overflow).
+    // A conic weight outside [2^-500, 2^500]: no proof is attempted (splitting such a conic would
+    // overflow). Control points are finite here (checked above).
     bool out_of_range = false;
     auto push = [&](std::initializer_list<Point> pts, bool conic, double w) {
         Seg s;
@@ -399,8 +405,6 @@ Topology Classifier::run(const Path& path) {
         s.conic = conic;
         s.w = w;
         if (conic && !(w >= 0x1p-500 && w <= 0x1p500)) out_of_range = true;
-        for (int i = 0; i < s.n; ++i)
-            if (!std::isfinite(s.p[i].x) || !std::isfinite(s.p[i].y)) out_of_range = true;
         bool degenerate = true;
         for (int i = 1; i < s.n; ++i) degenerate = degenerate && s.p[i] == s.p[0];
         if (degenerate) return;
@@ -556,7 +560,9 @@ Topology Classifier::run(const Path& path) {
 Topology classify_topology(const Path& path) {
     // One classifier per thread keeps its buffers between calls: no allocation per path once warm.
     thread_local Classifier c;
-    return c.run(path);
+    const Topology t = c.run(path);
+    c.trim();
+    return t;
 }
 
 }  // namespace casteljau
