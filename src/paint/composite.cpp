@@ -130,6 +130,13 @@ void blend_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, con
                 int src_stride) {
     const std::size_t step = src_stride == 0 ? 0 : 4;
     if (mode == BlendMode::SourceOver) {
+        // One pixel at coverage c: nothing for c = 0 or a transparent source, a copy for an opaque
+        // source at full coverage, the formula otherwise.
+        auto over = [](std::uint8_t* d, const std::uint8_t* sp, unsigned c) {
+            if (c == 0 || sp[3] == 0) return;
+            if (c == 255 && sp[3] == 255) std::memcpy(d, sp, 4);
+            else source_over(d, sp, c);
+        };
         if (!coverage && step == 4) {
             // A whole layer (AreaCompositor, groups) is mostly runs of transparent pixels, which
             // change nothing, and of opaque ones, which replace the destination: eight at a time.
@@ -148,26 +155,13 @@ void blend_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, con
                     continue;
                 }
                 const std::uint8_t* s8 = src + 4 * static_cast<std::size_t>(i);
-                for (int k = 0; k < 8; ++k) {
-                    const std::uint8_t* sp = s8 + 4 * k;
-                    if (sp[3] == 0) continue;
-                    if (sp[3] == 255) std::memcpy(d + 4 * k, sp, 4);
-                    else source_over(d + 4 * k, sp, 255u);
-                }
+                for (int k = 0; k < 8; ++k) over(d + 4 * k, s8 + 4 * k, 255u);
             }
             dst += 4 * static_cast<std::size_t>(i);
             src += 4 * static_cast<std::size_t>(i);
             length -= i;
         }
-        for (int i = 0; i < length; ++i, dst += 4, src += step) {
-            const unsigned c = coverage ? coverage[i] : 255u;
-            if (c == 0 || src[3] == 0) continue;
-            if (c == 255 && src[3] == 255) {
-                std::memcpy(dst, src, 4);
-                continue;
-            }
-            source_over(dst, src, c);
-        }
+        for (int i = 0; i < length; ++i, dst += 4, src += step) over(dst, src, coverage ? coverage[i] : 255u);
         return;
     }
     if (mode == BlendMode::Destination) return;
