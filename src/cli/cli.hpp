@@ -15,6 +15,7 @@
 #include "casteljau/geometry.hpp"
 #include "casteljau/map.hpp"
 #include "casteljau/paint.hpp"
+#include "cli/run.hpp"
 
 namespace casteljau::cli {
 
@@ -42,11 +43,6 @@ void add_map_style_options(CLI::App* cmd, MapCliStyle& o);
 MapStyle build_map_style(const MapCliStyle& o);
 // Reads a map file by its extension (.geojsonl/.ndjson: GeoJSON lines, .topojson) or content.
 MapData read_map_input(const std::string& path, const std::string& layer);
-
-// Parses argv and, when `execute`, runs the command it names; returns the exit status (0, 1 bad
-// data, 2 bad usage), with help on `out` and the one-line error on `err`. Without `execute` only
-// the arguments are parsed and checked (for the CLI fuzz target).
-int run(int argc, char** argv, bool execute, std::ostream& out, std::ostream& err);
 
 void register_path(CLI::App& app);
 void register_svg(CLI::App& app);

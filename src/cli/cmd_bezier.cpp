@@ -37,12 +37,6 @@ struct BezierOptions {
                 *o_interpolate = nullptr, *o_render = nullptr, *o_size = nullptr, *o_construction = nullptr;
 };
 
-template <CurvePoint P> P to_point(const Point3& p) {
-    if constexpr (std::same_as<P, Point>) return {p.x, p.y};
-    else return p;
-}
-Point3 to_p3(const Point& p) { return {p.x, p.y, 0}; }
-Point3 to_p3(const Point3& p) { return p; }
 
 template <CurvePoint P> void print_points(std::ostream& out, std::span<const P> pts, double scale) {
     for (const P& p : pts) out << format_point(to_p3(p), scale, point_dimension<P>) << '\n';

@@ -54,12 +54,6 @@ void render_pictures(const SplineOptions& o, const Path& curve, std::span<const 
     if (o.o_basis->count()) write_png(draw_basis_figure(degree, knots, fo).image, o.basis);
 }
 
-template <CurvePoint P> P to_point(const Point3& p) {
-    if constexpr (std::same_as<P, Point>) return {p.x, p.y};
-    else return p;
-}
-Point3 to_p3(const Point& p) { return {p.x, p.y, 0}; }
-Point3 to_p3(const Point3& p) { return p; }
 
 template <CurvePoint P> std::vector<P> convert(const PointList& l) {
     std::vector<P> v;

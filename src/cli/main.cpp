@@ -2,7 +2,7 @@
 #include <csignal>
 #include <iostream>
 
-#include "cli/cli.hpp"
+#include "cli/run.hpp"
 
 int main(int argc, char** argv) {
     // Past a file-size limit (ulimit -f) the kernel sends SIGXFSZ, whose default action kills the
