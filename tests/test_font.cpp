@@ -2,9 +2,13 @@
 // check of glyph coverage (our Rasterizer on our Paths) against FreeType's smooth rendering.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <thread>
+
+#include <sys/stat.h>
 
 #include "casteljau/error.hpp"
 #include "casteljau/font.hpp"
@@ -147,6 +151,46 @@ TEST_CASE("Font file errors: missing, directory, not a font, truncated, empty", 
     std::vector<std::uint8_t> part(half.begin(), half.begin() + static_cast<std::ptrdiff_t>(half.size() / 2));
     CHECK(error_kind_of([&] { (void)Font::from_memory(part, 0, "half.ttf"); }, &msg) == ErrorKind::Font);
     CHECK(msg.find("truncated") != std::string::npos);
+}
+
+TEST_CASE("Fonts from files (mapped) and from a FIFO (read) equal fonts from memory, and truncated files are errors",
+          "[font]") {
+    const auto bytes = read_bytes(kDejaVu);
+    const Font memory = Font::from_memory(bytes, 0, "memory.ttf");
+    auto same = [&](const Font& f) {
+        CHECK(f.units_per_em() == memory.units_per_em());
+        for (char32_t c : {U'A', U'g', U'&'}) {
+            INFO("glyph of U+" << static_cast<unsigned>(c));
+            const Path a = f.glyph_path(f.glyph_index(c)), b = memory.glyph_path(memory.glyph_index(c));
+            CHECK(std::ranges::equal(a.verbs(), b.verbs()));
+            CHECK(std::ranges::equal(a.points(), b.points()));
+        }
+    };
+    same(Font::load(kDejaVu));
+    // A font stays usable after its file is removed (the mapping keeps the file's pages).
+    const std::string copy = temp_file("copy.ttf");
+    write_bytes(copy, bytes);
+    const Font removed = Font::load(copy);
+    std::remove(copy.c_str());
+    same(removed);
+    same(removed.clone());
+    // A FIFO cannot be mapped: it is read to its end instead.
+    const std::string fifo = temp_file("fifo.ttf");
+    std::remove(fifo.c_str());
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    std::thread writer([&] { write_bytes(fifo, bytes); });
+    const Font piped = Font::load(fifo);
+    writer.join();
+    std::remove(fifo.c_str());
+    same(piped);
+    // A truncated file is the same error through the mapped path as from memory.
+    const std::string half = temp_file("half.ttf");
+    write_bytes(half, std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(bytes.size() / 2)));
+    std::string msg;
+    CHECK(error_kind_of([&] { (void)Font::load(half); }, &msg) == ErrorKind::Font);
+    CHECK(msg.find("truncated") != std::string::npos);
+    CHECK(msg.find("half.ttf") != std::string::npos);
+    std::remove(half.c_str());
 }
 
 TEST_CASE("Corrupted font bytes never crash: errors or glyphs, nothing else", "[font]") {

@@ -154,7 +154,7 @@ public:
 
 private:
     explicit Font(std::unique_ptr<Impl> impl);
-    static Font from_shared_bytes(std::shared_ptr<const std::vector<std::uint8_t>> bytes, int face_index, std::string name);
+    static Font from_shared_bytes(std::shared_ptr<const std::uint8_t> bytes, std::size_t size, int face_index, std::string name);
     std::unique_ptr<Impl> impl_;
 };
 

@@ -21,6 +21,10 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <sstream>
 
 #include "casteljau/limits.hpp"
@@ -50,11 +54,16 @@ std::string tag_string(std::uint32_t tag) {
     return s;
 }
 
+void check_face_index(int face_index, const std::string& name) {
+    if (face_index < 0 || face_index > 0xffff)
+        throw Error(ErrorKind::InvalidArgument, "font '" + name + "': face index must be 0 to 65535, got " +
+                                                    std::to_string(face_index));
+}
+
 // Checks the table directory of an sfnt (TrueType/OpenType) file or collection against the file
 // size, so that a truncated font is reported as such instead of failing later in odd ways.
 // Files of other formats (Type 1, WOFF, ...) are left to FreeType.
-void check_sfnt_directory(const std::vector<std::uint8_t>& b, const std::string& source) {
-    const std::size_t n = b.size();
+void check_sfnt_directory(const std::uint8_t* b, std::size_t n, const std::string& source) {
     if (n < 12) font_error(source, "not a font file (only " + std::to_string(n) + " bytes)");
     auto u16 = [&](std::size_t o) { return static_cast<std::uint32_t>(b[o] << 8 | b[o + 1]); };
     auto u32 = [&](std::size_t o) {
@@ -121,6 +130,33 @@ std::vector<std::uint8_t> read_font_file(const std::string& path) {
     std::fclose(f);
     if (failed) throw Error(ErrorKind::Io, "cannot read font '" + path + "': read error");
     return bytes;
+}
+
+// A regular font file mapped read-only: FreeType and HarfBuzz then touch only the pages of the
+// tables they read (a few of a 740 KB font for one line of text), instead of the whole file being
+// copied into memory first. Returns null when the file cannot be mapped (not a regular file,
+// empty, over the size limit: read_font_file reports those). Like FreeType's own FT_New_Face, which
+// maps files too, this assumes the file is not truncated while the Font lives.
+std::shared_ptr<const std::uint8_t> map_font_file(const std::string& path, std::size_t& size) {
+    // Only a regular file is opened here: opening a FIFO would block for a writer, and closing it
+    // again would cut that writer off before read_font_file reads it.
+    struct stat path_st {};
+    if (::stat(path.c_str(), &path_st) != 0 || !S_ISREG(path_st.st_mode)) return nullptr;
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) return nullptr;
+    struct stat st {};
+    void* addr = MAP_FAILED;
+    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 &&
+        static_cast<std::uint64_t>(st.st_size) <= current_limits().font_file_bytes) {
+        size = static_cast<std::size_t>(st.st_size);
+        addr = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+    }
+    ::close(fd);
+    if (addr == MAP_FAILED) return nullptr;
+    const std::size_t length = size;
+    return std::shared_ptr<const std::uint8_t>(static_cast<const std::uint8_t*>(addr), [length](const std::uint8_t* p) {
+        ::munmap(const_cast<std::uint8_t*>(p), length);
+    });
 }
 
 // UTF-16BE (Windows name records) or Mac Roman / ASCII (Mac records) to UTF-8.
@@ -305,37 +341,46 @@ Font& Font::operator=(Font&&) noexcept = default;
 Font::~Font() = default;
 
 Font Font::load(const std::string& path, int face_index) {
+    std::size_t size = 0;
+    if (auto mapped = map_font_file(path, size)) {
+        check_face_index(face_index, path);
+        check_sfnt_directory(mapped.get(), size, path);
+        return from_shared_bytes(std::move(mapped), size, face_index, path);
+    }
     return from_memory(read_font_file(path), face_index, path);
 }
 
 Font Font::from_memory(std::vector<std::uint8_t> bytes, int face_index, std::string name) {
-    if (face_index < 0 || face_index > 0xffff)
-        throw Error(ErrorKind::InvalidArgument, "font '" + name + "': face index must be 0 to 65535, got " +
-                                                    std::to_string(face_index));
+    check_face_index(face_index, name);
     if (const std::uint64_t max_bytes = current_limits().font_file_bytes; bytes.size() > max_bytes)
         throw Error(ErrorKind::Limit, "font '" + name + "' is larger than " +
                                           std::to_string(max_bytes) + " bytes");
-    check_sfnt_directory(bytes, name);
-    return from_shared_bytes(std::make_shared<const std::vector<std::uint8_t>>(std::move(bytes)), face_index, std::move(name));
+    check_sfnt_directory(bytes.data(), bytes.size(), name);
+    auto owner = std::make_shared<const std::vector<std::uint8_t>>(std::move(bytes));
+    const std::size_t size = owner->size();
+    // An aliasing pointer: it points at the vector's bytes and keeps the vector alive.
+    std::shared_ptr<const std::uint8_t> data(owner, owner->data());
+    return from_shared_bytes(std::move(data), size, face_index, std::move(name));
 }
 
-// A Font over bytes already checked (from_memory), shared with the Fonts cloned from it.
-Font Font::from_shared_bytes(std::shared_ptr<const std::vector<std::uint8_t>> bytes, int face_index, std::string name) {
+// A Font over bytes already checked (load, from_memory), shared with the Fonts cloned from it.
+Font Font::from_shared_bytes(std::shared_ptr<const std::uint8_t> bytes, std::size_t size, int face_index, std::string name) {
     auto impl = std::make_unique<Impl>();
     impl->source = std::move(name);
     impl->face_index = face_index;
     impl->bytes = std::move(bytes);
+    impl->size = size;
     if (FT_Error err = FT_Init_FreeType(&impl->library)) {
         impl->library = nullptr;
         font_error(impl->source, "cannot start FreeType: " + ft_error_text(err));
     }
-    const auto* data = impl->bytes->data();
-    const auto size = static_cast<FT_Long>(impl->bytes->size());
-    FT_Error err = FT_New_Memory_Face(impl->library, data, size, face_index, &impl->face);
+    const auto* data = impl->bytes.get();
+    const auto ft_size = static_cast<FT_Long>(impl->size);
+    FT_Error err = FT_New_Memory_Face(impl->library, data, ft_size, face_index, &impl->face);
     if (err) {
         impl->face = nullptr;
         FT_Face probe = nullptr;
-        if (face_index > 0 && FT_New_Memory_Face(impl->library, data, size, -1, &probe) == 0) {
+        if (face_index > 0 && FT_New_Memory_Face(impl->library, data, ft_size, -1, &probe) == 0) {
             const long n = probe->num_faces;
             FT_Done_Face(probe);
             if (face_index >= n)
@@ -397,7 +442,7 @@ Font Font::from_shared_bytes(std::shared_ptr<const std::vector<std::uint8_t>> by
 }
 
 Font Font::clone() const {
-    Font f = from_shared_bytes(impl_->bytes, impl_->face_index, impl_->source);
+    Font f = from_shared_bytes(impl_->bytes, impl_->size, impl_->face_index, impl_->source);
     if (is_variable()) {
         std::vector<Variation> v;
         for (std::size_t i = 0; i < impl_->axes.size(); ++i) v.push_back({impl_->axes[i].tag, impl_->coords[i]});

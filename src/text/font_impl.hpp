@@ -19,7 +19,8 @@
 namespace casteljau {
 
 struct Font::Impl {
-    std::shared_ptr<const std::vector<std::uint8_t>> bytes;
+    std::shared_ptr<const std::uint8_t> bytes;  // the font file: mapped, or a vector's data (from_memory)
+    std::size_t size = 0;
     std::string source;
     int face_index = 0;
     int face_count = 1;
