@@ -94,7 +94,10 @@ Variation parse_variation(std::string_view text);
 
 class Font {
 public:
-    // Reads a font file; `face_index` picks the face in a collection.
+    // Reads a font file; `face_index` picks the face in a collection. A regular file is mapped
+    // read-only rather than copied (FIFOs and other files are read whole): as with FreeType's own
+    // FT_New_Face, it must not be truncated or rewritten in place while the Font or its clones live
+    // (replacing it by rename is safe).
     static Font load(const std::string& path, int face_index = 0);
     // Same from bytes in memory; `name` is used in error messages.
     static Font from_memory(std::vector<std::uint8_t> bytes, int face_index = 0, std::string name = "<memory>");
