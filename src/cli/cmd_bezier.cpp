@@ -37,7 +37,6 @@ struct BezierOptions {
                 *o_interpolate = nullptr, *o_render = nullptr, *o_size = nullptr, *o_construction = nullptr;
 };
 
-
 template <CurvePoint P> void print_points(std::ostream& out, std::span<const P> pts, double scale) {
     for (const P& p : pts) out << format_point(to_p3(p), scale, point_dimension<P>) << '\n';
 }

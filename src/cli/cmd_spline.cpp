@@ -54,7 +54,6 @@ void render_pictures(const SplineOptions& o, const Path& curve, std::span<const 
     if (o.o_basis->count()) write_png(draw_basis_figure(degree, knots, fo).image, o.basis);
 }
 
-
 template <CurvePoint P> std::vector<P> convert(const PointList& l) {
     std::vector<P> v;
     for (const Point3& p : l.points) v.push_back(to_point<P>(p));

@@ -113,7 +113,8 @@ class Classifier {
 public:
     Topology run(const Path& path);
     // Frees the scratch buffers when a large path left them big, so that a thread that once
-    // classified a map does not keep its memory; small buffers stay for the next glyph.
+    // classified a map does not keep its memory; small buffers stay for the next glyph. The size
+    // is judged by the segments and the grid's membership list (a few entries per segment).
     void trim() {
         if (segs_.capacity() + members_.capacity() / 4 > kKeptSegments) *this = Classifier{};
     }
