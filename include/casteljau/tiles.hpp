@@ -93,7 +93,9 @@ private:
 
 // MBTiles 1.3: tables `metadata(name, value)` and `tiles(zoom_level, tile_column, tile_row,
 // tile_data)` with TMS rows. Built in PATH.tmp-PID and renamed over PATH by finish(); destroyed
-// without finish() (an error), the temporary file is removed and PATH is untouched.
+// without finish() (an error), the temporary file is removed and PATH is untouched. SQLite
+// (libsqlite3.so.0) is opened when the first MBTiles file is written or read, not at start-up;
+// when it cannot be, these calls throw Error(Io) naming it.
 class MbtilesWriter {
 public:
     // Throws Error(Io) naming the path when the database cannot be created.

@@ -1,6 +1,5 @@
 // Formats stage: where tiles go: a folder tree DIR/z/x/y.png or an MBTiles 1.3 SQLite file
 // (see include/casteljau/tiles.hpp).
-#include <sqlite3.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -14,8 +13,14 @@
 #include "casteljau/error.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/tiles.hpp"
+#include "formats/sqlite_library.hpp"
 
 namespace casteljau {
+
+namespace {
+// SQLite, opened on first use.
+const sqlite_library::Api& sq() { return sqlite_library::api(); }
+}  // namespace
 
 TileFolderWriter::TileFolderWriter(std::string dir) : dir_(std::move(dir)) {
     std::error_code ec;
@@ -60,21 +65,21 @@ struct MbtilesWriter::Impl {
     bool finished = false;
 
     [[noreturn]] void fail(const std::string& what) {
-        const std::string msg = "MBTiles '" + path + "': " + what + (db ? std::string(": ") + sqlite3_errmsg(db) : "");
+        const std::string msg = "MBTiles '" + path + "': " + what + (db ? std::string(": ") + sq().errmsg(db) : "");
         throw Error(ErrorKind::Io, msg);
     }
     void exec(const char* sql) {
         char* err = nullptr;
-        if (sqlite3_exec(db, sql, nullptr, nullptr, &err) != SQLITE_OK) {
+        if (sq().exec(db, sql, nullptr, nullptr, &err) != SQLITE_OK) {
             const std::string m = err ? err : "error";
-            sqlite3_free(err);
+            sq().free(err);
             throw Error(ErrorKind::Io, "MBTiles '" + path + "': " + m);
         }
     }
     void close_and_remove() {
-        if (insert) sqlite3_finalize(insert);
+        if (insert) sq().finalize(insert);
         insert = nullptr;
-        if (db) sqlite3_close(db);
+        if (db) sq().close(db);
         db = nullptr;
         if (!tmp.empty()) {
             std::remove(tmp.c_str());
@@ -89,7 +94,7 @@ MbtilesWriter::MbtilesWriter(std::string path, const std::string& name, int min_
     impl_->tmp = impl_->path + ".tmp-" + std::to_string(::getpid());
     try {
         std::remove(impl_->tmp.c_str());
-        if (sqlite3_open_v2(impl_->tmp.c_str(), &impl_->db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK)
+        if (sq().open_v2(impl_->tmp.c_str(), &impl_->db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK)
             impl_->fail("cannot create the database");
         impl_->exec(
             "PRAGMA journal_mode=OFF; PRAGMA synchronous=OFF;"
@@ -98,7 +103,7 @@ MbtilesWriter::MbtilesWriter(std::string path, const std::string& name, int min_
             "CREATE UNIQUE INDEX tile_index on tiles (zoom_level, tile_column, tile_row);"
             "BEGIN;");
         sqlite3_stmt* st = nullptr;
-        if (sqlite3_prepare_v2(impl_->db, "INSERT INTO metadata VALUES (?, ?)", -1, &st, nullptr) != SQLITE_OK)
+        if (sq().prepare_v2(impl_->db, "INSERT INTO metadata VALUES (?, ?)", -1, &st, nullptr) != SQLITE_OK)
             impl_->fail("cannot prepare");
         std::ostringstream bounds, center;
         bounds.precision(10);
@@ -110,16 +115,16 @@ MbtilesWriter::MbtilesWriter(std::string path, const std::string& name, int min_
             {"description", "rendered by casteljau"}, {"bounds", bounds.str()}, {"center", center.str()},
             {"minzoom", std::to_string(min_zoom)}, {"maxzoom", std::to_string(max_zoom)}};
         for (const auto& [k, v] : meta) {
-            sqlite3_reset(st);
-            sqlite3_bind_text(st, 1, k.c_str(), -1, SQLITE_TRANSIENT);
-            sqlite3_bind_text(st, 2, v.c_str(), -1, SQLITE_TRANSIENT);
-            if (sqlite3_step(st) != SQLITE_DONE) {
-                sqlite3_finalize(st);
+            sq().reset(st);
+            sq().bind_text(st, 1, k.c_str(), -1, SQLITE_TRANSIENT);
+            sq().bind_text(st, 2, v.c_str(), -1, SQLITE_TRANSIENT);
+            if (sq().step(st) != SQLITE_DONE) {
+                sq().finalize(st);
                 impl_->fail("cannot write metadata");
             }
         }
-        sqlite3_finalize(st);
-        if (sqlite3_prepare_v2(impl_->db, "INSERT OR REPLACE INTO tiles VALUES (?, ?, ?, ?)", -1, &impl_->insert, nullptr) !=
+        sq().finalize(st);
+        if (sq().prepare_v2(impl_->db, "INSERT OR REPLACE INTO tiles VALUES (?, ?, ?, ?)", -1, &impl_->insert, nullptr) !=
             SQLITE_OK)
             impl_->fail("cannot prepare");
     } catch (...) {
@@ -136,19 +141,19 @@ MbtilesWriter::~MbtilesWriter() {
 
 void MbtilesWriter::write(int z, int x, int y, const std::vector<std::uint8_t>& png) {
     sqlite3_stmt* st = impl_->insert;
-    sqlite3_reset(st);
-    sqlite3_bind_int(st, 1, z);
-    sqlite3_bind_int64(st, 2, x);
-    sqlite3_bind_int64(st, 3, (std::int64_t{1} << z) - 1 - y);  // TMS row
-    sqlite3_bind_blob(st, 4, png.data(), static_cast<int>(png.size()), SQLITE_TRANSIENT);
-    if (sqlite3_step(st) != SQLITE_DONE) impl_->fail("cannot write tile");
+    sq().reset(st);
+    sq().bind_int(st, 1, z);
+    sq().bind_int64(st, 2, x);
+    sq().bind_int64(st, 3, (std::int64_t{1} << z) - 1 - y);  // TMS row
+    sq().bind_blob(st, 4, png.data(), static_cast<int>(png.size()), SQLITE_TRANSIENT);
+    if (sq().step(st) != SQLITE_DONE) impl_->fail("cannot write tile");
 }
 
 void MbtilesWriter::finish() {
     impl_->exec("COMMIT;");
-    sqlite3_finalize(impl_->insert);
+    sq().finalize(impl_->insert);
     impl_->insert = nullptr;
-    if (sqlite3_close(impl_->db) != SQLITE_OK) impl_->fail("cannot close");
+    if (sq().close(impl_->db) != SQLITE_OK) impl_->fail("cannot close");
     impl_->db = nullptr;
     if (std::rename(impl_->tmp.c_str(), impl_->path.c_str()) != 0) {
         const std::string reason = std::strerror(errno);
@@ -163,13 +168,15 @@ namespace {
 struct ReadDb {
     sqlite3* db = nullptr;
     explicit ReadDb(const std::string& path) {
-        if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
-            const std::string m = db ? sqlite3_errmsg(db) : "cannot open";
-            if (db) sqlite3_close(db);
+        if (sq().open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
+            const std::string m = db ? sq().errmsg(db) : "cannot open";
+            if (db) sq().close(db);
             throw Error(ErrorKind::Io, "cannot open MBTiles '" + path + "': " + m);
         }
     }
-    ~ReadDb() { sqlite3_close(db); }
+    ~ReadDb() {
+        if (db) sq().close(db);
+    }
 };
 
 }  // namespace
@@ -182,11 +189,11 @@ void merge_mbtiles(const std::vector<std::string>& inputs, const std::string& ou
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         ReadDb in(inputs[i]);
         sqlite3_stmt* st = nullptr;
-        if (sqlite3_prepare_v2(in.db, "SELECT name, value FROM metadata", -1, &st, nullptr) != SQLITE_OK)
+        if (sq().prepare_v2(in.db, "SELECT name, value FROM metadata", -1, &st, nullptr) != SQLITE_OK)
             throw Error(ErrorKind::InvalidData, "'" + inputs[i] + "' is not an MBTiles file (no metadata table)");
-        while (sqlite3_step(st) == SQLITE_ROW) {
-            const std::string k = reinterpret_cast<const char*>(sqlite3_column_text(st, 0));
-            const char* vt = reinterpret_cast<const char*>(sqlite3_column_text(st, 1));
+        while (sq().step(st) == SQLITE_ROW) {
+            const std::string k = reinterpret_cast<const char*>(sq().column_text(st, 0));
+            const char* vt = reinterpret_cast<const char*>(sq().column_text(st, 1));
             const std::string v = vt ? vt : "";
             if (k == "minzoom") minz = std::min(minz, std::atoi(v.c_str()));
             if (k == "maxzoom") maxz = std::max(maxz, std::atoi(v.c_str()));
@@ -199,7 +206,7 @@ void merge_mbtiles(const std::vector<std::string>& inputs, const std::string& ou
                 }
             }
         }
-        sqlite3_finalize(st);
+        sq().finalize(st);
     }
     if (minz > maxz) minz = maxz = 0;
     if (!(b.x0 <= b.x1)) b = Rect{-180, -85.0511287798, 180, 85.0511287798};
@@ -207,19 +214,19 @@ void merge_mbtiles(const std::vector<std::string>& inputs, const std::string& ou
     for (const std::string& path : inputs) {
         ReadDb in(path);
         sqlite3_stmt* st = nullptr;
-        if (sqlite3_prepare_v2(in.db, "SELECT zoom_level, tile_column, tile_row, tile_data FROM tiles", -1, &st, nullptr) !=
+        if (sq().prepare_v2(in.db, "SELECT zoom_level, tile_column, tile_row, tile_data FROM tiles", -1, &st, nullptr) !=
             SQLITE_OK)
             throw Error(ErrorKind::InvalidData, "'" + path + "' is not an MBTiles file (no tiles table)");
-        while (sqlite3_step(st) == SQLITE_ROW) {
-            const int z = sqlite3_column_int(st, 0);
-            const std::int64_t x = sqlite3_column_int64(st, 1), row = sqlite3_column_int64(st, 2);
-            const auto* blob = static_cast<const std::uint8_t*>(sqlite3_column_blob(st, 3));
-            const int n = sqlite3_column_bytes(st, 3);
+        while (sq().step(st) == SQLITE_ROW) {
+            const int z = sq().column_int(st, 0);
+            const std::int64_t x = sq().column_int64(st, 1), row = sq().column_int64(st, 2);
+            const auto* blob = static_cast<const std::uint8_t*>(sq().column_blob(st, 3));
+            const int n = sq().column_bytes(st, 3);
             if (z < 0 || z > limits::kMaxTileZoom) continue;
             std::vector<std::uint8_t> png(blob, blob + n);
             out.write(z, static_cast<int>(x), static_cast<int>((std::int64_t{1} << z) - 1 - row), png);
         }
-        sqlite3_finalize(st);
+        sq().finalize(st);
     }
     out.finish();
 }

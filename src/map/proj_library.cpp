@@ -1,12 +1,11 @@
 // Map stage: opening PROJ on first use (see proj_library.hpp).
 #include "map/proj_library.hpp"
 
-#include <dlfcn.h>
-
 #include <mutex>
 #include <string>
 
 #include "casteljau/error.hpp"
+#include "platform/runtime_library.hpp"
 
 #ifndef CASTELJAU_PROJ_SONAME
 #define CASTELJAU_PROJ_SONAME "libproj.so"
@@ -23,29 +22,20 @@ struct Loaded {
 
 Loaded load() {
     Loaded l;
-    void* lib = dlopen(CASTELJAU_PROJ_SONAME, RTLD_NOW | RTLD_LOCAL);
-    if (!lib) {
-        const char* why = dlerror();
-        l.error = std::string("cannot load PROJ (" CASTELJAU_PROJ_SONAME "): ") + (why ? why : "unknown error");
-        return l;
-    }
-    // The library stays loaded for the life of the process (its contexts may outlive any scope).
-    auto get = [&](auto& fn, const char* name) {
-        fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(dlsym(lib, name));
-        if (!fn && l.error.empty()) l.error = std::string("PROJ (" CASTELJAU_PROJ_SONAME ") lacks ") + name;
-    };
-    get(l.api.context_create, "proj_context_create");
-    get(l.api.context_destroy, "proj_context_destroy");
-    get(l.api.log_level, "proj_log_level");
-    get(l.api.create, "proj_create");
-    get(l.api.is_crs, "proj_is_crs");
-    get(l.api.create_crs_to_crs, "proj_create_crs_to_crs");
-    get(l.api.normalize_for_visualization, "proj_normalize_for_visualization");
-    get(l.api.angular_input, "proj_angular_input");
-    get(l.api.destroy, "proj_destroy");
-    get(l.api.errno_reset, "proj_errno_reset");
-    get(l.api.errno_of, "proj_errno");
-    get(l.api.trans, "proj_trans");
+    platform::RuntimeLibrary lib("PROJ", CASTELJAU_PROJ_SONAME);
+    lib.get(l.api.context_create, "proj_context_create");
+    lib.get(l.api.context_destroy, "proj_context_destroy");
+    lib.get(l.api.log_level, "proj_log_level");
+    lib.get(l.api.create, "proj_create");
+    lib.get(l.api.is_crs, "proj_is_crs");
+    lib.get(l.api.create_crs_to_crs, "proj_create_crs_to_crs");
+    lib.get(l.api.normalize_for_visualization, "proj_normalize_for_visualization");
+    lib.get(l.api.angular_input, "proj_angular_input");
+    lib.get(l.api.destroy, "proj_destroy");
+    lib.get(l.api.errno_reset, "proj_errno_reset");
+    lib.get(l.api.errno_of, "proj_errno");
+    lib.get(l.api.trans, "proj_trans");
+    l.error = lib.error();
     return l;
 }
 
