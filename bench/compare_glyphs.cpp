@@ -9,7 +9,10 @@
 //                          (cleared first), default options: exact, no topology given (so the
 //                          per-cell overlap check for every glyph: the raw-path figure)
 //   casteljau (font path)  the same with each glyph's topology decided once (untimed, in prepare),
-//                          as the glyph cache does per glyph: what text rendering runs
+//                          as the glyph cache does per glyph (the verdict for similarity maps,
+//                          classify_topology(path, tolerance)): what text rendering runs
+//   casteljau (font path: any-map verdict)  the same with the verdict for every affine map
+//                          (classify_topology(path)): fewer CFF glyphs proven
 //   casteljau (exact cells) exact, topology given as Overlapping: every glyph through the per-cell
 //                          overlap check (also the exact reference below)
 //   casteljau (exact off)  the same with exact_overlaps off
@@ -127,8 +130,9 @@ bool in_list(const std::string& list, const std::string& name) {
 // --- casteljau ---------------------------------------------------------------------------------
 
 // How casteljau decides exactness in a run: default options (no topology given), from a verdict
-// decided once per glyph (what the glyph cache does: the font path), or always the exact cells.
-enum class Verdict { PerFill, Cached, ExactCells };
+// decided once per glyph (what the glyph cache does: the font path; or the verdict for every
+// affine map, which the glyph cache used before), or always the exact cells.
+enum class Verdict { PerFill, Cached, CachedAnyMap, ExactCells };
 
 class CasteljauFill final : public Renderer {
 public:
@@ -139,17 +143,25 @@ public:
     }
     std::string name() const override {
         if (!exact_) return "casteljau (exact off)";
-        return verdict_ == Verdict::Cached ? "casteljau (font path)"
-                                           : verdict_ == Verdict::ExactCells ? "casteljau (exact cells)" : "casteljau";
+        switch (verdict_) {
+            case Verdict::Cached: return "casteljau (font path)";
+            case Verdict::CachedAnyMap: return "casteljau (font path: any-map verdict)";
+            case Verdict::ExactCells: return "casteljau (exact cells)";
+            default: return "casteljau";
+        }
     }
     void prepare(const GlyphSet& set) override {
         set_ = &set;
         buf_.assign(set.max_box_pixels(), 0);
         verdicts_.clear();
         simple_ = 0;
-        if (verdict_ == Verdict::Cached)
+        if (verdict_ == Verdict::Cached || verdict_ == Verdict::CachedAnyMap)
             for (const bench::Glyph& g : set.glyphs()) {
-                verdicts_.push_back(casteljau::classify_topology(g.path));
+                // The glyph cache's verdict: for similarity maps (a glyph's map to pixels), proven
+                // for this size and down to half of it.
+                verdicts_.push_back(verdict_ == Verdict::CachedAnyMap
+                                        ? casteljau::classify_topology(g.path)
+                                        : casteljau::classify_topology(g.path, 2 * opts_.tolerance / std::abs(g.to_box.a)));
                 simple_ += verdicts_.back() == casteljau::Topology::Simple;
             }
     }
@@ -158,7 +170,7 @@ public:
         std::memset(buf_.data(), 0, g.box.pixels());
         sink_.buf = buf_.data();
         sink_.stride = g.box.width;
-        if (verdict_ == Verdict::Cached) opts_.topology = verdicts_[i];
+        if (verdict_ == Verdict::Cached || verdict_ == Verdict::CachedAnyMap) opts_.topology = verdicts_[i];
         rast_.fill(g.path, g.to_box, opts_, casteljau::IRect{0, 0, g.box.width, g.box.height}, sink_);
         return {buf_.data(), g.box.width, g.box};
     }
@@ -280,6 +292,7 @@ int main(int argc, char** argv) {
         rs.push_back(std::make_unique<FreeTypeRenderer>());
         rs.push_back(std::make_unique<CasteljauFill>(true, opt.tolerance, Verdict::Cached));
         rs.push_back(std::make_unique<CasteljauFill>(true, opt.tolerance, Verdict::ExactCells));
+        rs.push_back(std::make_unique<CasteljauFill>(true, opt.tolerance, Verdict::CachedAnyMap));
 #ifdef CASTELJAU_HAVE_AGG
         rs.push_back(bench::make_agg_renderer());
 #endif

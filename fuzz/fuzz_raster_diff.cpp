@@ -13,7 +13,10 @@
 //   2. for straight-edged paths, default options against the independent exact-area reference of
 //      tests/reference_area.* (slab integration): within 1/255 at every pixel;
 //   3. a path classify_topology proves Simple renders through the fast path (that verdict given
-//      in FillOptions::topology) and with plain accumulation within 1/255 of the exact cells.
+//      in FillOptions::topology) and with plain accumulation within 1/255 of the exact cells;
+//   4. under the similarity maps, at a flattening tolerance from 0.015 to 2 px (bits 4-5 of byte
+//      0), a path that classify_topology(path, tolerance / scale) proves Simple renders by plain
+//      accumulation within 1/255 of the exact cells at that tolerance.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -75,6 +78,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                    Affine::rotate(0.3) * Affine::translate(4, -6),
                                    Affine::scale(0.05)};
     const Affine m = kMaps[(head >> 1) & 7];
+    // The scale of each map when it is a similarity (uniform scale, rotation, mirror, translation).
+    static const double kSimilarityScale[] = {1, 1, 0, 0, 0, 1, 1, 0.05};
+    const double similarity = kSimilarityScale[(head >> 1) & 7];
+    static const double kTolerances[] = {kDefaultTolerance, 0.1, 0.5, 2};
+    const double coarse = kTolerances[(head >> 4) & 3];
 
     Path path;
     bool curved = false;
@@ -131,6 +139,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             FillOptions plain = opts;
             plain.exact_overlaps = false;
             expect_close("plain accumulation of a Simple path vs exact cells", render(r, path, m, plain), cells);
+        }
+        if (similarity > 0 && classify_topology(path, coarse / similarity) == Topology::Simple) {
+            FillOptions plain = opts, cells_at = opts;
+            plain.tolerance = cells_at.tolerance = coarse;
+            plain.exact_overlaps = false;
+            cells_at.topology = Topology::Overlapping;
+            expect_close("plain accumulation of a path Simple under similarity maps vs exact cells",
+                         render(r, path, m, plain), render(r, path, m, cells_at));
         }
         if (!curved) {
             const ref::CoverageGrid g = ref::path_reference(path, m, opts.rule, IRect{0, 0, kSize, kSize});

@@ -306,3 +306,146 @@ TEST_CASE("topology: verdicts after a path large enough to free the classifier's
     CHECK(classify_topology(join(ring, ring)) == Topology::Overlapping);
     CHECK(classify_topology(square(0, 0, 10)) == Topology::Simple);
 }
+
+namespace {
+
+// The largest |difference| between plain accumulation and the exact cells for `p` mapped by `m`
+// at flattening tolerance `tol` (the same flattening in both).
+int plain_vs_cells(Rasterizer& r, const Path& p, const Affine& m, double tol) {
+    FillOptions plain, cells;
+    plain.tolerance = cells.tolerance = tol;
+    plain.exact_overlaps = false;
+    cells.topology = Topology::Overlapping;
+    const Mask a = r.fill_mask(p, m, plain), b = r.fill_mask(p, m, cells);
+    REQUIRE(a.bounds.x0 == b.bounds.x0);
+    REQUIRE(a.bounds.y0 == b.bounds.y0);
+    REQUIRE(a.data.size() == b.data.size());
+    int worst = 0;
+    for (std::size_t i = 0; i < a.data.size(); ++i) worst = std::max(worst, std::abs(a.data[i] - b.data[i]));
+    return worst;
+}
+
+// Similarity maps of scale s: turned, mirrored or not, at a fractional offset.
+Affine similarity(double s, double angle, bool mirror, Point at) {
+    const double c = std::cos(angle) * s, k = std::sin(angle) * s, f = mirror ? -1 : 1;
+    return Affine{c, k, -f * k, f * c, at.x, at.y};
+}
+
+// A box under a cubic arch, and a hole (opposite orientation) reaching up to just under the arch.
+// The curves are apart, but where the arch is flattened to few chords they cut through the hole.
+Path arch_over_hole() {
+    Path p;
+    p.move_to({0, 0});
+    p.cubic_to({0, 40}, {100, 40}, {100, 0});
+    p.line_to({100, -100});
+    p.line_to({0, -100});
+    p.close();
+    p.move_to({47, -50});
+    p.line_to({53, -50});
+    p.line_to({53, 29.4});
+    p.line_to({47, 29.4});
+    p.close();
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("topology: under similarity maps, a hole under an arch is Simple only where the chords keep clear of it",
+          "[raster][topology]") {
+    const Path p = arch_over_hole();
+    CHECK(classify_topology(p) == Topology::Overlapping);  // the arch's hull holds the hole's top
+    Rasterizer r;
+    int simple = 0, refused_and_needed = 0;
+    for (double lambda : {0.01, 0.1, 0.5, 1.0, 2.0, 3.0, 4.0, 5.0, 8.0, 12.0, 20.0, 40.0, 80.0, 100.0}) {
+        const Topology t = classify_topology(p, lambda);
+        for (int k = 0; k < 4; ++k) {
+            const double s = 0.4 * (1 + k);  // the same tolerance in path units at four scales
+            const Affine m = similarity(s, 0.7 * k, k & 1, {10.3 + k, 30.7});
+            const int worst = plain_vs_cells(r, p, m, lambda * s);
+            INFO("lambda " << lambda << ", scale " << s);
+            if (t == Topology::Simple) CHECK(worst <= 1);
+            else if (worst > 1) ++refused_and_needed;
+        }
+        simple += t == Topology::Simple;
+    }
+    // Fine flattenings are proven; coarse ones are refused, and there plain accumulation is wrong.
+    CHECK(classify_topology(p, 1.0) == Topology::Simple);
+    CHECK(classify_topology(p, 40.0) == Topology::Overlapping);
+    CHECK(simple >= 5);
+    CHECK(refused_and_needed >= 4);
+    CHECK_THROWS_AS(classify_topology(p, 0.0), Error);
+    CHECK_THROWS_AS(classify_topology(p, NAN), Error);
+}
+
+TEST_CASE("topology: under similarity maps, a hole lying between an arch and its chord is refused at every tolerance",
+          "[raster][topology]") {
+    // No chord of the arch ever crosses the hole, but where the arch is one chord the hole lies
+    // outside the flattened box: its winding number there is -1 beside the box's +1, which plain
+    // accumulation cancels. Its winding number cannot be read from a point outside the arch's
+    // hull, so no tolerance is proven.
+    Path p;
+    p.move_to({0, 0});
+    p.cubic_to({0, 40}, {100, 40}, {100, 0});
+    p.line_to({100, -100});
+    p.line_to({0, -100});
+    p.close();
+    p.move_to({45, 1});
+    p.line_to({55, 1});
+    p.line_to({55, 20});
+    p.line_to({45, 20});
+    p.close();
+    Rasterizer r;
+    for (double lambda : {0.1, 1.0, 10.0, 100.0}) CHECK(classify_topology(p, lambda) == Topology::Overlapping);
+    CHECK(plain_vs_cells(r, p, similarity(0.4, 0, true, {10.3, 30.7}), 100 * 0.4) > 100);
+}
+
+TEST_CASE("topology: Linux Libertine glyphs Simple under similarity maps render plainly like the exact cells",
+          "[raster][topology][text]") {
+    const Font font = Font::load(std::string(CASTELJAU_SOURCE_DIR) + "/fonts/LinLibertine_R.otf");
+    const double upem = 1 / font.glyph_transform(1, {0, 0}).a;
+    const double lambda = kDefaultTolerance * upem / 12;  // proven for 12 px and up
+    Rasterizer r;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> unit(0, 1);
+    int any = 0, similar = 0, total = 0;
+    for (char32_t cp = 0x21; cp < 0x17f; ++cp) {
+        const Path glyph = font.glyph_path(font.glyph_index(cp));
+        if (cp >= 0x7f && cp < 0xa1) continue;
+        if (glyph.empty()) continue;
+        ++total;
+        const Topology general = classify_topology(glyph), t = classify_topology(glyph, lambda);
+        if (general == Topology::Simple) CHECK(t == Topology::Simple);  // it proves more, never less
+        any += general == Topology::Simple;
+        if (t != Topology::Simple) continue;
+        ++similar;
+        if (general == Topology::Simple) continue;
+        // Rendered at 12 to 100 px, turned and mirrored: plain accumulation is exact.
+        for (int k = 0; k < 3; ++k) {
+            const double px = 12 * std::exp(unit(rng) * std::log(100.0 / 12));
+            const Affine m = similarity(px / upem, unit(rng) * 6.283, k & 1, {60 + unit(rng), 60 + unit(rng)});
+            INFO("U+" << std::hex << static_cast<unsigned>(cp) << std::dec << " at " << px << " px");
+            CHECK(plain_vs_cells(r, glyph, m, kDefaultTolerance) <= 1);
+        }
+    }
+    INFO(total << " glyphs: " << any << " Simple under any map, " << similar << " under similarity maps");
+    // Thin CFF curves have control hulls reaching across their strokes: about half the glyphs are
+    // proven under every map, most under the similarity maps that glyphs are drawn with.
+    CHECK(similar >= total * 80 / 100);
+    CHECK(any < total * 70 / 100);
+}
+
+TEST_CASE("topology: the glyph cache gives the similarity verdict, decided again for a smaller size",
+          "[raster][topology][text]") {
+    const Font font = Font::load(std::string(CASTELJAU_SOURCE_DIR) + "/fonts/LinLibertine_R.otf");
+    const std::uint32_t o = font.glyph_index(U'o');
+    REQUIRE(classify_topology(font.glyph_path(o)) == Topology::Overlapping);
+    GlyphCache cache(1u << 20, kDefaultTolerance);
+    Rasterizer r;
+    (void)cache.mask(font, o, 24.0, {0, 0}, r);
+    CHECK(r.last_stats().topology == Topology::Simple);
+    CHECK(r.last_stats().exact_cells == 0);
+    (void)cache.mask(font, o, 12.0, {0.25, 0}, r);  // half the size: the verdict still holds
+    CHECK(r.last_stats().topology == Topology::Simple);
+    (void)cache.mask(font, o, 3.0, {0, 0}, r);  // decided again for 3 px
+    CHECK(r.last_stats().topology != Topology::Unknown);
+}

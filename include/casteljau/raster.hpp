@@ -7,7 +7,8 @@
 // pixel) is that area exactly wherever the winding number stays within one unit interval. Whether
 // it does is decided per shape before rasterizing (classify_topology, once per outline: the glyph
 // cache keeps each glyph's verdict): a shape proven "simple" (no two segments meet, winding values
-// only 0 and 1, or only 0 and -1: about 97 % of DejaVu Sans glyphs) is accumulated plainly; any
+// only 0 and 1, or only 0 and -1: 96 % of DejaVu Sans glyphs, and under the similarity maps that
+// glyphs are drawn with 89 % of Linux Libertine's, against 50 % under every map) is accumulated plainly; any
 // other shape takes the overlap check, where every
 // pixel in which edges could make accumulation inexact (crossings, overlapping or stacked
 // contours) is recomputed exactly from the edges inside it (see src/raster/exact_cell.cpp). A
@@ -54,6 +55,18 @@ enum class Topology : std::uint8_t {
 // "overlapping") for adversarial ones. See src/raster/topology.cpp. Thread-safe (scratch buffers
 // are per thread).
 Topology classify_topology(const Path& path);
+
+// The verdict for filling `path` through a similarity map (a uniform scale s > 0 with any
+// rotation, reflection and translation, such as a glyph's map to pixels) at a flattening
+// tolerance tol with tol / s <= max_tolerance (in the path's units): a glyph at every size from
+// tol / max_tolerance pixels per unit up. It proves more than classify_topology(path) (every path
+// Simple there is Simple here): two segments whose hulls overlap, such as the two sides of a thin
+// curved stroke, are apart when every pair of chords the flattener can draw for them at one such
+// tolerance is apart (cubics and conics are halved while their flatness bound exceeds the
+// tolerance, so their chords are known in advance; see src/raster/topology.cpp). The verdict
+// says nothing about other maps: a non-uniform scale or a shear flattens differently. Throws
+// Error(InvalidArgument) unless max_tolerance is positive and finite. Thread-safe.
+Topology classify_topology(const Path& path, double max_tolerance);
 
 struct FillOptions {
     FillRule rule = FillRule::NonZero;

@@ -21,6 +21,17 @@
 //      decided on whole segments (no splitting): the flattener's chords can span any part of a
 //      segment but stay inside its whole hull, so the verdict holds for the flattened polygon at
 //      any tolerance.
+//      The verdict for similarity maps (classify_topology(path, max_tolerance)) goes further for
+//      two non-adjacent segments whose hulls meet: the flattener halves cubics and conics while
+//      their flatness bound exceeds the tolerance, and under a similarity map of scale s that
+//      bound is s times the one in path units, so which chords it draws at tolerance tol depends
+//      only on lambda = tol / s. chords_apart walks both halving trees and requires every two
+//      chords that can be drawn at one lambda in (0, max_tolerance] to be apart (quadratics,
+//      flattened in equal pieces, stand for their chords by their whole hulls). Two things the
+//      curves' own configuration no longer carries over to the flattened one are then checked:
+//      each contour's orientation is decided with a slack of its segments' hull areas (any
+//      flattening moves the contour's area by less), and winding numbers are read at a point of
+//      the contour outside every hull of the other contours (winding_point).
 //   2. So every contour is a simple closed curve and contours do not meet. Its orientation is the
 //      sign of its area (closed-form Bezier area).
 //   3. The winding number of every region: a region touches some contour A, on A's inside or its
@@ -31,15 +42,18 @@
 //      homotopy between them stays inside the hull), and segments whose hull holds P are split.
 // Every test is decided with a margin of 2^-40 of the path's extent (2^-20 rad for sectors), far
 // above double rounding: a "simple" verdict is never an artefact of rounding, and configurations
-// that touch or come closer than the margin are "overlapping". Nothing here depends on the affine
-// map later applied (nor on the flattening tolerance), since affine maps keep convex hulls, separating lines, crossings and
-// orientations (a mirror flips every orientation together, which keeps winding values in {0, s}).
+// that touch or come closer than the margin are "overlapping". Without a tolerance nothing here
+// depends on the affine map later applied (nor on the flattening tolerance), since affine maps
+// keep convex hulls, separating lines, crossings and orientations (a mirror flips every
+// orientation together, which keeps winding values in {0, s}).
 // A work budget bounds the splitting; past it the verdict is "overlapping" (the exact path).
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "casteljau/error.hpp"
 #include "casteljau/raster.hpp"
+#include "path/flatten_internal.hpp"
 
 namespace casteljau {
 
@@ -53,6 +67,13 @@ struct Seg {
     int contour = 0;
     int index = 0;      // position in its contour
     Rect box;
+    // For the similarity verdict (classify_topology with a tolerance): whether this is a segment
+    // of the path itself (not a half made by add_contour), its depth in the flattener's halving
+    // tree, and the tolerances lambda (in path units) for which the flattener emits it as one
+    // chord: lo <= lambda < hi.
+    bool whole = true;
+    int depth = 0;
+    double lo = 0, hi = INFINITY;
 };
 
 Rect box_of(const Seg& s) {
@@ -111,7 +132,9 @@ void split(const Seg& s, Seg& a, Seg& b) {
 
 class Classifier {
 public:
-    Topology run(const Path& path);
+    // lambda = 0: the verdict for every affine map and tolerance; lambda > 0: for similarity maps
+    // of scale s and tolerances tol with tol / s <= lambda (see classify_topology).
+    Topology run(const Path& path, double lambda = 0);
     // Frees the scratch buffers when a large path left them big, so that a thread that once
     // classified a map does not keep its memory; small buffers stay for the next glyph. The size
     // is judged by the segments and the grid's membership list (a few entries per segment).
@@ -133,6 +156,8 @@ private:
     std::vector<Rect> boxes_;
     std::vector<int> orient_;
     double delta_ = 0;                     // distance margin (path units)
+    double lambda_ = 0;                    // largest tolerance in path units (0: any, whole hulls only)
+    std::vector<char> relaxed_;            // per contour: a pair inside it was decided by chords
     long budget_ = 0;                      // hull tests left
 
     void add_contour(std::vector<Seg>& c);
@@ -143,8 +168,12 @@ private:
     bool disjoint(const Seg& a, const Seg& b, int depth);
     bool sectors_apart(const Seg& a, const Seg& b) const;
     bool meet_only_at_end(const Seg& a, const Seg& b, int depth);
+    static void as_root(Seg& s);
+    bool chords_apart(const Seg& a, const Seg& b);
     bool winding_about(const Seg& s, Point p, int depth, int& w);
-    bool orientation(std::size_t c, int& o) const;
+    bool orientation(std::size_t c, int& o, double slack) const;
+    double hull_areas(std::size_t c) const;
+    bool winding_point(std::size_t a, const std::vector<Rect>& boxes, Point& p);
 };
 
 // Is there a line, through two control points of a or of b or perpendicular to such a pair, with
@@ -290,6 +319,65 @@ bool Classifier::meet_only_at_end(const Seg& a, const Seg& b, int depth) {
     return disjoint(a0, b, depth - 1) && disjoint(a1, b1, depth - 1) && meet_only_at_end(a1, b0, depth - 1);
 }
 
+// The flattener halves cubics and conics at t = 1/2 (de Casteljau) while their flatness bound
+// exceeds the tolerance, so every chord it draws for such a segment joins the ends of one node of
+// the segment's halving tree, and a node is drawn as a chord exactly when its bound is within the
+// tolerance and no ancestor's is. In path units under a similarity map of scale s, that is for
+// lambda = tol / s in [lo, hi): lo = the node's bound, hi = the least bound of its ancestors.
+// Lines are one chord at every tolerance; quadratics (n pieces of equal parameter length) may
+// draw a chord anywhere inside their hull, which stands in for their chords.
+void Classifier::as_root(Seg& s) {
+    s.depth = 0;
+    s.hi = INFINITY;
+    if (s.n == 4) s.lo = std::sqrt(flatten_detail::bound2_cubic(s.p[0], s.p[1], s.p[2], s.p[3]));
+    else if (s.conic) s.lo = std::sqrt(flatten_detail::bound2_conic(s.p[0], s.p[1], s.p[2], s.w));
+    else s.lo = 0;
+}
+
+// Two non-adjacent segments whose hulls no line separates: do the chords the flattener draws for
+// them stay apart at every tolerance lambda in (0, lambda_]? Walks both halving trees: a pair of
+// nodes whose hulls are apart covers every pair of their descendants; otherwise, when both nodes
+// can be chords at one tolerance, their chords must be apart, and the coarser node (larger lo) is
+// halved. Every pair of nodes that are chords at a common tolerance is reached or covered.
+bool Classifier::chords_apart(const Seg& a, const Seg& b) {
+    if (boxes_apart(a.box, b.box) || separated(a.p, a.n, b.p, b.n)) return true;
+    if (budget_ <= 0) return false;
+    // Rounding of the bounds (computed here in path units, by the flattener in pixels) is covered
+    // by widening each interval by a relative 2^-30.
+    constexpr double kSlack = 0x1p-30;
+    const double lo = std::max(a.lo, b.lo) * (1 - kSlack), hi = std::min(a.hi, b.hi) * (1 + kSlack);
+    if (lo < hi && lo <= lambda_ * (1 + kSlack)) {
+        auto chord = [](const Seg& s, Point* q) {
+            if (s.n == 3 && !s.conic) {
+                for (int i = 0; i < 3; ++i) q[i] = s.p[i];
+                return 3;
+            }
+            q[0] = s.p[0];
+            q[1] = s.p[s.n - 1];
+            return 2;
+        };
+        Point ca[3], cb[3];
+        const int na = chord(a, ca), nb = chord(b, cb);
+        if (!separated(ca, na, cb, nb)) return false;
+    }
+    const bool split_a = a.lo >= b.lo;
+    const Seg& x = split_a ? a : b;
+    // Nodes with lo = 0 are never halved (lines, quadratics, straight curves, the depth limit):
+    // both are chords at every tolerance, and those were just found apart.
+    if (!(x.lo > 0)) return true;
+    Seg h[2];
+    split(x, h[0], h[1]);
+    for (Seg& c : h) {
+        c.depth = x.depth + 1;
+        c.hi = std::min(x.hi, x.lo);
+        if (c.depth >= limits::kMaxFlattenDepth) c.lo = 0;
+        else if (c.n == 4) c.lo = std::sqrt(flatten_detail::bound2_cubic(c.p[0], c.p[1], c.p[2], c.p[3]));
+        else c.lo = std::sqrt(flatten_detail::bound2_conic(c.p[0], c.p[1], c.p[2], c.w));
+    }
+    const Seg& other = split_a ? b : a;
+    return chords_apart(h[0], other) && chords_apart(h[1], other);
+}
+
 // Adds to w the crossings of s's control polygon with the ray from p to +x (Sunday's rule: +1
 // upwards with p on the left), splitting s while p lies in its hull.
 bool Classifier::winding_about(const Seg& s, Point p, int depth, int& w) {
@@ -313,10 +401,52 @@ bool Classifier::winding_about(const Seg& s, Point p, int depth, int& w) {
     return true;
 }
 
+// Twice the summed hull areas of contour c's segments. Any flattening of a segment differs from
+// it by a region inside its hull, so the flattened contour's area is within this of the curve's:
+// an orientation decided with this slack holds for the flattened contour at every tolerance.
+// (Twice a hull's area is half the sum of twice the areas of the triangles that leave out one
+// control point each, for three or four points in any position.)
+double Classifier::hull_areas(std::size_t c) const {
+    double sum = 0;
+    for (std::size_t i = contour_at_[c]; i < contour_at_[c + 1]; ++i) {
+        const Seg& s = segs_[i];
+        auto tri = [](Point a, Point b, Point d) { return std::abs(cross(b - a, d - a)); };
+        if (s.n == 3) sum += tri(s.p[0], s.p[1], s.p[2]);
+        else if (s.n == 4)
+            sum += 0.5 * (tri(s.p[1], s.p[2], s.p[3]) + tri(s.p[0], s.p[2], s.p[3]) + tri(s.p[0], s.p[1], s.p[3]) +
+                          tri(s.p[0], s.p[1], s.p[2]));
+    }
+    return sum;
+}
+
+// A point of contour a (a segment's start) outside the hull of every segment of the other
+// contours. Chords of those segments are drawn inside their hulls, so the winding number of the
+// other contours about it is the same for the curves and for their flattening at any tolerance.
+// False when there is none (a contour lying in other segments' hulls: no proof).
+bool Classifier::winding_point(std::size_t a, const std::vector<Rect>& boxes, Point& p) {
+    const std::size_t ncontours = contour_at_.size() - 1;
+    for (std::size_t i = contour_at_[a]; i < contour_at_[a + 1]; ++i) {
+        const Point q = segs_[i].p[0];
+        const Rect qb{q.x, q.y, q.x, q.y};
+        bool clear = true;
+        for (std::size_t b = 0; b < ncontours && clear; ++b) {
+            if (b == a || boxes_apart(boxes[b], qb)) continue;
+            for (std::size_t k = contour_at_[b]; k < contour_at_[b + 1] && clear; ++k)
+                clear = boxes_apart(segs_[k].box, qb) || separated(segs_[k].p, segs_[k].n, &q, 1);
+        }
+        if (budget_ <= 0) return false;
+        if (clear) {
+            p = q;
+            return true;
+        }
+    }
+    return false;
+}
+
 // Sign of contour c's area (closed-form areas of lines, quadratics and cubics relative to the
 // contour's first point; a conic's bulge lies between 0 and its control triangle, so both bounds
 // must agree). False when the area is within the margin of zero.
-bool Classifier::orientation(std::size_t c, int& o) const {
+bool Classifier::orientation(std::size_t c, int& o, double slack) const {
     const Point origin = segs_[contour_at_[c]].p[0];
     double lo = 0, hi = 0;  // twice the area, bounds
     double scale = 0;
@@ -345,7 +475,7 @@ bool Classifier::orientation(std::size_t c, int& o) const {
         lo += a;
         hi += a;
     }
-    const double margin = delta_ * scale * 64;
+    const double margin = delta_ * scale * 64 + slack;
     if (lo > margin) o = 1;
     else if (hi < -margin) o = -1;
     else return false;
@@ -360,6 +490,7 @@ void Classifier::add_contour(std::vector<Seg>& c) {
         for (const Seg& s : c) {
             Seg a, b;
             split(s, a, b);
+            a.whole = b.whole = false;
             halves_.push_back(a);
             halves_.push_back(b);
         }
@@ -375,7 +506,8 @@ void Classifier::add_contour(std::vector<Seg>& c) {
     c.clear();
 }
 
-Topology Classifier::run(const Path& path) {
+Topology Classifier::run(const Path& path, double lambda) {
+    lambda_ = lambda;
     segs_.clear();
     contour_at_.clear();
     contour_.clear();
@@ -500,6 +632,7 @@ Topology Classifier::run(const Path& path) {
             for (int y = span[i].y0; y <= span[i].y1; ++y)
                 for (int x = span[i].x0; x <= span[i].x1; ++x) members[fill[static_cast<std::size_t>(y) * grid + x]++] = i;
     }
+    relaxed_.assign(ncontours, 0);
     long box_tests = 0;
     for (int cy = 0; cy < grid; ++cy)
         for (int cx = 0; cx < grid; ++cx) {
@@ -520,8 +653,16 @@ Topology Classifier::run(const Path& path) {
                         ok = meet_only_at_end(s, t, kDepth);
                     else if (s.contour == t.contour && (s.index == t.index + 1 || (t.index == last && s.index == 0)))
                         ok = meet_only_at_end(t, s, kDepth);
-                    else
+                    else {
                         ok = disjoint(s, t, kDepth);
+                        if (!ok && lambda_ > 0 && s.whole && t.whole) {
+                            Seg a = s, b = t;
+                            as_root(a);
+                            as_root(b);
+                            ok = chords_apart(a, b);
+                            if (ok && s.contour == t.contour) relaxed_[static_cast<std::size_t>(s.contour)] = 1;
+                        }
+                    }
                     if (!ok) return Topology::Overlapping;
                 }
         }
@@ -532,7 +673,7 @@ Topology Classifier::run(const Path& path) {
     std::vector<int>& orient = orient_;
     orient.resize(ncontours);
     for (std::size_t c = 0; c < ncontours; ++c) {
-        if (!orientation(c, orient[c])) return Topology::Overlapping;
+        if (!orientation(c, orient[c], relaxed_[c] ? hull_areas(c) : 0)) return Topology::Overlapping;
         Rect b = segs_[contour_at_[c]].box;
         for (std::size_t i = contour_at_[c]; i < contour_at_[c + 1]; ++i) {
             const Rect& sb = segs_[i].box;
@@ -542,7 +683,8 @@ Topology Classifier::run(const Path& path) {
     }
     int lo = 0, hi = 0;
     for (std::size_t a = 0; a < ncontours; ++a) {
-        const Point p = segs_[contour_at_[a]].p[0];
+        Point p = segs_[contour_at_[a]].p[0];
+        if (lambda_ > 0 && !winding_point(a, boxes, p)) return Topology::Overlapping;
         int w = 0;
         for (std::size_t b = 0; b < ncontours; ++b) {
             if (b == a || boxes_apart(boxes[b], Rect{p.x, p.y, p.x, p.y})) continue;
@@ -562,6 +704,15 @@ Topology classify_topology(const Path& path) {
     // One classifier per thread keeps its buffers between calls: no allocation per path once warm.
     thread_local Classifier c;
     const Topology t = c.run(path);
+    c.trim();
+    return t;
+}
+
+Topology classify_topology(const Path& path, double max_tolerance) {
+    if (!(max_tolerance > 0) || !std::isfinite(max_tolerance))
+        throw Error(ErrorKind::InvalidArgument, "classify_topology: the tolerance must be a positive number");
+    thread_local Classifier c;
+    const Topology t = c.run(path, max_tolerance);
     c.trim();
     return t;
 }

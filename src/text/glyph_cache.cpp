@@ -4,7 +4,11 @@
 // (font, variation, glyph, size, subpixel offset). The whole cache is emptied when the masks pass
 // the byte budget. Each glyph's topology (classify_topology: may plain accumulation render it
 // exactly?) is decided once per (font, variation, glyph) in font units, kept across sizes and
-// offsets (it holds under every affine map), and handed to the rasterizer with the fill.
+// offsets, and handed to the rasterizer with the fill. Glyphs are always mapped by a similarity
+// (uniform scale, y mirrored, translation), so the verdict asked for is the one for similarity
+// maps (classify_topology(path, tolerance)), which also proves glyphs whose thin curved strokes
+// have overlapping control hulls; it holds for every size from the one it was decided for down
+// to half of it and up, and is decided again when a smaller size is asked for.
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
@@ -67,7 +71,11 @@ struct GlyphCache::Impl {
     FillOptions fill;
     std::unordered_map<MaskKey, Mask, MaskKeyHash> masks;
     std::unordered_map<OutlineKey, Path, OutlineKeyHash> outlines;
-    std::unordered_map<OutlineKey, Topology, OutlineKeyHash> topologies;  // a few bytes each, not counted
+    struct Verdict {
+        Topology topology;
+        double max_tolerance;  // in font units: it holds for every size whose tolerance / scale is at most this
+    };
+    std::unordered_map<OutlineKey, Verdict, OutlineKeyHash> topologies;  // a few bytes each, not counted
     std::unordered_map<const void*, std::weak_ptr<const int>> fonts;  // lifetime tokens seen
     GlyphCacheStats stats;
 
@@ -121,11 +129,17 @@ struct GlyphCache::Impl {
     };
     MaskJob job(const MaskKey& key, const Font& font, std::uint32_t glyph, double size, Point offset) {
         MaskJob j{key, font.glyph_path(glyph), font.glyph_transform(size, offset), fill};
-        if (!j.outline.empty()) {
+        const Affine& m = j.to_pixels;
+        const bool similarity = m.b == 0 && m.c == 0 && std::abs(m.a) == std::abs(m.d) && m.a != 0;
+        if (!j.outline.empty() && similarity) {  // (glyph_transform is one; anything else: the rasterizer decides)
             const OutlineKey okey{&font.impl(), font.variation_key(), glyph};
+            const double lambda = fill.tolerance / std::abs(j.to_pixels.a);  // the tolerance in font units
             auto t = topologies.find(okey);
-            if (t == topologies.end()) t = topologies.emplace(okey, classify_topology(j.outline)).first;
-            j.fill.topology = t->second;
+            if (t == topologies.end() || lambda > t->second.max_tolerance) {
+                const Verdict v{classify_topology(j.outline, 2 * lambda), 2 * lambda};
+                t = topologies.insert_or_assign(okey, v).first;
+            }
+            j.fill.topology = t->second.topology;
         }
         return j;
     }
