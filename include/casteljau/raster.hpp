@@ -14,7 +14,8 @@
 // contours) is recomputed exactly from the edges inside it (see src/raster/exact_cell.cpp). A
 // shape whose topology the caller did not give is classified by fill() when its box is large for
 // its number of segments (width + height at least 4 pixels per path verb: there the per-cell
-// check would cost more than the classification), and otherwise takes the overlap check.
+// check would cost more than the classification; under a similarity map with the verdict for
+// that map and tolerance), and otherwise takes the overlap check.
 //
 // Range: geometry is clipped in double precision before it is converted to float cell coordinates,
 // so any finite coordinate up to limits::kMaxCoordinate is accepted; the target rectangle is at
@@ -59,8 +60,8 @@ Topology classify_topology(const Path& path);
 // The verdict for filling `path` through a similarity map (a uniform scale s > 0 with any
 // rotation, reflection and translation, such as a glyph's map to pixels) at a flattening
 // tolerance tol with tol / s <= max_tolerance (in the path's units): a glyph at every size from
-// tol / max_tolerance pixels per unit up. It proves more than classify_topology(path) (every path
-// Simple there is Simple here): two segments whose hulls overlap, such as the two sides of a thin
+// tol / max_tolerance pixels per unit up. It proves more than classify_topology(path) (a path
+// proven there is proven here, within the same work budget): two segments whose hulls overlap, such as the two sides of a thin
 // curved stroke, are apart when every pair of chords the flattener can draw for them at one such
 // tolerance is apart (cubics and conics are halved while their flatness bound exceeds the
 // tolerance, so their chords are known in advance; see src/raster/topology.cpp). The verdict
@@ -73,7 +74,9 @@ struct FillOptions {
     double tolerance = kDefaultTolerance;  // flattening tolerance in pixels
     bool exact_overlaps = true;            // exact coverage where edges overlap (off: plain accumulation everywhere)
     // The path's topology when the caller knows it (classify_topology of this very path, under any
-    // affine map): a Simple path is accumulated plainly, which is exact for it; Overlapping takes
+    // affine map; or classify_topology(path, max_tolerance) when the map is a similarity and
+    // tolerance / scale is at most max_tolerance): a Simple path is accumulated plainly, which is
+    // exact for it; Overlapping takes
     // the per-cell overlap check; Unknown lets fill() decide (see the top of this header). Only
     // read when exact_overlaps is on.
     Topology topology = Topology::Unknown;
