@@ -428,10 +428,12 @@ TEST_CASE("topology: Linux Libertine glyphs Simple under similarity maps render 
         }
     }
     INFO(total << " glyphs: " << any << " Simple under any map, " << similar << " under similarity maps");
-    // Thin CFF curves have control hulls reaching across their strokes: about half the glyphs are
-    // proven under every map, most under the similarity maps that glyphs are drawn with.
-    CHECK(similar >= total * 80 / 100);
-    CHECK(any < total * 70 / 100);
+    // Thin CFF curves have control hulls reaching across their strokes: half the glyphs (158 of
+    // 316) are proven under every map, nearly all (313) under the similarity maps glyphs are drawn
+    // with; each contour's orientation must then be decided with the slack of only the hulls its
+    // flattening can start from (with whole segment hulls only 282 were).
+    CHECK(similar >= total * 97 / 100);
+    CHECK(any < total * 60 / 100);
 }
 
 TEST_CASE("topology: the glyph cache gives the similarity verdict, decided again for a smaller size",

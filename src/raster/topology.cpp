@@ -401,20 +401,48 @@ bool Classifier::winding_about(const Seg& s, Point p, int depth, int& w) {
     return true;
 }
 
-// Twice the summed hull areas of contour c's segments. Any flattening of a segment differs from
-// it by a region inside its hull, so the flattened contour's area is within this of the curve's:
-// an orientation decided with this slack holds for the flattened contour at every tolerance.
+// Twice the area within which every flattening of contour c at a tolerance up to lambda_ differs
+// from the curves: any chord the flattener draws for a node of a segment's halving tree bounds,
+// with the node's curve, a region inside the node's hull. For a cubic or conic that sum is taken
+// over the nodes its flattening can start from (the first nodes, from the root down, whose bound
+// is within lambda_: every chord drawn is one of them or inside one), for a quadratic over its
+// whole hull. An orientation decided with this slack holds for the flattened contour.
 // (Twice a hull's area is half the sum of twice the areas of the triangles that leave out one
 // control point each, for three or four points in any position.)
 double Classifier::hull_areas(std::size_t c) const {
+    auto tri = [](Point a, Point b, Point d) { return std::abs(cross(b - a, d - a)); };
+    auto hull2 = [&](const Seg& s) {
+        if (s.n == 3) return tri(s.p[0], s.p[1], s.p[2]);
+        if (s.n == 4)
+            return 0.5 * (tri(s.p[1], s.p[2], s.p[3]) + tri(s.p[0], s.p[2], s.p[3]) + tri(s.p[0], s.p[1], s.p[3]) +
+                          tri(s.p[0], s.p[1], s.p[2]));
+        return 0.0;
+    };
+    // Explicit stack: at most one pending half per level.
+    Seg stack[limits::kMaxFlattenDepth + 2];
     double sum = 0;
     for (std::size_t i = contour_at_[c]; i < contour_at_[c + 1]; ++i) {
         const Seg& s = segs_[i];
-        auto tri = [](Point a, Point b, Point d) { return std::abs(cross(b - a, d - a)); };
-        if (s.n == 3) sum += tri(s.p[0], s.p[1], s.p[2]);
-        else if (s.n == 4)
-            sum += 0.5 * (tri(s.p[1], s.p[2], s.p[3]) + tri(s.p[0], s.p[2], s.p[3]) + tri(s.p[0], s.p[1], s.p[3]) +
-                          tri(s.p[0], s.p[1], s.p[2]));
+        if (s.n == 2) continue;
+        if (s.n == 3 && !s.conic) {
+            sum += hull2(s);
+            continue;
+        }
+        int n = 0;
+        stack[n] = s;
+        stack[n++].depth = 0;
+        while (n > 0) {
+            const Seg q = stack[--n];
+            const double bound = q.n == 4 ? flatten_detail::bound2_cubic(q.p[0], q.p[1], q.p[2], q.p[3])
+                                          : flatten_detail::bound2_conic(q.p[0], q.p[1], q.p[2], q.w);
+            if (q.depth >= limits::kMaxFlattenDepth || std::sqrt(bound) <= lambda_ * (1 + 0x1p-30)) {
+                sum += hull2(q);
+                continue;
+            }
+            split(q, stack[n], stack[n + 1]);
+            stack[n].depth = stack[n + 1].depth = q.depth + 1;
+            n += 2;
+        }
     }
     return sum;
 }
