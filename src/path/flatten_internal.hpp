@@ -71,6 +71,8 @@ struct Flattener {
         // |A| h^2 / 6 there and |A| h^2 max|u^2 - 5u/6| = (25/144) |A| h^2 on the two end pieces
         // (one end fixed); both are within (25/36) of the chord bound |A| h^2 / 4, which is what
         // `balanced` measures n against. The end pieces keep half a chord's area error each.
+        // (classify_topology's verdict for similarity maps treats a quadratic's chords as lying
+        // anywhere in its hull, which the area-balanced vertices keep to as well.)
         const double b2 = bound2_quad(p0, p1, p2);
         if (!(b2 > tol2)) return emit(p2);
         const double need = balanced ? b2 * (625.0 / 1296.0) : b2;  // (25/36)^2 of the bound squared
@@ -97,6 +99,10 @@ struct Flattener {
         emit(p2);
     }
 
+    // Cubics and conics are halved at t = 1/2 while their bound exceeds the tolerance, so every
+    // chord joins the ends of one node of the halving tree: classify_topology's verdict for
+    // similarity maps (src/raster/topology.cpp, chords_apart and hull_areas) depends on exactly
+    // this rule and these bounds; change them together.
     void cubic(Point a, Point b, Point c, Point d) {
         const Point p0 = m(a), p1 = m(b), p2 = m(c), p3 = m(d);
         if (culled({p0, p1, p2, p3})) return emit(p3);
