@@ -358,10 +358,20 @@ int main(int argc, char** argv) {
                 }
             }
             if (opt.check) {
+                // FreeType flattens cubics coarsely: on a CFF font its own mean error against the
+                // reference passes 2/255 (2.4/255 at 24 px for Linux Libertine), so the bound is
+                // that error plus 1/255 when it is larger.
                 const double m = results[si][kCast].vs_freetype.mean();
-                if (!(m <= kMaxMeanVsFreeType)) {
+                const double bound = std::max(kMaxMeanVsFreeType, results[si][kFT].vs_reference.mean() + 1.0);
+                if (!(m <= bound)) {
                     std::fprintf(stderr, "FAIL: %d px: casteljau vs FreeType mean |diff| %.3f/255 > %.1f/255\n",
-                                 opt.sizes[si], m, kMaxMeanVsFreeType);
+                                 opt.sizes[si], m, bound);
+                    ok = false;
+                }
+                // The font path (a verdict decided once per glyph) must render like the default.
+                if (results[si][kFont].vs_casteljau.max > 1) {
+                    std::fprintf(stderr, "FAIL: %d px: the font path differs from casteljau's default (max %d/255)\n",
+                                 opt.sizes[si], results[si][kFont].vs_casteljau.max);
                     ok = false;
                 }
                 if (results[si][kMask].vs_casteljau.max != 0) {
