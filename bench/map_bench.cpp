@@ -33,6 +33,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <functional>
 #include <string>
 #include <vector>
@@ -63,18 +64,33 @@ double best_of(int rounds, const std::function<void()>& f) {
 
 }  // namespace
 
+int run(int argc, char** argv);
+
 int main(int argc, char** argv) {
-    if (argc < 2) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "map_bench: error: %s\n", e.what());
+        return 1;
+    }
+}
+
+int run(int argc, char** argv) {
+    auto usage = [] {
         std::fprintf(stderr, "usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME]\n");
         return 2;
-    }
+    };
+    if (argc < 2 || argv[1][0] == '-') return usage();
     int W = 4096, rounds = 5;
     std::string layer;
-    for (int i = 2; i + 1 < argc; i += 2) {
+    for (int i = 2; i < argc; i += 2) {
+        if (i + 1 >= argc) return usage();
         if (!std::strcmp(argv[i], "--width")) W = std::atoi(argv[i + 1]);
         else if (!std::strcmp(argv[i], "--rounds")) rounds = std::atoi(argv[i + 1]);
         else if (!std::strcmp(argv[i], "--layer")) layer = argv[i + 1];
+        else return usage();
     }
+    if (W < 2 || rounds < 1) return usage();
     const int H = W / 2;
     const auto bytes = read_file(argv[1]);
     const MapData data = read_map_data(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), layer);
