@@ -215,3 +215,30 @@ TEST_CASE("canvas limits: save() nests 1024 deep and layers 64 deep, one more is
     c.fill_path(r, Paint::solid(Color::black()));
     CHECK(pm.pixel(1, 1) == PremulPixel{0, 0, 0, 255});
 }
+
+TEST_CASE("Pixmap: a new pixmap is transparent, fill_rows replaces rows in range only, copies and moves own their pixels",
+          "[pixmap]") {
+    Pixmap p(3, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 3; ++x) CHECK(p.pixel(x, y) == PremulPixel{0, 0, 0, 0});
+    p.fill_rows(1, 3, Color::rgba(255, 0, 0, 128));
+    p.fill_rows(-5, 0, Color::black());  // clamped: nothing
+    p.fill_rows(4, 9, Color::black());   // clamped: nothing
+    for (int x = 0; x < 3; ++x) {
+        CHECK(p.pixel(x, 0) == PremulPixel{0, 0, 0, 0});
+        CHECK(p.pixel(x, 1) == PremulPixel{128, 0, 0, 128});
+        CHECK(p.pixel(x, 2) == PremulPixel{128, 0, 0, 128});
+        CHECK(p.pixel(x, 3) == PremulPixel{0, 0, 0, 0});
+    }
+    Pixmap copy = p;
+    CHECK_FALSE(copy.borrowed());
+    CHECK(copy.data() != p.data());
+    CHECK(copy.pixel(2, 2) == PremulPixel{128, 0, 0, 128});
+    Pixmap moved = std::move(copy);
+    CHECK(moved.pixel(0, 1) == PremulPixel{128, 0, 0, 128});
+    CHECK(copy.data() == nullptr);
+    copy = moved;
+    CHECK(copy.pixel(0, 2) == PremulPixel{128, 0, 0, 128});
+    p.fill(Color::white());
+    CHECK(p.pixel(1, 3) == PremulPixel{255, 255, 255, 255});
+}

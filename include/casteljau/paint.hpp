@@ -73,7 +73,7 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     std::size_t stride() const { return stride_; }  // bytes from one row to the next
-    bool borrowed() const { return pixels_ != nullptr && storage_.empty(); }
+    bool borrowed() const { return pixels_ != nullptr && !storage_; }
     // The first row. Rows are stride() bytes apart; only an owned pixmap is guaranteed contiguous.
     std::uint8_t* data() { return pixels_; }
     const std::uint8_t* data() const { return pixels_; }
@@ -83,11 +83,20 @@ public:
     PremulPixel pixel(int x, int y) const;
     void set_pixel(int x, int y, PremulPixel p);
     void fill(Color c);  // replaces every pixel (no blending)
+    // Replaces the pixels of rows [y0, y1) (clamped to the pixmap; no blending). Threads may fill
+    // disjoint row ranges of one pixmap at once.
+    void fill_rows(int y0, int y1, Color c);
 
 private:
     int width_ = 0, height_ = 0;
     std::size_t stride_ = 0;
-    std::vector<std::uint8_t> storage_;  // empty when borrowed
+    // Owned pixels (null when borrowed), from calloc: a large pixmap starts as zero pages that
+    // the kernel maps on first touch, so creating one costs nothing until it is drawn into (and
+    // whoever touches a row first, possibly a worker thread, pays for its pages).
+    struct Free {
+        void operator()(std::uint8_t* p) const noexcept;
+    };
+    std::unique_ptr<std::uint8_t[], Free> storage_;
     std::uint8_t* pixels_ = nullptr;
 };
 

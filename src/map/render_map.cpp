@@ -333,7 +333,6 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
     if (target.width() != frame.width || target.height() != frame.height)
         throw Error(ErrorKind::InvalidArgument, "render_map: the pixmap does not have the frame's size");
     const int threads = map_threads(opts.threads);
-    target.fill(style.background);
     FillOptions fo;
     fo.rule = opts.fill_rule;
     fo.tolerance = opts.tolerance;
@@ -357,6 +356,10 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
         canvases.push_back(std::make_unique<Canvas>(target));
         canvases.back()->fill_options() = fo;
     }
+    // The background, band by band on the workers: on a new pixmap this is also where its pages
+    // are first touched (32 MB at 4096 x 2048, a third of a one-thread fill of the world).
+    parallel::for_each_index(threads, bands.size(),
+                             [&](int, std::size_t b) { target.fill_rows(bands[b].y0, bands[b].y1, style.background); });
     std::optional<AreaCompositor> area;                                     // the whole image
     std::vector<std::optional<AreaCompositor>> band_areas(static_cast<std::size_t>(threads));  // one band per worker
 

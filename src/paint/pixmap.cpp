@@ -1,7 +1,9 @@
 // Paint stage: premultiplication and the Pixmap container (include/casteljau/paint.hpp).
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <new>
 #include <string>
 
 #include "casteljau/error.hpp"
@@ -54,9 +56,12 @@ Pixmap::Pixmap(int width, int height) {
     width_ = width;
     height_ = height;
     stride_ = static_cast<std::size_t>(width) * 4;
-    storage_.assign(stride_ * static_cast<std::size_t>(height), 0);
-    pixels_ = storage_.data();
+    storage_.reset(static_cast<std::uint8_t*>(std::calloc(stride_ * static_cast<std::size_t>(height), 1)));
+    if (!storage_) throw std::bad_alloc();
+    pixels_ = storage_.get();
 }
+
+void Pixmap::Free::operator()(std::uint8_t* p) const noexcept { std::free(p); }
 
 Pixmap Pixmap::borrow(std::uint8_t* pixels, int width, int height, std::size_t stride) {
     if (!pixels) throw Error(ErrorKind::InvalidArgument, "Pixmap::borrow needs pixel memory");
@@ -78,9 +83,10 @@ Pixmap::Pixmap(const Pixmap& o) : width_(o.width_), height_(o.height_), stride_(
         stride_ = 0;
         return;
     }
-    storage_.resize(stride_ * static_cast<std::size_t>(height_));
-    for (int y = 0; y < height_; ++y) std::memcpy(storage_.data() + stride_ * static_cast<std::size_t>(y), o.row(y), stride_);
-    pixels_ = storage_.data();
+    storage_.reset(static_cast<std::uint8_t*>(std::malloc(stride_ * static_cast<std::size_t>(height_))));
+    if (!storage_) throw std::bad_alloc();
+    for (int y = 0; y < height_; ++y) std::memcpy(storage_.get() + stride_ * static_cast<std::size_t>(y), o.row(y), stride_);
+    pixels_ = storage_.get();
 }
 
 Pixmap& Pixmap::operator=(const Pixmap& o) {
@@ -93,7 +99,6 @@ Pixmap::Pixmap(Pixmap&& o) noexcept
     o.width_ = o.height_ = 0;
     o.stride_ = 0;
     o.pixels_ = nullptr;
-    o.storage_.clear();
 }
 
 Pixmap& Pixmap::operator=(Pixmap&& o) noexcept {
@@ -106,7 +111,6 @@ Pixmap& Pixmap::operator=(Pixmap&& o) noexcept {
     o.width_ = o.height_ = 0;
     o.stride_ = 0;
     o.pixels_ = nullptr;
-    o.storage_.clear();
     return *this;
 }
 
@@ -123,10 +127,12 @@ void Pixmap::set_pixel(int x, int y, PremulPixel px) {
     p[3] = px.a;
 }
 
-void Pixmap::fill(Color c) {
+void Pixmap::fill(Color c) { fill_rows(0, height_, c); }
+
+void Pixmap::fill_rows(int y0, int y1, Color c) {
     const PremulPixel p = premultiply(c);
     const std::uint8_t px[4] = {p.r, p.g, p.b, p.a};
-    for (int y = 0; y < height_; ++y) {
+    for (int y = std::max(y0, 0); y < std::min(y1, height_); ++y) {
         std::uint8_t* r = row(y);
         for (int x = 0; x < width_; ++x) std::memcpy(r + 4 * static_cast<std::size_t>(x), px, 4);
     }
