@@ -459,3 +459,25 @@ TEST_CASE("Map threads: 1, 2 and 5 threads give the same pixels in every mode", 
     bad.threads = -1;
     CHECK_THROWS_AS(render_map(world, MapProjection{}, style, bad), Error);
 }
+
+TEST_CASE("render_map onto a drawn pixmap replaces every pixel with the background first, transparent too",
+          "[map]") {
+    const MapData d = read_map_data(R"({"type":"FeatureCollection","features":[
+      {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[10,10],[40,10],[40,40],[10,40],[10,10]]]}}]})");
+    MapOptions o;
+    o.width = 100;
+    o.height = 50;
+    o.bbox = Rect{0, 0, 100, 50};
+    for (int seamless = 0; seamless < 2; ++seamless) {
+        o.seamless = seamless != 0;
+        const MapStyle st;  // transparent background, black fill
+        const Pixmap fresh = render_map(d, MapProjection{}, st, o);
+        Pixmap drawn(100, 50);
+        drawn.fill(Color::rgba(255, 0, 0));
+        render_map(d, MapProjection{}, fit_map(d, MapProjection{}, o), st, o, drawn);
+        for (int y = 0; y < 50; ++y)
+            for (int x = 0; x < 100; ++x) REQUIRE(drawn.pixel(x, y) == fresh.pixel(x, y));
+        CHECK(fresh.pixel(80, 5) == PremulPixel{0, 0, 0, 0});
+        CHECK(fresh.pixel(25, 25) == PremulPixel{0, 0, 0, 255});
+    }
+}
