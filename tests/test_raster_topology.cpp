@@ -331,15 +331,21 @@ Affine similarity(double s, double angle, bool mirror, Point at) {
     return Affine{c, k, -f * k, f * c, at.x, at.y};
 }
 
-// A box under a cubic arch, and a hole (opposite orientation) reaching up to just under the arch.
-// The curves are apart, but where the arch is flattened to few chords they cut through the hole.
-Path arch_over_hole() {
+// A box (clockwise, y up) under a cubic arch from (0, 0) to (100, 0) that rises to y = 30.
+Path arch_box() {
     Path p;
     p.move_to({0, 0});
     p.cubic_to({0, 40}, {100, 40}, {100, 0});
     p.line_to({100, -100});
     p.line_to({0, -100});
     p.close();
+    return p;
+}
+
+// The box and a hole (opposite orientation) reaching up to just under the arch. The curves are
+// apart, but where the arch is flattened to few chords they cut through the hole.
+Path arch_over_hole() {
+    Path p = arch_box();
     p.move_to({47, -50});
     p.line_to({53, -50});
     p.line_to({53, 29.4});
@@ -383,12 +389,7 @@ TEST_CASE("topology: under similarity maps, a hole lying between an arch and its
     // outside the flattened box: its winding number there is -1 beside the box's +1, which plain
     // accumulation cancels. Its winding number cannot be read from a point outside the arch's
     // hull, so no tolerance is proven.
-    Path p;
-    p.move_to({0, 0});
-    p.cubic_to({0, 40}, {100, 40}, {100, 0});
-    p.line_to({100, -100});
-    p.line_to({0, -100});
-    p.close();
+    Path p = arch_box();
     p.move_to({45, 1});
     p.line_to({55, 1});
     p.line_to({55, 20});

@@ -1,10 +1,6 @@
 // Formats stage: opening SQLite on first use (see sqlite_library.hpp).
 #include "formats/sqlite_library.hpp"
 
-#include <mutex>
-#include <string>
-
-#include "casteljau/error.hpp"
 #include "platform/runtime_library.hpp"
 
 #ifndef CASTELJAU_SQLITE_SONAME
@@ -13,46 +9,27 @@
 
 namespace casteljau::sqlite_library {
 
-namespace {
-
-struct Loaded {
-    Api api{};
-    std::string error;  // empty when every function was found
-};
-
-Loaded load() {
-    Loaded l;
-    platform::RuntimeLibrary lib("SQLite", CASTELJAU_SQLITE_SONAME);
-    lib.get(l.api.open_v2, "sqlite3_open_v2");
-    lib.get(l.api.close, "sqlite3_close");
-    lib.get(l.api.errmsg, "sqlite3_errmsg");
-    lib.get(l.api.exec, "sqlite3_exec");
-    lib.get(l.api.free, "sqlite3_free");
-    lib.get(l.api.prepare_v2, "sqlite3_prepare_v2");
-    lib.get(l.api.reset, "sqlite3_reset");
-    lib.get(l.api.step, "sqlite3_step");
-    lib.get(l.api.finalize, "sqlite3_finalize");
-    lib.get(l.api.bind_int, "sqlite3_bind_int");
-    lib.get(l.api.bind_int64, "sqlite3_bind_int64");
-    lib.get(l.api.bind_text, "sqlite3_bind_text");
-    lib.get(l.api.bind_blob, "sqlite3_bind_blob");
-    lib.get(l.api.column_int, "sqlite3_column_int");
-    lib.get(l.api.column_int64, "sqlite3_column_int64");
-    lib.get(l.api.column_text, "sqlite3_column_text");
-    lib.get(l.api.column_blob, "sqlite3_column_blob");
-    lib.get(l.api.column_bytes, "sqlite3_column_bytes");
-    l.error = lib.error();
-    return l;
-}
-
-}  // namespace
-
 const Api& api() {
-    static std::once_flag once;
-    static Loaded loaded;
-    std::call_once(once, [] { loaded = load(); });
-    if (!loaded.error.empty()) throw Error(ErrorKind::Io, loaded.error);
-    return loaded.api;
+    return platform::open_once<Api>("SQLite", CASTELJAU_SQLITE_SONAME, [](platform::RuntimeLibrary& lib, Api& a) {
+        lib.get(a.open_v2, "sqlite3_open_v2");
+        lib.get(a.close, "sqlite3_close");
+        lib.get(a.errmsg, "sqlite3_errmsg");
+        lib.get(a.exec, "sqlite3_exec");
+        lib.get(a.free, "sqlite3_free");
+        lib.get(a.prepare_v2, "sqlite3_prepare_v2");
+        lib.get(a.reset, "sqlite3_reset");
+        lib.get(a.step, "sqlite3_step");
+        lib.get(a.finalize, "sqlite3_finalize");
+        lib.get(a.bind_int, "sqlite3_bind_int");
+        lib.get(a.bind_int64, "sqlite3_bind_int64");
+        lib.get(a.bind_text, "sqlite3_bind_text");
+        lib.get(a.bind_blob, "sqlite3_bind_blob");
+        lib.get(a.column_int, "sqlite3_column_int");
+        lib.get(a.column_int64, "sqlite3_column_int64");
+        lib.get(a.column_text, "sqlite3_column_text");
+        lib.get(a.column_blob, "sqlite3_column_blob");
+        lib.get(a.column_bytes, "sqlite3_column_bytes");
+    });
 }
 
 }  // namespace casteljau::sqlite_library

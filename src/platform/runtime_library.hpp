@@ -4,12 +4,15 @@
 // MBTiles) are not linked: every casteljau process would pay for loading and relocating them at
 // start-up. They are opened with dlopen by soname on first use instead, and their functions are
 // called through a table of pointers (map/proj_library.hpp, formats/sqlite_library.hpp).
-// RuntimeLibrary fills such a table. Not thread-safe by itself: callers open each library once
-// (std::call_once).
+// RuntimeLibrary fills such a table; open_once() opens a library once per process. RuntimeLibrary
+// is not thread-safe by itself; open_once() is.
 #pragma once
 
+#include <mutex>
 #include <string>
 #include <type_traits>
+
+#include "casteljau/error.hpp"
 
 namespace casteljau::platform {
 
@@ -36,5 +39,23 @@ private:
     std::string label_;  // "PROJ (libproj.so.25)"
     std::string error_;
 };
+
+// The table of a library opened on the first call: `fill(lib, api)` looks up its functions
+// (lib.get). Every call returns the same table, or throws Error(ErrorKind::Io) with the first
+// failure (the library or a function missing). Each call site (each `fill` lambda) has its own
+// table. Thread-safe.
+template <class Api, class Fill>
+const Api& open_once(const char* name, const char* soname, Fill fill) {
+    static std::once_flag once;
+    static Api api{};
+    static std::string error;
+    std::call_once(once, [&] {
+        RuntimeLibrary lib(name, soname);
+        fill(lib, api);
+        error = lib.error();
+    });
+    if (!error.empty()) throw Error(ErrorKind::Io, error);
+    return api;
+}
 
 }  // namespace casteljau::platform
