@@ -437,20 +437,25 @@ TEST_CASE("topology: Linux Libertine glyphs Simple under similarity maps render 
     CHECK(any < total * 60 / 100);
 }
 
-TEST_CASE("topology: the glyph cache gives the similarity verdict, decided again for a smaller size",
+TEST_CASE("topology: the glyph cache gives the similarity verdict from a glyph's second mask, or at once when large",
           "[raster][topology][text]") {
     const Font font = Font::load(std::string(CASTELJAU_SOURCE_DIR) + "/fonts/LinLibertine_R.otf");
-    const std::uint32_t o = font.glyph_index(U'o');
+    const std::uint32_t o = font.glyph_index(U'o'), e = font.glyph_index(U'e');
     REQUIRE(classify_topology(font.glyph_path(o)) == Topology::Overlapping);
+    REQUIRE(classify_topology(font.glyph_path(e)) == Topology::Overlapping);
     GlyphCache cache(1u << 20, kDefaultTolerance);
     Rasterizer r;
-    (void)cache.mask(font, o, 24.0, {0, 0}, r);
+    (void)cache.mask(font, o, 24.0, {0, 0}, r);  // first mask: the verdict for every map
+    CHECK(r.last_stats().topology == Topology::Overlapping);
+    (void)cache.mask(font, o, 24.0, {0.25, 0}, r);  // second: the verdict for similarity maps
     CHECK(r.last_stats().topology == Topology::Simple);
     CHECK(r.last_stats().exact_cells == 0);
-    (void)cache.mask(font, o, 12.0, {0.25, 0}, r);  // half the size: the verdict still holds
+    (void)cache.mask(font, o, 12.0, {0.5, 0}, r);  // half the size: it still holds
     CHECK(r.last_stats().topology == Topology::Simple);
     (void)cache.mask(font, o, 3.0, {0, 0}, r);  // decided again for 3 px
     CHECK(r.last_stats().topology != Topology::Unknown);
+    (void)cache.mask(font, e, 100.0, {0, 0}, r);  // large: at once
+    CHECK(r.last_stats().topology == Topology::Simple);
 }
 
 TEST_CASE("topology: the rasterizer classifies a path under a similarity map with the similarity verdict",

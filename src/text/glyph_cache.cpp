@@ -5,10 +5,14 @@
 // the byte budget. Each glyph's topology (classify_topology: may plain accumulation render it
 // exactly?) is decided once per (font, variation, glyph) in font units, kept across sizes and
 // offsets, and handed to the rasterizer with the fill. Glyphs are always mapped by a similarity
-// (uniform scale, y mirrored, translation), so the verdict asked for is the one for similarity
-// maps (classify_topology(path, tolerance)), which also proves glyphs whose thin curved strokes
-// have overlapping control hulls; it holds for every size from the one it was decided for down
-// to half of it and up, and is decided again when a smaller size is asked for.
+// (uniform scale, y mirrored, translation), so the verdict for similarity maps
+// (classify_topology(path, tolerance)) applies too: it also proves glyphs whose thin curved
+// strokes have overlapping control hulls (most of a CFF font's), holds for every size from the
+// one it was decided for down to half of it and up, and is decided again for a smaller size. It
+// costs about twice the plain verdict for such glyphs, more than one small mask saves (a glyph
+// seen once at 12 px renders 20 % slower with it), so a glyph first gets the verdict for every
+// map, and the one for similarity maps when that was not Simple and a second mask of the glyph is
+// asked for, or at once from kSimilarityFirstPx up, where one mask pays for it.
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
@@ -73,8 +77,11 @@ struct GlyphCache::Impl {
     std::unordered_map<OutlineKey, Path, OutlineKeyHash> outlines;
     struct Verdict {
         Topology topology;
+        bool similarity;       // classify_topology(path, max_tolerance), else classify_topology(path)
         double max_tolerance;  // in font units: it holds for every size whose tolerance / scale is at most this
+        int masks;             // masks asked for with this verdict
     };
+    static constexpr double kSimilarityFirstPx = 64;
     std::unordered_map<OutlineKey, Verdict, OutlineKeyHash> topologies;  // a few bytes each, not counted
     std::unordered_map<const void*, std::weak_ptr<const int>> fonts;  // lifetime tokens seen
     GlyphCacheStats stats;
@@ -134,12 +141,21 @@ struct GlyphCache::Impl {
         if (!j.outline.empty() && similarity) {  // (glyph_transform is one; anything else: the rasterizer decides)
             const OutlineKey okey{&font.impl(), font.variation_key(), glyph};
             const double lambda = fill.tolerance / std::abs(j.to_pixels.a);  // the tolerance in font units
+            auto similar = [&] { return Verdict{classify_topology(j.outline, 2 * lambda), true, 2 * lambda, 0}; };
             auto t = topologies.find(okey);
-            if (t == topologies.end() || lambda > t->second.max_tolerance) {
-                const Verdict v{classify_topology(j.outline, 2 * lambda), 2 * lambda};
-                t = topologies.insert_or_assign(okey, v).first;
+            if (t == topologies.end())
+                t = topologies
+                        .emplace(okey, size >= kSimilarityFirstPx ? similar()
+                                                                  : Verdict{classify_topology(j.outline), false, INFINITY, 0})
+                        .first;
+            Verdict& v = t->second;
+            if (v.similarity ? lambda > v.max_tolerance : v.topology != Topology::Simple && v.masks >= 1) {
+                const int masks = v.masks;
+                v = similar();
+                v.masks = masks;
             }
-            j.fill.topology = t->second.topology;
+            ++v.masks;
+            j.fill.topology = v.topology;
         }
         return j;
     }
