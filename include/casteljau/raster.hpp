@@ -69,6 +69,11 @@ Topology classify_topology(const Path& path);
 // Error(InvalidArgument) unless max_tolerance is positive and finite. Thread-safe.
 Topology classify_topology(const Path& path, double max_tolerance);
 
+// The scale s of `m` when it is a similarity map (its linear part s times a rotation, or times a
+// rotation and a mirror, to a relative 2^-40), else 0: what classify_topology(path,
+// max_tolerance) asks of the map, with tolerance / s to compare against max_tolerance.
+double similarity_scale(const Affine& m);
+
 struct FillOptions {
     FillRule rule = FillRule::NonZero;
     double tolerance = kDefaultTolerance;  // flattening tolerance in pixels

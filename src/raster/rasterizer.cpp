@@ -136,12 +136,10 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opti
     if (opts.exact_overlaps) {
         if (opts.topology == Topology::Unknown &&
             static_cast<double>(bw) + bh >= kClassifyPixelsPerSegment * static_cast<double>(path.verbs().size())) {
-            // Under a similarity map (uniform scale s with rotation, mirror, translation) the
-            // verdict for this very flattening proves more (thin curved strokes).
-            const double s = std::hypot(m.a, m.b);
-            const bool similarity = std::abs(m.d - m.a) + std::abs(m.c + m.b) <= 0x1p-40 * s ||
-                                    std::abs(m.d + m.a) + std::abs(m.c - m.b) <= 0x1p-40 * s;
-            opts.topology = similarity && s > 0 ? classify_topology(path, opts.tolerance / s) : classify_topology(path);
+            // Under a similarity map the verdict for this very flattening proves more (thin
+            // curved strokes).
+            const double s = similarity_scale(m);
+            opts.topology = s > 0 ? classify_topology(path, opts.tolerance / s) : classify_topology(path);
         }
         stats_.topology = opts.topology;
         opts.exact_overlaps = opts.topology != Topology::Simple;

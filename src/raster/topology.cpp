@@ -168,6 +168,11 @@ private:
     bool disjoint(const Seg& a, const Seg& b, int depth);
     bool sectors_apart(const Seg& a, const Seg& b) const;
     bool meet_only_at_end(const Seg& a, const Seg& b, int depth);
+    // The flattener's bound of a cubic or conic node in path units (0 for lines and quadratics,
+    // which it does not halve). Rounding of the bounds (here in path units, in pixels in the
+    // flattener) is covered by widening every comparison with them by a relative kBoundSlack.
+    static double halving_bound(const Seg& s);
+    static constexpr double kBoundSlack = 0x1p-30;
     static void as_root(Seg& s);
     bool chords_apart(const Seg& a, const Seg& b);
     bool winding_about(const Seg& s, Point p, int depth, int& w);
@@ -326,12 +331,16 @@ bool Classifier::meet_only_at_end(const Seg& a, const Seg& b, int depth) {
 // lambda = tol / s in [lo, hi): lo = the node's bound, hi = the least bound of its ancestors.
 // Lines are one chord at every tolerance; quadratics (n pieces of equal parameter length) may
 // draw a chord anywhere inside their hull, which stands in for their chords.
+double Classifier::halving_bound(const Seg& s) {
+    if (s.n == 4) return std::sqrt(flatten_detail::bound2_cubic(s.p[0], s.p[1], s.p[2], s.p[3]));
+    if (s.conic) return std::sqrt(flatten_detail::bound2_conic(s.p[0], s.p[1], s.p[2], s.w));
+    return 0;
+}
+
 void Classifier::as_root(Seg& s) {
     s.depth = 0;
     s.hi = INFINITY;
-    if (s.n == 4) s.lo = std::sqrt(flatten_detail::bound2_cubic(s.p[0], s.p[1], s.p[2], s.p[3]));
-    else if (s.conic) s.lo = std::sqrt(flatten_detail::bound2_conic(s.p[0], s.p[1], s.p[2], s.w));
-    else s.lo = 0;
+    s.lo = halving_bound(s);
 }
 
 // Two non-adjacent segments whose hulls no line separates: do the chords the flattener draws for
@@ -342,11 +351,8 @@ void Classifier::as_root(Seg& s) {
 bool Classifier::chords_apart(const Seg& a, const Seg& b) {
     if (boxes_apart(a.box, b.box) || separated(a.p, a.n, b.p, b.n)) return true;
     if (budget_ <= 0) return false;
-    // Rounding of the bounds (computed here in path units, by the flattener in pixels) is covered
-    // by widening each interval by a relative 2^-30.
-    constexpr double kSlack = 0x1p-30;
-    const double lo = std::max(a.lo, b.lo) * (1 - kSlack), hi = std::min(a.hi, b.hi) * (1 + kSlack);
-    if (lo < hi && lo <= lambda_ * (1 + kSlack)) {
+    const double lo = std::max(a.lo, b.lo) * (1 - kBoundSlack), hi = std::min(a.hi, b.hi) * (1 + kBoundSlack);
+    if (lo < hi && lo <= lambda_ * (1 + kBoundSlack)) {
         auto chord = [](const Seg& s, Point* q) {
             if (s.n == 3 && !s.conic) {
                 for (int i = 0; i < 3; ++i) q[i] = s.p[i];
@@ -370,9 +376,7 @@ bool Classifier::chords_apart(const Seg& a, const Seg& b) {
     for (Seg& c : h) {
         c.depth = x.depth + 1;
         c.hi = std::min(x.hi, x.lo);
-        if (c.depth >= limits::kMaxFlattenDepth) c.lo = 0;
-        else if (c.n == 4) c.lo = std::sqrt(flatten_detail::bound2_cubic(c.p[0], c.p[1], c.p[2], c.p[3]));
-        else c.lo = std::sqrt(flatten_detail::bound2_conic(c.p[0], c.p[1], c.p[2], c.w));
+        c.lo = c.depth >= limits::kMaxFlattenDepth ? 0 : halving_bound(c);
     }
     const Seg& other = split_a ? b : a;
     return chords_apart(h[0], other) && chords_apart(h[1], other);
@@ -433,9 +437,7 @@ double Classifier::hull_areas(std::size_t c) const {
         stack[n++].depth = 0;
         while (n > 0) {
             const Seg q = stack[--n];
-            const double bound = q.n == 4 ? flatten_detail::bound2_cubic(q.p[0], q.p[1], q.p[2], q.p[3])
-                                          : flatten_detail::bound2_conic(q.p[0], q.p[1], q.p[2], q.w);
-            if (q.depth >= limits::kMaxFlattenDepth || std::sqrt(bound) <= lambda_ * (1 + 0x1p-30)) {
+            if (q.depth >= limits::kMaxFlattenDepth || halving_bound(q) <= lambda_ * (1 + kBoundSlack)) {
                 sum += hull2(q);
                 continue;
             }
@@ -734,6 +736,13 @@ Topology classify_topology(const Path& path) {
     const Topology t = c.run(path);
     c.trim();
     return t;
+}
+
+double similarity_scale(const Affine& m) {
+    const double s = std::hypot(m.a, m.b);
+    const bool turn = std::abs(m.d - m.a) + std::abs(m.c + m.b) <= 0x1p-40 * s;
+    const bool mirror = std::abs(m.d + m.a) + std::abs(m.c - m.b) <= 0x1p-40 * s;
+    return s > 0 && std::isfinite(s) && (turn || mirror) ? s : 0;
 }
 
 Topology classify_topology(const Path& path, double max_tolerance) {

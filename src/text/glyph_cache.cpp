@@ -79,7 +79,6 @@ struct GlyphCache::Impl {
         Topology topology;
         bool similarity;       // classify_topology(path, max_tolerance), else classify_topology(path)
         double max_tolerance;  // in font units: it holds for every size whose tolerance / scale is at most this
-        int masks;             // masks asked for with this verdict
     };
     static constexpr double kSimilarityFirstPx = 64;
     std::unordered_map<OutlineKey, Verdict, OutlineKeyHash> topologies;  // a few bytes each, not counted
@@ -136,25 +135,17 @@ struct GlyphCache::Impl {
     };
     MaskJob job(const MaskKey& key, const Font& font, std::uint32_t glyph, double size, Point offset) {
         MaskJob j{key, font.glyph_path(glyph), font.glyph_transform(size, offset), fill};
-        const Affine& m = j.to_pixels;
-        const bool similarity = m.b == 0 && m.c == 0 && std::abs(m.a) == std::abs(m.d) && m.a != 0;
-        if (!j.outline.empty() && similarity) {  // (glyph_transform is one; anything else: the rasterizer decides)
+        const double scale = similarity_scale(j.to_pixels);  // (glyph_transform is a similarity)
+        if (!j.outline.empty() && scale > 0) {
             const OutlineKey okey{&font.impl(), font.variation_key(), glyph};
-            const double lambda = fill.tolerance / std::abs(j.to_pixels.a);  // the tolerance in font units
-            auto similar = [&] { return Verdict{classify_topology(j.outline, 2 * lambda), true, 2 * lambda, 0}; };
-            auto t = topologies.find(okey);
-            if (t == topologies.end())
-                t = topologies
-                        .emplace(okey, size >= kSimilarityFirstPx ? similar()
-                                                                  : Verdict{classify_topology(j.outline), false, INFINITY, 0})
-                        .first;
-            Verdict& v = t->second;
-            if (v.similarity ? lambda > v.max_tolerance : v.topology != Topology::Simple && v.masks >= 1) {
-                const int masks = v.masks;
-                v = similar();
-                v.masks = masks;
-            }
-            ++v.masks;
+            const double lambda = fill.tolerance / scale;  // the tolerance in font units
+            Verdict& v = topologies.try_emplace(okey, Verdict{Topology::Unknown, false, 0}).first->second;
+            const bool similar = v.topology == Topology::Unknown
+                                     ? size >= kSimilarityFirstPx
+                                     : (v.similarity ? lambda > v.max_tolerance
+                                                     : v.topology != Topology::Simple);  // a second mask
+            if (similar) v = {classify_topology(j.outline, 2 * lambda), true, 2 * lambda};
+            else if (v.topology == Topology::Unknown) v = {classify_topology(j.outline), false, INFINITY};
             j.fill.topology = v.topology;
         }
         return j;
