@@ -181,6 +181,31 @@ int run(int argc, char** argv) {
         Canvas c(pm);
         c.fill_path(outline, Paint::solid(Color::black()));
     });
+    // The same with every shared border stroked once (SharedBorders, as render_map does).
+    StrokeStyle chain_style = ss;
+    chain_style.cap = LineCap::Butt;
+    const Pixmap pm_union = pm;  // the union of every ring's stroke, from the row above
+    const double t_seam_stroke_once = best_of(rounds, [&] {
+        pm.fill(Color::transparent());
+        ac.clear();
+        for (std::size_t i = paths.size(); i-- > 0;) ac.add(raster, paths[i], FillOptions{}, Color::rgba(200, 200, 200));
+        ac.composite_onto(pm);
+        SharedBorders borders;
+        Path outline, chains, whole;
+        for (const Path& p : paths) {
+            chains.clear();
+            whole.clear();
+            borders.add(p, chains, whole);
+            outline.append(stroke(chains, chain_style));
+            outline.append(stroke(whole, ss));
+        }
+        Canvas c(pm);
+        c.fill_path(outline, Paint::solid(Color::black()));
+    });
+    int once_max_diff = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+            once_max_diff = std::max(once_max_diff, std::abs(int(pm.pixel(x, y).a) - int(pm_union.pixel(x, y).a)));
 
     // AGG.
     std::vector<std::uint8_t> agg_buf(static_cast<std::size_t>(W) * H * 4);
@@ -306,6 +331,7 @@ int run(int argc, char** argv) {
     row("fill: AGG 2.6", t_agg, peer_fill);
     row("fill: Cairo", t_cairo, peer_fill);
     row("fill+stroke: casteljau seamless + union stroke", t_seam_stroke, peer_stroke);
+    row("fill+stroke: casteljau seamless + borders once", t_seam_stroke_once, peer_stroke);
     row("fill+stroke: AGG 2.6", t_agg_stroke, peer_stroke);
     row("fill+stroke: Cairo", t_cairo_stroke, peer_stroke);
     row("render_map fill (projection included)", t_map, peer_fill);
@@ -315,6 +341,7 @@ int run(int argc, char** argv) {
                 wall1 / wall2);
     std::printf("topology per feature: %zu of %zu features simple; max |alpha difference| against the exact cells: %d/255\n",
                 simple, paths.size(), verdict_max_diff);
+    std::printf("borders once against the union of every ring's stroke: max |alpha difference| %d/255\n", once_max_diff);
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
     std::printf("peak RSS: %.1f MB (input file %.1f MB)\n", ru.ru_maxrss / 1024.0, bytes.size() / 1e6);

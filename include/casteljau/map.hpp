@@ -23,8 +23,9 @@
 // counter-clockwise exteriors, many files do not follow it).
 //
 // Strokes: all stroke outlines of one style layer are filled as ONE path with the nonzero rule.
-// The rasterizer computes overlapping pixels exactly, so a border shared by two countries (present
-// in both rings) is drawn once, never twice darker. Lines (LineString) are stroked with the stroke
+// Polygon rings first go through SharedBorders (below), in feature order, so a border shared by two
+// countries is stroked once; the rasterizer computes what overlap is left (where borders meet)
+// exactly, so a border is never drawn twice darker. Lines (LineString) are stroked with the stroke
 // colour, or with the fill colour when the layer has no stroke. Points are disks of point_radius
 // pixels filled like polygons.
 //
@@ -34,7 +35,9 @@
 // MapData is only read.
 #pragma once
 
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -132,6 +135,49 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
 int map_threads(int requested);
 // Convenience: fit + a new Pixmap + render.
 Pixmap render_map(const MapData& data, const MapProjection& proj, const MapStyle& style, const MapOptions& opts);
+
+// Shared borders, each stroked once. Neighbouring polygons repeat their common border in both
+// rings; filling the union of both strokes is exact (the rasterizer resolves the overlap) but costs
+// the exact computation along every border. SharedBorders removes what an earlier ring already
+// holds, so each border is stroked once and the union stays the same:
+//   - a segment (two consecutive positions, in either direction) that an earlier ring (or earlier in
+//     the same ring) has is dropped;
+//   - a join (a position with its two neighbours, in either order) that an earlier ring has is not
+//     drawn again; one that is new keeps both of its segments, dropped or not;
+//   - what is left comes out as open chains (stroke them with Butt caps: every chain end lies on a
+//     segment drawn in full by another chain, or at a join drawn elsewhere) and as rings that keep
+//     everything, closed as they were.
+// The stroke of a polyline is the union of one rectangle per segment and one join piece per vertex
+// (stroke.hpp), and a join piece depends only on the vertex and its two neighbours, so stroking the
+// result with the same width and join, Butt caps, gives the same union as stroking every ring: the
+// same pixels, up to rounding. Positions match exactly or not at all (no snapping): rings from one
+// file and one projection share their borders bit for bit when the file shares its positions
+// (TopoJSON always does).
+// Input contours: closed contours of line segments (Path::close) with at least three distinct
+// positions. Every other contour (open, with curves such as point disks, or a ring of one or two
+// distinct positions, whose stroke depends on the caps) goes to `whole` unchanged, to be stroked
+// with the style's own caps. Consecutive repeated positions are skipped.
+// Memory: 16 bytes per position added plus two hash tables of 4-byte entries; clear() frees nothing
+// but forgets every ring. At most 2^31 positions between clear() calls (Error(Limit)).
+// Thread-safety: one object per thread; its methods must not be called concurrently.
+class SharedBorders {
+public:
+    // Appends to `chains` what is left of the rings of `rings` that no earlier call holds, and to
+    // `whole` the contours it does not take (see above).
+    void add(const Path& rings, Path& chains, Path& whole);
+    void clear();
+
+private:
+    bool add_ring(std::span<const Point> ring, Path& out);
+    std::uint32_t* find_segment(std::uint32_t a);
+    std::uint32_t* find_join(std::uint32_t v);
+    void grow(std::vector<std::uint32_t>& table, bool joins);
+    std::vector<Point> pts_;  // each ring: its n positions, then its first two again
+    std::vector<std::uint32_t> segments_, joins_;  // open addressing: index into pts_ + 1, 0 empty
+    std::size_t segment_count_ = 0, join_count_ = 0;
+    std::vector<Point> ring_;
+    std::vector<std::uint8_t> flags_;
+};
 
 // The antimeridian split of one closed ring or one line (lon/lat), see the rule above. Appends the
 // pieces to `out` (rings closed implicitly, without repeating the first position).

@@ -317,7 +317,8 @@ bool overlaps(const Rect& r, const IRect& band) { return r.y1 >= band.y0 && r.y0
 struct Drawable {
     Path path;
     Color color;
-    Rect box;  // control bounds of path
+    Rect box;    // control bounds of path
+    Path rings;  // strokes: polygon rings still to be stroked, after SharedBorders
 };
 
 }  // namespace
@@ -408,7 +409,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             if (!c) return;
             PathVisitor v;
             build(w, f, v);
-            if (!v.fill.empty()) out = Drawable{std::move(v.fill), *c, Rect{}};
+            if (!v.fill.empty()) out = Drawable{std::move(v.fill), *c, Rect{}, Path{}};
         };
         if (layer.fill && opts.seamless) {
             std::reverse(order.begin(), order.end());
@@ -461,11 +462,16 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             });
         }
         // Strokes: the outlines of every feature in one path per colour, filled once with the
-        // nonzero rule, so that a border shared by two features is drawn once.
+        // nonzero rule. Polygon rings go through SharedBorders first, in feature order, so a border
+        // shared by two features is stroked once (the union, and so the pixels, stay the same; the
+        // exact overlap computation along every border is saved).
         const std::optional<Color> line_color = layer.stroke ? layer.stroke : layer.fill;
         if (!line_color || !(layer.stroke_width > 0)) continue;
         ss.width = layer.stroke_width;
+        StrokeStyle chain_style = ss;
+        chain_style.cap = LineCap::Butt;  // chain ends lie on segments or joins drawn by another chain
         Path outline;
+        SharedBorders borders;
         auto flush = [&] {
             if (outline.empty()) return;
             const Rect box = outline.control_bounds();
@@ -482,17 +488,29 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
                 canvas.restore();
             });
             outline.clear();
+            borders.clear();  // bounds its memory; a border split by a flush is drawn twice
         };
         auto make_outline = [&](int w, const Feature& f, std::optional<Drawable>& out) {
             PathVisitor v;
             build(w, f, v);
             Path o;
-            // Polygon outlines (point disks too) take the stroke colour; lines are always stroked.
-            if (layer.stroke && !v.fill.empty()) o = stroke(v.fill, ss, Affine{}, opts.tolerance);
-            if (!v.lines.empty()) o.append(stroke(v.lines, ss, Affine{}, opts.tolerance));
-            if (!o.empty()) out = Drawable{std::move(o), *line_color, Rect{}};
+            // Lines are always stroked; polygon outlines (point disks too) take the stroke colour.
+            if (!v.lines.empty()) o = stroke(v.lines, ss, Affine{}, opts.tolerance);
+            Path rings;
+            if (layer.stroke && !v.fill.empty()) rings = std::move(v.fill);
+            if (!o.empty() || !rings.empty()) out = Drawable{std::move(o), *line_color, Rect{}, std::move(rings)};
         };
-        chunked(order, make_outline, [&](const std::vector<std::optional<Drawable>>& chunk) {
+        std::vector<Path> chains, whole;
+        chunked(order, make_outline, [&](std::vector<std::optional<Drawable>>& chunk) {
+            // What is left of each feature's rings, in feature order, then stroked in parallel.
+            chains.assign(chunk.size(), Path{});
+            whole.assign(chunk.size(), Path{});
+            for (std::size_t i = 0; i < chunk.size(); ++i)
+                if (chunk[i] && !chunk[i]->rings.empty()) borders.add(chunk[i]->rings, chains[i], whole[i]);
+            parallel::for_each_index(threads, chunk.size(), [&](int, std::size_t i) {
+                if (!chains[i].empty()) chunk[i]->path.append(stroke(chains[i], chain_style, Affine{}, opts.tolerance));
+                if (!whole[i].empty()) chunk[i]->path.append(stroke(whole[i], ss, Affine{}, opts.tolerance));
+            });
             for (const auto& d : chunk) {
                 if (!d) continue;
                 if (outline.points().size() + d->path.points().size() > limits::kMaxPathPoints / 2) flush();
