@@ -5,12 +5,14 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <random>
 #include <vector>
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
+#include "platform/pixel_memory.hpp"
 
 using namespace casteljau;
 
@@ -241,4 +243,31 @@ TEST_CASE("Pixmap: a new pixmap is transparent, fill_rows replaces rows in range
     CHECK(copy.pixel(0, 2) == PremulPixel{128, 0, 0, 128});
     p.fill(Color::white());
     CHECK(p.pixel(1, 3) == PremulPixel{255, 255, 255, 255});
+}
+
+TEST_CASE("Pixmap: large pixmaps (mapped on huge pages) read as zero, copy, move and free like small ones", "[pixmap]") {
+    // 2048 x 1100 x 4 bytes is past platform::kHugeBlock (8 MiB) and not a multiple of 2 MiB.
+    const int w = 2048, h = 1100;
+    REQUIRE(std::size_t(w) * h * 4 >= platform::kHugeBlock);
+    Pixmap p(w, h);
+    std::size_t nonzero = 0;
+    for (int y = 0; y < h; ++y)
+        for (std::size_t k = 0; k < std::size_t(w) * 4; ++k) nonzero += p.row(y)[k] != 0;
+    CHECK(nonzero == 0);
+#if defined(__linux__)
+    CHECK(reinterpret_cast<std::uintptr_t>(p.data()) % (std::uintptr_t(2) << 20) == 0);
+#endif
+    p.fill_rows(h - 2, h, Color::rgba(0, 0, 255, 255));  // the last bytes of the block
+    p.set_pixel(0, 0, PremulPixel{1, 2, 3, 4});
+    Pixmap copy = p;
+    CHECK(copy.data() != p.data());
+    CHECK(copy.pixel(w - 1, h - 1) == PremulPixel{0, 0, 255, 255});
+    CHECK(copy.pixel(0, 0) == PremulPixel{1, 2, 3, 4});
+    CHECK(copy.pixel(5, 5) == PremulPixel{0, 0, 0, 0});
+    Pixmap moved = std::move(copy);
+    CHECK(moved.pixel(w - 1, h - 2) == PremulPixel{0, 0, 255, 255});
+    p = Pixmap(3, 3);  // the large block is released, a small one takes its place
+    CHECK(p.pixel(2, 2) == PremulPixel{0, 0, 0, 0});
+    moved = Pixmap(w, h);  // and a large one replaces a large one
+    CHECK(moved.pixel(w - 1, h - 1) == PremulPixel{0, 0, 0, 0});
 }

@@ -90,11 +90,15 @@ public:
 private:
     int width_ = 0, height_ = 0;
     std::size_t stride_ = 0;
-    // Owned pixels (null when borrowed), from calloc: a large pixmap starts as zero pages that
-    // the kernel maps on first touch, so creating one costs nothing until it is drawn into (and
-    // whoever touches a row first, possibly a worker thread, pays for its pages).
+    // Owned pixels (null when borrowed), zeroed memory from calloc or, for large pixmaps, mapped
+    // on 2 MiB pages where the system allows: a large pixmap starts as zero pages that the kernel
+    // maps on first touch, so creating one costs nothing until it is drawn into (and whoever
+    // touches a row first, possibly a worker thread, pays for its pages).
     struct Free {
+        Free() noexcept : bytes(0) {}
+        explicit Free(std::size_t n) noexcept : bytes(n) {}
         void operator()(std::uint8_t* p) const noexcept;
+        std::size_t bytes;  // as allocated
     };
     std::unique_ptr<std::uint8_t[], Free> storage_;
     std::uint8_t* pixels_ = nullptr;

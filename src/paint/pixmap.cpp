@@ -10,6 +10,7 @@
 #include "casteljau/limits.hpp"
 #include "casteljau/paint.hpp"
 #include "paint/pixel_math.hpp"
+#include "platform/pixel_memory.hpp"
 
 namespace casteljau {
 
@@ -56,12 +57,13 @@ Pixmap::Pixmap(int width, int height) {
     width_ = width;
     height_ = height;
     stride_ = static_cast<std::size_t>(width) * 4;
-    storage_.reset(static_cast<std::uint8_t*>(std::calloc(stride_ * static_cast<std::size_t>(height), 1)));
+    const std::size_t bytes = stride_ * static_cast<std::size_t>(height);
+    storage_ = std::unique_ptr<std::uint8_t[], Free>(static_cast<std::uint8_t*>(platform::allocate(bytes, true)), Free{bytes});
     if (!storage_) throw std::bad_alloc();
     pixels_ = storage_.get();
 }
 
-void Pixmap::Free::operator()(std::uint8_t* p) const noexcept { std::free(p); }
+void Pixmap::Free::operator()(std::uint8_t* p) const noexcept { platform::release(p, bytes); }
 
 Pixmap Pixmap::borrow(std::uint8_t* pixels, int width, int height, std::size_t stride) {
     if (!pixels) throw Error(ErrorKind::InvalidArgument, "Pixmap::borrow needs pixel memory");
@@ -83,7 +85,8 @@ Pixmap::Pixmap(const Pixmap& o) : width_(o.width_), height_(o.height_), stride_(
         stride_ = 0;
         return;
     }
-    storage_.reset(static_cast<std::uint8_t*>(std::malloc(stride_ * static_cast<std::size_t>(height_))));
+    const std::size_t bytes = stride_ * static_cast<std::size_t>(height_);
+    storage_ = std::unique_ptr<std::uint8_t[], Free>(static_cast<std::uint8_t*>(platform::allocate(bytes, false)), Free{bytes});
     if (!storage_) throw std::bad_alloc();
     for (int y = 0; y < height_; ++y) std::memcpy(storage_.get() + stride_ * static_cast<std::size_t>(y), o.row(y), stride_);
     pixels_ = storage_.get();

@@ -1,0 +1,53 @@
+// Memory for pixel buffers (see pixel_memory.hpp).
+#include "platform/pixel_memory.hpp"
+
+#include <cstdint>
+#include <cstdlib>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace casteljau::platform {
+
+#if defined(__linux__)
+namespace {
+constexpr std::size_t kHugePage = std::size_t(2) << 20;
+std::size_t mapped_size(std::size_t bytes) { return (bytes + kHugePage - 1) / kHugePage * kHugePage; }
+}  // namespace
+#endif
+
+void* allocate(std::size_t bytes, bool zeroed) noexcept {
+#if defined(__linux__)
+    if (bytes >= kHugeBlock) {
+        // Map one huge page more than needed, then unmap the parts before the first 2 MiB
+        // boundary and after the block, so that the block starts on a huge page.
+        const std::size_t size = mapped_size(bytes);
+        void* raw = mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (raw == MAP_FAILED) return nullptr;
+        const auto start = reinterpret_cast<std::uintptr_t>(raw);
+        const std::uintptr_t aligned = (start + kHugePage - 1) / kHugePage * kHugePage;
+        if (aligned > start) munmap(raw, aligned - start);
+        const std::size_t tail = (start + size + kHugePage) - (aligned + size);
+        if (tail > 0) munmap(reinterpret_cast<void*>(aligned + size), tail);
+        void* p = reinterpret_cast<void*>(aligned);
+        (void)madvise(p, size, MADV_HUGEPAGE);  // a hint: without huge pages the block still works
+        return p;
+    }
+#endif
+    if (bytes == 0) bytes = 1;
+    return zeroed ? std::calloc(bytes, 1) : std::malloc(bytes);
+}
+
+void release(void* p, std::size_t bytes) noexcept {
+    if (!p) return;
+#if defined(__linux__)
+    if (bytes >= kHugeBlock) {
+        munmap(p, mapped_size(bytes));
+        return;
+    }
+#endif
+    std::free(p);
+}
+
+}  // namespace casteljau::platform
