@@ -328,6 +328,34 @@ TEST_CASE("Seamless: earlier fills take precedence where fills overlap", "[map][
     CHECK(pm.pixel(4, 1) == PremulPixel{128, 0, 127, 255});  // half red, half blue, no white
 }
 
+TEST_CASE("Seamless: reset() and clear() forget every earlier fill, composite_onto() leaves untouched rows alone",
+          "[map][seamless]") {
+    Rasterizer raster;
+    Path big, dot;
+    big.add_rect(Rect{0.5, 0.5, 31.5, 15.5});
+    dot.add_rect(Rect{40, 20, 42, 22});
+    AreaCompositor ac(IRect{0, 0, 32, 16});
+    ac.add(raster, big, FillOptions{}, Color::rgba(255, 0, 0));
+    CHECK(ac.taken(10, 10) == 255);
+    ac.reset(IRect{32, 16, 64, 32});  // same size elsewhere: the memory is reused
+    CHECK(ac.taken(40, 20) == 0);
+    ac.add(raster, dot, FillOptions{}, Color::rgba(0, 0, 255));
+    Pixmap pm(64, 32);
+    pm.fill(Color::white());
+    ac.composite_onto(pm);
+    int changed = 0;
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 64; ++x) changed += !(pm.pixel(x, y) == PremulPixel{255, 255, 255, 255});
+    CHECK(changed == 4);  // the dot only, nothing of the red fill
+    CHECK(pm.pixel(41, 21) == PremulPixel{0, 0, 255, 255});
+    ac.clear();
+    for (int y = 16; y < 32; ++y)
+        for (int x = 32; x < 64; ++x) REQUIRE(ac.taken(x, y) == 0);
+    pm.fill(Color::white());
+    ac.composite_onto(pm);
+    CHECK(pm.pixel(41, 21) == PremulPixel{255, 255, 255, 255});
+}
+
 TEST_CASE("Seamless: band compositors give the whole-image compositor's pixels, also on a strided target", "[map][seamless]") {
     // render_map composites each band in a compositor covering that band only; the result must
     // equal one compositor over the whole image, and compositing must follow the target's stride.

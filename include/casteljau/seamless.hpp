@@ -24,9 +24,12 @@
 // cover only a band of the target (render_map gives each thread one band at a time and reuses its
 // memory with reset()), so that its memory stays small and in cache.
 //
+// Each row remembers the columns fills have touched, so reset(), clear() and composite_onto() pass
+// over those only (a world map's oceans cost nothing there).
+//
 // Coordinates: pixel space of the target (x right, y down), also for a compositor covering a
-// region only. Thread-safety: one thread at a time, except add() with disjoint clip rectangles;
-// compositors of disjoint regions may composite onto one target at once.
+// region only. Thread-safety: one thread at a time, except add() with clip rectangles that share
+// no row; compositors of disjoint regions may composite onto one target at once.
 #pragma once
 
 #include <cstdint>
@@ -55,8 +58,8 @@ public:
     // Adds the fill of `path` (pixel space) in `color` with `opacity` (multiplies the alpha).
     // Fills added earlier take precedence where they overlap.
     void add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity = 1.0);
-    // The same inside `clip` only (pixel rectangle, intersected with the region). Calls with
-    // disjoint clips touch disjoint pixels, so they may run on different threads at once.
+    // The same inside `clip` only (pixel rectangle, intersected with the region). Calls whose
+    // clips share no row touch disjoint memory, so they may run on different threads at once.
     void add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity, const IRect& clip);
     // Coverage already taken in pixel (x, y) of the region, 0..255.
     std::uint8_t taken(int x, int y) const {
@@ -71,6 +74,7 @@ private:
     IRect region_;
     std::vector<std::uint8_t> layer_;  // premultiplied RGBA8
     std::vector<std::uint8_t> cov_;
+    std::vector<int> lo_, hi_;  // per row: the columns [lo, hi) fills have touched (lo >= hi: none)
 };
 
 }  // namespace casteljau

@@ -17,15 +17,30 @@ AreaCompositor::AreaCompositor(const IRect& region) { reset(region); }
 void AreaCompositor::reset(const IRect& region) {
     check_canvas_size(region.x1 - region.x0, region.y1 - region.y0);
     if (region.empty()) throw Error(ErrorKind::InvalidArgument, "compositor size must be positive");
+    const bool same_size = !lo_.empty() && region.x1 - region.x0 == width() && region.y1 - region.y0 == height();
+    if (same_size) {
+        clear();  // only what the last fills touched
+        region_ = region;
+        return;
+    }
     region_ = region;
     const std::size_t n = static_cast<std::size_t>(width()) * static_cast<std::size_t>(height());
     layer_.assign(n * 4, 0);
     cov_.assign(n, 0);
+    lo_.assign(static_cast<std::size_t>(height()), width());
+    hi_.assign(static_cast<std::size_t>(height()), 0);
 }
 
 void AreaCompositor::clear() {
-    std::fill(layer_.begin(), layer_.end(), 0);
-    std::fill(cov_.begin(), cov_.end(), 0);
+    const std::size_t w = static_cast<std::size_t>(width());
+    for (std::size_t r = 0; r < lo_.size(); ++r) {
+        if (lo_[r] >= hi_[r]) continue;
+        const std::size_t lo = static_cast<std::size_t>(lo_[r]), len = static_cast<std::size_t>(hi_[r] - lo_[r]);
+        std::memset(layer_.data() + (r * w + lo) * 4, 0, len * 4);
+        std::memset(cov_.data() + r * w + lo, 0, len);
+        lo_[r] = width();
+        hi_[r] = 0;
+    }
 }
 
 namespace {
@@ -35,11 +50,18 @@ using pixel::mul_div255;
 struct AreaSink final : SpanSink {
     std::uint8_t* layer;
     std::uint8_t* cov;
+    int* lo;
+    int* hi;
     int width, x0, y0;  // the region's width and origin
     PremulPixel c;
     void row(int y, int x, int length, const std::uint8_t* coverage) override {
+        if (length <= 0) return;
         const std::size_t at = static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width) +
                                static_cast<std::size_t>(x - x0);
+        int& l = lo[y - y0];
+        int& h = hi[y - y0];
+        l = std::min(l, x - x0);
+        h = std::max(h, x - x0 + length);
         std::uint8_t* L = layer + at * 4;
         std::uint8_t* C = cov + at;
         std::uint8_t colour8[32];
@@ -104,6 +126,8 @@ void AreaCompositor::add(Rasterizer& raster, const Path& path, const FillOptions
     AreaSink sink;
     sink.layer = layer_.data();
     sink.cov = cov_.data();
+    sink.lo = lo_.data();
+    sink.hi = hi_.data();
     sink.width = width();
     sink.x0 = region_.x0;
     sink.y0 = region_.y0;
@@ -115,9 +139,13 @@ void AreaCompositor::composite_onto(Pixmap& dst) const {
     if (region_.x0 < 0 || region_.y0 < 0 || region_.x1 > dst.width() || region_.y1 > dst.height())
         throw Error(ErrorKind::InvalidArgument, "AreaCompositor::composite_onto: the target does not contain the region");
     const std::size_t row_bytes = static_cast<std::size_t>(width()) * 4;
-    for (int y = region_.y0; y < region_.y1; ++y)
-        composite_span_premul(dst.row(y) + static_cast<std::size_t>(region_.x0) * 4, width(), nullptr,
-                              layer_.data() + static_cast<std::size_t>(y - region_.y0) * row_bytes);
+    for (int y = region_.y0; y < region_.y1; ++y) {
+        const std::size_t r = static_cast<std::size_t>(y - region_.y0);
+        if (lo_[r] >= hi_[r]) continue;  // no fill touched the row: the layer is transparent there
+        const std::size_t lo = static_cast<std::size_t>(lo_[r]);
+        composite_span_premul(dst.row(y) + (static_cast<std::size_t>(region_.x0) + lo) * 4, hi_[r] - lo_[r], nullptr,
+                              layer_.data() + r * row_bytes + lo * 4);
+    }
 }
 
 }  // namespace casteljau
