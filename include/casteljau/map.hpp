@@ -142,8 +142,9 @@ Pixmap render_map(const MapData& data, const MapProjection& proj, const MapStyle
 // holds, so each border is stroked once and the union stays the same:
 //   - a segment (two consecutive positions, in either direction) that an earlier ring (or earlier in
 //     the same ring) has is dropped;
-//   - a join (a position with its two neighbours, in either order) that an earlier ring has is not
-//     drawn again; one that is new keeps both of its segments, dropped or not;
+//   - a join (a position with its two neighbours, in either order) that an earlier ring (or the same
+//     ring, earlier) has is not drawn again; one that is new keeps both of its segments, dropped
+//     or not;
 //   - what is left comes out as open chains (stroke them with Butt caps: every chain end lies on a
 //     segment drawn in full by another chain, or at a join drawn elsewhere) and as rings that keep
 //     everything, closed as they were.
