@@ -195,7 +195,7 @@ int run(int argc, char** argv) {
         for (const Path& p : paths) {
             chains.clear();
             whole.clear();
-            borders.add(p, chains, whole);
+            borders.add(p, chains, whole, stroke_merge_distance());
             outline.append(stroke(chains, chain_style));
             outline.append(stroke(whole, ss));
         }

@@ -59,7 +59,7 @@ void shared_borders_check(const Path& path, const StrokeStyle& style, const Affi
     for (const Path& r : rings) {
         all.append(stroke(r, st, m, 0.05));
         Path chains, whole;
-        borders.add(r, chains, whole);
+        borders.add(r, chains, whole, stroke_merge_distance(m, 0.05));
         once.append(stroke(chains, butt, m, 0.05));
         once.append(stroke(whole, st, m, 0.05));
         if (all.points().size() + once.points().size() > 10000) return;  // overlap-heavy fills cost seconds under the sanitizers

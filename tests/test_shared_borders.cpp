@@ -45,7 +45,7 @@ int union_difference(const std::vector<Path>& paths, const StrokeStyle& st, cons
     for (const Path& p : paths) {
         all.append(stroke(p, st));
         Path chains, whole;
-        borders.add(p, chains, whole);
+        borders.add(p, chains, whole, stroke_merge_distance());
         k += segments_in(chains) + segments_in(whole);
         t += segments_in(p) + closes_in(p);
         once.append(stroke(chains, butt));
@@ -123,11 +123,13 @@ TEST_CASE("SharedBorders: stroking what is kept covers what every ring's stroke 
                                     ring({{60, 50}, {100, 50}, {100, 80}, {60, 80}}), ring({{20, 50}, {60, 50}, {60, 80}, {20, 80}})};
     // Rings touching at a vertex with other neighbours, a spike, sharp turns, a partly shared
     // border that turns, a hole sharing its outline with an island inside it; a ring of one
-    // position and one of two (their strokes depend on the caps) and an open line.
+    // position, one of two and one the stroker merges into a point (their strokes depend on the
+    // caps) and an open line.
     Path line;
     line.move_to(5, 5).line_to(60, 12).line_to(20, 30);
     const std::vector<Path> mixed = {
         line, ring({{5, 90}, {5, 90}, {5, 90}}), ring({{100, 90}, {110, 95}}), ring({{10, 70}, {40, 68}}),
+        ring({{115, 5}, {115 + 1e-6, 5}, {115, 5 + 2e-6}}),  // three positions the stroker merges: a dot
         ring({{10, 10}, {40, 12}, {70, 10}, {72, 40}, {70, 70}, {40, 68}, {10, 70}, {12, 40}}),
         ring({{70, 10}, {100, 25}, {72, 40}}),
         ring({{70, 70}, {72, 40}, {100, 55}, {110, 90}, {80, 60.5}}),

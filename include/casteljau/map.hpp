@@ -155,9 +155,11 @@ Pixmap render_map(const MapData& data, const MapProjection& proj, const MapStyle
 // file and one projection share their borders bit for bit when the file shares its positions
 // (TopoJSON always does).
 // Input contours: closed contours of line segments (Path::close) with at least three distinct
-// positions. Every other contour (open, with curves such as point disks, or a ring of one or two
-// distinct positions, whose stroke depends on the caps) goes to `whole` unchanged, to be stroked
-// with the style's own caps. Consecutive repeated positions are skipped.
+// positions, not all within `merge_distance` of the first (pass stroke_merge_distance() of the
+// stroke call to come: the stroker draws such a ring as a dot). Every other contour (open, with
+// curves such as point disks, or a ring of zero length or of two distinct positions, whose stroke
+// depends on the caps) goes to `whole` unchanged, to be stroked with the style's own caps.
+// Consecutive repeated positions are skipped.
 // Memory: 16 bytes per position added plus two hash tables of 4-byte entries; clear() frees nothing
 // but forgets every ring. At most 2^31 positions between clear() calls (Error(Limit)).
 // Thread-safety: one object per thread; its methods must not be called concurrently.
@@ -165,11 +167,11 @@ class SharedBorders {
 public:
     // Appends to `chains` what is left of the rings of `rings` that no earlier call holds, and to
     // `whole` the contours it does not take (see above).
-    void add(const Path& rings, Path& chains, Path& whole);
+    void add(const Path& rings, Path& chains, Path& whole, double merge_distance = 0);
     void clear();
 
 private:
-    bool add_ring(std::span<const Point> ring, Path& out);
+    bool add_ring(std::span<const Point> ring, Path& out, double merge_distance);
     std::uint32_t* find_segment(std::uint32_t a);
     std::uint32_t* find_join(std::uint32_t v);
     void grow(std::vector<std::uint32_t>& table, bool joins);

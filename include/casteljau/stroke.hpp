@@ -71,6 +71,12 @@ struct StrokeStyle {
 // Outline of the stroke of `path` (user space) as closed contours to be filled with the nonzero rule.
 // `m` is the user-to-pixel transform used to pick the flattening tolerance (see above).
 Path stroke(const Path& path, const StrokeStyle& style, const Affine& m = {}, double tolerance_px = 0.05);
+// The distance, in the path's units, under which stroke(path, style, m, tolerance_px) merges a
+// point into the one before it (their direction would be noise): 1/1000 of the user-space
+// tolerance. A contour whose points all lie within it of its first point has zero length (a disk or
+// a square with Round or Square caps, nothing with Butt caps). Throws like stroke() for a bad
+// transform or tolerance.
+double stroke_merge_distance(const Affine& m = {}, double tolerance_px = 0.05);
 
 // The dashes of `path` as open contours (made of line segments, in user space); a contour that the
 // pattern leaves "on" all around stays closed. Without an effective pattern (empty, all zero, a

@@ -472,6 +472,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
         chain_style.cap = LineCap::Butt;  // chain ends lie on segments or joins drawn by another chain
         Path outline;
         SharedBorders borders;
+        const double merge_distance = stroke_merge_distance(Affine{}, opts.tolerance);
         auto flush = [&] {
             if (outline.empty()) return;
             const Rect box = outline.control_bounds();
@@ -506,7 +507,7 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
             chains.assign(chunk.size(), Path{});
             whole.assign(chunk.size(), Path{});
             for (std::size_t i = 0; i < chunk.size(); ++i)
-                if (chunk[i] && !chunk[i]->rings.empty()) borders.add(chunk[i]->rings, chains[i], whole[i]);
+                if (chunk[i] && !chunk[i]->rings.empty()) borders.add(chunk[i]->rings, chains[i], whole[i], merge_distance);
             parallel::for_each_index(threads, chunk.size(), [&](int, std::size_t i) {
                 if (!chains[i].empty()) chunk[i]->path.append(stroke(chains[i], chain_style, Affine{}, opts.tolerance));
                 if (!whole[i].empty()) chunk[i]->path.append(stroke(whole[i], ss, Affine{}, opts.tolerance));

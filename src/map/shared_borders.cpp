@@ -76,7 +76,7 @@ void SharedBorders::grow(std::vector<std::uint32_t>& table, bool joins) {
         if (e != 0) *(joins ? find_join(e - 1) : find_segment(e - 1)) = e;
 }
 
-bool SharedBorders::add_ring(std::span<const Point> ring, Path& out) {
+bool SharedBorders::add_ring(std::span<const Point> ring, Path& out, double merge_distance) {
     // Consecutive repeats (and a closing repeat of the first position) carry no segment.
     ring_.clear();
     for (Point p : ring)
@@ -84,6 +84,10 @@ bool SharedBorders::add_ring(std::span<const Point> ring, Path& out) {
     while (ring_.size() > 1 && same(ring_.back(), ring_.front())) ring_.pop_back();
     const std::size_t n = ring_.size();
     if (n < 3) return false;  // a point or a there-and-back: its stroke depends on the caps
+    // Of zero length for the stroker (casteljau/stroke.hpp): a dot, which depends on the caps too.
+    bool spread = false;
+    for (Point p : ring_) spread = spread || distance(p, ring_[0]) > merge_distance;
+    if (!spread) return false;
     const std::size_t base = pts_.size();
     if (base + n + 2 > kMaxPositions)
         throw Error(ErrorKind::Limit, "shared borders: more than 2^31 positions between clear() calls");
@@ -135,7 +139,7 @@ bool SharedBorders::add_ring(std::span<const Point> ring, Path& out) {
     return true;
 }
 
-void SharedBorders::add(const Path& rings, Path& chains, Path& whole) {
+void SharedBorders::add(const Path& rings, Path& chains, Path& whole, double merge_distance) {
     const auto verbs = rings.verbs();
     const auto pts = rings.points();
     const auto weights = rings.weights();
@@ -152,7 +156,7 @@ void SharedBorders::add(const Path& rings, Path& chains, Path& whole) {
             if (verb == Verb::Conic) ++we;
             ++ve;
         } while (ve < verbs.size() && verbs[ve] != Verb::Move);
-        if (!(lines_only && closed && add_ring(pts.subspan(p, pe - p), chains))) {
+        if (!(lines_only && closed && add_ring(pts.subspan(p, pe - p), chains, merge_distance))) {
             std::size_t pi = p, wi = w;
             for (std::size_t i = v; i < ve; ++i) {
                 switch (verbs[i]) {

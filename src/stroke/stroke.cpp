@@ -35,6 +35,8 @@ namespace casteljau::stroke_detail {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+// Points closer than this times the tolerance to the previous kept point are merged into it.
+constexpr double kMergeFactor = 1e-3;
 // At most this many arc steps per full turn, whatever the radius / tolerance ratio.
 constexpr double kMaxArcStepsPerTurn = 65536;
 
@@ -45,7 +47,7 @@ public:
     Outliner(const StrokeStyle& st, double tol, Path& out)
         : st_(st), h_(st.width / 2), out_(out), miter_limit_(std::max(1.0, st.miter_limit)) {
         // Drop points closer than this to their predecessor: their direction is noise.
-        eps_ = tol * 1e-3;
+        eps_ = tol * kMergeFactor;
         const double ratio = std::min(1.0, tol / h_);
         step_ = std::max(4 * std::asin(std::sqrt(ratio / 2)), 2 * kPi / kMaxArcStepsPerTurn);
         step_ = std::min(step_, kPi / 2);
@@ -332,6 +334,10 @@ void stroke_polyline(const Polyline& poly, std::span<const Point> dirs, const St
 }  // namespace casteljau::stroke_detail
 
 namespace casteljau {
+
+double stroke_merge_distance(const Affine& m, double tolerance_px) {
+    return stroke_detail::user_tolerance(m, tolerance_px) * stroke_detail::kMergeFactor;
+}
 
 Path stroke(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance_px) {
     using namespace stroke_detail;
