@@ -161,21 +161,20 @@ int run(int argc, char** argv) {
     });
     AreaCompositor ac(W, H);
     Rasterizer raster;
-    const double t_seam = best_of(rounds, [&] {
+    // Every feature's fill in `color`, composited by area (last feature first) onto a cleared pm.
+    auto seamless_fill = [&](Color color) {
         pm.fill(Color::transparent());
         ac.clear();
-        for (std::size_t i = paths.size(); i-- > 0;) ac.add(raster, paths[i], FillOptions{}, Color::black());
+        for (std::size_t i = paths.size(); i-- > 0;) ac.add(raster, paths[i], FillOptions{}, color);
         ac.composite_onto(pm);
-    });
+    };
+    const double t_seam = best_of(rounds, [&] { seamless_fill(Color::black()); });
     StrokeStyle ss;
     ss.width = 0.8;
     ss.join = LineJoin::Round;
     ss.cap = LineCap::Round;
     const double t_seam_stroke = best_of(rounds, [&] {
-        pm.fill(Color::transparent());
-        ac.clear();
-        for (std::size_t i = paths.size(); i-- > 0;) ac.add(raster, paths[i], FillOptions{}, Color::rgba(200, 200, 200));
-        ac.composite_onto(pm);
+        seamless_fill(Color::rgba(200, 200, 200));
         Path outline;
         for (const Path& p : paths) outline.append(stroke(p, ss));
         Canvas c(pm);
@@ -186,10 +185,7 @@ int run(int argc, char** argv) {
     chain_style.cap = LineCap::Butt;
     const Pixmap pm_union = pm;  // the union of every ring's stroke, from the row above
     const double t_seam_stroke_once = best_of(rounds, [&] {
-        pm.fill(Color::transparent());
-        ac.clear();
-        for (std::size_t i = paths.size(); i-- > 0;) ac.add(raster, paths[i], FillOptions{}, Color::rgba(200, 200, 200));
-        ac.composite_onto(pm);
+        seamless_fill(Color::rgba(200, 200, 200));
         SharedBorders borders;
         Path outline, chains, whole;
         for (const Path& p : paths) {
