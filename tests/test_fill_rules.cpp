@@ -433,3 +433,68 @@ TEST_CASE("fill rules: narrow shapes accumulate by rows as the cell walk does (e
     CHECK(worst <= 1);
     CHECK(compared == static_cast<int>(targets.size()) * 2 * 44 * 1600);
 }
+
+TEST_CASE("fill rules: proven-simple narrow shapes round half-way coverage up, as the exact area does", "[fillrule]") {
+    // A shape given as Topology::Simple skips the overlap check; a narrow one is accumulated by
+    // float row vectors. Rectangles with sides on quarter pixels and 45-degree triangles with
+    // corners on half pixels cover every pixel by a multiple of 1/16 of its area, so the reference
+    // (Sutherland-Hodgman + shoelace), snapped to sixteenths, is exact; a coverage of 0.5
+    // (127.5 / 255) must come out as 128, on every SIMD target. Stems (vertical sides) and
+    // diagonals both; the float lanes need the rounding bias in coverage.cpp for the triangles.
+    Rasterizer r;
+    std::mt19937 rng(41);
+    auto half = [&](int n) { return std::uniform_int_distribution<int>(0, n)(rng) * 0.5; };
+    auto quarter = [&](int n) { return std::uniform_int_distribution<int>(0, n)(rng) * 0.25; };
+    std::vector<Contour> shapes;
+    for (int i = 0; i < 60; ++i) {
+        const double x0 = quarter(40), y0 = quarter(40);
+        shapes.push_back(rect(x0, y0, x0 + 0.25 + quarter(80), y0 + 0.25 + quarter(60)));
+    }
+    for (int i = 0; i < 60; ++i) {
+        const double x = 20 + half(20), y = half(20), a = 0.5 + half(30);
+        const double s = i % 2 ? 1 : -1;  // right or left of the vertical side
+        shapes.push_back(i % 4 < 2 ? Contour{{x, y}, {x + s * a, y + a}, {x, y + a}}
+                                   : Contour{{x, y}, {x + s * a, y}, {x, y + a}});
+    }
+    // Right triangles with integer legs a, b and corners on half pixels: every pixel's area is a
+    // multiple of 1 / (32 a b), and their diagonals give half-way values that are not dyadic.
+    std::vector<double> grain(shapes.size(), 16.0);
+    for (int i = 0; i < 200; ++i) {
+        const int a = std::uniform_int_distribution<int>(1, 12)(rng), b = std::uniform_int_distribution<int>(1, 12)(rng);
+        const double x = 12 + half(30), y = half(40);
+        shapes.push_back(Contour{{x, y}, {x + a, y}, {x, y + b}});
+        grain.push_back(32.0 * a * b);
+    }
+    FillOptions simple;
+    simple.topology = Topology::Simple;
+    const IRect window{0, 0, 64, 64};
+    int wrong = 0, ties = 0;
+    const std::vector<std::int64_t> targets = simd::available_targets();
+    REQUIRE(!targets.empty());
+    for (std::int64_t t : targets) {
+        simd::restrict_targets(t);
+        for (std::size_t k = 0; k < shapes.size(); ++k) {
+            const Contour& c = shapes[k];
+            const double g = k < grain.size() ? grain[k] : 16.0;
+            const ref::CoverageGrid exact = ref::clip_area_simple(c, window);
+            const Mask m = r.fill_mask(ref::to_path({c}), Affine::identity(), simple, window);
+            for (int y = 0; y < 64; ++y)
+                for (int x = 0; x < 64; ++x) {
+                    // Snapping to the shape's grain removes the reference's own rounding.
+                    const double snapped = std::round(exact.at(x, y) * g) / g;
+                    REQUIRE(std::abs(snapped - exact.at(x, y)) < 1e-9);
+                    const double a = snapped * 255.0;
+                    const int want = static_cast<int>(std::floor(a + 0.5));
+                    ties += a - std::floor(a) == 0.5;
+                    if (m.at(x, y) != want && ++wrong <= 5) {
+                        INFO(simd::target_name(t) << ": " << describe({c}, Affine::identity(), window) << " at " << x
+                                                << "," << y << ": " << int(m.at(x, y)) << ", exact " << a << "/255");
+                        CHECK(m.at(x, y) == want);
+                    }
+                }
+        }
+    }
+    simd::restrict_targets(0);
+    CHECK(wrong == 0);
+    CHECK(ties > 100);  // the half-way values this test is about do occur
+}

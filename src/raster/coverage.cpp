@@ -31,12 +31,13 @@ HWY_INLINE V ApplyRule(D d, V v, FillRule rule) {
     return hn::Min(a, hn::Sub(two, a));                                  // distance to an even integer
 }
 
-// Coverage in [0, 1] (double or float lanes) to 8-bit, rounded to nearest.
+// Coverage in [0, 1] (double or float lanes) to 8-bit, rounded to nearest, half-way up.
 template <class D, class V>
 HWY_INLINE void StoreCoverage(D d, V a, std::uint8_t* HWY_RESTRICT out) {
     const hn::Rebind<std::int32_t, D> di;
     const hn::Rebind<std::uint8_t, D> du8;
-    const auto scaled = hn::MulAdd(a, hn::Set(d, 255.0), hn::Set(d, 0.5));
+    const double bias = sizeof(hn::TFromD<D>) == 8 ? kRoundUp : kRoundUpFloat;  // see kRoundUp
+    const auto scaled = hn::MulAdd(a, hn::Set(d, 255.0), hn::Set(d, bias));
     if constexpr (sizeof(hn::TFromD<D>) == 8) hn::StoreU(hn::DemoteTo(du8, hn::DemoteTo(di, scaled)), du8, out);
     else hn::StoreU(hn::DemoteTo(du8, hn::ConvertTo(di, scaled)), du8, out);
 }

@@ -5,9 +5,11 @@
 // decides). Accumulation is the cover/area scheme of FreeType's gray rasterizer and font-rs: for a
 // piece of an edge inside one row with signed height d, acc[k] gets d times the part of cell k to
 // the piece's right, acc[k + 1] the rest; a prefix sum along the row gives the integral of the
-// winding number over each pixel. The buffer is double: windings of hundreds stay exact. Without the overlap check, shapes at most
+// winding number over each pixel. The buffer is double: windings of hundreds stay exact. Without
+// the overlap check (the shape was proven simple, or exactness is off), shapes at most
 // kRowVectorMax SIMD vectors wide use row vectors instead (RowPiece in raster_internal.hpp): the
-// walk lists each edge's pieces per row, and finish() adds every piece's area to its whole row.
+// walk lists each edge's pieces per row, and finish() adds every piece's area to its whole row,
+// in float (the precision this leaves is stated in casteljau/raster.hpp).
 //
 // Overlap check (only for shapes not proven simple before rasterizing: see topology.cpp). Plain
 // accumulation is exact in a cell whose winding numbers lie in one unit interval. Edges arrive in contour order, so the walk knows, for every cell it enters, that the
@@ -96,7 +98,7 @@ bool ends_alternate(double ta0, double ta1, double tb0, double tb1) {
 
 }  // namespace
 
-void Engine::begin(int w, int h, bool track, bool exact) {
+void Engine::begin(int w, int h, bool track) {
     w_ = w;
     h_ = h;
     stride_ = static_cast<std::size_t>(w) + 2;
@@ -114,7 +116,7 @@ void Engine::begin(int w, int h, bool track, bool exact) {
     }
     dirty_ = true;
     const int lanes = row_vector_lanes();
-    vec_ = !track && !exact && w <= kRowVectorMax * lanes;
+    vec_ = !track && w <= kRowVectorMax * lanes;
     if (vec_) {
         vstride_ = std::max(1, (w + lanes - 1) / lanes) * lanes;
         const std::size_t n = static_cast<std::size_t>(vstride_) * static_cast<std::size_t>(h);

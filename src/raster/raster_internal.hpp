@@ -76,8 +76,16 @@ inline double orient(double ax, double ay, double bx, double by, double cx, doub
 // Do the closed segments ab and cd share a point? (exact_cell.cpp)
 bool segments_meet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy);
 
+// Coverage c in [0, 1] becomes the 8-bit level c x 255 + kRoundUp, truncated: rounded to nearest,
+// and a coverage half-way between two levels rounds up. The bias above 0.5 is for half-way values
+// computed a little below themselves: a rational one (a diagonal's area) in double lands within
+// about 1e-12 of a level of it, and one in float (the row vectors) within about 1e-4. A value that
+// far below half-way rounds up too, one level from its correctly rounded value.
+inline constexpr double kRoundUp = 0.5 + 1.0 / (1 << 20);
+inline constexpr double kRoundUpFloat = 0.5 + 1.0 / 4096;
+
 // 8-bit coverage of an exact area in [0, 1], rounded to nearest.
-inline std::uint8_t area_to_u8(double c) { return static_cast<std::uint8_t>(c * 255.0 + 0.5); }
+inline std::uint8_t area_to_u8(double c) { return static_cast<std::uint8_t>(c * 255.0 + kRoundUp); }
 
 // exact_cell_coverage as 8-bit coverage; sorts `ids` and drops repeats first.
 std::uint8_t exact_cell_u8(const Edge* edges, std::vector<std::uint32_t>& ids, double cx, double ry, double integral,
@@ -93,7 +101,7 @@ inline std::uint8_t coverage_u8(double a, FillRule rule) {
         v = v - 2.0 * static_cast<double>(static_cast<long long>(v * 0.5));
         v = v > 1.0 ? 2.0 - v : v;
     }
-    return static_cast<std::uint8_t>(v * 255.0 + 0.5);
+    return static_cast<std::uint8_t>(v * 255.0 + kRoundUp);
 }
 
 // The rows of the engine's dense buffer. Per row, bit b of its `words` 64-bit words of `blocks` says cells
@@ -116,7 +124,8 @@ struct ScanRows {
 };
 void scan_rows(const ScanRows& rows, SpanSink& sink);
 
-// Row-vector accumulation (the engine's accumulation for narrow shapes when exactness is not asked for). A piece of an edge inside pixel row
+// Row-vector accumulation (the engine's accumulation for narrow shapes without the overlap check:
+// proven simple, or exactness off). A piece of an edge inside pixel row
 // r, spanning [xl, xr] (xr > xl) with signed height dy, adds to pixel c of the row the integral
 // over its height of clamp(c + 1 - x, 0, 1): its part inside [c, c + 1] contributes its height
 // times the distance of that part's middle to the pixel's right side, its part left of the pixel
@@ -128,13 +137,16 @@ struct RowPiece {
     float xl, xr, k;
     std::int32_t r;
 };
-// The piece of row r spanning [xl, xr] with signed height dy. A (nearly) vertical piece is widened
-// to 1e-4 px around its middle: the area it adds changes by less than 1e-4 of a pixel.
+// A vertical piece at x (xl == xr, k = dy) adds dy times clamp(c + 1 - x, 0, 1) to pixel c, the
+// limit of the formula above.
+// The piece of row r spanning [xl, xr] with signed height dy. One narrower than 1e-4 px is taken as
+// vertical at its middle: the area it adds to a pixel changes by at most |dy| x 1e-4 / 8, and an
+// exactly vertical one (a stem) keeps its exact area, so that coverage lying exactly half-way
+// between two 8-bit levels still rounds as the double accumulation rounds it.
 inline RowPiece make_row_piece(int r, float xl, float xr, float dy) {
     if (xr - xl < 1e-4f) {
-        const float m = 0.5f * (xl + xr);
-        xl = m - 5e-5f;
-        xr = m + 5e-5f;
+        const float m = xr == xl ? xl : 0.5f * (xl + xr);
+        return {m, m, dy, r};
     }
     return {xl, xr, dy / (xr - xl), r};
 }

@@ -101,7 +101,7 @@ struct Rasterizer::Impl {
     std::vector<std::vector<std::uint32_t>> band; // ... and the edges of each band, in contour order
 
     // Fills the box of bw x bh cells at (ox, oy) band by band from `edges`.
-    void run_bands(const FillOptions& opts, bool exact, int ox, int oy, int bw, int bh, SpanSink& sink,
+    void run_bands(const FillOptions& opts, int ox, int oy, int bw, int bh, SpanSink& sink,
                    RasterStats& stats);
 };
 
@@ -148,7 +148,7 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opti
     if ((fx1 - fx0) * (fy1 - fy0) <= static_cast<double>(kMaxStripCells)) {
         // The box fits one dense buffer: edges go into the engine as the flattener makes them.
         raster::Engine& d = impl_->engine;
-        d.begin(bw, bh, opts.exact_overlaps, options.exact_overlaps);
+        d.begin(bw, bh, opts.exact_overlaps);
         raster::build_edges(path, local, opts.tolerance, inside, bw, bh, d);
         d.finish(opts.rule, ox, oy, sink, stats_);
         return;
@@ -158,7 +158,7 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opti
     impl_->contour.clear();
     EdgeList list{impl_->edges, impl_->contour};
     raster::build_edges(path, local, opts.tolerance, inside, bw, bh, list);
-    impl_->run_bands(opts, options.exact_overlaps, ox, oy, bw, bh, sink, stats_);
+    impl_->run_bands(opts, ox, oy, bw, bh, sink, stats_);
 }
 
 void Rasterizer::fill(const Polyline& poly, const FillOptions& opts, const IRect& clip, SpanSink& sink) {
@@ -175,7 +175,7 @@ void Rasterizer::fill(const Polyline& poly, const FillOptions& opts, const IRect
     fill(p, Affine{}, opts, clip, sink);
 }
 
-void Rasterizer::Impl::run_bands(const FillOptions& opts, bool exact, int ox, int oy, int bw, int bh, SpanSink& sink,
+void Rasterizer::Impl::run_bands(const FillOptions& opts, int ox, int oy, int bw, int bh, SpanSink& sink,
                                   RasterStats& stats) {
     stats.segments = edges.size();
     if (edges.empty()) return;
@@ -196,7 +196,7 @@ void Rasterizer::Impl::run_bands(const FillOptions& opts, bool exact, int ox, in
         if (band[k].empty()) continue;
         const int y0 = static_cast<int>(k) * rows;
         const int h = std::min(rows, bh - y0);
-        engine.begin(bw, h, opts.exact_overlaps, exact);
+        engine.begin(bw, h, opts.exact_overlaps);
         std::uint32_t c = contour[band[k].front()];
         for (std::uint32_t i : band[k]) {
             if (contour[i] != c) {

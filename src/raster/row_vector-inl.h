@@ -28,6 +28,14 @@ HWY_INLINE void AddRowPiece(D d, const RowPiece& p, float* HWY_RESTRICT row, int
     const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
     const auto iota = hn::Iota(d, 0.0f);
     const auto xl = hn::Set(d, p.xl), xr = hn::Set(d, p.xr), k = hn::Set(d, p.k);
+    if (p.xl == p.xr) {  // vertical: k * clamp(c + 1 - x, 0, 1)
+        for (int i = 0; i < stride; i += N) {
+            const auto cr = hn::Add(iota, hn::Set(d, static_cast<float>(i + 1)));
+            const auto part = hn::Min(hn::Max(hn::Sub(cr, xl), zero), one);
+            hn::StoreU(hn::MulAdd(k, part, hn::LoadU(d, row + i)), d, row + i);
+        }
+        return;
+    }
     for (int i = 0; i < stride; i += N) {
         const auto cl = hn::Add(iota, hn::Set(d, static_cast<float>(i)));
         const auto cr = hn::Add(cl, one);
