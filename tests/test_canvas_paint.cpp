@@ -243,6 +243,17 @@ TEST_CASE("Pixmap: a new pixmap is transparent, fill_rows replaces rows in range
     CHECK(copy.pixel(0, 2) == PremulPixel{128, 0, 0, 128});
     p.fill(Color::white());
     CHECK(p.pixel(1, 3) == PremulPixel{255, 255, 255, 255});
+    // Rows with padding (a borrowed pixmap): every pixel of the rows in range, none of the padding,
+    // for a colour of one byte value (written by memset) and for any other (eight pixels at a time).
+    std::vector<std::uint8_t> mem(60 * 5, 7);
+    Pixmap b = Pixmap::borrow(mem.data(), 13, 5, 60);
+    b.fill_rows(0, 5, Color::rgba(0, 0, 0, 0));
+    b.fill_rows(1, 4, Color::rgba(10, 20, 30, 255));
+    for (int y = 0; y < 5; ++y) {
+        for (int x = 0; x < 13; ++x)
+            CHECK(b.pixel(x, y) == (y >= 1 && y < 4 ? PremulPixel{10, 20, 30, 255} : PremulPixel{0, 0, 0, 0}));
+        for (int k = 52; k < 60; ++k) CHECK(mem[static_cast<std::size_t>(y) * 60 + k] == 7);
+    }
 }
 
 TEST_CASE("Pixmap: large pixmaps (mapped on huge pages) read as zero, copy, move and free like small ones", "[pixmap]") {

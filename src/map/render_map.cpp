@@ -329,8 +329,12 @@ int map_threads(int requested) {
     return requested > 0 ? std::min(requested, pool) : pool;
 }
 
-void render_map(const MapData& data, const MapProjection& proj, const MapFrame& frame, const MapStyle& style,
-                const MapOptions& opts, Pixmap& target) {
+namespace {
+
+// render_map onto `target`; `cleared`: the target is known to be transparent already (a new
+// Pixmap), so a transparent background need not be written.
+void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& frame, const MapStyle& style,
+              const MapOptions& opts, Pixmap& target, bool cleared) {
     if (target.width() != frame.width || target.height() != frame.height)
         throw Error(ErrorKind::InvalidArgument, "render_map: the pixmap does not have the frame's size");
     const int threads = map_threads(opts.threads);
@@ -357,10 +361,12 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
         canvases.push_back(std::make_unique<Canvas>(target));
         canvases.back()->fill_options() = fo;
     }
-    // The background, band by band on the workers: on a new pixmap this is also where its pages
-    // are first touched (32 MB at 4096 x 2048, a third of a one-thread fill of the world).
-    parallel::for_each_index(threads, bands.size(),
-                             [&](int, std::size_t b) { target.fill_rows(bands[b].y0, bands[b].y1, style.background); });
+    // The background, band by band on the workers. A new pixmap is transparent zero pages: a
+    // transparent background leaves them to be mapped where the fills composite (on the workers
+    // too), and never where nothing is drawn.
+    if (!(cleared && style.background.a == 0))
+        parallel::for_each_index(threads, bands.size(),
+                                 [&](int, std::size_t b) { target.fill_rows(bands[b].y0, bands[b].y1, style.background); });
     std::optional<AreaCompositor> area;                                     // the whole image
     std::vector<std::optional<AreaCompositor>> band_areas(static_cast<std::size_t>(threads));  // one band per worker
 
@@ -522,10 +528,17 @@ void render_map(const MapData& data, const MapProjection& proj, const MapFrame& 
     }
 }
 
+}  // namespace
+
+void render_map(const MapData& data, const MapProjection& proj, const MapFrame& frame, const MapStyle& style,
+                const MapOptions& opts, Pixmap& target) {
+    draw_map(data, proj, frame, style, opts, target, false);
+}
+
 Pixmap render_map(const MapData& data, const MapProjection& proj, const MapStyle& style, const MapOptions& opts) {
     const MapFrame fr = fit_map(data, proj, opts);
     Pixmap pm(fr.width, fr.height);
-    render_map(data, proj, fr, style, opts, pm);
+    draw_map(data, proj, fr, style, opts, pm, true);
     return pm;
 }
 

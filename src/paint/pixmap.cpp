@@ -134,11 +134,25 @@ void Pixmap::fill(Color c) { fill_rows(0, height_, c); }
 
 void Pixmap::fill_rows(int y0, int y1, Color c) {
     const PremulPixel p = premultiply(c);
-    const std::uint8_t px[4] = {p.r, p.g, p.b, p.a};
-    for (int y = std::max(y0, 0); y < std::min(y1, height_); ++y) {
-        std::uint8_t* r = row(y);
-        for (int x = 0; x < width_; ++x) std::memcpy(r + 4 * static_cast<std::size_t>(x), px, 4);
+    const std::size_t bytes = 4 * static_cast<std::size_t>(width_);
+    y0 = std::max(y0, 0);
+    y1 = std::min(y1, height_);
+    if (y0 >= y1) return;
+    if (p.r == p.g && p.g == p.b && p.b == p.a) {  // transparent, opaque black or white: one byte value
+        if (stride_ == bytes) std::memset(row(y0), p.r, bytes * static_cast<std::size_t>(y1 - y0));
+        else
+            for (int y = y0; y < y1; ++y) std::memset(row(y), p.r, bytes);
+        return;
     }
+    // Any other colour: the first row pixel by pixel (eight at a time), then copies of it.
+    const std::uint8_t px[4] = {p.r, p.g, p.b, p.a};
+    std::uint8_t eight[32];
+    for (int k = 0; k < 8; ++k) std::memcpy(eight + 4 * k, px, 4);
+    std::uint8_t* first = row(y0);
+    std::size_t x = 0;
+    for (; x + 32 <= bytes; x += 32) std::memcpy(first + x, eight, 32);
+    for (; x < bytes; x += 4) std::memcpy(first + x, px, 4);
+    for (int y = y0 + 1; y < y1; ++y) std::memcpy(row(y), first, bytes);
 }
 
 }  // namespace casteljau
