@@ -509,3 +509,97 @@ TEST_CASE("render_map onto a drawn pixmap replaces every pixel with the backgrou
         CHECK(fresh.pixel(25, 25) == PremulPixel{0, 0, 0, 255});
     }
 }
+
+TEST_CASE("Seamless: a compositor writing into a transparent target gives the pixels of a layer composited onto it",
+          "[map][seamless]") {
+    // Fills overlapping across two bands, translucent and opaque, sharing an edge at a fractional x.
+    Rasterizer raster;
+    Path a, b, c;
+    a.add_rect(Rect{2.5, 3.25, 30.5, 20.75});
+    b.add_rect(Rect{30.5, 1.5, 60.25, 29.5});
+    c.add_circle(Point{31, 15}, 9.3);
+    const IRect top{0, 0, 64, 16}, bottom{0, 16, 64, 32};
+    auto fills = [&](AreaCompositor& ac) {
+        ac.add(raster, c, FillOptions{}, Color::rgba(0, 0, 255, 128), 0.7);
+        ac.add(raster, a, FillOptions{}, Color::rgba(255, 0, 0));
+        ac.add(raster, b, FillOptions{}, Color::rgba(0, 160, 0, 200));
+    };
+    Pixmap want(64, 32);
+    AreaCompositor layer(top);
+    for (const IRect& band : {top, bottom}) {
+        layer.reset(band);
+        fills(layer);
+        layer.composite_onto(want);
+    }
+    Pixmap got(64, 32);
+    AreaCompositor into(got, top);
+    fills(into);
+    into.composite_onto(got);  // nothing: the layer is got's own pixels
+    into.reset_into(got, bottom);  // the top band's pixels stay
+    fills(into);
+    std::size_t differ = 0, drawn = 0;
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 64; ++x) {
+            differ += !(got.pixel(x, y) == want.pixel(x, y));
+            drawn += want.pixel(x, y).a != 0;
+        }
+    CHECK(differ == 0);
+    CHECK(drawn > 1000);
+    CHECK(into.taken(40, 20) == 255);
+    // reset() after reset_into() leaves the target alone; clear() after reset_into() forgets the
+    // fills' pixels too.
+    into.reset(bottom);
+    CHECK(got.pixel(40, 20) == want.pixel(40, 20));
+    CHECK(into.taken(40, 20) == 0);
+    into.reset_into(got, bottom);
+    fills(into);
+    into.clear();
+    CHECK(got.pixel(40, 20) == PremulPixel{0, 0, 0, 0});
+    CHECK(got.pixel(40, 5) == want.pixel(40, 5));
+    CHECK_THROWS_AS(into.reset_into(got, IRect{0, 16, 65, 32}), Error);
+}
+
+TEST_CASE("render_map into a new pixmap equals render_map onto a drawn one, layers and strokes included",
+          "[map][seamless]") {
+    // A new pixmap with a transparent background takes the first seamless layer's fills directly
+    // (no layer of the compositor's own); onto a drawn pixmap the background is written first and
+    // the layers are composited. Both must give the same pixels: the 110m world in two layers
+    // with strokes, and a world of more than 2^20 positions (one compositor for the whole image).
+    // The second layer leaves out the added square (no "name"): its outline stays small.
+    MapData big = test::load_world();
+    Feature square;
+    Geometry g;
+    g.kind = GeometryKind::Polygons;
+    // A square whose first corner is repeated: 2^20 positions, cheap to draw (repeats add no edge).
+    g.points.assign((1 << 20) + 10, Point{-40.3, -30.7});
+    for (Point p : {Point{80.2, -30.7}, Point{80.2, 50.4}, Point{-40.3, 50.4}, Point{-40.3, -30.7}}) g.points.push_back(p);
+    g.ring_ends.push_back(static_cast<std::uint32_t>(g.points.size()));
+    g.polygon_ends.push_back(1);
+    square.geometries.push_back(std::move(g));
+    big.features.push_back(std::move(square));
+    MapStyle style;
+    style.layers[0].fill_by = "name";
+    style.layers[0].opacity = 0.8;
+    MapLayerStyle second;
+    second.filter.op = MapFilter::Op::Has;
+    second.filter.property = "name";
+    second.fill = Color::rgba(0, 0, 0, 90);
+    second.stroke = Color::rgba(200, 30, 30);
+    second.stroke_width = 0.7;
+    style.layers.push_back(second);
+    for (int which = 0; which < 2; ++which) {
+        const MapData data = which == 0 ? test::load_world() : big;
+        MapOptions o = world_options(720, 360, true);
+        o.threads = 1;  // one compositor reused band after band
+        const Pixmap fresh = render_map(data, MapProjection{}, style, o);
+        Pixmap drawn(fresh.width(), fresh.height());
+        drawn.fill(Color::rgba(255, 0, 255));
+        render_map(data, MapProjection{}, fit_map(data, MapProjection{}, o), style, o, drawn);
+        std::size_t differ = 0;
+        for (int y = 0; y < fresh.height(); ++y)
+            for (int x = 0; x < fresh.width(); ++x) differ += !(drawn.pixel(x, y) == fresh.pixel(x, y));
+        INFO((which == 0 ? "110m world" : "110m world and a square of 2^20 positions"));
+        CHECK(differ == 0);
+        CHECK(fresh.pixel(400, 160).a != 0);  // Chad
+    }
+}

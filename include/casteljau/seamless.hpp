@@ -27,6 +27,10 @@
 // Each row remembers the columns fills have touched, so reset(), clear() and composite_onto() pass
 // over those only (a world map's oceans cost nothing there).
 //
+// Onto a transparent target (a new Pixmap) the layer composited source-over is the layer itself,
+// so reset_into() lets the compositor use the target's own pixels as its layer: no layer memory,
+// and no pass at the end (render_map does this for its first fills on a transparent background).
+//
 // Coordinates: pixel space of the target (x right, y down), also for a compositor covering a
 // region only. Thread-safety: one thread at a time, except add() with clip rectangles that share
 // no row; compositors of disjoint regions may composite onto one target at once.
@@ -48,12 +52,20 @@ public:
     AreaCompositor(int width, int height);
     // Covers `region` of the target only (pixel rectangle, non-empty).
     explicit AreaCompositor(const IRect& region);
+    // Covers `region` of `target` with the target's pixels as the layer (see reset_into).
+    AreaCompositor(Pixmap& target, const IRect& region);
 
     int width() const { return region_.x1 - region_.x0; }
     int height() const { return region_.y1 - region_.y0; }
     const IRect& region() const { return region_; }
     // Starts again, empty, over `region` (keeps the memory when the new region is not larger).
     void reset(const IRect& region);
+    // Starts again over `region` of `target` (which must contain it), with the target's pixels
+    // there as the layer: they must be transparent (all zero), as in a new Pixmap. add() then
+    // writes the final pixels into `target`, and composite_onto(target) does nothing. Fills
+    // written into the target before stay there (reset_into() band after band fills one image).
+    // Throws Error(InvalidArgument) when the region is empty or not inside the target.
+    void reset_into(Pixmap& target, const IRect& region);
 
     // Adds the fill of `path` (pixel space) in `color` with `opacity` (multiplies the alpha).
     // Fills added earlier take precedence where they overlap.
@@ -66,15 +78,23 @@ public:
         return cov_[static_cast<std::size_t>(y - region_.y0) * static_cast<std::size_t>(width()) +
                     static_cast<std::size_t>(x - region_.x0)];
     }
-    // Source-over of the layer onto the region of `dst` (which must contain the region).
+    // Source-over of the layer onto the region of `dst` (which must contain the region); nothing
+    // when the layer is `dst` itself (reset_into).
     void composite_onto(Pixmap& dst) const;
+    // Forgets every fill: the coverage and the layer (after reset_into, the fills' pixels in the
+    // target go back to transparent).
     void clear();
 
 private:
     IRect region_;
-    std::vector<std::uint8_t> layer_;  // premultiplied RGBA8
+    std::vector<std::uint8_t> layer_;  // premultiplied RGBA8, when the layer is the compositor's own
     std::vector<std::uint8_t> cov_;
     std::vector<int> lo_, hi_;  // per row: the columns [lo, hi) fills have touched (lo >= hi: none)
+    Pixmap* into_ = nullptr;  // the target whose pixels are the layer (reset_into), or null
+    // The layer's pixel at the region's origin, and the bytes from one layer row to the next.
+    std::uint8_t* layer_origin() const;
+    std::size_t layer_stride() const;
+    void forget(bool layer_too);  // clears the touched coverage (and layer) ranges
 };
 
 }  // namespace casteljau

@@ -14,29 +14,65 @@ AreaCompositor::AreaCompositor(int width, int height) : AreaCompositor(IRect{0, 
 
 AreaCompositor::AreaCompositor(const IRect& region) { reset(region); }
 
+AreaCompositor::AreaCompositor(Pixmap& target, const IRect& region) { reset_into(target, region); }
+
 void AreaCompositor::reset(const IRect& region) {
     check_canvas_size(region.x1 - region.x0, region.y1 - region.y0);
     if (region.empty()) throw Error(ErrorKind::InvalidArgument, "compositor size must be positive");
     const bool same_size = !lo_.empty() && region.x1 - region.x0 == width() && region.y1 - region.y0 == height();
-    if (same_size) {
+    const std::size_t n = static_cast<std::size_t>(region.x1 - region.x0) * static_cast<std::size_t>(region.y1 - region.y0);
+    if (same_size && !into_) {
         clear();  // only what the last fills touched
-        region_ = region;
-        return;
+    } else {
+        if (same_size) forget(false);  // the last fills' pixels stay in the target they were written to
+        else {
+            cov_.assign(n, 0);
+            lo_.assign(static_cast<std::size_t>(region.y1 - region.y0), region.x1 - region.x0);
+            hi_.assign(static_cast<std::size_t>(region.y1 - region.y0), 0);
+        }
+        layer_.assign(n * 4, 0);
     }
     region_ = region;
-    const std::size_t n = static_cast<std::size_t>(width()) * static_cast<std::size_t>(height());
-    layer_.assign(n * 4, 0);
-    cov_.assign(n, 0);
-    lo_.assign(static_cast<std::size_t>(height()), width());
-    hi_.assign(static_cast<std::size_t>(height()), 0);
+    into_ = nullptr;
 }
 
-void AreaCompositor::clear() {
+void AreaCompositor::reset_into(Pixmap& target, const IRect& region) {
+    if (region.empty()) throw Error(ErrorKind::InvalidArgument, "compositor size must be positive");
+    if (region.x0 < 0 || region.y0 < 0 || region.x1 > target.width() || region.y1 > target.height())
+        throw Error(ErrorKind::InvalidArgument, "AreaCompositor::reset_into: the target does not contain the region");
+    const bool same_size = !lo_.empty() && region.x1 - region.x0 == width() && region.y1 - region.y0 == height();
+    if (same_size) {
+        forget(false);  // the last fills' pixels stay where they were written
+    } else {
+        const std::size_t n =
+            static_cast<std::size_t>(region.x1 - region.x0) * static_cast<std::size_t>(region.y1 - region.y0);
+        cov_.assign(n, 0);
+        lo_.assign(static_cast<std::size_t>(region.y1 - region.y0), region.x1 - region.x0);
+        hi_.assign(static_cast<std::size_t>(region.y1 - region.y0), 0);
+    }
+    layer_.clear();
+    layer_.shrink_to_fit();
+    region_ = region;
+    into_ = &target;
+}
+
+std::uint8_t* AreaCompositor::layer_origin() const {
+    if (into_) return into_->row(region_.y0) + static_cast<std::size_t>(region_.x0) * 4;
+    return const_cast<std::uint8_t*>(layer_.data());
+}
+
+std::size_t AreaCompositor::layer_stride() const {
+    return into_ ? into_->stride() : static_cast<std::size_t>(width()) * 4;
+}
+
+void AreaCompositor::clear() { forget(true); }
+
+void AreaCompositor::forget(bool layer_too) {
     const std::size_t w = static_cast<std::size_t>(width());
     for (std::size_t r = 0; r < lo_.size(); ++r) {
         if (lo_[r] >= hi_[r]) continue;
         const std::size_t lo = static_cast<std::size_t>(lo_[r]), len = static_cast<std::size_t>(hi_[r] - lo_[r]);
-        std::memset(layer_.data() + (r * w + lo) * 4, 0, len * 4);
+        if (layer_too) std::memset(layer_origin() + r * layer_stride() + lo * 4, 0, len * 4);
         std::memset(cov_.data() + r * w + lo, 0, len);
         lo_[r] = width();
         hi_[r] = 0;
@@ -48,7 +84,8 @@ namespace {
 using pixel::mul_div255;
 
 struct AreaSink final : SpanSink {
-    std::uint8_t* layer;
+    std::uint8_t* layer;  // the layer's pixel at the region's origin
+    std::size_t layer_stride;
     std::uint8_t* cov;
     int* lo;
     int* hi;
@@ -62,7 +99,7 @@ struct AreaSink final : SpanSink {
         int& h = hi[y - y0];
         l = std::min(l, x - x0);
         h = std::max(h, x - x0 + length);
-        std::uint8_t* L = layer + at * 4;
+        std::uint8_t* L = layer + static_cast<std::size_t>(y - y0) * layer_stride + static_cast<std::size_t>(x - x0) * 4;
         std::uint8_t* C = cov + at;
         std::uint8_t colour8[32];
         for (int k = 0; k < 8; ++k) std::memcpy(colour8 + 4 * k, &c, 4);
@@ -124,7 +161,8 @@ void AreaCompositor::add(Rasterizer& raster, const Path& path, const FillOptions
                   std::min(clip.y1, region_.y1)};
     if (c.empty()) return;
     AreaSink sink;
-    sink.layer = layer_.data();
+    sink.layer = layer_origin();
+    sink.layer_stride = layer_stride();
     sink.cov = cov_.data();
     sink.lo = lo_.data();
     sink.hi = hi_.data();
@@ -136,15 +174,15 @@ void AreaCompositor::add(Rasterizer& raster, const Path& path, const FillOptions
 }
 
 void AreaCompositor::composite_onto(Pixmap& dst) const {
+    if (into_ == &dst) return;  // the layer is dst's own pixels
     if (region_.x0 < 0 || region_.y0 < 0 || region_.x1 > dst.width() || region_.y1 > dst.height())
         throw Error(ErrorKind::InvalidArgument, "AreaCompositor::composite_onto: the target does not contain the region");
-    const std::size_t row_bytes = static_cast<std::size_t>(width()) * 4;
     for (int y = region_.y0; y < region_.y1; ++y) {
         const std::size_t r = static_cast<std::size_t>(y - region_.y0);
         if (lo_[r] >= hi_[r]) continue;  // no fill touched the row: the layer is transparent there
         const std::size_t lo = static_cast<std::size_t>(lo_[r]);
         composite_span_premul(dst.row(y) + (static_cast<std::size_t>(region_.x0) + lo) * 4, hi_[r] - lo_[r], nullptr,
-                              layer_.data() + r * row_bytes + lo * 4);
+                              layer_origin() + r * layer_stride() + lo * 4);
     }
 }
 

@@ -367,6 +367,9 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
     if (!(cleared && style.background.a == 0))
         parallel::for_each_index(threads, bands.size(),
                                  [&](int, std::size_t b) { target.fill_rows(bands[b].y0, bands[b].y1, style.background); });
+    // While nothing is drawn on a transparent new pixmap, a seamless layer's compositors write
+    // into the pixmap itself (AreaCompositor::reset_into): the same pixels, without a layer.
+    bool target_clear = cleared && style.background.a == 0;
     std::optional<AreaCompositor> area;                                     // the whole image
     std::vector<std::optional<AreaCompositor>> band_areas(static_cast<std::size_t>(threads));  // one band per worker
 
@@ -426,9 +429,12 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
             // the image). Several chunks add up in one compositor of the whole image instead,
             // composited once at the end.
             const bool banded = positions <= kChunkPositions;
+            const bool direct = target_clear;
             if (!banded) {
-                if (!area) area.emplace(frame.width, frame.height);
-                else area->clear();
+                const IRect whole{0, 0, frame.width, frame.height};
+                if (!area) area.emplace(whole);
+                if (direct) area->reset_into(target, whole);
+                else area->reset(whole);
             }
             bool drew = false;
             chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
@@ -439,8 +445,10 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
                         if (!d || !overlaps(d->box, bands[b])) continue;
                         if (!into) {
                             std::optional<AreaCompositor>& band = band_areas[static_cast<std::size_t>(w)];
-                            if (band) band->reset(bands[b]);
-                            else band.emplace(bands[b]);
+                            if (!band && direct) band.emplace(target, bands[b]);
+                            else if (!band) band.emplace(bands[b]);
+                            else if (direct) band->reset_into(target, bands[b]);
+                            else band->reset(bands[b]);
                             into = &*band;
                         }
                         into->add(raster, d->path, fo, d->color, layer.opacity, bands[b]);
@@ -450,6 +458,7 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
                 for (const auto& d : chunk) drew = drew || d.has_value();
             });
             if (!banded && drew) area->composite_onto(target);
+            target_clear = target_clear && !drew;
             std::reverse(order.begin(), order.end());
         } else if (layer.fill) {
             chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
@@ -466,6 +475,7 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
                     canvas.restore();
                 });
             });
+            target_clear = false;
         }
         // Strokes: the outlines of every feature in one path per colour, filled once with the
         // nonzero rule. Polygon rings go through SharedBorders first, in feature order, so a border
@@ -481,6 +491,7 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
         const double merge_distance = stroke_merge_distance(Affine{}, opts.tolerance);
         auto flush = [&] {
             if (outline.empty()) return;
+            target_clear = false;
             const Rect box = outline.control_bounds();
             Paint paint = Paint::solid(*line_color);
             paint.opacity = layer.opacity;
