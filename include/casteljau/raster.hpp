@@ -19,9 +19,11 @@
 // Precision: shapes with the overlap check, and shapes wider than 8 SIMD vectors (64 px with AVX2),
 // accumulate in double, which rounds the area correctly but for values within about 1e-12 of a
 // level of half-way between two levels. Narrower shapes without it (most glyphs) accumulate in
-// float: the area before rounding is within about 1e-3 of a level of the exact one (float
-// positions), so a pixel may round one level away from the correctly rounded value only where its
-// exact area lies that close to half-way; an exact half-way value rounds up.
+// float: the area before rounding is within about 4e-3 of a level of the exact one (positions
+// rounded to float; pieces narrower than 1e-4 px taken as vertical), so a pixel may round one
+// level away from the correctly rounded value only where its exact area lies that close to
+// half-way. A half-way value rounds up in both (from exactly representable positions; see
+// kRoundUp in src/raster/raster_internal.hpp).
 //
 // Range: geometry is clipped in double precision before it is converted to float cell coordinates,
 // so any finite coordinate up to limits::kMaxCoordinate is accepted; the target rectangle is at

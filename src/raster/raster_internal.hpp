@@ -78,9 +78,10 @@ bool segments_meet(double ax, double ay, double bx, double by, double cx, double
 
 // Coverage c in [0, 1] becomes the 8-bit level c x 255 + kRoundUp, truncated: rounded to nearest,
 // and a coverage half-way between two levels rounds up. The bias above 0.5 is for half-way values
-// computed a little below themselves: a rational one (a diagonal's area) in double lands within
-// about 1e-12 of a level of it, and one in float (the row vectors) within about 1e-4. A value that
-// far below half-way rounds up too, one level from its correctly rounded value.
+// computed a little below themselves from exactly representable positions: a rational one (a
+// diagonal's area) lands within about 1e-12 of a level of it in double, within about 1e-4 in float
+// (the row vectors). A value that far below half-way rounds up too, one level from its correctly
+// rounded value.
 inline constexpr double kRoundUp = 0.5 + 1.0 / (1 << 20);
 inline constexpr double kRoundUpFloat = 0.5 + 1.0 / 4096;
 
