@@ -95,6 +95,11 @@ private:
     std::uint8_t* layer_origin() const;
     std::size_t layer_stride() const;
     void forget(bool layer_too);  // clears the touched coverage (and layer) ranges
+    bool same_size(const IRect& region) const;
+    static std::size_t coverage_cells(const IRect& region);
+    // The coverage planes made ready for `region`: the touched ranges forgotten (with the layer's
+    // when `clear_layer`) if its size is the current one, allocated afresh otherwise.
+    void start(const IRect& region, bool clear_layer);
 };
 
 }  // namespace casteljau

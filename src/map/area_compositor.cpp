@@ -19,20 +19,9 @@ AreaCompositor::AreaCompositor(Pixmap& target, const IRect& region) { reset_into
 void AreaCompositor::reset(const IRect& region) {
     check_canvas_size(region.x1 - region.x0, region.y1 - region.y0);
     if (region.empty()) throw Error(ErrorKind::InvalidArgument, "compositor size must be positive");
-    const bool same_size = !lo_.empty() && region.x1 - region.x0 == width() && region.y1 - region.y0 == height();
-    const std::size_t n = static_cast<std::size_t>(region.x1 - region.x0) * static_cast<std::size_t>(region.y1 - region.y0);
-    if (same_size && !into_) {
-        clear();  // only what the last fills touched
-    } else {
-        if (same_size) forget(false);  // the last fills' pixels stay in the target they were written to
-        else {
-            cov_.assign(n, 0);
-            lo_.assign(static_cast<std::size_t>(region.y1 - region.y0), region.x1 - region.x0);
-            hi_.assign(static_cast<std::size_t>(region.y1 - region.y0), 0);
-        }
-        layer_.assign(n * 4, 0);
-    }
-    region_ = region;
+    const bool keep_layer = !into_ && same_size(region);
+    start(region, keep_layer);  // an own layer of the same size is cleared where fills touched it
+    if (!keep_layer) layer_.assign(coverage_cells(region) * 4, 0);
     into_ = nullptr;
 }
 
@@ -40,20 +29,29 @@ void AreaCompositor::reset_into(Pixmap& target, const IRect& region) {
     if (region.empty()) throw Error(ErrorKind::InvalidArgument, "compositor size must be positive");
     if (region.x0 < 0 || region.y0 < 0 || region.x1 > target.width() || region.y1 > target.height())
         throw Error(ErrorKind::InvalidArgument, "AreaCompositor::reset_into: the target does not contain the region");
-    const bool same_size = !lo_.empty() && region.x1 - region.x0 == width() && region.y1 - region.y0 == height();
-    if (same_size) {
-        forget(false);  // the last fills' pixels stay where they were written
+    start(region, false);  // pixels already written into a target stay there
+    layer_.clear();
+    layer_.shrink_to_fit();
+    into_ = &target;
+}
+
+bool AreaCompositor::same_size(const IRect& region) const {
+    return !lo_.empty() && region.x1 - region.x0 == width() && region.y1 - region.y0 == height();
+}
+
+std::size_t AreaCompositor::coverage_cells(const IRect& region) {
+    return static_cast<std::size_t>(region.x1 - region.x0) * static_cast<std::size_t>(region.y1 - region.y0);
+}
+
+void AreaCompositor::start(const IRect& region, bool clear_layer) {
+    if (same_size(region)) {
+        forget(clear_layer);  // only what the last fills touched
     } else {
-        const std::size_t n =
-            static_cast<std::size_t>(region.x1 - region.x0) * static_cast<std::size_t>(region.y1 - region.y0);
-        cov_.assign(n, 0);
+        cov_.assign(coverage_cells(region), 0);
         lo_.assign(static_cast<std::size_t>(region.y1 - region.y0), region.x1 - region.x0);
         hi_.assign(static_cast<std::size_t>(region.y1 - region.y0), 0);
     }
-    layer_.clear();
-    layer_.shrink_to_fit();
     region_ = region;
-    into_ = &target;
 }
 
 std::uint8_t* AreaCompositor::layer_origin() const {
@@ -69,10 +67,12 @@ void AreaCompositor::clear() { forget(true); }
 
 void AreaCompositor::forget(bool layer_too) {
     const std::size_t w = static_cast<std::size_t>(width());
+    std::uint8_t* const layer = layer_origin();
+    const std::size_t stride = layer_stride();
     for (std::size_t r = 0; r < lo_.size(); ++r) {
         if (lo_[r] >= hi_[r]) continue;
         const std::size_t lo = static_cast<std::size_t>(lo_[r]), len = static_cast<std::size_t>(hi_[r] - lo_[r]);
-        if (layer_too) std::memset(layer_origin() + r * layer_stride() + lo * 4, 0, len * 4);
+        if (layer_too) std::memset(layer + r * stride + lo * 4, 0, len * 4);
         std::memset(cov_.data() + r * w + lo, 0, len);
         lo_[r] = width();
         hi_[r] = 0;

@@ -331,6 +331,15 @@ int map_threads(int requested) {
 
 namespace {
 
+// Starts `ac` over `region`, making it first when needed: writing into `*into` itself when given
+// (AreaCompositor::reset_into), else with a layer of its own.
+void start_compositor(std::optional<AreaCompositor>& ac, const IRect& region, Pixmap* into) {
+    if (!ac && into) ac.emplace(*into, region);
+    else if (!ac) ac.emplace(region);
+    else if (into) ac->reset_into(*into, region);
+    else ac->reset(region);
+}
+
 // render_map onto `target`; `cleared`: the target is known to be transparent already (a new
 // Pixmap), so a transparent background need not be written.
 void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& frame, const MapStyle& style,
@@ -364,12 +373,12 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
     // The background, band by band on the workers. A new pixmap is transparent zero pages: a
     // transparent background leaves them to be mapped where the fills composite (on the workers
     // too), and never where nothing is drawn.
-    if (!(cleared && style.background.a == 0))
+    // While nothing is drawn on it, such a pixmap takes a seamless layer's fills directly
+    // (AreaCompositor::reset_into): the same pixels, without a layer.
+    bool target_clear = cleared && style.background.a == 0;
+    if (!target_clear)
         parallel::for_each_index(threads, bands.size(),
                                  [&](int, std::size_t b) { target.fill_rows(bands[b].y0, bands[b].y1, style.background); });
-    // While nothing is drawn on a transparent new pixmap, a seamless layer's compositors write
-    // into the pixmap itself (AreaCompositor::reset_into): the same pixels, without a layer.
-    bool target_clear = cleared && style.background.a == 0;
     std::optional<AreaCompositor> area;                                     // the whole image
     std::vector<std::optional<AreaCompositor>> band_areas(static_cast<std::size_t>(threads));  // one band per worker
 
@@ -431,10 +440,7 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
             const bool banded = positions <= kChunkPositions;
             const bool direct = target_clear;
             if (!banded) {
-                const IRect whole{0, 0, frame.width, frame.height};
-                if (!area) area.emplace(whole);
-                if (direct) area->reset_into(target, whole);
-                else area->reset(whole);
+                start_compositor(area, IRect{0, 0, frame.width, frame.height}, direct ? &target : nullptr);
             }
             bool drew = false;
             chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
@@ -445,10 +451,7 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
                         if (!d || !overlaps(d->box, bands[b])) continue;
                         if (!into) {
                             std::optional<AreaCompositor>& band = band_areas[static_cast<std::size_t>(w)];
-                            if (!band && direct) band.emplace(target, bands[b]);
-                            else if (!band) band.emplace(bands[b]);
-                            else if (direct) band->reset_into(target, bands[b]);
-                            else band->reset(bands[b]);
+                            start_compositor(band, bands[b], direct ? &target : nullptr);
                             into = &*band;
                         }
                         into->add(raster, d->path, fo, d->color, layer.opacity, bands[b]);

@@ -146,7 +146,7 @@ struct RowPiece {
 // between two 8-bit levels still rounds as the double accumulation rounds it.
 inline RowPiece make_row_piece(int r, float xl, float xr, float dy) {
     if (xr - xl < 1e-4f) {
-        const float m = xr == xl ? xl : 0.5f * (xl + xr);
+        const float m = 0.5f * (xl + xr);  // xl itself when xl == xr
         return {m, m, dy, r};
     }
     return {xl, xr, dy / (xr - xl), r};
