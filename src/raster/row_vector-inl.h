@@ -20,7 +20,8 @@ namespace HWY_NAMESPACE {
 
 // Adds piece p's area to row[0, stride) (stride: whole vectors of d): per pixel c, with
 // u0 = max(xl, c) and u1 = min(xr, c + 1), k * (max(u1 - u0, 0) * (c + 1 - (u0 + u1) / 2) +
-// max(min(xr, c) - xl, 0)).
+// max(min(xr, c) - xl, 0)). That is zero for every pixel with c + 1 <= xl, so the loop starts at
+// the vector holding pixel floor(xl) (xl >= 0: the walk's coordinates are clamped to the box).
 template <class D>
 HWY_INLINE void AddRowPiece(D d, const RowPiece& p, float* HWY_RESTRICT row, int stride) {
     namespace hn = hwy::HWY_NAMESPACE;
@@ -28,15 +29,16 @@ HWY_INLINE void AddRowPiece(D d, const RowPiece& p, float* HWY_RESTRICT row, int
     const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
     const auto iota = hn::Iota(d, 0.0f);
     const auto xl = hn::Set(d, p.xl), xr = hn::Set(d, p.xr), k = hn::Set(d, p.k);
+    const int first = static_cast<int>(p.xl) & -N;  // N is a power of two
     if (p.xl == p.xr) {  // vertical: k * clamp(c + 1 - x, 0, 1)
-        for (int i = 0; i < stride; i += N) {
+        for (int i = first; i < stride; i += N) {
             const auto cr = hn::Add(iota, hn::Set(d, static_cast<float>(i + 1)));
             const auto part = hn::Min(hn::Max(hn::Sub(cr, xl), zero), one);
             hn::StoreU(hn::MulAdd(k, part, hn::LoadU(d, row + i)), d, row + i);
         }
         return;
     }
-    for (int i = 0; i < stride; i += N) {
+    for (int i = first; i < stride; i += N) {
         const auto cl = hn::Add(iota, hn::Set(d, static_cast<float>(i)));
         const auto cr = hn::Add(cl, one);
         const auto u0 = hn::Max(xl, cl), u1 = hn::Min(xr, cr);
