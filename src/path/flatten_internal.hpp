@@ -121,26 +121,33 @@ struct Flattener {
         if (!(0.5625 * std::max(s0, s1) > tol2)) return emit(p3);
         // B(t) = p0 + t (3 (p1 - p0) + t (3 D0 + t (D1 - D0))); L(t) = D0 + t (D1 - D0).
         const Point E = D1 - D0, C1 = (p1 - p0) * 3, C2 = D0 * 3;
-        // Node (k, j) covers [j / 2^k, (j + 1) / 2^k]; it is halved while
-        // |L|^2 at one of its ends exceeds lim = tol^2 / (9/16) * 16^k.
+        // Node (k, j) covers [t0, t0 + h] with h = 2^-k, t0 = j h; it is halved while |L|^2 at
+        // one of its ends exceeds lim = tol^2 / (9/16) * 16^k. Its left end's value needs no
+        // recomputing while it is halved (halving keeps t0), so that test comes first.
         int k = 0;
         std::uint32_t j = 0;
-        double h = 1, lim = tol2 * (16.0 / 9.0);
+        double t0 = 0, h = 1, lim = tol2 * (16.0 / 9.0);
         double sa = s0;  // |L(t0)|^2
         for (;;) {
-            double t1, sb;
-            for (;;) {
-                t1 = static_cast<double>(j + 1) * h;
-                const Point L = D0 + E * t1;
-                sb = sq(L);
-                if (k >= limits::kMaxFlattenDepth || !(std::max(sa, sb) > lim)) break;
+            while (sa > lim && k < limits::kMaxFlattenDepth) {
                 ++k;
                 j *= 2;
                 h *= 0.5;
                 lim *= 16;
             }
-            if (j + 1 == (std::uint32_t(1) << k)) return emit(p3);
+            double t1, sb;
+            for (;;) {
+                t1 = t0 + h;  // exact: dyadic
+                sb = sq(D0 + E * t1);
+                if (!(sb > lim) || k >= limits::kMaxFlattenDepth) break;
+                ++k;
+                j *= 2;
+                h *= 0.5;
+                lim *= 16;
+            }
+            if (t1 >= 1) return emit(p3);
             emit(p0 + (C1 + (C2 + E * t1) * t1) * t1);
+            t0 = t1;
             sa = sb;
             // The next node in order: the right sibling of the lowest left child on the way up.
             ++j;
