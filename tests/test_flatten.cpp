@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "casteljau/error.hpp"
 #include "casteljau/flatten.hpp"
@@ -57,6 +58,52 @@ TEST_CASE("flatten: every curve point is within the tolerance of the polyline", 
             for (int k = 0; k <= 400; ++k) REQUIRE(dist_to_polyline(cubic_at(p0, p1, p2, p3, k / 400.0), pl) <= tol * 1.0000001);
         }
     }
+}
+
+namespace {
+// The flattening rule classify_topology's similarity verdict is proven for: a cubic is halved at
+// t = 1/2 (de Casteljau) while 0.75 max(|P0 - 2 P1 + P2|, |P1 - 2 P2 + P3|) exceeds the
+// tolerance, down to limits::kMaxFlattenDepth; each leaf contributes its end point.
+void halving_leaves(Point p0, Point p1, Point p2, Point p3, double tol, int depth, std::vector<Point>& out) {
+    const Point d0 = p0 - p1 * 2 + p2, d1 = p1 - p2 * 2 + p3;
+    if (depth >= limits::kMaxFlattenDepth || !(0.5625 * std::max(d0.dot(d0), d1.dot(d1)) > tol * tol)) {
+        out.push_back(p3);
+        return;
+    }
+    auto mid = [](Point a, Point b) { return a * 0.5 + b * 0.5; };
+    const Point a1 = mid(p0, p1), b1 = mid(p1, p2), c1 = mid(p2, p3), a2 = mid(a1, b1), b2 = mid(b1, c1), a3 = mid(a2, b2);
+    halving_leaves(p0, a1, a2, a3, tol, depth + 1, out);
+    halving_leaves(a3, b2, c1, p3, tol, depth + 1, out);
+}
+}  // namespace
+
+TEST_CASE("flatten: a cubic's vertices are the end points of its halving tree's leaves", "[flatten][topology]") {
+    // src/raster/topology.cpp proves glyphs simple for exactly these chords; a flattener that cut
+    // cubics any other way (fewer or differently placed pieces) would void that proof.
+    std::mt19937 rng(4242);
+    std::uniform_real_distribution<double> u(-1, 1), lg(-2, 4);
+    for (FlattenMode mode : {FlattenMode::Chords, FlattenMode::AreaBalanced})
+        for (double tol : {0.015, 0.25, 1e-3}) {
+            for (int i = 0; i < 300; ++i) {
+                const double size = std::pow(10.0, lg(rng));
+                Point q[4];
+                for (Point& pt : q) pt = Point{500 + size * u(rng), 300 + size * u(rng)};
+                if (i % 5 == 0) q[1] = q[0];                  // a coincident control point
+                if (i % 7 == 0) q[2] = q[1] * 2 - q[0];      // collinear controls
+                Path p;
+                p.move_to(q[0]).cubic_to(q[1], q[2], q[3]);
+                Polyline pl;
+                flatten(p, Affine{}, tol, pl, mode);
+                std::vector<Point> want{q[0]};
+                halving_leaves(q[0], q[1], q[2], q[3], tol, 0, want);
+                REQUIRE(pl.points.size() == want.size());
+                REQUIRE(pl.points.back() == q[3]);
+                for (std::size_t k = 0; k < want.size(); ++k) {
+                    REQUIRE(std::abs(pl.points[k].x - want[k].x) <= 1e-12 * (500 + size));
+                    REQUIRE(std::abs(pl.points[k].y - want[k].y) <= 1e-12 * (500 + size));
+                }
+            }
+        }
 }
 
 namespace {

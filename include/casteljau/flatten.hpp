@@ -1,10 +1,12 @@
 // casteljau/flatten.hpp: curves to polylines by recursive de Casteljau subdivision.
 //
-// Every curve is split at t = 1/2 until a bound that provably keeps curve and chord within
-// `tolerance` pixels holds (see src/path/flatten.cpp for the bound and its derivation), using an
-// explicit stack with a depth limit (limits::kMaxFlattenDepth), so cusps, loops, coincident control
-// points and huge values cannot recurse without end. Flattening happens after the transform, so the
-// tolerance is in pixels. Non-finite input is rejected with Error(InvalidData).
+// Each piece satisfies a bound that provably keeps curve and chord within `tolerance` pixels (see
+// src/path/flatten.cpp for the bound and its derivation). Quadratics are cut into the smallest
+// sufficient number of equal pieces; cubics and conics are halved at t = 1/2 until the bound holds
+// (a cubic's halving tree is walked in order without splitting its control points, a conic is
+// split on an explicit stack), with a depth limit (limits::kMaxFlattenDepth), so cusps, loops,
+// coincident control points and huge values cannot subdivide without end. Flattening happens after
+// the transform, so the tolerance is in pixels. Non-finite input is rejected with Error(InvalidData).
 // Thread-safety: free functions; no shared state.
 #pragma once
 
