@@ -438,10 +438,8 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
             // the image). Several chunks add up in one compositor of the whole image instead,
             // composited once at the end.
             const bool banded = positions <= kChunkPositions;
-            const bool direct = target_clear;
-            if (!banded) {
-                start_compositor(area, IRect{0, 0, frame.width, frame.height}, direct ? &target : nullptr);
-            }
+            Pixmap* const direct = target_clear ? &target : nullptr;  // the fills go straight into it
+            if (!banded) start_compositor(area, IRect{0, 0, frame.width, frame.height}, direct);
             bool drew = false;
             chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
                 parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
@@ -451,7 +449,7 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
                         if (!d || !overlaps(d->box, bands[b])) continue;
                         if (!into) {
                             std::optional<AreaCompositor>& band = band_areas[static_cast<std::size_t>(w)];
-                            start_compositor(band, bands[b], direct ? &target : nullptr);
+                            start_compositor(band, bands[b], direct);
                             into = &*band;
                         }
                         into->add(raster, d->path, fo, d->color, layer.opacity, bands[b]);
