@@ -96,6 +96,20 @@ bool ends_alternate(double ta0, double ta1, double tb0, double tb1) {
     return before0 ? d0 < d1 : d0 > d1;
 }
 
+// Grows a buffer that is all zero between shapes to at least n zeros. A reallocation copies
+// nothing (the old contents are zeros), and only the new tail is written (a large map grows these
+// buffers feature after feature, band after band).
+template <class T>
+void grow_zeroed(std::vector<T>& v, std::size_t n) {
+    if (v.size() >= n) return;
+    if (v.capacity() < n) {
+        const std::size_t cap = std::max(n, 2 * v.capacity());
+        v.clear();
+        v.reserve(cap);
+    }
+    v.resize(n);
+}
+
 }  // namespace
 
 void Engine::begin(int w, int h, bool track) {
@@ -110,9 +124,9 @@ void Engine::begin(int w, int h, bool track) {
         std::fill(head_.begin(), head_.end(), 0);
         std::fill(cand_.begin(), cand_.end(), std::uint8_t(0));
     }
-    if (track && head_.size() < cells) {
-        head_.resize(cells, 0);
-        cand_.resize(cells, 0);
+    if (track) {
+        grow_zeroed(head_, cells);
+        grow_zeroed(cand_, cells);
     }
     dirty_ = true;
     const int lanes = row_vector_lanes();
@@ -120,11 +134,11 @@ void Engine::begin(int w, int h, bool track) {
     if (vec_) {
         vstride_ = std::max(1, (w + lanes - 1) / lanes) * lanes;
         const std::size_t n = static_cast<std::size_t>(vstride_) * static_cast<std::size_t>(h);
-        if (facc_.size() < n) facc_.resize(n, 0.0f);
+        grow_zeroed(facc_, n);
         row_from_.assign(static_cast<std::size_t>(h), INT_MAX);
         pieces_.clear();
     } else {
-        if (acc_.size() < cells) acc_.resize(cells, 0.0);
+        grow_zeroed(acc_, cells);
         words_ = ((stride_ >> kBlockShift) + 64) / 64;
         blocks_.assign(words_ * static_cast<std::size_t>(h), 0);
     }
