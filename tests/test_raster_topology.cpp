@@ -251,6 +251,41 @@ TEST_CASE("topology: the rasterizer classifies shapes large for their number of 
     CHECK(r.last_stats().exact_cells > 0);
 }
 
+TEST_CASE("topology: decide_topology is the verdict fill reaches for a shape given none", "[raster][topology]") {
+    Rasterizer r;
+    const IRect clip{0, 0, 300, 300};
+    FillOptions exact;
+    Path rings;
+    rings.add_circle({150, 150}, 120.3);
+    rings.append(Path().add_circle({150, 150}, 60.7).reversed());
+    const Path stacked = join(square(20.25, 20.25, 200), square(20.25, 20.25, 200));
+    const Path small = join(square(1.5, 1.5, 8), square(1.5, 1.5, 8));
+    // Boxes as fill() sees them: the control bounds in whole pixels.
+    CHECK(decide_topology(rings, Affine::identity(), exact.tolerance, 243, 243) == Topology::Simple);
+    CHECK(decide_topology(stacked, Affine::identity(), exact.tolerance, 201, 201) == Topology::Overlapping);
+    CHECK(decide_topology(small, Affine::identity(), exact.tolerance, 9, 9) == Topology::Unknown);
+    for (const Path* p : {static_cast<const Path*>(&rings), &stacked, &small}) {
+        const Rect b = p->control_bounds();
+        const double bw = std::ceil(b.x1) - std::floor(b.x0), bh = std::ceil(b.y1) - std::floor(b.y0);
+        const Topology decided = decide_topology(*p, Affine::identity(), exact.tolerance, bw, bh);
+        (void)render(r, *p, Affine::identity(), exact, clip);
+        CHECK(r.last_stats().topology == decided);
+        // Passing the decided verdict renders the same pixels as letting fill() decide.
+        const auto by_fill = render(r, *p, Affine::identity(), exact, clip);
+        FillOptions given = exact;
+        given.topology = decided;
+        const auto by_caller = render(r, *p, Affine::identity(), given, clip);
+        int worst = 0;
+        for (int y = 0; y < 300; ++y)
+            for (int x = 0; x < 300; ++x) worst = std::max(worst, std::abs(by_fill.at(x, y) - by_caller.at(x, y)));
+        CHECK(worst == 0);
+    }
+    // Under a similarity map the verdict is the one for that map's flattening, with the tolerance in
+    // the path's units: a scale of 2 halves it.
+    const Affine twice = Affine::scale(2, 2);
+    CHECK(decide_topology(rings, twice, exact.tolerance, 486, 486) == classify_topology(rings, exact.tolerance / 2));
+}
+
 TEST_CASE("topology: the glyph cache hands each glyph's verdict to the rasterizer", "[raster][topology][text]") {
     const Font font = Font::load(testing::dejavu_sans_path());
     GlyphCache cache(1u << 20, kDefaultTolerance);

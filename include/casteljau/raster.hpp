@@ -82,6 +82,15 @@ Topology classify_topology(const Path& path, double max_tolerance);
 // max_tolerance) asks of the map, with tolerance / s to compare against max_tolerance.
 double similarity_scale(const Affine& m);
 
+// The verdict Rasterizer::fill reaches for `path` under `m` at `tolerance` (pixels) when it is given
+// none and the shape's box on the target measures box_width x box_height pixels: classify_topology
+// (for this map and tolerance when m is a similarity) when width + height is at least 4 pixels per
+// path verb, else Unknown: not worth classifying, the per-cell check costs per boundary pixel and
+// the classification per segment (fill() then takes the per-cell check). A caller filling one
+// path in several pieces (bands, tiles) decides once with the whole box and passes the verdict in
+// FillOptions::topology, instead of fill() classifying it again for every piece. Thread-safe.
+Topology decide_topology(const Path& path, const Affine& m, double tolerance, double box_width, double box_height);
+
 struct FillOptions {
     FillRule rule = FillRule::NonZero;
     double tolerance = kDefaultTolerance;  // flattening tolerance in pixels

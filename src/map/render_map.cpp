@@ -319,6 +319,9 @@ struct Drawable {
     Color color;
     Rect box;    // control bounds of path
     Path rings;  // strokes: polygon rings still to be stroked, after SharedBorders
+    // Fills: the rasterizer's verdict on path, decided once for the whole image rather than by
+    // every band the feature reaches (decide_topology).
+    Topology topology = Topology::Unknown;
 };
 
 }  // namespace
@@ -427,7 +430,19 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
             if (!c) return;
             PathVisitor v;
             build(w, f, v);
-            if (!v.fill.empty()) out = Drawable{std::move(v.fill), *c, Rect{}, Path{}};
+            if (v.fill.empty()) return;
+            out = Drawable{std::move(v.fill), *c, Rect{}, Path{}};
+            if (fo.exact_overlaps) {
+                const Rect b = out->path.control_bounds();
+                const double bw = std::min(b.x1, double(frame.width)) - std::max(b.x0, 0.0);
+                const double bh = std::min(b.y1, double(frame.height)) - std::max(b.y0, 0.0);
+                if (bw > 0 && bh > 0) out->topology = decide_topology(out->path, Affine{}, fo.tolerance, bw, bh);
+            }
+        };
+        auto fill_options = [&](const Drawable& d) {
+            FillOptions o = fo;
+            o.topology = d.topology;
+            return o;
         };
         if (layer.fill && opts.seamless) {
             std::reverse(order.begin(), order.end());
@@ -452,7 +467,7 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
                             start_compositor(band, bands[b], direct);
                             into = &*band;
                         }
-                        into->add(raster, d->path, fo, d->color, layer.opacity, bands[b]);
+                        into->add(raster, d->path, fill_options(*d), d->color, layer.opacity, bands[b]);
                     }
                     if (banded && into) into->composite_onto(target);
                 });
@@ -471,7 +486,7 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
                         if (!d || !overlaps(d->box, bands[b])) continue;
                         Paint paint = Paint::solid(d->color);
                         paint.opacity = layer.opacity;
-                        canvas.fill_path(d->path, paint, opts.fill_rule);
+                        canvas.fill_path(d->path, paint, fill_options(*d));
                     }
                     canvas.restore();
                 });

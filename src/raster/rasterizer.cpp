@@ -110,6 +110,14 @@ Rasterizer::~Rasterizer() = default;
 Rasterizer::Rasterizer(Rasterizer&&) noexcept = default;
 Rasterizer& Rasterizer::operator=(Rasterizer&&) noexcept = default;
 
+Topology decide_topology(const Path& path, const Affine& m, double tolerance, double box_width, double box_height) {
+    if (!(box_width + box_height >= kClassifyPixelsPerSegment * static_cast<double>(path.verbs().size())))
+        return Topology::Unknown;
+    // Under a similarity map the verdict for this very flattening proves more (thin curved strokes).
+    const double s = similarity_scale(m);
+    return s > 0 ? classify_topology(path, tolerance / s) : classify_topology(path);
+}
+
 void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& options, const IRect& clip, SpanSink& sink) {
     stats_ = {};
     check_clip(clip);
@@ -134,13 +142,7 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opti
     // (a DejaVu glyph from about 64 px; BENCHMARKS.md "Raw paths").
     FillOptions opts = options;
     if (opts.exact_overlaps) {
-        if (opts.topology == Topology::Unknown &&
-            static_cast<double>(bw) + bh >= kClassifyPixelsPerSegment * static_cast<double>(path.verbs().size())) {
-            // Under a similarity map the verdict for this very flattening proves more (thin
-            // curved strokes).
-            const double s = similarity_scale(m);
-            opts.topology = s > 0 ? classify_topology(path, opts.tolerance / s) : classify_topology(path);
-        }
+        if (opts.topology == Topology::Unknown) opts.topology = decide_topology(path, m, opts.tolerance, bw, bh);
         stats_.topology = opts.topology;
         opts.exact_overlaps = opts.topology != Topology::Simple;
     }
