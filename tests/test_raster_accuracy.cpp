@@ -111,6 +111,29 @@ TEST_CASE("accuracy: random simple and self-intersecting polygons", "[accuracy]"
     WARN("overlapping contour sets: " << multi.text());
 }
 
+TEST_CASE("accuracy: two edges from one vertex outside a pixel, crossing it", "[accuracy]") {
+    // The overlap check decides a pixel crossed by two single edges of one contour that meet at a
+    // vertex outside it (the contour leaves and comes back) in closed form: the winding takes two
+    // values there. Two edges that both leave the vertex (two contours touching at it) do not
+    // qualify: the pixel's part between them has a third winding, and accumulation is wrong there.
+    Rasterizer r;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> y(0.05, 0.95), far(2.0, 30.0);
+    for (int i = 0; i < 200; ++i) {
+        // Vertex V left of the pixel column x in [5, 6], rays through it to x = 40.
+        const double vy = 8 + y(rng), ay = 8 + y(rng), by = 8 + y(rng);
+        const Point v{0.5 + 3 * y(rng), vy}, p{40, ay}, q{40, by};
+        const Contour wedge{p, v, q};                               // ... -> p -> V -> q -> ...
+        const Contour below{v, p, {40, ay + far(rng)}};             // V -> p first
+        const Contour above{v, q, {40, by - far(rng)}};             // V -> q first
+        for (FillRule rule : kRules) {
+            check_polygons(r, {wedge}, rule, {0, 0, 48, 40}, "wedge " + std::to_string(i));
+            check_polygons(r, {below, above}, rule, {0, 0, 48, 40}, "touching at V " + std::to_string(i));
+            check_polygons(r, {below, reversed(above)}, rule, {0, 0, 48, 40}, "touching at V, one reversed " + std::to_string(i));
+        }
+    }
+}
+
 TEST_CASE("accuracy: thin slivers", "[accuracy]") {
     Rasterizer r;
     Worst worst;

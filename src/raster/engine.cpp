@@ -214,6 +214,26 @@ bool Engine::harmless_two(const Visit& a, const Visit& b, int col, int row) {
                 if ((a0 > 0 && a1 > 0) || (a0 < 0 && a1 < 0)) return (b0 > 0) == (a0 > 0);
         }
     }
+    // Two single edges consecutive along the contour (the contour leaves the cell and comes back
+    // one vertex V later), each passing through the cell, V outside the closed cell: lines from V
+    // meet only at V unless they leave it along one ray, which clearly non-parallel or opposite
+    // directions rule out. The part of the cell between them is then the cone at V cut by the
+    // cell, whose boundary arc nearer V joins the first edge's exit to the second's entry, so
+    // entries and exits alternate around the cell: accumulation is exact.
+    if (a.pre < 0 && b.pre < 0 && a.s0 == a.s1 && b.s0 == b.s1) {
+        const Edge* first = &segs_[a.s0];
+        const Edge* second = &segs_[b.s0];
+        if (!(first->x1 == second->x0 && first->y1 == second->y0)) std::swap(first, second);
+        if (first->x1 == second->x0 && first->y1 == second->y0 && passes_through(*first, col, row) &&
+            passes_through(*second, col, row)) {
+            const double vx = first->x1, vy = first->y1;
+            const bool v_outside = vx < col || vx > col + 1 || vy < row || vy > row + 1;
+            const double ux = first->x0 - vx, uy = first->y0 - vy, wx = second->x1 - vx, wy = second->y1 - vy;
+            const double cross = ux * wy - uy * wx, dot = ux * wx + uy * wy;
+            const double scale = (std::fabs(ux) + std::fabs(uy)) * (std::fabs(wx) + std::fabs(wy));
+            if (v_outside && (std::fabs(cross) > 1e-9 * scale || dot < 0)) return true;
+        }
+    }
     // Multi-edge runs: when no edge of one meets an edge of the other anywhere, they cannot meet
     // in the cell, and only their entry and exit points matter (the first edge's and the last
     // edge's pieces, not every piece).
