@@ -47,6 +47,23 @@ Path join(const Path& a, const Path& b) {
     return p;
 }
 
+// A ring over 250 px (two circles, 12 verbs): large for its number of segments, and simple.
+Path ring() {
+    Path rings;
+    rings.add_circle({150, 150}, 120.3);
+    rings.append(Path().add_circle({150, 150}, 60.7).reversed());
+    return rings;
+}
+
+// The largest |difference| of two renders over the 300 x 300 target.
+template <class R>
+int max_difference(const R& a, const R& b) {
+    int worst = 0;
+    for (int y = 0; y < 300; ++y)
+        for (int x = 0; x < 300; ++x) worst = std::max(worst, std::abs(a.at(x, y) - b.at(x, y)));
+    return worst;
+}
+
 }  // namespace
 
 TEST_CASE("topology: simple shapes are Simple", "[raster][topology]") {
@@ -221,21 +238,16 @@ TEST_CASE("topology: the rasterizer classifies shapes large for their number of 
     Rasterizer r;
     const IRect clip{0, 0, 300, 300};
     FillOptions exact;
-    // A ring (two circles, 12 verbs) over 250 px: classified Simple, accumulated plainly, and
-    // within 1/255 of the per-cell check on the same outline.
-    Path rings;
-    rings.add_circle({150, 150}, 120.3);
-    rings.append(Path().add_circle({150, 150}, 60.7).reversed());
+    // A ring: classified Simple, accumulated plainly, and within 1/255 of the per-cell check on
+    // the same outline.
+    const Path rings = ring();
     auto out = render(r, rings, Affine::identity(), exact, clip);
     CHECK(r.last_stats().topology == Topology::Simple);
     CHECK(r.last_stats().exact_cells == 0);
     FillOptions checked;  // the per-cell check on the same flattened outline
     checked.topology = Topology::Overlapping;
     const auto with_check = render(r, rings, Affine::identity(), checked, clip);
-    int worst = 0;
-    for (int y = 0; y < 300; ++y)
-        for (int x = 0; x < 300; ++x) worst = std::max(worst, std::abs(out.at(x, y) - with_check.at(x, y)));
-    CHECK(worst <= 1);
+    CHECK(max_difference(out, with_check) <= 1);
     // Two large squares stacked: classified Overlapping, and exact (a stacked copy adds nothing).
     const Path stacked = join(square(20.25, 20.25, 200), square(20.25, 20.25, 200));
     out = render(r, stacked, Affine::identity(), exact, clip);
@@ -255,9 +267,7 @@ TEST_CASE("topology: decide_topology is the verdict fill reaches for a shape giv
     Rasterizer r;
     const IRect clip{0, 0, 300, 300};
     FillOptions exact;
-    Path rings;
-    rings.add_circle({150, 150}, 120.3);
-    rings.append(Path().add_circle({150, 150}, 60.7).reversed());
+    const Path rings = ring();
     const Path stacked = join(square(20.25, 20.25, 200), square(20.25, 20.25, 200));
     const Path small = join(square(1.5, 1.5, 8), square(1.5, 1.5, 8));
     // Boxes as fill() sees them: the control bounds in whole pixels.
@@ -275,10 +285,7 @@ TEST_CASE("topology: decide_topology is the verdict fill reaches for a shape giv
         FillOptions given = exact;
         given.topology = decided;
         const auto by_caller = render(r, *p, Affine::identity(), given, clip);
-        int worst = 0;
-        for (int y = 0; y < 300; ++y)
-            for (int x = 0; x < 300; ++x) worst = std::max(worst, std::abs(by_fill.at(x, y) - by_caller.at(x, y)));
-        CHECK(worst == 0);
+        CHECK(max_difference(by_fill, by_caller) == 0);
     }
     // Under a similarity map the verdict is the one for that map's flattening, with the tolerance in
     // the path's units: a scale of 2 halves it.
