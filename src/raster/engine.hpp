@@ -4,11 +4,35 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "casteljau/error.hpp"
 #include "raster/raster_internal.hpp"
 
 namespace casteljau::raster {
+
+// An append-only list for the walk's per-cell and per-edge records: the append is a compare and a
+// store inline, growth (doubling) out of line. Cleared lists keep their memory.
+template <class T>
+class AppendList {
+public:
+    [[gnu::always_inline]] void push(const T& v) {
+        if (n_ == buf_.size()) [[unlikely]] grow();
+        buf_[n_++] = v;
+    }
+    void clear() { n_ = 0; }
+    std::size_t size() const { return n_; }
+    T& operator[](std::size_t i) { return buf_[i]; }
+    const T& operator[](std::size_t i) const { return buf_[i]; }
+    const T* data() const { return buf_.data(); }
+    const T* begin() const { return buf_.data(); }
+    const T* end() const { return buf_.data() + n_; }
+
+private:
+    [[gnu::noinline]] void grow() { buf_.resize(std::max<std::size_t>(256, 2 * buf_.size())); }
+    std::vector<T> buf_;
+    std::size_t n_ = 0;
+};
 
 // The engine (engine.cpp): one dense buffer of w x h cells, the whole shape's box or one band of
 // it (rasterizer.cpp chooses). Edges are accumulated as they arrive, in contour order, and the
@@ -78,10 +102,10 @@ private:
     std::vector<std::uint64_t> blocks_;
     std::size_t words_ = 1;  // words per row
     inline void mark(int r, int c0, int c1);
-    std::vector<Edge> segs_;         // the edges (kept when tracking: exact cells need them)
+    AppendList<Edge> segs_;          // the edges (kept when tracking: exact cells need them)
     std::size_t count_ = 0;          // edges pushed
     std::size_t max_edges_ = 0;      // Limits::flattened_segments, read by begin()
-    std::vector<Visit> visits_;
+    AppendList<Visit> visits_;
     std::vector<std::uint32_t> cands_;     // cells with two or more visits, or a non-simple one (each once)
     void add_cand(std::uint32_t cell) {
         if (!cand_[cell]) {
@@ -116,7 +140,7 @@ private:
     cur_cell_ = cell;
     const std::int32_t h = head_[cell];
     cur_visit_ = static_cast<std::int32_t>(visits_.size());
-    visits_.push_back({cell, h - 1, sid, sid, -1, bits, false});
+    visits_.push({cell, h - 1, sid, sid, -1, bits, false});
     head_[cell] = cur_visit_ + 1;
     if (h != 0) add_cand(cell);
 }
@@ -134,7 +158,8 @@ private:
     std::uint64_t* m = blocks_.data() + static_cast<std::size_t>(r) * words_;
     const unsigned b0 = static_cast<unsigned>(c0) >> kBlockShift, b1 = static_cast<unsigned>(c1) >> kBlockShift;
     if (b1 < 64) {
-        m[0] |= (b1 == 63 ? ~std::uint64_t(0) : (std::uint64_t(2) << b1) - 1) & ~((std::uint64_t(1) << b0) - 1);
+        // Bits b0..b1: 2^(b1 + 1) - 2^b0, where 2^64 wraps to 0 (unsigned) and the difference still holds.
+        m[0] |= (std::uint64_t(2) << b1) - (std::uint64_t(1) << b0);
         return;
     }
     for (unsigned b = b0; b <= b1; ++b) m[b >> 6] |= std::uint64_t(1) << (b & 63);
@@ -230,7 +255,7 @@ template <bool kTrack, bool kVec>
         px_ = x1;
         py_ = y1;
         sid = static_cast<std::uint32_t>(segs_.size());
-        segs_.push_back({x0, y0, x1, y1, -1, -1});
+        segs_.push({x0, y0, x1, y1, -1, -1});
         bits = static_cast<std::uint8_t>((x1 > x0 ? 1 : 0) | (x1 < x0 ? 2 : 0) | (y1 > y0 ? 4 : 0) | (y1 < y0 ? 8 : 0));
     }
     if (y0 == y1) {
