@@ -317,10 +317,10 @@ bool overlaps(const Rect& r, const IRect& band) { return r.y1 >= band.y0 && r.y0
 struct Drawable {
     Path path;
     Color color;
-    Rect box;    // control bounds of path
     Path rings;  // strokes: polygon rings still to be stroked, after SharedBorders
-    // Fills: the rasterizer's verdict on path, decided once for the whole image rather than by
-    // every band the feature reaches (decide_topology).
+    // Fills: the control bounds of path, and the rasterizer's verdict on it, decided once for the
+    // whole image rather than by every band the feature reaches (decide_topology).
+    Rect box{};
     Topology topology = Topology::Unknown;
 };
 
@@ -413,7 +413,6 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
             chunk.assign(end - begin, std::nullopt);
             parallel::for_each_index(threads, end - begin, [&](int w, std::size_t i) {
                 make(w, data.features[order[begin + i]], chunk[i]);
-                if (chunk[i]) chunk[i]->box = chunk[i]->path.control_bounds();
             });
             draw(chunk);
             begin = end;
@@ -431,9 +430,10 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
             PathVisitor v;
             build(w, f, v);
             if (v.fill.empty()) return;
-            out = Drawable{std::move(v.fill), *c, Rect{}, Path{}};
+            out = Drawable{std::move(v.fill), *c, Path{}};
+            out->box = out->path.control_bounds();
             if (fo.exact_overlaps) {
-                const Rect b = out->path.control_bounds();
+                const Rect& b = out->box;
                 const double bw = std::min(b.x1, double(frame.width)) - std::max(b.x0, 0.0);
                 const double bh = std::min(b.y1, double(frame.height)) - std::max(b.y0, 0.0);
                 if (bw > 0 && bh > 0) out->topology = decide_topology(out->path, Affine{}, fo.tolerance, bw, bh);
@@ -532,7 +532,7 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
             if (!v.lines.empty()) o = stroke(v.lines, ss, Affine{}, opts.tolerance);
             Path rings;
             if (layer.stroke && !v.fill.empty()) rings = std::move(v.fill);
-            if (!o.empty() || !rings.empty()) out = Drawable{std::move(o), *line_color, Rect{}, std::move(rings)};
+            if (!o.empty() || !rings.empty()) out = Drawable{std::move(o), *line_color, std::move(rings)};
         };
         std::vector<Path> chains, whole;
         chunked(order, make_outline, [&](std::vector<std::optional<Drawable>>& chunk) {

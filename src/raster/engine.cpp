@@ -198,40 +198,38 @@ void Engine::gather(const Visit& v, int col, int row, std::vector<ExactScratch::
 // Two monotone runs in one cell: harmless when they do not meet and the end of one is next to the
 // start of the other around the cell's boundary (see the top of the file).
 bool Engine::harmless_two(const Visit& a, const Visit& b, int col, int row) {
-    // Closed form for the common case (the two sides of a stem): each run is one edge that passes
-    // through the cell (no end point inside the open cell), so its piece is its whole line inside
-    // the cell and splits the cell in two. When each edge lies strictly on one side of the other's
-    // line they cannot meet, and the region between them is on the other edge's side of each; the
-    // windings span one unit exactly when that side is the same one (left of both or right of both).
+    // Closed forms for two single edges that pass through the cell (no end point inside the open
+    // cell), so that each piece is its edge's whole line inside the cell and splits it in two.
     if (a.pre < 0 && b.pre < 0 && a.s0 == a.s1 && b.s0 == b.s1) {
         const Edge& A = segs_[a.s0];
         const Edge& B = segs_[b.s0];
         if (passes_through(A, col, row) && passes_through(B, col, row)) {
+            // The two sides of a stem: when each edge lies strictly on one side of the other's
+            // line they cannot meet, and the region between them is on the other edge's side of
+            // each; the windings span one unit exactly when that side is the same one (left of
+            // both or right of both).
             const double ax = A.x1 - A.x0, ay = A.y1 - A.y0, bx = B.x1 - B.x0, by = B.y1 - B.y0;
             const double b0 = ax * (B.y0 - A.y0) - ay * (B.x0 - A.x0), b1 = ax * (B.y1 - A.y0) - ay * (B.x1 - A.x0);
             const double a0 = bx * (A.y0 - B.y0) - by * (A.x0 - B.x0), a1 = bx * (A.y1 - B.y0) - by * (A.x1 - B.x0);
             if ((b0 > 0 && b1 > 0) || (b0 < 0 && b1 < 0))
                 if ((a0 > 0 && a1 > 0) || (a0 < 0 && a1 < 0)) return (b0 > 0) == (a0 > 0);
-        }
-    }
-    // Two single edges consecutive along the contour (the contour leaves the cell and comes back
-    // one vertex V later), each passing through the cell, V outside the closed cell: lines from V
-    // meet only at V unless they leave it along one ray, which clearly non-parallel or opposite
-    // directions rule out. The part of the cell between them is then the cone at V cut by the
-    // cell, whose boundary arc nearer V joins the first edge's exit to the second's entry, so
-    // entries and exits alternate around the cell: accumulation is exact.
-    if (a.pre < 0 && b.pre < 0 && a.s0 == a.s1 && b.s0 == b.s1) {
-        const Edge* first = &segs_[a.s0];
-        const Edge* second = &segs_[b.s0];
-        if (!(first->x1 == second->x0 && first->y1 == second->y0)) std::swap(first, second);
-        if (first->x1 == second->x0 && first->y1 == second->y0 && passes_through(*first, col, row) &&
-            passes_through(*second, col, row)) {
-            const double vx = first->x1, vy = first->y1;
-            const bool v_outside = vx < col || vx > col + 1 || vy < row || vy > row + 1;
-            const double ux = first->x0 - vx, uy = first->y0 - vy, wx = second->x1 - vx, wy = second->y1 - vy;
-            const double cross = ux * wy - uy * wx, dot = ux * wx + uy * wy;
-            const double scale = (std::fabs(ux) + std::fabs(uy)) * (std::fabs(wx) + std::fabs(wy));
-            if (v_outside && (std::fabs(cross) > 1e-9 * scale || dot < 0)) return true;
+            // Consecutive along the contour (it leaves the cell and comes back one vertex V later),
+            // V outside the closed cell: lines from V meet only at V unless they leave it along one
+            // ray, which clearly non-parallel or opposite directions rule out. The part of the cell
+            // between them is then the cone at V cut by the cell, whose boundary arc nearer V joins
+            // the first edge's exit to the second's entry, so entries and exits alternate around
+            // the cell: accumulation is exact.
+            const Edge* first = &A;
+            const Edge* second = &B;
+            if (!(first->x1 == second->x0 && first->y1 == second->y0)) std::swap(first, second);
+            if (first->x1 == second->x0 && first->y1 == second->y0) {
+                const double vx = first->x1, vy = first->y1;
+                const bool v_outside = vx < col || vx > col + 1 || vy < row || vy > row + 1;
+                const double ux = first->x0 - vx, uy = first->y0 - vy, wx = second->x1 - vx, wy = second->y1 - vy;
+                const double cross = ux * wy - uy * wx, dot = ux * wx + uy * wy;
+                const double scale = (std::fabs(ux) + std::fabs(uy)) * (std::fabs(wx) + std::fabs(wy));
+                if (v_outside && (std::fabs(cross) > 1e-9 * scale || dot < 0)) return true;
+            }
         }
     }
     // Multi-edge runs: when no edge of one meets an edge of the other anywhere, they cannot meet
