@@ -91,6 +91,19 @@ struct AreaSink final : SpanSink {
     int* hi;
     int width, x0, y0;  // the region's width and origin
     PremulPixel c;
+    // scaled[a]: the colour taken at coverage a by a pixel no fill has taken yet, mul_div255(a, c)
+    // per channel. Such a pixel's layer value is zero (the layer is cleared with the coverage, and
+    // reset_into requires a transparent target), so it becomes exactly scaled[a].
+    std::uint32_t scaled[256];
+    std::uint8_t colour8[32];  // the colour eight times
+    void set_colour(PremulPixel colour) {
+        c = colour;
+        for (int k = 0; k < 8; ++k) std::memcpy(colour8 + 4 * k, &c, 4);
+        for (unsigned a = 0; a < 256; ++a) {
+            const std::uint8_t px[4] = {mul_div255(a, c.r), mul_div255(a, c.g), mul_div255(a, c.b), mul_div255(a, c.a)};
+            std::memcpy(&scaled[a], px, 4);
+        }
+    }
     void row(int y, int x, int length, const std::uint8_t* coverage) override {
         if (length <= 0) return;
         const std::size_t at = static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width) +
@@ -101,45 +114,40 @@ struct AreaSink final : SpanSink {
         h = std::max(h, x - x0 + length);
         std::uint8_t* L = layer + static_cast<std::size_t>(y - y0) * layer_stride + static_cast<std::size_t>(x - x0) * 4;
         std::uint8_t* C = cov + at;
-        std::uint8_t colour8[32];
-        for (int k = 0; k < 8; ++k) std::memcpy(colour8 + 4 * k, &c, 4);
         constexpr std::uint64_t kNone = 0, kFull = ~std::uint64_t(0);
         int i = 0;
-        while (i < length) {
-            // Eight pixels at a time where the fill leaves them alone (coverage 0) or covers them
-            // fully as their first fill (the colour itself, the pixels taken whole).
-            if (i + 8 <= length) {
-                std::uint64_t a8, t8;
-                std::memcpy(&a8, coverage + i, 8);
-                if (a8 == kNone) {
-                    i += 8;
-                    continue;
-                }
-                std::memcpy(&t8, C + i, 8);
-                if (a8 == kFull && t8 == kNone) {
-                    std::memcpy(C + i, &kFull, 8);
-                    std::memcpy(L + 4 * static_cast<std::size_t>(i), colour8, 32);
-                    i += 8;
-                    continue;
-                }
+        // Eight pixels at a time: skipped where the fill leaves them alone (coverage 0); where no
+        // fill has taken any of them yet, each takes its whole coverage (scaled colours).
+        for (; i + 8 <= length; i += 8) {
+            std::uint64_t a8, t8;
+            std::memcpy(&a8, coverage + i, 8);
+            if (a8 == kNone) continue;
+            std::memcpy(&t8, C + i, 8);
+            if (t8 == kNone) {
+                std::memcpy(C + i, &a8, 8);
+                std::uint8_t* const out = L + 4 * static_cast<std::size_t>(i);
+                if (a8 == kFull) std::memcpy(out, colour8, 32);
+                else for (int k = 0; k < 8; ++k) std::memcpy(out + 4 * k, &scaled[coverage[i + k]], 4);
+                continue;
             }
-            for (const int end = std::min(length, i + 8); i < end; ++i) pixel(coverage[i], C[i], L + 4 * static_cast<std::size_t>(i));
+            for (int k = i; k < i + 8; ++k) pixel(coverage[k], C[k], L + 4 * static_cast<std::size_t>(k));
         }
+        for (; i < length; ++i) pixel(coverage[i], C[i], L + 4 * static_cast<std::size_t>(i));
     }
     // One pixel: coverage a of this fill, t the coverage already taken, l the layer's pixel.
     void pixel(unsigned a, std::uint8_t& t, std::uint8_t* l) const {
         if (a == 0) return;
         const unsigned total = t;
-        if (a == 255 && total == 0) {  // inside a fill, first to cover: the colour itself
-            t = 255;
-            std::memcpy(l, &c, 4);
+        if (total == 0) {  // first to cover: the layer is zero here
+            t = static_cast<std::uint8_t>(a);
+            std::memcpy(l, &scaled[a], 4);
             return;
         }
         const unsigned rem = 255u - total;
         if (rem == 0) return;
         unsigned take = a < rem ? a : rem;
         // Two fills meeting at an edge whose rounded coverages fall one short of full.
-        if (total > 0 && take + 1 == rem) take = rem;
+        if (take + 1 == rem) take = rem;
         t = static_cast<std::uint8_t>(total + take);
         const unsigned na = std::min(255u, unsigned(l[3]) + mul_div255(take, c.a));
         l[0] = static_cast<std::uint8_t>(std::min(na, unsigned(l[0]) + mul_div255(take, c.r)));
@@ -169,7 +177,7 @@ void AreaCompositor::add(Rasterizer& raster, const Path& path, const FillOptions
     sink.width = width();
     sink.x0 = region_.x0;
     sink.y0 = region_.y0;
-    sink.c = premultiply(color.with_opacity(std::clamp(opacity, 0.0, 1.0)));
+    sink.set_colour(premultiply(color.with_opacity(std::clamp(opacity, 0.0, 1.0))));
     raster.fill(path, Affine{}, opts, c, sink);
 }
 
