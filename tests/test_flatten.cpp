@@ -281,6 +281,34 @@ TEST_CASE("fill: a rasterizer interrupted by the edge limit renders the next sha
     }
 }
 
+TEST_CASE("fill: a rasterizer made after one destroyed mid-fill renders as a fresh one does", "[flatten][limits]") {
+    // A destroyed rasterizer's state is kept for the next one made (the spare pool in
+    // rasterizer.cpp), half written when the edge limit stopped its last fill.
+    Path big;
+    for (int pass = 0; pass < 2; ++pass) {
+        big.move_to(0.5, 0.3);
+        for (int row = 0; row < 48; ++row) big.line_to(row % 2 ? 0.5 : 47.5, row + 0.7);
+    }
+    big.move_to(10, 10);
+    for (int i = 0; i < 129; ++i) big.cubic_to({60, 60}, {-40, 60}, {10, 10});
+    FillOptions fine;
+    fine.tolerance = 1e-9;
+    Path shapes;
+    shapes.add_circle({20, 20}, 12).add_circle({28, 22}, 9).add_rect({5.5, 18.25, 40.5, 19.0});
+    Rasterizer reference;
+    const Mask want = reference.fill_mask(shapes, Affine{}, FillOptions{}, IRect{0, 0, 48, 48});
+    for (int round = 0; round < 3; ++round) {
+        {
+            Rasterizer used;
+            CHECK_THROWS_AS(used.fill_mask(big, Affine{}, fine, IRect{0, 0, 48, 48}), Error);
+        }
+        Rasterizer next;
+        const Mask got = next.fill_mask(shapes, Affine{}, FillOptions{}, IRect{0, 0, 48, 48});
+        CHECK(next.last_stats().exact_cells == reference.last_stats().exact_cells);
+        CHECK(got.data == want.data);
+    }
+}
+
 TEST_CASE("Path: control bounds and finiteness are kept up to date as the path changes", "[flatten][path]") {
     auto loop_bounds = [](const Path& p) {
         if (p.points().empty()) return Rect{};

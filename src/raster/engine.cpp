@@ -112,6 +112,17 @@ void grow_zeroed(std::vector<T>& v, std::size_t n) {
 
 }  // namespace
 
+void Engine::trim(std::size_t records) {
+    segs_.release_above(records);
+    visits_.release_above(records);
+    auto release = [records](auto& v) {
+        if (v.capacity() > records) std::remove_reference_t<decltype(v)>().swap(v);
+    };
+    release(pieces_);
+    release(cands_);
+    release(exact_ids_);
+}
+
 void Engine::begin(int w, int h, bool track) {
     w_ = w;
     h_ = h;

@@ -21,6 +21,13 @@ public:
         buf_[n_++] = v;
     }
     void clear() { n_ = 0; }
+    // Frees the memory when it holds room for more than `n` records (the list is then empty).
+    void release_above(std::size_t n) {
+        if (buf_.size() > n) {
+            std::vector<T>().swap(buf_);
+            n_ = 0;
+        }
+    }
     std::size_t size() const { return n_; }
     T& operator[](std::size_t i) { return buf_[i]; }
     const T& operator[](std::size_t i) const { return buf_[i]; }
@@ -49,6 +56,9 @@ public:
     void contour_end();
     // Resolves the marked cells and hands the rows to the sink, at pixel offset (ox, oy).
     void finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats);
+    // Frees the per-edge and per-visit lists that hold room for more than `records` entries (the
+    // dense buffers stay: a strip bounds them). Between shapes only.
+    void trim(std::size_t records);
 
 private:
     struct Visit {
