@@ -1,6 +1,7 @@
 // Flattening: the flatness bound holds, depth is limited, degenerate and hostile input.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -306,6 +307,67 @@ TEST_CASE("fill: a rasterizer made after one destroyed mid-fill renders as a fre
         const Mask got = next.fill_mask(shapes, Affine{}, FillOptions{}, IRect{0, 0, 48, 48});
         CHECK(next.last_stats().exact_cells == reference.last_stats().exact_cells);
         CHECK(got.data == want.data);
+    }
+}
+
+TEST_CASE("Path: append equals adding the other path's segments one by one", "[flatten][path]") {
+    // The reference: other's segments replayed through the builder (moves collapse, a segment
+    // after a close opens a contour at the close's point). Other's first verb is a move, so the
+    // head's open contour ends there.
+    auto replay = [](Path into, const Path& other, const Affine& m) {
+        struct V {
+            Path& p;
+            const Affine& m;
+            void move(Point a) { p.move_to(m(a)); }
+            void line(Point, Point b) { p.line_to(m(b)); }
+            void quad(Point, Point c, Point b) { p.quad_to(m(c), m(b)); }
+            void cubic(Point, Point c1, Point c2, Point b) { p.cubic_to(m(c1), m(c2), m(b)); }
+            void conic(Point, Point c, Point b, double w) { p.conic_to(m(c), m(b), w); }
+            void close(Point, Point) { p.close(); }
+        } v{into, m};
+        other.visit(v);
+        return into;
+    };
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-50, 50);
+    auto pt = [&] { return Point{u(rng), u(rng)}; };
+    auto random_path = [&](int verbs) {
+        Path p;
+        for (int k = 0; k < verbs; ++k) {
+            switch (rng() % 7) {
+                case 0: p.move_to(pt()); break;
+                case 1: p.line_to(pt()); break;
+                case 2: p.quad_to(pt(), pt()); break;
+                case 3: p.cubic_to(pt(), pt(), pt()); break;
+                case 4: p.conic_to(pt(), pt(), 0.5 + (rng() % 4)); break;
+                case 5: p.close(); break;
+                default: p.close().line_to(pt()); break;  // a segment after a close
+            }
+        }
+        return p;
+    };
+    for (int iter = 0; iter < 300; ++iter) {
+        Path head = random_path(static_cast<int>(rng() % 6));
+        if (iter % 5 == 0) head.move_to(pt());  // ends on a lone move, which other's first move replaces
+        const Path other = random_path(static_cast<int>(rng() % 9));
+        const Affine m = iter % 2 ? Affine{} : Affine::rotate_degrees(u(rng)) * Affine::scale(2, -3);
+        const Path want = replay(head, other, m);
+        Path got = head;
+        got.append(other, m);
+        if (other.empty()) {  // nothing added (append also ends the head's open contour)
+            CHECK(std::ranges::equal(got.verbs(), head.verbs()));
+            CHECK(std::ranges::equal(got.points(), head.points()));
+            continue;
+        }
+        REQUIRE(got == want);
+        CHECK(got.control_bounds() == want.control_bounds());
+        CHECK(got.current_point() == want.current_point());
+        // What comes next continues alike (the open contour and its start point carried over).
+        const Point q = pt();
+        got.line_to(q).close().line_to(q);
+        Path next = want;
+        next.line_to(q).close().line_to(q);
+        CHECK(got == next);
     }
 }
 

@@ -99,6 +99,7 @@ public:
 
 private:
     void ensure_contour();
+    bool append_whole(const Path& other, const Affine& m);
     void push_point(Point p) {
         points_.push_back(p);
         include(p);

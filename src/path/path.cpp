@@ -150,6 +150,7 @@ Path& Path::add_polygon(std::span<const Point> pts, bool close_it) {
 Path& Path::append(const Path& other) { return append(other, Affine{}); }
 
 Path& Path::append(const Path& other, const Affine& m) {
+    if (append_whole(other, m)) return *this;
     struct V {
         Path& p;
         const Affine& m;
@@ -164,6 +165,50 @@ Path& Path::append(const Path& other, const Affine& m) {
     open_ = false;
     other.visit(v);
     return *this;
+}
+
+// append() in one piece: when `other` is as the builder methods make paths (every contour opens
+// with one move, segments and closes only inside a contour) and this path does not end on a lone
+// move (which other's first move would replace), appending segment by segment adds exactly other's
+// verbs, its points mapped by m and its weights. False (nothing done) otherwise.
+bool Path::append_whole(const Path& other, const Affine& m) {
+    if (!verbs_.empty() && verbs_.back() == Verb::Move) return false;
+    bool open = false;
+    Verb prev = Verb::Close;
+    std::size_t pi = 0, start = 0, cur = 0;
+    for (const Verb v : other.verbs_) {
+        switch (v) {
+            case Verb::Move:
+                if (prev == Verb::Move) return false;
+                start = cur = pi++;
+                open = true;
+                break;
+            case Verb::Close:
+                if (!open) return false;
+                cur = start;
+                open = false;
+                break;
+            default:
+                if (!open) return false;
+                pi += static_cast<std::size_t>(verb_point_count(v));
+                cur = pi - 1;
+                break;
+        }
+        prev = v;
+    }
+    if (pi != other.points_.size()) return false;
+    if (other.verbs_.empty()) {
+        open_ = false;
+        return true;
+    }
+    const std::size_t base = points_.size();
+    verbs_.insert(verbs_.end(), other.verbs_.begin(), other.verbs_.end());
+    for (const Point& p : other.points_) push_point(m(p));
+    weights_.insert(weights_.end(), other.weights_.begin(), other.weights_.end());
+    open_ = open;
+    start_ = points_[base + start];
+    current_ = points_[base + cur];
+    return true;
 }
 
 Rect Path::control_bounds() const {
