@@ -369,6 +369,21 @@ TEST_CASE("Path: append equals adding the other path's segments one by one", "[f
         next.line_to(q).close().line_to(q);
         CHECK(got == next);
     }
+    // add_polygon adds its lines in one piece: the same as a move and one line_to per point.
+    for (int iter = 0; iter < 50; ++iter) {
+        Path head = random_path(static_cast<int>(rng() % 4));
+        std::vector<Point> pts(1 + rng() % 6);
+        for (Point& p : pts) p = pt();
+        const bool close = iter % 2 == 0;
+        Path want = head;
+        want.move_to(pts[0]);
+        for (std::size_t i = 1; i < pts.size(); ++i) want.line_to(pts[i]);
+        if (close) want.close();
+        Path got = head;
+        got.add_polygon(pts, close);
+        REQUIRE(got == want);
+        CHECK(got.control_bounds() == want.control_bounds());
+    }
 }
 
 TEST_CASE("Path: control bounds and finiteness are kept up to date as the path changes", "[flatten][path]") {

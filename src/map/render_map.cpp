@@ -130,10 +130,11 @@ struct PathVisitor final : PieceVisitor {
     double point_radius = 3;
     Path fill;   // polygons + point disks
     Path lines;  // open polylines, to be stroked
+    std::vector<Point> mapped;  // a ring in pixel space
     void ring(const std::vector<Point>& pts) override {
-        fill.move_to(m.apply(pts[0]));
-        for (std::size_t i = 1; i < pts.size(); ++i) fill.line_to(m.apply(pts[i]));
-        fill.close();
+        mapped.resize(pts.size());
+        for (std::size_t i = 0; i < pts.size(); ++i) mapped[i] = m.apply(pts[i]);
+        fill.add_polygon(mapped);
     }
     void line(const std::vector<Point>& pts) override {
         lines.move_to(m.apply(pts[0]));

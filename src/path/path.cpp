@@ -142,7 +142,11 @@ Path& Path::add_round_rect(const Rect& r, double rx, double ry) {
 Path& Path::add_polygon(std::span<const Point> pts, bool close_it) {
     if (pts.empty()) return *this;
     move_to(pts[0]);
-    for (std::size_t i = 1; i < pts.size(); ++i) line_to(pts[i]);
+    // The lines in one piece: what line_to does for each point once the contour is open.
+    verbs_.insert(verbs_.end(), pts.size() - 1, Verb::Line);
+    points_.reserve(points_.size() + pts.size() - 1);
+    for (std::size_t i = 1; i < pts.size(); ++i) push_point(pts[i]);
+    current_ = pts.back();
     if (close_it) close();
     return *this;
 }
