@@ -9,21 +9,22 @@ namespace casteljau {
 
 namespace {
 
-// Longitudes made continuous: each step is taken the short way round (|step| <= 180).
+// Longitudes made continuous: each step is taken the short way round (|step| <= 180), by adding
+// to each position the whole turns (multiples of 360) its steps so far took the short way; the
+// positions before the first such step are copied exactly.
 // Returns true when some step was changed (the ring or line crosses the antimeridian).
 bool unwrap(std::span<const Point> in, std::vector<Point>& out) {
     out.clear();
     out.reserve(in.size() + 2);
+    double turns = 0;
     bool crossed = false;
     for (std::size_t i = 0; i < in.size(); ++i) {
-        if (i == 0) {
-            out.push_back(in[0]);
-            continue;
+        if (i > 0) {
+            const double d = in[i].x - in[i - 1].x;
+            if (d > 180) { turns -= 360; crossed = true; }
+            else if (d < -180) { turns += 360; crossed = true; }
         }
-        double d = in[i].x - in[i - 1].x;
-        if (d > 180) { d -= 360; crossed = true; }
-        else if (d < -180) { d += 360; crossed = true; }
-        out.push_back({out.back().x + d, in[i].y});
+        out.push_back({in[i].x + turns, in[i].y});
     }
     return crossed;
 }

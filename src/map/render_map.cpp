@@ -40,12 +40,20 @@ double ring_area2(std::span<const Point> r) {
     return s;
 }
 
+// Whether some step of the ring or line goes more than half way round (split_ring_at_antimeridian
+// then cuts it).
+bool crosses_antimeridian(std::span<const Point> r) {
+    for (std::size_t i = 1; i < r.size(); ++i)
+        if (std::fabs(r[i].x - r[i - 1].x) > 180) return true;
+    return false;
+}
+
 class Projector {
 public:
     explicit Projector(const MapProjection& p) : proj_(p), densify_(!p.preserves_graticule_lines()) {}
 
     // Projects a lon/lat polyline into `out` (points that cannot be projected are dropped).
-    void project(const std::vector<Point>& in, bool closed, std::vector<Point>& out) const {
+    void project(std::span<const Point> in, bool closed, std::vector<Point>& out) const {
         out.clear();
         out.reserve(in.size());
         Point q;
@@ -93,6 +101,20 @@ public:
                 const std::uint32_t end = g.ring_ends[ring];
                 std::span<const Point> r = std::span<const Point>(g.points).subspan(start, end - start);
                 start = end;
+                if (!crosses_antimeridian(r)) {
+                    // What split_ring_at_antimeridian gives such a ring, without its copies: the
+                    // ring less its repeated closing position, oriented, projected.
+                    if (r.size() < 3) continue;
+                    if (r.front() == r.back()) r = r.first(r.size() - 1);
+                    const double a = ring_area2(r);
+                    if ((exterior && a < 0) || (!exterior && a > 0)) {
+                        reversed_.assign(r.rbegin(), r.rend());
+                        r = reversed_;
+                    }
+                    project(r, true, projected_);
+                    if (projected_.size() >= 3) v.ring(projected_);
+                    continue;
+                }
                 pieces_.clear();
                 split_ring_at_antimeridian(r, pieces_);
                 for (auto& piece : pieces_) {
@@ -110,6 +132,7 @@ private:
     const MapProjection& proj_;
     bool densify_;
     mutable std::vector<std::vector<Point>> pieces_;
+    mutable std::vector<Point> reversed_;
     mutable std::vector<Point> projected_;
 };
 
