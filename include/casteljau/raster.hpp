@@ -32,6 +32,10 @@
 // in one buffer as it is flattened; larger ones are swept in bands (strips) of at most 2^18 cells.
 //
 // Thread-safety: a Rasterizer holds scratch buffers; use one per thread. Masks are values.
+// Memory kept: a destroyed Rasterizer's buffers wait, process-wide, for the next Rasterizer made
+// (at most 8 of them, each first trimmed to the size of a fill of about 65,000 edges: a few MiB),
+// so that short-lived rasterizers (one per worker per render_map call) do not map their buffers
+// afresh, page by page.
 #pragma once
 
 #include <cstdint>

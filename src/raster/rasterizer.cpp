@@ -36,8 +36,8 @@ namespace {
 constexpr std::size_t kMaxStripCells = std::size_t(1) << 18;
 
 // Spare rasterizer states kept for reuse (see SparePool), and the edge records one may keep.
-constexpr std::size_t kMaxSpare = 16;
-constexpr std::size_t kMaxSpareEdges = std::size_t(1) << 18;
+constexpr std::size_t kMaxSpare = 8;
+constexpr std::size_t kMaxSpareEdges = std::size_t(1) << 16;
 
 // A path without a topology verdict is classified before filling when its box's width + height
 // reaches this many pixels per verb (see Rasterizer::fill).
