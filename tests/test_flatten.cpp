@@ -258,9 +258,12 @@ TEST_CASE("flatten and fill: more than limits::kMaxFlattenedSegments segments is
     }
 }
 
-TEST_CASE("fill: a rasterizer interrupted by the edge limit renders the next shape as a fresh one does", "[flatten][limits]") {
-    // The limit hit inside the engine (a small box) leaves its per-cell state half written:
-    // a zigzag drawn twice over the whole box first makes every cell it crosses a candidate.
+namespace {
+
+// A shape that hits the edge limit inside the engine (a small box, 48 x 48, at tolerance 1e-9),
+// leaving its per-cell state half written: a zigzag drawn twice over the whole box first makes
+// every cell it crosses a candidate.
+Path limit_breaking_shape() {
     Path big;
     for (int pass = 0; pass < 2; ++pass) {
         big.move_to(0.5, 0.3);
@@ -268,10 +271,22 @@ TEST_CASE("fill: a rasterizer interrupted by the edge limit renders the next sha
     }
     big.move_to(10, 10);
     for (int i = 0; i < 129; ++i) big.cubic_to({60, 60}, {-40, 60}, {10, 10});
+    return big;
+}
+
+// Overlapping and touching contours: visits, candidates and exact cells.
+Path overlapping_shapes() {
+    Path shapes;
+    shapes.add_circle({20, 20}, 12).add_circle({28, 22}, 9).add_rect({5.5, 18.25, 40.5, 19.0});
+    return shapes;
+}
+
+}  // namespace
+
+TEST_CASE("fill: a rasterizer interrupted by the edge limit renders the next shape as a fresh one does", "[flatten][limits]") {
+    const Path big = limit_breaking_shape(), shapes = overlapping_shapes();
     FillOptions fine;
     fine.tolerance = 1e-9;
-    Path shapes;  // overlapping and touching contours: visits, candidates and exact cells
-    shapes.add_circle({20, 20}, 12).add_circle({28, 22}, 9).add_rect({5.5, 18.25, 40.5, 19.0});
     Rasterizer used, fresh;
     for (int round = 0; round < 2; ++round) {
         CHECK_THROWS_AS(used.fill_mask(big, Affine{}, fine, IRect{0, 0, 48, 48}), Error);
@@ -285,17 +300,9 @@ TEST_CASE("fill: a rasterizer interrupted by the edge limit renders the next sha
 TEST_CASE("fill: a rasterizer made after one destroyed mid-fill renders as a fresh one does", "[flatten][limits]") {
     // A destroyed rasterizer's state is kept for the next one made (the spare pool in
     // rasterizer.cpp), half written when the edge limit stopped its last fill.
-    Path big;
-    for (int pass = 0; pass < 2; ++pass) {
-        big.move_to(0.5, 0.3);
-        for (int row = 0; row < 48; ++row) big.line_to(row % 2 ? 0.5 : 47.5, row + 0.7);
-    }
-    big.move_to(10, 10);
-    for (int i = 0; i < 129; ++i) big.cubic_to({60, 60}, {-40, 60}, {10, 10});
+    const Path big = limit_breaking_shape(), shapes = overlapping_shapes();
     FillOptions fine;
     fine.tolerance = 1e-9;
-    Path shapes;
-    shapes.add_circle({20, 20}, 12).add_circle({28, 22}, 9).add_rect({5.5, 18.25, 40.5, 19.0});
     Rasterizer reference;
     const Mask want = reference.fill_mask(shapes, Affine{}, FillOptions{}, IRect{0, 0, 48, 48});
     for (int round = 0; round < 3; ++round) {
@@ -311,21 +318,22 @@ TEST_CASE("fill: a rasterizer made after one destroyed mid-fill renders as a fre
 }
 
 TEST_CASE("Path: append equals adding the other path's segments one by one", "[flatten][path]") {
-    // The reference: other's segments replayed through the builder (moves collapse, a segment
-    // after a close opens a contour at the close's point). Other's first verb is a move, so the
-    // head's open contour ends there.
+    // The reference: other's verbs replayed through the builder, read off its arrays (moves
+    // collapse, a segment after a close opens a contour at the close's point). Other's first verb
+    // is a move, so the head's open contour ends there.
     auto replay = [](Path into, const Path& other, const Affine& m) {
-        struct V {
-            Path& p;
-            const Affine& m;
-            void move(Point a) { p.move_to(m(a)); }
-            void line(Point, Point b) { p.line_to(m(b)); }
-            void quad(Point, Point c, Point b) { p.quad_to(m(c), m(b)); }
-            void cubic(Point, Point c1, Point c2, Point b) { p.cubic_to(m(c1), m(c2), m(b)); }
-            void conic(Point, Point c, Point b, double w) { p.conic_to(m(c), m(b), w); }
-            void close(Point, Point) { p.close(); }
-        } v{into, m};
-        other.visit(v);
+        const auto pts = other.points();
+        const auto ws = other.weights();
+        std::size_t p = 0, w = 0;
+        for (const Verb v : other.verbs()) {
+            if (v == Verb::Move) into.move_to(m(pts[p]));
+            else if (v == Verb::Line) into.line_to(m(pts[p]));
+            else if (v == Verb::Quad) into.quad_to(m(pts[p]), m(pts[p + 1]));
+            else if (v == Verb::Cubic) into.cubic_to(m(pts[p]), m(pts[p + 1]), m(pts[p + 2]));
+            else if (v == Verb::Conic) into.conic_to(m(pts[p]), m(pts[p + 1]), ws[w++]);
+            else into.close();
+            p += static_cast<std::size_t>(verb_point_count(v));
+        }
         return into;
     };
     std::mt19937 rng(11);
