@@ -103,32 +103,32 @@ public:
                 start = end;
                 if (!crosses_antimeridian(r)) {
                     // What split_ring_at_antimeridian gives such a ring, without its copies: the
-                    // ring less its repeated closing position, oriented, projected.
+                    // ring less its repeated closing position.
                     if (r.size() < 3) continue;
                     if (r.front() == r.back()) r = r.first(r.size() - 1);
-                    const double a = ring_area2(r);
-                    if ((exterior && a < 0) || (!exterior && a > 0)) {
-                        reversed_.assign(r.rbegin(), r.rend());
-                        r = reversed_;
-                    }
-                    project(r, true, projected_);
-                    if (projected_.size() >= 3) v.ring(projected_);
+                    ring_piece(r, exterior, v);
                     continue;
                 }
                 pieces_.clear();
                 split_ring_at_antimeridian(r, pieces_);
-                for (auto& piece : pieces_) {
-                    // Exteriors counter-clockwise in lon/lat (positive area), holes clockwise.
-                    const double a = ring_area2(piece);
-                    if ((exterior && a < 0) || (!exterior && a > 0)) std::reverse(piece.begin(), piece.end());
-                    project(piece, true, projected_);
-                    if (projected_.size() >= 3) v.ring(projected_);
-                }
+                for (const auto& piece : pieces_) ring_piece(piece, exterior, v);
             }
         }
     }
 
 private:
+    // One piece of a ring: oriented (exteriors counter-clockwise in lon/lat, positive area; holes
+    // clockwise), projected, handed to the visitor.
+    void ring_piece(std::span<const Point> r, bool exterior, PieceVisitor& v) const {
+        const double a = ring_area2(r);
+        if ((exterior && a < 0) || (!exterior && a > 0)) {
+            reversed_.assign(r.rbegin(), r.rend());
+            r = reversed_;
+        }
+        project(r, true, projected_);
+        if (projected_.size() >= 3) v.ring(projected_);
+    }
+
     const MapProjection& proj_;
     bool densify_;
     mutable std::vector<std::vector<Point>> pieces_;

@@ -144,7 +144,6 @@ Path& Path::add_polygon(std::span<const Point> pts, bool close_it) {
     move_to(pts[0]);
     // The lines in one piece: what line_to does for each point once the contour is open.
     verbs_.insert(verbs_.end(), pts.size() - 1, Verb::Line);
-    points_.reserve(points_.size() + pts.size() - 1);
     for (std::size_t i = 1; i < pts.size(); ++i) push_point(pts[i]);
     current_ = pts.back();
     if (close_it) close();
