@@ -3,8 +3,10 @@
 # outside the source tree, the C++ scene with find_package(casteljau CONFIG), the C scene with
 # pkg-config, and the Python scene with the ctypes binding installed by pip; their PNGs are
 # compared with golden/install_scene.png (tests/install/png_check.py: sampled pixels against the
-# scene's geometry, then pixel for pixel). Also: the shared library's SONAME and its exported
-# symbols (only casteljau_* and the C++ API of namespace casteljau), the CLI and the fonts.
+# scene's geometry, then pixel for pixel); a CMake project that sets no C++ standard
+# (tests/install/consumer), with the shared and the static library. Also: the shared library's
+# SONAME and its exported symbols (only casteljau_* and the C++ API of namespace casteljau), the
+# CLI and the fonts.
 # Usage: check_install.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 build=$(cd "$1" && pwd)
@@ -40,6 +42,13 @@ cmake -S "$src/tests/install/cxx" -B "$work/cxx" -DCMAKE_PREFIX_PATH="$prefix" -
   -DCMAKE_BUILD_RPATH="$libdir" > "$work/cxx.log" 2>&1 || { cat "$work/cxx.log"; fail "configure the C++ consumer"; }
 cmake --build "$work/cxx" >> "$work/cxx.log" 2>&1 || { cat "$work/cxx.log"; fail "build the C++ consumer"; }
 "$work/cxx/scene" "$work/scene_cxx.png" "$font" || fail "C++ scene"
+
+# C++ with find_package from a project that sets no C++ standard: the imported targets carry it.
+cmake -S "$src/tests/install/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_BUILD_RPATH="$libdir" > "$work/consumer.log" 2>&1 || { cat "$work/consumer.log"; fail "configure the plain consumer"; }
+cmake --build "$work/consumer" >> "$work/consumer.log" 2>&1 || { cat "$work/consumer.log"; fail "build the plain consumer (no CMAKE_CXX_STANDARD)"; }
+"$work/consumer/consumer" "$work/consumer.png" || fail "plain consumer (shared library)"
+"$work/consumer/consumer_static" "$work/consumer_static.png" || fail "plain consumer (static library)"
 
 # C with pkg-config.
 export PKG_CONFIG_PATH=$libdir/pkgconfig
