@@ -17,6 +17,7 @@ STAGES is the single source of truth for the layering: docs/ARCHITECTURE.md desc
 stage's CMake target (CMakeLists.txt) shows only the folders of the stages it may use.
 
 Usage: tools/check_layering.py [--root DIR]   (DIR: the repository, default: this script's ../)
+       tools/check_layering.py --cmake        (prints STAGES as CMake variables for the build)
 Exit status: 0 when every include is allowed, 1 otherwise.
 """
 
@@ -196,11 +197,33 @@ def check(root):
 
 
 
+def cmake_table():
+    """STAGES as CMake variables, for the build's stage targets: CASTELJAU_STAGES (lowest first),
+    and per stage CASTELJAU_STAGE_<name>_USES (every stage it may use, lowest first) and
+    CASTELJAU_STAGE_<name>_SEES (the src/ folders its include path shows: its own, and those of
+    the stages it may use unless it may include public headers only)."""
+    allowed, names = allowed_stages(), [name for name, _, _ in STAGES]
+    lines = [f"# Written by {STAGES_FILE} --cmake from its table STAGES.",
+             f"set(CASTELJAU_STAGES {' '.join(names)})"]
+    for name in names:
+        uses = [n for n in names if n in allowed[name]]
+        sees = [name] + ([] if name in PUBLIC_ONLY else uses)
+        lines.append(f"set(CASTELJAU_STAGE_{name}_USES {' '.join(uses)})")
+        lines.append(f"set(CASTELJAU_STAGE_{name}_SEES {' '.join(sees)})")
+    return "\n".join(lines) + "\n"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--root", type=Path, default=Path(__file__).resolve().parent.parent,
                         help="the repository (default: this script's parent folder's parent)")
-    root = parser.parse_args().root.resolve()
+    parser.add_argument("--cmake", action="store_true",
+                        help="print the stage table as CMake variables instead of checking")
+    args = parser.parse_args()
+    if args.cmake:
+        print(cmake_table(), end="")
+        return 0
+    root = args.root.resolve()
     if not (root / "src").is_dir() or not (root / "include" / "casteljau").is_dir():
         sys.exit(f"check_layering: {root} has no src/ and include/casteljau/")
     problems = check(root)
