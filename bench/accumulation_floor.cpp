@@ -1,11 +1,11 @@
 // bench/accumulation_floor.cpp: how fast can the accumulation step alone be?
 //
-// The speed target is 1.5x FreeType's smooth rasterizer on the glyph set of
-// compare_glyphs. This program measures lower bounds for two designs that casteljau could switch
+// A speed target of 1.5x FreeType's smooth rasterizer on the glyph set of compare_glyphs sets a
+// budget per glyph. This program measures lower bounds for two designs that casteljau could switch
 // to, on the same glyphs, in the same process as FreeType and casteljau:
 //
 //   FreeType          FT_Outline_Render of the outline: everything (flattening, cells, sweep, spans)
-//   budget            FreeType's time / 1.5: what casteljau may spend on everything to meet the target
+//   budget            FreeType's time / 1.5: what casteljau may spend on everything to be 1.5x as fast
 //   flatten           casteljau::flatten of the outline into a polygon (area-balanced, the polygon
 //                     fill scan-converts), nothing else: what any chord-based design pays first
 //   casteljau         Rasterizer::fill of the *already flattened* polygon (exact overlaps on; no

@@ -1,5 +1,5 @@
 // bench/compare_glyphs.cpp: side-by-side glyph rasterization, casteljau against its peers, in one
-// process on the same outlines (issue 2, item 9).
+// process on the same outlines.
 //
 // Every glyph of the benchmark set (glyph_set.hpp: DejaVu Sans, U+0021..U+007E and
 // U+00A1..U+017F, unhinted) is loaded with FreeType once per pixel size and converted, outside the
@@ -62,8 +62,8 @@ using bench::Renderer;
 // conics until |P0 - 2 P1 + P2| <= 1/4 px per axis (a deviation of up to 1/16 px, always on the
 // concave side), casteljau to its own tolerance; and they differ where contours overlap (FreeType
 // accumulates, casteljau is exact there). Their mean difference on this set is 0.05 to 1.5/255
-// depending on size and casteljau's tolerance (1.44/255 at 12 px with the default 0.015 px; see
-// BENCHMARKS.md). A broken render (offset, flipped, wrong fill rule) is far beyond this bound.
+// depending on size and casteljau's tolerance (1.44/255 at 12 px with the default 0.015 px; the
+// program prints the table). A broken render (offset, flipped, wrong fill rule) is far beyond this bound.
 constexpr double kMaxMeanVsFreeType = 2.0;
 // The exact reference for the error table: casteljau with a 0.001 px polygon (its exact-area
 // coverage is within a small fraction of 1/255 of the curves').

@@ -1,5 +1,5 @@
 #!/bin/sh
-# bench/tiles_pyramid.sh: the tile pyramid's throughput (issue 14): one process with 1 thread, one
+# bench/tiles_pyramid.sh: the tile pyramid's throughput: one process with 1 thread, one
 # with 2 threads, and 2 shards as two 1-thread processes side by side; each into a fresh folder.
 # Prints wall time, CPU time and tiles per second of wall time, then checks that the two shards
 # together wrote exactly the files of the unsharded run, byte for byte.

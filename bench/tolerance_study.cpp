@@ -8,7 +8,7 @@
 // throughput (thread CPU time, best of --runs rounds, round-robin over the tolerances), edges per glyph after
 // flattening, and the error against the reference in 1/255: mean over all box pixels, mean over
 // edge pixels (reference strictly between 0 and 255), max, and the share of pixels off by more
-// than 1. Issue 2's acceptance bounds for curved shapes are mean <= 0.5/255 and max <= 8/255.
+// than 1. The accuracy bounds for curved shapes are mean <= 0.5/255 and max <= 8/255.
 //
 // Usage: tolerance_study [--quick] [--runs R] [--min-time S] [--sizes 12,24,...]
 //                        [--tolerances 0.01,0.025,...]

@@ -18,7 +18,7 @@ namespace casteljau::testing {
 // gives 0.5/255, which the rasterizer is also held to up to float noise (kRoundedErr).
 inline constexpr double kPolygonMaxErr = 1.0;
 inline constexpr double kRoundedErr = 0.51;
-// Curves at the default tolerance against the finely flattened reference (issue 2 acceptance):
+// Curves at the default tolerance against the finely flattened reference (the accuracy bound):
 // max over every pixel, and mean over every pixel of the shape's pixel bounds (the compared
 // rectangle is always the shape's bounds plus at most a few pixels, never an arbitrary canvas).
 inline constexpr double kCurveMaxErr = 8.0;

@@ -315,7 +315,7 @@ TEST_CASE("fill rules: plain accumulation stays exact where the winding is simpl
     render(r, ref::to_path({{{1.3, 2.7}, {30.1, 9.9}, {12.4, 29.6}}}), Affine::identity(), {}, {0, 0, 32, 32});
     CHECK(r.last_stats().exact_cells == 0);
     // And what the exact path costs on text: exact cells against partially covered pixels,
-    // reported for the lead (no bound in the acceptance; every exact cell is cross-checked above).
+    // reported as a warning (no bound applies; every exact cell is cross-checked above).
     GlyphFont font(dejavu_sans_path());
     for (double px : {12.0, 24.0, 96.0}) {
         const Path p = font.text(U"Hamburgefonstiv 0123456789", px, {1, std::ceil(px)});

@@ -351,7 +351,7 @@ int supersampling_for(double size) { return size <= 12 ? 32 : size <= 24 ? 16 : 
 
 }  // namespace
 
-// The acceptance check of the text issue: every glyph U+0021..U+007E and U+00A1..U+017F of both
+// Glyph coverage against FreeType: every glyph U+0021..U+007E and U+00A1..U+017F of both
 // shipped Latin fonts, at 14 sizes from 9 to 200 px, with the origin stepping through quarter-pixel
 // offsets: our coverage (Rasterizer::fill_mask of Font::glyph_path, the text tolerance, exact
 // overlaps) against FreeType's smooth rendering of the same unhinted outline at the same origin.

@@ -1,5 +1,5 @@
 // `casteljau map` end to end: inputs by extension and on standard input, options, and every
-// bad-input case of issue 14 with its exit code and no output file left behind.
+// kind of bad input with its exit code and no output file left behind.
 #include <catch2/catch.hpp>
 
 #include <filesystem>

@@ -594,12 +594,12 @@ TEST_CASE("accuracy: error against the flattening tolerance", "[accuracy]") {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Regressions: minimal reproducers of bugs these tests found (BUGS.md).
+// Regressions: minimal reproducers of bugs these tests found, each named after what broke.
 
 TEST_CASE("raster regression: a square inside one pixel keeps all four edges in its exact cell", "[accuracy]") {
     // Four edges of one contour in one cell: three are accepted as one polyline, the fourth marks
-    // the cell, and the exact recomputation must see all four (it saw only the last three, so the
-    // square's bottom edge was missing and the coverage below it counted as inside).
+    // the cell, and the exact recomputation must see all four (with only the last three, the
+    // square's bottom edge would be missing and the coverage below it would count as inside).
     Rasterizer r;
     const Contour sq{{1.25, 2.25}, {1.75, 2.25}, {1.75, 2.75}, {1.25, 2.75}};
     for (const Contour& c : {sq, reversed(sq)})

@@ -29,9 +29,9 @@ int ft_cubic(const FT_Vector* c, const FT_Vector* d, const FT_Vector* t, void* u
 }
 }  // namespace
 
-// A cell accepted with three pieces keeps two edge ids in its tag; when a fourth edge later marked
-// it, the dropped piece was not logged and the exact recomputation ignored it (DejaVu Sans '#' at
-// 9 px: 232 instead of 202). For outlines whose winding keeps one sign, exact coverage can only be
+// A cell accepted with three pieces keeps two edge ids in its tag; when a fourth edge later marks
+// it, the dropped piece must be logged too, or the exact recomputation ignores it (DejaVu Sans '#'
+// at 9 px: 232 instead of 202). For outlines whose winding keeps one sign, exact coverage can only be
 // at most the accumulated one: integral of min(|w|, 1) <= min(|integral of w|, 1).
 TEST_CASE("regression: marked cells with three accepted pieces log the dropped piece", "[raster][regression]") {
     FT_Library lib;

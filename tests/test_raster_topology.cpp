@@ -474,7 +474,7 @@ TEST_CASE("topology: Linux Libertine glyphs Simple under similarity maps render 
     // Thin CFF curves have control hulls reaching across their strokes: half the glyphs (158 of
     // 316) are proven under every map, nearly all (313) under the similarity maps glyphs are drawn
     // with; each contour's orientation must then be decided with the slack of only the hulls its
-    // flattening can start from (with whole segment hulls only 282 were).
+    // flattening can start from (with whole segment hulls only 282 would be).
     CHECK(similar >= total * 97 / 100);
     CHECK(any < total * 60 / 100);
 }

@@ -826,9 +826,9 @@ TEST_CASE("parse_line_cap and parse_line_join read the SVG names and refuse othe
 }
 
 TEST_CASE("regression: a dash pattern too fine for its path is refused before any dash is made", "[stroke][regression]") {
-    // Found by fuzz_stroke in CI: a 2000-segment path with a dash pattern of tiny values made
-    // millions of dashes, each stroked and filled, past the fuzzer's 10 s timeout. The limit is
-    // now Limits::dashes = 2^18 dashes per path by default, checked before dashing.
+    // A 2000-segment path with a dash pattern of tiny values would make millions of dashes, each
+    // stroked and filled, past the fuzzer's 10 s timeout. Limits::dashes (2^18 dashes per path by
+    // default) is checked before dashing.
     Path p;
     p.move_to(0, 0);
     for (int i = 1; i <= 2000; ++i) p.line_to(i * 0.5, (i & 1) * 3.0);
@@ -839,11 +839,11 @@ TEST_CASE("regression: a dash pattern too fine for its path is refused before an
 }
 
 TEST_CASE("regression: round joins at a huge width stop at the path size limit, not after gigabytes", "[stroke][regression]") {
-    // Found by fuzz_stroke in CI: at a width of 1e12 against a 0.05 px tolerance every round join
-    // takes up to 32,768 arc points (the cap of 65,536 per turn), and a 2000-segment zig-zag grew
-    // one contour's sides to a 2 GiB vector before the size limit was checked at its end. The
-    // limit is now checked as the sides grow (fuzz/regressions/stroke/round-joins-at-huge-width-*
-    // fails the replay's 1 GiB allocation limit without it).
+    // At a width of 1e12 against a 0.05 px tolerance every round join takes up to 32,768 arc
+    // points (the cap of 65,536 per turn), so a 2000-segment zig-zag would grow one contour's sides
+    // to a 2 GiB vector if the size limit were checked only at its end. It is checked as the sides
+    // grow (fuzz/regressions/stroke/round-joins-at-huge-width-* fails the replay's 1 GiB
+    // allocation limit without that).
     Path p;
     p.move_to(0, 0);
     for (int i = 1; i <= 2000; ++i) p.line_to(i * 0.5, (i & 1) * 3.0);

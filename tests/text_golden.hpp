@@ -1,5 +1,5 @@
-// A small golden-image helper for the text tests (main had no shared harness when these were
-// written; tests/golden.hpp can replace it). golden/text/NAME.png is compared with the rendering
+// A small golden-image helper for the text tests (tests/golden.hpp, the shared harness, could
+// replace it). golden/text/NAME.png is compared with the rendering
 // under explicit tolerances (max and mean absolute difference per channel, 1/255 units). On a
 // mismatch NAME.actual.png and NAME.diff.png are written to <build>/golden-out/text/. Setting the
 // environment variable CASTELJAU_UPDATE_GOLDEN=1 rewrites the golden instead (an explicit opt-in;

@@ -8,7 +8,7 @@
 // parabola for w = 1 and a hyperbola for w > 1; a circular arc of sweep theta has its middle control
 // point where the end tangents meet and w = cos(theta / 2).
 //
-// Path route (issue 4, item 3): rational quadratics go to the rasterizer as Path's Conic verb
+// Path route: rational quadratics go to the rasterizer as Path's Conic verb
 // (Path::conic_to, after reparametrising to end weights 1); the flattener bounds the conic's
 // flatness itself. Rational lines become Line verbs. Rational curves of degree >= 3 are approximated
 // by polynomial cubics with a proven bound: for a piece R = A / w and its Hermite cubic C (same ends,

@@ -67,7 +67,7 @@ AtomicLimits& state() {
 }  // namespace
 
 Limits Limits::ceilings() noexcept {
-    Limits c;  // canvas, path, segment and PNG-chunk-count limits: the defaults are the ceilings
+    Limits c;  // canvas, path, segment and map-position limits: the defaults are the ceilings
     c.nesting_depth = 256;  // recursion depth of the SVG and JSON readers: a few KB of stack per level
     c.svg_elements = 100'000'000;
     c.svg_image_nesting = 16;

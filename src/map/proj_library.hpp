@@ -1,7 +1,7 @@
 // Map stage: PROJ, loaded when a projection first needs it.
 //
 // libproj brings about 35 more shared libraries with it (curl, TLS, Kerberos, LDAP, TIFF, ...);
-// linked directly, every casteljau process paid for loading and relocating them at start-up
+// linked directly, every casteljau process would pay for loading and relocating them at start-up
 // (about 5 ms, most of a `casteljau text` run) although only a PROJ projection uses them. So
 // PROJ is opened with dlopen by its soname (CASTELJAU_PROJ_SONAME, from the PROJ found at build
 // time) the first time a projection that is not built in is parsed, and its functions are called

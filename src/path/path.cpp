@@ -216,7 +216,7 @@ bool Path::append_whole(const Path& other, const Affine& m) {
 
 Rect Path::control_bounds() const {
     if (points_.empty()) return {};
-    if (!(cx0_ <= cx1_ && cy0_ <= cy1_)) {  // only NaN points: the old answer, from the first point
+    if (!(cx0_ <= cx1_ && cy0_ <= cy1_)) {  // only NaN points: computed point by point from the first
         Rect r{points_[0].x, points_[0].y, points_[0].x, points_[0].y};
         for (const Point& p : points_) r.include(p);
         return r;

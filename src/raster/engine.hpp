@@ -92,8 +92,8 @@ private:
     // Narrow shapes (at most kRowVectorMax SIMD vectors per row) without the overlap check are
     // accumulated by row vectors (see RowPiece in raster_internal.hpp): the walk only lists the
     // pieces of edges per row, and finish() adds each piece's exact area to its whole row at once,
-    // in float. 11 to 20 % faster from 12 to 96 px than the double cell walk without tracking
-    // (BENCHMARKS.md); glyphs proven simple take it. With the overlap check the cell walk stays:
+    // in float. 11 to 20 % faster from 12 to 96 px than the double cell walk without tracking;
+    // glyphs proven simple take it. With the overlap check the cell walk stays:
     // the visits need it anyway and it accumulates nearly for free alongside (row vectors on top
     // measured 5 % slower at 12 px, equal at 48 and 96 px).
     bool vec_ = false;
