@@ -26,7 +26,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/raster.hpp"
-#include "../tests/reference_area.hpp"
+#include "../tests/support/reference_area.hpp"
 
 namespace {
 
