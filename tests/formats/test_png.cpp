@@ -341,7 +341,7 @@ TEST_CASE("decode_png: Adam7-interlaced images decode like the same image non-in
 
 TEST_CASE("encode_png/decode_png: random premultiplied pixmaps round-trip exactly", "[png]") {
     // Exact because premultiply(unpremultiply(p)) == p for every valid premultiplied pixel
-    // (tests/test_premultiply.cpp checks that for all 32896 (c, a) pairs with c <= a).
+    // (tests/paint/test_premultiply.cpp checks that for all 32896 (c, a) pairs with c <= a).
     const std::pair<int, int> sizes[] = {{1, 1}, {1, 100}, {100, 1}, {61, 47}, {256, 16}};
     std::uint32_t seed = 1;
     for (const auto& [w, h] : sizes) {

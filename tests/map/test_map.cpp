@@ -1,5 +1,5 @@
 // The map stage: fit, projections, antimeridian split, seamless (area) compositing, strokes drawn
-// once, styles; checked against the independent exact-area reference (tests/reference_area).
+// once, styles; checked against the independent exact-area reference (tests/support/reference_area).
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // Fill rules (nonzero, even-odd) where plain accumulation is not exact: self-intersecting stars,
 // overlapping and nested contours in both orientations, stacked copies (winding far beyond 255),
 // winding +/-3, +1/-1 pairs sharing a pixel. Every pixel is compared with the independent exact
-// reference (tests/reference_area.*), crossings included.
+// reference (tests/support/reference_area.*), crossings included.
 #include <catch2/catch.hpp>
 
 #include <algorithm>

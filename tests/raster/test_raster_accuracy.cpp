@@ -1,5 +1,5 @@
 // Accuracy of the rasterizer's 8-bit coverage against the independent exact-area reference
-// (tests/reference_area.*): polygons must be exact to within 1/255 per pixel (rounding only);
+// (tests/support/reference_area.*): polygons must be exact to within 1/255 per pixel (rounding only);
 // curved shapes at the default tolerance within a mean of 0.5/255 and a max of 8/255 of the finely
 // flattened curve. Every case also checks the SpanSink contract (rows in order, inside the clip).
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// tests/accuracy_util.hpp: shared steps of the accuracy, fill-rule and golden tests: render with
+// tests/support/accuracy_util.hpp: shared steps of the accuracy, fill-rule and golden tests: render with
 // the rasterizer under test, compute the independent reference, compare, and keep running totals
 // for a final report. Test-only; uses Catch2 assertions.
 #pragma once

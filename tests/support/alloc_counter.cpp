@@ -1,4 +1,4 @@
-// tests/alloc_counter.cpp: see alloc_counter.hpp.
+// tests/support/alloc_counter.cpp: see alloc_counter.hpp.
 #include "alloc_counter.hpp"
 
 #include <cstdlib>

@@ -1,6 +1,6 @@
-// tests/alloc_counter.hpp: counts heap allocations made through operator new while a scope is
+// tests/support/alloc_counter.hpp: counts heap allocations made through operator new while a scope is
 // active, so that tests can check that memory grows with the work, not with the canvas.
-// Test-only: tests/alloc_counter.cpp replaces the global (non-aligned) operator new/delete of the
+// Test-only: tests/support/alloc_counter.cpp replaces the global (non-aligned) operator new/delete of the
 // test program; counting is per thread and off unless an AllocationScope is alive on that thread.
 #pragma once
 

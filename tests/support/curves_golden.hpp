@@ -1,5 +1,5 @@
 // Golden images for the curve pictures: golden/curves/NAME.png through the shared harness
-// (tests/golden.hpp: explicit tolerances, NAME.actual.png / NAME.diff.png in <build>/golden-out on
+// (tests/support/golden.hpp: explicit tolerances, NAME.actual.png / NAME.diff.png in <build>/golden-out on
 // a mismatch, CASTELJAU_UPDATE_GOLDEN=1 to rewrite). Each caller checks its picture independently
 // (pixels at computed positions) before it gets here.
 #pragma once

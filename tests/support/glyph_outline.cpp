@@ -1,4 +1,4 @@
-// tests/glyph_outline.cpp: see glyph_outline.hpp.
+// tests/support/glyph_outline.cpp: see glyph_outline.hpp.
 #include "glyph_outline.hpp"
 
 #include <ft2build.h>

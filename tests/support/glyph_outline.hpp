@@ -1,4 +1,4 @@
-// tests/glyph_outline.hpp: DejaVu Sans glyph outlines as casteljau Paths, loaded with FreeType
+// tests/support/glyph_outline.hpp: DejaVu Sans glyph outlines as casteljau Paths, loaded with FreeType
 // directly (FT_Outline_Decompose, unhinted, font units), for the accuracy tests. Test-only.
 //
 // Font units are y-up; glyph_path() maps them to pixel space (y down) with the given size and

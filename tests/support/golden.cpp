@@ -1,4 +1,4 @@
-// tests/golden.cpp: see golden.hpp.
+// tests/support/golden.cpp: see golden.hpp.
 #include "golden.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// tests/golden.hpp: the golden-image harness. Test-only.
+// tests/support/golden.hpp: the golden-image harness. Test-only.
 //
 // check_golden(name, actual, Tolerance{max_abs, mean_abs}, validated) compares a rendered Pixmap
 // with golden/NAME.png (NAME may contain folders, e.g. "raster/star_nonzero"):

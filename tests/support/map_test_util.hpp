@@ -1,7 +1,7 @@
 // Test helpers for the map stage: an independent exact-area reference of map features under the
 // equirectangular projection, built with the test's own arithmetic (antimeridian handled by
 // unwrapping each ring and drawing it at -360, 0 and +360 degrees, closing polar rings along the
-// pole), then tests/reference_area's slab integration.
+// pole), then tests/support/reference_area's slab integration.
 #pragma once
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// tests/raster_check.cpp: see raster_check.hpp.
+// tests/support/raster_check.cpp: see raster_check.hpp.
 #include "raster_check.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// tests/raster_check.hpp: run the rasterizer under test and compare its 8-bit coverage with the
+// tests/support/raster_check.hpp: run the rasterizer under test and compare its 8-bit coverage with the
 // independent reference (reference_area.hpp). Test-only.
 //
 // Errors are measured in units of 1/255: err = |actual_u8 - 255 * reference|. Correct rounding

@@ -1,4 +1,4 @@
-// tests/reference_area.cpp: the independent exact-area reference (see reference_area.hpp).
+// tests/support/reference_area.cpp: the independent exact-area reference (see reference_area.hpp).
 #include "reference_area.hpp"
 
 #include <algorithm>

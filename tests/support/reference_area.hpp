@@ -1,4 +1,4 @@
-// tests/reference_area.hpp: an independent exact-area reference for the rasterizer tests.
+// tests/support/reference_area.hpp: an independent exact-area reference for the rasterizer tests.
 //
 // Test-only code, written from scratch; it shares nothing with src/raster/ or src/path/flatten.cpp
 // (it reads Paths only through Path::visit and applies transforms with its own arithmetic), so

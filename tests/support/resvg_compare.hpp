@@ -1,5 +1,5 @@
 // The resvg corpora's comparison rules and size rule, shared by the Catch test of the older subset
-// (tests/test_svg_resvg.cpp) and the whole-suite conformance program (tests/conformance/).
+// (tests/svg/test_svg_resvg.cpp) and the whole-suite conformance program (tests/conformance/).
 //
 // Both work on 8-bit premultiplied RGBA (so faint pixels carry little weight); Δ is the largest
 // per-channel absolute difference at a pixel. See ../shared/conformance/resvg/README.md.

@@ -1,4 +1,4 @@
-// tests/temp_dir.hpp: one scratch folder per test process, removed when the process exits.
+// tests/support/temp_dir.hpp: one scratch folder per test process, removed when the process exits.
 // ctest runs the test cases of one file in parallel processes, so files written by tests (CLI
 // output, stderr captures, generated inputs) must not share a fixed path.
 #pragma once

@@ -1,4 +1,4 @@
-// Tests of the golden-image harness itself (tests/golden.*), in a scratch folder of the build tree.
+// Tests of the golden-image harness itself (tests/support/golden.*), in a scratch folder of the build tree.
 #include <catch2/catch.hpp>
 
 #include <filesystem>

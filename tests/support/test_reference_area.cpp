@@ -1,4 +1,4 @@
-// Tests of the independent exact-area reference itself (tests/reference_area.*): hand-computed
+// Tests of the independent exact-area reference itself (tests/support/reference_area.*): hand-computed
 // values, the two methods against each other, and winding-rule identities.
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
 // A small golden-image helper for the text tests (main had no shared harness when these were
-// written; tests/golden.hpp can replace it). golden/text/NAME.png is compared with the rendering
+// written; tests/support/golden.hpp can replace it). golden/text/NAME.png is compared with the rendering
 // under explicit tolerances (max and mean absolute difference per channel, 1/255 units). On a
 // mismatch NAME.actual.png and NAME.diff.png are written to <build>/golden-out/text/. Setting the
 // environment variable CASTELJAU_UPDATE_GOLDEN=1 rewrites the golden instead (an explicit opt-in;
@@ -19,7 +19,7 @@
 namespace text_test {
 
 inline void check_golden(const std::string& name, const casteljau::Pixmap& actual, int max_tol, double mean_tol) {
-    // The shared harness (tests/golden.hpp); the caller compared with FreeType first.
+    // The shared harness (tests/support/golden.hpp); the caller compared with FreeType first.
     casteljau::golden::check_golden("text/" + name, actual, {max_tol, mean_tol},
                                     {true, "text checked against FreeType (supersampled) before this call"});
 }
