@@ -1,4 +1,4 @@
-// The clock of examples/clock.cpp, in a header so that the golden test (tests/test_curves_golden.cpp)
+// The clock of examples/clock.cpp, in a header so that the golden test (tests/figures/test_curves_golden.cpp)
 // draws exactly the same picture and can check it.
 //
 // Everything is built from cubic Bézier arcs given as 13-point lists (4 arcs: P0..P3, P3..P6,

@@ -11,7 +11,7 @@
 //      through the per-cell overlap check): the same flattening, so they must agree to rounding,
 //      |difference| <= 1/255 at every pixel;
 //   2. for straight-edged paths, default options against the independent exact-area reference of
-//      tests/reference_area.* (slab integration): within 1/255 at every pixel;
+//      tests/support/reference_area.* (slab integration): within 1/255 at every pixel;
 //   3. a path classify_topology proves Simple renders through the fast path (that verdict given
 //      in FillOptions::topology) and with plain accumulation within 1/255 of the exact cells;
 //   4. under the similarity maps, at a flattening tolerance from 0.015 to 2 px (bits 4-5 of byte
@@ -26,7 +26,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/raster.hpp"
-#include "../tests/reference_area.hpp"
+#include "../tests/support/reference_area.hpp"
 
 namespace {
 

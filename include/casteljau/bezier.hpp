@@ -93,7 +93,7 @@ public:
     P operator()(double t) const { return eval(t); }
     // Bernstein form with Horner's rule: s^n sum C(n,i) P_i (t/s)^i for t <= 1/2 (s = 1 - t) and the
     // mirrored form in s/t above 1/2, so the ratio never exceeds 1. O(n), agrees with eval to 1e-12
-    // relative (measured over random curves up to degree 64 in tests/test_bezier.cpp).
+    // relative (measured over random curves up to degree 64 in tests/curves/test_bezier.cpp).
     P eval_bernstein(double t) const;
     // The k-th derivative (k >= 0; k > degree gives the zero vector):
     // n!/(n-k)! sum_i Delta^k P_i B_{i,n-k}(t).

@@ -19,7 +19,7 @@
 namespace casteljau {
 
 // Default flattening tolerance in pixels, chosen by measurement against the exact-area reference
-// (tests/test_raster_accuracy.cpp and bench/tolerance_study print the tables). Fills use
+// (tests/raster/test_raster_accuracy.cpp and bench/tolerance_study print the tables). Fills use
 // area-balanced quadratics (FlattenMode::AreaBalanced); at 0.015 px DejaVu Sans at 12 px has a
 // mean error of 0.17/255 and every size a maximum of at most 6/255, while 0.025 px already
 // reaches 9/255 at 256 px. Every case of the suite is within 0.5/255 mean and 8/255 max.

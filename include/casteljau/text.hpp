@@ -42,7 +42,7 @@
 
 namespace casteljau {
 
-// Flattening tolerance (px) used for glyphs. Chosen by measurement (tests/test_font.cpp, "Glyph
+// Flattening tolerance (px) used for glyphs. Chosen by measurement (tests/text/test_font.cpp, "Glyph
 // coverage ..."): against FreeType's rendering of the same outlines supersampled 4-16x, the worst
 // per-glyph mean difference (over the ink box) at 9-200 px is ~5-8/255 at 0.05 px (small dots and
 // rings lose area to their chords), ~2.5/255 at 0.02 px, ~1.1/255 at 0.01 px and ~0.9/255 at

@@ -1,7 +1,7 @@
 // Paint stage, compositing: blend_span (any blend mode, float formula, include/casteljau/blend_mode.hpp)
 // and source-over of a solid Paint, weighted by 8-bit coverage, onto premultiplied
 // RGBA8 pixels. Each channel is the exact source-over value rounded once to the nearest 1/255
-// (tests/test_composite.cpp checks every coverage against that formula); runs of full coverage with
+// (tests/paint/test_composite.cpp checks every coverage against that formula); runs of full coverage with
 // an opaque colour are plain stores. Optional linear-light blending converts
 // through lookup tables (sRGB -> linear float, linear 12-bit -> sRGB) and blends there.
 #include <algorithm>

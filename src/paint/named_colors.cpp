@@ -5,7 +5,7 @@
 // (/usr/share/fpcsrc/3.2.2/packages/rtl-objpas/src/inc/system.uitypes.pp: all 148 agree) and X11's
 // /usr/share/X11/rgb.txt (134 agree; gray/grey, green, maroon and purple differ by design; aqua,
 // crimson, fuchsia, indigo, lime, olive, rebeccapurple, silver and teal are not in it).
-// tests/test_color.cpp repeats the rgb.txt comparison whenever that file is present.
+// tests/paint/test_color.cpp repeats the rgb.txt comparison whenever that file is present.
 #include "paint/named_colors.hpp"
 
 #include <algorithm>

@@ -40,7 +40,7 @@ void sincos_degrees(double degrees, double& c, double& s) {
 double arc_cubic_error(double angle) {
     // Goldapp (1991): the distance from the center of the cubic with handles k = 4/3 tan(theta/4)
     // is between 1 and 1 + 2 sin^6(theta/4) / (27 cos^2(theta/4)). Checked by sampling in
-    // tests/test_svg_path.cpp.
+    // tests/path/test_arc.cpp.
     const double q = std::abs(angle) / 4;
     const double s = std::sin(q), c = std::cos(q);
     const double s2 = s * s;

@@ -4,7 +4,7 @@
 // support for the wider registers (XGETBV): SSSE3 = SSE, SSE2, SSE3, SSSE3; SSE4 = SSSE3 + SSE4.1,
 // SSE4.2, CLMUL, AES; AVX2 = SSE4 + AVX, AVX2, BMI, BMI2, FMA, F16C, LZCNT with YMM state enabled;
 // AVX3 = AVX2 + AVX-512 F, VL, DQ, BW, CD with ZMM and opmask state enabled; AVX3_DL = AVX3 + VNNI,
-// VPCLMULQDQ, VBMI, VBMI2, VAES, VPOPCNTDQ, BITALG, GFNI. tests/test_simd_dispatch.cpp checks the
+// VPCLMULQDQ, VBMI, VBMI2, VAES, VPOPCNTDQ, BITALG, GFNI. tests/raster/test_simd_dispatch.cpp checks the
 // result against Highway's own detection.
 #include "raster/simd_dispatch.hpp"
 

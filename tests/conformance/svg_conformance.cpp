@@ -1,7 +1,7 @@
 // svg_conformance: renders every file of the whole resvg test suite
 // (../shared/conformance/resvg-suite, 1,721 files listed in its manifest.tsv) at the suite's
 // reference size, compares each with its reference PNG by rule B (primary) and rule A (secondary)
-// of ../shared/conformance/resvg/README.md (tests/resvg_compare.hpp), prints pass counts per area
+// of ../shared/conformance/resvg/README.md (tests/support/resvg_compare.hpp), prints pass counts per area
 // and per feature folder, writes every failure as a diff picture (actual | reference | bad pixels)
 // into the output folder, and fails when a count drops below the minimum recorded in
 // CONFORMANCE.md's counts table.

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The SDL2 clock (examples/sdl/clock_sdl.cpp) under Xvfb: a few frames at a frozen time, a
 # screenshot read back from the window's renderer, compared pixel for pixel with example_clock's
-# PNG of the same time (whose picture tests/test_curves_golden.cpp checks). Exit 77 (a ctest skip)
+# PNG of the same time (whose picture tests/figures/test_curves_golden.cpp checks). Exit 77 (a ctest skip)
 # with a message when Xvfb or the SDL2 example is absent.
 # Usage: check_sdl_clock.sh EXAMPLE_CLOCK EXAMPLE_SDL_CLOCK|none
 set -euo pipefail
