@@ -12,7 +12,7 @@
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
-#include "platform/pixel_memory.hpp"
+#include "core/pixel_memory.hpp"
 
 using namespace casteljau;
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "filter/image.hpp"
-#include "parallel/for_each_index.hpp"
+#include "core/for_each_index.hpp"
 
 namespace casteljau::filter::detail {
 

@@ -14,7 +14,7 @@
 #include "casteljau/error.hpp"
 #include "casteljau/map.hpp"
 #include "casteljau/seamless.hpp"
-#include "parallel/for_each_index.hpp"
+#include "core/for_each_index.hpp"
 
 namespace casteljau {
 

@@ -10,7 +10,7 @@
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/png.hpp"
-#include "parallel/for_each_index.hpp"
+#include "core/for_each_index.hpp"
 
 namespace casteljau {
 

@@ -1,4 +1,4 @@
-// Platform (below every other stage): a shared library opened at run time.
+// Core stage (below every other): a shared library opened at run time.
 //
 // Libraries that only some commands need (PROJ for projections that are not built in, SQLite for
 // MBTiles) are not linked: every casteljau process would pay for loading and relocating them at
