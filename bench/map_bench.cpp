@@ -41,7 +41,7 @@
 #include "casteljau/canvas.hpp"
 #include "casteljau/geojson.hpp"
 #include "casteljau/map.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
 #include "casteljau/seamless.hpp"
 #include "casteljau/stroke.hpp"
 #include "timer.hpp"

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
 #include "cli/cli.hpp"
 
 namespace casteljau::cli {

@@ -25,7 +25,7 @@
 #include "casteljau/limits.hpp"
 #include "casteljau/filter.hpp"
 #include "casteljau/image.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
 #include "casteljau/shader.hpp"
 #include "casteljau/stroke.hpp"
 #include "casteljau/svg_path.hpp"

@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "casteljau/error.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
 #include "casteljau/tiles.hpp"
 #include "formats/sqlite_library.hpp"
 
