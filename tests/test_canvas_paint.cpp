@@ -13,6 +13,7 @@
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
 #include "core/pixel_memory.hpp"
+#include "casteljau/limits.hpp"
 
 using namespace casteljau;
 

@@ -28,18 +28,11 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/path.hpp"
 #include "casteljau/vec.hpp"
 
 namespace casteljau {
-
-namespace limits {
-// Highest Bézier degree accepted (65 control points). De Casteljau is stable far beyond this; the
-// limit keeps the O(n^2) stack buffers small and binomial coefficients (C(64, 32) ~ 1.8e18) finite.
-inline constexpr int kMaxBezierDegree = 64;
-// Deepest subdivision when approximating a higher-degree curve by cubics (2^16 pieces at most).
-inline constexpr int kMaxCubicApproxDepth = 16;
-}  // namespace limits
 
 // ---- Bernstein basis --------------------------------------------------------------------------
 

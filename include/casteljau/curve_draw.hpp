@@ -19,6 +19,7 @@
 
 #include "casteljau/bezier.hpp"
 #include "casteljau/geometry.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/paint.hpp"
 #include "casteljau/path.hpp"
 #include "casteljau/surface.hpp"

@@ -28,12 +28,6 @@
 
 namespace casteljau {
 
-namespace limits {
-inline constexpr int kMaxConvolveOrder = 64;               // feConvolveMatrix order per axis
-inline constexpr double kMaxFilterDeviation = 1000;        // blur standard deviation in device pixels (larger is clamped)
-inline constexpr long long kMaxConvolveWork = 1LL << 31;   // feConvolveMatrix kernel taps x region pixels
-}  // namespace limits
-
 namespace filter {
 
 // Where a primitive's input comes from.

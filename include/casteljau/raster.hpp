@@ -44,6 +44,7 @@
 
 #include "casteljau/flatten.hpp"
 #include "casteljau/geometry.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/path.hpp"
 
 namespace casteljau {

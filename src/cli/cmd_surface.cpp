@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "casteljau/curve_draw.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/spline.hpp"
 #include "casteljau/surface.hpp"

@@ -8,6 +8,7 @@
 #include "casteljau/error.hpp"
 #include "casteljau/file_io.hpp"
 #include "cli/cli.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau::cli {
 

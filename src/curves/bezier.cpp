@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "casteljau/limits.hpp"
 #include "curves/curve_util.hpp"
 
 namespace casteljau {

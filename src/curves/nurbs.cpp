@@ -1,5 +1,6 @@
 // Curve toolkit: rational Bézier curves, NURBS, conics and their Path form
 // (include/casteljau/nurbs.hpp).
+#include "casteljau/limits.hpp"
 #include "casteljau/nurbs.hpp"
 
 #include <algorithm>

@@ -9,6 +9,7 @@
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/spline.hpp"
 #include "casteljau/stroke.hpp"
 

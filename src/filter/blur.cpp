@@ -15,6 +15,7 @@
 
 #include "filter/image.hpp"
 #include "core/for_each_index.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau::filter::detail {
 

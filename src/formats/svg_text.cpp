@@ -17,6 +17,7 @@
 #include "casteljau/error.hpp"
 #include "text/bidi.hpp"
 #include "text/shape.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau::svg_text {
 

@@ -12,6 +12,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/file_io.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/tiles.hpp"
 #include "formats/sqlite_library.hpp"
 

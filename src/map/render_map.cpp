@@ -12,6 +12,7 @@
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/map.hpp"
 #include "casteljau/seamless.hpp"
 #include "core/for_each_index.hpp"
