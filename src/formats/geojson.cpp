@@ -15,7 +15,8 @@
 #include "casteljau/geojson.hpp"
 #include "casteljau/file_io.hpp"
 #include "formats/geojson_build.hpp"
-#include "formats/json_support.hpp"
+#include "json/json_support.hpp"
+#include "formats/json_properties.hpp"
 
 namespace casteljau {
 
