@@ -1,5 +1,5 @@
-// Formats stage: opening SQLite on first use (see sqlite_library.hpp).
-#include "formats/sqlite_library.hpp"
+// Map stage: opening SQLite on first use (see sqlite_library.hpp).
+#include "map/sqlite_library.hpp"
 
 #include "core/runtime_library.hpp"
 

@@ -1,4 +1,4 @@
-// Formats stage: SQLite, loaded when an MBTiles file is first written or read.
+// Map stage: SQLite, loaded when an MBTiles file is first written or read.
 //
 // Only `tiles -o FILE.mbtiles` and `tiles-merge` use SQLite, but linked directly it was bound at
 // every process's start-up: Debian's libsqlite3 is linked with BIND_NOW, so the dynamic loader
