@@ -458,7 +458,7 @@ TEST_CASE("stroke: hostile but finite inputs finish with finite output or a clea
     }
 }
 
-TEST_CASE("stroke: curves are flattened in user space with tolerance_px / max_scale", "[stroke]") {
+TEST_CASE("stroke: curves are flattened in user space with tolerance / max_scale", "[stroke]") {
     Path c;
     c.add_circle({0, 0}, 50);
     // Annulus 50 +- 5: area pi (55^2 - 45^2) = 1000 pi, the circle itself flattened.

@@ -180,7 +180,7 @@ struct JoinTolerance {
 // G1: the tangent directions agree (the first non-zero forward difference at each end is used, so a
 // coincident control point does not hide a tangent); G2: additionally the curvature vectors agree.
 template <CurvePoint P>
-Continuity join_continuity(const Bezier<P>& a, const Bezier<P>& b, const JoinTolerance& tol = {});
+Continuity join_continuity(const Bezier<P>& a, const Bezier<P>& b, const JoinTolerance& tolerance = {});
 
 // The first control points of the next curve (degree m; m = 0 means a's degree n) for a G1 join with
 // Q'(0) = alpha P'(1), alpha > 0: Q0 = P_n, Q1 = P_n + alpha (n/m) (P_n - P_(n-1)). Returns {Q0, Q1}.
