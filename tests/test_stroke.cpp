@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <random>
 #include <vector>
 
@@ -20,8 +19,6 @@
 using namespace casteljau;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 struct Contour {
     std::vector<Point> pts;

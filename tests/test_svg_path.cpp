@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -19,8 +18,6 @@
 using namespace casteljau;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // A readable, exact listing of a Path (verbs and points with 17 significant digits).
 std::string dump(const Path& p) {

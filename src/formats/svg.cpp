@@ -86,8 +86,6 @@ struct PatternTile {
     Affine transform;
 };
 
-constexpr double kPi = 3.14159265358979323846;
-
 // A path that counts in bounding boxes without being drawn.
 Item bounds_item(Path path, const Affine& transform) {
     Item it;

@@ -9,7 +9,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "casteljau/arc.hpp"
 #include "casteljau/error.hpp"
@@ -19,8 +18,6 @@
 namespace casteljau {
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // cos and sin of an angle in degrees, exact for multiples of 90 degrees (so that an axis-aligned
 // ellipse stays exactly axis-aligned).

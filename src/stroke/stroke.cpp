@@ -25,7 +25,6 @@
 // sagitta stays below the tolerance: r (1 - cos(phi/2)) <= tol, i.e. phi = 4 asin(sqrt(tol / 2r)).
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
@@ -34,7 +33,6 @@
 namespace casteljau::stroke_detail {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Points closer than this times the tolerance to the previous kept point are merged into it.
 constexpr double kMergeFactor = 1e-3;
 // At most this many arc steps per full turn, whatever the radius / tolerance ratio.
