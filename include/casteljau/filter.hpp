@@ -22,7 +22,7 @@
 #include <optional>
 #include <vector>
 
-#include "casteljau/canvas.hpp"
+#include "casteljau/blend_mode.hpp"
 #include "casteljau/geometry.hpp"
 #include "casteljau/paint.hpp"
 
