@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <numbers>
 #include <random>
 #include <vector>
 
@@ -20,7 +19,6 @@ using namespace svg_path_test;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Independent reference: SVG 2 F.6.5 / F.6.6 exactly as written in the specification.
 struct RefArc {

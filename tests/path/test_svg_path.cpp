@@ -7,12 +7,12 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "casteljau/arc.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/svg_path.hpp"
 #include "svg_path_test_util.hpp"
 
@@ -21,7 +21,6 @@ using namespace svg_path_test;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 }  // namespace
 

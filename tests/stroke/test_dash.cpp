@@ -4,7 +4,6 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <numbers>
 #include <span>
 #include <vector>
 
@@ -17,7 +16,6 @@ using namespace stroke_test;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 }  // namespace
 

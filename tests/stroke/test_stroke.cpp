@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <random>
 #include <vector>
 
@@ -23,7 +22,6 @@ using namespace stroke_test;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // ---- Independent reference for the stroke region, from the SVG definition -------------------
 // Convex pieces; each reports a conservative signed distance (positive inside): sd_in > 0 proves a
@@ -366,7 +364,7 @@ TEST_CASE("stroke: hostile but finite inputs finish with finite output or a clea
     }
 }
 
-TEST_CASE("stroke: curves are flattened in user space with tolerance_px / max_scale", "[stroke]") {
+TEST_CASE("stroke: curves are flattened in user space with tolerance / max_scale", "[stroke]") {
     Path c;
     c.add_circle({0, 0}, 50);
     // Annulus 50 +- 5: area pi (55^2 - 45^2) = 1000 pi, the circle itself flattened.
