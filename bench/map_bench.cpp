@@ -10,7 +10,7 @@
 //                 casteljau separate (Canvas::fill_path, source-over; with the topology of each
 //                 feature classified in the timed loop, so simple features are accumulated
 //                 plainly; and with FillOptions::exact_overlaps off, plain accumulation), casteljau seamless
-//                 (AreaCompositor, conflation-free), AGG (rasterizer_scanline_aa + scanline_p8,
+//                 (SeamlessCompositor, conflation-free), AGG (rasterizer_scanline_aa + scanline_p8,
 //                 rgba8 pre), Cairo (image surface ARGB32, cairo_fill, antialias default).
 //   fill+stroke:  the same plus a 0.8 px stroke of every ring with round joins: casteljau as the
 //                 map command does it (all outlines in one nonzero path: shared borders drawn once),
@@ -41,7 +41,7 @@
 #include "casteljau/canvas.hpp"
 #include "casteljau/geojson.hpp"
 #include "casteljau/map.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
 #include "casteljau/seamless.hpp"
 #include "casteljau/stroke.hpp"
 #include "timer.hpp"
@@ -159,9 +159,9 @@ int run(int argc, char** argv) {
         c.fill_options().exact_overlaps = false;
         for (const Path& p : paths) c.fill_path(p, Paint::solid(Color::black()));
     });
-    AreaCompositor ac(W, H);
+    SeamlessCompositor ac(W, H);
     Rasterizer raster;
-    // Every feature's fill in `color`, composited by area (last feature first) onto a cleared pm.
+    // Every feature's fill in `color`, composited seamlessly (last feature first) onto a cleared pm.
     auto seamless_fill = [&](Color color) {
         pm.fill(Color::transparent());
         ac.clear();
@@ -323,7 +323,7 @@ int run(int argc, char** argv) {
     row("fill: casteljau separate, topology per feature", t_sep_verdict, peer_fill);
     row("  of which classify_topology alone", t_classify, peer_fill);
     row("fill: casteljau separate, exact_overlaps off", t_sep_plain, peer_fill);
-    row("fill: casteljau seamless (area compositor)", t_seam, peer_fill);
+    row("fill: casteljau seamless compositor", t_seam, peer_fill);
     row("fill: AGG 2.6", t_agg, peer_fill);
     row("fill: Cairo", t_cairo, peer_fill);
     row("fill+stroke: casteljau seamless + union stroke", t_seam_stroke, peer_stroke);

@@ -4,6 +4,7 @@
 #include <span>
 
 #include "casteljau/image.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/png.hpp"
 #include "harness.hpp"
 

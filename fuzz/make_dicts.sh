@@ -32,8 +32,8 @@ header() { printf '# libFuzzer dictionary for %s, made by fuzz/make_dicts.sh fro
 } > "$out/css.dict"
 
 {
-  header fuzz_map_data "src/formats/geojson.cpp, topojson.cpp, json_support.cpp and src/map/map_style.cpp"
-  words src/formats/geojson.cpp src/formats/topojson.cpp src/formats/json_support.cpp src/map/map_style.cpp
+  header fuzz_map_data "src/formats/geojson.cpp, topojson.cpp, json_properties.cpp, src/json/json_support.cpp and src/map/map_style.cpp"
+  words src/formats/geojson.cpp src/formats/topojson.cpp src/formats/json_properties.cpp src/json/json_support.cpp src/map/map_style.cpp
   literal '{' '}' '[' ']' ':' ',' '{"type":' '"coordinates":[' '"arcs":[' '[[' ']]' '-180' '180' '-90' '90' '1e308' \
     '-0' '0.5' '\u0000' '\n'
 } > "$out/map_data.dict"

@@ -24,7 +24,6 @@ inline constexpr double kRoundedErr = 0.51;
 inline constexpr double kCurveMaxErr = 8.0;
 inline constexpr double kCurveMeanErr = 0.5;
 
-inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr FillRule kRules[] = {FillRule::NonZero, FillRule::EvenOdd};
 
 // Worst case seen over a series of comparisons, for a WARN line at the end of a test.

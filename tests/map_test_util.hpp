@@ -8,7 +8,7 @@
 #include <string>
 
 #include "casteljau/geojson.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
 #include "reference_area.hpp"
 
 namespace casteljau::test {

@@ -125,10 +125,6 @@ Pixmap coverage_pixmap(const Rendered& r) {
 
 namespace casteljau::testing {
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
-
 ref::Contour random_simple_polygon(std::mt19937& rng, Point c, double rmin, double rmax, int n) {
     // Angles: one per sector of 2 pi / n, jittered inside it, so consecutive angles differ by less
     // than pi: the polygon is star-shaped around c, hence simple.

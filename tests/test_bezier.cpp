@@ -8,6 +8,7 @@
 
 #include "casteljau/bezier.hpp"
 #include "curve_test_util.hpp"
+#include "casteljau/limits.hpp"
 
 using namespace casteljau;
 using namespace curve_test;

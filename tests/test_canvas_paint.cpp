@@ -12,7 +12,8 @@
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
-#include "platform/pixel_memory.hpp"
+#include "core/pixel_memory.hpp"
+#include "casteljau/limits.hpp"
 
 using namespace casteljau;
 

@@ -232,7 +232,7 @@ TEST_CASE("composite_span: runs of empty and full coverage at every offset and l
 
 TEST_CASE("blend_span source-over of a whole layer (no coverage): runs of transparent and opaque pixels at every offset",
           "[composite]") {
-    // A layer as the AreaCompositor leaves it: runs of transparent pixels, of opaque ones and of
+    // A layer as the SeamlessCompositor leaves it: runs of transparent pixels, of opaque ones and of
     // translucent ones, composited at every offset and length onto a translucent destination.
     constexpr std::size_t kPixels = 80;
     std::vector<std::uint8_t> layer(4 * kPixels);

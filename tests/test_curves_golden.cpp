@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "../examples/clock_face.hpp"
-#include "casteljau/curve_draw.hpp"
+#include "casteljau/figures.hpp"
 #include "casteljau/spline.hpp"
 #include "casteljau/surface.hpp"
 #include "curves_golden.hpp"

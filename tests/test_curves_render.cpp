@@ -1,7 +1,7 @@
 // Tests for the picture paths of the curve commands: bezier --render/--construction, spline
 // --render/--basis, and the surface command. They run the built binary (CASTELJAU_CLI_PATH), check
 // exit statuses and one-line errors, that failures leave no file, and that the PNG written is
-// pixel-for-pixel the library's drawing of the same input (curve_draw.hpp, which the golden tests
+// pixel-for-pixel the library's drawing of the same input (figures.hpp, which the golden tests
 // check in detail).
 #include <catch2/catch.hpp>
 
@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "casteljau/curve_draw.hpp"
+#include "casteljau/figures.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/spline.hpp"
 #include "cli_util.hpp"

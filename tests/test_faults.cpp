@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "casteljau/file_io.hpp"
 #include "casteljau/png.hpp"
 #include "cli_util.hpp"
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/file_io.hpp"
 #include "casteljau/paint.hpp"
 #include "casteljau/png.hpp"
 #include "skip.hpp"

@@ -12,8 +12,6 @@ using namespace casteljau;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 filter::FilterGraph blur_graph(int w, int h, double sx, double sy, filter::EdgeMode edge = filter::EdgeMode::None) {
     filter::FilterGraph g;
     g.region = Rect::from_xywh(0, 0, w, h);

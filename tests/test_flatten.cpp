@@ -8,6 +8,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/flatten.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/raster.hpp"
 
 using namespace casteljau;

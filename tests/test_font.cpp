@@ -12,6 +12,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/font.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/raster.hpp"
 #include "temp_dir.hpp"
 #include "text_support.hpp"

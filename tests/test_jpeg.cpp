@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
 #include "casteljau/image.hpp"
 
 using namespace casteljau;

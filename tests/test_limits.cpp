@@ -8,6 +8,7 @@
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
+#include "casteljau/file_io.hpp"
 #include "casteljau/flatten.hpp"
 #include "casteljau/font_database.hpp"
 #include "casteljau/font.hpp"

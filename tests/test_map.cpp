@@ -326,7 +326,7 @@ TEST_CASE("Seamless: complementary coverages of a shared edge always sum to full
         Path left, right;
         left.move_to(0, y0).line_to(x0, y0).line_to(x1, y1).line_to(0, y1).close();
         right.move_to(x0, y0).line_to(32, y0).line_to(32, y1).line_to(x1, y1).close();
-        AreaCompositor ac(32, 32);
+        SeamlessCompositor ac(32, 32);
         ac.add(raster, right, FillOptions{}, Color::black());
         ac.add(raster, left, FillOptions{}, Color::black());
         const int r0 = static_cast<int>(std::ceil(y0)), r1 = static_cast<int>(std::floor(y1));
@@ -341,7 +341,7 @@ TEST_CASE("Seamless: complementary coverages of a shared edge always sum to full
 
 TEST_CASE("Seamless: earlier fills take precedence where fills overlap", "[map][seamless]") {
     Rasterizer raster;
-    AreaCompositor ac(8, 8);
+    SeamlessCompositor ac(8, 8);
     Path a, b;
     a.add_rect(Rect{0, 0, 8, 8});
     b.add_rect(Rect{0, 0, 4.5, 8});
@@ -361,7 +361,7 @@ TEST_CASE("Seamless: reset() and clear() forget every earlier fill, composite_on
     Path big, dot;
     big.add_rect(Rect{0.5, 0.5, 31.5, 15.5});
     dot.add_rect(Rect{40, 20, 42, 22});
-    AreaCompositor ac(IRect{0, 0, 32, 16});
+    SeamlessCompositor ac(IRect{0, 0, 32, 16});
     ac.add(raster, big, FillOptions{}, Color::rgba(255, 0, 0));
     CHECK(ac.taken(10, 10) == 255);
     ac.reset(IRect{32, 16, 64, 32});  // same size elsewhere: the memory is reused
@@ -401,7 +401,7 @@ TEST_CASE("Seamless: band compositors give the whole-image compositor's pixels, 
                                      static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(128 + rng() % 128)));
     }
     Rasterizer raster;
-    AreaCompositor whole(64, 48);
+    SeamlessCompositor whole(64, 48);
     for (std::size_t i = 0; i < fills.size(); ++i) whole.add(raster, fills[i], FillOptions{}, colors[i], 0.9);
     Pixmap expected(64, 48);
     expected.fill(Color::rgba(10, 20, 30));
@@ -411,7 +411,7 @@ TEST_CASE("Seamless: band compositors give the whole-image compositor's pixels, 
     std::vector<std::uint8_t> memory(stride * 48, 0xAB);
     Pixmap banded = Pixmap::borrow(memory.data(), 64, 48, stride);
     banded.fill(Color::rgba(10, 20, 30));
-    std::optional<AreaCompositor> band;
+    std::optional<SeamlessCompositor> band;
     for (int y0 = 0; y0 < 48; y0 += 17) {
         const IRect region{0, y0, 64, std::min(48, y0 + 17)};
         if (band) band->reset(region);
@@ -546,20 +546,20 @@ TEST_CASE("Seamless: a compositor writing into a transparent target gives the pi
     b.add_rect(Rect{30.5, 1.5, 60.25, 29.5});
     c.add_circle(Point{31, 15}, 9.3);
     const IRect top{0, 0, 64, 16}, bottom{0, 16, 64, 32};
-    auto fills = [&](AreaCompositor& ac) {
+    auto fills = [&](SeamlessCompositor& ac) {
         ac.add(raster, c, FillOptions{}, Color::rgba(0, 0, 255, 128), 0.7);
         ac.add(raster, a, FillOptions{}, Color::rgba(255, 0, 0));
         ac.add(raster, b, FillOptions{}, Color::rgba(0, 160, 0, 200));
     };
     Pixmap want(64, 32);
-    AreaCompositor layer(top);
+    SeamlessCompositor layer(top);
     for (const IRect& band : {top, bottom}) {
         layer.reset(band);
         fills(layer);
         layer.composite_onto(want);
     }
     Pixmap got(64, 32);
-    AreaCompositor into(got, top);
+    SeamlessCompositor into(got, top);
     fills(into);
     into.composite_onto(got);  // nothing: the layer is got's own pixels
     into.reset_into(got, bottom);  // the top band's pixels stay

@@ -1,4 +1,4 @@
-// parallel::for_each_index (src/parallel/): every index runs exactly once whatever the number of
+// parallel::for_each_index (src/core/): every index runs exactly once whatever the number of
 // workers, worker ids stay in range, the first exception reaches the caller after all helpers
 // left; the helpers come from one process-wide pool of the size the caller sets
 // (casteljau/threads.hpp), shared by concurrent and nested calls, and unused after fork().
@@ -17,7 +17,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/threads.hpp"
-#include "parallel/for_each_index.hpp"
+#include "core/for_each_index.hpp"
 
 using casteljau::parallel::for_each_index;
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/paint.hpp"
 #include "casteljau/png.hpp"
 #include "png_test_util.hpp"

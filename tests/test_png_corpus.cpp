@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/file_io.hpp"
 #include "casteljau/paint.hpp"
 #include "casteljau/png.hpp"
 #include "png_test_util.hpp"

@@ -13,7 +13,7 @@
 #include "alloc_counter.hpp"
 #include "glyph_outline.hpp"
 #include "../fuzz/stroke_case.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
 #include "casteljau/stroke.hpp"
 
 using namespace casteljau;

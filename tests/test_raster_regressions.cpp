@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/raster.hpp"
 
 using namespace casteljau;

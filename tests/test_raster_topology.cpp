@@ -336,7 +336,7 @@ TEST_CASE("topology: verdicts after a path large enough to free the classifier's
     Path ring;
     const int n = (1 << 17) + 1;
     for (int i = 0; i < n; ++i) {
-        const double t = 2 * M_PI * i / n;
+        const double t = 2 * kPi * i / n;
         const Point q{1000 * std::cos(t), 1000 * std::sin(t)};
         if (i == 0) ring.move_to(q);
         else ring.line_to(q);

@@ -1,4 +1,4 @@
-// platform::RuntimeLibrary (src/platform/runtime_library.hpp) opens libraries that only some
+// platform::RuntimeLibrary (src/core/runtime_library.hpp) opens libraries that only some
 // commands need on first use: its errors name the library, and a casteljau process that draws
 // text loads neither SQLite nor PROJ, while one that writes MBTiles does load SQLite.
 #include <catch2/catch.hpp>
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cli_util.hpp"
-#include "platform/runtime_library.hpp"
+#include "core/runtime_library.hpp"
 
 using casteljau::platform::RuntimeLibrary;
 

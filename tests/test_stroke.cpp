@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <random>
 #include <vector>
 
@@ -20,8 +19,6 @@
 using namespace casteljau;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 struct Contour {
     std::vector<Point> pts;
@@ -458,7 +455,7 @@ TEST_CASE("stroke: hostile but finite inputs finish with finite output or a clea
     }
 }
 
-TEST_CASE("stroke: curves are flattened in user space with tolerance_px / max_scale", "[stroke]") {
+TEST_CASE("stroke: curves are flattened in user space with tolerance / max_scale", "[stroke]") {
     Path c;
     c.add_circle({0, 0}, 50);
     // Annulus 50 +- 5: area pi (55^2 - 45^2) = 1000 pi, the circle itself flattened.

@@ -7,19 +7,17 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "casteljau/arc.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/svg_path.hpp"
 
 using namespace casteljau;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // A readable, exact listing of a Path (verbs and points with 17 significant digits).
 std::string dump(const Path& p) {
@@ -720,7 +718,7 @@ TEST_CASE("svg arc: error bound formula and piece counts", "[svgpath]") {
     CHECK(arc_piece_count(kPi / 2, 3.7, kDefaultArcTolerance) == 2);
     CHECK(arc_piece_count(kPi, 1000, kDefaultArcTolerance) == 6);
     CHECK(arc_piece_count(kPi / 2, 1000, kDefaultArcTolerance) == 3);
-    CHECK(arc_piece_count(2 * kPi, 1, 1e-300) == kMaxArcPieces);
+    CHECK(arc_piece_count(2 * kPi, 1, 1e-300) == limits::kMaxArcPieces);
     // The count is minimal: one piece fewer would break the tolerance (or the 90-degree rule).
     for (double r : {0.5, 7.0, 100.0, 1000.0, 12345.0}) {
         for (double a : {0.3, 1.0, kPi / 2, 2.0, kPi, 5.0, 2 * kPi}) {

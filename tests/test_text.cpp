@@ -8,9 +8,9 @@
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
+#include "casteljau/shaping.hpp"
 #include "casteljau/text.hpp"
 #include "casteljau/threads.hpp"
-#include "text/bidi.hpp"
 #include "text_support.hpp"
 
 using namespace casteljau;
@@ -59,7 +59,6 @@ TEST_CASE("UTF-8 decoding replaces each maximal invalid subpart with one U+FFFD"
 }
 
 TEST_CASE("Bidi levels and visual order", "[text]") {
-    using namespace text_detail;
     std::vector<std::uint8_t> lv;
     // LTR paragraph with a Hebrew word and a number after it: the number joins the RTL run.
     const std::u32string s = U"ab \u05E9\u05DC 12 cd";
@@ -81,7 +80,7 @@ TEST_CASE("Bidi levels and visual order", "[text]") {
 
     std::vector<std::size_t> order;
     const std::vector<std::uint8_t> levels{0, 1, 1, 2, 2, 1, 0};
-    visual_order(levels, order);
+    bidi_visual_order(levels, order);
     CHECK(order == std::vector<std::size_t>{0, 5, 3, 4, 2, 1, 6});
 }
 

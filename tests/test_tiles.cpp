@@ -9,6 +9,7 @@
 #include <map>
 #include <numbers>
 
+#include "casteljau/file_io.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/tiles.hpp"
 #include "cli_util.hpp"

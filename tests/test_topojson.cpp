@@ -6,7 +6,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/geojson.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
 
 using namespace casteljau;
 

@@ -17,7 +17,7 @@
 //     max(rx, ry) * e(theta)
 // of the true ellipse (radii after the radius correction). Given a tolerance in path units, n is the
 // smallest count with pieces of at most 90 degrees for which that bound is <= tolerance (at most
-// kMaxArcPieces pieces; they reach the limit of double precision long before). The start of the first
+// limits::kMaxArcPieces pieces; they reach the limit of double precision long before). The start of the first
 // cubic is the current point and the end of the last is `end`, exactly.
 //
 // kDefaultArcTolerance = 1e-3 path units: at any radius the error is at most 1e-3 units, so arcs up to
@@ -31,12 +31,12 @@
 #pragma once
 
 #include "casteljau/geometry.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/path.hpp"
 
 namespace casteljau {
 
 inline constexpr double kDefaultArcTolerance = 1e-3;  // path units
-inline constexpr int kMaxArcPieces = 256;             // cubics per arc, at most
 
 // Upper bound of the radial error, relative to the radius, of the standard cubic for a circular arc
 // of `angle` radians (|angle| <= pi): e(angle) above.
@@ -45,7 +45,7 @@ double arc_cubic_error(double angle);
 // Number of cubics arc_to uses for an arc of `sweep_angle` radians on an ellipse whose larger radius
 // is `radius`, for the given tolerance (in the radius's units): the smallest n with
 // |sweep_angle| / n <= 90 degrees and radius * e(|sweep_angle| / n) <= tolerance, capped at
-// kMaxArcPieces; 0 for a zero sweep.
+// limits::kMaxArcPieces; 0 for a zero sweep.
 int arc_piece_count(double sweep_angle, double radius, double tolerance);
 
 // Appends the SVG arc from path.current_point() to `end` to `path` as cubic Beziers whose distance to

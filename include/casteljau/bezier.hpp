@@ -28,18 +28,11 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/path.hpp"
 #include "casteljau/vec.hpp"
 
 namespace casteljau {
-
-namespace limits {
-// Highest Bézier degree accepted (65 control points). De Casteljau is stable far beyond this; the
-// limit keeps the O(n^2) stack buffers small and binomial coefficients (C(64, 32) ~ 1.8e18) finite.
-inline constexpr int kMaxBezierDegree = 64;
-// Deepest subdivision when approximating a higher-degree curve by cubics (2^16 pieces at most).
-inline constexpr int kMaxCubicApproxDepth = 16;
-}  // namespace limits
 
 // ---- Bernstein basis --------------------------------------------------------------------------
 
@@ -187,7 +180,7 @@ struct JoinTolerance {
 // G1: the tangent directions agree (the first non-zero forward difference at each end is used, so a
 // coincident control point does not hide a tangent); G2: additionally the curvature vectors agree.
 template <CurvePoint P>
-Continuity join_continuity(const Bezier<P>& a, const Bezier<P>& b, const JoinTolerance& tol = {});
+Continuity join_continuity(const Bezier<P>& a, const Bezier<P>& b, const JoinTolerance& tolerance = {});
 
 // The first control points of the next curve (degree m; m = 0 means a's degree n) for a G1 join with
 // Q'(0) = alpha P'(1), alpha > 0: Q0 = P_n, Q1 = P_n + alpha (n/m) (P_n - P_(n-1)). Returns {Q0, Q1}.

@@ -5,8 +5,6 @@
 // they start. Thread-safety: plain value type.
 #pragma once
 
-#include <cstddef>
-#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -29,20 +27,5 @@ public:
 private:
     ErrorKind kind_;
 };
-
-// Fixed limits, and the defaults of the run-time limits of casteljau/limits.hpp (Limits: the
-// canvas, path and segment values here are also the highest values it accepts). README.md
-// "Limits" lists them all.
-namespace limits {
-inline constexpr int kMaxCanvasDimension = 32768;            // pixels per side
-inline constexpr long long kMaxCanvasPixels = 268435456LL;   // 2^28 pixels = 1 GiB of RGBA8
-inline constexpr std::size_t kMaxPathPoints = 1u << 24;      // points in one Path
-inline constexpr std::size_t kMaxFlattenedSegments = 1u << 23;  // line segments after flattening (~340 MB of edges)
-inline constexpr int kMaxFlattenDepth = 16;                  // subdivision depth per curve
-inline constexpr int kMaxNestingDepth = 64;                  // SVG element / group nesting (default)
-inline constexpr double kMaxCoordinate = 1e15;               // |coordinate| after transform
-inline constexpr std::size_t kMaxPngChunkBytes = 16u << 20;  // one PNG chunk's data (text, ICC, Exif)
-inline constexpr std::uint32_t kMaxPngAncillaryChunks = 1000;  // text, sPLT and unknown chunks kept per PNG
-}  // namespace limits
 
 }  // namespace casteljau

@@ -22,17 +22,11 @@
 #include <optional>
 #include <vector>
 
-#include "casteljau/canvas.hpp"
+#include "casteljau/blend_mode.hpp"
 #include "casteljau/geometry.hpp"
 #include "casteljau/paint.hpp"
 
 namespace casteljau {
-
-namespace limits {
-inline constexpr int kMaxConvolveOrder = 64;               // feConvolveMatrix order per axis
-inline constexpr double kMaxFilterDeviation = 1000;        // blur standard deviation in device pixels (larger is clamped)
-inline constexpr long long kMaxConvolveWork = 1LL << 31;   // feConvolveMatrix kernel taps x region pixels
-}  // namespace limits
 
 namespace filter {
 

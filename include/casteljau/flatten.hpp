@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "casteljau/geometry.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/path.hpp"
 
 namespace casteljau {

@@ -31,15 +31,10 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/geometry.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/path.hpp"
 
 namespace casteljau {
-
-namespace limits {
-// Largest font size (pixels per em) the text functions accept. Larger sizes would make single glyph
-// masks of hundreds of megabytes; draw huge text through a Canvas transform instead.
-inline constexpr double kMaxFontSize = 10000.0;
-}  // namespace limits
 
 // Checks a font size in pixels per em: Error(InvalidArgument) when not finite or <= 0,
 // Error(Limit) above limits::kMaxFontSize.

@@ -7,10 +7,13 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 
 namespace casteljau {
+
+inline constexpr double kPi = std::numbers::pi;
 
 struct Point {
     double x = 0, y = 0;

@@ -1,6 +1,7 @@
-// casteljau/limits.hpp: the resource limits that bound what untrusted input (SVG, GeoJSON,
-// TopoJSON, PNG, JPEG, fonts, path data, style sheets) can make the library allocate or compute,
-// readable and settable at run time.
+// casteljau/limits.hpp: every limit of the library: the resource limits that bound what untrusted
+// input (SVG, GeoJSON, TopoJSON, PNG, JPEG, fonts, path data, style sheets) can make the library
+// allocate or compute, fixed (namespace limits, compile-time constants) or readable and settable at
+// run time (Limits).
 //
 // Each field of Limits has a default (the values in README.md "Limits") and a ceiling
 // (Limits::ceilings()). Every limit may be lowered to 1 (svg_image_nesting to 0: no SVG document
@@ -22,6 +23,50 @@
 
 namespace casteljau {
 
+// Fixed limits. The canvas, path, segment, nesting and PNG values are also the defaults of the
+// run-time limits below (Limits); the canvas, path and segment values are their ceilings too.
+// README.md "Limits" lists them all.
+namespace limits {
+// Canvas, path and raster.
+inline constexpr int kMaxCanvasDimension = 32768;            // pixels per side
+inline constexpr long long kMaxCanvasPixels = 268435456LL;   // 2^28 pixels = 1 GiB of RGBA8
+inline constexpr std::size_t kMaxPathPoints = 1u << 24;      // points in one Path
+inline constexpr std::size_t kMaxFlattenedSegments = 1u << 23;  // line segments after flattening (~340 MB of edges)
+inline constexpr int kMaxFlattenDepth = 16;                  // subdivision depth per curve
+inline constexpr double kMaxCoordinate = 1e15;               // |coordinate| after transform
+inline constexpr int kMaxArcPieces = 256;                    // cubics per elliptical arc, at most
+inline constexpr int kMaxNestingDepth = 64;                  // SVG element / group nesting (default)
+
+// Curves and surfaces.
+// Highest Bézier degree accepted (65 control points). De Casteljau is stable far beyond this; the
+// limit keeps the O(n^2) stack buffers small and binomial coefficients (C(64, 32) ~ 1.8e18) finite.
+inline constexpr int kMaxBezierDegree = 64;
+// Deepest subdivision when approximating a higher-degree curve by cubics (2^16 pieces at most).
+inline constexpr int kMaxCubicApproxDepth = 16;
+inline constexpr int kMaxSplineDegree = 64;
+inline constexpr std::size_t kMaxSplinePoints = 1u << 20;
+inline constexpr std::size_t kMaxSurfacePoints = 1u << 20;
+inline constexpr int kMaxGridLines = 4096;                   // iso curves per direction
+inline constexpr std::size_t kMaxShadedQuads = 1u << 20;
+
+// Filters.
+inline constexpr int kMaxConvolveOrder = 64;               // feConvolveMatrix order per axis
+inline constexpr double kMaxFilterDeviation = 1000;        // blur standard deviation in device pixels (larger is clamped)
+inline constexpr long long kMaxConvolveWork = 1LL << 31;   // feConvolveMatrix kernel taps x region pixels
+
+// Text. Largest font size (pixels per em) the text functions accept. Larger sizes would make
+// single glyph masks of hundreds of megabytes; draw huge text through a Canvas transform instead.
+inline constexpr double kMaxFontSize = 10000.0;
+// Largest SVG font-size (user units) drawn; text with a larger one is skipped with a warning.
+inline constexpr double kMaxSvgFontSize = 1e5;
+
+// Files.
+inline constexpr std::size_t kMaxPngChunkBytes = 16u << 20;  // one PNG chunk's data (text, ICC, Exif)
+inline constexpr std::uint32_t kMaxPngAncillaryChunks = 1000;  // text, sPLT and unknown chunks kept per PNG
+inline constexpr int kMaxTileZoom = 24;                      // zoom levels of a tile pyramid: 0..24
+}  // namespace limits
+
+// Run-time limits.
 struct Limits {
     int canvas_dimension = limits::kMaxCanvasDimension;       // pixels per side of a canvas or image
     long long canvas_pixels = limits::kMaxCanvasPixels;        // pixels of a canvas or image

@@ -2,8 +2,8 @@
 // Pixmap: the map stage above canvas.
 //
 // Pipeline position: MapData (lon/lat) --antimeridian split--> project --fit (Affine to pixels)-->
-// Path per feature (pixel space) --> fills composited by area (seamless.hpp) or one by one
-// (source-over), then strokes, then the result onto the background.
+// Path per feature (pixel space) --> fills composited seamlessly (SeamlessCompositor,
+// seamless.hpp) or one by one (source-over), then strokes, then the result onto the background.
 //
 // Coordinates: positions are longitude/latitude degrees; projected coordinates are y-up; the
 // MapFrame maps them to pixel space (x right, y down, pixel (i, j) = [i, i+1) x [j, j+1)).

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "casteljau/bezier.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/path.hpp"
 #include "casteljau/spline.hpp"
 #include "casteljau/vec.hpp"

@@ -44,6 +44,7 @@
 
 #include "casteljau/flatten.hpp"
 #include "casteljau/geometry.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/path.hpp"
 
 namespace casteljau {
@@ -71,8 +72,8 @@ Topology classify_topology(const Path& path);
 
 // The verdict for filling `path` through a similarity map (a uniform scale s > 0 with any
 // rotation, reflection and translation, such as a glyph's map to pixels) at a flattening
-// tolerance tol with tol / s <= max_tolerance (in the path's units): a glyph at every size from
-// tol / max_tolerance pixels per unit up. It proves more than classify_topology(path) (a path
+// tolerance t with t / s <= max_tolerance (in the path's units): a glyph at every size from
+// t / max_tolerance pixels per unit up. It proves more than classify_topology(path) (a path
 // proven there is proven here, within the same work budget): two segments whose hulls overlap, such as the two sides of a thin
 // curved stroke, are apart when every pair of chords the flattener can draw for them at one such
 // tolerance is apart (cubics and conics are halved while their flatness bound exceeds the

@@ -1,8 +1,8 @@
-// casteljau/seamless.hpp: conflation-free compositing of many fills ("composite by area").
+// casteljau/seamless.hpp: seamless (conflation-free) compositing of many fills.
 //
 // Drawing two fills that share an edge one after the other with source-over leaves a seam: a pixel
 // half covered by each comes out 1 - (1 - 1/2)(1 - 1/2) = 75% covered, so the background shows
-// through along every shared border. An AreaCompositor instead gives each pixel to the fills in
+// through along every shared border. A SeamlessCompositor instead gives each pixel to the fills in
 // proportion to the exact area they cover in it, and leaves to what is below only the area nobody
 // covers:
 //   layer = sum_i c_i * colour_i,   sum_i c_i <= 1,   c_i = min(coverage_i, 1 - sum_{j<i} c_j)
@@ -45,15 +45,15 @@
 
 namespace casteljau {
 
-class AreaCompositor {
+class SeamlessCompositor {
 public:
     // Covers the target's pixels [0, width) x [0, height). Throws like Pixmap(width, height) for
     // sizes outside the canvas limits.
-    AreaCompositor(int width, int height);
+    SeamlessCompositor(int width, int height);
     // Covers `region` of the target only (pixel rectangle, non-empty).
-    explicit AreaCompositor(const IRect& region);
+    explicit SeamlessCompositor(const IRect& region);
     // Covers `region` of `target` with the target's pixels as the layer (see reset_into).
-    AreaCompositor(Pixmap& target, const IRect& region);
+    SeamlessCompositor(Pixmap& target, const IRect& region);
 
     int width() const { return region_.x1 - region_.x0; }
     int height() const { return region_.y1 - region_.y0; }

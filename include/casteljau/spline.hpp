@@ -26,15 +26,11 @@
 
 #include "casteljau/bezier.hpp"
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/path.hpp"
 #include "casteljau/vec.hpp"
 
 namespace casteljau {
-
-namespace limits {
-inline constexpr int kMaxSplineDegree = 64;
-inline constexpr std::size_t kMaxSplinePoints = 1u << 20;
-}  // namespace limits
 
 // ---- knot vectors and basis functions -----------------------------------------------------------
 

@@ -8,8 +8,8 @@
 //
 // Coordinates: everything is computed in USER space, the space of `path`, and the result is in user
 // space too. `m` is the user-to-pixel transform that the result will be drawn with: it only chooses
-// how finely curves and round joins/caps are flattened (tolerance_px / m.max_scale() in user units,
-// so the error stays below tolerance_px pixels after `m`). Because the pen is a circle of diameter
+// how finely curves and round joins/caps are flattened (`tolerance` / m.max_scale() in user units,
+// so the error stays below `tolerance` pixels after `m`). Because the pen is a circle of diameter
 // `width` in user space, a non-uniform `m` gives the elliptical pen SVG requires.
 // The result contains line segments only (curves and arcs are already flattened).
 //
@@ -70,18 +70,18 @@ struct StrokeStyle {
 
 // Outline of the stroke of `path` (user space) as closed contours to be filled with the nonzero rule.
 // `m` is the user-to-pixel transform used to pick the flattening tolerance (see above).
-Path stroke(const Path& path, const StrokeStyle& style, const Affine& m = {}, double tolerance_px = 0.05);
-// The distance, in the path's units, under which stroke(path, style, m, tolerance_px) merges a
+Path stroke(const Path& path, const StrokeStyle& style, const Affine& m = {}, double tolerance = 0.05);
+// The distance, in the path's units, under which stroke(path, style, m, tolerance) merges a
 // point into the one before it (their direction would be noise): 1/1000 of the user-space
 // tolerance. A contour whose points all lie within it of its first point has zero length (a disk or
 // a square with Round or Square caps, nothing with Butt caps). Throws like stroke() for a bad
 // transform or tolerance.
-double stroke_merge_distance(const Affine& m = {}, double tolerance_px = 0.05);
+double stroke_merge_distance(const Affine& m = {}, double tolerance = 0.05);
 
 // The dashes of `path` as open contours (made of line segments, in user space); a contour that the
 // pattern leaves "on" all around stays closed. Without an effective pattern (empty, all zero, a
 // negative value) the result is the flattened path itself.
 Path dash(const Path& path, std::span<const double> dashes, double offset, const Affine& m = {},
-          double tolerance_px = 0.05);
+          double tolerance = 0.05);
 
 }  // namespace casteljau

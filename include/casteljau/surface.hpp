@@ -27,18 +27,13 @@
 #include <vector>
 
 #include "casteljau/bezier.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/nurbs.hpp"
 #include "casteljau/path.hpp"
 #include "casteljau/spline.hpp"
 #include "casteljau/vec.hpp"
 
 namespace casteljau {
-
-namespace limits {
-inline constexpr std::size_t kMaxSurfacePoints = 1u << 20;
-inline constexpr int kMaxGridLines = 4096;       // iso curves per direction
-inline constexpr std::size_t kMaxShadedQuads = 1u << 20;
-}  // namespace limits
 
 // ---- Bézier patches -----------------------------------------------------------------------------
 

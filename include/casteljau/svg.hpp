@@ -48,11 +48,6 @@
 
 namespace casteljau {
 
-namespace limits {
-// Largest font-size (user units) drawn; text with a larger one is skipped with a warning.
-inline constexpr double kMaxSvgFontSize = 1e5;
-}  // namespace limits
-
 // Where <image> may read files from. Nothing is ever fetched over the network (http:, https:,
 // any URL scheme but data: is refused), absolute paths are refused, and a relative href resolves
 // against `base_dir` and must stay inside `resource_root` (default: base_dir itself) after

@@ -31,6 +31,7 @@
 
 #include "casteljau/arc.hpp"
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/path.hpp"
 
 namespace casteljau {

@@ -38,6 +38,7 @@
 #include "casteljau/canvas.hpp"
 #include "casteljau/font.hpp"
 #include "casteljau/geometry.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/raster.hpp"
 
 namespace casteljau {

@@ -30,13 +30,10 @@
 #include <vector>
 
 #include "casteljau/geojson.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/map.hpp"
 
 namespace casteljau {
-
-namespace limits {
-inline constexpr int kMaxTileZoom = 24;
-}  // namespace limits
 
 struct TileOptions {
     int min_zoom = 0, max_zoom = 0;  // 0..limits::kMaxTileZoom

@@ -125,7 +125,7 @@ void Canvas::clip_path(const Path& path, FillRule rule) {
 void Canvas::clear(Color c) {
     const IRect& r = state_.clip;
     if (r.empty()) return;
-    Pixmap& pm = surface();
+    Pixmap& pm = layer_or_target();
     if (!state_.clip_mask && r == IRect{0, 0, width(), height()}) return pm.fill(c);
     const PremulPixel p = premultiply(c);
     const std::uint8_t px[4] = {p.r, p.g, p.b, p.a};
@@ -145,7 +145,7 @@ void Canvas::fill_path(const Path& path, const Paint& paint, const FillOptions& 
     if (state_.clip.empty() || path.empty()) return;
     PaintPipeline pipe(paint, state_.transform, state_.opacity, state_.blend, scratch_);
     if (pipe.paints_nothing()) return;
-    PipelineSink sink(surface(), pipe, state_.clip_mask.get(), coverage_);
+    PipelineSink sink(layer_or_target(), pipe, state_.clip_mask.get(), coverage_);
     raster_.fill(path, state_.transform, options, state_.clip, sink);
 }
 
@@ -176,7 +176,7 @@ void Canvas::fill_mask(const Mask& mask, long long dx, long long dy, const Paint
     if (x1 <= x0 || y1 <= y0) return;
     PaintPipeline pipe(paint, state_.transform, state_.opacity, state_.blend, scratch_);
     if (pipe.paints_nothing()) return;
-    Pixmap& pm = surface();
+    Pixmap& pm = layer_or_target();
     const long long w = mask.bounds.width();
     for (long long y = y0; y < y1; ++y) {
         const std::uint8_t* cov = mask.data.data() + (y - dy - mask.bounds.y0) * w + (x0 - dx - mask.bounds.x0);

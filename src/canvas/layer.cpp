@@ -69,7 +69,7 @@ void apply_mask(Pixmap& layer, const Mask& mask) {
 
 Canvas::~Canvas() = default;
 
-Pixmap& Canvas::surface() { return layers_.empty() ? *target_ : layers_.back()->pixels; }
+Pixmap& Canvas::layer_or_target() { return layers_.empty() ? *target_ : layers_.back()->pixels; }
 
 void Canvas::restore() {
     const std::size_t floor = layers_.empty() ? 0 : layers_.back()->saved_depth;
@@ -108,7 +108,7 @@ void Canvas::draw_layer(const Pixmap& layer, double opacity, BlendMode mode) {
     if (ob == 0 || x1 <= c.x0 || y1 <= c.y0) return;
     const int len = x1 - c.x0;
     if (coverage_.size() < static_cast<std::size_t>(len)) coverage_.resize(static_cast<std::size_t>(len));
-    Pixmap& dst = surface();
+    Pixmap& dst = layer_or_target();
     const Mask* clip = state_.clip_mask.get();
     for (int y = c.y0; y < y1; ++y) {
         const std::uint8_t* cov = nullptr;

@@ -16,7 +16,7 @@
 #include <sstream>
 
 #include "casteljau/bezier.hpp"
-#include "casteljau/curve_draw.hpp"
+#include "casteljau/figures.hpp"
 #include "casteljau/png.hpp"
 #include "cli/cli.hpp"
 #include "cli/curve_args.hpp"

@@ -4,6 +4,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/geojson.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/map.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/projection.hpp"

@@ -16,7 +16,7 @@
 #include <memory>
 #include <sstream>
 
-#include "casteljau/curve_draw.hpp"
+#include "casteljau/figures.hpp"
 #include "casteljau/nurbs.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/spline.hpp"

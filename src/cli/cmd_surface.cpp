@@ -17,7 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "casteljau/curve_draw.hpp"
+#include "casteljau/figures.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/spline.hpp"
 #include "casteljau/surface.hpp"

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/svg.hpp"
 #include "cli/cli.hpp"

@@ -18,6 +18,7 @@
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
 #include "casteljau/font.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/text.hpp"
 #include "cli/cli.hpp"

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/map.hpp"
 #include "casteljau/threads.hpp"
 #include "casteljau/tiles.hpp"

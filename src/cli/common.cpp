@@ -6,8 +6,9 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
 #include "cli/cli.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau::cli {
 

@@ -6,6 +6,7 @@
 
 #include "casteljau/bezier.hpp"
 #include "curves/curve_util.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau {
 

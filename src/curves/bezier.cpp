@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "casteljau/limits.hpp"
 #include "curves/curve_util.hpp"
 
 namespace casteljau {
@@ -365,22 +366,22 @@ template <CurvePoint P> P curvature_vector(const Bezier<P>& c, double t, bool& o
 
 }  // namespace
 
-template <CurvePoint P> Continuity join_continuity(const Bezier<P>& a, const Bezier<P>& b, const JoinTolerance& tol) {
-    if ((a.back() - b.front()).length() > tol.position) return Continuity::None;
-    const P ta = end_direction(a, true, tol.position), tb = end_direction(b, false, tol.position);
+template <CurvePoint P> Continuity join_continuity(const Bezier<P>& a, const Bezier<P>& b, const JoinTolerance& tolerance) {
+    if ((a.back() - b.front()).length() > tolerance.position) return Continuity::None;
+    const P ta = end_direction(a, true, tolerance.position), tb = end_direction(b, false, tolerance.position);
     const double la = ta.length(), lb = tb.length();
     if (la == 0 || lb == 0) return Continuity::G0;
     const double angle = std::atan2(cross_norm(ta, tb), dot(ta, tb));
-    if (!(angle <= tol.angle)) return Continuity::G0;
+    if (!(angle <= tolerance.angle)) return Continuity::G0;
     bool oka = false, okb = false;
     const P ka = curvature_vector(a, 1.0, oka), kb = curvature_vector(b, 0.0, okb);
     if (!oka || !okb) return Continuity::G1;
     Box<P> box = a.control_bounds();
     for (const P& p : b.points()) box.include(p);
     const double size = (box.hi - box.lo).length();
-    const double floor = size > 0 ? tol.curvature / size : 0;
+    const double floor = size > 0 ? tolerance.curvature / size : 0;
     const double diff = (ka - kb).length();
-    if (diff <= tol.curvature * std::max(ka.length(), kb.length()) + floor) return Continuity::G2;
+    if (diff <= tolerance.curvature * std::max(ka.length(), kb.length()) + floor) return Continuity::G2;
     return Continuity::G1;
 }
 

@@ -11,6 +11,7 @@
 
 #include "casteljau/bezier.hpp"
 #include "curves/curve_util.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau {
 

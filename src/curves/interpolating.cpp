@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "casteljau/limits.hpp"
 #include "casteljau/spline.hpp"
 #include "curves/bspline_core.hpp"
 

@@ -1,5 +1,6 @@
 // Curve toolkit: rational Bézier curves, NURBS, conics and their Path form
 // (include/casteljau/nurbs.hpp).
+#include "casteljau/limits.hpp"
 #include "casteljau/nurbs.hpp"
 
 #include <algorithm>
@@ -215,7 +216,7 @@ RationalBezier<Point> circular_arc(Point c, double radius, double start, double 
     check_radius(radius, "radius");
     check_angle(start, "start angle");
     check_angle(sweep, "sweep");
-    if (!(std::abs(sweep) > 0 && std::abs(sweep) < std::numbers::pi))
+    if (!(std::abs(sweep) > 0 && std::abs(sweep) < kPi))
         throw Error(ErrorKind::InvalidArgument, "a single rational quadratic arc needs 0 < |sweep| < pi, got " +
                                                     num(sweep) + " (use nurbs_ellipse_arc for larger arcs)");
     const double h = sweep / 2, w = std::cos(h);
@@ -232,9 +233,9 @@ Nurbs<Point> nurbs_ellipse_arc(Point c, double rx, double ry, double rotation, d
     check_angle(rotation, "rotation");
     check_angle(start, "start angle");
     check_angle(sweep, "sweep");
-    if (!(std::abs(sweep) > 0 && std::abs(sweep) <= 2 * std::numbers::pi))
+    if (!(std::abs(sweep) > 0 && std::abs(sweep) <= 2 * kPi))
         throw Error(ErrorKind::InvalidArgument, "arc sweep must satisfy 0 < |sweep| <= 2 pi, got " + num(sweep));
-    const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / (std::numbers::pi / 2) - 1e-12)));
+    const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / (kPi / 2) - 1e-12)));
     const double step = sweep / pieces, w = std::cos(step / 2);
     // Unit circle arc pieces, then the affine map (scale by rx, ry; rotate; translate): rational
     // curves are affinely invariant when the control points are mapped and the weights kept.

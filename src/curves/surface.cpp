@@ -1,5 +1,6 @@
 // Curve toolkit: tensor-product Bézier patches, B-spline and NURBS surfaces
 // (include/casteljau/surface.hpp).
+#include "casteljau/limits.hpp"
 #include "casteljau/surface.hpp"
 
 #include <cmath>

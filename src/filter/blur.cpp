@@ -14,7 +14,8 @@
 #include <vector>
 
 #include "filter/image.hpp"
-#include "parallel/for_each_index.hpp"
+#include "core/for_each_index.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau::filter::detail {
 

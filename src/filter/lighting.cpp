@@ -13,7 +13,6 @@
 namespace casteljau::filter::detail {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 struct V3 {
     double x, y, z;

@@ -13,9 +13,10 @@
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/geojson.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
 #include "formats/geojson_build.hpp"
-#include "formats/json_support.hpp"
+#include "json/json_support.hpp"
+#include "formats/json_properties.hpp"
 
 namespace casteljau {
 

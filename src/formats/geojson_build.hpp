@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "casteljau/geojson.hpp"
-#include "formats/json_support.hpp"
+#include "json/json_support.hpp"
 
 namespace casteljau::geo_detail {
 

@@ -1,6 +1,6 @@
-// Formats stage: JPEG decoding through libjpeg(-turbo), and the image signature sniffing of
-// include/casteljau/image.hpp. libjpeg reports fatal errors through a longjmp out of its error
-// handler; the setjmp scope holds no C++ objects with destructors.
+// Formats stage: JPEG decoding through libjpeg(-turbo) (decode_jpeg, include/casteljau/image.hpp).
+// libjpeg reports fatal errors through a longjmp out of its error handler; the setjmp scope holds
+// no C++ objects with destructors.
 // jpeglib.h needs size_t and FILE declared first.
 #include <cstddef>
 #include <cstdio>
@@ -18,7 +18,6 @@
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/image.hpp"
-#include "casteljau/png.hpp"
 
 namespace casteljau {
 
@@ -84,21 +83,6 @@ bool read_pixels(jpeg_decompress_struct* cinfo, ErrorManager* err, Pixmap& pm, s
 
 }  // namespace
 
-ImageFormat sniff_image(std::span<const std::uint8_t> b) {
-    auto starts = [&](std::initializer_list<std::uint8_t> sig) {
-        return b.size() >= sig.size() && std::equal(sig.begin(), sig.end(), b.begin());
-    };
-    if (starts({0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'})) return ImageFormat::Png;
-    if (starts({0xff, 0xd8, 0xff})) return ImageFormat::Jpeg;
-    if (starts({'G', 'I', 'F', '8'})) return ImageFormat::Gif;
-    if (b.size() >= 12 && starts({'R', 'I', 'F', 'F'}) && std::memcmp(b.data() + 8, "WEBP", 4) == 0) return ImageFormat::Webp;
-    if (starts({0x1f, 0x8b})) return ImageFormat::Svg;  // gzip: an .svgz
-    std::size_t i = starts({0xef, 0xbb, 0xbf}) ? 3 : 0;
-    while (i < b.size() && (b[i] == ' ' || b[i] == '\t' || b[i] == '\r' || b[i] == '\n')) ++i;
-    if (i < b.size() && b[i] == '<') return ImageFormat::Svg;
-    return ImageFormat::Unknown;
-}
-
 Pixmap decode_jpeg(std::span<const std::uint8_t> bytes) {
     if (bytes.empty()) throw Error(ErrorKind::InvalidData, "JPEG data is empty");
     jpeg_decompress_struct cinfo{};
@@ -147,18 +131,6 @@ Pixmap decode_jpeg(std::span<const std::uint8_t> bytes) {
     jpeg_destroy_decompress(&cinfo);
     if (!ok) throw Error(ErrorKind::InvalidData, std::string("corrupt JPEG: ") + err.message);
     return std::move(*pm);
-}
-
-Pixmap decode_image(std::span<const std::uint8_t> bytes) {
-    switch (sniff_image(bytes)) {
-        case ImageFormat::Png: return decode_png(bytes);
-        case ImageFormat::Jpeg: return decode_jpeg(bytes);
-        case ImageFormat::Gif: throw Error(ErrorKind::InvalidData, "GIF images are not supported");
-        case ImageFormat::Webp: throw Error(ErrorKind::InvalidData, "WebP images are not supported");
-        case ImageFormat::Svg: throw Error(ErrorKind::InvalidData, "an SVG image is not a raster image");
-        case ImageFormat::Unknown: break;
-    }
-    throw Error(ErrorKind::InvalidData, "unrecognised image data (not PNG or JPEG)");
 }
 
 }  // namespace casteljau

@@ -25,7 +25,7 @@
 #include "casteljau/limits.hpp"
 #include "casteljau/filter.hpp"
 #include "casteljau/image.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
 #include "casteljau/shader.hpp"
 #include "casteljau/stroke.hpp"
 #include "casteljau/svg_path.hpp"
@@ -85,8 +85,6 @@ struct PatternTile {
     Rect tile;
     Affine transform;
 };
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A path that counts in bounding boxes without being drawn.
 Item bounds_item(Path path, const Affine& transform) {

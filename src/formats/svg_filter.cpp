@@ -21,8 +21,6 @@ namespace casteljau::svg_filter {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 std::string_view trim(std::string_view s) {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);

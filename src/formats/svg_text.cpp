@@ -2,7 +2,7 @@
 //
 // characters (per span: one style) --chunks (a new one at every absolute x or y, and at every
 // textPath)--> bidi levels per chunk --> per (span, level) segment: fonts (family list, then
-// fallback faces) and HarfBuzz shaping (src/text/shape.hpp) --> clusters in visual order -->
+// fallback faces) and HarfBuzz shaping (casteljau/shaping.hpp) --> clusters in visual order -->
 // positions: dx/dy, letter- and word-spacing, textLength --> text-anchor --> baselines and
 // baseline-shift --> rotate or placement along a text path --> glyph outlines and decoration lines
 // in user space.
@@ -10,13 +10,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <span>
 
-#include <hb.h>
-
 #include "casteljau/error.hpp"
-#include "text/bidi.hpp"
-#include "text/shape.hpp"
+#include "casteljau/limits.hpp"
+#include "casteljau/shaping.hpp"
 
 namespace casteljau::svg_text {
 
@@ -46,20 +45,6 @@ bool is_upright(char32_t c) {
     return (c >= 0x1100 && c <= 0x11ff) || (c >= 0x2e80 && c <= 0xa4cf) || (c >= 0xac00 && c <= 0xd7af) ||
            (c >= 0xf900 && c <= 0xfaff) || (c >= 0xfe30 && c <= 0xfe4f) || (c >= 0xff00 && c <= 0xffef) ||
            (c >= 0x1f000 && c <= 0x1faff) || (c >= 0x20000 && c <= 0x3ffff);
-}
-
-// Scripts whose letters join or hang from a line: letter-spacing would break them apart, so it is
-// not applied to them (CSS Text 3, 8.2; resvg does the same).
-bool spacing_allowed(char32_t c) {
-    switch (hb_unicode_script(hb_unicode_funcs_get_default(), c)) {
-        case HB_SCRIPT_ARABIC: case HB_SCRIPT_SYRIAC: case HB_SCRIPT_NKO: case HB_SCRIPT_MANICHAEAN:
-        case HB_SCRIPT_PSALTER_PAHLAVI: case HB_SCRIPT_MANDAIC: case HB_SCRIPT_MONGOLIAN: case HB_SCRIPT_PHAGS_PA:
-        case HB_SCRIPT_DEVANAGARI: case HB_SCRIPT_BENGALI: case HB_SCRIPT_GURMUKHI: case HB_SCRIPT_MODI:
-        case HB_SCRIPT_SHARADA: case HB_SCRIPT_SYLOTI_NAGRI: case HB_SCRIPT_TIRHUTA: case HB_SCRIPT_OGHAM:
-            return false;
-        default:
-            return true;
-    }
 }
 
 bool is_word_space(char32_t c) { return c == U' ' || c == 0xa0 || c == 0x1361 || c == 0x10100 || c == 0x10101 || c == 0x3000; }
@@ -220,12 +205,12 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
 
     std::vector<std::vector<Cluster>> chunks;
     std::vector<std::uint8_t> levels;
-    std::vector<text_detail::ShapedRun> runs;
+    std::vector<ShapedRun> runs;
     bool warned_fonts = false;
     for (std::size_t c = 0; c + 1 < chunk_starts.size(); ++c) {
         const std::size_t cb = chunk_starts[c], ce = chunk_starts[c + 1];
         const std::u32string_view ctext(text.data() + cb, ce - cb);
-        text_detail::resolve_bidi_levels(ctext, in.direction, levels);
+        resolve_bidi_levels(ctext, in.direction, levels);
         struct RunClusters {
             std::uint8_t level;
             std::vector<Cluster> clusters;
@@ -249,12 +234,12 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
             TextStyle ts;
             ts.size = span.font.size;
             ts.features = span.font.features;
-            std::unique_ptr<text_detail::Shaper> shaper;
+            std::unique_ptr<TextShaper> shaper;
             try {
-                shaper = std::make_unique<text_detail::Shaper>(std::span<const Font* const>(chain), ts, upright);
+                shaper = std::make_unique<TextShaper>(std::span<const Font* const>(chain), ts, upright);
             } catch (const Error&) {
                 ts.features.clear();
-                shaper = std::make_unique<text_detail::Shaper>(std::span<const Font* const>(chain), ts, upright);
+                shaper = std::make_unique<TextShaper>(std::span<const Font* const>(chain), ts, upright);
             }
             // Shaped with up to kContext neighbours of the same level on each side (from other
             // spans too), so that kerning and joining work across tspans; only the segment's own
@@ -269,7 +254,7 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                 ++we;
             const std::u32string_view window(text.data() + wb, we - wb);
             shaper->shape_paragraph(window, std::span<const std::uint8_t>(levels.data() + (wb - cb), we - wb), runs);
-            for (const text_detail::ShapedRun& run : runs) {
+            for (const ShapedRun& run : runs) {
                 RunClusters rc;
                 rc.level = run.level;
                 // Cluster starts in logical order, to know how many characters each one covers.
@@ -311,7 +296,7 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
         std::vector<std::uint8_t> run_levels;
         for (const RunClusters& r : all_runs) run_levels.push_back(r.level);
         std::vector<std::size_t> order;
-        text_detail::visual_order(run_levels, order);
+        bidi_visual_order(run_levels, order);
         std::vector<Cluster> clusters;
         for (std::size_t i : order)
             for (Cluster& k : all_runs[i].clusters) clusters.push_back(std::move(k));
@@ -360,7 +345,7 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
             g.x = pen_x;
             g.y = pen_y;
             const Span& sp = in.spans[g.span];
-            double step = g.advance + (spacing_allowed(text[g.ch]) ? sp.letter_spacing : 0);
+            double step = g.advance + (letter_spacing_allowed(text[g.ch]) ? sp.letter_spacing : 0);
             if (is_word_space(text[g.ch])) step += sp.word_spacing;
             g.step = step;
             pen_along += step;

@@ -1,7 +1,7 @@
 // Internal (formats): SVG text layout. The SVG reader (svg.cpp) turns a <text> element into a
 // TextInput (characters after white-space processing, grouped into spans of one style, with the
 // per-character x/y/dx/dy/rotate values, text paths and textLength ranges); layout() shapes it
-// with casteljau's text engine (HarfBuzz through src/text/shape.hpp, fonts from a FontDatabase)
+// with casteljau's text engine (HarfBuzz through casteljau/shaping.hpp, fonts from a FontDatabase)
 // and returns glyph outlines and decoration lines in the text's user space, which the reader
 // paints like any shape.
 //

@@ -2,7 +2,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <numbers>
 #include <string>
 
 #include "casteljau/error.hpp"
@@ -44,7 +43,7 @@ Affine parse_svg_transform(std::string_view s) {
             ++n;
         }
         Affine t;
-        const double deg = std::numbers::pi / 180.0;
+        const double deg = kPi / 180.0;
         if (name == "matrix" && n == 6) t = {v[0], v[1], v[2], v[3], v[4], v[5]};
         else if (name == "translate" && (n == 1 || n == 2)) t = Affine::translate(v[0], n == 2 ? v[1] : 0);
         else if (name == "scale" && (n == 1 || n == 2)) t = Affine::scale(v[0], n == 2 ? v[1] : v[0]);

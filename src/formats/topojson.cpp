@@ -10,7 +10,8 @@
 #include "casteljau/limits.hpp"
 #include "casteljau/geojson.hpp"
 #include "formats/geojson_build.hpp"
-#include "formats/json_support.hpp"
+#include "json/json_support.hpp"
+#include "formats/json_properties.hpp"
 
 namespace casteljau {
 

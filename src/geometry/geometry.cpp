@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace casteljau {
 
@@ -35,7 +34,7 @@ Affine Affine::rotate_degrees(double degrees) {
     if (r == 90) return {0, 1, -1, 0, 0, 0};
     if (r == 180) return {-1, 0, 0, -1, 0, 0};
     if (r == 270) return {0, -1, 1, 0, 0, 0};
-    return rotate(degrees * std::numbers::pi / 180.0);
+    return rotate(degrees * kPi / 180.0);
 }
 
 Affine Affine::skew_x(double radians) { return {1, 0, std::tan(radians), 1, 0, 0}; }

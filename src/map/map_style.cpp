@@ -4,7 +4,8 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/map.hpp"
-#include "formats/json_support.hpp"
+#include "json/json_support.hpp"
+#include "formats/json_properties.hpp"
 
 namespace casteljau {
 

@@ -1,7 +1,7 @@
 // Map stage: opening PROJ on first use (see proj_library.hpp).
 #include "map/proj_library.hpp"
 
-#include "platform/runtime_library.hpp"
+#include "core/runtime_library.hpp"
 
 #ifndef CASTELJAU_PROJ_SONAME
 #define CASTELJAU_PROJ_SONAME "libproj.so"

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <numbers>
 
 #include "casteljau/error.hpp"
 #include "map/proj_library.hpp"
@@ -89,15 +88,15 @@ bool MapProjection::project(Point ll, Point& out) const {
             out = ll;
             return true;
         case Kind::WebMercator: {
-            constexpr double d2r = std::numbers::pi / 180.0;
+            constexpr double d2r = kPi / 180.0;
             const double lat = std::clamp(ll.y, -kWebMercatorMaxLatitude, kWebMercatorMaxLatitude);
             out.x = kWebMercatorRadius * ll.x * d2r;
-            out.y = kWebMercatorRadius * std::log(std::tan(std::numbers::pi / 4 + lat * d2r / 2));
+            out.y = kWebMercatorRadius * std::log(std::tan(kPi / 4 + lat * d2r / 2));
             return true;
         }
         case Kind::Proj: {
             const proj_library::Api& api = proj_library::api();
-            const double to_input = proj_->radians_in ? std::numbers::pi / 180.0 : 1.0;
+            const double to_input = proj_->radians_in ? kPi / 180.0 : 1.0;
             PJ_COORD c;
             c.v[0] = ll.x * to_input;
             c.v[1] = ll.y * to_input;

@@ -12,9 +12,10 @@
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/map.hpp"
 #include "casteljau/seamless.hpp"
-#include "parallel/for_each_index.hpp"
+#include "core/for_each_index.hpp"
 
 namespace casteljau {
 
@@ -358,13 +359,13 @@ int map_threads(int requested) {
 
 namespace {
 
-// Starts `ac` over `region`, making it first when needed: writing into `*into` itself when given
-// (AreaCompositor::reset_into), else with a layer of its own.
-void start_compositor(std::optional<AreaCompositor>& ac, const IRect& region, Pixmap* into) {
-    if (!ac && into) ac.emplace(*into, region);
-    else if (!ac) ac.emplace(region);
-    else if (into) ac->reset_into(*into, region);
-    else ac->reset(region);
+// Starts `sc` over `region`, making it first when needed: writing into `*into` itself when given
+// (SeamlessCompositor::reset_into), else with a layer of its own.
+void start_compositor(std::optional<SeamlessCompositor>& sc, const IRect& region, Pixmap* into) {
+    if (!sc && into) sc.emplace(*into, region);
+    else if (!sc) sc.emplace(region);
+    else if (into) sc->reset_into(*into, region);
+    else sc->reset(region);
 }
 
 // render_map onto `target`; `cleared`: the target is known to be transparent already (a new
@@ -401,13 +402,13 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
     // transparent background leaves them to be mapped where the fills composite (on the workers
     // too), and never where nothing is drawn.
     // While nothing is drawn on it, such a pixmap takes a seamless layer's fills directly
-    // (AreaCompositor::reset_into): the same pixels, without a layer.
+    // (SeamlessCompositor::reset_into): the same pixels, without a layer.
     bool target_clear = cleared && style.background.a == 0;
     if (!target_clear)
         parallel::for_each_index(threads, bands.size(),
                                  [&](int, std::size_t b) { target.fill_rows(bands[b].y0, bands[b].y1, style.background); });
-    std::optional<AreaCompositor> area;                                     // the whole image
-    std::vector<std::optional<AreaCompositor>> band_areas(static_cast<std::size_t>(threads));  // one band per worker
+    std::optional<SeamlessCompositor> whole;                                     // the whole image
+    std::vector<std::optional<SeamlessCompositor>> band_compositors(static_cast<std::size_t>(threads));  // one band per worker
 
     auto build = [&](int w, const Feature& f, PathVisitor& v) {
         v.m = frame.to_pixel;
@@ -447,7 +448,7 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
         std::vector<std::size_t> order;
         for (std::size_t i = 0; i < data.features.size(); ++i)
             if (layer.filter.matches(data.features[i])) order.push_back(i);
-        // Fills: seamless (by area, last feature first so that later features win) or source-over in order.
+        // Fills: seamless (SeamlessCompositor, last feature first so that later features win) or source-over in order.
         auto make_fill = [&](int w, const Feature& f, std::optional<Drawable>& out) {
             const std::optional<Color> c = layer.fill_for(f);
             if (!c) return;
@@ -478,16 +479,16 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
             // composited once at the end.
             const bool banded = positions <= kChunkPositions;
             Pixmap* const direct = target_clear ? &target : nullptr;  // the fills go straight into it
-            if (!banded) start_compositor(area, IRect{0, 0, frame.width, frame.height}, direct);
+            if (!banded) start_compositor(whole, IRect{0, 0, frame.width, frame.height}, direct);
             bool drew = false;
             chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
                 parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
                     Rasterizer& raster = canvases[static_cast<std::size_t>(w)]->rasterizer();
-                    AreaCompositor* into = banded ? nullptr : &*area;
+                    SeamlessCompositor* into = banded ? nullptr : &*whole;
                     for (const auto& d : chunk) {
                         if (!d || !overlaps(d->box, bands[b])) continue;
                         if (!into) {
-                            std::optional<AreaCompositor>& band = band_areas[static_cast<std::size_t>(w)];
+                            std::optional<SeamlessCompositor>& band = band_compositors[static_cast<std::size_t>(w)];
                             start_compositor(band, bands[b], direct);
                             into = &*band;
                         }
@@ -497,7 +498,7 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
                 });
                 for (const auto& d : chunk) drew = drew || d.has_value();
             });
-            if (!banded && drew) area->composite_onto(target);
+            if (!banded && drew) whole->composite_onto(target);
             target_clear = target_clear && !drew;
             std::reverse(order.begin(), order.end());
         } else if (layer.fill) {

@@ -5,12 +5,11 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
-#include <numbers>
 
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/png.hpp"
-#include "parallel/for_each_index.hpp"
+#include "core/for_each_index.hpp"
 
 namespace casteljau {
 
@@ -92,7 +91,7 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
                 const int T = opts.tile_px, B = opts.buffer;
                 const int W = nx * T + 2 * B, H = ny * T + 2 * B;
                 const double world = static_cast<double>(T) * static_cast<double>(dim);
-                const double half = std::numbers::pi * kWebMercatorRadius;
+                const double half = kPi * kWebMercatorRadius;
                 const double s = world / (2 * half);
                 const double ox = static_cast<double>(m.x0) * T - B, oy = static_cast<double>(m.y0) * T - B;
                 MapFrame fr;

@@ -266,7 +266,7 @@ private:
             const std::string_view u = c[0].unit;
             if (iequals(u, "deg")) {
             } else if (iequals(u, "rad")) {
-                hue = hue * 180.0 / 3.14159265358979323846;
+                hue = hue * 180.0 / kPi;
             } else if (iequals(u, "grad")) {
                 hue = hue * 0.9;
             } else if (iequals(u, "turn")) {

@@ -138,7 +138,7 @@ void blend_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, con
             else source_over(d, sp, c);
         };
         if (!coverage && step == 4) {
-            // A whole layer (AreaCompositor, groups) is mostly runs of transparent pixels, which
+            // A whole layer (SeamlessCompositor, groups) is mostly runs of transparent pixels, which
             // change nothing, and of opaque ones, which replace the destination: eight at a time.
             // The alpha bytes of two pixels as a 64-bit mask, whatever the byte order.
             constexpr std::uint8_t kAlphaBytes[8] = {0, 0, 0, 0xff, 0, 0, 0, 0xff};

@@ -10,7 +10,7 @@
 #include "casteljau/limits.hpp"
 #include "casteljau/paint.hpp"
 #include "paint/pixel_math.hpp"
-#include "platform/pixel_memory.hpp"
+#include "core/pixel_memory.hpp"
 
 namespace casteljau {
 

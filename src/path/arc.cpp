@@ -9,17 +9,15 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "casteljau/arc.hpp"
 #include "casteljau/error.hpp"
 #include "path/arc_detail.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau {
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // cos and sin of an angle in degrees, exact for multiples of 90 degrees (so that an axis-aligned
 // ellipse stays exactly axis-aligned).
@@ -53,19 +51,19 @@ int arc_piece_count(double sweep_angle, double radius, double tolerance) {
     // At least one piece per 90 degrees; the factor forgives the rounding of a sweep of exactly
     // k * 90 degrees computed from atan2.
     int n = static_cast<int>(std::ceil(a / (kPi / 2) * (1 - 1e-12)));
-    n = std::clamp(n, 1, kMaxArcPieces);
+    n = std::clamp(n, 1, limits::kMaxArcPieces);
     radius = std::abs(radius);
     if (!(tolerance < std::numeric_limits<double>::infinity()) || !(radius > 0)) return n;
     // e(theta) ~ theta^6 / 55296 from below (within 0.6% up to 90 degrees): start just under the
     // answer and step up.
     const double rel = tolerance / radius;
     const double theta_est = std::pow(55296.0 * rel, 1.0 / 6.0);
-    if (theta_est > 0 && a / theta_est < kMaxArcPieces)
+    if (theta_est > 0 && a / theta_est < limits::kMaxArcPieces)
         n = std::max(n, static_cast<int>(a / theta_est));
     else if (!(theta_est > 0))
-        n = kMaxArcPieces;
-    n = std::clamp(n, 1, kMaxArcPieces);
-    while (n < kMaxArcPieces && radius * arc_cubic_error(a / n) > tolerance) ++n;
+        n = limits::kMaxArcPieces;
+    n = std::clamp(n, 1, limits::kMaxArcPieces);
+    while (n < limits::kMaxArcPieces && radius * arc_cubic_error(a / n) > tolerance) ++n;
     return n;
 }
 
@@ -174,7 +172,7 @@ void arc_to(Path& path, double rx, double ry, double x_axis_rotation_degrees, bo
     const Point start = path.current_point();
     if (!start.is_finite())
         throw Error(ErrorKind::InvalidArgument, "arc_to: the path's current point is not finite");
-    std::array<Point, 3 * kMaxArcPieces> buf;
+    std::array<Point, 3 * limits::kMaxArcPieces> buf;
     const detail::ArcCubics r =
         detail::arc_cubics(start, rx, ry, x_axis_rotation_degrees, large_arc, sweep, end, tolerance, buf);
     switch (r.kind) {

@@ -5,6 +5,7 @@
 #include <span>
 
 #include "casteljau/arc.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau::detail {
 
@@ -35,7 +36,7 @@ bool arc_center(Point start, double rx, double ry, double x_axis_rotation_degree
                 Point end, ArcCenter& c, ArcKind& kind);
 
 // Computes the cubics of an arc (inputs must be finite, tolerance > 0). `out` must hold
-// 3 * kMaxArcPieces points.
+// 3 * limits::kMaxArcPieces points.
 ArcCubics arc_cubics(Point start, double rx, double ry, double x_axis_rotation_degrees, bool large_arc, bool sweep,
                      Point end, double tolerance, std::span<Point> out);
 

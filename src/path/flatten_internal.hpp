@@ -9,6 +9,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/flatten.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau {
 

@@ -388,7 +388,7 @@ private:
             case 'A': {
                 const Point p = pt(a[5], a[6]);
                 if (!p.is_finite()) return out_of_range(pos);
-                if (arc_buf_.empty()) arc_buf_.resize(3 * kMaxArcPieces);
+                if (arc_buf_.empty()) arc_buf_.resize(3 * limits::kMaxArcPieces);
                 const detail::ArcCubics r =
                     detail::arc_cubics(cur, a[0], a[1], a[2], a[3] != 0, a[4] != 0, p, tolerance_, arc_buf_);
                 prev_ = Prev::None;

@@ -15,6 +15,7 @@
 #include "casteljau/error.hpp"
 #include "casteljau/geometry.hpp"
 #include "path/flatten_internal.hpp"
+#include "casteljau/limits.hpp"
 
 namespace casteljau::raster {
 

@@ -52,6 +52,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/raster.hpp"
 #include "path/flatten_internal.hpp"
 

@@ -25,7 +25,6 @@
 // sagitta stays below the tolerance: r (1 - cos(phi/2)) <= tol, i.e. phi = 4 asin(sqrt(tol / 2r)).
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
@@ -34,7 +33,6 @@
 namespace casteljau::stroke_detail {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Points closer than this times the tolerance to the previous kept point are merged into it.
 constexpr double kMergeFactor = 1e-3;
 // At most this many arc steps per full turn, whatever the radius / tolerance ratio.
@@ -304,15 +302,15 @@ private:
 
 }  // namespace
 
-double user_tolerance(const Affine& m, double tolerance_px) {
-    if (!(tolerance_px > 0) || !std::isfinite(tolerance_px))
+double user_tolerance(const Affine& m, double tolerance) {
+    if (!(tolerance > 0) || !std::isfinite(tolerance))
         throw Error(ErrorKind::InvalidArgument, "stroke: tolerance must be a positive finite number");
     if (!m.is_finite()) throw Error(ErrorKind::InvalidData, "stroke: transform is not finite");
     const double s = m.max_scale();
     // A transform that collapses everything to a point shows nothing; any tolerance will do.
-    if (!(s > 0) || !std::isfinite(s)) return tolerance_px;
-    const double tol = tolerance_px / s;
-    return std::isfinite(tol) && tol > 0 ? tol : tolerance_px;
+    if (!(s > 0) || !std::isfinite(s)) return tolerance;
+    const double tol = tolerance / s;
+    return std::isfinite(tol) && tol > 0 ? tol : tolerance;
 }
 
 void check_finite(const Path& path) {
@@ -335,13 +333,13 @@ void stroke_polyline(const Polyline& poly, std::span<const Point> dirs, const St
 
 namespace casteljau {
 
-double stroke_merge_distance(const Affine& m, double tolerance_px) {
-    return stroke_detail::user_tolerance(m, tolerance_px) * stroke_detail::kMergeFactor;
+double stroke_merge_distance(const Affine& m, double tolerance) {
+    return stroke_detail::user_tolerance(m, tolerance) * stroke_detail::kMergeFactor;
 }
 
-Path stroke(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance_px) {
+Path stroke(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance) {
     using namespace stroke_detail;
-    const double tol = user_tolerance(m, tolerance_px);
+    const double tol = user_tolerance(m, tolerance);
     check_finite(path);
     if (!std::isfinite(style.width) || !std::isfinite(style.miter_limit) || !std::isfinite(style.dash_offset))
         throw Error(ErrorKind::InvalidData, "stroke: width, miter limit and dash offset must be finite");
@@ -362,9 +360,9 @@ Path stroke(const Path& path, const StrokeStyle& style, const Affine& m, double 
     return out;
 }
 
-Path dash(const Path& path, std::span<const double> dashes, double offset, const Affine& m, double tolerance_px) {
+Path dash(const Path& path, std::span<const double> dashes, double offset, const Affine& m, double tolerance) {
     using namespace stroke_detail;
-    const double tol = user_tolerance(m, tolerance_px);
+    const double tol = user_tolerance(m, tolerance);
     check_finite(path);
     if (!std::isfinite(offset)) throw Error(ErrorKind::InvalidData, "stroke: dash offset must be finite");
     const std::vector<double> pattern = effective_pattern(dashes);

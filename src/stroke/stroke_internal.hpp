@@ -15,8 +15,8 @@
 
 namespace casteljau::stroke_detail {
 
-// User-space tolerance for pixel tolerance `tolerance_px` under `m` (validates both).
-double user_tolerance(const Affine& m, double tolerance_px);
+// The user-space tolerance for `tolerance` pixels under `m` (validates both).
+double user_tolerance(const Affine& m, double tolerance);
 
 // Throws Error(InvalidData) when the path has a non-finite point or weight.
 void check_finite(const Path& path);

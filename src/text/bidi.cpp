@@ -1,11 +1,23 @@
-// Text stage, layout: bidi levels and visual reordering (see src/text/bidi.hpp).
-#include "text/bidi.hpp"
+// Text stage, layout: bidi levels and visual reordering (include/casteljau/shaping.hpp), a compact
+// subset of the Unicode bidirectional algorithm (UAX #9).
+//
+// Character classes come from HarfBuzz's Unicode functions: letters (and spacing marks) of a
+// right-to-left script are strong R, other letters strong L, decimal digits are numbers,
+// non-spacing marks take the class of the character before them, everything else is neutral;
+// LRM is L, RLM and ALM are R. Resolution (rules W1, W7, N1, N2, I1, I2 for a single paragraph
+// without explicit embeddings) yields levels 0 (LTR), 1 (RTL) and 2 (LTR numbers or Latin inside
+// RTL). L2 reordering turns levels into a left-to-right visual order.
+#include "casteljau/shaping.hpp"
 
 #include <hb.h>
 
 #include <algorithm>
 
-namespace casteljau::text_detail {
+namespace casteljau {
+
+namespace {
+
+enum class BidiClass : std::uint8_t { L, R, Number, Mark, Neutral };
 
 BidiClass bidi_class(char32_t c) {
     if (c == 0x200e) return BidiClass::L;                  // LEFT-TO-RIGHT MARK
@@ -31,6 +43,8 @@ BidiClass bidi_class(char32_t c) {
             return BidiClass::Neutral;
     }
 }
+
+}  // namespace
 
 int resolve_bidi_levels(std::u32string_view para, TextDirection direction, std::vector<std::uint8_t>& levels) {
     const std::size_t n = para.size();
@@ -82,7 +96,7 @@ int resolve_bidi_levels(std::u32string_view para, TextDirection direction, std::
     return p;
 }
 
-void visual_order(std::span<const std::uint8_t> levels, std::vector<std::size_t>& order) {
+void bidi_visual_order(std::span<const std::uint8_t> levels, std::vector<std::size_t>& order) {
     const std::size_t n = levels.size();
     order.resize(n);
     for (std::size_t i = 0; i < n; ++i) order[i] = i;
@@ -106,4 +120,4 @@ void visual_order(std::span<const std::uint8_t> levels, std::vector<std::size_t>
     }
 }
 
-}  // namespace casteljau::text_detail
+}  // namespace casteljau

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/text.hpp"
 
 namespace casteljau {

@@ -19,7 +19,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/text.hpp"
-#include "parallel/for_each_index.hpp"
+#include "core/for_each_index.hpp"
 #include "text/font_impl.hpp"
 
 namespace casteljau {

@@ -8,16 +8,13 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
+#include "casteljau/shaping.hpp"
 #include "casteljau/text.hpp"
-#include "text/bidi.hpp"
 #include "text/shape.hpp"
 
 namespace casteljau {
 
 namespace {
-
-using text_detail::ShapedGlyph;
-using text_detail::ShapedRun;
 
 // Spaces at which lines may break and which hang at the end of a line (not NBSP, U+2007, U+202F).
 bool is_break_space(char32_t c) {
@@ -146,7 +143,7 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
             if (c == U'\t') c = U' ';
         const std::u32string_view para(work);
         const std::size_t n = para.size();
-        const int para_level = text_detail::resolve_bidi_levels(para, style.direction, levels);
+        const int para_level = resolve_bidi_levels(para, style.direction, levels);
         shaper.shape_paragraph(para, levels, runs);
 
         // Advance of each code point (glyph advances summed by cluster) and cluster starts.
@@ -205,7 +202,7 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
                 pieces.push_back({&r, g0, g1});
                 piece_levels.push_back(r.level);
             }
-            text_detail::visual_order(piece_levels, order);
+            bidi_visual_order(piece_levels, order);
 
             TextLine line;
             line.rtl = para_level == 1;

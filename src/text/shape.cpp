@@ -1,7 +1,10 @@
-// Text stage, shaping: itemization (script, font fallback) and HarfBuzz (src/text/shape.hpp).
+// Text stage, shaping: itemization (script, font fallback) and HarfBuzz (src/text/shape.hpp,
+// include/casteljau/shaping.hpp).
 #include "text/shape.hpp"
 
 #include <hb-ft.h>
+
+#include <memory>
 
 #include "casteljau/error.hpp"
 #include "text/font_impl.hpp"
@@ -146,3 +149,34 @@ void Shaper::shape_paragraph(std::u32string_view para, std::span<const std::uint
 }
 
 }  // namespace casteljau::text_detail
+
+namespace casteljau {
+
+class TextShaper::Impl : public text_detail::Shaper {
+public:
+    using Shaper::Shaper;
+};
+
+TextShaper::TextShaper(std::span<const Font* const> fonts, const TextStyle& style, bool vertical)
+    : impl_(std::make_unique<Impl>(fonts, style, vertical)) {}
+
+TextShaper::~TextShaper() = default;
+
+void TextShaper::shape_paragraph(std::u32string_view paragraph, std::span<const std::uint8_t> levels,
+                                 std::vector<ShapedRun>& runs) {
+    impl_->shape_paragraph(paragraph, levels, runs);
+}
+
+bool letter_spacing_allowed(char32_t c) {
+    switch (hb_unicode_script(hb_unicode_funcs_get_default(), c)) {
+        case HB_SCRIPT_ARABIC: case HB_SCRIPT_SYRIAC: case HB_SCRIPT_NKO: case HB_SCRIPT_MANICHAEAN:
+        case HB_SCRIPT_PSALTER_PAHLAVI: case HB_SCRIPT_MANDAIC: case HB_SCRIPT_MONGOLIAN: case HB_SCRIPT_PHAGS_PA:
+        case HB_SCRIPT_DEVANAGARI: case HB_SCRIPT_BENGALI: case HB_SCRIPT_GURMUKHI: case HB_SCRIPT_MODI:
+        case HB_SCRIPT_SHARADA: case HB_SCRIPT_SYLOTI_NAGRI: case HB_SCRIPT_TIRHUTA: case HB_SCRIPT_OGHAM:
+            return false;
+        default:
+            return true;
+    }
+}
+
+}  // namespace casteljau

@@ -1,4 +1,5 @@
-// Internal (text module): itemization into runs and HarfBuzz shaping of one paragraph.
+// Text stage, internal: itemization into runs and HarfBuzz shaping of one paragraph, the
+// implementation of TextShaper (casteljau/shaping.hpp), used directly by layout_text.
 //
 // A run is a maximal range of code points with one bidi level, one script and one font of the
 // fallback chain. Each run is shaped with the whole paragraph as context (so Arabic joining and
@@ -13,26 +14,10 @@
 #include <vector>
 
 #include "casteljau/font.hpp"
+#include "casteljau/shaping.hpp"
 #include "casteljau/text.hpp"
 
 namespace casteljau::text_detail {
-
-struct ShapedGlyph {
-    std::uint32_t glyph = 0;
-    std::uint16_t font = 0;
-    std::uint32_t cluster = 0;  // code point index in the paragraph
-    double advance = 0;         // px
-    double x_offset = 0;        // px, x right
-    double y_offset = 0;        // px, y UP (HarfBuzz's convention)
-    double y_advance = 0;       // px, y UP: vertical text only (negative: the pen moves down)
-};
-
-struct ShapedRun {
-    std::uint32_t begin = 0, end = 0;  // code point range in the paragraph
-    std::uint8_t level = 0;
-    std::uint16_t font = 0;
-    std::vector<ShapedGlyph> glyphs;   // visual order
-};
 
 class Shaper {
 public:

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "casteljau/canvas.hpp"
+#include "casteljau/file_io.hpp"
 #include "casteljau/font.hpp"
 #include "casteljau/geojson.hpp"
 #include "casteljau/png.hpp"

@@ -1,7 +1,7 @@
-// Parallel stage: the public size of the process-wide pool (include/casteljau/threads.hpp).
+// Core stage: the public size of the process-wide pool (include/casteljau/threads.hpp).
 #include "casteljau/threads.hpp"
 
-#include "parallel/for_each_index.hpp"
+#include "core/for_each_index.hpp"
 
 namespace casteljau {
 

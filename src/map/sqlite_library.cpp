@@ -1,7 +1,7 @@
-// Formats stage: opening SQLite on first use (see sqlite_library.hpp).
-#include "formats/sqlite_library.hpp"
+// Map stage: opening SQLite on first use (see sqlite_library.hpp).
+#include "map/sqlite_library.hpp"
 
-#include "platform/runtime_library.hpp"
+#include "core/runtime_library.hpp"
 
 #ifndef CASTELJAU_SQLITE_SONAME
 #define CASTELJAU_SQLITE_SONAME "libsqlite3.so.0"

@@ -1,22 +1,23 @@
-// Map stage: the AreaCompositor (see include/casteljau/seamless.hpp), a SpanSink that hands each
-// pixel's remaining area to the fill being added.
+// Canvas stage: the SeamlessCompositor (see include/casteljau/seamless.hpp), a SpanSink that hands
+// each pixel's remaining area to the fill being added.
+#include "casteljau/seamless.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 
 #include "casteljau/error.hpp"
-#include "casteljau/seamless.hpp"
 #include "paint/pixel_math.hpp"
 
 namespace casteljau {
 
-AreaCompositor::AreaCompositor(int width, int height) : AreaCompositor(IRect{0, 0, width, height}) {}
+SeamlessCompositor::SeamlessCompositor(int width, int height) : SeamlessCompositor(IRect{0, 0, width, height}) {}
 
-AreaCompositor::AreaCompositor(const IRect& region) { reset(region); }
+SeamlessCompositor::SeamlessCompositor(const IRect& region) { reset(region); }
 
-AreaCompositor::AreaCompositor(Pixmap& target, const IRect& region) { reset_into(target, region); }
+SeamlessCompositor::SeamlessCompositor(Pixmap& target, const IRect& region) { reset_into(target, region); }
 
-void AreaCompositor::reset(const IRect& region) {
+void SeamlessCompositor::reset(const IRect& region) {
     check_canvas_size(region.x1 - region.x0, region.y1 - region.y0);
     if (region.empty()) throw Error(ErrorKind::InvalidArgument, "compositor size must be positive");
     const bool keep_layer = !into_ && same_size(region);
@@ -25,25 +26,25 @@ void AreaCompositor::reset(const IRect& region) {
     into_ = nullptr;
 }
 
-void AreaCompositor::reset_into(Pixmap& target, const IRect& region) {
+void SeamlessCompositor::reset_into(Pixmap& target, const IRect& region) {
     if (region.empty()) throw Error(ErrorKind::InvalidArgument, "compositor size must be positive");
     if (region.x0 < 0 || region.y0 < 0 || region.x1 > target.width() || region.y1 > target.height())
-        throw Error(ErrorKind::InvalidArgument, "AreaCompositor::reset_into: the target does not contain the region");
+        throw Error(ErrorKind::InvalidArgument, "SeamlessCompositor::reset_into: the target does not contain the region");
     start(region, false);  // pixels already written into a target stay there
     layer_.clear();
     layer_.shrink_to_fit();
     into_ = &target;
 }
 
-bool AreaCompositor::same_size(const IRect& region) const {
+bool SeamlessCompositor::same_size(const IRect& region) const {
     return !lo_.empty() && region.x1 - region.x0 == width() && region.y1 - region.y0 == height();
 }
 
-std::size_t AreaCompositor::coverage_cells(const IRect& region) {
+std::size_t SeamlessCompositor::coverage_cells(const IRect& region) {
     return static_cast<std::size_t>(region.x1 - region.x0) * static_cast<std::size_t>(region.y1 - region.y0);
 }
 
-void AreaCompositor::start(const IRect& region, bool clear_layer) {
+void SeamlessCompositor::start(const IRect& region, bool clear_layer) {
     if (same_size(region)) {
         forget(clear_layer);  // only what the last fills touched
     } else {
@@ -54,18 +55,18 @@ void AreaCompositor::start(const IRect& region, bool clear_layer) {
     region_ = region;
 }
 
-std::uint8_t* AreaCompositor::layer_origin() const {
+std::uint8_t* SeamlessCompositor::layer_origin() const {
     if (into_) return into_->row(region_.y0) + static_cast<std::size_t>(region_.x0) * 4;
     return const_cast<std::uint8_t*>(layer_.data());
 }
 
-std::size_t AreaCompositor::layer_stride() const {
+std::size_t SeamlessCompositor::layer_stride() const {
     return into_ ? into_->stride() : static_cast<std::size_t>(width()) * 4;
 }
 
-void AreaCompositor::clear() { forget(true); }
+void SeamlessCompositor::clear() { forget(true); }
 
-void AreaCompositor::forget(bool layer_too) {
+void SeamlessCompositor::forget(bool layer_too) {
     const std::size_t w = static_cast<std::size_t>(width());
     std::uint8_t* const layer = layer_origin();
     const std::size_t stride = layer_stride();
@@ -83,7 +84,7 @@ namespace {
 
 using pixel::mul_div255;
 
-struct AreaSink final : SpanSink {
+struct SeamlessSink final : SpanSink {
     std::uint8_t* layer;  // the layer's pixel at the region's origin
     std::size_t layer_stride;
     std::uint8_t* cov;
@@ -159,16 +160,16 @@ struct AreaSink final : SpanSink {
 
 }  // namespace
 
-void AreaCompositor::add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity) {
+void SeamlessCompositor::add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity) {
     add(raster, path, opts, color, opacity, region_);
 }
 
-void AreaCompositor::add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity,
-                         const IRect& clip) {
+void SeamlessCompositor::add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity,
+                             const IRect& clip) {
     const IRect c{std::max(clip.x0, region_.x0), std::max(clip.y0, region_.y0), std::min(clip.x1, region_.x1),
                   std::min(clip.y1, region_.y1)};
     if (c.empty()) return;
-    AreaSink sink;
+    SeamlessSink sink;
     sink.layer = layer_origin();
     sink.layer_stride = layer_stride();
     sink.cov = cov_.data();
@@ -181,10 +182,10 @@ void AreaCompositor::add(Rasterizer& raster, const Path& path, const FillOptions
     raster.fill(path, Affine{}, opts, c, sink);
 }
 
-void AreaCompositor::composite_onto(Pixmap& dst) const {
+void SeamlessCompositor::composite_onto(Pixmap& dst) const {
     if (into_ == &dst) return;  // the layer is dst's own pixels
     if (region_.x0 < 0 || region_.y0 < 0 || region_.x1 > dst.width() || region_.y1 > dst.height())
-        throw Error(ErrorKind::InvalidArgument, "AreaCompositor::composite_onto: the target does not contain the region");
+        throw Error(ErrorKind::InvalidArgument, "SeamlessCompositor::composite_onto: the target does not contain the region");
     for (int y = region_.y0; y < region_.y1; ++y) {
         const std::size_t r = static_cast<std::size_t>(y - region_.y0);
         if (lo_[r] >= hi_[r]) continue;  // no fill touched the row: the layer is transparent there

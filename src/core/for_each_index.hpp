@@ -1,4 +1,4 @@
-// Parallel stage (below every other): the one way casteljau fans work out over threads.
+// Core stage (below every other): the one way casteljau fans work out over threads.
 //
 // for_each_index(workers, n, task) calls task(worker, i) once for every i in [0, n), on up to
 // `workers` threads at once; worker ids are in [0, workers) and each is used by one thread at a

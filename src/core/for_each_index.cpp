@@ -1,11 +1,11 @@
-// Parallel stage: the process-wide pool behind for_each_index (see for_each_index.hpp).
+// Core stage: the process-wide pool behind for_each_index (see for_each_index.hpp).
 //
 // Pool threads wait for jobs on one queue. A job stays queued while it has worker ids and indices
 // left; a pool thread that takes it claims an id, counts itself in the job's `active` (under the
 // pool's lock, so a caller that has dequeued its job sees every helper that joined) and runs
 // indices until none are left. The caller runs its own job too, then dequeues it and waits for
 // `active` to drop to zero before the job (on its stack) goes away.
-#include "parallel/for_each_index.hpp"
+#include "core/for_each_index.hpp"
 
 #include <unistd.h>
 

@@ -1,11 +1,11 @@
-// Formats stage: SQLite, loaded when an MBTiles file is first written or read.
+// Map stage: SQLite, loaded when an MBTiles file is first written or read.
 //
 // Only `tiles -o FILE.mbtiles` and `tiles-merge` use SQLite, but linked directly it was bound at
 // every process's start-up: Debian's libsqlite3 is linked with BIND_NOW, so the dynamic loader
 // resolved its 1,600 symbol references before `casteljau text` could draw one letter (a third
 // of all the loader's lookups). So SQLite is opened with dlopen by its soname
 // (CASTELJAU_SQLITE_SONAME, read from the SQLite found at build time) on first use, and its
-// functions are called through this table (platform/runtime_library.hpp). Thread-safe: the
+// functions are called through this table (core/runtime_library.hpp). Thread-safe: the
 // library is opened once (std::call_once).
 #pragma once
 

@@ -1,5 +1,5 @@
-// Pictures of curves, splines, basis functions and surfaces (curve_draw.hpp).
-#include "casteljau/curve_draw.hpp"
+// Pictures of curves, splines, basis functions and surfaces (include/casteljau/figures.hpp).
+#include "casteljau/figures.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +9,7 @@
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/spline.hpp"
 #include "casteljau/stroke.hpp"
 

@@ -1,4 +1,4 @@
-// Internal: memory for pixel buffers, large ones on huge pages.
+// Core stage, internal: memory for pixel buffers, large ones on huge pages.
 //
 // Small blocks come from calloc. Blocks of kHugeBlock bytes and more (a 1448 x 1448 RGBA image)
 // are mapped directly, aligned to 2 MiB and marked MADV_HUGEPAGE on Linux, so that the kernel

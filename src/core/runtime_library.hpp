@@ -1,9 +1,9 @@
-// Platform (below every other stage): a shared library opened at run time.
+// Core stage (below every other): a shared library opened at run time.
 //
 // Libraries that only some commands need (PROJ for projections that are not built in, SQLite for
 // MBTiles) are not linked: every casteljau process would pay for loading and relocating them at
 // start-up. They are opened with dlopen by soname on first use instead, and their functions are
-// called through a table of pointers (map/proj_library.hpp, formats/sqlite_library.hpp).
+// called through a table of pointers (map/proj_library.hpp, map/sqlite_library.hpp).
 // RuntimeLibrary fills such a table; open_once() opens a library once per process. RuntimeLibrary
 // is not thread-safe by itself; open_once() is.
 #pragma once

@@ -1,4 +1,4 @@
-// Formats stage: where tiles go: a folder tree DIR/z/x/y.png or an MBTiles 1.3 SQLite file
+// Map stage: where tiles go: a folder tree DIR/z/x/y.png or an MBTiles 1.3 SQLite file
 // (see include/casteljau/tiles.hpp).
 #include <sys/stat.h>
 #include <unistd.h>
@@ -11,9 +11,10 @@
 #include <sstream>
 
 #include "casteljau/error.hpp"
-#include "casteljau/png.hpp"
+#include "casteljau/file_io.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/tiles.hpp"
-#include "formats/sqlite_library.hpp"
+#include "map/sqlite_library.hpp"
 
 namespace casteljau {
 

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "casteljau/limits.hpp"
 #include "casteljau/surface.hpp"
 #include "curves/curve_util.hpp"
 

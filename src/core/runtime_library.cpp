@@ -1,5 +1,5 @@
-// Platform: a shared library opened at run time (see runtime_library.hpp).
-#include "platform/runtime_library.hpp"
+// Core stage: a shared library opened at run time (see runtime_library.hpp).
+#include "core/runtime_library.hpp"
 
 #include <dlfcn.h>
 

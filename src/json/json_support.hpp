@@ -1,6 +1,7 @@
-// Formats stage: helpers shared by the JSON readers (GeoJSON, TopoJSON, map style files):
-// parsing with simdjson's DOM into an Error that names the byte offset of malformed JSON, a JSON
-// path for messages (`features[12].geometry.coordinates[0][3]`), and property values.
+// JSON stage (internal, used by the formats and map stages): helpers shared by the JSON readers
+// (GeoJSON, TopoJSON, map style files): parsing with simdjson's DOM into an Error that names the
+// byte offset of malformed JSON, a scan of large documents piece by piece, and a JSON path for
+// messages (`features[12].geometry.coordinates[0][3]`).
 #pragma once
 
 #include <simdjson.h>
@@ -11,7 +12,6 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
-#include "casteljau/geojson.hpp"
 
 namespace casteljau::json {
 
@@ -61,9 +61,5 @@ private:
     std::vector<Part> parts_;
     std::string prefix_;
 };
-
-PropertyValue to_property(simdjson::dom::element e);
-std::vector<std::pair<std::string, PropertyValue>> to_properties(simdjson::dom::element e, JsonPath& path);
-std::string id_text(simdjson::dom::element e);
 
 }  // namespace casteljau::json

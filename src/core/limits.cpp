@@ -1,5 +1,5 @@
-// The process-wide resource limits (casteljau/limits.hpp): one atomic per field, so that checks on
-// any thread read a whole value without a lock.
+// Core stage: the process-wide resource limits (casteljau/limits.hpp): one atomic per field, so
+// that checks on any thread read a whole value without a lock.
 #include "casteljau/limits.hpp"
 
 #include <atomic>

@@ -1,5 +1,5 @@
 // Memory for pixel buffers (see pixel_memory.hpp).
-#include "platform/pixel_memory.hpp"
+#include "core/pixel_memory.hpp"
 
 #include <cstdint>
 #include <cstdlib>

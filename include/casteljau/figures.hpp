@@ -1,4 +1,4 @@
-// casteljau/curve_draw.hpp: pictures of the curve toolkit: a Bézier curve with its control polygon
+// casteljau/figures.hpp: pictures of the curve toolkit: a Bézier curve with its control polygon
 // and (optionally) its de Casteljau construction, a spline with its control polygon and knots, a
 // plot of B-spline basis functions, and a surface as a projected iso-parameter grid (optionally
 // shaded quads). Used by the `bezier`, `spline` and `surface` CLI commands and the gallery.
@@ -19,6 +19,7 @@
 
 #include "casteljau/bezier.hpp"
 #include "casteljau/geometry.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/paint.hpp"
 #include "casteljau/path.hpp"
 #include "casteljau/surface.hpp"

@@ -1,10 +1,9 @@
-// Formats stage: helpers shared by the JSON readers (see json_support.hpp).
-#include "formats/json_support.hpp"
+// JSON stage: helpers shared by the JSON readers (see json_support.hpp).
+#include "json/json_support.hpp"
 
-#include <algorithm>
+#include <string>
+#include <utility>
 #include <cctype>
-#include <charconv>
-#include <cmath>
 
 namespace casteljau::json {
 
@@ -246,92 +245,4 @@ std::string JsonPath::str() const {
 
 void JsonPath::fail(ErrorKind kind, const std::string& what) const { throw Error(kind, str() + ": " + what); }
 
-namespace {
-std::string number_text(double v) {
-    char buf[32];
-    auto r = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, r.ptr);
-}
-}  // namespace
-
-PropertyValue to_property(simdjson::dom::element e) {
-    PropertyValue v;
-    switch (e.type()) {
-        case simdjson::dom::element_type::NULL_VALUE: break;
-        case simdjson::dom::element_type::BOOL:
-            v.type = PropertyValue::Type::Bool;
-            v.number = e.get_bool().value_unsafe() ? 1 : 0;
-            break;
-        case simdjson::dom::element_type::INT64:
-        case simdjson::dom::element_type::UINT64:
-        case simdjson::dom::element_type::DOUBLE:
-            v.type = PropertyValue::Type::Number;
-            v.number = e.get_double().value_unsafe();
-            break;
-        case simdjson::dom::element_type::STRING:
-            v.type = PropertyValue::Type::String;
-            v.text = std::string(e.get_string().value_unsafe());
-            break;
-        default:
-            v.type = PropertyValue::Type::Json;
-            v.text = simdjson::minify(e);
-            break;
-    }
-    return v;
-}
-
-std::vector<std::pair<std::string, PropertyValue>> to_properties(simdjson::dom::element e, JsonPath& path) {
-    std::vector<std::pair<std::string, PropertyValue>> out;
-    if (e.is_null()) return out;
-    simdjson::dom::object obj;
-    if (e.get_object().get(obj) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "\"properties\" must be an object or null");
-    for (auto field : obj) out.emplace_back(std::string(field.key), to_property(field.value));
-    return out;
-}
-
-std::string id_text(simdjson::dom::element e) {
-    const PropertyValue v = to_property(e);
-    return v.type == PropertyValue::Type::Null ? std::string() : v.to_string();
-}
-
 }  // namespace casteljau::json
-
-namespace casteljau {
-
-std::string PropertyValue::to_string() const {
-    switch (type) {
-        case Type::Null: return "null";
-        case Type::Bool: return number != 0 ? "true" : "false";
-        case Type::Number: return json::number_text(number);
-        case Type::String:
-        case Type::Json: return text;
-    }
-    return {};
-}
-
-const PropertyValue* Feature::property(std::string_view name) const {
-    for (const auto& [k, v] : properties)
-        if (k == name) return &v;
-    return nullptr;
-}
-
-Rect MapData::bounds() const {
-    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-    for (const Feature& f : features)
-        for (const Geometry& g : f.geometries)
-            for (const Point& p : g.points) {
-                x0 = std::min(x0, p.x); y0 = std::min(y0, p.y);
-                x1 = std::max(x1, p.x); y1 = std::max(y1, p.y);
-            }
-    if (x0 > x1) return Rect{};
-    return Rect{x0, y0, x1, y1};
-}
-
-std::size_t MapData::position_count() const {
-    std::size_t n = 0;
-    for (const Feature& f : features)
-        for (const Geometry& g : f.geometries) n += g.points.size();
-    return n;
-}
-
-}  // namespace casteljau
