@@ -40,7 +40,7 @@ STAGES = [
     ("filter", ["paint"], ["filter.hpp"]),
     ("canvas", ["paint", "raster", "stroke"], ["canvas.hpp", "seamless.hpp"]),
     ("figures", ["canvas", "curves"], ["figures.hpp"]),
-    ("text", ["canvas"], ["font.hpp", "font_database.hpp", "text.hpp"]),
+    ("text", ["canvas"], ["font.hpp", "font_database.hpp", "text.hpp", "shaping.hpp"]),
     ("json", ["core"], []),
     ("formats", ["text", "filter", "canvas", "json"], ["png.hpp", "image.hpp", "svg.hpp", "geojson.hpp"]),
     ("map", ["formats", "json", "canvas"], ["map.hpp", "projection.hpp", "tiles.hpp"]),
