@@ -103,8 +103,10 @@ class Tree:
 
     def stage_of(self, path):
         """The stage of a file, or None when it belongs to none."""
-        if self.is_public(path):
+        if path.is_relative_to(self.include / "casteljau"):
             return self.public.get(path.relative_to(self.include / "casteljau").as_posix())
+        if not path.is_relative_to(self.src):
+            return None
         parts = path.relative_to(self.src).parts
         return parts[0] if len(parts) > 1 and parts[0] in self.rank else None
 
@@ -117,7 +119,7 @@ class Tree:
         return None
 
     def show(self, path):
-        return path.relative_to(self.root).as_posix()
+        return path.relative_to(self.root).as_posix() if path.is_relative_to(self.root) else str(path)
 
 
 def check_include(tree, allowed, path, stage, target):
