@@ -40,7 +40,7 @@ STAGES = [
     ("filter", ["paint"], ["filter.hpp"]),
     ("canvas", ["paint", "raster", "stroke"], ["canvas.hpp", "seamless.hpp"]),
     ("figures", ["canvas", "curves"], ["figures.hpp"]),
-    ("text", ["canvas"], ["font.hpp", "font_database.hpp", "text.hpp"]),
+    ("text", ["canvas"], ["font.hpp", "font_database.hpp", "text.hpp", "shaping.hpp"]),
     ("json", ["core"], []),
     ("formats", ["text", "filter", "canvas", "json"], ["png.hpp", "image.hpp", "svg.hpp", "geojson.hpp"]),
     ("map", ["formats", "json", "canvas"], ["map.hpp", "projection.hpp", "tiles.hpp"]),
@@ -64,6 +64,7 @@ INTERNAL_INTERFACES = {
     "paint/pixel_math.hpp",
     "paint/pipeline.hpp",
     "json/json_support.hpp",
+    "formats/json_properties.hpp",  # JSON values as feature property values, for map's style reader
 }
 
 STAGES_FILE = "tools/check_layering.py"
@@ -102,8 +103,10 @@ class Tree:
 
     def stage_of(self, path):
         """The stage of a file, or None when it belongs to none."""
-        if self.is_public(path):
+        if path.is_relative_to(self.include / "casteljau"):
             return self.public.get(path.relative_to(self.include / "casteljau").as_posix())
+        if not path.is_relative_to(self.src):
+            return None
         parts = path.relative_to(self.src).parts
         return parts[0] if len(parts) > 1 and parts[0] in self.rank else None
 
@@ -116,7 +119,7 @@ class Tree:
         return None
 
     def show(self, path):
-        return path.relative_to(self.root).as_posix()
+        return path.relative_to(self.root).as_posix() if path.is_relative_to(self.root) else str(path)
 
 
 def check_include(tree, allowed, path, stage, target):
