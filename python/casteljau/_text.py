@@ -70,14 +70,16 @@ def _loaded_library_dir() -> Optional[str]:
 def default_font_dirs() -> List[str]:
     """Where TextLayout looks for DejaVuSans.ttf when no font is given, as the `text` command does
     around its executable: $CASTELJAU_FONT_DIR, then around the loaded library LIB:
-    LIB/../share/casteljau/fonts (an install), LIB/../fonts and LIB/../../fonts (a build tree in
-    the source tree)."""
+    LIB/../share/casteljau/fonts and LIB/../../share/casteljau/fonts (an install, with or without
+    a multiarch library folder), LIB/../fonts and LIB/../../fonts (a build tree in the source
+    tree)."""
     dirs = []
     if os.environ.get("CASTELJAU_FONT_DIR"):
         dirs.append(os.environ["CASTELJAU_FONT_DIR"])
     lib = _loaded_library_dir()
     if lib:
-        dirs += [os.path.join(lib, "..", "share", "casteljau", "fonts"), os.path.join(lib, "..", "fonts"),
+        dirs += [os.path.join(lib, "..", "share", "casteljau", "fonts"),
+                 os.path.join(lib, "..", "..", "share", "casteljau", "fonts"), os.path.join(lib, "..", "fonts"),
                  os.path.join(lib, "..", "..", "fonts")]
     return [os.path.normpath(d) for d in dirs]
 
