@@ -33,8 +33,8 @@ typedef struct casteljau_map_options casteljau_map_options;
 typedef struct casteljau_tile_options casteljau_tile_options;
 
 /* Map data: features with their geometries (lon/lat) and properties. `layer` selects one object
- * of a TopoJSON topology by name (--layer; NULL or "": every object); for other input it must be
- * NULL or "". casteljau_map_load chooses the reader by the file name (.geojsonl, .geojsons,
+ * of a TopoJSON topology by name (--layer; NULL or "": every object); a layer for GeoJSON is
+ * CASTELJAU_ERROR_INVALID_ARGUMENT. casteljau_map_load chooses the reader by the file name (.geojsonl, .geojsons,
  * .ndjson, .geojsonseq: GeoJSON lines; .topojson: TopoJSON) and otherwise by content, as
  * casteljau_map_parse always does ({"type": "Topology"}: TopoJSON; one JSON object per line:
  * GeoJSON lines; else GeoJSON). CASTELJAU_ERROR_PARSE for malformed JSON or a member of the wrong

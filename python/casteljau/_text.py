@@ -151,16 +151,20 @@ class TextLayout(_Handle):
         handles = (_vp * len(fonts))(*[f._h for f in fonts])
         self._h = _out(_lib.casteljau_text_layout_create, text.encode("utf-8"), handles, len(fonts), style._h)
 
-    @property
-    def size(self) -> Tuple[float, float]:
-        """The text box (width, height): the wrap width or the widest line, first ascender to last
-        descender."""
+    def _box(self) -> Tuple[float, float]:
         w, h = _d(), _d()
         _check(_lib.casteljau_text_layout_size(self._h, _c.byref(w), _c.byref(h)))
         return (w.value, h.value)
 
-    width = property(lambda self: self.size[0])
-    height = property(lambda self: self.size[1])
+    @property
+    def width(self) -> float:
+        """The text box's width: the wrap width, or the widest line without wrapping."""
+        return self._box()[0]
+
+    @property
+    def height(self) -> float:
+        """The text box's height: first ascender to last descender, line advances between."""
+        return self._box()[1]
 
     @property
     def bounds(self) -> Tuple[float, float, float, float]:
