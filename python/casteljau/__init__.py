@@ -306,33 +306,33 @@ class Path(_Handle):
             raise MemoryError("casteljau: out of memory")
 
     @classmethod
-    def from_svg(cls, d: str) -> "Path":
+    def from_svg(cls, d: str) -> Path:
         """Parses SVG path data ("M10 10 L 20 20 Z"); a malformed one raises Error (status 2,
         the message names the position)."""
         return cls(d)
 
-    def move_to(self, x: float, y: float) -> "Path":
+    def move_to(self, x: float, y: float) -> Path:
         _check(_lib.casteljau_path_move_to(self._h, x, y)); return self
 
-    def line_to(self, x: float, y: float) -> "Path":
+    def line_to(self, x: float, y: float) -> Path:
         _check(_lib.casteljau_path_line_to(self._h, x, y)); return self
 
-    def quad_to(self, cx: float, cy: float, x: float, y: float) -> "Path":
+    def quad_to(self, cx: float, cy: float, x: float, y: float) -> Path:
         _check(_lib.casteljau_path_quad_to(self._h, cx, cy, x, y)); return self
 
-    def cubic_to(self, c1x: float, c1y: float, c2x: float, c2y: float, x: float, y: float) -> "Path":
+    def cubic_to(self, c1x: float, c1y: float, c2x: float, c2y: float, x: float, y: float) -> Path:
         _check(_lib.casteljau_path_cubic_to(self._h, c1x, c1y, c2x, c2y, x, y)); return self
 
-    def close(self) -> "Path":
+    def close(self) -> Path:
         _check(_lib.casteljau_path_close(self._h)); return self
 
-    def add_rect(self, x: float, y: float, w: float, h: float) -> "Path":
+    def add_rect(self, x: float, y: float, w: float, h: float) -> Path:
         _check(_lib.casteljau_path_add_rect(self._h, x, y, w, h)); return self
 
-    def add_ellipse(self, cx: float, cy: float, rx: float, ry: float) -> "Path":
+    def add_ellipse(self, cx: float, cy: float, rx: float, ry: float) -> Path:
         _check(_lib.casteljau_path_add_ellipse(self._h, cx, cy, rx, ry)); return self
 
-    def add_circle(self, cx: float, cy: float, r: float) -> "Path":
+    def add_circle(self, cx: float, cy: float, r: float) -> Path:
         return self.add_ellipse(cx, cy, r, r)
 
     def bounds(self) -> Tuple[float, float, float, float]:
@@ -380,7 +380,7 @@ class Paint(_Handle):
 
     @classmethod
     def linear(cls, p0: Sequence[float], p1: Sequence[float], stops: Sequence[Tuple[float, Color]],
-               spread: str = "pad", matrix: Optional[Matrix] = None, **kw: Any) -> "Paint":
+               spread: str = "pad", matrix: Optional[Matrix] = None, **kw: Any) -> Paint:
         arr, n = _stops(stops)
         return cls(_handle=_out(_lib.casteljau_paint_create_linear, p0[0], p0[1], p1[0], p1[1], arr, n,
                                 _key(_SPREAD, spread, "spread"), _matrix(matrix)), **kw)
@@ -388,15 +388,15 @@ class Paint(_Handle):
     @classmethod
     def radial(cls, center: Sequence[float], r: float, stops: Sequence[Tuple[float, Color]],
                focal: Optional[Sequence[float]] = None, fr: float = 0.0, spread: str = "pad",
-               matrix: Optional[Matrix] = None, **kw: Any) -> "Paint":
+               matrix: Optional[Matrix] = None, **kw: Any) -> Paint:
         f = focal if focal is not None else center
         arr, n = _stops(stops)
         return cls(_handle=_out(_lib.casteljau_paint_create_radial, center[0], center[1], r, f[0], f[1], fr, arr, n,
                                 _key(_SPREAD, spread, "spread"), _matrix(matrix)), **kw)
 
     @classmethod
-    def image(cls, image: "Image", sampling: str = "bilinear", matrix: Optional[Matrix] = None,
-              repeat: bool = False, **kw: Any) -> "Paint":
+    def image(cls, image: Image, sampling: str = "bilinear", matrix: Optional[Matrix] = None,
+              repeat: bool = False, **kw: Any) -> Paint:
         return cls(_handle=_out(_lib.casteljau_paint_create_image, image._h, _key(_SAMPLING, sampling, "sampling"),
                                 _matrix(matrix), 1 if repeat else 0), **kw)
 
@@ -411,11 +411,11 @@ class Image(_Handle):
         self._h = _handle if _handle is not None else _out(_lib.casteljau_image_create, int(width), int(height))
 
     @classmethod
-    def read_png(cls, path: PathLike) -> "Image":
+    def read_png(cls, path: PathLike) -> Image:
         return cls(_handle=_out(_lib.casteljau_image_read_png, os.fsencode(path)))
 
     @classmethod
-    def from_png(cls, data: bytes) -> "Image":
+    def from_png(cls, data: bytes) -> Image:
         """Decodes a PNG file's bytes."""
         data = bytes(data)
         return cls(_handle=_out(_lib.casteljau_image_decode_png, data, len(data)))

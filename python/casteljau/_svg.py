@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import ctypes as _c
 import os
-from typing import Iterable, List, Optional, Tuple, Union
+from typing import Iterable, List, Optional, Sequence, Tuple, Union
 
 from . import (Canvas, Color, Image, PathLike, _check, _color, _Color, _declare, _Handle, _lib, _out, _text)
 
@@ -82,7 +82,9 @@ class SvgDocument(_Handle):
     or an unusable root (status 3)."""
     _destroy = _lib.casteljau_svg_destroy
 
-    def __init__(self, source: SvgSource, *, resources: Optional[PathLike] = None, font_dir=None, font_file=None,
+    def __init__(self, source: SvgSource, *, resources: Optional[PathLike] = None,
+                 font_dir: Union[PathLike, Sequence[PathLike], None] = None,
+                 font_file: Union[PathLike, Sequence[PathLike], None] = None,
                  skip_system_fonts: bool = False, font_family: Optional[str] = None, serif_family: Optional[str] = None,
                  sans_serif_family: Optional[str] = None, cursive_family: Optional[str] = None,
                  fantasy_family: Optional[str] = None, monospace_family: Optional[str] = None) -> None:
