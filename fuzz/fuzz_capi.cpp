@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <string>
@@ -99,14 +100,22 @@ int image_side(Reader& r) {
     return static_cast<int>(std::max(-2.0, v));
 }
 
-// A folder for the tile pyramids of this process, made once and reused by every input.
+// A folder for the tile pyramids of this process, made once, reused by every input and removed
+// when the process exits.
 const std::string& tile_folder() {
-    static const std::string dir = [] {
-        char name[] = "/tmp/casteljau-fuzz-capi.XXXXXX";
-        const char* made = mkdtemp(name);
-        return std::string(made ? made : "/tmp");
-    }();
-    return dir;
+    struct Folder {
+        std::string path;
+        Folder() {
+            char name[] = "/tmp/casteljau-fuzz-capi.XXXXXX";
+            if (const char* made = mkdtemp(name)) path = made;
+        }
+        ~Folder() {
+            std::error_code ec;
+            if (!path.empty()) std::filesystem::remove_all(path, ec);
+        }
+    };
+    static const Folder folder;
+    return folder.path;
 }
 
 // Called after each metatile; asks to stop once `*user` calls have been made (0: never).
@@ -373,7 +382,8 @@ private:
         casteljau_tile_options_set_exact_overlaps(o, r.small_int());
         casteljau_tile_options_set_tolerance(o, r.number());
         casteljau_tile_options_set_name(o, (r.byte() & 1) ? r.text().c_str() : nullptr);
-        const std::string output = tile_folder() + ((r.byte() & 1) ? "/tiles.mbtiles" : "/tiles");
+        const std::string& dir = tile_folder();  // empty when it could not be made: an error below
+        const std::string output = dir.empty() ? dir : dir + ((r.byte() & 1) ? "/tiles.mbtiles" : "/tiles");
         int left = r.byte() % 4;
         casteljau_tile_stats stats;
         casteljau_map* m = pick(maps_, r);
