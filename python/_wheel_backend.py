@@ -1,5 +1,8 @@
-"""A minimal PEP 517 build backend for this pure-Python package: build_wheel zips casteljau/ with
-the dist-info files a wheel needs (METADATA, WHEEL, RECORD). No dependencies."""
+"""A minimal PEP 517 build backend for this pure-Python package: build_wheel zips casteljau/ (its
+.py files and the py.typed marker) with the dist-info files a wheel needs (METADATA, WHEEL,
+RECORD), and adds casteljau/_build_tree.py, which records where the shared library of the source
+tree's build folder is (SOURCE/build/libcasteljau.so.0), so that `pip install ./python` after a
+cmake build finds the library without installing it. No dependencies."""
 import base64
 import hashlib
 import os
@@ -14,9 +17,12 @@ def _files():
     root = os.path.join(HERE, NAME)
     for dirpath, _, names in os.walk(root):
         for n in sorted(names):
-            if n.endswith(".py"):
+            if (n.endswith(".py") or n == "py.typed") and n != "_build_tree.py":
                 full = os.path.join(dirpath, n)
                 yield os.path.relpath(full, HERE).replace(os.sep, "/"), open(full, "rb").read()
+    library = os.path.join(os.path.dirname(HERE), "build", "libcasteljau.so.0")
+    yield NAME + "/_build_tree.py", ('"""Written by the wheel backend: the source tree\'s build folder library."""\n'
+                                     "LIBRARY = %r\n" % library).encode()
 
 
 def _metadata():

@@ -3,8 +3,11 @@
  * It mirrors the C++ Canvas (casteljau/canvas.hpp) call for call: paths (a builder and SVG path
  * data), stroke styles, paints (solid colours, linear and radial gradients, image patterns, opacity,
  * blend modes), a canvas with a state stack (transform, clip, opacity, blend mode), clipping to
- * rectangles and paths, images (premultiplied RGBA8, PNG read and write, raw pixel access), layers,
- * and text with a font file.
+ * rectangles and paths, images (premultiplied RGBA8, PNG read, write and encode, raw pixel
+ * access), layers, and text with a font file. Three headers it includes at its end add the
+ * documents casteljau draws, with the options of the command line: casteljau_svg.h (SVG
+ * documents), casteljau_map.h (GeoJSON and TopoJSON maps, tile pyramids) and casteljau_text.h
+ * (paragraph layout: fallback fonts, wrapping, alignment, direction, features, variations).
  *
  * Conventions
  * - Every name starts with casteljau_ / CASTELJAU_. Objects are opaque handles made by a
@@ -67,7 +70,8 @@ typedef CASTELJAU_ENUM(casteljau_status) {
     CASTELJAU_ERROR_IO = 5,               /* a file could not be read or written */
     CASTELJAU_ERROR_FONT = 6,             /* FreeType or HarfBuzz refused a font */
     CASTELJAU_ERROR_OUT_OF_MEMORY = 7,
-    CASTELJAU_ERROR_INTERNAL = 8
+    CASTELJAU_ERROR_INTERNAL = 8,
+    CASTELJAU_ERROR_CANCELLED = 9         /* a progress callback asked to stop */
 } casteljau_status;
 
 typedef CASTELJAU_ENUM(casteljau_fill_rule) { CASTELJAU_FILL_NONZERO = 0, CASTELJAU_FILL_EVENODD = 1 } casteljau_fill_rule;
@@ -109,6 +113,11 @@ CASTELJAU_API int casteljau_version(void);                /* CASTELJAU_VERSION o
 /* The message of the last failed call on this thread ("" when none); valid until the next one. */
 CASTELJAU_API const char* casteljau_last_error(void);
 CASTELJAU_API const char* casteljau_status_name(casteljau_status status);
+/* Releases memory the library allocated for the caller (casteljau_image_encode_png); accepts NULL. */
+CASTELJAU_API void casteljau_free(void* memory);
+/* Parses a CSS colour ("crimson", "#4a4a4a", "rgb(10 20 30 / 50%)", "transparent"), as the
+ * command line's colour options do; CASTELJAU_ERROR_PARSE for anything else. */
+CASTELJAU_API casteljau_status casteljau_color_parse(const char* text, casteljau_color* out);
 
 /* Paths: contours of lines, quadratic and cubic curves, in user space. */
 CASTELJAU_API casteljau_path* casteljau_path_create(void); /* NULL when out of memory */
@@ -161,6 +170,9 @@ CASTELJAU_API casteljau_status casteljau_paint_create_image(const casteljau_imag
 CASTELJAU_API void casteljau_paint_destroy(casteljau_paint* paint);
 CASTELJAU_API casteljau_status casteljau_paint_set_opacity(casteljau_paint* paint, double opacity);
 CASTELJAU_API casteljau_status casteljau_paint_set_blend_mode(casteljau_paint* paint, casteljau_blend_mode mode);
+/* Nonzero: solid colours are blended with coverage in linear light (gamma-correct) instead of
+ * sRGB, as `casteljau text --gamma-correct` draws; 0 (the default): sRGB. */
+CASTELJAU_API casteljau_status casteljau_paint_set_linear_blend(casteljau_paint* paint, int linear);
 
 /* Images: premultiplied RGBA8 pixels. */
 CASTELJAU_API casteljau_status casteljau_image_create(int width, int height, casteljau_image** out); /* transparent */
@@ -168,6 +180,9 @@ CASTELJAU_API casteljau_status casteljau_image_read_png(const char* path, castel
 CASTELJAU_API casteljau_status casteljau_image_decode_png(const uint8_t* bytes, size_t size, casteljau_image** out);
 /* Writes through a temporary file renamed into place: never a half-written file. */
 CASTELJAU_API casteljau_status casteljau_image_write_png(const casteljau_image* image, const char* path);
+/* The PNG file casteljau_image_write_png would write, in memory: *out (size *size bytes) is the
+ * caller's, to release with casteljau_free. */
+CASTELJAU_API casteljau_status casteljau_image_encode_png(const casteljau_image* image, uint8_t** out, size_t* size);
 CASTELJAU_API void casteljau_image_destroy(casteljau_image* image);
 CASTELJAU_API int casteljau_image_width(const casteljau_image* image);   /* 0 for NULL */
 CASTELJAU_API int casteljau_image_height(const casteljau_image* image);  /* 0 for NULL */
@@ -177,6 +192,8 @@ CASTELJAU_API uint8_t* casteljau_image_data(casteljau_image* image);
 
 /* Fonts (TrueType/OpenType/collections through FreeType, shaped by HarfBuzz). */
 CASTELJAU_API casteljau_status casteljau_font_load(const char* path, casteljau_font** out);
+/* Face `face_index` (0 and up) of a collection (.ttc/.otc); CASTELJAU_ERROR_FONT past its last. */
+CASTELJAU_API casteljau_status casteljau_font_load_face(const char* path, int face_index, casteljau_font** out);
 CASTELJAU_API void casteljau_font_destroy(casteljau_font* font);
 
 /* Canvas. */
@@ -279,5 +296,9 @@ CASTELJAU_API int casteljau_thread_count(void);
 #ifdef __cplusplus
 }
 #endif
+
+#include "casteljau_svg.h"
+#include "casteljau_map.h"
+#include "casteljau_text.h"
 
 #endif /* CASTELJAU_H */

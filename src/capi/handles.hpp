@@ -1,19 +1,28 @@
-// C API, internal: what the opaque handles of include/casteljau/casteljau.h hold, and the guard
-// that turns every C++ exception into a status and a thread-local message.
+// C API, internal: what the opaque handles of include/casteljau/casteljau.h (and of the SVG, map
+// and text headers it includes) hold, and the guard that turns every C++ exception into a status
+// and a thread-local message.
 #pragma once
 
 #include <cstring>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/casteljau.h"
 #include "casteljau/error.hpp"
 #include "casteljau/font.hpp"
+#include "casteljau/geojson.hpp"
+#include "casteljau/map.hpp"
 #include "casteljau/paint.hpp"
 #include "casteljau/path.hpp"
+#include "casteljau/projection.hpp"
 #include "casteljau/stroke.hpp"
+#include "casteljau/svg.hpp"
+#include "casteljau/text.hpp"
+#include "casteljau/tiles.hpp"
 
 struct casteljau_path {
     casteljau::Path path;
@@ -34,7 +43,50 @@ struct casteljau_canvas {
     std::unique_ptr<casteljau::Canvas> canvas;
 };
 
+struct casteljau_svg_options {
+    casteljau::SvgOptions options;
+};
+struct casteljau_svg {
+    casteljau::SvgDocument document;
+};
+
+struct casteljau_map {
+    casteljau::MapData data;
+};
+struct casteljau_map_style {
+    casteljau::MapStyle style;
+};
+// The image options of `casteljau map`, the projection parsed when it is set.
+struct casteljau_map_options {
+    casteljau::MapOptions options;
+    casteljau::MapProjection projection;
+};
+// The options of `casteljau tiles`: the pyramid's, with the size and scale kept apart because the
+// scale also multiplies the buffer and the style's widths.
+struct casteljau_tile_options {
+    casteljau::TileOptions options;
+    int tile_size = 256, scale = 1, buffer = 64;
+    std::string name = "casteljau";
+};
+
+struct casteljau_text_style {
+    casteljau::TextStyle style;
+    std::vector<casteljau::Variation> variations;
+};
+// A layout with the fonts it points at (copies of the caller's, variations applied) and the
+// UTF-8 text of each line.
+struct casteljau_text_layout {
+    std::vector<std::unique_ptr<casteljau::Font>> fonts;
+    casteljau::TextLayout layout;
+    std::vector<std::string> line_text;
+};
+
 namespace casteljau::capi {
+
+// Records a stop asked for by a caller's callback: CASTELJAU_ERROR_CANCELLED.
+struct Cancelled : std::exception {
+    const char* what() const noexcept override { return "cancelled by the progress callback"; }
+};
 
 // Records `message` as this thread's last error and returns `status`.
 casteljau_status fail(casteljau_status status, const char* message) noexcept;
@@ -48,6 +100,8 @@ casteljau_status guard(F&& f) noexcept {
         return CASTELJAU_OK;
     } catch (const Error& e) {
         return fail(status_of(e.kind()), e.what());
+    } catch (const Cancelled& e) {
+        return fail(CASTELJAU_ERROR_CANCELLED, e.what());
     } catch (const std::bad_alloc&) {
         return fail(CASTELJAU_ERROR_OUT_OF_MEMORY, "out of memory");
     } catch (const std::exception& e) {
@@ -83,6 +137,11 @@ BlendMode blend_of(int m);
 
 inline Color color(casteljau_color c) { return Color::rgba(c.r, c.g, c.b, c.a); }
 
+// Throws Error(InvalidArgument) "WHAT must be in [LO, HI]" unless lo <= v <= hi (NaN fails).
+void check_range(double v, double lo, double hi, const char* what);
+// A C string that may be NULL (read as "").
+inline std::string text_or_empty(const char* s) { return s ? std::string(s) : std::string(); }
+
 // Creates a T into *out (checked non-null, set to NULL first) from a callable returning a T.
 template <class T, class Make>
 casteljau_status create(T** out, Make&& make) noexcept {
@@ -91,6 +150,14 @@ casteljau_status create(T** out, Make&& make) noexcept {
         need(out, "out");
         *out = new T{make()};
     });
+}
+
+// A new value-initialized T, or NULL (the thread's last error says why) when that fails.
+template <class T>
+T* create_default() noexcept {
+    T* p = nullptr;
+    guard([&] { p = new T(); });
+    return p;
 }
 
 }  // namespace casteljau::capi

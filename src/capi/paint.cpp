@@ -1,5 +1,7 @@
-// C API: paints, images and fonts (casteljau.h).
+// C API: paints, colours, images and fonts (casteljau.h).
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <vector>
 
 #include "capi/handles.hpp"
@@ -101,6 +103,18 @@ casteljau_status casteljau_paint_set_blend_mode(casteljau_paint* paint, castelja
     return guard([&] { need(paint, "paint")->paint.blend = casteljau::capi::blend_of(casteljau::capi::raw_enum(mode)); });
 }
 
+casteljau_status casteljau_paint_set_linear_blend(casteljau_paint* paint, int linear) {
+    return guard([&] { need(paint, "paint")->paint.linear_blend = linear != 0; });
+}
+
+casteljau_status casteljau_color_parse(const char* text, casteljau_color* out) {
+    return guard([&] {
+        need(out, "out");
+        const Color c = parse_color(need(text, "text"));
+        *out = {c.r, c.g, c.b, c.a};
+    });
+}
+
 casteljau_status casteljau_image_create(int width, int height, casteljau_image** out) {
     return create(out, [&] { return Pixmap(width, height); });
 }
@@ -120,6 +134,21 @@ casteljau_status casteljau_image_write_png(const casteljau_image* image, const c
     return guard([&] { write_png(need(image, "image")->pixmap, need(path, "path")); });
 }
 
+casteljau_status casteljau_image_encode_png(const casteljau_image* image, uint8_t** out, size_t* size) {
+    if (out) *out = nullptr;
+    if (size) *size = 0;
+    return guard([&] {
+        need(out, "out");
+        need(size, "size");
+        const std::vector<std::uint8_t> png = encode_png(need(image, "image")->pixmap);
+        auto* bytes = static_cast<uint8_t*>(std::malloc(png.size()));
+        if (!bytes) throw std::bad_alloc();
+        std::memcpy(bytes, png.data(), png.size());
+        *out = bytes;
+        *size = png.size();
+    });
+}
+
 void casteljau_image_destroy(casteljau_image* image) { delete image; }
 
 int casteljau_image_width(const casteljau_image* image) { return image ? image->pixmap.width() : 0; }
@@ -129,6 +158,13 @@ uint8_t* casteljau_image_data(casteljau_image* image) { return image ? image->pi
 
 casteljau_status casteljau_font_load(const char* path, casteljau_font** out) {
     return create(out, [&] { return Font::load(need(path, "path")); });
+}
+
+casteljau_status casteljau_font_load_face(const char* path, int face_index, casteljau_font** out) {
+    return create(out, [&] {
+        if (face_index < 0) throw Error(ErrorKind::InvalidArgument, "face index must be 0 or more");
+        return Font::load(need(path, "path"), face_index);
+    });
 }
 
 void casteljau_font_destroy(casteljau_font* font) { delete font; }

@@ -1,4 +1,6 @@
-// C API: version, status names and the thread-local last-error message (casteljau.h).
+// C API: version, status names, the thread-local last-error message and casteljau_free (casteljau.h).
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -32,6 +34,14 @@ casteljau_status status_of(ErrorKind kind) noexcept {
     return CASTELJAU_ERROR_INTERNAL;
 }
 
+void check_range(double v, double lo, double hi, const char* what) {
+    if (!(v >= lo && v <= hi)) {
+        char range[64];
+        std::snprintf(range, sizeof range, "[%g, %g]", lo, hi);
+        throw Error(ErrorKind::InvalidArgument, std::string(what) + " must be in " + range);
+    }
+}
+
 }  // namespace casteljau::capi
 
 extern "C" {
@@ -58,8 +68,11 @@ const char* casteljau_status_name(casteljau_status status) {
         case CASTELJAU_ERROR_FONT: return "font error";
         case CASTELJAU_ERROR_OUT_OF_MEMORY: return "out of memory";
         case CASTELJAU_ERROR_INTERNAL: return "internal error";
+        case CASTELJAU_ERROR_CANCELLED: return "cancelled";
     }
     return "unknown status";
 }
+
+void casteljau_free(void* memory) { std::free(memory); }
 
 }  // extern "C"

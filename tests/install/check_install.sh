@@ -4,9 +4,10 @@
 # pkg-config, and the Python scene with the ctypes binding installed by pip; their PNGs are
 # compared with golden/install_scene.png (tests/install/png_check.py: sampled pixels against the
 # scene's geometry, then pixel for pixel); a CMake project that sets no C++ standard
-# (tests/install/consumer), with the shared and the static library. Also: the shared library's
-# SONAME and its exported symbols (only casteljau_* and the C++ API of namespace casteljau), the
-# CLI and the fonts.
+# (tests/install/consumer), with the shared and the static library; casteljau's three jobs (an SVG
+# document, a map, a line of text) from C with pkg-config (examples/c/jobs.c) and from Python, each
+# PNG byte-identical to the installed CLI's. Also: the shared library's SONAME and its exported
+# symbols (only casteljau_* and the C++ API of namespace casteljau), the CLI and the fonts.
 # Usage: check_install.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 build=$(cd "$1" && pwd)
@@ -55,6 +56,23 @@ export PKG_CONFIG_PATH=$libdir/pkgconfig
 cc -std=c99 -Wall -Wextra -Wpedantic -Werror "$src/examples/c/scene.c" $(pkg-config --cflags --libs casteljau) \
   -Wl,-rpath,"$libdir" -o "$work/scene_c" || fail "build the C scene with pkg-config"
 "$work/scene_c" "$work/scene_c.png" "$font" > /dev/null || fail "C scene"
+
+# The three jobs in C with pkg-config (examples/c/jobs.c): the same PNG bytes as the installed CLI's.
+cc -std=c99 -Wall -Wextra -Wpedantic -Werror "$src/examples/c/jobs.c" $(pkg-config --cflags --libs casteljau) \
+  -Wl,-rpath,"$libdir" -o "$work/jobs_c" || fail "build the C jobs with pkg-config"
+badge=$src/examples/data/badge.svg
+world=$src/tests/data/maps/countries-110m.json
+mkdir -p "$work/jobs" "$work/jobs_cli"
+"$work/jobs_c" "$badge" "$world" "$font" "$work/jobs" || fail "C jobs"
+cli=$prefix/bin/casteljau
+"$cli" svg "$badge" -w 256 -b white -o "$work/jobs_cli/badge.png" || fail "CLI svg"
+"$cli" map "$world" --layer countries --width 480 --projection +proj=robin --fill-by name --stroke "#4a4a4a" \
+  --stroke-width 0.6 --background white -o "$work/jobs_cli/world.png" || fail "CLI map"
+"$cli" text "Hello, casteljau" --font "$font" -o "$work/jobs_cli/text.png" || fail "CLI text"
+for job in badge world text; do
+  cmp -s "$work/jobs/$job.png" "$work/jobs_cli/$job.png" || fail "C job $job.png differs from the CLI's"
+done
+echo "check_install: C jobs (SVG, map, text) equal the CLI's PNGs"
 
 # Python: the binding installed with pip (no index: nothing is downloaded; python/ builds its own wheel).
 pydir=$work/python
@@ -116,6 +134,20 @@ assert cj.limits()["canvas_dimension"] == 100
 cj.reset_limits()
 cj.Canvas(101, 1)
 print("check_install: python binding checks passed")
+PY
+# The three jobs in Python against the installed CLI's PNGs; the default font comes from the
+# install's share/casteljau/fonts, found next to the library.
+(cd "$work" && PYTHONPATH="$pydir" CASTELJAU_LIBRARY="$libdir/libcasteljau.so.0" python3 - "$badge" "$world" "$work/jobs_cli" <<'PY') || fail "Python jobs"
+import sys
+import casteljau as cj
+badge, world, cli = sys.argv[1:4]
+same = lambda data, name: data == open("%s/%s" % (cli, name), "rb").read()
+assert same(cj.render_svg(badge, width=256, background="white").to_png(), "badge.png"), "svg"
+image = cj.render_map(world, 480, layer="countries", projection="+proj=robin", fill_by="name", stroke="#4a4a4a",
+                      stroke_width=0.6, background="white")
+assert same(image.to_png(), "world.png"), "map"
+assert same(cj.TextLayout("Hello, casteljau").render().to_png(), "text.png"), "text"
+print("check_install: Python jobs (SVG, map, text) equal the CLI's PNGs")
 PY
 
 python3 "$src/tests/install/png_check.py" "$src/golden/install_scene.png" \
