@@ -5,7 +5,6 @@
 
 #include "capi/handles.hpp"
 #include "casteljau/file_io.hpp"
-#include "casteljau/png.hpp"
 
 using namespace casteljau;
 using casteljau::capi::check_range;
