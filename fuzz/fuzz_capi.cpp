@@ -24,6 +24,9 @@
 #include <vector>
 
 #include "casteljau/casteljau.h"
+#include "casteljau/casteljau_map.h"
+#include "casteljau/casteljau_svg.h"
+#include "casteljau/casteljau_text.h"
 
 namespace {
 

@@ -46,7 +46,7 @@ STAGES = [
     ("map", ["formats", "json", "canvas"], ["map.hpp", "projection.hpp", "tiles.hpp"]),
     # The umbrella header: includes every public C++ header (it has no folder under src/).
     ("umbrella", ["figures", "map"], ["casteljau.hpp"]),
-    ("capi", ["umbrella"], ["casteljau.h"]),
+    ("capi", ["umbrella"], ["casteljau.h", "casteljau_svg.h", "casteljau_map.h", "casteljau_text.h"]),
     ("cli", ["umbrella"], []),
 ]
 

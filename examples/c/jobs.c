@@ -9,6 +9,9 @@
 #include <stdio.h>
 
 #include <casteljau/casteljau.h>
+#include <casteljau/casteljau_map.h>
+#include <casteljau/casteljau_svg.h>
+#include <casteljau/casteljau_text.h>
 
 /* Reports the library's message for a failed call. */
 static int ok(casteljau_status status, const char* what) {

@@ -4,8 +4,8 @@
  * data), stroke styles, paints (solid colours, linear and radial gradients, image patterns, opacity,
  * blend modes), a canvas with a state stack (transform, clip, opacity, blend mode), clipping to
  * rectangles and paths, images (premultiplied RGBA8, PNG read, write and encode, raw pixel
- * access), layers, and text with a font file. Three headers it includes at its end add the
- * documents casteljau draws, with the options of the command line: casteljau_svg.h (SVG
+ * access), layers, and text with a font file. Three headers beside it, each including this one,
+ * add the documents casteljau draws, with the options of the command line: casteljau_svg.h (SVG
  * documents), casteljau_map.h (GeoJSON and TopoJSON maps, tile pyramids) and casteljau_text.h
  * (paragraph layout: fallback fonts, wrapping, alignment, direction, features, variations).
  *
@@ -296,9 +296,5 @@ CASTELJAU_API int casteljau_thread_count(void);
 #ifdef __cplusplus
 }
 #endif
-
-#include "casteljau_svg.h"
-#include "casteljau_map.h"
-#include "casteljau_text.h"
 
 #endif /* CASTELJAU_H */

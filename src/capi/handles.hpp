@@ -1,5 +1,5 @@
 // C API, internal: what the opaque handles of include/casteljau/casteljau.h (and of the SVG, map
-// and text headers it includes) hold, and the guard that turns every C++ exception into a status
+// and text headers beside it) hold, and the guard that turns every C++ exception into a status
 // and a thread-local message.
 #pragma once
 
@@ -12,6 +12,9 @@
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/casteljau.h"
+#include "casteljau/casteljau_map.h"
+#include "casteljau/casteljau_svg.h"
+#include "casteljau/casteljau_text.h"
 #include "casteljau/error.hpp"
 #include "casteljau/font.hpp"
 #include "casteljau/geojson.hpp"

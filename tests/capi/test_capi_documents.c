@@ -9,6 +9,9 @@
 #include <string.h>
 
 #include "casteljau/casteljau.h"
+#include "casteljau/casteljau_map.h"
+#include "casteljau/casteljau_svg.h"
+#include "casteljau/casteljau_text.h"
 
 static int failures = 0;
 
