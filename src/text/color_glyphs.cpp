@@ -122,9 +122,10 @@ AxisWeights axis_weights(int d0, int n, double origin, double k, int src_count) 
     w.weights.resize(static_cast<std::size_t>(n));
     for (int d = 0; d < n; ++d) {
         const double lo = d0 + d, hi = lo + 1;
-        int i0 = static_cast<int>(std::floor((lo - origin) / k));
-        const int i1 = static_cast<int>(std::ceil((hi - origin) / k));
-        i0 = std::max(i0, 0);
+        // Clamped as doubles: a malformed strike can make the quotients far beyond int.
+        const double count = src_count;
+        const int i0 = static_cast<int>(std::clamp(std::floor((lo - origin) / k), 0.0, count));
+        const int i1 = static_cast<int>(std::clamp(std::ceil((hi - origin) / k), 0.0, count));
         w.first[static_cast<std::size_t>(d)] = i0;
         for (int i = i0; i < std::min(i1, src_count); ++i) {
             const double a = std::max(lo, origin + i * k), b = std::min(hi, origin + (i + 1) * k);
@@ -137,6 +138,8 @@ AxisWeights axis_weights(int d0, int n, double origin, double k, int src_count) 
 // Draws a strike bitmap scaled by `k` (device pixels per strike pixel) with its top-left corner at
 // device point (x, y), averaging the strike's pixels over each device pixel.
 void draw_scaled_bitmap(Canvas& canvas, const StrikeBitmap& bm, double k, double x, double y, double opacity) {
+    // Scales and positions a malformed font can produce that no image could show.
+    if (!(k >= 1e-4 && k <= 1e4) || !(std::abs(x) < 1e8 && std::abs(y) < 1e8)) return;
     const int dx0 = static_cast<int>(std::floor(x)), dy0 = static_cast<int>(std::floor(y));
     const int dx1 = static_cast<int>(std::ceil(x + bm.width * k)), dy1 = static_cast<int>(std::ceil(y + bm.height * k));
     const int w = dx1 - dx0, h = dy1 - dy0;
