@@ -35,6 +35,10 @@ run text "Linux Libertine (CFF outlines): The quick brown fox jumps over the laz
   --background "#fbf7ee" -o "$out/text-cff-paragraph.png"
 run text "مرحبا بالعالم — hello" --font "$fonts/NotoSansArabic-Regular.ttf" --font "$fonts/DejaVuSans.ttf" \
   --size 40 -o "$out/text-arabic.png"
+# Emoji (in colour) and Japanese from the system's fonts (Noto Color Emoji and Noto Sans CJK on
+# Debian), Arabic and the rest from the shipped fonts.
+run text "Hello 👋 こんにちは 日本語 ✓ مرحبا 🎨 Ελληνικά" --font "$fonts/DejaVuSans.ttf" \
+  --font "$fonts/NotoSansArabic-Regular.ttf" --language ja --size 40 -o "$out/text-fallback.png"
 
 # Curves: a Bézier with its de Casteljau construction, a B-spline with knots, its basis functions,
 # a bicubic Bézier surface, and the clock (examples/clock.cpp, when it was built).

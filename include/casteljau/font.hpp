@@ -4,7 +4,9 @@
 // Formats: TrueType (glyf, quadratic outlines), OpenType CFF and CFF2 (cubic outlines), collections
 // (.ttc/.otc, pick a face with `face_index`), variable fonts (fvar/gvar/CFF2 blends: named
 // instances or axis values such as wght=700). Outlines are read unhinted
-// (FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) and are never grid-fitted.
+// (FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) and are never grid-fitted. A font of colour bitmaps
+// without outlines (CBDT/CBLC or sbix, e.g. Noto Color Emoji) loads too: its glyphs have empty
+// outlines, and their metrics are the bitmaps' boxes (text.hpp draws them in colour).
 //
 // Coordinates: glyph outlines and all metrics are in FONT UNITS, y up, the glyph origin at (0, 0) on
 // the baseline (precision 1/64 unit). glyph_transform() gives the one Affine that maps font units to

@@ -4,13 +4,18 @@
 // Pipeline: UTF-8 --decode (invalid -> U+FFFD)--> paragraphs (split at \n, \r\n, \r, U+2029)
 //   --> bidi levels (base direction from the first strong character or TextStyle::direction)
 //   --> runs of one level, script and font (fallback: each character from the first font that has
-//       it; marks, spaces and joiners stay with their base's font; .notdef of the first font only
-//       when no font has it) --> HarfBuzz shaping per run (kerning, ligatures, marks, joining forms)
-//   --> greedy line breaking at spaces / zero-width spaces / after hyphens / around ideographs
+//       it; marks, spaces and joiners stay with their base's font; with TextStyle::system_fonts a
+//       cluster no font has comes from a system font found through fontconfig; .notdef of the
+//       first font only when no font has it) --> HarfBuzz shaping per run (kerning, ligatures, marks, joining forms)
+//   --> greedy line breaking at the opportunities of the Unicode line breaking algorithm (UAX #14,
+//       ICU's line break iterator, tailored by TextStyle::language: CJK between characters, Thai
+//       between words)
 //   --> visual order per line (right-to-left runs reversed) --> alignment --> PositionedGlyphs.
 // Drawing: glyph Paths (font.hpp) --glyph Affine--> Rasterizer::fill_mask --> GlyphCache --> the
 //   Canvas's Pixmap (source-over of Paint x coverage); or, when the Canvas transform rotates, skews or
-//   scales unevenly, each outline is filled with Canvas::fill_path under the full Affine.
+//   scales unevenly, each outline is filled with Canvas::fill_path under the full Affine. Colour
+//   glyphs (COLR v0/v1 through the Canvas, CBDT/sbix bitmaps scaled by area averaging) are drawn in
+//   their place in their palette's colours (TextDrawOptions::palette).
 //
 // Coordinates: a TextLayout is in "layout space": pixels, x right, y down, (0, 0) the top-left corner
 // of the logical text box; line i's baseline is at ascender + i * line advance of the first font.
@@ -19,8 +24,12 @@
 // Simplifications (documented limits): bidi is a subset of the Unicode algorithm (levels 0 to 2:
 // strong letters, numbers, neutrals between them; no explicit embeddings/isolates); lines break only
 // at the opportunities listed above (a word longer than the wrap width overflows its line); glyphs
-// are not reshaped at line breaks (breaks fall at spaces, where shaping does not interact);
+// are not reshaped at line breaks (breaks fall between clusters, mostly at spaces);
 // horizontal text only.
+//
+// Process-wide state: with TextStyle::system_fonts, fontconfig's configuration, its sorted font
+// lists and the answers per cluster are cached for the life of the process (guarded by a mutex);
+// each layout gets its own Font objects for the faces found.
 //
 // Thread-safety: layout_text() and draw_text() use the Fonts they are given (see font.hpp: one
 // thread per Font at a time); a GlyphCache belongs to one thread at a time. TextLayouts are values
@@ -68,6 +77,12 @@ struct TextStyle {
     std::string script;         // ISO 15924 tag ("Latn", "Arab", "Hebr") for every run; "": detect
     std::string language;       // BCP 47 tag ("en", "ar", "tr"); "": none
     std::vector<std::string> features;  // HarfBuzz feature strings, e.g. "kern=0", "liga=0", "smcp"
+    // A cluster that no font of the chain has is looked for in the system's fonts (fontconfig):
+    // the first face, in fontconfig's order for the first font's family (the generic family
+    // "emoji" for clusters in emoji presentation), `language`, and the first font's weight and
+    // slant, that has the whole cluster. Off: such clusters show the first font's .notdef, and the
+    // output depends on the given fonts only.
+    bool system_fonts = false;
 };
 
 struct PositionedGlyph {
@@ -87,7 +102,10 @@ struct TextLine {
 };
 
 struct TextLayout {
-    std::vector<const Font*> fonts;  // not owned: must outlive the layout
+    // The chain given to layout_text (not owned: must outlive the layout), then the system fonts
+    // fallback found (owned by the layout, through `system_fonts`).
+    std::vector<const Font*> fonts;
+    std::vector<std::shared_ptr<const Font>> system_fonts;
     double size = 0;
     std::u32string text;             // the decoded input (line breaks included)
     std::vector<PositionedGlyph> glyphs;
@@ -167,6 +185,11 @@ struct TextDrawOptions {
     double max_cached_size = 256;
     // Flattening tolerance (px) for glyphs drawn through outlines; cached masks use the cache's own.
     double tolerance = kTextTolerance;
+    // CPAL palette of colour glyphs (palette 0 when the font has fewer). Colour glyphs (COLR v0
+    // layers, COLR v1 paint graphs, CBDT/CBLC and sbix bitmaps) keep their palette's colours; the
+    // Paint's colour stands for palette entry 0xFFFF and colours ordinary glyphs, its opacity
+    // multiplies both.
+    int palette = 0;
 };
 
 // Draws a layout with its box's top-left corner at `origin` (user space of the Canvas). When the

@@ -6,6 +6,8 @@
 // Canvas::fill_mask at the glyph's pixel offset (the paint stage, inside the clip).
 // Any other transform: each glyph's outline is filled with Canvas::fill_path under
 // canvas transform x translate(origin + glyph position) x [s 0 0 -s].
+// Colour glyphs (COLR layers and paint graphs, bitmaps) are drawn in their place, in order, by
+// src/text/color_glyphs.cpp, in their palette's colours.
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -13,6 +15,8 @@
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/text.hpp"
+#include "text/color_glyphs.hpp"
+#include "text/font_impl.hpp"
 
 namespace casteljau {
 
@@ -21,6 +25,14 @@ namespace {
 // Farthest glyph origin (device pixels) drawn through the cache; beyond it glyphs are off any
 // canvas anyway and integer arithmetic stays far from overflow.
 constexpr double kMaxCachedOrigin = 1e8;
+
+// Whether a glyph is drawn in colour (COLR, CBDT, sbix) rather than as a coverage mask; a font
+// without colour tables answers at once.
+bool is_color(const Font& font, std::uint32_t glyph) {
+    const Font::Impl& fi = font.impl();
+    if (!fi.has_colr && !fi.has_color_bitmaps) return false;
+    return text_detail::color_glyph_kind(font, glyph) != text_detail::ColorGlyphKind::None;
+}
 
 }  // namespace
 
@@ -49,9 +61,17 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
         std::vector<std::pair<long long, long long>> at;
         requests.reserve(layout.glyphs.size());
         at.reserve(layout.glyphs.size());
+        std::vector<const PositionedGlyph*> color;  // per request: the colour glyph drawn in its place, or null
         for (const PositionedGlyph& g : layout.glyphs) {
             const Point p = M.apply(g.position);
             if (!(std::abs(p.x) < kMaxCachedOrigin && std::abs(p.y) < kMaxCachedOrigin)) continue;
+            if (is_color(*layout.fonts[g.font], g.glyph)) {
+                color.resize(requests.size() + 1, nullptr);
+                color.back() = &g;
+                requests.push_back({layout.fonts[g.font], 0, device_size, {}});  // a placeholder, not rasterized
+                at.emplace_back(0, 0);
+                continue;
+            }
             const long long qx = std::llround(p.x * sx), qy = std::llround(p.y * sy);
             // floor division, so that the subpixel offset is in [0, 1)
             const long long ix = (qx >= 0 ? qx : qx - (sx - 1)) / sx;
@@ -60,10 +80,22 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
             requests.push_back({layout.fonts[g.font], g.glyph, device_size, offset});
             at.emplace_back(ix, iy);
         }
-        const std::vector<const Mask*> masks = gc.masks(requests, canvas.rasterizer());
+        color.resize(requests.size(), nullptr);
+        std::vector<GlyphCache::MaskRequest> outline_requests;
+        for (std::size_t i = 0; i < requests.size(); ++i)
+            if (!color[i]) outline_requests.push_back(requests[i]);
+        const std::vector<const Mask*> masks = gc.masks(outline_requests, canvas.rasterizer());
+        std::size_t k = 0;  // index into outline_requests / masks
         for (std::size_t i = 0; i < requests.size(); ++i) {
+            if (color[i]) {
+                const PositionedGlyph& g = *color[i];
+                text_detail::draw_color_glyph(canvas, *layout.fonts[g.font], g.glyph, layout.size, M, g.position, paint,
+                                              options.palette);
+                continue;
+            }
+            const std::size_t mi = k++;
             const GlyphCache::MaskRequest& r = requests[i];
-            const Mask& m = masks.empty() ? gc.mask(*r.font, r.glyph, r.size, r.offset, canvas.rasterizer()) : *masks[i];
+            const Mask& m = masks.empty() ? gc.mask(*r.font, r.glyph, r.size, r.offset, canvas.rasterizer()) : *masks[mi];
             canvas.fill_mask(m, at[i].first, at[i].second, paint);
         }
         return;
@@ -75,6 +107,10 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
     fill.tolerance = options.tolerance;
     for (const PositionedGlyph& g : layout.glyphs) {
         const Font& font = *layout.fonts[g.font];
+        if (is_color(font, g.glyph)) {
+            text_detail::draw_color_glyph(canvas, font, g.glyph, layout.size, M, g.position, paint, options.palette);
+            continue;
+        }
         const Path& outline = gc.outline(font, g.glyph);
         if (outline.empty()) continue;
         const double s = layout.size / font.units_per_em();

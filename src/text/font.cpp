@@ -28,6 +28,7 @@
 #include <sstream>
 
 #include "casteljau/limits.hpp"
+#include "text/color_glyphs.hpp"
 #include "text/font_impl.hpp"
 
 namespace casteljau {
@@ -310,7 +311,7 @@ void Font::Impl::load_glyph(std::uint32_t glyph) const {
 }
 
 void Font::Impl::variations_changed() {
-    if (hb) hb_ft_font_changed(hb);
+    if (hb && !bitmap_only) hb_ft_font_changed(hb);
     auto pos = [&](hb_ot_metrics_tag_t tag) {
         hb_position_t p = 0;
         hb_ot_metrics_get_position_with_fallback(hb, tag, &p);
@@ -393,13 +394,34 @@ Font Font::from_shared_bytes(std::shared_ptr<const std::uint8_t> bytes, std::siz
     }
     FT_Face face = impl->face;
     impl->face_count = static_cast<int>(face->num_faces);
-    if (!FT_IS_SCALABLE(face)) font_error(impl->source, "the font has no scalable outlines (bitmap-only)");
+    impl->has_color_bitmaps = FT_HAS_COLOR(face) && FT_HAS_FIXED_SIZES(face);
+    impl->bitmap_only = !FT_IS_SCALABLE(face);
+    if (impl->bitmap_only && !impl->has_color_bitmaps)
+        font_error(impl->source, "the font has no scalable outlines (bitmap-only)");
+    if (impl->bitmap_only) {
+        // FreeType leaves units_per_EM at 0 for a face without outlines; the head table has it, and
+        // the metrics tables (hmtx, hhea) the layout reads are in those units.
+        const auto* head = static_cast<const TT_Header*>(FT_Get_Sfnt_Table(face, FT_SFNT_HEAD));
+        face->units_per_EM = head ? head->Units_Per_EM : 0;
+    }
     if (face->units_per_EM < 16 || face->units_per_EM > 16384)
         font_error(impl->source, "unusable units per em: " + std::to_string(face->units_per_EM));
-    // One size for everything: 1 px per font unit, so 26.6 values are 1/64 font units.
-    const FT_F26Dot6 em = static_cast<FT_F26Dot6>(face->units_per_EM) * 64;
-    if ((err = FT_Set_Char_Size(face, em, em, 72, 72)))
-        font_error(impl->source, "cannot size the font: " + ft_error_text(err));
+    FT_ULong colr_length = 0;
+    impl->has_colr = FT_HAS_COLOR(face) && FT_Load_Sfnt_Table(face, FT_MAKE_TAG('C', 'O', 'L', 'R'), 0, nullptr,
+                                                              &colr_length) == 0 && colr_length > 0;
+    if (impl->bitmap_only) {
+        // Colour bitmaps only: the largest strike (glyphs are scaled from it when drawn).
+        FT_Int largest = 0;
+        for (FT_Int i = 1; i < face->num_fixed_sizes; ++i)
+            if (face->available_sizes[i].y_ppem > face->available_sizes[largest].y_ppem) largest = i;
+        if ((err = FT_Select_Size(face, largest)))
+            font_error(impl->source, "cannot select a bitmap strike: " + ft_error_text(err));
+    } else {
+        // One size for everything: 1 px per font unit, so 26.6 values are 1/64 font units.
+        const FT_F26Dot6 em = static_cast<FT_F26Dot6>(face->units_per_EM) * 64;
+        if ((err = FT_Set_Char_Size(face, em, em, 72, 72)))
+            font_error(impl->source, "cannot size the font: " + ft_error_text(err));
+    }
 
     const char* fmt = FT_Get_Font_Format(face);
     const std::string format = fmt ? fmt : "";
@@ -434,9 +456,21 @@ Font Font::from_shared_bytes(std::shared_ptr<const std::uint8_t> bytes, std::siz
         }
     }
 
-    impl->hb = hb_ft_font_create_referenced(face);
-    if (!impl->hb) font_error(impl->source, "HarfBuzz cannot use the face");
-    hb_ft_font_set_load_flags(impl->hb, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP);
+    if (impl->bitmap_only) {
+        // FreeType has no outline advances for a bitmap face: HarfBuzz reads the font's own tables.
+        hb_blob_t* blob = hb_blob_create(reinterpret_cast<const char*>(data), static_cast<unsigned>(impl->size),
+                                         HB_MEMORY_MODE_READONLY, nullptr, nullptr);
+        hb_face_t* hface = hb_face_create(blob, static_cast<unsigned>(face_index));
+        hb_blob_destroy(blob);
+        impl->hb = hb_font_create(hface);
+        hb_face_destroy(hface);
+        const int scale = static_cast<int>(face->units_per_EM) * 64;
+        hb_font_set_scale(impl->hb, scale, scale);
+    } else {
+        impl->hb = hb_ft_font_create_referenced(face);
+        if (!impl->hb) font_error(impl->source, "HarfBuzz cannot use the face");
+        hb_ft_font_set_load_flags(impl->hb, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP);
+    }
     impl->variations_changed();
     return Font(std::move(impl));
 }
@@ -473,6 +507,7 @@ Path Font::glyph_path(std::uint32_t glyph) const {
 
 void Font::glyph_path(std::uint32_t glyph, Path& out) const {
     out.clear();
+    if (impl_->bitmap_only && glyph < glyph_count()) return;  // colour bitmaps have no outline
     impl_->load_glyph(glyph);
     static constexpr FT_Outline_Funcs funcs = {cb_move, cb_line, cb_conic, cb_cubic, 0, 0};
     DecomposeState st{&out};
@@ -485,6 +520,14 @@ void Font::glyph_path(std::uint32_t glyph, Path& out) const {
 }
 
 GlyphMetrics Font::glyph_metrics(std::uint32_t glyph) const {
+    if (impl_->bitmap_only && glyph < glyph_count()) {
+        GlyphMetrics m;
+        m.advance = hb_font_get_glyph_h_advance(impl_->hb, glyph) / kUnits26_6;
+        m.bounds = text_detail::color_glyph_bounds(*this, glyph);
+        m.left_bearing = m.bounds.empty() ? 0 : m.bounds.x0;
+        m.right_bearing = m.advance - (m.bounds.empty() ? 0 : m.bounds.x1);
+        return m;
+    }
     impl_->load_glyph(glyph);
     const FT_GlyphSlot slot = impl_->face->glyph;
     GlyphMetrics m;

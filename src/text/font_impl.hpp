@@ -26,7 +26,17 @@ struct Font::Impl {
     int face_count = 1;
     FT_Library library = nullptr;
     FT_Face face = nullptr;
-    hb_font_t* hb = nullptr;  // hb-ft font on `face`; positions in 1/64 font units
+    hb_font_t* hb = nullptr;  // hb-ft font on `face` (hb-ot for bitmap_only); positions in 1/64 font units
+    // Colour: a face with colour bitmaps and no outlines (CBDT, sbix) has its largest strike
+    // selected instead of the em size; has_colr / has_color_bitmaps say which tables exist.
+    bool bitmap_only = false;
+    bool has_colr = false;
+    bool has_color_bitmaps = false;
+    // Decoded colour bitmaps, kept by src/text/color_glyphs.cpp (a Font serves one thread at a
+    // time, so this needs no lock).
+    std::shared_ptr<void> color_bitmap_cache;
+    // The COLR table as src/text/colr_table.cpp reads it, loaded on first use.
+    std::shared_ptr<void> colr_table;
     OutlineFormat format = OutlineFormat::Other;
     FontMetrics metrics;
     std::vector<VariationAxis> axes;

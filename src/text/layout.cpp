@@ -4,12 +4,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <unordered_map>
 
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/shaping.hpp"
 #include "casteljau/text.hpp"
+#include "text/color_glyphs.hpp"
+#include "text/font_fallback.hpp"
+#include "text/line_break.hpp"
 #include "text/shape.hpp"
 
 namespace casteljau {
@@ -20,52 +24,6 @@ namespace {
 bool is_break_space(char32_t c) {
     return c == 0x20 || c == 0x3000 || c == 0x1680 || (c >= 0x2000 && c <= 0x2006) || (c >= 0x2008 && c <= 0x200a) ||
            c == 0x205f;
-}
-
-bool is_ideographic(char32_t c) {
-    const hb_script_t s = hb_unicode_script(hb_unicode_funcs_get_default(), c);
-    return s == HB_SCRIPT_HAN || s == HB_SCRIPT_HIRAGANA || s == HB_SCRIPT_KATAKANA || s == HB_SCRIPT_BOPOMOFO ||
-           s == HB_SCRIPT_YI;
-}
-
-bool is_letter(char32_t c) {
-    switch (hb_unicode_general_category(hb_unicode_funcs_get_default(), c)) {
-        case HB_UNICODE_GENERAL_CATEGORY_UPPERCASE_LETTER:
-        case HB_UNICODE_GENERAL_CATEGORY_LOWERCASE_LETTER:
-        case HB_UNICODE_GENERAL_CATEGORY_TITLECASE_LETTER:
-        case HB_UNICODE_GENERAL_CATEGORY_MODIFIER_LETTER:
-        case HB_UNICODE_GENERAL_CATEGORY_OTHER_LETTER:
-            return true;
-        default:
-            return false;
-    }
-}
-
-bool no_break_before(char32_t c) {
-    switch (hb_unicode_general_category(hb_unicode_funcs_get_default(), c)) {
-        case HB_UNICODE_GENERAL_CATEGORY_NON_SPACING_MARK:
-        case HB_UNICODE_GENERAL_CATEGORY_SPACING_MARK:
-        case HB_UNICODE_GENERAL_CATEGORY_ENCLOSING_MARK:
-        case HB_UNICODE_GENERAL_CATEGORY_CLOSE_PUNCTUATION:
-        case HB_UNICODE_GENERAL_CATEGORY_FINAL_PUNCTUATION:
-        case HB_UNICODE_GENERAL_CATEGORY_OTHER_PUNCTUATION:
-            return true;
-        default:
-            return c == 0x200d || c == 0x2060 || c == 0xfeff;
-    }
-}
-
-// May a line break between para[k-1] and para[k]?
-bool can_break_before(std::u32string_view para, std::size_t k) {
-    const char32_t a = para[k - 1], b = para[k];
-    if (is_break_space(b) || no_break_before(b)) return false;
-    if (is_break_space(a) || a == 0x200b) return true;
-    if ((a == U'-' || a == 0x2010) && k >= 2 && is_letter(para[k - 2]) && is_letter(b)) return true;
-    if (a == 0x200d || a == 0x2060 || a == 0xfeff || a == 0x00a0) return false;
-    const hb_unicode_general_category_t ca = hb_unicode_general_category(hb_unicode_funcs_get_default(), a);
-    if (ca == HB_UNICODE_GENERAL_CATEGORY_OPEN_PUNCTUATION || ca == HB_UNICODE_GENERAL_CATEGORY_INITIAL_PUNCTUATION)
-        return false;
-    return is_ideographic(a) || is_ideographic(b);
 }
 
 struct LineRange {
@@ -107,7 +65,9 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
     L.text = decode_utf8(utf8);
     if (L.text.empty()) return L;
 
-    text_detail::Shaper shaper(fonts, style);
+    std::unique_ptr<text_detail::SystemFallback> fallback;
+    if (style.system_fonts) fallback = std::make_unique<text_detail::SystemFallback>(*fonts[0], style.language);
+    text_detail::Shaper shaper(fonts, style, false, fallback.get());
     const FontMetrics& fm = fonts[0]->metrics();
     const double scale = style.size / fm.units_per_em;
     const double ascender = fm.ascender * scale, descender = fm.descender * scale;
@@ -118,6 +78,7 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
     std::vector<ShapedRun> runs;
     std::vector<double> adv;
     std::vector<char> cluster_start;
+    std::vector<char> breaks;
     std::vector<LineRange> ranges;
     std::vector<std::uint8_t> piece_levels;
     std::vector<std::size_t> order;
@@ -157,7 +118,9 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
                     cluster_start[g.cluster] = 1;
                 }
 
-        // Greedy line breaking.
+        // Greedy line breaking at the UAX #14 opportunities (none needed without a wrap width).
+        if (style.max_width > 0) text_detail::line_break_opportunities(para, style.language, breaks);
+        else breaks.assign(n + 1, 0);
         ranges.clear();
         {
             std::size_t line_begin = 0;
@@ -165,7 +128,7 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
             std::size_t s = 0;
             while (s < n) {
                 std::size_t e = s + 1;  // the word [s, e): up to the next break opportunity
-                while (e < n && !(cluster_start[e] && can_break_before(para, e))) ++e;
+                while (e < n && !(cluster_start[e] && breaks[e])) ++e;
                 std::size_t ink_end = e;
                 while (ink_end > s && is_break_space(para[ink_end - 1])) --ink_end;
                 double w_ink = 0, w_space = 0;
@@ -245,6 +208,9 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
         }
     }
 
+    L.fonts = shaper.fonts();
+    if (fallback) L.system_fonts.assign(fallback->fonts().begin(), fallback->fonts().end());
+
     // Alignment.
     double widest = 0;
     for (const TextLine& l : L.lines) widest = std::max(widest, l.width);
@@ -266,10 +232,16 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
     for (const PositionedGlyph& g : L.glyphs) {
         const std::uint64_t key = static_cast<std::uint64_t>(g.font) << 32 | g.glyph;
         auto it = glyph_bounds.find(key);
-        if (it == glyph_bounds.end()) it = glyph_bounds.emplace(key, fonts[g.font]->glyph_metrics(g.glyph).bounds).first;
+        if (it == glyph_bounds.end()) {
+            const Font& font = *L.fonts[g.font];
+            const bool color = text_detail::color_glyph_kind(font, g.glyph) != text_detail::ColorGlyphKind::None;
+            it = glyph_bounds
+                     .emplace(key, color ? text_detail::color_glyph_bounds(font, g.glyph) : font.glyph_metrics(g.glyph).bounds)
+                     .first;
+        }
         const Rect& b = it->second;
         if (b.empty()) continue;
-        const double s = style.size / fonts[g.font]->units_per_em();
+        const double s = style.size / L.fonts[g.font]->units_per_em();
         const Rect r{g.position.x + b.x0 * s, g.position.y - b.y1 * s, g.position.x + b.x1 * s, g.position.y - b.y0 * s};
         L.ink = have_ink ? L.ink.united(r) : r;
         have_ink = true;

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "casteljau/error.hpp"
+#include "text/font_fallback.hpp"
 #include "text/font_impl.hpp"
 
 namespace casteljau::text_detail {
@@ -29,10 +30,34 @@ bool is_weak_script(hb_script_t s) {
     return s == HB_SCRIPT_COMMON || s == HB_SCRIPT_INHERITED || s == HB_SCRIPT_UNKNOWN;
 }
 
+bool is_regional_indicator(char32_t c) { return c >= 0x1f1e6 && c <= 0x1f1ff; }
+
+// End of the cluster that starts at para[i], for choosing its font: the base, its marks, joiners,
+// variation selectors, tags and skin-tone modifiers, the character after each zero-width joiner,
+// and the second of a pair of regional indicators (a flag).
+std::size_t cluster_end(std::u32string_view para, std::size_t i, hb_unicode_funcs_t* uf) {
+    const std::size_t n = para.size();
+    std::size_t e = i + 1;
+    if (is_regional_indicator(para[i]) && e < n && is_regional_indicator(para[e])) return e + 1;
+    while (e < n) {
+        const char32_t c = para[e];
+        if (c == 0x200d && e + 1 < n) {
+            e += 2;
+        } else if (is_mark(hb_unicode_general_category(uf, c)) || is_attached_format(c) ||
+                   (c >= 0xe0020 && c <= 0xe007f) || (c >= 0x1f3fb && c <= 0x1f3ff)) {
+            ++e;
+        } else {
+            break;
+        }
+    }
+    return e;
+}
+
 }  // namespace
 
-Shaper::Shaper(std::span<const Font* const> fonts, const TextStyle& style, bool vertical)
-    : fonts_(fonts), size_(style.size), vertical_(vertical) {
+Shaper::Shaper(std::span<const Font* const> fonts, const TextStyle& style, bool vertical, SystemFallback* fallback)
+    : fonts_(fonts.begin(), fonts.end()), chain_size_(fonts.size()), fallback_(fallback), size_(style.size),
+      vertical_(vertical) {
     for (const std::string& f : style.features) {
         hb_feature_t feat;
         if (!hb_feature_from_string(f.c_str(), static_cast<int>(f.size()), &feat))
@@ -62,34 +87,60 @@ Shaper::Shaper(std::span<const Font* const> fonts, const TextStyle& style, bool 
 
 Shaper::~Shaper() { hb_buffer_destroy(buf_); }
 
+std::size_t Shaper::fallback_font(std::u32string_view cluster) {
+    const Font* f = fallback_ ? fallback_->find(cluster) : nullptr;
+    if (!f) return kNoFont;
+    for (std::size_t k = chain_size_; k < fonts_.size(); ++k)
+        if (fonts_[k] == f) return k;
+    if (fonts_.size() >= 0xffff) return kNoFont;
+    fonts_.push_back(f);
+    return fonts_.size() - 1;
+}
+
 void Shaper::shape_paragraph(std::u32string_view para, std::span<const std::uint8_t> levels,
                              std::vector<ShapedRun>& runs) {
     runs.clear();
     const std::size_t n = para.size();
     if (n == 0) return;
     hb_unicode_funcs_t* uf = hb_unicode_funcs_get_default();
-    const std::size_t nfonts = fonts_.size();
+    const std::size_t nfonts = chain_size_;
 
-    // Fonts: each character from the first font that has it; marks, joiners and weak characters
-    // (spaces, punctuation) stay with the previous character's font when it has them.
+    // Fonts: each character from the first font of the chain that has it; marks, joiners and weak
+    // characters (spaces, punctuation) stay with the previous character's font when it has them
+    // (unless that character is an emoji: text after it goes back to the text fonts). A cluster
+    // whose first character no font of the chain has takes a fallback font that has the whole
+    // cluster.
     font_of_.assign(n, 0);
     script_of_.assign(n, HB_SCRIPT_COMMON);
+    for (std::size_t i = 0; i < n; ++i) script_of_[i] = hb_unicode_script(uf, para[i]);
+    bool after_emoji = false;
     for (std::size_t i = 0; i < n; ++i) {
         const char32_t c = para[i];
-        const hb_script_t script = hb_unicode_script(uf, c);
-        script_of_[i] = script;
         const bool attach = is_mark(hb_unicode_general_category(uf, c)) || is_attached_format(c);
-        const bool weak = attach || is_weak_script(script);
+        const bool weak = attach || is_weak_script(script_of_[i]);
         if (i > 0 && is_attached_format(c)) {
             font_of_[i] = font_of_[i - 1];
             continue;
         }
-        if (i > 0 && weak && fonts_[font_of_[i - 1]]->has_glyph(c)) {
+        const bool keep = !after_emoji || attach;
+        after_emoji = false;
+        if (i > 0 && weak && keep && fonts_[font_of_[i - 1]]->has_glyph(c)) {
             font_of_[i] = font_of_[i - 1];
             continue;
         }
         std::size_t f = 0;
         while (f < nfonts && !fonts_[f]->has_glyph(c)) ++f;
+        if (f == nfonts && fallback_ && !(i > 0 && attach)) {
+            const std::size_t e = cluster_end(para, i, uf);
+            const std::size_t found = fallback_font(para.substr(i, e - i));
+            if (found != kNoFont) {
+                f = found;
+                for (std::size_t k = i; k < e; ++k) font_of_[k] = static_cast<std::uint16_t>(f);
+                after_emoji = is_emoji_cluster(para.substr(i, e - i));
+                i = e - 1;
+                continue;
+            }
+        }
         if (f == nfonts) f = (i > 0 && weak) ? font_of_[i - 1] : 0;  // nobody has it: .notdef
         font_of_[i] = static_cast<std::uint16_t>(f);
     }

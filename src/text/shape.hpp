@@ -9,6 +9,7 @@
 #include <hb.h>
 
 #include <cstdint>
+#include <cstddef>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -19,12 +20,17 @@
 
 namespace casteljau::text_detail {
 
+class SystemFallback;
+
 class Shaper {
 public:
     // Validates the style's script, language and features (Error(Parse)). `vertical`: shape top to
     // bottom (HarfBuzz's TTB direction, vertical metrics and the 'vert' feature) instead of by the
-    // bidi levels; glyphs then advance by y_advance.
-    Shaper(std::span<const Font* const> fonts, const TextStyle& style, bool vertical = false);
+    // bidi levels; glyphs then advance by y_advance. `fallback`: where a cluster no font of the
+    // chain has finds one (null: nowhere, it shows the first font's .notdef); the fonts it gives
+    // are appended to fonts() as they are first used.
+    Shaper(std::span<const Font* const> fonts, const TextStyle& style, bool vertical = false,
+           SystemFallback* fallback = nullptr);
     ~Shaper();
     Shaper(const Shaper&) = delete;
     Shaper& operator=(const Shaper&) = delete;
@@ -32,8 +38,17 @@ public:
     // Shapes `para` (tabs already replaced) with the given bidi levels into `runs` (logical order).
     void shape_paragraph(std::u32string_view para, std::span<const std::uint8_t> levels, std::vector<ShapedRun>& runs);
 
+    // The chain followed by the fallback fonts used so far: ShapedGlyph::font indexes it.
+    const std::vector<const Font*>& fonts() const { return fonts_; }
+
 private:
-    std::span<const Font* const> fonts_;
+    // A fallback font (its index in fonts()) that has `cluster`, or kNoFont.
+    static constexpr std::size_t kNoFont = SIZE_MAX;
+    std::size_t fallback_font(std::u32string_view cluster);
+
+    std::vector<const Font*> fonts_;
+    std::size_t chain_size_ = 0;
+    SystemFallback* fallback_ = nullptr;
     double size_;
     bool vertical_ = false;
     hb_buffer_t* buf_ = nullptr;

@@ -1,0 +1,300 @@
+// Text stage, colour glyphs: their kinds, CPAL palettes, and bitmap glyphs (CBDT/CBLC, sbix)
+// scaled by area averaging (src/text/color_glyphs.hpp). COLR paint graphs: colr_paint.cpp.
+#include "text/color_glyphs.hpp"
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include FT_COLOR_H
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <unordered_map>
+
+#include "casteljau/error.hpp"
+#include "text/font_impl.hpp"
+
+namespace casteljau::text_detail {
+
+namespace {
+
+// The strike to draw at `ppem` device pixels per em: the smallest at least as large, else the largest.
+FT_Int pick_strike(FT_Face face, double ppem) {
+    FT_Int best = -1, largest = 0;
+    for (FT_Int i = 0; i < face->num_fixed_sizes; ++i) {
+        const FT_Pos p = face->available_sizes[i].y_ppem;
+        if (p > face->available_sizes[largest].y_ppem) largest = i;
+        if (p / 64.0 >= ppem && (best < 0 || p < face->available_sizes[best].y_ppem)) best = i;
+    }
+    return best >= 0 ? best : largest;
+}
+
+// A glyph's colour bitmap at one strike, premultiplied RGBA, and where it sits (strike pixels,
+// y up from the baseline to the top row).
+struct StrikeBitmap {
+    int width = 0, height = 0;
+    int left = 0, top = 0;
+    double ppem = 0;
+    std::vector<std::uint8_t> rgba;
+};
+
+// Loads the bitmap of `glyph` at `strike` (only its box and ppem with `metrics_only`: nothing is
+// decoded); false when the glyph has none. A scalable face is put back at its em size afterwards.
+bool load_strike_bitmap(const Font::Impl& fi, std::uint32_t glyph, FT_Int strike, StrikeBitmap& out,
+                        bool metrics_only = false) {
+    FT_Face face = fi.face;
+    if (glyph >= static_cast<std::uint32_t>(face->num_glyphs) || strike < 0 || strike >= face->num_fixed_sizes)
+        return false;
+    if (FT_Select_Size(face, strike)) return false;
+    const FT_Int32 flags = FT_LOAD_COLOR | FT_LOAD_NO_HINTING | (metrics_only ? FT_LOAD_BITMAP_METRICS_ONLY : 0);
+    const FT_Error err = FT_Load_Glyph(face, glyph, flags);
+    bool ok = !err && face->glyph->format == FT_GLYPH_FORMAT_BITMAP;
+    if (ok && metrics_only) {
+        const FT_Glyph_Metrics& m = face->glyph->metrics;
+        out.width = static_cast<int>(m.width / 64);
+        out.height = static_cast<int>(m.height / 64);
+        out.left = static_cast<int>(m.horiBearingX / 64);
+        out.top = static_cast<int>(m.horiBearingY / 64);
+        out.ppem = face->available_sizes[strike].y_ppem / 64.0;
+        ok = out.width > 0 && out.height > 0 && out.ppem > 0;
+    } else if (ok && face->glyph->bitmap.pixel_mode != FT_PIXEL_MODE_BGRA) {
+        ok = false;
+    } else if (ok) {
+        const FT_Bitmap& bm = face->glyph->bitmap;
+        out.width = static_cast<int>(bm.width);
+        out.height = static_cast<int>(bm.rows);
+        out.left = face->glyph->bitmap_left;
+        out.top = face->glyph->bitmap_top;
+        out.ppem = face->available_sizes[strike].y_ppem / 64.0;
+        out.rgba.assign(static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height) * 4, 0);
+        for (int y = 0; y < out.height; ++y) {
+            const unsigned char* src = bm.buffer + static_cast<std::ptrdiff_t>(y) * bm.pitch;
+            std::uint8_t* dst = out.rgba.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(out.width) * 4;
+            for (int x = 0; x < out.width; ++x) {
+                const std::uint8_t a = src[4 * x + 3];
+                // FreeType's BGRA is premultiplied; a malformed bitmap may not be: clamp to alpha.
+                dst[4 * x + 0] = std::min(src[4 * x + 2], a);
+                dst[4 * x + 1] = std::min(src[4 * x + 1], a);
+                dst[4 * x + 2] = std::min(src[4 * x + 0], a);
+                dst[4 * x + 3] = a;
+            }
+        }
+        ok = out.width > 0 && out.height > 0 && out.ppem > 0;
+    }
+    if (!fi.bitmap_only) {
+        const FT_F26Dot6 em = static_cast<FT_F26Dot6>(face->units_per_EM) * 64;
+        FT_Set_Char_Size(face, em, em, 72, 72);
+    }
+    return ok;
+}
+
+// Decoded bitmaps of a font, per (glyph, strike); emptied past kMaxCachedBitmaps.
+constexpr std::size_t kMaxCachedBitmaps = 256;
+using BitmapCache = std::unordered_map<std::uint64_t, StrikeBitmap>;
+
+// The decoded bitmap of `glyph` at `strike`, or null; kept in the Font.
+const StrikeBitmap* cached_bitmap(Font::Impl& fi, std::uint32_t glyph, FT_Int strike) {
+    auto* cache = static_cast<BitmapCache*>(fi.color_bitmap_cache.get());
+    if (!cache) {
+        auto made = std::make_shared<BitmapCache>();
+        cache = made.get();
+        fi.color_bitmap_cache = std::move(made);
+    }
+    const std::uint64_t key = static_cast<std::uint64_t>(glyph) << 16 | static_cast<std::uint16_t>(strike);
+    if (auto it = cache->find(key); it != cache->end()) return it->second.rgba.empty() ? nullptr : &it->second;
+    if (cache->size() >= kMaxCachedBitmaps) cache->clear();
+    StrikeBitmap bm;
+    if (!load_strike_bitmap(fi, glyph, strike, bm)) bm = StrikeBitmap{};
+    const StrikeBitmap& stored = cache->emplace(key, std::move(bm)).first->second;
+    return stored.rgba.empty() ? nullptr : &stored;
+}
+
+// Weights of the source pixels under destination pixels [d0, d0 + n) of an axis on which source
+// pixel i covers [origin + i k, origin + (i + 1) k): for each destination pixel, the first source
+// pixel and the overlaps (in destination pixels) with it and the following ones.
+struct AxisWeights {
+    std::vector<int> first;
+    std::vector<std::vector<float>> weights;
+};
+AxisWeights axis_weights(int d0, int n, double origin, double k, int src_count) {
+    AxisWeights w;
+    w.first.resize(static_cast<std::size_t>(n));
+    w.weights.resize(static_cast<std::size_t>(n));
+    for (int d = 0; d < n; ++d) {
+        const double lo = d0 + d, hi = lo + 1;
+        // Clamped as doubles: a malformed strike can make the quotients far beyond int.
+        const double count = src_count;
+        const int i0 = static_cast<int>(std::clamp(std::floor((lo - origin) / k), 0.0, count));
+        const int i1 = static_cast<int>(std::clamp(std::ceil((hi - origin) / k), 0.0, count));
+        w.first[static_cast<std::size_t>(d)] = i0;
+        for (int i = i0; i < std::min(i1, src_count); ++i) {
+            const double a = std::max(lo, origin + i * k), b = std::min(hi, origin + (i + 1) * k);
+            w.weights[static_cast<std::size_t>(d)].push_back(static_cast<float>(std::max(0.0, b - a)));
+        }
+    }
+    return w;
+}
+
+// Draws a strike bitmap scaled by `k` (device pixels per strike pixel) with its top-left corner at
+// device point (x, y), averaging the strike's pixels over each device pixel.
+void draw_scaled_bitmap(Canvas& canvas, const StrikeBitmap& bm, double k, double x, double y, double opacity) {
+    // Scales and positions a malformed font can produce that no image could show.
+    if (!(k >= 1e-4 && k <= 1e4) || !(std::abs(x) < 1e8 && std::abs(y) < 1e8)) return;
+    const int dx0 = static_cast<int>(std::floor(x)), dy0 = static_cast<int>(std::floor(y));
+    const int dx1 = static_cast<int>(std::ceil(x + bm.width * k)), dy1 = static_cast<int>(std::ceil(y + bm.height * k));
+    const int w = dx1 - dx0, h = dy1 - dy0;
+    if (w <= 0 || h <= 0 || w > 16384 || h > 16384) return;
+    const AxisWeights wx = axis_weights(dx0, w, x, k, bm.width), wy = axis_weights(dy0, h, y, k, bm.height);
+    // Horizontal pass into floats (one row per strike row), then vertical into the pixmap.
+    std::vector<float> rows(static_cast<std::size_t>(bm.height) * static_cast<std::size_t>(w) * 4, 0.0f);
+    for (int sy = 0; sy < bm.height; ++sy) {
+        const std::uint8_t* src = bm.rgba.data() + static_cast<std::size_t>(sy) * static_cast<std::size_t>(bm.width) * 4;
+        float* dst = rows.data() + static_cast<std::size_t>(sy) * static_cast<std::size_t>(w) * 4;
+        for (int d = 0; d < w; ++d) {
+            const auto& ws = wx.weights[static_cast<std::size_t>(d)];
+            const int i0 = wx.first[static_cast<std::size_t>(d)];
+            for (std::size_t j = 0; j < ws.size(); ++j)
+                for (int c = 0; c < 4; ++c) dst[4 * d + c] += ws[j] * src[4 * (i0 + static_cast<int>(j)) + c];
+        }
+    }
+    auto image = std::make_shared<Pixmap>(w, h);
+    for (int d = 0; d < h; ++d) {
+        const auto& ws = wy.weights[static_cast<std::size_t>(d)];
+        const int i0 = wy.first[static_cast<std::size_t>(d)];
+        std::uint8_t* out = image->row(d);
+        for (int px = 0; px < w; ++px) {
+            float acc[4] = {0, 0, 0, 0};
+            for (std::size_t j = 0; j < ws.size(); ++j) {
+                const float* r = rows.data() + (static_cast<std::size_t>(i0) + j) * static_cast<std::size_t>(w) * 4 +
+                                 static_cast<std::size_t>(px) * 4;
+                for (int c = 0; c < 4; ++c) acc[c] += ws[j] * r[c];
+            }
+            // Overlaps are in device pixels: a fully covered device pixel sums to 1.
+            const float a = std::clamp(std::round(acc[3]), 0.0f, 255.0f);
+            out[4 * px + 3] = static_cast<std::uint8_t>(a);
+            for (int c = 0; c < 3; ++c) out[4 * px + c] = static_cast<std::uint8_t>(std::clamp(std::round(acc[c]), 0.0f, a));
+        }
+    }
+    canvas.save();
+    canvas.reset_transform();
+    canvas.draw_image(*image, Affine::translate(dx0, dy0), ImageSampling::Nearest, opacity);
+    canvas.restore();
+}
+
+void draw_bitmap_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, double size, const Affine& to_device,
+                       Point origin, double opacity) {
+    Font::Impl& fi = font.impl();
+    const bool axis_aligned = to_device.b == 0 && to_device.c == 0 && to_device.a > 0 && to_device.a == to_device.d;
+    const double device_size = size * (axis_aligned ? to_device.a : std::sqrt(std::abs(to_device.a * to_device.d - to_device.b * to_device.c)));
+    const StrikeBitmap* found = cached_bitmap(fi, glyph, pick_strike(fi.face, device_size));
+    if (!found) return;
+    const StrikeBitmap& bm = *found;
+    if (axis_aligned) {
+        const Point o = to_device.apply(origin);
+        const double k = device_size / bm.ppem;
+        draw_scaled_bitmap(canvas, bm, k, o.x + bm.left * k, o.y - bm.top * k, opacity);
+        return;
+    }
+    Pixmap image(bm.width, bm.height);
+    for (int y = 0; y < bm.height; ++y)
+        std::copy_n(bm.rgba.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(bm.width) * 4,
+                    static_cast<std::size_t>(bm.width) * 4, image.row(y));
+    const double k = size / bm.ppem;
+    canvas.save();
+    canvas.reset_transform();
+    canvas.draw_image(image, to_device * Affine{k, 0, 0, k, origin.x + bm.left * k, origin.y - bm.top * k},
+                      ImageSampling::Bilinear, opacity);
+    canvas.restore();
+}
+
+}  // namespace
+
+ColorGlyphKind color_glyph_kind(const Font& font, std::uint32_t glyph) {
+    const Font::Impl& fi = font.impl();
+    if (!fi.has_colr && !fi.has_color_bitmaps) return ColorGlyphKind::None;
+    if (glyph >= font.glyph_count()) return ColorGlyphKind::None;
+    if (fi.has_colr) {
+        if (has_colr_paint_graph(font, glyph)) return ColorGlyphKind::PaintGraph;
+        FT_LayerIterator it{};
+        it.p = nullptr;
+        FT_UInt layer = 0, color = 0;
+        if (FT_Get_Color_Glyph_Layer(fi.face, glyph, &layer, &color, &it)) return ColorGlyphKind::Layers;
+    }
+    if (fi.has_color_bitmaps) {
+        StrikeBitmap bm;
+        if (load_strike_bitmap(fi, glyph, pick_strike(fi.face, 0), bm, true)) return ColorGlyphKind::Bitmap;
+    }
+    return ColorGlyphKind::None;
+}
+
+Rect color_glyph_bounds(const Font& font, std::uint32_t glyph) {
+    const Font::Impl& fi = font.impl();
+    if (fi.has_colr) {
+        const ColorGlyphKind kind = color_glyph_kind(font, glyph);
+        if (kind == ColorGlyphKind::PaintGraph || kind == ColorGlyphKind::Layers) return colr_glyph_bounds(font, glyph);
+    }
+    StrikeBitmap bm;
+    FT_Int largest = 0;
+    for (FT_Int i = 1; i < fi.face->num_fixed_sizes; ++i)
+        if (fi.face->available_sizes[i].y_ppem > fi.face->available_sizes[largest].y_ppem) largest = i;
+    if (!fi.has_color_bitmaps || !load_strike_bitmap(fi, glyph, largest, bm, true)) return {};
+    const double s = font.units_per_em() / bm.ppem;
+    return {bm.left * s, (bm.top - bm.height) * s, (bm.left + bm.width) * s, bm.top * s};
+}
+
+std::vector<Color> font_palette(const Font& font, int palette) {
+    FT_Face face = font.impl().face;
+    FT_Palette_Data data;
+    std::vector<Color> out;
+    if (FT_Palette_Data_Get(face, &data) || data.num_palettes == 0) return out;
+    if (palette < 0 || palette >= data.num_palettes) palette = 0;
+    FT_Color* colors = nullptr;
+    if (FT_Palette_Select(face, static_cast<FT_UShort>(palette), &colors) || !colors) return out;
+    for (FT_UShort i = 0; i < data.num_palette_entries; ++i)
+        out.push_back(Color::rgba(colors[i].red, colors[i].green, colors[i].blue, colors[i].alpha));
+    return out;
+}
+
+void draw_color_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, double size, const Affine& to_device,
+                      Point origin, const Paint& paint, int palette) {
+    const ColorGlyphKind kind = color_glyph_kind(font, glyph);
+    const double opacity = std::clamp(paint.opacity, 0.0, 1.0);
+    if (kind == ColorGlyphKind::Bitmap) {
+        draw_bitmap_glyph(canvas, font, glyph, size, to_device, origin, opacity);
+        return;
+    }
+    if (kind != ColorGlyphKind::PaintGraph && kind != ColorGlyphKind::Layers) return;
+    // The glyph's device bounds, drawn into a pixmap of that size and composited with the opacity.
+    const double s = size / font.units_per_em();
+    const Affine to_pixels = to_device * Affine{s, 0, 0, -s, origin.x, origin.y};
+    const Rect b = colr_glyph_bounds(font, glyph);
+    if (b.empty()) return;
+    Rect device;
+    bool first = true;
+    for (Point p : {Point{b.x0, b.y0}, Point{b.x1, b.y0}, Point{b.x0, b.y1}, Point{b.x1, b.y1}}) {
+        const Point q = to_pixels.apply(p);
+        if (first) device = {q.x, q.y, q.x, q.y};
+        else device.include(q);
+        first = false;
+    }
+    const IRect& clip = canvas.clip();
+    const double x0 = std::max(std::floor(device.x0), static_cast<double>(clip.x0));
+    const double y0 = std::max(std::floor(device.y0), static_cast<double>(clip.y0));
+    const double x1 = std::min(std::ceil(device.x1), static_cast<double>(clip.x1));
+    const double y1 = std::min(std::ceil(device.y1), static_cast<double>(clip.y1));
+    if (!(x1 > x0 && y1 > y0)) return;
+    Pixmap layer(static_cast<int>(x1 - x0), static_cast<int>(y1 - y0));
+    {
+        Canvas sub(layer);
+        sub.set_transform(Affine::translate(-x0, -y0) * to_pixels);
+        sub.fill_options() = canvas.fill_options();
+        Color fg = paint.color;
+        paint_colr_glyph(sub, font, glyph, font_palette(font, palette), fg);
+    }
+    canvas.save();
+    canvas.reset_transform();
+    canvas.draw_image(layer, Affine::translate(x0, y0), ImageSampling::Nearest, opacity);
+    canvas.restore();
+}
+
+}  // namespace casteljau::text_detail
