@@ -4,7 +4,7 @@
 #include <unicode/uvernum.h>
 
 #include "casteljau/error.hpp"
-#include "platform/runtime_library.hpp"
+#include "core/runtime_library.hpp"
 
 // The name a macro expands to, as a string: ICU's headers define ubrk_open as ubrk_open_72.
 #define CASTELJAU_ICU_NAME_OF(x) CASTELJAU_ICU_STRING(x)
