@@ -24,6 +24,9 @@ fi
 # Each stage's heading shows the minutes spent so far (CI's time budget is 30 minutes on 2 cores).
 stage() { echo "== [$((SECONDS / 60)) min] $*"; }
 stage "Release build: tests"
+# Configured again: the test packages (.ci/test-packages.txt) may have come after the first
+# configure, and the benchmarks' peers are looked for then.
+cmake -S . -B build > /dev/null
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure -j"$jobs"
 
