@@ -33,8 +33,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
-#include "raster/row_vector-inl.h"    // the library's row-vector kernel, for every target
-#include "raster/simd_dispatch.hpp"    // the library's dispatch (no libhwy)
+#include "raster/row_vector-inl.h"   // the library's row-vector kernel, for every target
+#include "raster/simd_dispatch.hpp"  // the library's dispatch (no libhwy)
 
 #include <algorithm>
 #include <cmath>
@@ -214,7 +214,9 @@ struct Options : bench::CommonOptions {
 };
 
 [[noreturn]] void usage(const char* msg) {
-    std::fprintf(stderr, "accumulation_floor: %s\nusage: accumulation_floor [--quick] [--runs R] [--min-time S] [--sizes 12,24,...] [--tolerance PX]\n",
+    std::fprintf(stderr,
+                 "accumulation_floor: %s\nusage: accumulation_floor [--quick] [--runs R] [--min-time S] [--sizes "
+                 "12,24,...] [--tolerance PX]\n",
                  msg);
     std::exit(2);
 }
@@ -268,13 +270,15 @@ double time_ns(const Options& o, std::size_t glyphs, F&& pass) {
 
 int run(const Options& o) {
     const bench::Font font;
-    std::printf("accumulation_floor: %s, glyph set of compare_glyphs, unhinted, tolerance %g px\n",
-                font.path().c_str(), o.tolerance);
-    std::printf("nanoseconds per glyph (thread CPU time, best of %d rounds); casteljau and the floors get the "
-                "polygon already flattened\n\n",
-                o.runs);
-    std::printf("| px | edges/glyph | FreeType (all) | budget = FreeType / 1.5 | flatten | casteljau (exact on) | "
-                "casteljau (exact off) | dense float | row vector |\n");
+    std::printf("accumulation_floor: %s, glyph set of compare_glyphs, unhinted, tolerance %g px\n", font.path().c_str(),
+                o.tolerance);
+    std::printf(
+        "nanoseconds per glyph (thread CPU time, best of %d rounds); casteljau and the floors get the "
+        "polygon already flattened\n\n",
+        o.runs);
+    std::printf(
+        "| px | edges/glyph | FreeType (all) | budget = FreeType / 1.5 | flatten | casteljau (exact on) | "
+        "casteljau (exact off) | dense float | row vector |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     int status = 0;
     for (const int px : o.sizes) {
@@ -311,7 +315,8 @@ int run(const Options& o) {
         }
         // Scratch, zero between glyphs; row vectors use rows of whole SIMD vectors (out too).
         const int vstride = floorbench::row_vector_stride(maxw);
-        std::vector<float> acc(static_cast<std::size_t>(std::max(vstride, maxw + 2)) * static_cast<std::size_t>(maxh), 0.0f);
+        std::vector<float> acc(static_cast<std::size_t>(std::max(vstride, maxw + 2)) * static_cast<std::size_t>(maxh),
+                               0.0f);
         std::vector<std::uint8_t> out(static_cast<std::size_t>(vstride) * static_cast<std::size_t>(maxh), 0);
         std::vector<std::uint8_t> ref(static_cast<std::size_t>(maxw) * static_cast<std::size_t>(maxh), 0);
         unsigned checksum = 0;
@@ -341,8 +346,10 @@ int run(const Options& o) {
                                                                    ref[static_cast<std::size_t>(y) * f.w + x]));
         }
         if (worst_dense > 1 || worst_vector > 1) {
-            std::fprintf(stderr, "FAIL: %d px: a floor disagrees with casteljau (exact off): dense float %d/255, row vector %d/255\n",
-                         px, worst_dense, worst_vector);
+            std::fprintf(
+                stderr,
+                "FAIL: %d px: a floor disagrees with casteljau (exact off): dense float %d/255, row vector %d/255\n",
+                px, worst_dense, worst_vector);
             status = 1;
         }
 
@@ -369,7 +376,8 @@ int run(const Options& o) {
         casteljau::Polyline scratch_polyline;
         const double flat = time_ns(o, flats.size(), [&] {
             for (const bench::Glyph& g : set.glyphs()) {
-                casteljau::flatten(g.path, g.to_box, o.tolerance, scratch_polyline, casteljau::FlattenMode::AreaBalanced);
+                casteljau::flatten(g.path, g.to_box, o.tolerance, scratch_polyline,
+                                   casteljau::FlattenMode::AreaBalanced);
                 checksum += static_cast<unsigned>(scratch_polyline.points.size());
             }
         });

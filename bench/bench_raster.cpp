@@ -161,7 +161,10 @@ void BM_RasterStar4000(benchmark::State& state) {
     for (int i = 0; i < 5; ++i) {
         const double a = -std::numbers::pi / 2 + i * 4 * std::numbers::pi / 5;  // every second vertex: a pentagram
         const Point q{cx + r * std::cos(a), cy + r * std::sin(a)};
-        if (i == 0) p.move_to(q); else p.line_to(q);
+        if (i == 0)
+            p.move_to(q);
+        else
+            p.line_to(q);
     }
     p.close();
     FillOptions o;

@@ -40,11 +40,12 @@ const std::string kFontPath = std::string(CASTELJAU_SOURCE_DIR) + "/fonts/DejaVu
 
 // Deterministic English-like text, lines of about 72 characters, ~10,000 glyphs in all.
 std::string make_paragraph() {
-    static const char* words[] = {"the", "quick", "brown", "fox", "jumps", "over", "lazy", "dog", "while",
-                                  "five", "boxing", "wizards", "jump", "quickly", "Sphinx", "of", "black",
-                                  "quartz", "judge", "my", "vow", "pack", "box", "with", "dozen", "liquor",
-                                  "jugs", "AVATAR", "Toyota", "Wales", "office", "fluffy", "waffle", "1234,",
-                                  "(parenthesis)", "\"quoted\"", "and", "a", "to", "in", "is", "it"};
+    static const char* words[] = {"the",        "quick", "brown",  "fox",    "jumps",   "over",  "lazy",
+                                  "dog",        "while", "five",   "boxing", "wizards", "jump",  "quickly",
+                                  "Sphinx",     "of",    "black",  "quartz", "judge",   "my",    "vow",
+                                  "pack",       "box",   "with",   "dozen",  "liquor",  "jugs",  "AVATAR",
+                                  "Toyota",     "Wales", "office", "fluffy", "waffle",  "1234,", "(parenthesis)",
+                                  "\"quoted\"", "and",   "a",      "to",     "in",      "is",    "it"};
     std::uint32_t seed = 20240611;
     std::string out, line;
     std::size_t glyphs = 0;
@@ -100,7 +101,8 @@ void BM_casteljau_warm(benchmark::State& state) {
         draw_text(c, l, {4, 4}, Paint::solid(Color::black()), &cache);
         benchmark::DoNotOptimize(pm.data());
     }
-    state.counters["glyphs/s"] = benchmark::Counter(static_cast<double>(s.glyphs), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["glyphs/s"] =
+        benchmark::Counter(static_cast<double>(s.glyphs), benchmark::Counter::kIsIterationInvariantRate);
     state.counters["cache_misses"] = static_cast<double>(cache.stats().misses);
 }
 
@@ -117,7 +119,8 @@ void BM_casteljau_cold(benchmark::State& state) {
         misses = cache.stats().misses;
         benchmark::DoNotOptimize(pm.data());
     }
-    state.counters["glyphs/s"] = benchmark::Counter(static_cast<double>(s.glyphs), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["glyphs/s"] =
+        benchmark::Counter(static_cast<double>(s.glyphs), benchmark::Counter::kIsIterationInvariantRate);
     state.counters["masks_made"] = static_cast<double>(misses);
 }
 
@@ -131,7 +134,8 @@ public:
         hb_ = hb_ft_font_create_referenced(face_);
         hb_ft_font_set_load_flags(hb_, FT_LOAD_NO_HINTING);
         buf_ = hb_buffer_create();
-        line_advance_ = kSize * (face_->ascender - face_->descender + 0.0) / face_->units_per_EM;  // DejaVu: no line gap
+        line_advance_ =
+            kSize * (face_->ascender - face_->descender + 0.0) / face_->units_per_EM;  // DejaVu: no line gap
         ascender_ = kSize * face_->ascender / face_->units_per_EM;
     }
     ~FreeTypeRenderer() {
@@ -164,7 +168,8 @@ public:
                 const long ix = qx >= 0 ? qx / kSteps : -((-qx + kSteps - 1) / kSteps);
                 const long iy = qy >= 0 ? qy / kSteps : -((-qy + kSteps - 1) / kSteps);
                 if (FT_Load_Glyph(face_, info[i].codepoint, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP)) continue;
-                FT_Outline_Translate(&face_->glyph->outline, (qx - ix * kSteps) * (64 / kSteps), -(qy - iy * kSteps) * (64 / kSteps));
+                FT_Outline_Translate(&face_->glyph->outline, (qx - ix * kSteps) * (64 / kSteps),
+                                     -(qy - iy * kSteps) * (64 / kSteps));
                 if (FT_Render_Glyph(face_->glyph, FT_RENDER_MODE_NORMAL)) continue;
                 const FT_Bitmap& bm = face_->glyph->bitmap;
                 const long left = ix + face_->glyph->bitmap_left, top = iy - face_->glyph->bitmap_top;
@@ -205,7 +210,8 @@ void BM_freetype(benchmark::State& state) {
         glyphs = ft.draw(s.text, pm, 4, 4, Paint::solid(Color::black()));
         benchmark::DoNotOptimize(pm.data());
     }
-    state.counters["glyphs/s"] = benchmark::Counter(static_cast<double>(glyphs), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["glyphs/s"] =
+        benchmark::Counter(static_cast<double>(glyphs), benchmark::Counter::kIsIterationInvariantRate);
 }
 
 // Console output plus a record of glyphs/s per benchmark, for the ratios at the end.
@@ -216,7 +222,8 @@ public:
         ConsoleReporter::ReportRuns(runs);
         for (const Run& r : runs) {
             auto it = r.counters.find("glyphs/s");
-            if (it != r.counters.end() && r.run_type == Run::RT_Iteration) rates[r.run_name.function_name] = it->second.value;
+            if (it != r.counters.end() && r.run_type == Run::RT_Iteration)
+                rates[r.run_name.function_name] = it->second.value;
         }
     }
     std::map<std::string, double> rates;
@@ -239,7 +246,8 @@ int main(int argc, char** argv) {
     if (ft > 0) {
         for (const char* name : {"BM_casteljau_warm", "BM_casteljau_cold"}) {
             const double r = reporter.rates[name];
-            if (r > 0) std::printf("%-20s %12.0f glyphs/s   %.2fx FreeType+HarfBuzz (%.0f glyphs/s)\n", name, r, r / ft, ft);
+            if (r > 0)
+                std::printf("%-20s %12.0f glyphs/s   %.2fx FreeType+HarfBuzz (%.0f glyphs/s)\n", name, r, r / ft, ft);
         }
     }
     benchmark::Shutdown();

@@ -89,8 +89,10 @@ Path shape(const Item& it, bool open) {
             for (int k = 0; k < 10; ++k) {
                 const double r = k % 2 ? it.w * 0.2 : it.w * 0.5, a = it.angle + k * 3.14159265358979 / 5;
                 const Point q{it.x + r * std::cos(a), it.y + r * std::sin(a)};
-                if (k == 0) p.move_to(q);
-                else p.line_to(q);
+                if (k == 0)
+                    p.move_to(q);
+                else
+                    p.line_to(q);
             }
             p.close();
     }
@@ -222,15 +224,25 @@ int main(int argc, char** argv) {
     int per_part = 2000, rounds = 5;
     std::string png_prefix;
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--quick")) { per_part = 200; rounds = 1; }
-        else if (!std::strcmp(argv[i], "--rounds") && i + 1 < argc) rounds = std::max(1, std::atoi(argv[++i]));
-        else if (!std::strcmp(argv[i], "--png") && i + 1 < argc) png_prefix = argv[++i];
-        else { std::fprintf(stderr, "usage: canvas_scene [--quick] [--rounds N] [--png PREFIX]\n"); return 2; }
+        if (!std::strcmp(argv[i], "--quick")) {
+            per_part = 200;
+            rounds = 1;
+        } else if (!std::strcmp(argv[i], "--rounds") && i + 1 < argc)
+            rounds = std::max(1, std::atoi(argv[++i]));
+        else if (!std::strcmp(argv[i], "--png") && i + 1 < argc)
+            png_prefix = argv[++i];
+        else {
+            std::fprintf(stderr, "usage: canvas_scene [--quick] [--rounds N] [--png PREFIX]\n");
+            return 2;
+        }
     }
     const Font font = Font::load(CASTELJAU_BENCH_FONT);
     FT_Library ft;
     FT_Face face;
-    if (FT_Init_FreeType(&ft) || FT_New_Face(ft, CASTELJAU_BENCH_FONT, 0, &face)) { std::fprintf(stderr, "FreeType failed\n"); return 1; }
+    if (FT_Init_FreeType(&ft) || FT_New_Face(ft, CASTELJAU_BENCH_FONT, 0, &face)) {
+        std::fprintf(stderr, "FreeType failed\n");
+        return 1;
+    }
     cairo_font_face_t* cface = cairo_ft_font_face_create_for_ft_face(face, 0);
 
     std::vector<std::vector<Item>> parts;
@@ -238,7 +250,8 @@ int main(int argc, char** argv) {
 
     Pixmap pm(kW, kH);
     cairo_surface_t* surf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, kW, kH);
-    std::printf("canvas scene: %d items per part, %d x %d, median of %d rounds (thread CPU ms)\n", per_part, kW, kH, rounds);
+    std::printf("canvas scene: %d items per part, %d x %d, median of %d rounds (thread CPU ms)\n", per_part, kW, kH,
+                rounds);
     std::printf("%-14s %12s %12s %8s\n", "part", "casteljau", "Cairo", "ratio");
     double total_c = 0, total_k = 0;
     for (int p = 0; p < kParts; ++p) {

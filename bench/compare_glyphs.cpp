@@ -159,9 +159,10 @@ public:
             for (const bench::Glyph& g : set.glyphs()) {
                 // The glyph cache's verdict: for similarity maps (a glyph's map to pixels), proven
                 // for this size and down to half of it.
-                verdicts_.push_back(verdict_ == Verdict::CachedAnyMap
-                                        ? casteljau::classify_topology(g.path)
-                                        : casteljau::classify_topology(g.path, 2 * opts_.tolerance / std::abs(g.to_box.a)));
+                verdicts_.push_back(
+                    verdict_ == Verdict::CachedAnyMap
+                        ? casteljau::classify_topology(g.path)
+                        : casteljau::classify_topology(g.path, 2 * opts_.tolerance / std::abs(g.to_box.a)));
                 simple_ += verdicts_.back() == casteljau::Topology::Simple;
             }
     }
@@ -241,7 +242,6 @@ private:
 
 // --- harness -----------------------------------------------------------------------------------
 
-
 double time_passes(Renderer& r, std::size_t n, int passes, unsigned& checksum) {
     const double t0 = bench::thread_cpu_seconds();
     for (int p = 0; p < passes; ++p) {
@@ -317,15 +317,18 @@ int main(int argc, char** argv) {
         }
         std::printf("\ncasteljau tolerance %.3g px; ", opt.tolerance);
         if (opt.passes > 0)
-            std::printf("timing (thread CPU time): best of %d run(s) of %d pass(es) over the set\n\n", opt.runs, opt.passes);
+            std::printf("timing (thread CPU time): best of %d run(s) of %d pass(es) over the set\n\n", opt.runs,
+                        opt.passes);
         else
-            std::printf("timing (thread CPU time): best of %d runs, each >= %.2f s of whole passes over the set\n\n", opt.runs,
-                        opt.min_time);
+            std::printf("timing (thread CPU time): best of %d runs, each >= %.2f s of whole passes over the set\n\n",
+                        opt.runs, opt.min_time);
 
         bool ok = true;
         unsigned checksum = 0;
         std::vector<std::vector<Result>> results(opt.sizes.size(), std::vector<Result>(rs.size()));
-        struct SizeInfo { std::size_t glyphs, pixels, segments, exact_cells, curves; };
+        struct SizeInfo {
+            std::size_t glyphs, pixels, segments, exact_cells, curves;
+        };
         std::vector<SizeInfo> info(opt.sizes.size());
 
         for (std::size_t si = 0; si < opt.sizes.size(); ++si) {
@@ -380,7 +383,8 @@ int main(int argc, char** argv) {
                     ok = false;
                 }
                 if (mask_off_vs_fill_off.max != 0) {
-                    std::fprintf(stderr, "FAIL: %d px: fill_mask (exact off) differs from fill (exact off) (max %d/255)\n",
+                    std::fprintf(stderr,
+                                 "FAIL: %d px: fill_mask (exact off) differs from fill (exact off) (max %d/255)\n",
                                  opt.sizes[si], mask_off_vs_fill_off.max);
                     ok = false;
                 }
@@ -412,15 +416,17 @@ int main(int argc, char** argv) {
         // --- tables (Markdown) ---
         if (opt.check) {
             std::printf("Glyph set per size (casteljau at tolerance %.3g px, exact overlaps on):\n\n", opt.tolerance);
-            std::printf("| px | glyphs | box pixels/glyph | curves/glyph | edges/glyph | exact cells/glyph | pixels changed by exact/glyph | by > 1/255 |\n");
+            std::printf(
+                "| px | glyphs | box pixels/glyph | curves/glyph | edges/glyph | exact cells/glyph | pixels changed by "
+                "exact/glyph | by > 1/255 |\n");
             std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
             for (std::size_t si = 0; si < opt.sizes.size(); ++si) {
                 const SizeInfo& in = info[si];
                 const double g = static_cast<double>(in.glyphs);
                 const auto& d = results[si][kCastOff].vs_casteljau;
-                std::printf("| %d | %zu | %.0f | %.1f | %.1f | %.2f | %.3f | %.3f |\n", opt.sizes[si], in.glyphs, in.pixels / g,
-                            in.curves / g, in.segments / g, in.exact_cells / g, static_cast<double>(d.changed) / g,
-                            static_cast<double>(d.over1) / g);
+                std::printf("| %d | %zu | %.0f | %.1f | %.1f | %.2f | %.3f | %.3f |\n", opt.sizes[si], in.glyphs,
+                            in.pixels / g, in.curves / g, in.segments / g, in.exact_cells / g,
+                            static_cast<double>(d.changed) / g, static_cast<double>(d.over1) / g);
             }
         }
         std::printf("\nThroughput, thousands of glyphs per second (higher is better):\n\n| px |");
@@ -438,7 +444,8 @@ int main(int argc, char** argv) {
         }
 
         if (timed[kCast]) {
-            std::printf("\nSpeed ratio: casteljau (fill, exact overlaps on) / peer; > 1 means casteljau is faster:\n\n| px |");
+            std::printf(
+                "\nSpeed ratio: casteljau (fill, exact overlaps on) / peer; > 1 means casteljau is faster:\n\n| px |");
             for (std::size_t r = 0; r < rs.size(); ++r)
                 if (r != kCast && timed[r]) std::printf(" vs %s |", rs[r]->name().c_str());
             std::printf("\n|---:|");
@@ -449,7 +456,8 @@ int main(int argc, char** argv) {
                 std::printf("| %d |", opt.sizes[si]);
                 for (std::size_t r = 0; r < rs.size(); ++r)
                     if (r != kCast && timed[r])
-                        std::printf(" %s |", fmt("%.2f", results[si][kCast].glyphs_per_s / results[si][r].glyphs_per_s).c_str());
+                        std::printf(" %s |",
+                                    fmt("%.2f", results[si][kCast].glyphs_per_s / results[si][r].glyphs_per_s).c_str());
                 std::printf("\n");
             }
         }
@@ -458,7 +466,8 @@ int main(int argc, char** argv) {
             std::printf("\n(agreement pass skipped: --no-check)\n(checksum %u)\n", checksum);
             return 0;
         }
-        std::printf("\nAgreement with FreeType: mean / max |difference| per pixel of the glyph boxes, in 1/255:\n\n| px |");
+        std::printf(
+            "\nAgreement with FreeType: mean / max |difference| per pixel of the glyph boxes, in 1/255:\n\n| px |");
         for (std::size_t r = 0; r < rs.size(); ++r)
             if (r != kFT) std::printf(" %s |", rs[r]->name().c_str());
         std::printf("\n|---:|");
@@ -474,9 +483,10 @@ int main(int argc, char** argv) {
             }
             std::printf("\n");
         }
-        std::printf("\nError against the exact reference (casteljau at %g px, exact overlaps on): mean / max |difference| "
-                    "in 1/255:\n\n| px |",
-                    kReferenceTolerance);
+        std::printf(
+            "\nError against the exact reference (casteljau at %g px, exact overlaps on): mean / max |difference| "
+            "in 1/255:\n\n| px |",
+            kReferenceTolerance);
         for (std::size_t r = 0; r < rs.size(); ++r) std::printf(" %s |", rs[r]->name().c_str());
         std::printf("\n|---:|");
         for (std::size_t r = 0; r < rs.size(); ++r) std::printf("---:|");

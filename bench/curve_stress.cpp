@@ -137,8 +137,8 @@ public:
         ps.move_to(s.p[0].x - s.x0, s.p[0].y - s.y0);
         for (int k = 0; k < 4; ++k) {
             const Point e = k == 3 ? s.p[0] : s.p[3 + 3 * k];
-            ps.curve4(s.p[1 + 3 * k].x - s.x0, s.p[1 + 3 * k].y - s.y0, s.p[2 + 3 * k].x - s.x0, s.p[2 + 3 * k].y - s.y0,
-                      e.x - s.x0, e.y - s.y0);
+            ps.curve4(s.p[1 + 3 * k].x - s.x0, s.p[1 + 3 * k].y - s.y0, s.p[2 + 3 * k].x - s.x0,
+                      s.p[2 + 3 * k].y - s.y0, e.x - s.x0, e.y - s.y0);
         }
         ps.close_polygon();
         buf_.assign(static_cast<std::size_t>(s.w) * s.h, 0);
@@ -168,10 +168,14 @@ int main(int argc, char** argv) {
     unsigned seed = 1;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
-        if (a == "--paths") npaths = std::max(1, std::atoi(argv[i + 1]));
-        else if (a == "--rounds") rounds = std::max(1, std::atoi(argv[i + 1]));
-        else if (a == "--seed") seed = static_cast<unsigned>(std::atoi(argv[i + 1]));
-        else if (a == "--check") check = std::max(0, std::atoi(argv[i + 1]));
+        if (a == "--paths")
+            npaths = std::max(1, std::atoi(argv[i + 1]));
+        else if (a == "--rounds")
+            rounds = std::max(1, std::atoi(argv[i + 1]));
+        else if (a == "--seed")
+            seed = static_cast<unsigned>(std::atoi(argv[i + 1]));
+        else if (a == "--check")
+            check = std::max(0, std::atoi(argv[i + 1]));
         else {
             std::fprintf(stderr, "usage: curve_stress [--paths N] [--rounds R] [--seed S] [--check N]\n");
             return 2;
@@ -202,11 +206,14 @@ int main(int argc, char** argv) {
         const char* name;
         Render f;
     };
-    const Entry entries[] = {{"casteljau", std::ref(cj)}, {"casteljau (exact off)", std::ref(cj_off)},
-                             {"FreeType", std::ref(ft)}, {"AGG", std::ref(agg)}};
-    std::printf("curve_stress: %d closed paths of 4 random cubics (squares of 64-512 px) on 1024 x 1024, seed %u, "
-                "best of %d rounds (thread CPU time)\n\n",
-                npaths, seed, rounds);
+    const Entry entries[] = {{"casteljau", std::ref(cj)},
+                             {"casteljau (exact off)", std::ref(cj_off)},
+                             {"FreeType", std::ref(ft)},
+                             {"AGG", std::ref(agg)}};
+    std::printf(
+        "curve_stress: %d closed paths of 4 random cubics (squares of 64-512 px) on 1024 x 1024, seed %u, "
+        "best of %d rounds (thread CPU time)\n\n",
+        npaths, seed, rounds);
     std::printf("| rule | renderer | ms per 2000-path pass equivalent | paths/s | mean err | max err | > 1/255 |\n");
     std::printf("|---|---|---:|---:|---:|---:|---:|\n");
     for (bool eo : {false, true}) {

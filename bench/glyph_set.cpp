@@ -91,7 +91,7 @@ GlyphSet::GlyphSet(const Font& font, int pixel_size) : font_(font), px_(pixel_si
         g.glyph_index = gi;
         FT_BBox cb;
         FT_Outline_Get_CBox(&src, &cb);
-        const long px0 = cb.xMin >> 6, py0 = cb.yMin >> 6;          // floor
+        const long px0 = cb.xMin >> 6, py0 = cb.yMin >> 6;                // floor
         const long px1 = (cb.xMax + 63) >> 6, py1 = (cb.yMax + 63) >> 6;  // ceil
         g.box.x0 = static_cast<int>(px0);
         g.box.y0 = static_cast<int>(-py1);

@@ -62,10 +62,10 @@ struct Glyph {
     std::uint32_t codepoint = 0;
     unsigned glyph_index = 0;
     Box box;
-    FT_Outline outline{};        // owned copy, translated: box's bottom-left corner at (0, 0)
-    casteljau::Path path;        // 26.6 units, y up, as loaded
-    casteljau::Affine to_box;    // path -> box pixels (y down, origin at the box's top-left)
-    std::size_t curves = 0;      // quadratic + cubic segments in the outline
+    FT_Outline outline{};      // owned copy, translated: box's bottom-left corner at (0, 0)
+    casteljau::Path path;      // 26.6 units, y up, as loaded
+    casteljau::Affine to_box;  // path -> box pixels (y down, origin at the box's top-left)
+    std::size_t curves = 0;    // quadratic + cubic segments in the outline
 };
 
 // All glyphs of the benchmark set at one pixel size (ppem). Glyphs with an empty outline are left out.
@@ -110,8 +110,8 @@ struct DiffStats {
     double sum = 0;          // sum of |a - b| in 1/255 units
     std::size_t pixels = 0;  // pixels compared
     int max = 0;
-    std::size_t over1 = 0;   // pixels with |a - b| > 1
-    std::size_t changed = 0; // pixels with a != b
+    std::size_t over1 = 0;    // pixels with |a - b| > 1
+    std::size_t changed = 0;  // pixels with a != b
     void add(const Coverage& a, const Coverage& b);
     void merge(const DiffStats& o);
     double mean() const { return pixels ? sum / static_cast<double>(pixels) : 0.0; }

@@ -85,15 +85,20 @@ int run(int argc, char** argv) {
     std::string layer;
     for (int i = 2; i < argc; i += 2) {
         if (i + 1 >= argc) return usage();
-        if (!std::strcmp(argv[i], "--width")) W = std::atoi(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--rounds")) rounds = std::atoi(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--layer")) layer = argv[i + 1];
-        else return usage();
+        if (!std::strcmp(argv[i], "--width"))
+            W = std::atoi(argv[i + 1]);
+        else if (!std::strcmp(argv[i], "--rounds"))
+            rounds = std::atoi(argv[i + 1]);
+        else if (!std::strcmp(argv[i], "--layer"))
+            layer = argv[i + 1];
+        else
+            return usage();
     }
     if (W < 2 || rounds < 1) return usage();
     const int H = W / 2;
     const auto bytes = read_file(argv[1]);
-    const MapData data = read_map_data(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), layer);
+    const MapData data =
+        read_map_data(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), layer);
     // Pixel-space polygons per feature.
     std::vector<Rings> features;
     std::size_t vertices = 0;
@@ -318,7 +323,9 @@ int run(int argc, char** argv) {
 
     std::printf("%-44s %10s %10s\n", "case", "ms", "vs best peer");
     const double peer_fill = std::min(t_agg, t_cairo), peer_stroke = std::min(t_agg_stroke, t_cairo_stroke);
-    auto row = [](const char* name, double t, double ref) { std::printf("%-44s %10.1f %10.2fx\n", name, t * 1e3, ref / t); };
+    auto row = [](const char* name, double t, double ref) {
+        std::printf("%-44s %10.1f %10.2fx\n", name, t * 1e3, ref / t);
+    };
     row("fill: casteljau separate (source-over)", t_sep, peer_fill);
     row("fill: casteljau separate, topology per feature", t_sep_verdict, peer_fill);
     row("  of which classify_topology alone", t_classify, peer_fill);
@@ -335,9 +342,11 @@ int run(int argc, char** argv) {
     row("render_map fill+stroke", t_map_stroke, peer_stroke);
     std::printf("render_map fill, wall time: 1 thread %.1f ms, 2 threads %.1f ms (%.2fx)\n", wall1 * 1e3, wall2 * 1e3,
                 wall1 / wall2);
-    std::printf("topology per feature: %zu of %zu features simple; max |alpha difference| against the exact cells: %d/255\n",
-                simple, paths.size(), verdict_max_diff);
-    std::printf("borders once against the union of every ring's stroke: max |alpha difference| %d/255\n", once_max_diff);
+    std::printf(
+        "topology per feature: %zu of %zu features simple; max |alpha difference| against the exact cells: %d/255\n",
+        simple, paths.size(), verdict_max_diff);
+    std::printf("borders once against the union of every ring's stroke: max |alpha difference| %d/255\n",
+                once_max_diff);
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
     std::printf("peak RSS: %.1f MB (input file %.1f MB)\n", ru.ru_maxrss / 1024.0, bytes.size() / 1e6);

@@ -58,8 +58,8 @@ public:
         buf_.assign(bytes, 0);
         for (const Glyph& g : set.glyphs()) {
             const int stride = cairo_format_stride_for_width(CAIRO_FORMAT_A8, g.box.width);
-            cairo_surface_t* s = cairo_image_surface_create_for_data(buf_.data(), CAIRO_FORMAT_A8, g.box.width,
-                                                                     g.box.height, stride);
+            cairo_surface_t* s =
+                cairo_image_surface_create_for_data(buf_.data(), CAIRO_FORMAT_A8, g.box.width, g.box.height, stride);
             cairo_t* cr = cairo_create(s);
             if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) throw std::runtime_error("cairo_create failed");
             cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);

@@ -60,9 +60,12 @@ int main(int argc, char** argv) {
     bool quick = false;
     std::vector<std::string> files;
     for (int i = 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--quick") == 0) quick = true;
-        else if (std::strcmp(argv[i], "--runs") == 0 && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
-        else files.emplace_back(argv[i]);
+        if (std::strcmp(argv[i], "--quick") == 0)
+            quick = true;
+        else if (std::strcmp(argv[i], "--runs") == 0 && i + 1 < argc)
+            runs = std::max(1, std::atoi(argv[++i]));
+        else
+            files.emplace_back(argv[i]);
     }
     if (quick) runs = 1;
     struct Picture {
@@ -75,7 +78,8 @@ int main(int argc, char** argv) {
     for (const std::string& f : files) pictures.push_back({f, read_png(f)});
     long long pixels = 0;
     for (const Picture& p : pictures) pixels += static_cast<long long>(p.pixmap.width()) * p.pixmap.height();
-    std::printf("%zu pictures, %.2f Mpixels; best of %d rounds, thread CPU time\n\n", pictures.size(), pixels / 1e6, runs);
+    std::printf("%zu pictures, %.2f Mpixels; best of %d rounds, thread CPU time\n\n", pictures.size(), pixels / 1e6,
+                runs);
 
     struct Config {
         int level;
@@ -92,7 +96,8 @@ int main(int argc, char** argv) {
                 configs.push_back({level, f, reduce});
             }
     const PngEncodeOptions defaults;
-    std::printf("%-6s %-9s %-7s %12s %10s %9s %9s\n", "level", "filter", "reduce", "bytes", "ms", "size/ref", "time/ref");
+    std::printf("%-6s %-9s %-7s %12s %10s %9s %9s\n", "level", "filter", "reduce", "bytes", "ms", "size/ref",
+                "time/ref");
     double ref_ms = 0, ref_bytes = 0;
     for (const Config& c : configs) {
         PngEncodeOptions o;
@@ -104,9 +109,10 @@ int main(int argc, char** argv) {
             const auto png = encode_png(p.pixmap, o);
             bytes += png.size();
             const Pixmap back = decode_png(png);
-            if (std::memcmp(back.data(), p.pixmap.data(), p.pixmap.stride() * static_cast<std::size_t>(p.pixmap.height())) != 0) {
-                std::fprintf(stderr, "png_encode: %s does not round-trip with level %d filter %s\n", p.name.c_str(), c.level,
-                             filter_name(c.filter));
+            if (std::memcmp(back.data(), p.pixmap.data(),
+                            p.pixmap.stride() * static_cast<std::size_t>(p.pixmap.height())) != 0) {
+                std::fprintf(stderr, "png_encode: %s does not round-trip with level %d filter %s\n", p.name.c_str(),
+                             c.level, filter_name(c.filter));
                 return 1;
             }
         }
@@ -123,8 +129,9 @@ int main(int argc, char** argv) {
         }
         const bool is_default = c.level == defaults.compression_level && c.filter == defaults.filter &&
                                 c.reduce == defaults.smallest_colour_type;
-        std::printf("%-6d %-9s %-7s %12zu %10.2f %9.3f %9.3f%s\n", c.level, filter_name(c.filter), c.reduce ? "yes" : "no",
-                    bytes, ms, bytes / ref_bytes, ms / ref_ms, is_default ? "   <- default" : "");
+        std::printf("%-6d %-9s %-7s %12zu %10.2f %9.3f %9.3f%s\n", c.level, filter_name(c.filter),
+                    c.reduce ? "yes" : "no", bytes, ms, bytes / ref_bytes, ms / ref_ms,
+                    is_default ? "   <- default" : "");
     }
     return 0;
 }

@@ -95,7 +95,6 @@ struct Row {
     double mean_edge() const { return edge_pixels ? sum_edge / static_cast<double>(edge_pixels) : 0; }
 };
 
-
 std::string fmt_tol(double t) {
     char b[32];
     std::snprintf(b, sizeof b, "%.3g", t);
@@ -111,9 +110,11 @@ int main(int argc, char** argv) {
         Renderer ren;
         std::printf("tolerance_study: %s, %zu codepoints, unhinted; reference: casteljau at %.3g px\n",
                     font.path().c_str(), bench::benchmark_codepoints().size(), kReferenceTolerance);
-        std::printf("timing (thread CPU time): best of %d round(s), each >= %.2f s of whole passes over the set (Rasterizer::fill, "
-                    "exact overlaps on)\n\n",
-                    opt.runs, opt.quick ? 0.0 : opt.min_time);
+        std::printf(
+            "timing (thread CPU time): best of %d round(s), each >= %.2f s of whole passes over the set "
+            "(Rasterizer::fill, "
+            "exact overlaps on)\n\n",
+            opt.runs, opt.quick ? 0.0 : opt.min_time);
         std::vector<std::vector<Row>> rows(opt.sizes.size(), std::vector<Row>(opt.tolerances.size()));
         unsigned checksum = 0;
         for (std::size_t si = 0; si < opt.sizes.size(); ++si) {
@@ -161,13 +162,13 @@ int main(int argc, char** argv) {
             std::vector<int> passes(opt.tolerances.size(), 1);
             if (!opt.quick)
                 for (std::size_t ti = 0; ti < opt.tolerances.size(); ++ti)
-                    passes[ti] = std::max(1, static_cast<int>(std::ceil(opt.min_time / std::max(1e-9, pass(opt.tolerances[ti], 1)))));
+                    passes[ti] = std::max(
+                        1, static_cast<int>(std::ceil(opt.min_time / std::max(1e-9, pass(opt.tolerances[ti], 1)))));
             std::vector<double> best(opt.tolerances.size(), INFINITY);
             for (int run = 0; run < opt.runs; ++run)
                 for (std::size_t ti = 0; ti < opt.tolerances.size(); ++ti)
                     best[ti] = std::min(best[ti], pass(opt.tolerances[ti], passes[ti]));
-            for (std::size_t ti = 0; ti < opt.tolerances.size(); ++ti)
-            {
+            for (std::size_t ti = 0; ti < opt.tolerances.size(); ++ti) {
                 rows[si][ti].glyphs_per_s = static_cast<double>(n) * passes[ti] / best[ti];
                 rows[si][ti].glyphs = n;
             }
@@ -183,7 +184,9 @@ int main(int argc, char** argv) {
                 base = ti;
         std::printf("Per size (error vs the %.3g px reference, in 1/255; speed relative to %.3g px):\n\n",
                     kReferenceTolerance, opt.tolerances[base]);
-        std::printf("| px | tolerance | k glyphs/s | speed | edges/glyph | mean err | mean err (edge px) | max err | px off > 1 |\n");
+        std::printf(
+            "| px | tolerance | k glyphs/s | speed | edges/glyph | mean err | mean err (edge px) | max err | px off > "
+            "1 |\n");
         std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
         for (std::size_t si = 0; si < opt.sizes.size(); ++si) {
             for (std::size_t ti = 0; ti < opt.tolerances.size(); ++ti) {
@@ -196,8 +199,10 @@ int main(int argc, char** argv) {
         }
         // Summary over sizes: worst errors, and the time to render the whole set once at every size.
         std::printf("\nSummary over all sizes (worst error; time to render the set once at every size):\n\n");
-        std::printf("| tolerance | worst mean err | worst mean err (edge px) | worst max err | meets mean <= %.1f, max <= %.0f | ms per set, all sizes | speed |\n",
-                    kAcceptMean, kAcceptMax);
+        std::printf(
+            "| tolerance | worst mean err | worst mean err (edge px) | worst max err | meets mean <= %.1f, max <= %.0f "
+            "| ms per set, all sizes | speed |\n",
+            kAcceptMean, kAcceptMax);
         std::printf("|---:|---:|---:|---:|:---:|---:|---:|\n");
         std::vector<double> ms(opt.tolerances.size(), 0);
         for (std::size_t ti = 0; ti < opt.tolerances.size(); ++ti)
@@ -221,8 +226,9 @@ int main(int argc, char** argv) {
         std::printf("\n(checksum %u)\n", checksum);
         // A finding to report, not a failure of this program (it is a measurement tool).
         for (const std::string& t : misses)
-            std::printf("NOTE: the default tolerance %s px misses the bounds mean <= %.1f/255, max <= %.0f/255 on glyphs\n",
-                        t.c_str(), kAcceptMean, kAcceptMax);
+            std::printf(
+                "NOTE: the default tolerance %s px misses the bounds mean <= %.1f/255, max <= %.0f/255 on glyphs\n",
+                t.c_str(), kAcceptMean, kAcceptMax);
         return 0;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "tolerance_study: error: %s\n", e.what());

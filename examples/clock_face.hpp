@@ -75,9 +75,7 @@ struct Geometry {
 };
 
 // Hand angles in radians, clockwise from 12 o'clock.
-inline double hour_angle(const Time& t) {
-    return (t.h % 12 + t.m / 60.0 + t.s / 3600.0) * (std::numbers::pi / 6);
-}
+inline double hour_angle(const Time& t) { return (t.h % 12 + t.m / 60.0 + t.s / 3600.0) * (std::numbers::pi / 6); }
 inline double minute_angle(const Time& t) { return (t.m + t.s / 60.0) * (std::numbers::pi / 30); }
 inline double second_angle(const Time& t) { return t.s * (std::numbers::pi / 30); }
 
@@ -111,10 +109,18 @@ inline std::array<Point, 13> case_points(const Geometry& g) {
 // A circle of radius r around c as 4 cubic quarter arcs, 13 points, P12 = P0, clockwise (y down).
 inline std::array<Point, 13> circle_points(Point c, double r) {
     const double k = 4 * (std::numbers::sqrt2 - 1) / 3 * r;
-    return {{{c.x, c.y - r}, {c.x + k, c.y - r}, {c.x + r, c.y - k},
-             {c.x + r, c.y}, {c.x + r, c.y + k}, {c.x + k, c.y + r},
-             {c.x, c.y + r}, {c.x - k, c.y + r}, {c.x - r, c.y + k},
-             {c.x - r, c.y}, {c.x - r, c.y - k}, {c.x - k, c.y - r},
+    return {{{c.x, c.y - r},
+             {c.x + k, c.y - r},
+             {c.x + r, c.y - k},
+             {c.x + r, c.y},
+             {c.x + r, c.y + k},
+             {c.x + k, c.y + r},
+             {c.x, c.y + r},
+             {c.x - k, c.y + r},
+             {c.x - r, c.y + k},
+             {c.x - r, c.y},
+             {c.x - r, c.y - k},
+             {c.x - k, c.y - r},
              {c.x, c.y - r}}};
 }
 
@@ -127,7 +133,8 @@ inline casteljau::Path arcs_path(const std::array<Point, 13>& p) {
     return path;
 }
 
-inline void hand(casteljau::Canvas& c, const Geometry& g, double angle, double length, double tail, double width, Color color) {
+inline void hand(casteljau::Canvas& c, const Geometry& g, double angle, double length, double tail, double width,
+                 Color color) {
     casteljau::Path p;
     p.move_to(polar(g, angle + std::numbers::pi, tail)).line_to(polar(g, angle, length));
     casteljau::StrokeStyle st;

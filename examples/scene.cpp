@@ -24,7 +24,8 @@ int main(int argc, char** argv) {
         // Shapes: a red rectangle and a linear gradient from blue to green.
         c.fill_rect({10, 10, 70, 50}, Paint::solid(Color::rgba(255, 0, 0)));
         c.fill_rect({80, 10, 190, 50},
-                    Paint::shaded(Shader::linear({80, 0}, {190, 0}, {{0, Color::rgba(0, 0, 255)}, {1, Color::rgba(0, 255, 0)}})));
+                    Paint::shaded(
+                        Shader::linear({80, 0}, {190, 0}, {{0, Color::rgba(0, 0, 255)}, {1, Color::rgba(0, 255, 0)}})));
         // A clip: an orange band seen through a circle.
         c.save();
         Path circle;

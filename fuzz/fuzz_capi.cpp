@@ -36,10 +36,30 @@ public:
     bool done() const { return i_ >= n_; }
     std::uint8_t byte() { return i_ < n_ ? d_[i_++] : 0; }
     double number() {
-        static const double kTable[] = {0.0, -0.0, 1.0, -1.0, 0.5, 2.0, 10.0, 100.0, 255.0, 32769.0, 1e6, -1e6,
-                                        1e300, -1e300, 1e-300, std::numeric_limits<double>::quiet_NaN(),
-                                        std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
-                                        3.7, 0.25, 64.0, -5.5, 1e15, 4e15};
+        static const double kTable[] = {0.0,
+                                        -0.0,
+                                        1.0,
+                                        -1.0,
+                                        0.5,
+                                        2.0,
+                                        10.0,
+                                        100.0,
+                                        255.0,
+                                        32769.0,
+                                        1e6,
+                                        -1e6,
+                                        1e300,
+                                        -1e300,
+                                        1e-300,
+                                        std::numeric_limits<double>::quiet_NaN(),
+                                        std::numeric_limits<double>::infinity(),
+                                        -std::numeric_limits<double>::infinity(),
+                                        3.7,
+                                        0.25,
+                                        64.0,
+                                        -5.5,
+                                        1e15,
+                                        4e15};
         const std::uint8_t b = byte();
         if (b < 200) return kTable[b % (sizeof kTable / sizeof kTable[0])];
         double v = 0;
@@ -89,9 +109,7 @@ T* pick(std::vector<T*>& pool, Reader& r) {
     return pool[r.byte() % pool.size()];
 }
 
-casteljau_color color(Reader& r) {
-    return {r.byte(), r.byte(), r.byte(), r.byte()};
-}
+casteljau_color color(Reader& r) { return {r.byte(), r.byte(), r.byte(), r.byte()}; }
 
 casteljau_matrix matrix(Reader& r) { return {r.number(), r.number(), r.number(), r.number(), r.number(), r.number()}; }
 
@@ -176,8 +194,10 @@ private:
     template <class T>
     static void keep(std::vector<T*>& pool, T* p, void (*destroy)(T*)) {
         if (!p) return;
-        if (pool.size() < 4) pool.push_back(p);
-        else destroy(p);
+        if (pool.size() < 4)
+            pool.push_back(p);
+        else
+            destroy(p);
     }
 
     casteljau_svg_options* options_for_svg(Reader& r) {
@@ -190,9 +210,10 @@ private:
     }
 
     casteljau_status svg_options(Reader& r) {
-        static const char* const kFolders[] = {CASTELJAU_FONT_DIR, CASTELJAU_SOURCE_DIR "/examples/data", "/nonexistent"};
-        static const char* const kFiles[] = {CASTELJAU_FONT_DIR "/DejaVuSans.ttf", CASTELJAU_FONT_DIR "/LinLibertine_R.otf",
-                                             "/nonexistent.ttf"};
+        static const char* const kFolders[] = {CASTELJAU_FONT_DIR, CASTELJAU_SOURCE_DIR "/examples/data",
+                                               "/nonexistent"};
+        static const char* const kFiles[] = {CASTELJAU_FONT_DIR "/DejaVuSans.ttf",
+                                             CASTELJAU_FONT_DIR "/LinLibertine_R.otf", "/nonexistent.ttf"};
         static const char* const kFamilies[] = {"DejaVu Sans", "Linux Libertine", "serif", ""};
         std::string scratch;
         casteljau_svg_options* o = options_for_svg(r);
@@ -200,8 +221,9 @@ private:
             case 0: return casteljau_svg_options_set_resources(o, r.choose(kFolders, 3, scratch));
             case 1: return casteljau_svg_options_add_font_dir(o, r.choose(kFolders, 3, scratch));
             case 2: return casteljau_svg_options_add_font_file(o, r.choose(kFiles, 3, scratch));
-            case 3: return casteljau_svg_options_set_font_family(o, as_enum<casteljau_font_generic>(r.small_int()),
-                                                                 r.choose(kFamilies, 4, scratch));
+            case 3:
+                return casteljau_svg_options_set_font_family(o, as_enum<casteljau_font_generic>(r.small_int()),
+                                                             r.choose(kFamilies, 4, scratch));
             default: return casteljau_svg_options_set_system_fonts(nullptr, 0);
         }
     }
@@ -249,7 +271,8 @@ private:
         if (s != CASTELJAU_OK || std::int64_t{ow} * oh > 512 * 512) return s;
         casteljau_image* im = nullptr;
         const casteljau_status drawn = casteljau_svg_render_image(d, width, height, zoom, color(r), &im);
-        if (drawn == CASTELJAU_OK && (casteljau_image_width(im) != ow || casteljau_image_height(im) != oh)) __builtin_trap();
+        if (drawn == CASTELJAU_OK && (casteljau_image_width(im) != ow || casteljau_image_height(im) != oh))
+            __builtin_trap();
         keep(images_, im, casteljau_image_destroy);
         return drawn;
     }
@@ -325,7 +348,9 @@ private:
     casteljau_status map_options(Reader& r) {
         casteljau_map_options* o = pick(map_options_, r);
         switch (r.byte() % 9) {
-            case 0: keep(map_options_, casteljau_map_options_create(), casteljau_map_options_destroy); return CASTELJAU_OK;
+            case 0:
+                keep(map_options_, casteljau_map_options_create(), casteljau_map_options_destroy);
+                return CASTELJAU_OK;
             case 1: {
                 // Out of range first (refused), then at most 128 x 128.
                 const int wide = r.small_int() * 1000, high = r.small_int() * 1000;
@@ -397,7 +422,8 @@ private:
     }
 
     casteljau_status font(Reader& r) {
-        static const char* const kFiles[] = {CASTELJAU_FONT_DIR "/DejaVuSans.ttf", CASTELJAU_FONT_DIR "/NotoSansArabic-Regular.ttf",
+        static const char* const kFiles[] = {CASTELJAU_FONT_DIR "/DejaVuSans.ttf",
+                                             CASTELJAU_FONT_DIR "/NotoSansArabic-Regular.ttf",
                                              CASTELJAU_SOURCE_DIR "/tests/data/Inter-roman.var.ttf",
                                              CASTELJAU_FONT_DIR "/LinLibertine_R.otf", "/nonexistent.ttf"};
         std::string scratch;
@@ -416,7 +442,9 @@ private:
         casteljau_text_style* st = pick(text_styles_, r);
         std::string scratch;
         switch (r.byte() % 10) {
-            case 0: keep(text_styles_, casteljau_text_style_create(), casteljau_text_style_destroy); return CASTELJAU_OK;
+            case 0:
+                keep(text_styles_, casteljau_text_style_create(), casteljau_text_style_destroy);
+                return CASTELJAU_OK;
             case 1: return casteljau_text_style_set_size(st, r.number());
             case 2: return casteljau_text_style_set_line_height(st, r.number());
             case 3: return casteljau_text_style_set_width(st, r.number());
@@ -521,7 +549,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::uint8_t op = r.byte() % (33 + Documents::kSteps);
         casteljau_status s = CASTELJAU_OK;
         switch (op) {
-            case 0: if (paths.size() < 8) paths.push_back(casteljau_path_create()); break;
+            case 0:
+                if (paths.size() < 8) paths.push_back(casteljau_path_create());
+                break;
             case 1: {
                 casteljau_path* p = nullptr;
                 s = casteljau_path_from_svg(r.text().c_str(), &p);
@@ -530,8 +560,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             }
             case 2: s = casteljau_path_move_to(pick(paths, r), r.number(), r.number()); break;
             case 3: s = casteljau_path_line_to(pick(paths, r), r.number(), r.number()); break;
-            case 4: s = casteljau_path_cubic_to(pick(paths, r), r.number(), r.number(), r.number(), r.number(), r.number(), r.number()); break;
-            case 5: s = casteljau_path_add_ellipse(pick(paths, r), r.number(), r.number(), r.number(), r.number()); break;
+            case 4:
+                s = casteljau_path_cubic_to(pick(paths, r), r.number(), r.number(), r.number(), r.number(), r.number(),
+                                            r.number());
+                break;
+            case 5:
+                s = casteljau_path_add_ellipse(pick(paths, r), r.number(), r.number(), r.number(), r.number());
+                break;
             case 6: s = casteljau_path_close(pick(paths, r)); break;
             case 7: {
                 const casteljau_matrix m = matrix(r);
@@ -545,17 +580,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 break;
             }
             case 9: {
-                casteljau_gradient_stop stops[3] = {{r.number(), color(r)}, {r.number(), color(r)}, {r.number(), color(r)}};
+                casteljau_gradient_stop stops[3] = {
+                    {r.number(), color(r)}, {r.number(), color(r)}, {r.number(), color(r)}};
                 casteljau_paint* p = nullptr;
                 const casteljau_matrix m = matrix(r);
                 const bool radial = r.byte() & 1;
                 const auto spread = as_enum<casteljau_spread>(r.small_int());
                 if (radial)
-                    s = casteljau_paint_create_radial(r.number(), r.number(), r.number(), r.number(), r.number(), r.number(),
-                                                      stops, r.byte() % 4, spread, (r.byte() & 1) ? &m : nullptr, &p);
+                    s = casteljau_paint_create_radial(r.number(), r.number(), r.number(), r.number(), r.number(),
+                                                      r.number(), stops, r.byte() % 4, spread,
+                                                      (r.byte() & 1) ? &m : nullptr, &p);
                 else
-                    s = casteljau_paint_create_linear(r.number(), r.number(), r.number(), r.number(), stops, r.byte() % 4,
-                                                      spread, (r.byte() & 1) ? &m : nullptr, &p);
+                    s = casteljau_paint_create_linear(r.number(), r.number(), r.number(), r.number(), stops,
+                                                      r.byte() % 4, spread, (r.byte() & 1) ? &m : nullptr, &p);
                 if (p) paints.push_back(p);
                 break;
             }
@@ -568,7 +605,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 break;
             }
             case 11: s = casteljau_paint_set_opacity(pick(paints, r), r.number()); break;
-            case 12: s = casteljau_paint_set_blend_mode(pick(paints, r), as_enum<casteljau_blend_mode>(r.small_int())); break;
+            case 12:
+                s = casteljau_paint_set_blend_mode(pick(paints, r), as_enum<casteljau_blend_mode>(r.small_int()));
+                break;
             case 13: {
                 if (images.size() >= 4) break;
                 casteljau_image* im = nullptr;
@@ -604,27 +643,43 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 s = casteljau_canvas_concat(pick(canvases, r), &m);
                 break;
             }
-            case 22: s = casteljau_canvas_clip_rect(pick(canvases, r), r.number(), r.number(), r.number(), r.number()); break;
-            case 23: s = casteljau_canvas_clip_path(pick(canvases, r), pick(paths, r), as_enum<casteljau_fill_rule>(r.small_int())); break;
+            case 22:
+                s = casteljau_canvas_clip_rect(pick(canvases, r), r.number(), r.number(), r.number(), r.number());
+                break;
+            case 23:
+                s = casteljau_canvas_clip_path(pick(canvases, r), pick(paths, r),
+                                               as_enum<casteljau_fill_rule>(r.small_int()));
+                break;
             case 24: s = casteljau_canvas_set_opacity(pick(canvases, r), r.number()); break;
-            case 25: s = casteljau_canvas_set_blend_mode(pick(canvases, r), as_enum<casteljau_blend_mode>(r.small_int())); break;
+            case 25:
+                s = casteljau_canvas_set_blend_mode(pick(canvases, r), as_enum<casteljau_blend_mode>(r.small_int()));
+                break;
             case 26: s = casteljau_canvas_clear(pick(canvases, r), color(r)); break;
-            case 27: s = casteljau_canvas_fill_path(pick(canvases, r), pick(paths, r), pick(paints, r), as_enum<casteljau_fill_rule>(r.byte() % 3)); break;
-            case 28: s = casteljau_canvas_stroke_path(pick(canvases, r), pick(paths, r), pick(strokes, r), pick(paints, r)); break;
+            case 27:
+                s = casteljau_canvas_fill_path(pick(canvases, r), pick(paths, r), pick(paints, r),
+                                               as_enum<casteljau_fill_rule>(r.byte() % 3));
+                break;
+            case 28:
+                s = casteljau_canvas_stroke_path(pick(canvases, r), pick(paths, r), pick(strokes, r), pick(paints, r));
+                break;
             case 29: {
                 const casteljau_matrix m = matrix(r);
                 s = casteljau_canvas_draw_image(pick(canvases, r), pick(images, r), (r.byte() & 1) ? &m : nullptr,
                                                 as_enum<casteljau_sampling>(r.small_int()), r.number());
                 break;
             }
-            case 30: s = casteljau_canvas_begin_layer(pick(canvases, r), r.number(), as_enum<casteljau_blend_mode>(r.small_int())); break;
+            case 30:
+                s = casteljau_canvas_begin_layer(pick(canvases, r), r.number(),
+                                                 as_enum<casteljau_blend_mode>(r.small_int()));
+                break;
             case 31: {
                 s = casteljau_canvas_end_layer(pick(canvases, r));
                 casteljau_image* im = pick(images, r);
                 if (im && r.byte() == 7) {
                     casteljau_canvas* c = nullptr;
                     const int w = casteljau_image_width(im), h = casteljau_image_height(im);
-                    s = casteljau_canvas_create_for_pixels(casteljau_image_data(im), w, h, casteljau_image_stride(im), &c);
+                    s = casteljau_canvas_create_for_pixels(casteljau_image_data(im), w, h, casteljau_image_stride(im),
+                                                           &c);
                     casteljau_canvas_fill_rect(c, r.number(), r.number(), r.number(), r.number(), pick(paints, r));
                     casteljau_canvas_destroy(c);
                 }

@@ -18,7 +18,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     casteljau::css::parse_stylesheet(sheet_text, sheet);
     (void)casteljau::css::parse_declarations(decl_text);
     static const char* kDoc =
-        "<svg id='root' class='a b'><g class='x'><rect id='r' class='c' data-k='v-1'/><circle/></g><g><g><path/></g></g></svg>";
+        "<svg id='root' class='a b'><g class='x'><rect id='r' class='c' "
+        "data-k='v-1'/><circle/></g><g><g><path/></g></g></svg>";
     pugi::xml_document doc;
     doc.load_string(kDoc);
     for (const pugi::xpath_node& xn : doc.select_nodes("//*"))

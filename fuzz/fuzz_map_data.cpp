@@ -34,7 +34,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (data[0] & 8) o.bbox = Rect{-180, -90, 180, 90};
         const MapProjection proj = MapProjection::parse((data[0] & 16) ? "mercator" : "equirectangular");
         (void)render_map(d, proj, style, o);
-    } catch (const Error&) {
-    }
+    } catch (const Error&) {}
     return 0;
 }

@@ -105,7 +105,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             }
             case 4: path.close(); break;
             case 5: {
-                const double dx = static_cast<std::int8_t>(in.byte()) / 64.0, dy = static_cast<std::int8_t>(in.byte()) / 64.0;
+                const double dx = static_cast<std::int8_t>(in.byte()) / 64.0,
+                             dy = static_cast<std::int8_t>(in.byte()) / 64.0;
                 // Stacked copies up to ~256 points: the exact cells cost grows with the square of the
                 // edges inside one cell (thousands of stacked edges take seconds; see RELIABILITY.md).
                 if (path.points().size() < 128) path.append(Path(path), Affine::translate(dx, dy));

@@ -62,7 +62,8 @@ void shared_borders_check(const Path& path, const StrokeStyle& style, const Affi
         borders.add(r, chains, whole, stroke_merge_distance(m, 0.05));
         once.append(stroke(chains, butt, m, 0.05));
         once.append(stroke(whole, st, m, 0.05));
-        if (all.points().size() + once.points().size() > 10000) return;  // overlap-heavy fills cost seconds under the sanitizers
+        if (all.points().size() + once.points().size() > 10000)
+            return;  // overlap-heavy fills cost seconds under the sanitizers
     }
     const IRect clip{0, 0, 128, 128};
     const Mask a = raster.fill_mask(all, m, FillOptions{}, clip);

@@ -37,7 +37,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             casteljau::SvgDocument::parse(std::string_view(reinterpret_cast<const char*>(data), size), options());
         const int w = std::min(doc.width(), 128), h = std::min(doc.height(), 128);
         (void)doc.render_size(std::max(w, 1), std::max(h, 1));
-    } catch (const casteljau::Error&) {
-    }
+    } catch (const casteljau::Error&) {}
     return 0;
 }

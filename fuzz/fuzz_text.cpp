@@ -26,14 +26,15 @@ using namespace casteljau;
 namespace {
 
 constexpr int kFontFiles = 7;
-const char* const kFiles[kFontFiles] = {"/fonts/DejaVuSans.ttf", "/fonts/LinLibertine_R.otf",
-                                        "/fonts/NotoSansArabic-Regular.ttf", "/tests/data/Inter-roman.var.ttf",
-                                        "/tests/data/colr_test.ttf", "/tests/data/emoji_cbdt_test.ttf",
-                                        "/tests/data/emoji_sbix_test.ttf"};
+const char* const kFiles[kFontFiles] = {
+    "/fonts/DejaVuSans.ttf",           "/fonts/LinLibertine_R.otf", "/fonts/NotoSansArabic-Regular.ttf",
+    "/tests/data/Inter-roman.var.ttf", "/tests/data/colr_test.ttf", "/tests/data/emoji_cbdt_test.ttf",
+    "/tests/data/emoji_sbix_test.ttf"};
 
 Font* shipped(int which) {
     static std::unique_ptr<Font> fonts[kFontFiles];
-    if (!fonts[which]) fonts[which] = std::make_unique<Font>(Font::load(std::string(CASTELJAU_SOURCE_DIR) + kFiles[which]));
+    if (!fonts[which])
+        fonts[which] = std::make_unique<Font>(Font::load(std::string(CASTELJAU_SOURCE_DIR) + kFiles[which]));
     return fonts[which].get();
 }
 
@@ -141,8 +142,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
     style.system_fonts = true;
     try {
         (void)layout_text("a\u65e5\U0001F600", *shipped(0), style);
-    } catch (const Error&) {
-    }
+    } catch (const Error&) {}
     return 0;
 }
 

@@ -52,9 +52,17 @@ public:
                 static const double kSpecial[] = {std::numeric_limits<double>::quiet_NaN(),
                                                   std::numeric_limits<double>::infinity(),
                                                   -std::numeric_limits<double>::infinity(),
-                                                  1e30, -1e30, 1e300, std::numeric_limits<double>::denorm_min(),
-                                                  -std::numeric_limits<double>::denorm_min(), 0.0, -0.0,
-                                                  std::numeric_limits<double>::max(), 1e-300, 0.5, 1 - 1e-16};
+                                                  1e30,
+                                                  -1e30,
+                                                  1e300,
+                                                  std::numeric_limits<double>::denorm_min(),
+                                                  -std::numeric_limits<double>::denorm_min(),
+                                                  0.0,
+                                                  -0.0,
+                                                  std::numeric_limits<double>::max(),
+                                                  1e-300,
+                                                  0.5,
+                                                  1 - 1e-16};
                 return kSpecial[byte() % (sizeof kSpecial / sizeof kSpecial[0])];
             }
             case 1: {
@@ -97,8 +105,7 @@ template <class F>
 void run(F&& body) {
     try {
         body();
-    } catch (const casteljau::Error&) {
-    }
+    } catch (const casteljau::Error&) {}
 }
 
 }  // namespace casteljau::fuzz

@@ -13,17 +13,30 @@ inline Path random_path(Bytes& in, double span) {
     Point last{0, 0};
     auto point = [&] {
         const std::uint8_t how = in.byte();
-        if (how % 8 == 0) return last;  // zero-length piece
+        if (how % 8 == 0) return last;                                                           // zero-length piece
         if (how % 8 == 1) return Point{last.x + in.number(4) / 64, last.y + in.number(4) / 64};  // tiny step
         return Point{in.number(span), in.number(span)};
     };
     auto piece = [&](std::uint8_t verb) {
         switch (verb % 8) {
             case 0: p.move_to(last = point()); break;
-            case 1: case 2: p.line_to(last = point()); break;
-            case 3: { const Point c = point(); p.quad_to(c, last = point()); break; }
-            case 4: { const Point c1 = point(), c2 = point(); p.cubic_to(c1, c2, last = point()); break; }
-            case 5: { const Point c = point(); p.conic_to(c, last = point(), in.number(4)); break; }
+            case 1:
+            case 2: p.line_to(last = point()); break;
+            case 3: {
+                const Point c = point();
+                p.quad_to(c, last = point());
+                break;
+            }
+            case 4: {
+                const Point c1 = point(), c2 = point();
+                p.cubic_to(c1, c2, last = point());
+                break;
+            }
+            case 5: {
+                const Point c = point();
+                p.conic_to(c, last = point(), in.number(4));
+                break;
+            }
             case 6: p.close(); break;
             default: {  // a run of many short segments
                 const int n = in.range(1, 2000);

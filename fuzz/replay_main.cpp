@@ -27,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 namespace {
 
 [[maybe_unused]] std::size_t g_malloc_limit = 0;  // 0 until main() sets it: no check during static initialisation
-[[maybe_unused]] const char* g_current = "";  // the input being replayed, for the message
+[[maybe_unused]] const char* g_current = "";      // the input being replayed, for the message
 
 int replay(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);

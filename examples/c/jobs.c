@@ -64,7 +64,8 @@ static int text_job(const char* font_path, const char* out) {
     casteljau_image* image = NULL;
     const casteljau_font* fonts[1];
     int done = style && ok(casteljau_font_load(font_path, &font), "load the font") &&
-               ok(casteljau_text_style_set_size(style, 32), "size") && ok(casteljau_paint_create_solid(black, &ink), "paint");
+               ok(casteljau_text_style_set_size(style, 32), "size") &&
+               ok(casteljau_paint_create_solid(black, &ink), "paint");
     fonts[0] = font;
     done = done && ok(casteljau_text_layout_create("Hello, casteljau", fonts, 1, style, &layout), "lay out the text") &&
            ok(casteljau_text_layout_render_image(layout, ink, white, 4, &image), "render the text") &&

@@ -5,12 +5,12 @@
 
 #include <casteljau/casteljau.h>
 
-#define TRY(call)                                                                     \
-    do {                                                                              \
-        if ((call) != CASTELJAU_OK) {                                                 \
+#define TRY(call)                                                                      \
+    do {                                                                               \
+        if ((call) != CASTELJAU_OK) {                                                  \
             fprintf(stderr, "scene: error: %s (%s)\n", casteljau_last_error(), #call); \
-            return 1;                                                                 \
-        }                                                                             \
+            return 1;                                                                  \
+        }                                                                              \
     } while (0)
 
 static int draw(casteljau_image* image, casteljau_canvas* c, const char* font_path, const char* out) {
@@ -49,7 +49,8 @@ static int draw(casteljau_image* image, casteljau_canvas* c, const char* font_pa
             casteljau_path_move_to(line, 90, 70) || casteljau_path_line_to(line, 190, 70) ||
             casteljau_stroke_set_width(st, 4) || casteljau_canvas_stroke_path(c, line, st, p_black) ||
             casteljau_canvas_draw_image(c, checker, &m, CASTELJAU_SAMPLING_NEAREST, 1.0) ||
-            casteljau_canvas_draw_text(c, font, "casteljau", 14, 90, 90, p_ink) || casteljau_image_write_png(image, out))
+            casteljau_canvas_draw_text(c, font, "casteljau", 14, 90, 90, p_ink) ||
+            casteljau_image_write_png(image, out))
             goto fail;
     }
     rc = 0;

@@ -47,9 +47,12 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool has_value = i + 1 < argc;
-        if (a == "--frames" && has_value) frames = std::strtol(argv[++i], nullptr, 10);
-        else if (a == "--size" && has_value) size = static_cast<int>(std::strtol(argv[++i], nullptr, 10));
-        else if (a == "--screenshot" && has_value) screenshot = argv[++i];
+        if (a == "--frames" && has_value)
+            frames = std::strtol(argv[++i], nullptr, 10);
+        else if (a == "--size" && has_value)
+            size = static_cast<int>(std::strtol(argv[++i], nullptr, 10));
+        else if (a == "--screenshot" && has_value)
+            screenshot = argv[++i];
         else if (a == "--time" && has_value) {
             frozen = true;
             if (!clock_face::parse_time(argv[++i], fixed)) {
@@ -57,7 +60,8 @@ int main(int argc, char** argv) {
                 return 2;
             }
         } else {
-            std::fprintf(stderr, "usage: example_sdl_clock [--frames N] [--time HH:MM:SS] [--screenshot OUT.png] [--size PX]\n");
+            std::fprintf(
+                stderr, "usage: example_sdl_clock [--frames N] [--time HH:MM:SS] [--screenshot OUT.png] [--size PX]\n");
             return 2;
         }
     }
@@ -66,7 +70,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (SDL_Init(SDL_INIT_VIDEO) != 0) return fail("SDL_Init");
-    SDL_Window* window = SDL_CreateWindow("casteljau clock", SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED, size, size, 0);
+    SDL_Window* window =
+        SDL_CreateWindow("casteljau clock", SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED, size, size, 0);
     if (!window) return fail("SDL_CreateWindow");
     SDL_Renderer* renderer = SDL_CreateRenderer(window, -1, 0);
     if (!renderer) renderer = SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE);
@@ -83,7 +88,8 @@ int main(int argc, char** argv) {
             int pitch = 0;
             if (SDL_LockTexture(texture, nullptr, &pixels, &pitch) != 0) return fail("SDL_LockTexture");
             {
-                casteljau::Canvas canvas(static_cast<std::uint8_t*>(pixels), size, size, static_cast<std::size_t>(pitch));
+                casteljau::Canvas canvas(static_cast<std::uint8_t*>(pixels), size, size,
+                                         static_cast<std::size_t>(pitch));
                 clock_face::draw_into(canvas, frozen ? fixed : now(), size);
             }
             SDL_UnlockTexture(texture);
@@ -92,7 +98,8 @@ int main(int argc, char** argv) {
             if (!screenshot.empty() && frames > 0 && frame == frames - 1) {
                 // Read the frame back before presenting (the back buffer is undefined afterwards).
                 casteljau::Pixmap shot(size, size);
-                if (SDL_RenderReadPixels(renderer, nullptr, SDL_PIXELFORMAT_RGBA32, shot.data(), static_cast<int>(shot.stride())) != 0)
+                if (SDL_RenderReadPixels(renderer, nullptr, SDL_PIXELFORMAT_RGBA32, shot.data(),
+                                         static_cast<int>(shot.stride())) != 0)
                     return fail("SDL_RenderReadPixels");
                 casteljau::write_png(shot, screenshot);  // the clock is opaque: straight = premultiplied
             }

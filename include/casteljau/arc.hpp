@@ -52,11 +52,10 @@ int arc_piece_count(double sweep_angle, double radius, double tolerance);
 // the true ellipse is at most `tolerance` path units (see above). Throws Error(InvalidArgument) for a
 // non-finite argument or a tolerance that is not > 0 (an infinite tolerance means plain 90-degree
 // pieces), and Error(InvalidData) when the arc's geometry overflows double range (path unchanged).
-void arc_to(Path& path, double rx, double ry, double x_axis_rotation_degrees, bool large_arc, bool sweep,
-            Point end, double tolerance);
+void arc_to(Path& path, double rx, double ry, double x_axis_rotation_degrees, bool large_arc, bool sweep, Point end,
+            double tolerance);
 
 // The same with tolerance kDefaultArcTolerance.
-void arc_to(Path& path, double rx, double ry, double x_axis_rotation_degrees, bool large_arc, bool sweep,
-            Point end);
+void arc_to(Path& path, double rx, double ry, double x_axis_rotation_degrees, bool large_arc, bool sweep, Point end);
 
 }  // namespace casteljau

@@ -58,7 +58,8 @@ std::vector<double> bernstein_roots(std::span<const double> c);
 // ---- Bézier curves ----------------------------------------------------------------------------
 
 // Power (monomial) form P(t) = sum_k a_k t^k, k = 0..n.
-template <CurvePoint P> struct PowerForm {
+template <CurvePoint P>
+struct PowerForm {
     std::vector<P> coefficients;  // a_0 .. a_n
 
     int degree() const { return static_cast<int>(coefficients.size()) - 1; }
@@ -66,7 +67,8 @@ template <CurvePoint P> struct PowerForm {
     P eval(double t) const;
 };
 
-template <CurvePoint P> class Bezier {
+template <CurvePoint P>
+class Bezier {
 public:
     using point_type = P;
 
@@ -147,8 +149,9 @@ enum class ReductionMethod {
     Combined,  // forward for the first half, backward for the second, the middle point averaged
 };
 
-template <CurvePoint P> struct Reduction {
-    Bezier<P> curve;          // degree n - 1
+template <CurvePoint P>
+struct Reduction {
+    Bezier<P> curve;  // degree n - 1
     // Largest |P(t) - Q(t)| measured at 64 n + 1 equally spaced parameters.
     double max_deviation = 0;
     // A proven bound of the same quantity over all t: the largest distance between the control
@@ -158,13 +161,15 @@ template <CurvePoint P> struct Reduction {
 
 // Degree n -> n - 1. Throws Error(InvalidArgument) for a line (degree 1: nothing to reduce to).
 // Reducing a curve that was elevated from degree n - 1 returns the original up to rounding.
-template <CurvePoint P> Reduction<P> reduce_degree(const Bezier<P>& curve, ReductionMethod method);
+template <CurvePoint P>
+Reduction<P> reduce_degree(const Bezier<P>& curve, ReductionMethod method);
 
 // ---- interpolation ----------------------------------------------------------------------------
 
 // The cubic through q0, q1, q2, q3 at t = 0, 1/3, 2/3, 1:
 // P1 = (-5 q0 + 18 q1 - 9 q2 + 2 q3) / 6, P2 = (2 q0 - 9 q1 + 18 q2 - 5 q3) / 6.
-template <CurvePoint P> Bezier<P> interpolate_cubic(const P& q0, const P& q1, const P& q2, const P& q3);
+template <CurvePoint P>
+Bezier<P> interpolate_cubic(const P& q0, const P& q1, const P& q2, const P& q3);
 
 // ---- joins ------------------------------------------------------------------------------------
 
@@ -184,7 +189,8 @@ Continuity join_continuity(const Bezier<P>& a, const Bezier<P>& b, const JoinTol
 
 // The first control points of the next curve (degree m; m = 0 means a's degree n) for a G1 join with
 // Q'(0) = alpha P'(1), alpha > 0: Q0 = P_n, Q1 = P_n + alpha (n/m) (P_n - P_(n-1)). Returns {Q0, Q1}.
-template <CurvePoint P> std::vector<P> g1_join_points(const Bezier<P>& a, double alpha, int next_degree = 0);
+template <CurvePoint P>
+std::vector<P> g1_join_points(const Bezier<P>& a, double alpha, int next_degree = 0);
 // ... and for a G2 join with Q''(0) = alpha^2 P''(1) + beta P'(1) (a needs degree >= 2). For m = n
 // this is the textbook Q2 - P_n = (alpha^2 + 2 alpha + beta/(n-1)) (P_n - P_(n-1))
 //                                 - alpha^2 (P_(n-1) - P_(n-2)). Returns {Q0, Q1, Q2}.

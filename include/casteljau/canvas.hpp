@@ -135,7 +135,7 @@ private:
         BlendMode blend = BlendMode::SourceOver;
     };
     struct Layer;
-    Pixmap& layer_or_target();  // the innermost layer, or the target
+    Pixmap& layer_or_target();       // the innermost layer, or the target
     std::unique_ptr<Pixmap> owned_;  // the borrowed-memory pixmap of the raw-pointer constructor
     Pixmap* target_;
     State state_;

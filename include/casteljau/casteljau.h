@@ -61,7 +61,7 @@ extern "C" {
 #define CASTELJAU_ENUM(name) enum name
 #endif
 
-typedef CASTELJAU_ENUM(casteljau_status) {
+typedef CASTELJAU_ENUM(casteljau_status){
     CASTELJAU_OK = 0,
     CASTELJAU_ERROR_INVALID_ARGUMENT = 1, /* a NULL handle, a value outside the documented domain */
     CASTELJAU_ERROR_PARSE = 2,            /* malformed text (path data, colour) */
@@ -71,34 +71,59 @@ typedef CASTELJAU_ENUM(casteljau_status) {
     CASTELJAU_ERROR_FONT = 6,             /* FreeType or HarfBuzz refused a font */
     CASTELJAU_ERROR_OUT_OF_MEMORY = 7,
     CASTELJAU_ERROR_INTERNAL = 8,
-    CASTELJAU_ERROR_CANCELLED = 9         /* a progress callback asked to stop */
+    CASTELJAU_ERROR_CANCELLED = 9 /* a progress callback asked to stop */
 } casteljau_status;
 
-typedef CASTELJAU_ENUM(casteljau_fill_rule) { CASTELJAU_FILL_NONZERO = 0, CASTELJAU_FILL_EVENODD = 1 } casteljau_fill_rule;
-typedef CASTELJAU_ENUM(casteljau_line_cap) { CASTELJAU_CAP_BUTT = 0, CASTELJAU_CAP_ROUND = 1, CASTELJAU_CAP_SQUARE = 2 } casteljau_line_cap;
-typedef CASTELJAU_ENUM(casteljau_line_join) {
-    CASTELJAU_JOIN_MITER = 0, CASTELJAU_JOIN_MITER_CLIP = 1, CASTELJAU_JOIN_ROUND = 2, CASTELJAU_JOIN_BEVEL = 3
-} casteljau_line_join;
-typedef CASTELJAU_ENUM(casteljau_spread) { CASTELJAU_SPREAD_PAD = 0, CASTELJAU_SPREAD_REFLECT = 1, CASTELJAU_SPREAD_REPEAT = 2 } casteljau_spread;
-typedef CASTELJAU_ENUM(casteljau_sampling) {
-    CASTELJAU_SAMPLING_NEAREST = 0, CASTELJAU_SAMPLING_BILINEAR = 1, CASTELJAU_SAMPLING_BICUBIC = 2
-} casteljau_sampling;
+typedef CASTELJAU_ENUM(casteljau_fill_rule){CASTELJAU_FILL_NONZERO = 0, CASTELJAU_FILL_EVENODD = 1} casteljau_fill_rule;
+typedef CASTELJAU_ENUM(casteljau_line_cap){CASTELJAU_CAP_BUTT = 0, CASTELJAU_CAP_ROUND = 1,
+                                           CASTELJAU_CAP_SQUARE = 2} casteljau_line_cap;
+typedef CASTELJAU_ENUM(casteljau_line_join){CASTELJAU_JOIN_MITER = 0, CASTELJAU_JOIN_MITER_CLIP = 1,
+                                            CASTELJAU_JOIN_ROUND = 2, CASTELJAU_JOIN_BEVEL = 3} casteljau_line_join;
+typedef CASTELJAU_ENUM(casteljau_spread){CASTELJAU_SPREAD_PAD = 0, CASTELJAU_SPREAD_REFLECT = 1,
+                                         CASTELJAU_SPREAD_REPEAT = 2} casteljau_spread;
+typedef CASTELJAU_ENUM(casteljau_sampling){CASTELJAU_SAMPLING_NEAREST = 0, CASTELJAU_SAMPLING_BILINEAR = 1,
+                                           CASTELJAU_SAMPLING_BICUBIC = 2} casteljau_sampling;
 /* The values of casteljau::BlendMode (blend_mode.hpp), formulas there. */
-typedef CASTELJAU_ENUM(casteljau_blend_mode) {
-    CASTELJAU_BLEND_NORMAL = 0, CASTELJAU_BLEND_MULTIPLY, CASTELJAU_BLEND_SCREEN, CASTELJAU_BLEND_OVERLAY,
-    CASTELJAU_BLEND_DARKEN, CASTELJAU_BLEND_LIGHTEN, CASTELJAU_BLEND_COLOR_DODGE, CASTELJAU_BLEND_COLOR_BURN,
-    CASTELJAU_BLEND_HARD_LIGHT, CASTELJAU_BLEND_SOFT_LIGHT, CASTELJAU_BLEND_DIFFERENCE, CASTELJAU_BLEND_EXCLUSION,
-    CASTELJAU_BLEND_HUE, CASTELJAU_BLEND_SATURATION, CASTELJAU_BLEND_COLOR, CASTELJAU_BLEND_LUMINOSITY,
-    CASTELJAU_BLEND_CLEAR, CASTELJAU_BLEND_SOURCE, CASTELJAU_BLEND_DESTINATION, CASTELJAU_BLEND_DESTINATION_OVER,
-    CASTELJAU_BLEND_SOURCE_IN, CASTELJAU_BLEND_DESTINATION_IN, CASTELJAU_BLEND_SOURCE_OUT,
-    CASTELJAU_BLEND_DESTINATION_OUT, CASTELJAU_BLEND_SOURCE_ATOP, CASTELJAU_BLEND_DESTINATION_ATOP,
-    CASTELJAU_BLEND_XOR, CASTELJAU_BLEND_PLUS,
-    CASTELJAU_BLEND_SOURCE_OVER = CASTELJAU_BLEND_NORMAL
-} casteljau_blend_mode;
+typedef CASTELJAU_ENUM(casteljau_blend_mode){CASTELJAU_BLEND_NORMAL = 0,
+                                             CASTELJAU_BLEND_MULTIPLY,
+                                             CASTELJAU_BLEND_SCREEN,
+                                             CASTELJAU_BLEND_OVERLAY,
+                                             CASTELJAU_BLEND_DARKEN,
+                                             CASTELJAU_BLEND_LIGHTEN,
+                                             CASTELJAU_BLEND_COLOR_DODGE,
+                                             CASTELJAU_BLEND_COLOR_BURN,
+                                             CASTELJAU_BLEND_HARD_LIGHT,
+                                             CASTELJAU_BLEND_SOFT_LIGHT,
+                                             CASTELJAU_BLEND_DIFFERENCE,
+                                             CASTELJAU_BLEND_EXCLUSION,
+                                             CASTELJAU_BLEND_HUE,
+                                             CASTELJAU_BLEND_SATURATION,
+                                             CASTELJAU_BLEND_COLOR,
+                                             CASTELJAU_BLEND_LUMINOSITY,
+                                             CASTELJAU_BLEND_CLEAR,
+                                             CASTELJAU_BLEND_SOURCE,
+                                             CASTELJAU_BLEND_DESTINATION,
+                                             CASTELJAU_BLEND_DESTINATION_OVER,
+                                             CASTELJAU_BLEND_SOURCE_IN,
+                                             CASTELJAU_BLEND_DESTINATION_IN,
+                                             CASTELJAU_BLEND_SOURCE_OUT,
+                                             CASTELJAU_BLEND_DESTINATION_OUT,
+                                             CASTELJAU_BLEND_SOURCE_ATOP,
+                                             CASTELJAU_BLEND_DESTINATION_ATOP,
+                                             CASTELJAU_BLEND_XOR,
+                                             CASTELJAU_BLEND_PLUS,
+                                             CASTELJAU_BLEND_SOURCE_OVER = CASTELJAU_BLEND_NORMAL} casteljau_blend_mode;
 
-typedef struct casteljau_matrix { double a, b, c, d, e, f; } casteljau_matrix;
-typedef struct casteljau_color { uint8_t r, g, b, a; } casteljau_color;
-typedef struct casteljau_gradient_stop { double offset; casteljau_color color; } casteljau_gradient_stop;
+typedef struct casteljau_matrix {
+    double a, b, c, d, e, f;
+} casteljau_matrix;
+typedef struct casteljau_color {
+    uint8_t r, g, b, a;
+} casteljau_color;
+typedef struct casteljau_gradient_stop {
+    double offset;
+    casteljau_color color;
+} casteljau_gradient_stop;
 
 typedef struct casteljau_path casteljau_path;
 typedef struct casteljau_stroke casteljau_stroke;
@@ -131,12 +156,14 @@ CASTELJAU_API casteljau_status casteljau_path_cubic_to(casteljau_path* path, dou
                                                        double c2y, double x, double y);
 CASTELJAU_API casteljau_status casteljau_path_close(casteljau_path* path);
 CASTELJAU_API casteljau_status casteljau_path_add_rect(casteljau_path* path, double x, double y, double w, double h);
-CASTELJAU_API casteljau_status casteljau_path_add_ellipse(casteljau_path* path, double cx, double cy, double rx, double ry);
+CASTELJAU_API casteljau_status casteljau_path_add_ellipse(casteljau_path* path, double cx, double cy, double rx,
+                                                          double ry);
 CASTELJAU_API casteljau_status casteljau_path_add_round_rect(casteljau_path* path, double x, double y, double w,
                                                              double h, double rx, double ry);
 CASTELJAU_API casteljau_status casteljau_path_transform(casteljau_path* path, const casteljau_matrix* m);
 /* Tight bounds; an empty path gives all zeros. */
-CASTELJAU_API casteljau_status casteljau_path_bounds(const casteljau_path* path, double* x0, double* y0, double* x1, double* y1);
+CASTELJAU_API casteljau_status casteljau_path_bounds(const casteljau_path* path, double* x0, double* y0, double* x1,
+                                                     double* y1);
 
 /* Stroke styles (width 1, butt caps, miter joins with limit 4, no dashes when created). */
 CASTELJAU_API casteljau_stroke* casteljau_stroke_create(void);
@@ -146,8 +173,8 @@ CASTELJAU_API casteljau_status casteljau_stroke_set_cap(casteljau_stroke* stroke
 CASTELJAU_API casteljau_status casteljau_stroke_set_join(casteljau_stroke* stroke, casteljau_line_join join,
                                                          double miter_limit);
 /* `count` dash lengths (0 to clear), the pattern starting `offset` into it. */
-CASTELJAU_API casteljau_status casteljau_stroke_set_dashes(casteljau_stroke* stroke, const double* dashes,
-                                                           size_t count, double offset);
+CASTELJAU_API casteljau_status casteljau_stroke_set_dashes(casteljau_stroke* stroke, const double* dashes, size_t count,
+                                                           double offset);
 
 /* Paints. Gradient geometry is in user space, mapped by `m` (NULL: identity) and then by the
  * canvas transform at drawing time. Stops need not be sorted (offsets are clamped to [0, 1] and
@@ -184,8 +211,8 @@ CASTELJAU_API casteljau_status casteljau_image_write_png(const casteljau_image* 
  * caller's, to release with casteljau_free. */
 CASTELJAU_API casteljau_status casteljau_image_encode_png(const casteljau_image* image, uint8_t** out, size_t* size);
 CASTELJAU_API void casteljau_image_destroy(casteljau_image* image);
-CASTELJAU_API int casteljau_image_width(const casteljau_image* image);   /* 0 for NULL */
-CASTELJAU_API int casteljau_image_height(const casteljau_image* image);  /* 0 for NULL */
+CASTELJAU_API int casteljau_image_width(const casteljau_image* image);     /* 0 for NULL */
+CASTELJAU_API int casteljau_image_height(const casteljau_image* image);    /* 0 for NULL */
 CASTELJAU_API size_t casteljau_image_stride(const casteljau_image* image); /* bytes per row, 0 for NULL */
 /* The first row of pixels, owned by the image (valid until it is destroyed); NULL for NULL. */
 CASTELJAU_API uint8_t* casteljau_image_data(casteljau_image* image);
@@ -218,7 +245,8 @@ CASTELJAU_API casteljau_status casteljau_canvas_skew(casteljau_canvas* canvas, d
 CASTELJAU_API casteljau_status casteljau_canvas_concat(casteljau_canvas* canvas, const casteljau_matrix* m);
 CASTELJAU_API casteljau_status casteljau_canvas_set_transform(casteljau_canvas* canvas, const casteljau_matrix* m);
 CASTELJAU_API casteljau_status casteljau_canvas_get_transform(const casteljau_canvas* canvas, casteljau_matrix* out);
-CASTELJAU_API casteljau_status casteljau_canvas_clip_rect(casteljau_canvas* canvas, double x, double y, double w, double h);
+CASTELJAU_API casteljau_status casteljau_canvas_clip_rect(casteljau_canvas* canvas, double x, double y, double w,
+                                                          double h);
 CASTELJAU_API casteljau_status casteljau_canvas_clip_path(casteljau_canvas* canvas, const casteljau_path* path,
                                                           casteljau_fill_rule rule);
 CASTELJAU_API casteljau_status casteljau_canvas_set_opacity(casteljau_canvas* canvas, double opacity);
@@ -232,7 +260,8 @@ CASTELJAU_API casteljau_status casteljau_canvas_fill_path(casteljau_canvas* canv
 CASTELJAU_API casteljau_status casteljau_canvas_fill_rect(casteljau_canvas* canvas, double x, double y, double w,
                                                           double h, const casteljau_paint* paint);
 CASTELJAU_API casteljau_status casteljau_canvas_stroke_path(casteljau_canvas* canvas, const casteljau_path* path,
-                                                            const casteljau_stroke* stroke, const casteljau_paint* paint);
+                                                            const casteljau_stroke* stroke,
+                                                            const casteljau_paint* paint);
 /* `m` maps the image's pixel space to user space (NULL: identity). */
 CASTELJAU_API casteljau_status casteljau_canvas_draw_image(casteljau_canvas* canvas, const casteljau_image* image,
                                                            const casteljau_matrix* m, casteljau_sampling sampling,

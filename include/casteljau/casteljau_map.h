@@ -42,7 +42,8 @@ typedef struct casteljau_tile_options casteljau_tile_options;
  * message names the JSON path), CASTELJAU_ERROR_LIMIT past casteljau_limits.map_positions,
  * CASTELJAU_ERROR_IO for a file that cannot be read. */
 CASTELJAU_API casteljau_status casteljau_map_load(const char* path, const char* layer, casteljau_map** out);
-CASTELJAU_API casteljau_status casteljau_map_parse(const char* text, size_t size, const char* layer, casteljau_map** out);
+CASTELJAU_API casteljau_status casteljau_map_parse(const char* text, size_t size, const char* layer,
+                                                   casteljau_map** out);
 CASTELJAU_API void casteljau_map_destroy(casteljau_map* map);
 CASTELJAU_API size_t casteljau_map_feature_count(const casteljau_map* map); /* 0 for NULL */
 
@@ -56,22 +57,31 @@ CASTELJAU_API casteljau_status casteljau_map_style_load(const char* path, castel
 CASTELJAU_API casteljau_status casteljau_map_style_parse(const char* json, casteljau_map_style** out);
 CASTELJAU_API void casteljau_map_style_destroy(casteljau_map_style* style);
 /* Setters for every layer of the style (a new style has one layer; a style file may have more). */
-CASTELJAU_API casteljau_status casteljau_map_style_set_fill(casteljau_map_style* style, const casteljau_color* fill); /* --fill; NULL: none */
-CASTELJAU_API casteljau_status casteljau_map_style_set_stroke(casteljau_map_style* style, const casteljau_color* stroke); /* --stroke; NULL: none */
-CASTELJAU_API casteljau_status casteljau_map_style_set_stroke_width(casteljau_map_style* style, double width); /* --stroke-width: 0 to 1e4 px */
-CASTELJAU_API casteljau_status casteljau_map_style_set_opacity(casteljau_map_style* style, double opacity); /* --opacity: 0 to 1 */
+CASTELJAU_API casteljau_status casteljau_map_style_set_fill(casteljau_map_style* style,
+                                                            const casteljau_color* fill); /* --fill; NULL: none */
+CASTELJAU_API casteljau_status casteljau_map_style_set_stroke(casteljau_map_style* style,
+                                                              const casteljau_color* stroke); /* --stroke; NULL: none */
+CASTELJAU_API casteljau_status casteljau_map_style_set_stroke_width(casteljau_map_style* style,
+                                                                    double width); /* --stroke-width: 0 to 1e4 px */
+CASTELJAU_API casteljau_status casteljau_map_style_set_opacity(casteljau_map_style* style,
+                                                               double opacity); /* --opacity: 0 to 1 */
 /* --fill-by: the property whose value picks each feature's fill (a categorical palette, the same
  * colour for the same value in every render and tile; or the ramp below); NULL or "": the fill. */
 CASTELJAU_API casteljau_status casteljau_map_style_set_fill_by(casteljau_map_style* style, const char* property);
 /* --ramp MIN:COLOR,MAX:COLOR: a numeric fill-by property, linear in sRGB between the two colours
  * (clamped outside); needs min < max, both finite. */
-CASTELJAU_API casteljau_status casteljau_map_style_set_ramp(casteljau_map_style* style, double min, casteljau_color min_color,
-                                                            double max, casteljau_color max_color);
+CASTELJAU_API casteljau_status casteljau_map_style_set_ramp(casteljau_map_style* style, double min,
+                                                            casteljau_color min_color, double max,
+                                                            casteljau_color max_color);
 /* Setters for the whole style. */
-CASTELJAU_API casteljau_status casteljau_map_style_set_background(casteljau_map_style* style, casteljau_color background); /* --background */
-CASTELJAU_API casteljau_status casteljau_map_style_set_line_join(casteljau_map_style* style, casteljau_line_join join); /* --line-join */
-CASTELJAU_API casteljau_status casteljau_map_style_set_line_cap(casteljau_map_style* style, casteljau_line_cap cap); /* --line-cap */
-CASTELJAU_API casteljau_status casteljau_map_style_set_point_radius(casteljau_map_style* style, double radius); /* --point-radius: 0 to 1e4 px */
+CASTELJAU_API casteljau_status casteljau_map_style_set_background(casteljau_map_style* style,
+                                                                  casteljau_color background); /* --background */
+CASTELJAU_API casteljau_status casteljau_map_style_set_line_join(casteljau_map_style* style,
+                                                                 casteljau_line_join join); /* --line-join */
+CASTELJAU_API casteljau_status casteljau_map_style_set_line_cap(casteljau_map_style* style,
+                                                                casteljau_line_cap cap); /* --line-cap */
+CASTELJAU_API casteljau_status casteljau_map_style_set_point_radius(casteljau_map_style* style,
+                                                                    double radius); /* --point-radius: 0 to 1e4 px */
 
 /* Options of one map image. A new object: no size (casteljau_map_render_image needs one), the
  * equirectangular projection, no bbox, no padding, seamless fills, exact overlaps, tolerance
@@ -82,17 +92,20 @@ CASTELJAU_API void casteljau_map_options_destroy(casteljau_map_options* options)
 CASTELJAU_API casteljau_status casteljau_map_options_set_size(casteljau_map_options* options, int width, int height);
 /* --projection: "equirectangular", "mercator", a PROJ string ("+proj=robin") or a CRS
  * ("EPSG:3035"). CASTELJAU_ERROR_INVALID_ARGUMENT, naming it, for one PROJ does not know. */
-CASTELJAU_API casteljau_status casteljau_map_options_set_projection(casteljau_map_options* options, const char* projection);
+CASTELJAU_API casteljau_status casteljau_map_options_set_projection(casteljau_map_options* options,
+                                                                    const char* projection);
 /* --bbox W,S,E,N: the extent, in degrees, mapped exactly onto the image; needs west < east and
  * -90 <= south < north <= 90. */
 CASTELJAU_API casteljau_status casteljau_map_options_set_bbox(casteljau_map_options* options, double west, double south,
                                                               double east, double north);
-CASTELJAU_API casteljau_status casteljau_map_options_set_padding(casteljau_map_options* options, double pixels); /* --padding: 0 to 1e5 */
+CASTELJAU_API casteljau_status casteljau_map_options_set_padding(casteljau_map_options* options,
+                                                                 double pixels); /* --padding: 0 to 1e5 */
 /* Nonzero: --separate (each fill on its own with source-over: seams between neighbours). */
 CASTELJAU_API casteljau_status casteljau_map_options_set_separate(casteljau_map_options* options, int separate);
 /* 0: --no-exact-overlaps (fills by plain accumulation, faster, exact for valid polygons). */
 CASTELJAU_API casteljau_status casteljau_map_options_set_exact_overlaps(casteljau_map_options* options, int exact);
-CASTELJAU_API casteljau_status casteljau_map_options_set_tolerance(casteljau_map_options* options, double tolerance); /* --tolerance: 1e-4 to 10 px */
+CASTELJAU_API casteljau_status casteljau_map_options_set_tolerance(casteljau_map_options* options,
+                                                                   double tolerance); /* --tolerance: 1e-4 to 10 px */
 
 /* What `casteljau map` writes: a new image of the options' size with the map drawn, background
  * first. `style` NULL: the default style. CASTELJAU_ERROR_INVALID_DATA when there is nothing to
@@ -110,17 +123,24 @@ CASTELJAU_API casteljau_status casteljau_map_render(const casteljau_map* map, co
  * seamless fills, exact overlaps, tolerance 0.015 px. NULL when out of memory. */
 CASTELJAU_API casteljau_tile_options* casteljau_tile_options_create(void);
 CASTELJAU_API void casteljau_tile_options_destroy(casteljau_tile_options* options);
-CASTELJAU_API casteljau_status casteljau_tile_options_set_zoom(casteljau_tile_options* options, int min_zoom, int max_zoom); /* --zoom MIN-MAX: 0 to 24 */
+CASTELJAU_API casteljau_status casteljau_tile_options_set_zoom(casteljau_tile_options* options, int min_zoom,
+                                                               int max_zoom); /* --zoom MIN-MAX: 0 to 24 */
 /* --tile-size (256 or 512) and --scale (1 to 4: pixels per tile side are size x scale, and the
  * buffer, stroke widths and point radii are multiplied by the scale too). */
-CASTELJAU_API casteljau_status casteljau_tile_options_set_tile_size(casteljau_tile_options* options, int size, int scale);
-CASTELJAU_API casteljau_status casteljau_tile_options_set_metatile(casteljau_tile_options* options, int tiles); /* --metatile: 1 to 64 */
-CASTELJAU_API casteljau_status casteljau_tile_options_set_buffer(casteljau_tile_options* options, int pixels); /* --buffer: 0 to 1024 */
-CASTELJAU_API casteljau_status casteljau_tile_options_set_skip_empty(casteljau_tile_options* options, int skip); /* --skip-empty */
-CASTELJAU_API casteljau_status casteljau_tile_options_set_resume(casteljau_tile_options* options, int resume); /* --resume (folders only) */
+CASTELJAU_API casteljau_status casteljau_tile_options_set_tile_size(casteljau_tile_options* options, int size,
+                                                                    int scale);
+CASTELJAU_API casteljau_status casteljau_tile_options_set_metatile(casteljau_tile_options* options,
+                                                                   int tiles); /* --metatile: 1 to 64 */
+CASTELJAU_API casteljau_status casteljau_tile_options_set_buffer(casteljau_tile_options* options,
+                                                                 int pixels); /* --buffer: 0 to 1024 */
+CASTELJAU_API casteljau_status casteljau_tile_options_set_skip_empty(casteljau_tile_options* options,
+                                                                     int skip); /* --skip-empty */
+CASTELJAU_API casteljau_status casteljau_tile_options_set_resume(casteljau_tile_options* options,
+                                                                 int resume); /* --resume (folders only) */
 /* --shard I/N: render share `shard` (0-based) of `shards`, 1 to 1000000. */
 CASTELJAU_API casteljau_status casteljau_tile_options_set_shard(casteljau_tile_options* options, int shard, int shards);
-CASTELJAU_API casteljau_status casteljau_tile_options_set_name(casteljau_tile_options* options, const char* name); /* --name (MBTiles metadata) */
+CASTELJAU_API casteljau_status casteljau_tile_options_set_name(casteljau_tile_options* options,
+                                                               const char* name); /* --name (MBTiles metadata) */
 CASTELJAU_API casteljau_status casteljau_tile_options_set_separate(casteljau_tile_options* options, int separate);
 CASTELJAU_API casteljau_status casteljau_tile_options_set_exact_overlaps(casteljau_tile_options* options, int exact);
 CASTELJAU_API casteljau_status casteljau_tile_options_set_tolerance(casteljau_tile_options* options, double tolerance);

@@ -31,8 +31,8 @@ typedef struct casteljau_svg casteljau_svg;
 typedef struct casteljau_svg_options casteljau_svg_options;
 
 /* The generic CSS families that casteljau_svg_options_set_font_family maps to a family name. */
-typedef CASTELJAU_ENUM(casteljau_font_generic) {
-    CASTELJAU_FAMILY_DEFAULT = 0, /* ends every font-family list: --font-family (Times New Roman) */
+typedef CASTELJAU_ENUM(casteljau_font_generic){
+    CASTELJAU_FAMILY_DEFAULT = 0,    /* ends every font-family list: --font-family (Times New Roman) */
     CASTELJAU_FAMILY_SERIF = 1,      /* --serif-family (Times New Roman) */
     CASTELJAU_FAMILY_SANS_SERIF = 2, /* --sans-serif-family (Arial) */
     CASTELJAU_FAMILY_CURSIVE = 3,    /* --cursive-family (Comic Sans MS) */
@@ -55,7 +55,8 @@ CASTELJAU_API casteljau_status casteljau_svg_options_add_font_file(casteljau_svg
 /* 0: --skip-system-fonts (text uses the font folders and files alone); nonzero: the default. */
 CASTELJAU_API casteljau_status casteljau_svg_options_set_system_fonts(casteljau_svg_options* options, int use);
 CASTELJAU_API casteljau_status casteljau_svg_options_set_font_family(casteljau_svg_options* options,
-                                                                     casteljau_font_generic generic, const char* family);
+                                                                     casteljau_font_generic generic,
+                                                                     const char* family);
 
 /* Reads a document from a file (.svg or .svgz), or from `size` bytes of memory (SVG text or
  * gzip-compressed SVG text); `options` NULL: the defaults. CASTELJAU_ERROR_PARSE for malformed
@@ -64,8 +65,8 @@ CASTELJAU_API casteljau_status casteljau_svg_options_set_font_family(casteljau_s
  * cannot be read. Features casteljau does not draw are warnings, not errors. */
 CASTELJAU_API casteljau_status casteljau_svg_load(const char* path, const casteljau_svg_options* options,
                                                   casteljau_svg** out);
-CASTELJAU_API casteljau_status casteljau_svg_parse(const uint8_t* data, size_t size, const casteljau_svg_options* options,
-                                                   casteljau_svg** out);
+CASTELJAU_API casteljau_status casteljau_svg_parse(const uint8_t* data, size_t size,
+                                                   const casteljau_svg_options* options, casteljau_svg** out);
 CASTELJAU_API void casteljau_svg_destroy(casteljau_svg* svg);
 
 /* The intrinsic size in CSS pixels (fractional); either pointer may be NULL. */

@@ -31,35 +31,36 @@ typedef struct casteljau_text_style casteljau_text_style;
 typedef struct casteljau_text_layout casteljau_text_layout;
 
 /* --align: START is left for left-to-right paragraphs and right for right-to-left ones. */
-typedef CASTELJAU_ENUM(casteljau_text_align) {
-    CASTELJAU_ALIGN_START = 0, CASTELJAU_ALIGN_LEFT = 1, CASTELJAU_ALIGN_CENTER = 2, CASTELJAU_ALIGN_RIGHT = 3
-} casteljau_text_align;
+typedef CASTELJAU_ENUM(casteljau_text_align){CASTELJAU_ALIGN_START = 0, CASTELJAU_ALIGN_LEFT = 1,
+                                             CASTELJAU_ALIGN_CENTER = 2,
+                                             CASTELJAU_ALIGN_RIGHT = 3} casteljau_text_align;
 /* --direction: AUTO takes each paragraph's base direction from its first strong letter. */
-typedef CASTELJAU_ENUM(casteljau_text_direction) {
-    CASTELJAU_DIRECTION_AUTO = 0, CASTELJAU_DIRECTION_LTR = 1, CASTELJAU_DIRECTION_RTL = 2
-} casteljau_text_direction;
+typedef CASTELJAU_ENUM(casteljau_text_direction){CASTELJAU_DIRECTION_AUTO = 0, CASTELJAU_DIRECTION_LTR = 1,
+                                                 CASTELJAU_DIRECTION_RTL = 2} casteljau_text_direction;
 
 /* One line of a layout. */
 typedef struct casteljau_text_line {
-    const char* text;   /* the line's characters as UTF-8 (NUL-terminated; valid while the layout lives) */
-    size_t length;      /* bytes of `text` */
-    double x;           /* left end of the line after alignment */
-    double baseline;    /* y of the baseline */
-    double width;       /* advance width, trailing spaces excluded */
-    int rtl;            /* nonzero when the paragraph's base direction is right to left */
+    const char* text; /* the line's characters as UTF-8 (NUL-terminated; valid while the layout lives) */
+    size_t length;    /* bytes of `text` */
+    double x;         /* left end of the line after alignment */
+    double baseline;  /* y of the baseline */
+    double width;     /* advance width, trailing spaces excluded */
+    int rtl;          /* nonzero when the paragraph's base direction is right to left */
 } casteljau_text_line;
 
 /* Styles. A new style: 16 px per em, line height 1, no wrapping, START alignment, AUTO direction,
  * script detected, no language, no feature, no variation. NULL when out of memory. */
 CASTELJAU_API casteljau_text_style* casteljau_text_style_create(void);
 CASTELJAU_API void casteljau_text_style_destroy(casteljau_text_style* style);
-CASTELJAU_API casteljau_status casteljau_text_style_set_size(casteljau_text_style* style, double size); /* --size: px per em, above 0, at most 10000 */
+CASTELJAU_API casteljau_status
+casteljau_text_style_set_size(casteljau_text_style* style, double size); /* --size: px per em, above 0, at most 10000 */
 /* --line-height: the line advance as a multiple of the first font's line spacing, above 0, at most 100. */
 CASTELJAU_API casteljau_status casteljau_text_style_set_line_height(casteljau_text_style* style, double line_height);
 /* --width: wrap lines at word boundaries to this many pixels (1 to 32768); 0: no wrapping. */
 CASTELJAU_API casteljau_status casteljau_text_style_set_width(casteljau_text_style* style, double width);
 CASTELJAU_API casteljau_status casteljau_text_style_set_align(casteljau_text_style* style, casteljau_text_align align);
-CASTELJAU_API casteljau_status casteljau_text_style_set_direction(casteljau_text_style* style, casteljau_text_direction direction);
+CASTELJAU_API casteljau_status casteljau_text_style_set_direction(casteljau_text_style* style,
+                                                                  casteljau_text_direction direction);
 /* --script: an ISO 15924 tag ("Latn", "Arab") for every run; NULL or "": detected. */
 CASTELJAU_API casteljau_status casteljau_text_style_set_script(casteljau_text_style* style, const char* script);
 /* --language: a BCP 47 tag ("en", "tr"); NULL or "": none. */
@@ -82,7 +83,8 @@ CASTELJAU_API casteljau_status casteljau_text_layout_create(const char* text, co
 CASTELJAU_API void casteljau_text_layout_destroy(casteljau_text_layout* layout);
 /* The text box: the wrap width (or the widest line without wrapping) by the first ascender to the
  * last descender; either pointer may be NULL. */
-CASTELJAU_API casteljau_status casteljau_text_layout_size(const casteljau_text_layout* layout, double* width, double* height);
+CASTELJAU_API casteljau_status casteljau_text_layout_size(const casteljau_text_layout* layout, double* width,
+                                                          double* height);
 /* The box united with the ink of every glyph (what an image must hold to show it all), in layout
  * space; any pointer may be NULL. */
 CASTELJAU_API casteljau_status casteljau_text_layout_bounds(const casteljau_text_layout* layout, double* x0, double* y0,
@@ -93,12 +95,13 @@ CASTELJAU_API casteljau_status casteljau_text_layout_line(const casteljau_text_l
                                                           casteljau_text_line* out);
 /* Draws the layout with its box's top-left corner at (x, y) in the canvas's user space, under its
  * transform and clip, in `paint`. */
-CASTELJAU_API casteljau_status casteljau_text_layout_draw(casteljau_text_layout* layout, casteljau_canvas* canvas, double x,
-                                                          double y, const casteljau_paint* paint);
+CASTELJAU_API casteljau_status casteljau_text_layout_draw(casteljau_text_layout* layout, casteljau_canvas* canvas,
+                                                          double x, double y, const casteljau_paint* paint);
 /* What `casteljau text` writes: a new image holding the layout's bounds rounded out to whole
  * pixels plus `padding` pixels on every side (0 to 32768; at least 1 x 1 before the padding),
  * filled with `background`, the text drawn in `paint`. */
-CASTELJAU_API casteljau_status casteljau_text_layout_render_image(casteljau_text_layout* layout, const casteljau_paint* paint,
+CASTELJAU_API casteljau_status casteljau_text_layout_render_image(casteljau_text_layout* layout,
+                                                                  const casteljau_paint* paint,
                                                                   casteljau_color background, int padding,
                                                                   casteljau_image** out);
 

@@ -66,8 +66,8 @@ Figure draw_bezier_figure(const Bezier<Point>& curve, const FigureOptions& optio
 // Any curve given as a Path (a spline's Bézier pieces) with its control polygon (dashed; may be
 // empty) and markers at `knot_points` (kKnot disks) and at the control points. Fitted to the box of
 // the curve and the polygon.
-Figure draw_spline_figure(const Path& curve, std::span<const Point> control_polygon,
-                          std::span<const Point> knot_points, const FigureOptions& options);
+Figure draw_spline_figure(const Path& curve, std::span<const Point> control_polygon, std::span<const Point> knot_points,
+                          const FigureOptions& options);
 
 // The B-spline basis functions N_(i,p)(t) of `knots` (validated as for `count = knots.size() - p - 1`
 // control points) over the domain [u_p, u_count], one basis_color each, with axes, ticks at the
@@ -87,7 +87,8 @@ struct SurfaceDrawing {
 // Figure's transform maps View::apply(p) (scale 1, offset 0) to pixels. Fitted to the tight bounds
 // of the projected grid (a silhouette between grid lines may reach a little beyond it, into the margin).
 Figure draw_surface_figure(const BezierPatch<Point3>& s, const SurfaceDrawing& drawing, const FigureOptions& options);
-Figure draw_surface_figure(const BSplineSurface<Point3>& s, const SurfaceDrawing& drawing, const FigureOptions& options);
+Figure draw_surface_figure(const BSplineSurface<Point3>& s, const SurfaceDrawing& drawing,
+                           const FigureOptions& options);
 Figure draw_surface_figure(const NurbsSurface<Point3>& s, const SurfaceDrawing& drawing, const FigureOptions& options);
 
 }  // namespace casteljau

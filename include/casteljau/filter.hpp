@@ -53,21 +53,36 @@ struct TransferFunction {
 // A light source for the lighting primitives, positions in user units.
 struct Light {
     enum Type { Distant, Point, Spot } type = Distant;
-    double azimuth = 0, elevation = 0;      // Distant, degrees
-    double x = 0, y = 0, z = 0;             // Point, Spot
-    double tx = 0, ty = 0, tz = 0;          // Spot: points at
-    double specular_exponent = 1;           // Spot
-    std::optional<double> cone_angle;       // Spot: limitingConeAngle, degrees
+    double azimuth = 0, elevation = 0;  // Distant, degrees
+    double x = 0, y = 0, z = 0;         // Point, Spot
+    double tx = 0, ty = 0, tz = 0;      // Spot: points at
+    double specular_exponent = 1;       // Spot
+    std::optional<double> cone_angle;   // Spot: limitingConeAngle, degrees
 };
 
 struct Primitive {
     enum Op {
-        Flood, Offset, Merge, Blend, Composite, GaussianBlur, DropShadow, ColorMatrix, ComponentTransfer, Morphology,
-        ConvolveMatrix, Tile, Image, Turbulence, DisplacementMap, DiffuseLighting, SpecularLighting
+        Flood,
+        Offset,
+        Merge,
+        Blend,
+        Composite,
+        GaussianBlur,
+        DropShadow,
+        ColorMatrix,
+        ComponentTransfer,
+        Morphology,
+        ConvolveMatrix,
+        Tile,
+        Image,
+        Turbulence,
+        DisplacementMap,
+        DiffuseLighting,
+        SpecularLighting
     } op = Flood;
-    std::vector<Input> inputs;   // in, in2 (Merge: every node)
-    Rect subregion;              // user units; results are transparent outside it
-    bool linear_rgb = true;      // color-interpolation-filters: linearRGB (true) or sRGB
+    std::vector<Input> inputs;  // in, in2 (Merge: every node)
+    Rect subregion;             // user units; results are transparent outside it
+    bool linear_rgb = true;     // color-interpolation-filters: linearRGB (true) or sRGB
 
     Color color = Color::black();  // Flood, DropShadow: flood colour (opacity folded in); lighting colour
     double dx = 0, dy = 0;         // Offset, DropShadow: user units
@@ -76,10 +91,10 @@ struct Primitive {
     BlendMode blend = BlendMode::Normal;
     CompositeOp composite = CompositeOp::Over;
     double k1 = 0, k2 = 0, k3 = 0, k4 = 0;  // arithmetic
-    std::array<double, 20> matrix{};          // ColorMatrix: 4x5, rows R G B A, on straight values
-    std::array<TransferFunction, 4> funcs;    // ComponentTransfer: R G B A
-    bool dilate = false;                      // Morphology: dilate (true) or erode
-    double rx = 0, ry = 0;                    // Morphology radius, user units
+    std::array<double, 20> matrix{};        // ColorMatrix: 4x5, rows R G B A, on straight values
+    std::array<TransferFunction, 4> funcs;  // ComponentTransfer: R G B A
+    bool dilate = false;                    // Morphology: dilate (true) or erode
+    double rx = 0, ry = 0;                  // Morphology radius, user units
     // ConvolveMatrix: kernel (order_x x order_y, row-major), divisor, bias, target, preserveAlpha.
     int order_x = 3, order_y = 3;
     std::vector<double> kernel;

@@ -47,7 +47,11 @@ struct Polyline {
     // Per contour: whether the source contour was explicitly closed (matters to strokes only).
     std::vector<bool> closed;
 
-    void clear() { points.clear(); contour_ends.clear(); closed.clear(); }
+    void clear() {
+        points.clear();
+        contour_ends.clear();
+        closed.clear();
+    }
     std::size_t contour_count() const { return contour_ends.size(); }
 };
 

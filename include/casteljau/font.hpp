@@ -52,23 +52,23 @@ struct FontMetrics {
     double line_gap = 0;
     double underline_position = 0, underline_thickness = 0;
     double strikeout_position = 0, strikeout_thickness = 0;  // line-through: centre above the baseline
-    double x_height = 0, cap_height = 0;  // OS/2 values, or HarfBuzz's estimates from the glyphs
-    double subscript_offset = 0, superscript_offset = 0;  // OS/2: baseline shift down / up
+    double x_height = 0, cap_height = 0;                     // OS/2 values, or HarfBuzz's estimates from the glyphs
+    double subscript_offset = 0, superscript_offset = 0;     // OS/2: baseline shift down / up
     // Distance between consecutive baselines: ascender - descender + line_gap.
     double line_spacing() const { return ascender - descender + line_gap; }
 };
 
 // Metrics of one glyph in font units, y up, for the current variation.
 struct GlyphMetrics {
-    double advance = 0;       // horizontal advance
-    double left_bearing = 0;  // bounds.x0: from the origin to the left edge of the outline
-    double right_bearing = 0; // advance - bounds.x1
-    Rect bounds;              // tight bounds of the outline (y0 = bottom, y1 = top); empty for blanks
+    double advance = 0;        // horizontal advance
+    double left_bearing = 0;   // bounds.x0: from the origin to the left edge of the outline
+    double right_bearing = 0;  // advance - bounds.x1
+    Rect bounds;               // tight bounds of the outline (y0 = bottom, y1 = top); empty for blanks
 };
 
 struct VariationAxis {
-    std::string tag;    // four characters, e.g. "wght"
-    std::string name;   // e.g. "Weight"
+    std::string tag;   // four characters, e.g. "wght"
+    std::string name;  // e.g. "Weight"
     double minimum = 0, default_value = 0, maximum = 0;
     bool hidden = false;
 };
@@ -110,7 +110,7 @@ public:
 
     const std::string& source() const;  // file path (or the name given to from_memory)
     int face_index() const;
-    int face_count() const;             // faces in the file (1 unless it is a collection)
+    int face_count() const;  // faces in the file (1 unless it is a collection)
     std::string family_name() const;
     std::string style_name() const;
     OutlineFormat outline_format() const;
@@ -140,7 +140,7 @@ public:
     const std::vector<VariationAxis>& axes() const;
     const std::vector<NamedInstance>& named_instances() const;
     void set_variations(std::span<const Variation> settings);
-    void set_named_instance(std::size_t index);     // Error(Font) when out of range
+    void set_named_instance(std::size_t index);      // Error(Font) when out of range
     void set_named_instance(std::string_view name);  // case-insensitive; Error(Font) when absent
     void reset_variations();
     std::vector<double> variation_coordinates() const;  // design coordinates, one per axis
@@ -154,7 +154,8 @@ public:
 
 private:
     explicit Font(std::unique_ptr<Impl> impl);
-    static Font from_shared_bytes(std::shared_ptr<const std::uint8_t> bytes, std::size_t size, int face_index, std::string name);
+    static Font from_shared_bytes(std::shared_ptr<const std::uint8_t> bytes, std::size_t size, int face_index,
+                                  std::string name);
     std::unique_ptr<Impl> impl_;
 };
 

@@ -31,12 +31,12 @@ enum class FontSlant { Normal, Italic, Oblique };
 // One face of a font file.
 struct FontFaceInfo {
     std::string path;
-    int index = 0;                      // face index in a collection
-    std::vector<std::string> families;  // every family name the file gives (typographic first)
-    int weight = 400;                   // CSS weight 1..1000 (the default instance for variable fonts)
+    int index = 0;                           // face index in a collection
+    std::vector<std::string> families;       // every family name the file gives (typographic first)
+    int weight = 400;                        // CSS weight 1..1000 (the default instance for variable fonts)
     int min_weight = 400, max_weight = 400;  // range covered (variable fonts: the wght axis)
     FontSlant slant = FontSlant::Normal;
-    double stretch = 100;               // CSS percentage: 50 (ultra-condensed) .. 200 (ultra-expanded)
+    double stretch = 100;  // CSS percentage: 50 (ultra-condensed) .. 200 (ultra-expanded)
     bool variable = false;
 };
 

@@ -62,7 +62,7 @@ struct PropertyValue {
 };
 
 struct Feature {
-    std::string id;  // the "id" member as text ("" when absent)
+    std::string id;                                                 // the "id" member as text ("" when absent)
     std::vector<std::pair<std::string, PropertyValue>> properties;  // in file order
     std::vector<Geometry> geometries;  // a GeometryCollection gives several (nested ones flattened)
     const PropertyValue* property(std::string_view name) const;  // nullptr when absent
@@ -75,7 +75,7 @@ struct MapData {
     std::vector<Point> arc_points;
     std::vector<std::uint32_t> arc_ends;
     std::vector<std::uint32_t> used_arcs;  // arcs used by the read objects, each listed once
-    Rect bounds() const;  // of every position (empty Rect when there is none)
+    Rect bounds() const;                   // of every position (empty Rect when there is none)
     std::size_t position_count() const;
 };
 

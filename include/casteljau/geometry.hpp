@@ -26,9 +26,21 @@ struct Point {
     constexpr Point operator-() const { return {-x, -y}; }
     constexpr Point operator*(double s) const { return {x * s, y * s}; }
     constexpr Point operator/(double s) const { return {x / s, y / s}; }
-    constexpr Point& operator+=(Point o) { x += o.x; y += o.y; return *this; }
-    constexpr Point& operator-=(Point o) { x -= o.x; y -= o.y; return *this; }
-    constexpr Point& operator*=(double s) { x *= s; y *= s; return *this; }
+    constexpr Point& operator+=(Point o) {
+        x += o.x;
+        y += o.y;
+        return *this;
+    }
+    constexpr Point& operator-=(Point o) {
+        x -= o.x;
+        y -= o.y;
+        return *this;
+    }
+    constexpr Point& operator*=(double s) {
+        x *= s;
+        y *= s;
+        return *this;
+    }
     constexpr bool operator==(const Point&) const = default;
 
     double length() const { return std::hypot(x, y); }
@@ -84,7 +96,7 @@ struct Affine {
 
     // (*this * o).apply(p) == this->apply(o.apply(p)): o is applied first.
     constexpr Affine operator*(const Affine& o) const {
-        return {a * o.a + c * o.b, b * o.a + d * o.b, a * o.c + c * o.d,
+        return {a * o.a + c * o.b, b * o.a + d * o.b,     a * o.c + c * o.d,
                 b * o.c + d * o.d, a * o.e + c * o.f + e, b * o.e + d * o.f + f};
     }
     // Applies `then` after this transform.

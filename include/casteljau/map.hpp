@@ -96,11 +96,11 @@ struct MapStyle {
 MapStyle read_map_style(std::string_view json);
 
 struct MapOptions {
-    int width = 0;                // pixels, required (>= 1)
-    int height = 0;               // 0: from the extent's aspect ratio
-    std::optional<Rect> bbox;     // degrees: x0 = west, y0 = south, x1 = east, y1 = north
-    double padding = 0;           // pixels on each side
-    bool seamless = true;         // false: each fill source-over on its own (--separate)
+    int width = 0;             // pixels, required (>= 1)
+    int height = 0;            // 0: from the extent's aspect ratio
+    std::optional<Rect> bbox;  // degrees: x0 = west, y0 = south, x1 = east, y1 = north
+    double padding = 0;        // pixels on each side
+    bool seamless = true;      // false: each fill source-over on its own (--separate)
     FillRule fill_rule = FillRule::NonZero;
     double tolerance = kDefaultTolerance;
     // Fills only: recompute pixels where a feature's own edges overlap (self-intersecting or
@@ -175,7 +175,7 @@ private:
     std::uint32_t* find_segment(std::uint32_t a);
     std::uint32_t* find_join(std::uint32_t v);
     void grow(std::vector<std::uint32_t>& table, bool joins);
-    std::vector<Point> pts_;  // each ring: its n positions, then its first two again
+    std::vector<Point> pts_;                       // each ring: its n positions, then its first two again
     std::vector<std::uint32_t> segments_, joins_;  // open addressing: index into pts_ + 1, 0 empty
     std::size_t segment_count_ = 0, join_count_ = 0;
     std::vector<Point> ring_;

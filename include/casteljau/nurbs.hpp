@@ -34,7 +34,8 @@
 
 namespace casteljau {
 
-template <CurvePoint P> class RationalBezier {
+template <CurvePoint P>
+class RationalBezier {
 public:
     using point_type = P;
 
@@ -63,7 +64,8 @@ private:
     std::vector<double> weights_;
 };
 
-template <CurvePoint P> class Nurbs {
+template <CurvePoint P>
+class Nurbs {
 public:
     using point_type = P;
 

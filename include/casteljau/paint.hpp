@@ -113,12 +113,17 @@ class Shader;
 // its own state's blend mode when the paint's is SourceOver.
 struct Paint {
     Color color = Color::black();
-    double opacity = 1.0;        // multiplies the colour's alpha
-    bool linear_blend = false;   // blend coverage in linear light (gamma-correct) instead of sRGB; solid source-over only
+    double opacity = 1.0;  // multiplies the colour's alpha
+    bool linear_blend =
+        false;  // blend coverage in linear light (gamma-correct) instead of sRGB; solid source-over only
     std::shared_ptr<const Shader> shader;
     BlendMode blend = BlendMode::SourceOver;
 
-    static Paint solid(Color c) { Paint p; p.color = c; return p; }
+    static Paint solid(Color c) {
+        Paint p;
+        p.color = c;
+        return p;
+    }
     static Paint shaded(Shader s);
 };
 
@@ -137,8 +142,8 @@ void composite_span_premul(std::uint8_t* dst, int length, const std::uint8_t* co
 // and destination D (blend_mode.hpp) and c the coverage / 255 (`coverage` null: full coverage).
 // `src` holds one premultiplied pixel per destination pixel, or one for the whole span when
 // `src_stride` is 0. SourceOver takes composite_span_premul's exact integer path.
-void blend_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src,
-                BlendMode mode, int src_stride = 4);
+void blend_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src, BlendMode mode,
+                int src_stride = 4);
 
 // Checks a requested canvas size against the limits; throws Error(Limit) / Error(InvalidData).
 void check_canvas_size(double width, double height);

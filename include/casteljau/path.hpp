@@ -29,8 +29,10 @@ enum class Verb : std::uint8_t {
 // Number of points a verb consumes.
 constexpr int verb_point_count(Verb v) {
     switch (v) {
-        case Verb::Move: case Verb::Line: return 1;
-        case Verb::Quad: case Verb::Conic: return 2;
+        case Verb::Move:
+        case Verb::Line: return 1;
+        case Verb::Quad:
+        case Verb::Conic: return 2;
         case Verb::Cubic: return 3;
         case Verb::Close: return 0;
     }
@@ -95,7 +97,8 @@ public:
 
     // Walks the path segment by segment with absolute start points: the visitor gets
     // move(p), line(p0, p1), quad(p0, c, p1), cubic(p0, c1, c2, p1), conic(p0, c, p1, w), close(p_last, p_first).
-    template <class V> void visit(V&& v) const;
+    template <class V>
+    void visit(V&& v) const;
 
 private:
     void ensure_contour();
@@ -115,29 +118,47 @@ private:
     std::vector<Verb> verbs_;
     std::vector<Point> points_;
     std::vector<double> weights_;
-    bool open_ = false;     // a contour is in progress
-    Point start_{};         // first point of the current contour
+    bool open_ = false;  // a contour is in progress
+    Point start_{};      // first point of the current contour
     Point current_{};
     // Derived from points_ (weights are checked when added): control bounds and finiteness.
     double cx0_ = INFINITY, cy0_ = INFINITY, cx1_ = -INFINITY, cy1_ = -INFINITY;
     bool finite_ = true;
 };
 
-template <class V> void Path::visit(V&& v) const {
+template <class V>
+void Path::visit(V&& v) const {
     std::size_t pi = 0, wi = 0;
     Point start{}, cur{};
     for (Verb verb : verbs_) {
         switch (verb) {
-            case Verb::Move: cur = start = points_[pi++]; v.move(cur); break;
-            case Verb::Line: v.line(cur, points_[pi]); cur = points_[pi++]; break;
-            case Verb::Quad: v.quad(cur, points_[pi], points_[pi + 1]); cur = points_[pi + 1]; pi += 2; break;
+            case Verb::Move:
+                cur = start = points_[pi++];
+                v.move(cur);
+                break;
+            case Verb::Line:
+                v.line(cur, points_[pi]);
+                cur = points_[pi++];
+                break;
+            case Verb::Quad:
+                v.quad(cur, points_[pi], points_[pi + 1]);
+                cur = points_[pi + 1];
+                pi += 2;
+                break;
             case Verb::Cubic:
                 v.cubic(cur, points_[pi], points_[pi + 1], points_[pi + 2]);
-                cur = points_[pi + 2]; pi += 3; break;
+                cur = points_[pi + 2];
+                pi += 3;
+                break;
             case Verb::Conic:
                 v.conic(cur, points_[pi], points_[pi + 1], weights_[wi++]);
-                cur = points_[pi + 1]; pi += 2; break;
-            case Verb::Close: v.close(cur, start); cur = start; break;
+                cur = points_[pi + 1];
+                pi += 2;
+                break;
+            case Verb::Close:
+                v.close(cur, start);
+                cur = start;
+                break;
         }
     }
 }

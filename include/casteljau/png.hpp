@@ -26,9 +26,9 @@ enum class PngFilter { Auto, None, Sub, Up, Average, Paeth, Adaptive };
 // smaller, flat drawings 8% smaller and gradients and photographs 6% larger, in about half the
 // time.
 struct PngEncodeOptions {
-    int compression_level = 4;             // zlib level, 0 (store) to 9 (smallest)
+    int compression_level = 4;  // zlib level, 0 (store) to 9 (smallest)
     PngFilter filter = PngFilter::Auto;
-    bool smallest_colour_type = true;      // false: always RGBA
+    bool smallest_colour_type = true;  // false: always RGBA
 };
 
 // Un-premultiplies exactly (straight = round(p * 255 / a)), so that decode_png(encode_png(p))

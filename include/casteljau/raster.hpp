@@ -119,14 +119,14 @@ public:
 
 // An 8-bit coverage mask (A8) positioned at `origin` in pixel space.
 struct Mask {
-    IRect bounds;                    // pixel rectangle the mask covers
-    std::vector<std::uint8_t> data;  // bounds.width() * bounds.height(), row-major
+    IRect bounds;                         // pixel rectangle the mask covers
+    std::vector<std::uint8_t> data;       // bounds.width() * bounds.height(), row-major
     std::uint8_t at(int x, int y) const;  // 0 outside bounds
 };
 
 struct RasterStats {
-    std::size_t segments = 0;        // line segments accumulated
-    std::size_t exact_cells = 0;     // cells recomputed exactly
+    std::size_t segments = 0;     // line segments accumulated
+    std::size_t exact_cells = 0;  // cells recomputed exactly
     // Of those, cells where the exact method would cost too much (thousands of pieces crossing in
     // one pixel, or the fill's exact-work budget spent) and lines through the cell were integrated
     // instead: within 1/2048 of a pixel, 1/32 at worst. Real glyphs and maps have none.
@@ -135,8 +135,8 @@ struct RasterStats {
     // fill had already spent twice its exact-work budget: only shapes that pile thousands of
     // crossing pieces into hundreds of pixels get there, and this bounds their time.
     std::size_t accumulated_cells = 0;
-    double exact_work = 0;           // piece visits the exact cells cost (bounded by the fill's size)
-    std::size_t strips = 0;          // dense buffers run: 1, or the bands of a large shape
+    double exact_work = 0;                  // piece visits the exact cells cost (bounded by the fill's size)
+    std::size_t strips = 0;                 // dense buffers run: 1, or the bands of a large shape
     Topology topology = Topology::Unknown;  // the verdict the fill used (Unknown: exact_overlaps off)
 };
 

@@ -72,7 +72,8 @@ public:
     void add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity = 1.0);
     // The same inside `clip` only (pixel rectangle, intersected with the region). Calls whose
     // clips share no row touch disjoint memory, so they may run on different threads at once.
-    void add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity, const IRect& clip);
+    void add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity,
+             const IRect& clip);
     // Coverage already taken in pixel (x, y) of the region, 0..255.
     std::uint8_t taken(int x, int y) const {
         return cov_[static_cast<std::size_t>(y - region_.y0) * static_cast<std::size_t>(width()) +
@@ -90,7 +91,7 @@ private:
     std::vector<std::uint8_t> layer_;  // premultiplied RGBA8, when the layer is the compositor's own
     std::vector<std::uint8_t> cov_;
     std::vector<int> lo_, hi_;  // per row: the columns [lo, hi) fills have touched (lo >= hi: none)
-    Pixmap* into_ = nullptr;  // the target whose pixels are the layer (reset_into), or null
+    Pixmap* into_ = nullptr;    // the target whose pixels are the layer (reset_into), or null
     // The layer's pixel at the region's origin, and the bytes from one layer row to the next.
     std::uint8_t* layer_origin() const;
     std::size_t layer_stride() const;

@@ -83,7 +83,7 @@ public:
 private:
     Shader() = default;
     Kind kind_ = Kind::Linear;
-    Point p0_, p1_;  // linear: start, end; radial: p0_ focal centre, p1_ end centre
+    Point p0_, p1_;           // linear: start, end; radial: p0_ focal centre, p1_ end centre
     double r0_ = 0, r1_ = 0;  // radial: focal and end radii
     std::vector<GradientStop> stops_;
     SpreadMethod spread_ = SpreadMethod::Pad;
@@ -92,7 +92,8 @@ private:
     ImageSampling sampling_ = ImageSampling::Bilinear;
     bool repeat_ = false;
     void sample_bicubic(double u, double v, float c[4]) const;
-    void shade_image_row(const Affine& pixel_to_image, int x, int y, int length, double opacity, std::uint8_t* out) const;
+    void shade_image_row(const Affine& pixel_to_image, int x, int y, int length, double opacity,
+                         std::uint8_t* out) const;
 };
 
 }  // namespace casteljau

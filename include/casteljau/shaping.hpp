@@ -54,7 +54,7 @@ struct ShapedRun {
     std::uint32_t begin = 0, end = 0;  // code point range in the paragraph
     std::uint8_t level = 0;
     std::uint16_t font = 0;
-    std::vector<ShapedGlyph> glyphs;   // visual order
+    std::vector<ShapedGlyph> glyphs;  // visual order
 };
 
 class TextShaper {
@@ -69,7 +69,8 @@ public:
     TextShaper& operator=(const TextShaper&) = delete;
 
     // Shapes `paragraph` (tabs already replaced) with its bidi levels into `runs` (logical order).
-    void shape_paragraph(std::u32string_view paragraph, std::span<const std::uint8_t> levels, std::vector<ShapedRun>& runs);
+    void shape_paragraph(std::u32string_view paragraph, std::span<const std::uint8_t> levels,
+                         std::vector<ShapedRun>& runs);
 
 private:
     class Impl;  // the HarfBuzz buffer, features, script and language

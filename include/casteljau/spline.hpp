@@ -52,7 +52,8 @@ std::vector<double> bspline_basis_all(int degree, std::span<const double> knots,
 
 // ---- B-spline curves ----------------------------------------------------------------------------
 
-template <CurvePoint P> class BSpline {
+template <CurvePoint P>
+class BSpline {
 public:
     using point_type = P;
 
@@ -101,17 +102,21 @@ private:
 // M = 1/6 [1 4 1 0; 0 4 2 0; 0 2 4 0; 0 1 4 1] and its inverse [6 -7 2 0; 0 2 -1 0; 0 -1 2 0; 0 2 -7 6].
 std::array<double, 16> uniform_cubic_bspline_to_bezier_matrix();
 std::array<double, 16> bezier_to_uniform_cubic_bspline_matrix();
-template <CurvePoint P> std::array<P, 4> uniform_cubic_bspline_to_bezier(const std::array<P, 4>& d);
-template <CurvePoint P> std::array<P, 4> bezier_to_uniform_cubic_bspline(const std::array<P, 4>& b);
+template <CurvePoint P>
+std::array<P, 4> uniform_cubic_bspline_to_bezier(const std::array<P, 4>& d);
+template <CurvePoint P>
+std::array<P, 4> bezier_to_uniform_cubic_bspline(const std::array<P, 4>& b);
 
 // ---- interpolating splines ----------------------------------------------------------------------
 
 // Hermite basis matrix (row-major): P(t) = [t^3 t^2 t 1] Mh [p0 p1 m0 m1]^T,
 // Mh = [2 -2 1 1; -3 3 -2 -1; 0 0 1 0; 1 0 0 0].
 std::array<double, 16> hermite_matrix();
-template <CurvePoint P> P hermite_eval(const P& p0, const P& m0, const P& p1, const P& m1, double t);
+template <CurvePoint P>
+P hermite_eval(const P& p0, const P& m0, const P& p1, const P& m1, double t);
 // The same cubic in Bézier form: (p0, p0 + m0/3, p1 - m1/3, p1).
-template <CurvePoint P> Bezier<P> hermite_to_bezier(const P& p0, const P& m0, const P& p1, const P& m1);
+template <CurvePoint P>
+Bezier<P> hermite_to_bezier(const P& p0, const P& m0, const P& p1, const P& m1);
 // Pieces through points[i] with tangents[i] (equal sizes, at least 2).
 template <CurvePoint P>
 std::vector<Bezier<P>> hermite_spline(std::span<const P> points, std::span<const P> tangents);

@@ -37,7 +37,8 @@ namespace casteljau {
 
 // ---- Bézier patches -----------------------------------------------------------------------------
 
-template <CurvePoint P> class BezierPatch {
+template <CurvePoint P>
+class BezierPatch {
 public:
     using point_type = P;
 
@@ -47,7 +48,9 @@ public:
     int degree_u() const { return m_; }
     int degree_v() const { return n_; }
     std::span<const P> net() const { return net_; }
-    const P& at(int i, int j) const { return net_[static_cast<std::size_t>(i) * static_cast<std::size_t>(n_ + 1) + static_cast<std::size_t>(j)]; }
+    const P& at(int i, int j) const {
+        return net_[static_cast<std::size_t>(i) * static_cast<std::size_t>(n_ + 1) + static_cast<std::size_t>(j)];
+    }
 
     // De Casteljau in u then v. No allocation.
     P eval(double u, double v) const;
@@ -75,7 +78,8 @@ std::array<double, 16> bezier_cubic_matrix();
 
 // ---- spline surfaces ----------------------------------------------------------------------------
 
-template <CurvePoint P> class BSplineSurface {
+template <CurvePoint P>
+class BSplineSurface {
 public:
     using point_type = P;
 
@@ -83,7 +87,8 @@ public:
     BSplineSurface(int degree_u, int degree_v, std::size_t count_u, std::size_t count_v, std::vector<P> net,
                    std::vector<double> knots_u, std::vector<double> knots_v);
     // Clamped (open uniform on [0, 1]) knots in both directions.
-    static BSplineSurface clamped(int degree_u, int degree_v, std::size_t count_u, std::size_t count_v, std::vector<P> net);
+    static BSplineSurface clamped(int degree_u, int degree_v, std::size_t count_u, std::size_t count_v,
+                                  std::vector<P> net);
 
     int degree_u() const { return pu_; }
     int degree_v() const { return pv_; }
@@ -112,7 +117,8 @@ private:
     std::vector<double> ku_, kv_;
 };
 
-template <CurvePoint P> class NurbsSurface {
+template <CurvePoint P>
+class NurbsSurface {
 public:
     using point_type = P;
 

@@ -69,14 +69,14 @@ enum class TextDirection { Auto, LeftToRight, RightToLeft };
 enum class TextAlign { Start, Left, Center, Right };  // Start: left for LTR paragraphs, right for RTL
 
 struct TextStyle {
-    double size = 16;           // pixels per em (check_font_size: 0 < size <= limits::kMaxFontSize)
-    double line_height = 1.0;   // line advance as a multiple of the first font's line spacing (> 0)
+    double size = 16;          // pixels per em (check_font_size: 0 < size <= limits::kMaxFontSize)
+    double line_height = 1.0;  // line advance as a multiple of the first font's line spacing (> 0)
     TextAlign align = TextAlign::Start;
-    double max_width = 0;       // wrap lines at word boundaries to this width in px; 0: no wrapping
+    double max_width = 0;                           // wrap lines at word boundaries to this width in px; 0: no wrapping
     TextDirection direction = TextDirection::Auto;  // base direction of every paragraph
-    std::string script;         // ISO 15924 tag ("Latn", "Arab", "Hebr") for every run; "": detect
-    std::string language;       // BCP 47 tag ("en", "ar", "tr"); "": none
-    std::vector<std::string> features;  // HarfBuzz feature strings, e.g. "kern=0", "liga=0", "smcp"
+    std::string script;                             // ISO 15924 tag ("Latn", "Arab", "Hebr") for every run; "": detect
+    std::string language;                           // BCP 47 tag ("en", "ar", "tr"); "": none
+    std::vector<std::string> features;              // HarfBuzz feature strings, e.g. "kern=0", "liga=0", "smcp"
     // A cluster that no font of the chain has is looked for in the system's fonts (fontconfig):
     // the first face, in fontconfig's order for the first font's family (the generic family
     // "emoji" for clusters in emoji presentation), `language`, and the first font's weight and
@@ -94,11 +94,11 @@ struct PositionedGlyph {
 
 struct TextLine {
     std::size_t first_glyph = 0, glyph_count = 0;  // glyphs in visual order, left to right
-    double baseline = 0;        // y of the baseline
-    double x = 0;               // left end of the line after alignment
-    double width = 0;           // advance width, trailing spaces excluded
-    bool rtl = false;           // the paragraph's base direction
-    std::size_t text_begin = 0, text_end = 0;  // code point range of TextLayout::text on this line
+    double baseline = 0;                           // y of the baseline
+    double x = 0;                                  // left end of the line after alignment
+    double width = 0;                              // advance width, trailing spaces excluded
+    bool rtl = false;                              // the paragraph's base direction
+    std::size_t text_begin = 0, text_end = 0;      // code point range of TextLayout::text on this line
 };
 
 struct TextLayout {
@@ -107,12 +107,12 @@ struct TextLayout {
     std::vector<const Font*> fonts;
     std::vector<std::shared_ptr<const Font>> system_fonts;
     double size = 0;
-    std::u32string text;             // the decoded input (line breaks included)
+    std::u32string text;  // the decoded input (line breaks included)
     std::vector<PositionedGlyph> glyphs;
     std::vector<TextLine> lines;
-    double width = 0;                // the box: the wrap width, or the widest line without wrapping
-    double height = 0;               // first ascender to last descender, line advances between
-    Rect ink;                        // union of the glyph outlines' bounds; empty when nothing inks
+    double width = 0;   // the box: the wrap width, or the widest line without wrapping
+    double height = 0;  // first ascender to last descender, line advances between
+    Rect ink;           // union of the glyph outlines' bounds; empty when nothing inks
     // The box united with the ink (both in layout space): what an image must hold to show it all.
     Rect bounds() const;
 };
@@ -197,8 +197,8 @@ struct TextDrawOptions {
 // (a temporary cache when null) and are composited directly; otherwise (rotation, skew, uneven or
 // mirroring scale) each glyph's outline is filled with the full transform. `paint` supplies colour,
 // opacity and Paint::linear_blend (gamma-correct coverage blending).
-void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Paint& paint,
-               GlyphCache* cache = nullptr, const TextDrawOptions& options = {});
+void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Paint& paint, GlyphCache* cache = nullptr,
+               const TextDrawOptions& options = {});
 
 // Lays out `utf8` in one font with default style at `size` px and draws it with the box's top-left
 // corner at `origin`. Returns the layout.

@@ -25,9 +25,24 @@ struct Point3 {
     constexpr Point3 operator-() const { return {-x, -y, -z}; }
     constexpr Point3 operator*(double s) const { return {x * s, y * s, z * s}; }
     constexpr Point3 operator/(double s) const { return {x / s, y / s, z / s}; }
-    constexpr Point3& operator+=(Point3 o) { x += o.x; y += o.y; z += o.z; return *this; }
-    constexpr Point3& operator-=(Point3 o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
-    constexpr Point3& operator*=(double s) { x *= s; y *= s; z *= s; return *this; }
+    constexpr Point3& operator+=(Point3 o) {
+        x += o.x;
+        y += o.y;
+        z += o.z;
+        return *this;
+    }
+    constexpr Point3& operator-=(Point3 o) {
+        x -= o.x;
+        y -= o.y;
+        z -= o.z;
+        return *this;
+    }
+    constexpr Point3& operator*=(double s) {
+        x *= s;
+        y *= s;
+        z *= s;
+        return *this;
+    }
     constexpr bool operator==(const Point3&) const = default;
 
     double length() const { return std::sqrt(x * x + y * y + z * z); }
@@ -43,9 +58,11 @@ template <class P>
 concept CurvePoint = std::same_as<P, Point> || std::same_as<P, Point3>;
 
 // Dimension and coordinate access by axis index (0 = x, 1 = y, 2 = z).
-template <CurvePoint P> inline constexpr int point_dimension = std::same_as<P, Point> ? 2 : 3;
+template <CurvePoint P>
+inline constexpr int point_dimension = std::same_as<P, Point> ? 2 : 3;
 
-template <CurvePoint P> constexpr double coord(const P& p, int axis) {
+template <CurvePoint P>
+constexpr double coord(const P& p, int axis) {
     if constexpr (std::same_as<P, Point>) {
         return axis == 0 ? p.x : p.y;
     } else {
@@ -53,7 +70,8 @@ template <CurvePoint P> constexpr double coord(const P& p, int axis) {
     }
 }
 
-template <CurvePoint P> constexpr void set_coord(P& p, int axis, double v) {
+template <CurvePoint P>
+constexpr void set_coord(P& p, int axis, double v) {
     if constexpr (std::same_as<P, Point>) {
         (axis == 0 ? p.x : p.y) = v;
     } else {
@@ -61,11 +79,18 @@ template <CurvePoint P> constexpr void set_coord(P& p, int axis, double v) {
     }
 }
 
-template <CurvePoint P> constexpr double dot(const P& a, const P& b) { return a.dot(b); }
-template <CurvePoint P> inline double norm(const P& a) { return a.length(); }
+template <CurvePoint P>
+constexpr double dot(const P& a, const P& b) {
+    return a.dot(b);
+}
+template <CurvePoint P>
+inline double norm(const P& a) {
+    return a.length();
+}
 
 // Axis-aligned box of 2-D or 3-D points: lo is the minimum corner, hi the maximum corner.
-template <CurvePoint P> struct Box {
+template <CurvePoint P>
+struct Box {
     P lo{}, hi{};
 
     void include(const P& p) {

@@ -16,7 +16,6 @@ namespace casteljau {
 
 namespace {
 
-
 // Multiplies a row of coverage by the clip mask (when there is one) into `out`; returns the row
 // to use.
 const std::uint8_t* clip_coverage(const Mask* clip, int y, int x, int length, const std::uint8_t* coverage,
@@ -90,7 +89,8 @@ void Canvas::clip_rect(const Rect& r) {
                 cut->data.resize(static_cast<std::size_t>(n.width()) * static_cast<std::size_t>(n.height()));
                 for (int y = n.y0; y < n.y1; ++y)
                     for (int x = n.x0; x < n.x1; ++x)
-                        cut->data[static_cast<std::size_t>(y - n.y0) * n.width() + (x - n.x0)] = state_.clip_mask->at(x, y);
+                        cut->data[static_cast<std::size_t>(y - n.y0) * n.width() + (x - n.x0)] =
+                            state_.clip_mask->at(x, y);
                 state_.clip_mask = std::move(cut);
             }
             state_.clip = n;
@@ -115,7 +115,8 @@ void Canvas::clip_path(const Path& path, FillRule rule) {
     if (state_.clip_mask)
         for (int y = m.bounds.y0; y < m.bounds.y1; ++y)
             for (int x = m.bounds.x0; x < m.bounds.x1; ++x) {
-                std::uint8_t& v = m.data[static_cast<std::size_t>(y - m.bounds.y0) * m.bounds.width() + (x - m.bounds.x0)];
+                std::uint8_t& v =
+                    m.data[static_cast<std::size_t>(y - m.bounds.y0) * m.bounds.width() + (x - m.bounds.x0)];
                 v = pixel::mul_div255(v, state_.clip_mask->at(x, y));
             }
     state_.clip = m.bounds;
@@ -171,8 +172,10 @@ void Canvas::fill_mask(const Mask& mask, const Paint& paint) { fill_mask(mask, 0
 void Canvas::fill_mask(const Mask& mask, long long dx, long long dy, const Paint& paint) {
     if (mask.bounds.empty() || state_.clip.empty()) return;
     const IRect& c = state_.clip;
-    const long long x0 = std::max<long long>(mask.bounds.x0 + dx, c.x0), x1 = std::min<long long>(mask.bounds.x1 + dx, c.x1);
-    const long long y0 = std::max<long long>(mask.bounds.y0 + dy, c.y0), y1 = std::min<long long>(mask.bounds.y1 + dy, c.y1);
+    const long long x0 = std::max<long long>(mask.bounds.x0 + dx, c.x0),
+                    x1 = std::min<long long>(mask.bounds.x1 + dx, c.x1);
+    const long long y0 = std::max<long long>(mask.bounds.y0 + dy, c.y0),
+                    y1 = std::min<long long>(mask.bounds.y1 + dy, c.y1);
     if (x1 <= x0 || y1 <= y0) return;
     PaintPipeline pipe(paint, state_.transform, state_.opacity, state_.blend, scratch_);
     if (pipe.paints_nothing()) return;

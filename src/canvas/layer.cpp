@@ -82,8 +82,8 @@ void Canvas::begin_layer(double opacity, BlendMode mode) {
     if (const int max_depth = current_limits().nesting_depth; layers_.size() >= static_cast<std::size_t>(max_depth))
         throw Error(ErrorKind::Limit, "Canvas::begin_layer nested more than " + std::to_string(max_depth) + " deep");
     save();
-    auto layer = std::make_unique<Layer>(Layer{Pixmap(width(), height()), std::isfinite(opacity) ? std::clamp(opacity, 0.0, 1.0) : 0.0,
-                                               mode, stack_.size()});
+    auto layer = std::make_unique<Layer>(Layer{
+        Pixmap(width(), height()), std::isfinite(opacity) ? std::clamp(opacity, 0.0, 1.0) : 0.0, mode, stack_.size()});
     layers_.push_back(std::move(layer));
     // Inside the layer, drawing is plain: opacity and blend mode apply once, when it is composited.
     state_.opacity = 1;
@@ -113,14 +113,16 @@ void Canvas::draw_layer(const Pixmap& layer, double opacity, BlendMode mode) {
     for (int y = c.y0; y < y1; ++y) {
         const std::uint8_t* cov = nullptr;
         if (clip || ob != 255) {
-            const std::uint8_t* m =
-                clip ? clip->data.data() + static_cast<std::size_t>(y - clip->bounds.y0) * clip->bounds.width() + (c.x0 - clip->bounds.x0)
-                     : nullptr;
+            const std::uint8_t* m = clip ? clip->data.data() +
+                                               static_cast<std::size_t>(y - clip->bounds.y0) * clip->bounds.width() +
+                                               (c.x0 - clip->bounds.x0)
+                                         : nullptr;
             for (int i = 0; i < len; ++i)
                 coverage_[static_cast<std::size_t>(i)] = m ? mul_div255(m[i], ob) : static_cast<std::uint8_t>(ob);
             cov = coverage_.data();
         }
-        blend_span(dst.row(y) + 4 * static_cast<std::size_t>(c.x0), len, cov, layer.row(y) + 4 * static_cast<std::size_t>(c.x0), mode);
+        blend_span(dst.row(y) + 4 * static_cast<std::size_t>(c.x0), len, cov,
+                   layer.row(y) + 4 * static_cast<std::size_t>(c.x0), mode);
     }
 }
 

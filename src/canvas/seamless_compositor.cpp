@@ -29,7 +29,8 @@ void SeamlessCompositor::reset(const IRect& region) {
 void SeamlessCompositor::reset_into(Pixmap& target, const IRect& region) {
     if (region.empty()) throw Error(ErrorKind::InvalidArgument, "compositor size must be positive");
     if (region.x0 < 0 || region.y0 < 0 || region.x1 > target.width() || region.y1 > target.height())
-        throw Error(ErrorKind::InvalidArgument, "SeamlessCompositor::reset_into: the target does not contain the region");
+        throw Error(ErrorKind::InvalidArgument,
+                    "SeamlessCompositor::reset_into: the target does not contain the region");
     start(region, false);  // pixels already written into a target stay there
     layer_.clear();
     layer_.shrink_to_fit();
@@ -107,13 +108,14 @@ struct SeamlessSink final : SpanSink {
     }
     void row(int y, int x, int length, const std::uint8_t* coverage) override {
         if (length <= 0) return;
-        const std::size_t at = static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width) +
-                               static_cast<std::size_t>(x - x0);
+        const std::size_t at =
+            static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x - x0);
         int& l = lo[y - y0];
         int& h = hi[y - y0];
         l = std::min(l, x - x0);
         h = std::max(h, x - x0 + length);
-        std::uint8_t* L = layer + static_cast<std::size_t>(y - y0) * layer_stride + static_cast<std::size_t>(x - x0) * 4;
+        std::uint8_t* L =
+            layer + static_cast<std::size_t>(y - y0) * layer_stride + static_cast<std::size_t>(x - x0) * 4;
         std::uint8_t* C = cov + at;
         constexpr std::uint64_t kNone = 0, kFull = ~std::uint64_t(0);
         int i = 0;
@@ -127,8 +129,10 @@ struct SeamlessSink final : SpanSink {
             if (t8 == kNone) {
                 std::memcpy(C + i, &a8, 8);
                 std::uint8_t* const out = L + 4 * static_cast<std::size_t>(i);
-                if (a8 == kFull) std::memcpy(out, colour8, 32);
-                else for (int k = 0; k < 8; ++k) std::memcpy(out + 4 * k, &scaled[coverage[i + k]], 4);
+                if (a8 == kFull)
+                    std::memcpy(out, colour8, 32);
+                else
+                    for (int k = 0; k < 8; ++k) std::memcpy(out + 4 * k, &scaled[coverage[i + k]], 4);
                 continue;
             }
             for (int k = i; k < i + 8; ++k) pixel(coverage[k], C[k], L + 4 * static_cast<std::size_t>(k));
@@ -160,7 +164,8 @@ struct SeamlessSink final : SpanSink {
 
 }  // namespace
 
-void SeamlessCompositor::add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color, double opacity) {
+void SeamlessCompositor::add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color,
+                             double opacity) {
     add(raster, path, opts, color, opacity, region_);
 }
 
@@ -185,7 +190,8 @@ void SeamlessCompositor::add(Rasterizer& raster, const Path& path, const FillOpt
 void SeamlessCompositor::composite_onto(Pixmap& dst) const {
     if (into_ == &dst) return;  // the layer is dst's own pixels
     if (region_.x0 < 0 || region_.y0 < 0 || region_.x1 > dst.width() || region_.y1 > dst.height())
-        throw Error(ErrorKind::InvalidArgument, "SeamlessCompositor::composite_onto: the target does not contain the region");
+        throw Error(ErrorKind::InvalidArgument,
+                    "SeamlessCompositor::composite_onto: the target does not contain the region");
     for (int y = region_.y0; y < region_.y1; ++y) {
         const std::size_t r = static_cast<std::size_t>(y - region_.y0);
         if (lo_[r] >= hi_[r]) continue;  // no fill touched the row: the layer is transparent there

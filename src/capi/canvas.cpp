@@ -23,7 +23,8 @@ void check_finite(std::initializer_list<double> values, const char* what) {
 
 FillRule rule_of(const casteljau_fill_rule& rule) {
     const int r = casteljau::capi::raw_enum(rule);
-    if (r != CASTELJAU_FILL_NONZERO && r != CASTELJAU_FILL_EVENODD) throw Error(ErrorKind::InvalidArgument, "unknown fill rule");
+    if (r != CASTELJAU_FILL_NONZERO && r != CASTELJAU_FILL_EVENODD)
+        throw Error(ErrorKind::InvalidArgument, "unknown fill rule");
     return r == CASTELJAU_FILL_EVENODD ? FillRule::EvenOdd : FillRule::NonZero;
 }
 
@@ -60,16 +61,28 @@ casteljau_status casteljau_canvas_restore(casteljau_canvas* canvas) {
     return with(canvas, [](Canvas& c) { c.restore(); });
 }
 casteljau_status casteljau_canvas_translate(casteljau_canvas* canvas, double tx, double ty) {
-    return with(canvas, [&](Canvas& c) { check_finite({tx, ty}, "translation"); c.translate(tx, ty); });
+    return with(canvas, [&](Canvas& c) {
+        check_finite({tx, ty}, "translation");
+        c.translate(tx, ty);
+    });
 }
 casteljau_status casteljau_canvas_scale(casteljau_canvas* canvas, double sx, double sy) {
-    return with(canvas, [&](Canvas& c) { check_finite({sx, sy}, "scale"); c.scale(sx, sy); });
+    return with(canvas, [&](Canvas& c) {
+        check_finite({sx, sy}, "scale");
+        c.scale(sx, sy);
+    });
 }
 casteljau_status casteljau_canvas_rotate(casteljau_canvas* canvas, double radians) {
-    return with(canvas, [&](Canvas& c) { check_finite({radians}, "angle"); c.rotate(radians); });
+    return with(canvas, [&](Canvas& c) {
+        check_finite({radians}, "angle");
+        c.rotate(radians);
+    });
 }
 casteljau_status casteljau_canvas_skew(casteljau_canvas* canvas, double ax, double ay) {
-    return with(canvas, [&](Canvas& c) { check_finite({ax, ay}, "skew angle"); c.skew(ax, ay); });
+    return with(canvas, [&](Canvas& c) {
+        check_finite({ax, ay}, "skew angle");
+        c.skew(ax, ay);
+    });
 }
 casteljau_status casteljau_canvas_concat(casteljau_canvas* canvas, const casteljau_matrix* m) {
     return with(canvas, [&](Canvas& c) { c.concat(finite(m)); });
@@ -84,9 +97,13 @@ casteljau_status casteljau_canvas_get_transform(const casteljau_canvas* canvas, 
     });
 }
 casteljau_status casteljau_canvas_clip_rect(casteljau_canvas* canvas, double x, double y, double w, double h) {
-    return with(canvas, [&](Canvas& c) { check_finite({x, y, w, h}, "clip rectangle"); c.clip_rect(Rect::from_xywh(x, y, w, h)); });
+    return with(canvas, [&](Canvas& c) {
+        check_finite({x, y, w, h}, "clip rectangle");
+        c.clip_rect(Rect::from_xywh(x, y, w, h));
+    });
 }
-casteljau_status casteljau_canvas_clip_path(casteljau_canvas* canvas, const casteljau_path* path, casteljau_fill_rule rule) {
+casteljau_status casteljau_canvas_clip_path(casteljau_canvas* canvas, const casteljau_path* path,
+                                            casteljau_fill_rule rule) {
     return with(canvas, [&](Canvas& c) { c.clip_path(need(path, "path")->path, rule_of(rule)); });
 }
 casteljau_status casteljau_canvas_set_opacity(casteljau_canvas* canvas, double opacity) {
@@ -96,20 +113,23 @@ casteljau_status casteljau_canvas_set_opacity(casteljau_canvas* canvas, double o
     });
 }
 casteljau_status casteljau_canvas_set_blend_mode(casteljau_canvas* canvas, casteljau_blend_mode mode) {
-    return with(canvas, [&](Canvas& c) { c.set_blend_mode(casteljau::capi::blend_of(casteljau::capi::raw_enum(mode))); });
+    return with(canvas,
+                [&](Canvas& c) { c.set_blend_mode(casteljau::capi::blend_of(casteljau::capi::raw_enum(mode))); });
 }
 casteljau_status casteljau_canvas_set_tolerance(casteljau_canvas* canvas, double tolerance) {
     return with(canvas, [&](Canvas& c) {
-        if (!(tolerance >= 1e-4 && tolerance <= 10)) throw Error(ErrorKind::InvalidArgument, "tolerance must be in [1e-4, 10] px");
+        if (!(tolerance >= 1e-4 && tolerance <= 10))
+            throw Error(ErrorKind::InvalidArgument, "tolerance must be in [1e-4, 10] px");
         c.fill_options().tolerance = tolerance;
     });
 }
 casteljau_status casteljau_canvas_clear(casteljau_canvas* canvas, casteljau_color color) {
     return with(canvas, [&](Canvas& c) { c.clear(casteljau::capi::color(color)); });
 }
-casteljau_status casteljau_canvas_fill_path(casteljau_canvas* canvas, const casteljau_path* path, const casteljau_paint* paint,
-                                            casteljau_fill_rule rule) {
-    return with(canvas, [&](Canvas& c) { c.fill_path(need(path, "path")->path, need(paint, "paint")->paint, rule_of(rule)); });
+casteljau_status casteljau_canvas_fill_path(casteljau_canvas* canvas, const casteljau_path* path,
+                                            const casteljau_paint* paint, casteljau_fill_rule rule) {
+    return with(canvas,
+                [&](Canvas& c) { c.fill_path(need(path, "path")->path, need(paint, "paint")->paint, rule_of(rule)); });
 }
 casteljau_status casteljau_canvas_fill_rect(casteljau_canvas* canvas, double x, double y, double w, double h,
                                             const casteljau_paint* paint) {
@@ -124,15 +144,16 @@ casteljau_status casteljau_canvas_stroke_path(casteljau_canvas* canvas, const ca
         c.stroke_path(need(path, "path")->path, need(stroke, "stroke")->style, need(paint, "paint")->paint);
     });
 }
-casteljau_status casteljau_canvas_draw_image(casteljau_canvas* canvas, const casteljau_image* image, const casteljau_matrix* m,
-                                             casteljau_sampling sampling, double opacity) {
+casteljau_status casteljau_canvas_draw_image(casteljau_canvas* canvas, const casteljau_image* image,
+                                             const casteljau_matrix* m, casteljau_sampling sampling, double opacity) {
     return with(canvas, [&](Canvas& c) {
         if (!(opacity >= 0 && opacity <= 1)) throw Error(ErrorKind::InvalidArgument, "opacity must be in [0, 1]");
-        c.draw_image(need(image, "image")->pixmap, m ? finite(m) : Affine{}, casteljau::capi::sampling_of(casteljau::capi::raw_enum(sampling)), opacity);
+        c.draw_image(need(image, "image")->pixmap, m ? finite(m) : Affine{},
+                     casteljau::capi::sampling_of(casteljau::capi::raw_enum(sampling)), opacity);
     });
 }
-casteljau_status casteljau_canvas_draw_text(casteljau_canvas* canvas, const casteljau_font* font, const char* text, double size,
-                                            double x, double y, const casteljau_paint* paint) {
+casteljau_status casteljau_canvas_draw_text(casteljau_canvas* canvas, const casteljau_font* font, const char* text,
+                                            double size, double x, double y, const casteljau_paint* paint) {
     return with(canvas, [&](Canvas& c) {
         check_finite({x, y}, "text origin");
         draw_text(c, need(text, "text"), need(font, "font")->font, size, {x, y}, need(paint, "paint")->paint);

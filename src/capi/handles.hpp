@@ -101,15 +101,11 @@ casteljau_status guard(F&& f) noexcept {
     try {
         f();
         return CASTELJAU_OK;
-    } catch (const Error& e) {
-        return fail(status_of(e.kind()), e.what());
-    } catch (const Cancelled& e) {
+    } catch (const Error& e) { return fail(status_of(e.kind()), e.what()); } catch (const Cancelled& e) {
         return fail(CASTELJAU_ERROR_CANCELLED, e.what());
     } catch (const std::bad_alloc&) {
         return fail(CASTELJAU_ERROR_OUT_OF_MEMORY, "out of memory");
-    } catch (const std::exception& e) {
-        return fail(CASTELJAU_ERROR_INTERNAL, e.what());
-    } catch (...) {
+    } catch (const std::exception& e) { return fail(CASTELJAU_ERROR_INTERNAL, e.what()); } catch (...) {
         return fail(CASTELJAU_ERROR_INTERNAL, "unknown error");
     }
 }

@@ -49,7 +49,8 @@ bool valid_size(std::size_t size) {
     Limits l;
     bool ok = false;
     each_field(c, l, [&](auto& field, auto&) {
-        const std::size_t end = reinterpret_cast<const char*>(&field) - reinterpret_cast<const char*>(&c) + sizeof field;
+        const std::size_t end =
+            reinterpret_cast<const char*>(&field) - reinterpret_cast<const char*>(&c) + sizeof field;
         if (end == size) ok = true;
     });
     return ok;
@@ -76,7 +77,8 @@ extern "C" {
 casteljau_status casteljau_limits_get(casteljau_limits* out, size_t size) {
     return guard([&] {
         casteljau::capi::need(out, "limits");
-        if (!valid_size(size)) throw Error(ErrorKind::InvalidArgument, "casteljau_limits_get: size is not a casteljau_limits size");
+        if (!valid_size(size))
+            throw Error(ErrorKind::InvalidArgument, "casteljau_limits_get: size is not a casteljau_limits size");
         const casteljau_limits c = to_c(current_limits());
         std::memcpy(out, &c, size);
     });
@@ -85,7 +87,8 @@ casteljau_status casteljau_limits_get(casteljau_limits* out, size_t size) {
 casteljau_status casteljau_limits_set(const casteljau_limits* limits, size_t size) {
     return guard([&] {
         casteljau::capi::need(limits, "limits");
-        if (!valid_size(size)) throw Error(ErrorKind::InvalidArgument, "casteljau_limits_set: size is not a casteljau_limits size");
+        if (!valid_size(size))
+            throw Error(ErrorKind::InvalidArgument, "casteljau_limits_set: size is not a casteljau_limits size");
         // The caller's prefix over the limits in force.
         Limits l = current_limits();
         casteljau_limits c = to_c(l);

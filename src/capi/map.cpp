@@ -22,7 +22,9 @@ bool ends_with(std::string_view s, std::string_view suffix) {
 MapData read_map_path(const std::string& path, const std::string& layer) {
     if (ends_with(path, ".geojsonl") || ends_with(path, ".geojsons") || ends_with(path, ".ndjson") ||
         ends_with(path, ".geojsonseq")) {
-        if (!layer.empty()) throw Error(ErrorKind::InvalidArgument, "a layer selects a TopoJSON object, but the input is GeoJSON lines");
+        if (!layer.empty())
+            throw Error(ErrorKind::InvalidArgument,
+                        "a layer selects a TopoJSON object, but the input is GeoJSON lines");
         const std::vector<std::uint8_t> bytes = read_file(path);
         return read_geojson_lines(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
     }
@@ -60,7 +62,8 @@ Pixmap map_image(const casteljau_map* map, const casteljau_map_style* style, con
         mo.width = fallback_width;
         mo.height = fallback_height;
     }
-    if (mo.width < 1) throw Error(ErrorKind::InvalidArgument, "the map options have no size (casteljau_map_options_set_size)");
+    if (mo.width < 1)
+        throw Error(ErrorKind::InvalidArgument, "the map options have no size (casteljau_map_options_set_size)");
     return render_map(data, o.projection, style ? style->style : MapStyle{}, mo);
 }
 
@@ -100,15 +103,19 @@ void casteljau_map_style_destroy(casteljau_map_style* style) { delete style; }
 
 casteljau_status casteljau_map_style_set_fill(casteljau_map_style* style, const casteljau_color* fill) {
     return edit_layers(style, [&](MapLayerStyle& l) {
-        if (fill) l.fill = casteljau::capi::color(*fill);
-        else l.fill.reset();
+        if (fill)
+            l.fill = casteljau::capi::color(*fill);
+        else
+            l.fill.reset();
     });
 }
 
 casteljau_status casteljau_map_style_set_stroke(casteljau_map_style* style, const casteljau_color* stroke) {
     return edit_layers(style, [&](MapLayerStyle& l) {
-        if (stroke) l.stroke = casteljau::capi::color(*stroke);
-        else l.stroke.reset();
+        if (stroke)
+            l.stroke = casteljau::capi::color(*stroke);
+        else
+            l.stroke.reset();
     });
 }
 
@@ -130,8 +137,8 @@ casteljau_status casteljau_map_style_set_fill_by(casteljau_map_style* style, con
     return edit_layers(style, [&](MapLayerStyle& l) { l.fill_by = casteljau::capi::text_or_empty(property); });
 }
 
-casteljau_status casteljau_map_style_set_ramp(casteljau_map_style* style, double min, casteljau_color min_color, double max,
-                                              casteljau_color max_color) {
+casteljau_status casteljau_map_style_set_ramp(casteljau_map_style* style, double min, casteljau_color min_color,
+                                              double max, casteljau_color max_color) {
     return edit_layers(style, [&](MapLayerStyle& l) {
         if (!std::isfinite(min) || !std::isfinite(max) || !(min < max))
             throw Error(ErrorKind::InvalidArgument, "a ramp needs finite values with min < max");
@@ -146,7 +153,8 @@ casteljau_status casteljau_map_style_set_background(casteljau_map_style* style, 
 casteljau_status casteljau_map_style_set_line_join(casteljau_map_style* style, casteljau_line_join join) {
     return edit_style(style, [&](MapStyle& s) {
         const int j = casteljau::capi::raw_enum(join);
-        if (j < CASTELJAU_JOIN_MITER || j > CASTELJAU_JOIN_BEVEL) throw Error(ErrorKind::InvalidArgument, "unknown line join");
+        if (j < CASTELJAU_JOIN_MITER || j > CASTELJAU_JOIN_BEVEL)
+            throw Error(ErrorKind::InvalidArgument, "unknown line join");
         s.join = static_cast<LineJoin>(j);
     });
 }
@@ -154,7 +162,8 @@ casteljau_status casteljau_map_style_set_line_join(casteljau_map_style* style, c
 casteljau_status casteljau_map_style_set_line_cap(casteljau_map_style* style, casteljau_line_cap cap) {
     return edit_style(style, [&](MapStyle& s) {
         const int c = casteljau::capi::raw_enum(cap);
-        if (c < CASTELJAU_CAP_BUTT || c > CASTELJAU_CAP_SQUARE) throw Error(ErrorKind::InvalidArgument, "unknown line cap");
+        if (c < CASTELJAU_CAP_BUTT || c > CASTELJAU_CAP_SQUARE)
+            throw Error(ErrorKind::InvalidArgument, "unknown line cap");
         s.cap = static_cast<LineCap>(c);
     });
 }
@@ -166,7 +175,9 @@ casteljau_status casteljau_map_style_set_point_radius(casteljau_map_style* style
     });
 }
 
-casteljau_map_options* casteljau_map_options_create(void) { return casteljau::capi::create_default<casteljau_map_options>(); }
+casteljau_map_options* casteljau_map_options_create(void) {
+    return casteljau::capi::create_default<casteljau_map_options>();
+}
 
 void casteljau_map_options_destroy(casteljau_map_options* options) { delete options; }
 
@@ -180,14 +191,16 @@ casteljau_status casteljau_map_options_set_size(casteljau_map_options* options, 
 }
 
 casteljau_status casteljau_map_options_set_projection(casteljau_map_options* options, const char* projection) {
-    return edit_options(options, [&](casteljau_map_options& o) { o.projection = MapProjection::parse(need(projection, "projection")); });
+    return edit_options(options, [&](casteljau_map_options& o) {
+        o.projection = MapProjection::parse(need(projection, "projection"));
+    });
 }
 
 casteljau_status casteljau_map_options_set_bbox(casteljau_map_options* options, double west, double south, double east,
                                                 double north) {
     return edit_options(options, [&](casteljau_map_options& o) {
-        if (!std::isfinite(west) || !std::isfinite(south) || !std::isfinite(east) || !std::isfinite(north) || !(west < east) ||
-            !(south < north) || south < -90 || north > 90)
+        if (!std::isfinite(west) || !std::isfinite(south) || !std::isfinite(east) || !std::isfinite(north) ||
+            !(west < east) || !(south < north) || south < -90 || north > 90)
             throw Error(ErrorKind::InvalidArgument, "a bbox needs finite west < east and -90 <= south < north <= 90");
         o.options.bbox = Rect{west, south, east, north};
     });

@@ -28,7 +28,8 @@ std::vector<GradientStop> stops_of(const casteljau_gradient_stop* stops, size_t 
 }
 
 SpreadMethod spread_of(int s) {
-    if (s < CASTELJAU_SPREAD_PAD || s > CASTELJAU_SPREAD_REPEAT) throw Error(ErrorKind::InvalidArgument, "unknown spread method");
+    if (s < CASTELJAU_SPREAD_PAD || s > CASTELJAU_SPREAD_REPEAT)
+        throw Error(ErrorKind::InvalidArgument, "unknown spread method");
     return static_cast<SpreadMethod>(s);
 }
 
@@ -47,11 +48,13 @@ void check_finite(std::initializer_list<double> values) {
 
 namespace casteljau::capi {
 ImageSampling sampling_of(int s) {
-    if (s < CASTELJAU_SAMPLING_NEAREST || s > CASTELJAU_SAMPLING_BICUBIC) throw Error(ErrorKind::InvalidArgument, "unknown sampling");
+    if (s < CASTELJAU_SAMPLING_NEAREST || s > CASTELJAU_SAMPLING_BICUBIC)
+        throw Error(ErrorKind::InvalidArgument, "unknown sampling");
     return static_cast<ImageSampling>(s);
 }
 BlendMode blend_of(int m) {
-    if (m < CASTELJAU_BLEND_NORMAL || m > CASTELJAU_BLEND_PLUS) throw Error(ErrorKind::InvalidArgument, "unknown blend mode");
+    if (m < CASTELJAU_BLEND_NORMAL || m > CASTELJAU_BLEND_PLUS)
+        throw Error(ErrorKind::InvalidArgument, "unknown blend mode");
     return static_cast<BlendMode>(m);
 }
 }  // namespace casteljau::capi
@@ -62,23 +65,26 @@ casteljau_status casteljau_paint_create_solid(casteljau_color color, casteljau_p
     return create(out, [&] { return Paint::solid(casteljau::capi::color(color)); });
 }
 
-casteljau_status casteljau_paint_create_linear(double x0, double y0, double x1, double y1, const casteljau_gradient_stop* stops,
-                                               size_t count, casteljau_spread spread, const casteljau_matrix* m,
+casteljau_status casteljau_paint_create_linear(double x0, double y0, double x1, double y1,
+                                               const casteljau_gradient_stop* stops, size_t count,
+                                               casteljau_spread spread, const casteljau_matrix* m,
                                                casteljau_paint** out) {
     return create(out, [&] {
         check_finite({x0, y0, x1, y1});
-        return Paint::shaded(Shader::linear({x0, y0}, {x1, y1}, stops_of(stops, count), spread_of(casteljau::capi::raw_enum(spread)), finite_matrix(m)));
+        return Paint::shaded(Shader::linear({x0, y0}, {x1, y1}, stops_of(stops, count),
+                                            spread_of(casteljau::capi::raw_enum(spread)), finite_matrix(m)));
     });
 }
 
 casteljau_status casteljau_paint_create_radial(double cx, double cy, double r, double fx, double fy, double fr,
-                                               const casteljau_gradient_stop* stops, size_t count, casteljau_spread spread,
-                                               const casteljau_matrix* m, casteljau_paint** out) {
+                                               const casteljau_gradient_stop* stops, size_t count,
+                                               casteljau_spread spread, const casteljau_matrix* m,
+                                               casteljau_paint** out) {
     return create(out, [&] {
         check_finite({cx, cy, r, fx, fy, fr});
         if (r < 0 || fr < 0) throw Error(ErrorKind::InvalidArgument, "gradient radii must be >= 0");
-        return Paint::shaded(
-            Shader::radial({cx, cy}, r, {fx, fy}, fr, stops_of(stops, count), spread_of(casteljau::capi::raw_enum(spread)), finite_matrix(m)));
+        return Paint::shaded(Shader::radial({cx, cy}, r, {fx, fy}, fr, stops_of(stops, count),
+                                            spread_of(casteljau::capi::raw_enum(spread)), finite_matrix(m)));
     });
 }
 
@@ -86,7 +92,9 @@ casteljau_status casteljau_paint_create_image(const casteljau_image* image, cast
                                               const casteljau_matrix* m, int repeat, casteljau_paint** out) {
     return create(out, [&] {
         auto copy = std::make_shared<const Pixmap>(need(image, "image")->pixmap);
-        return Paint::shaded(Shader::image(std::move(copy), casteljau::capi::sampling_of(casteljau::capi::raw_enum(sampling)), finite_matrix(m), repeat != 0));
+        return Paint::shaded(Shader::image(std::move(copy),
+                                           casteljau::capi::sampling_of(casteljau::capi::raw_enum(sampling)),
+                                           finite_matrix(m), repeat != 0));
     });
 }
 
@@ -100,7 +108,8 @@ casteljau_status casteljau_paint_set_opacity(casteljau_paint* paint, double opac
 }
 
 casteljau_status casteljau_paint_set_blend_mode(casteljau_paint* paint, casteljau_blend_mode mode) {
-    return guard([&] { need(paint, "paint")->paint.blend = casteljau::capi::blend_of(casteljau::capi::raw_enum(mode)); });
+    return guard(
+        [&] { need(paint, "paint")->paint.blend = casteljau::capi::blend_of(casteljau::capi::raw_enum(mode)); });
 }
 
 casteljau_status casteljau_paint_set_linear_blend(casteljau_paint* paint, int linear) {

@@ -34,15 +34,24 @@ casteljau_status casteljau_path_from_svg(const char* data, casteljau_path** out)
 }
 
 casteljau_status casteljau_path_move_to(casteljau_path* path, double x, double y) {
-    return edit(path, [&](Path& p) { check_finite({x, y}); p.move_to(x, y); });
+    return edit(path, [&](Path& p) {
+        check_finite({x, y});
+        p.move_to(x, y);
+    });
 }
 
 casteljau_status casteljau_path_line_to(casteljau_path* path, double x, double y) {
-    return edit(path, [&](Path& p) { check_finite({x, y}); p.line_to(x, y); });
+    return edit(path, [&](Path& p) {
+        check_finite({x, y});
+        p.line_to(x, y);
+    });
 }
 
 casteljau_status casteljau_path_quad_to(casteljau_path* path, double cx, double cy, double x, double y) {
-    return edit(path, [&](Path& p) { check_finite({cx, cy, x, y}); p.quad_to({cx, cy}, {x, y}); });
+    return edit(path, [&](Path& p) {
+        check_finite({cx, cy, x, y});
+        p.quad_to({cx, cy}, {x, y});
+    });
 }
 
 casteljau_status casteljau_path_cubic_to(casteljau_path* path, double c1x, double c1y, double c2x, double c2y, double x,
@@ -58,11 +67,17 @@ casteljau_status casteljau_path_close(casteljau_path* path) {
 }
 
 casteljau_status casteljau_path_add_rect(casteljau_path* path, double x, double y, double w, double h) {
-    return edit(path, [&](Path& p) { check_finite({x, y, w, h}); p.add_rect(Rect::from_xywh(x, y, w, h)); });
+    return edit(path, [&](Path& p) {
+        check_finite({x, y, w, h});
+        p.add_rect(Rect::from_xywh(x, y, w, h));
+    });
 }
 
 casteljau_status casteljau_path_add_ellipse(casteljau_path* path, double cx, double cy, double rx, double ry) {
-    return edit(path, [&](Path& p) { check_finite({cx, cy, rx, ry}); p.add_ellipse({cx, cy}, rx, ry); });
+    return edit(path, [&](Path& p) {
+        check_finite({cx, cy, rx, ry});
+        p.add_ellipse({cx, cy}, rx, ry);
+    });
 }
 
 casteljau_status casteljau_path_add_round_rect(casteljau_path* path, double x, double y, double w, double h, double rx,
@@ -101,7 +116,8 @@ void casteljau_stroke_destroy(casteljau_stroke* stroke) { delete stroke; }
 
 casteljau_status casteljau_stroke_set_width(casteljau_stroke* stroke, double width) {
     return guard([&] {
-        if (!(width >= 0 && std::isfinite(width))) throw Error(ErrorKind::InvalidArgument, "stroke width must be finite and >= 0");
+        if (!(width >= 0 && std::isfinite(width)))
+            throw Error(ErrorKind::InvalidArgument, "stroke width must be finite and >= 0");
         need(stroke, "stroke")->style.width = width;
     });
 }
@@ -109,15 +125,18 @@ casteljau_status casteljau_stroke_set_width(casteljau_stroke* stroke, double wid
 casteljau_status casteljau_stroke_set_cap(casteljau_stroke* stroke, casteljau_line_cap line_cap) {
     return guard([&] {
         const int cap = casteljau::capi::raw_enum(line_cap);
-        if (cap < CASTELJAU_CAP_BUTT || cap > CASTELJAU_CAP_SQUARE) throw Error(ErrorKind::InvalidArgument, "unknown line cap");
+        if (cap < CASTELJAU_CAP_BUTT || cap > CASTELJAU_CAP_SQUARE)
+            throw Error(ErrorKind::InvalidArgument, "unknown line cap");
         need(stroke, "stroke")->style.cap = static_cast<LineCap>(cap);
     });
 }
 
-casteljau_status casteljau_stroke_set_join(casteljau_stroke* stroke, casteljau_line_join line_join, double miter_limit) {
+casteljau_status casteljau_stroke_set_join(casteljau_stroke* stroke, casteljau_line_join line_join,
+                                           double miter_limit) {
     return guard([&] {
         const int join = casteljau::capi::raw_enum(line_join);
-        if (join < CASTELJAU_JOIN_MITER || join > CASTELJAU_JOIN_BEVEL) throw Error(ErrorKind::InvalidArgument, "unknown line join");
+        if (join < CASTELJAU_JOIN_MITER || join > CASTELJAU_JOIN_BEVEL)
+            throw Error(ErrorKind::InvalidArgument, "unknown line join");
         if (!std::isfinite(miter_limit)) throw Error(ErrorKind::InvalidArgument, "miter limit must be finite");
         StrokeStyle& s = need(stroke, "stroke")->style;
         s.join = static_cast<LineJoin>(join);
@@ -125,7 +144,8 @@ casteljau_status casteljau_stroke_set_join(casteljau_stroke* stroke, casteljau_l
     });
 }
 
-casteljau_status casteljau_stroke_set_dashes(casteljau_stroke* stroke, const double* dashes, size_t count, double offset) {
+casteljau_status casteljau_stroke_set_dashes(casteljau_stroke* stroke, const double* dashes, size_t count,
+                                             double offset) {
     return guard([&] {
         StrokeStyle& s = need(stroke, "stroke")->style;
         if (count > 0) need(dashes, "dashes");

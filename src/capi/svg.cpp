@@ -41,15 +41,20 @@ std::string& family(SvgOptions& o, int generic) {
 
 // The output size of `casteljau svg` for -w, --height and -z (0 for an option not given).
 std::pair<int, int> output_size(const SvgDocument& doc, int width, int height, double zoom) {
-    if (width < 0 || height < 0) throw Error(ErrorKind::InvalidArgument, "the output width and height must be 0 or more");
+    if (width < 0 || height < 0)
+        throw Error(ErrorKind::InvalidArgument, "the output width and height must be 0 or more");
     if (zoom != 0 && zoom != 1 && (width > 0 || height > 0))
         throw Error(ErrorKind::InvalidArgument, "a zoom excludes an output width or height");
     if (zoom != 0) casteljau::capi::check_range(zoom, 1e-3, 1e3, "zoom");
     std::pair<int, int> size;
-    if (width > 0 && height > 0) size = {width, height};
-    else if (width > 0) size = doc.output_size_for_width(width);
-    else if (height > 0) size = doc.output_size_for_height(height);
-    else size = doc.output_size_for_zoom(zoom == 0 ? 1 : zoom);
+    if (width > 0 && height > 0)
+        size = {width, height};
+    else if (width > 0)
+        size = doc.output_size_for_width(width);
+    else if (height > 0)
+        size = doc.output_size_for_height(height);
+    else
+        size = doc.output_size_for_zoom(zoom == 0 ? 1 : zoom);
     check_canvas_size(size.first, size.second);
     return size;
 }
@@ -58,7 +63,9 @@ std::pair<int, int> output_size(const SvgDocument& doc, int width, int height, d
 
 extern "C" {
 
-casteljau_svg_options* casteljau_svg_options_create(void) { return casteljau::capi::create_default<casteljau_svg_options>(); }
+casteljau_svg_options* casteljau_svg_options_create(void) {
+    return casteljau::capi::create_default<casteljau_svg_options>();
+}
 
 void casteljau_svg_options_destroy(casteljau_svg_options* options) { delete options; }
 

@@ -50,13 +50,15 @@ std::vector<std::unique_ptr<Font>> fonts_with(const casteljau_font* const* fonts
         for (const VariationAxis& a : f->axes()) axes += (axes.empty() ? "" : ", ") + a.tag;
     for (const Variation& v : variations) {
         if (std::any_of(out.begin(), out.end(), [&](const auto& f) {
-                return std::any_of(f->axes().begin(), f->axes().end(), [&](const VariationAxis& a) { return a.tag == v.tag; });
+                return std::any_of(f->axes().begin(), f->axes().end(),
+                                   [&](const VariationAxis& a) { return a.tag == v.tag; });
             }))
             continue;
         std::string tag = v.tag;
         while (!tag.empty() && tag.back() == ' ') tag.pop_back();
         throw Error(ErrorKind::Font, "unknown variation axis '" + tag + "': " +
-                                         (axes.empty() ? std::string("no font given is a variable font") : "the fonts' axes are " + axes));
+                                         (axes.empty() ? std::string("no font given is a variable font")
+                                                       : "the fonts' axes are " + axes));
     }
     for (auto& f : out) {
         std::vector<Variation> mine;
@@ -91,7 +93,9 @@ casteljau_text_layout make_layout(const char* text, const casteljau_font* const*
 
 extern "C" {
 
-casteljau_text_style* casteljau_text_style_create(void) { return casteljau::capi::create_default<casteljau_text_style>(); }
+casteljau_text_style* casteljau_text_style_create(void) {
+    return casteljau::capi::create_default<casteljau_text_style>();
+}
 
 void casteljau_text_style_destroy(casteljau_text_style* style) { delete style; }
 
@@ -104,7 +108,8 @@ casteljau_status casteljau_text_style_set_size(casteljau_text_style* style, doub
 
 casteljau_status casteljau_text_style_set_line_height(casteljau_text_style* style, double line_height) {
     return edit(style, [&](casteljau_text_style& s) {
-        if (!(line_height > 0 && line_height <= 100)) throw Error(ErrorKind::InvalidArgument, "line height must be above 0 and at most 100");
+        if (!(line_height > 0 && line_height <= 100))
+            throw Error(ErrorKind::InvalidArgument, "line height must be above 0 and at most 100");
         s.style.line_height = line_height;
     });
 }
@@ -119,7 +124,8 @@ casteljau_status casteljau_text_style_set_width(casteljau_text_style* style, dou
 casteljau_status casteljau_text_style_set_align(casteljau_text_style* style, casteljau_text_align align) {
     return edit(style, [&](casteljau_text_style& s) {
         const int a = casteljau::capi::raw_enum(align);
-        if (a < CASTELJAU_ALIGN_START || a > CASTELJAU_ALIGN_RIGHT) throw Error(ErrorKind::InvalidArgument, "unknown alignment");
+        if (a < CASTELJAU_ALIGN_START || a > CASTELJAU_ALIGN_RIGHT)
+            throw Error(ErrorKind::InvalidArgument, "unknown alignment");
         s.style.align = static_cast<TextAlign>(a);
     });
 }
@@ -127,7 +133,8 @@ casteljau_status casteljau_text_style_set_align(casteljau_text_style* style, cas
 casteljau_status casteljau_text_style_set_direction(casteljau_text_style* style, casteljau_text_direction direction) {
     return edit(style, [&](casteljau_text_style& s) {
         const int d = casteljau::capi::raw_enum(direction);
-        if (d < CASTELJAU_DIRECTION_AUTO || d > CASTELJAU_DIRECTION_RTL) throw Error(ErrorKind::InvalidArgument, "unknown direction");
+        if (d < CASTELJAU_DIRECTION_AUTO || d > CASTELJAU_DIRECTION_RTL)
+            throw Error(ErrorKind::InvalidArgument, "unknown direction");
         s.style.direction = static_cast<TextDirection>(d);
     });
 }
@@ -145,7 +152,8 @@ casteljau_status casteljau_text_style_add_feature(casteljau_text_style* style, c
 }
 
 casteljau_status casteljau_text_style_add_variation(casteljau_text_style* style, const char* variation) {
-    return edit(style, [&](casteljau_text_style& s) { s.variations.push_back(parse_variation(need(variation, "variation"))); });
+    return edit(
+        style, [&](casteljau_text_style& s) { s.variations.push_back(parse_variation(need(variation, "variation"))); });
 }
 
 casteljau_status casteljau_text_layout_create(const char* text, const casteljau_font* const* fonts, size_t count,
@@ -178,9 +186,12 @@ casteljau_status casteljau_text_layout_bounds(const casteljau_text_layout* layou
     });
 }
 
-size_t casteljau_text_layout_line_count(const casteljau_text_layout* layout) { return layout ? layout->layout.lines.size() : 0; }
+size_t casteljau_text_layout_line_count(const casteljau_text_layout* layout) {
+    return layout ? layout->layout.lines.size() : 0;
+}
 
-casteljau_status casteljau_text_layout_line(const casteljau_text_layout* layout, size_t index, casteljau_text_line* out) {
+casteljau_status casteljau_text_layout_line(const casteljau_text_layout* layout, size_t index,
+                                            casteljau_text_line* out) {
     return guard([&] {
         const casteljau_text_layout& l = *need(layout, "layout");
         need(out, "out");
@@ -196,7 +207,8 @@ casteljau_status casteljau_text_layout_draw(casteljau_text_layout* layout, caste
     return guard([&] {
         const TextLayout& l = need(layout, "layout")->layout;
         Canvas& c = *need(canvas, "canvas")->canvas;
-        if (!std::isfinite(x) || !std::isfinite(y)) throw Error(ErrorKind::InvalidArgument, "text origin is not finite");
+        if (!std::isfinite(x) || !std::isfinite(y))
+            throw Error(ErrorKind::InvalidArgument, "text origin is not finite");
         draw_text(c, l, {x, y}, need(paint, "paint")->paint);
     });
 }

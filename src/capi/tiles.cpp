@@ -38,13 +38,17 @@ MapStyle scaled_style(const casteljau_map_style* style, int scale) {
     return st;
 }
 
-TileStats write_pyramid(const MapData& data, const MapStyle& style, const TileOptions& to, const casteljau_tile_options& o,
-                        const std::string& output, const std::function<void(std::uint64_t, std::uint64_t)>& progress) {
+TileStats write_pyramid(const MapData& data, const MapStyle& style, const TileOptions& to,
+                        const casteljau_tile_options& o, const std::string& output,
+                        const std::function<void(std::uint64_t, std::uint64_t)>& progress) {
     if (is_mbtiles(output)) {
-        if (to.resume) throw Error(ErrorKind::InvalidArgument, "resume works with a folder output (an .mbtiles file is written whole)");
+        if (to.resume)
+            throw Error(ErrorKind::InvalidArgument,
+                        "resume works with a folder output (an .mbtiles file is written whole)");
         MbtilesWriter w(output, o.name, to.min_zoom, to.max_zoom, Rect{-180, -85.0511287798, 180, 85.0511287798});
         const TileStats st = render_tiles(
-            data, style, to, [&](int z, int x, int y, const std::vector<std::uint8_t>& png) { w.write(z, x, y, png); }, {}, progress);
+            data, style, to, [&](int z, int x, int y, const std::vector<std::uint8_t>& png) { w.write(z, x, y, png); },
+            {}, progress);
         w.finish();
         return st;
     }
@@ -59,7 +63,9 @@ TileStats write_pyramid(const MapData& data, const MapStyle& style, const TileOp
 
 extern "C" {
 
-casteljau_tile_options* casteljau_tile_options_create(void) { return casteljau::capi::create_default<casteljau_tile_options>(); }
+casteljau_tile_options* casteljau_tile_options_create(void) {
+    return casteljau::capi::create_default<casteljau_tile_options>();
+}
 
 void casteljau_tile_options_destroy(casteljau_tile_options* options) { delete options; }
 

@@ -31,27 +31,32 @@ struct BezierOptions {
     int derivative = 0, times = 1;
     std::string method = "combined", subcurve, render, size = "400x400";
     double construction = 0;
-    CLI::Option *o_points = nullptr, *o_file = nullptr, *o_eval = nullptr, *o_derivative = nullptr, *o_elevate = nullptr,
-                *o_times = nullptr, *o_reduce = nullptr, *o_method = nullptr, *o_split = nullptr, *o_subcurve = nullptr,
-                *o_triangle = nullptr, *o_bounds = nullptr, *o_power = nullptr, *o_curvature = nullptr,
-                *o_interpolate = nullptr, *o_render = nullptr, *o_size = nullptr, *o_construction = nullptr;
+    CLI::Option *o_points = nullptr, *o_file = nullptr, *o_eval = nullptr, *o_derivative = nullptr,
+                *o_elevate = nullptr, *o_times = nullptr, *o_reduce = nullptr, *o_method = nullptr, *o_split = nullptr,
+                *o_subcurve = nullptr, *o_triangle = nullptr, *o_bounds = nullptr, *o_power = nullptr,
+                *o_curvature = nullptr, *o_interpolate = nullptr, *o_render = nullptr, *o_size = nullptr,
+                *o_construction = nullptr;
 };
 
-template <CurvePoint P> void print_points(std::ostream& out, std::span<const P> pts, double scale) {
+template <CurvePoint P>
+void print_points(std::ostream& out, std::span<const P> pts, double scale) {
     for (const P& p : pts) out << format_point(to_p3(p), scale, point_dimension<P>) << '\n';
 }
 
-template <CurvePoint P> void run(const BezierOptions& o, const PointList& input) {
+template <CurvePoint P>
+void run(const BezierOptions& o, const PointList& input) {
     const double scale = input.scale();
     std::ostringstream out;
     auto print = [&](const P& p) { out << format_point(to_p3(p), scale, point_dimension<P>) << '\n'; };
 
     if (o.o_interpolate->count()) {
         if (input.points.size() != 4)
-            throw Error(ErrorKind::InvalidData, "--interpolate needs exactly 4 points (Q0..Q3 at t = 0, 1/3, 2/3, 1), got " +
-                                                    std::to_string(input.points.size()));
+            throw Error(ErrorKind::InvalidData,
+                        "--interpolate needs exactly 4 points (Q0..Q3 at t = 0, 1/3, 2/3, 1), got " +
+                            std::to_string(input.points.size()));
         const auto& q = input.points;
-        const Bezier<P> c = interpolate_cubic(to_point<P>(q[0]), to_point<P>(q[1]), to_point<P>(q[2]), to_point<P>(q[3]));
+        const Bezier<P> c =
+            interpolate_cubic(to_point<P>(q[0]), to_point<P>(q[1]), to_point<P>(q[2]), to_point<P>(q[3]));
         print_points<P>(out, c.points(), scale);
         std::cout << out.str();
         return;
@@ -82,7 +87,7 @@ template <CurvePoint P> void run(const BezierOptions& o, const PointList& input)
     } else if (o.o_elevate->count()) {
         print_points<P>(out, curve.elevated(o.times).points(), scale);
     } else if (o.o_reduce->count()) {
-        const ReductionMethod m = o.method == "forward" ? ReductionMethod::Forward
+        const ReductionMethod m = o.method == "forward"    ? ReductionMethod::Forward
                                   : o.method == "backward" ? ReductionMethod::Backward
                                                            : ReductionMethod::Combined;
         const Reduction<P> r = reduce_degree(curve, m);
@@ -112,8 +117,10 @@ template <CurvePoint P> void run(const BezierOptions& o, const PointList& input)
         print_points<P>(out, curve.to_power().coefficients, scale);
     } else if (o.o_curvature->count()) {
         double k = 0;
-        if constexpr (std::same_as<P, Point>) k = curve.signed_curvature(o.curvature);
-        else k = curve.curvature(o.curvature);
+        if constexpr (std::same_as<P, Point>)
+            k = curve.signed_curvature(o.curvature);
+        else
+            k = curve.curvature(o.curvature);
         out << (std::isinf(k) ? std::string("inf") : format_number(k, 0)) << '\n';
     }
     std::cout << out.str();
@@ -129,46 +136,63 @@ void register_bezier(CLI::App& app) {
         "Exactly one action. Points print as 'x y' (or 'x y z') one per line; several curves or triangle rows are\n"
         "separated by an empty line. Numbers: 12 significant digits, rounding noise below 1e-12 x the input scale\n"
         "printed as 0. Exit status 1: bad data; 2: bad usage.");
-    o->o_points = sub->add_option("--points", o->points, "Control points \"x,y x,y ...\" (or x,y,z); degree = count - 1 (1..64)");
-    o->o_file = sub->add_option("--points-file", o->points_file, "JSON file {\"points\": [[x, y], ...]} ('-' reads stdin)");
-    o->o_eval = sub->add_option("--eval", o->eval, "Print P(T) (de Casteljau), or the K-th derivative with --derivative K");
-    o->o_derivative = sub->add_option("--derivative", o->derivative, "Derivative order K >= 0; alone, print the K-th derivative's control points")
+    o->o_points =
+        sub->add_option("--points", o->points, "Control points \"x,y x,y ...\" (or x,y,z); degree = count - 1 (1..64)");
+    o->o_file =
+        sub->add_option("--points-file", o->points_file, "JSON file {\"points\": [[x, y], ...]} ('-' reads stdin)");
+    o->o_eval =
+        sub->add_option("--eval", o->eval, "Print P(T) (de Casteljau), or the K-th derivative with --derivative K");
+    o->o_derivative = sub->add_option("--derivative", o->derivative,
+                                      "Derivative order K >= 0; alone, print the K-th derivative's control points")
                           ->check(CLI::NonNegativeNumber);
     o->o_elevate = sub->add_flag("--elevate")->description("Print the control points after exact degree elevation");
-    o->o_times = sub->add_option("--times", o->times, "With --elevate: how many times (default 1)")->check(CLI::NonNegativeNumber);
+    o->o_times = sub->add_option("--times", o->times, "With --elevate: how many times (default 1)")
+                     ->check(CLI::NonNegativeNumber);
     o->o_reduce = sub->add_flag("--reduce")->description("Print the degree n-1 approximation (deviation on stderr)");
     o->o_method = sub->add_option("--method", o->method, "With --reduce: forward, backward or combined (default)")
                       ->check(CLI::IsMember({"forward", "backward", "combined"}));
     o->o_split = sub->add_option("--split", o->split, "Print the two halves at T (left, empty line, right)");
     o->o_subcurve = sub->add_option("--subcurve", o->subcurve, "Print the sub-curve over [T0, T1], given as \"T0,T1\"");
-    o->o_triangle = sub->add_option("--triangle", o->triangle, "Print the de Casteljau triangle at T, one row per block");
+    o->o_triangle =
+        sub->add_option("--triangle", o->triangle, "Print the de Casteljau triangle at T, one row per block");
     o->o_bounds = sub->add_flag("--bounds")->description("Print the tight bounding box: min corner, then max corner");
-    o->o_power = sub->add_flag("--power")->description("Print the power-form coefficients a_0..a_n of P(t) = sum a_k t^k");
-    o->o_curvature = sub->add_option("--curvature", o->curvature, "Print the curvature at T (signed in 2-D; inf at a cusp)");
-    o->o_interpolate = sub->add_flag("--interpolate")->description("Treat 4 points as Q0..Q3 and print the cubic through them at t = 0, 1/3, 2/3, 1");
-    o->o_render = sub->add_option("--render", o->render, "Draw the curve, its control polygon and points into a PNG file");
+    o->o_power =
+        sub->add_flag("--power")->description("Print the power-form coefficients a_0..a_n of P(t) = sum a_k t^k");
+    o->o_curvature =
+        sub->add_option("--curvature", o->curvature, "Print the curvature at T (signed in 2-D; inf at a cusp)");
+    o->o_interpolate =
+        sub->add_flag("--interpolate")
+            ->description("Treat 4 points as Q0..Q3 and print the cubic through them at t = 0, 1/3, 2/3, 1");
+    o->o_render =
+        sub->add_option("--render", o->render, "Draw the curve, its control polygon and points into a PNG file");
     o->o_size = sub->add_option("--size", o->size, "With --render: canvas WxH in pixels (default 400x400)");
-    o->o_construction = sub->add_option("--construction", o->construction,
-                                        "With --render: draw the de Casteljau construction at T (levels coloured, P(T) red)");
+    o->o_construction =
+        sub->add_option("--construction", o->construction,
+                        "With --render: draw the de Casteljau construction at T (levels coloured, P(T) red)");
     sub->callback([o]() {
         const int sources = static_cast<int>(o->o_points->count() > 0) + static_cast<int>(o->o_file->count() > 0);
         if (sources != 1) throw UsageError("bezier: give exactly one of --points or --points-file");
         int actions = 0;
-        for (CLI::Option* a : {o->o_eval, o->o_elevate, o->o_reduce, o->o_split, o->o_subcurve, o->o_triangle, o->o_bounds,
-                               o->o_power, o->o_curvature, o->o_interpolate, o->o_render})
+        for (CLI::Option* a : {o->o_eval, o->o_elevate, o->o_reduce, o->o_split, o->o_subcurve, o->o_triangle,
+                               o->o_bounds, o->o_power, o->o_curvature, o->o_interpolate, o->o_render})
             actions += a->count() > 0;
         if (o->o_derivative->count() && !o->o_eval->count()) ++actions;
         if (actions != 1)
-            throw UsageError("bezier: choose exactly one action: --eval, --derivative, --elevate, --reduce, --split, "
-                             "--subcurve, --triangle, --bounds, --power, --curvature, --interpolate or --render");
+            throw UsageError(
+                "bezier: choose exactly one action: --eval, --derivative, --elevate, --reduce, --split, "
+                "--subcurve, --triangle, --bounds, --power, --curvature, --interpolate or --render");
         if ((o->o_size->count() || o->o_construction->count()) && !o->o_render->count())
             throw UsageError("bezier: --size and --construction apply to --render only");
-        if (o->o_times->count() && !o->o_elevate->count()) throw UsageError("bezier: --times applies to --elevate only");
-        if (o->o_method->count() && !o->o_reduce->count()) throw UsageError("bezier: --method applies to --reduce only");
-        const PointList pts = o->o_points->count() ? parse_points_option("--points", o->points)
-                                                   : read_curve_file(o->points_file).points;
-        if (pts.dimension == 3) run<Point3>(*o, pts);
-        else run<Point>(*o, pts);
+        if (o->o_times->count() && !o->o_elevate->count())
+            throw UsageError("bezier: --times applies to --elevate only");
+        if (o->o_method->count() && !o->o_reduce->count())
+            throw UsageError("bezier: --method applies to --reduce only");
+        const PointList pts =
+            o->o_points->count() ? parse_points_option("--points", o->points) : read_curve_file(o->points_file).points;
+        if (pts.dimension == 3)
+            run<Point3>(*o, pts);
+        else
+            run<Point>(*o, pts);
     });
 }
 

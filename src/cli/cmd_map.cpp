@@ -26,7 +26,8 @@ Rect parse_bbox(const std::string& text) {
     std::istringstream in(s);
     double v[4];
     for (double& x : v)
-        if (!(in >> x) || !std::isfinite(x)) throw UsageError("--bbox: expected W,S,E,N in degrees, got '" + text + "'");
+        if (!(in >> x) || !std::isfinite(x))
+            throw UsageError("--bbox: expected W,S,E,N in degrees, got '" + text + "'");
     std::string rest;
     if (in >> rest) throw UsageError("--bbox: expected four numbers W,S,E,N, got '" + text + "'");
     if (!(v[0] < v[2]) || !(v[1] < v[3]) || v[1] < -90 || v[3] > 90)
@@ -60,7 +61,13 @@ ColorRamp parse_ramp(const std::string& text) {
         const double v = std::strtod(num.c_str(), &end);
         if (num.empty() || *end != '\0' || !std::isfinite(v)) throw UsageError("--ramp: bad number '" + num + "'");
         const Color c = parse_color_option("--ramp", parts[i].substr(colon + 1));
-        if (i == 0) { r.min = v; r.min_color = c; } else { r.max = v; r.max_color = c; }
+        if (i == 0) {
+            r.min = v;
+            r.min_color = c;
+        } else {
+            r.max = v;
+            r.max_color = c;
+        }
     }
     if (!(r.min < r.max)) throw UsageError("--ramp: MIN must be below MAX");
     return r;
@@ -85,9 +92,11 @@ void add_map_style_options(CLI::App* cmd, MapCliStyle& o) {
     cmd->add_option("--stroke-width", o.stroke_width, "Stroke width in pixels")
         ->check(CLI::Range(0.0, 1e4))
         ->capture_default_str();
-    cmd->add_option("--line-join", o.join, "round, miter or bevel")->check(CLI::IsMember({"round", "miter", "bevel"}))
+    cmd->add_option("--line-join", o.join, "round, miter or bevel")
+        ->check(CLI::IsMember({"round", "miter", "bevel"}))
         ->capture_default_str();
-    cmd->add_option("--line-cap", o.cap, "round, butt or square")->check(CLI::IsMember({"round", "butt", "square"}))
+    cmd->add_option("--line-cap", o.cap, "round, butt or square")
+        ->check(CLI::IsMember({"round", "butt", "square"}))
         ->capture_default_str();
     cmd->add_option("--background", o.background, "Background colour (CSS syntax)")->capture_default_str();
     cmd->add_option("--fill-by", o.fill_by, "Property giving each feature's fill (categorical palette, or --ramp)");
@@ -116,8 +125,10 @@ MapStyle build_map_style(const MapCliStyle& o) {
     } else {
         MapLayerStyle& l = st.layers.at(0);
         const Color f = parse_color_option("--fill", o.fill);
-        if (o.fill == "none") l.fill.reset();
-        else l.fill = f;
+        if (o.fill == "none")
+            l.fill.reset();
+        else
+            l.fill = f;
         if (!o.stroke.empty() && o.stroke != "none") l.stroke = parse_color_option("--stroke", o.stroke);
         l.stroke_width = o.stroke_width;
         l.opacity = o.opacity;
@@ -131,7 +142,8 @@ MapStyle build_map_style(const MapCliStyle& o) {
     }
     parse_line_join(o.join, st.join);  // the option checks only admit valid names
     parse_line_cap(o.cap, st.cap);
-    if (!o.style_file.empty() && o.background != "transparent") st.background = parse_color_option("--background", o.background);
+    if (!o.style_file.empty() && o.background != "transparent")
+        st.background = parse_color_option("--background", o.background);
     return st;
 }
 
@@ -145,9 +157,12 @@ void register_map(CLI::App& app) {
     };
     auto o = std::make_shared<Opts>();
     CLI::App* cmd = app.add_subcommand("map", "Render GeoJSON, GeoJSON lines or TopoJSON to PNG");
-    cmd->add_option("INPUT", o->input, "Map file: .geojson, .json, .topojson, .geojsonl (- for standard input)")->required();
+    cmd->add_option("INPUT", o->input, "Map file: .geojson, .json, .topojson, .geojsonl (- for standard input)")
+        ->required();
     cmd->add_option("-o,--output", o->output, "Output PNG file")->required();
-    cmd->add_option("--width", o->width, "Image width in pixels")->required()->check(CLI::Range(1, limits::kMaxCanvasDimension));
+    cmd->add_option("--width", o->width, "Image width in pixels")
+        ->required()
+        ->check(CLI::Range(1, limits::kMaxCanvasDimension));
     cmd->add_option("--height", o->height, "Image height in pixels (default: from the extent's aspect ratio)")
         ->check(CLI::Range(1, limits::kMaxCanvasDimension));
     cmd->add_option("--bbox", o->bbox, "Extent W,S,E,N in degrees mapped exactly onto the image");

@@ -31,7 +31,8 @@ void register_path(CLI::App& app) {
         ->check(CLI::IsMember({"nonzero", "evenodd"}))
         ->capture_default_str();
     cmd->add_option("--background", o->background, "Background colour (CSS syntax)")->capture_default_str();
-    cmd->add_option("--transform", o->transform, "Affine transform \"a b c d e f\" (x' = a x + c y + e, y' = b x + d y + f)");
+    cmd->add_option("--transform", o->transform,
+                    "Affine transform \"a b c d e f\" (x' = a x + c y + e, y' = b x + d y + f)");
     cmd->add_option("--tolerance", o->tolerance, "Flattening tolerance in pixels")
         ->check(CLI::Range(1e-4, 10.0))
         ->capture_default_str();
@@ -57,8 +58,10 @@ void register_path(CLI::App& app) {
         const Color bg = parse_color_option("--background", o->background);
         const Affine m = o->transform.empty() ? Affine{} : parse_affine_option("--transform", o->transform);
         std::string data = o->data;
-        if (data == "-") data = read_text_input("-");
-        else if (!data.empty() && data[0] == '@') data = read_text_input(data.substr(1));
+        if (data == "-")
+            data = read_text_input("-");
+        else if (!data.empty() && data[0] == '@')
+            data = read_text_input(data.substr(1));
         const Path path = parse_svg_path(data);
         Pixmap pm(w, h);
         pm.fill(bg);
@@ -80,7 +83,8 @@ void register_path(CLI::App& app) {
                 std::istringstream in(list);
                 double v;
                 while (in >> v) {
-                    if (!(v >= 0) || !std::isfinite(v)) throw UsageError("--dash: lengths must be non-negative numbers");
+                    if (!(v >= 0) || !std::isfinite(v))
+                        throw UsageError("--dash: lengths must be non-negative numbers");
                     style.dashes.push_back(v);
                 }
                 if (!in.eof()) throw UsageError("--dash: expected numbers, got '" + o->dashes + "'");

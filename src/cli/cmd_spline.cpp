@@ -29,14 +29,14 @@ namespace {
 
 struct SplineOptions {
     std::string kind, points, points_file, knots, knot_type = "clamped", weights, tangents, ends = "duplicate",
-                                                                          param = "uniform", render, basis,
-                size = "400x400";
+                                                  param = "uniform", render, basis, size = "400x400";
     int degree = 3, derivative = 0;
     double tension = 0, continuity = 0, bias = 0, eval = 0, basis_at = 0;
     CLI::Option *o_points = nullptr, *o_file = nullptr, *o_degree = nullptr, *o_knots = nullptr, *o_knot_type = nullptr,
                 *o_weights = nullptr, *o_tangents = nullptr, *o_tension = nullptr, *o_continuity = nullptr,
                 *o_bias = nullptr, *o_ends = nullptr, *o_param = nullptr, *o_to_bezier = nullptr, *o_eval = nullptr,
-                *o_derivative = nullptr, *o_basis_at = nullptr, *o_render = nullptr, *o_basis = nullptr, *o_size = nullptr;
+                *o_derivative = nullptr, *o_basis_at = nullptr, *o_render = nullptr, *o_basis = nullptr,
+                *o_size = nullptr;
 };
 
 FigureOptions figure_options(const SplineOptions& o) {
@@ -54,7 +54,8 @@ void render_pictures(const SplineOptions& o, const Path& curve, std::span<const 
     if (o.o_basis->count()) write_png(draw_basis_figure(degree, knots, fo).image, o.basis);
 }
 
-template <CurvePoint P> std::vector<P> convert(const PointList& l) {
+template <CurvePoint P>
+std::vector<P> convert(const PointList& l) {
     std::vector<P> v;
     for (const Point3& p : l.points) v.push_back(to_point<P>(p));
     return v;
@@ -62,7 +63,8 @@ template <CurvePoint P> std::vector<P> convert(const PointList& l) {
 
 bool is_knot_kind(const std::string& k) { return k == "bspline" || k == "nurbs"; }
 
-template <CurvePoint P> void run(const SplineOptions& o, const CurveFile& file) {
+template <CurvePoint P>
+void run(const SplineOptions& o, const CurveFile& file) {
     const double scale = file.points.scale();
     constexpr int dim = point_dimension<P>;
     std::ostringstream out;
@@ -73,7 +75,8 @@ template <CurvePoint P> void run(const SplineOptions& o, const CurveFile& file) 
         const int degree = o.o_degree->count() || file.degree < 0 ? o.degree : file.degree;
         std::vector<double> knots = o.o_knots->count() ? parse_numbers_option("--knots", o.knots) : file.knots;
         std::vector<P> ctrl = pts;
-        std::vector<double> weights = o.o_weights->count() ? parse_numbers_option("--weights", o.weights) : file.weights;
+        std::vector<double> weights =
+            o.o_weights->count() ? parse_numbers_option("--weights", o.weights) : file.weights;
         if (knots.empty()) {
             if (o.knot_type == "periodic") {
                 // Wrap the control points (and weights) like BSpline::periodic.
@@ -82,10 +85,12 @@ template <CurvePoint P> void run(const SplineOptions& o, const CurveFile& file) 
                 knots.assign(per.knots().begin(), per.knots().end());
                 if (!weights.empty()) {
                     const std::size_t n = weights.size();
-                    for (std::size_t i = 0; i < static_cast<std::size_t>(degree) && n > 0; ++i) weights.push_back(weights[i % n]);
+                    for (std::size_t i = 0; i < static_cast<std::size_t>(degree) && n > 0; ++i)
+                        weights.push_back(weights[i % n]);
                 }
             } else {
-                knots = o.knot_type == "uniform" ? uniform_knots(degree, ctrl.size()) : clamped_knots(degree, ctrl.size());
+                knots =
+                    o.knot_type == "uniform" ? uniform_knots(degree, ctrl.size()) : clamped_knots(degree, ctrl.size());
             }
         }
         if (o.kind == "bspline") {
@@ -136,7 +141,7 @@ template <CurvePoint P> void run(const SplineOptions& o, const CurveFile& file) 
     }
 
     // Interpolating splines: cubic Bézier pieces.
-    const EndCondition ends = o.ends == "closed" ? EndCondition::Closed
+    const EndCondition ends = o.ends == "closed"  ? EndCondition::Closed
                               : o.ends == "inner" ? EndCondition::Inner
                                                   : EndCondition::Duplicate;
     std::vector<Bezier<P>> pieces;
@@ -177,7 +182,8 @@ template <CurvePoint P> void run(const SplineOptions& o, const CurveFile& file) 
     } else {
         const double n = static_cast<double>(pieces.size());
         if (!(o.eval >= 0 && o.eval <= n))
-            throw Error(ErrorKind::InvalidArgument, "t = " + format_number(o.eval, 0) + " is outside [0, " + format_number(n, 0) + "]");
+            throw Error(ErrorKind::InvalidArgument,
+                        "t = " + format_number(o.eval, 0) + " is outside [0, " + format_number(n, 0) + "]");
         const std::size_t j = std::min(pieces.size() - 1, static_cast<std::size_t>(std::floor(o.eval)));
         const double t = o.eval - static_cast<double>(j);
         line(pieces[j].derivative(o.o_derivative->count() ? o.derivative : 0, t));
@@ -193,16 +199,23 @@ void register_spline(CLI::App& app) {
         "spline",
         "B-splines, NURBS and interpolating splines: print their Bezier pieces or evaluate them.\n"
         "Pieces print one after another separated by an empty line ('x y', NURBS 'x y w'). --eval uses the knot\n"
-        "domain for bspline/nurbs and T in [0, pieces] for the interpolating kinds. Exit status 1: bad data; 2: bad usage.");
-    sub->add_option("--kind", o->kind, "bspline, nurbs, hermite, cardinal, catmull-rom, kb (Kochanek-Bartels) or natural")
+        "domain for bspline/nurbs and T in [0, pieces] for the interpolating kinds. Exit status 1: bad data; 2: bad "
+        "usage.");
+    sub->add_option("--kind", o->kind,
+                    "bspline, nurbs, hermite, cardinal, catmull-rom, kb (Kochanek-Bartels) or natural")
         ->required()
         ->check(CLI::IsMember({"bspline", "nurbs", "hermite", "cardinal", "catmull-rom", "kb", "natural"}));
-    o->o_points = sub->add_option("--points", o->points, "Points \"x,y x,y ...\" (or x,y,z): control points or points to pass through");
-    o->o_file = sub->add_option("--points-file", o->points_file,
-                                "JSON file {\"points\": [[x, y], ...], optional \"knots\", \"weights\", \"tangents\", \"degree\"}");
-    o->o_degree = sub->add_option("--degree", o->degree, "bspline/nurbs degree, 1..64 (default 3)")->check(CLI::Range(1, 64));
-    o->o_knots = sub->add_option("--knots", o->knots, "bspline/nurbs knot vector \"u0 u1 ...\" (count = points + degree + 1)");
-    o->o_knot_type = sub->add_option("--knot-type", o->knot_type, "Without --knots: clamped (default, on [0, 1]), uniform or periodic")
+    o->o_points = sub->add_option("--points", o->points,
+                                  "Points \"x,y x,y ...\" (or x,y,z): control points or points to pass through");
+    o->o_file = sub->add_option(
+        "--points-file", o->points_file,
+        "JSON file {\"points\": [[x, y], ...], optional \"knots\", \"weights\", \"tangents\", \"degree\"}");
+    o->o_degree =
+        sub->add_option("--degree", o->degree, "bspline/nurbs degree, 1..64 (default 3)")->check(CLI::Range(1, 64));
+    o->o_knots =
+        sub->add_option("--knots", o->knots, "bspline/nurbs knot vector \"u0 u1 ...\" (count = points + degree + 1)");
+    o->o_knot_type = sub->add_option("--knot-type", o->knot_type,
+                                     "Without --knots: clamped (default, on [0, 1]), uniform or periodic")
                          ->check(CLI::IsMember({"clamped", "uniform", "periodic"}));
     o->o_weights = sub->add_option("--weights", o->weights, "nurbs weights \"w0 w1 ...\" (positive; default all 1)");
     o->o_tangents = sub->add_option("--tangents", o->tangents, "hermite tangents \"x,y x,y ...\", one per point");
@@ -211,15 +224,19 @@ void register_spline(CLI::App& app) {
     o->o_bias = sub->add_option("--bias", o->bias, "kb bias");
     o->o_ends = sub->add_option("--ends", o->ends, "cardinal/catmull-rom/kb ends: duplicate (default), closed or inner")
                     ->check(CLI::IsMember({"duplicate", "closed", "inner"}));
-    o->o_param = sub->add_option("--param", o->param, "natural spline parametrisation: uniform (default), chord or centripetal")
-                     ->check(CLI::IsMember({"uniform", "chord", "centripetal"}));
+    o->o_param =
+        sub->add_option("--param", o->param, "natural spline parametrisation: uniform (default), chord or centripetal")
+            ->check(CLI::IsMember({"uniform", "chord", "centripetal"}));
     o->o_to_bezier = sub->add_flag("--to-bezier")->description("Print the Bezier pieces");
     o->o_eval = sub->add_option("--eval", o->eval, "Print the point at T (or the K-th derivative with --derivative K)");
-    o->o_derivative = sub->add_option("--derivative", o->derivative, "Derivative order K for --eval")->check(CLI::NonNegativeNumber);
-    o->o_basis_at = sub->add_option("--basis-at", o->basis_at, "bspline/nurbs: print the basis functions N_i(T), one per line");
-    o->o_render = sub->add_option("--render", o->render,
-                                  "Draw the curve, its control polygon (dashed) and its knots (orange) into a PNG file");
-    o->o_basis = sub->add_option("--basis", o->basis, "bspline/nurbs: plot the basis functions N_i(t) over the domain into a PNG file");
+    o->o_derivative =
+        sub->add_option("--derivative", o->derivative, "Derivative order K for --eval")->check(CLI::NonNegativeNumber);
+    o->o_basis_at =
+        sub->add_option("--basis-at", o->basis_at, "bspline/nurbs: print the basis functions N_i(T), one per line");
+    o->o_render = sub->add_option(
+        "--render", o->render, "Draw the curve, its control polygon (dashed) and its knots (orange) into a PNG file");
+    o->o_basis = sub->add_option("--basis", o->basis,
+                                 "bspline/nurbs: plot the basis functions N_i(t) over the domain into a PNG file");
     o->o_size = sub->add_option("--size", o->size, "With --render/--basis: canvas WxH in pixels (default 400x400)");
     sub->callback([o]() {
         const int sources = static_cast<int>(o->o_points->count() > 0) + static_cast<int>(o->o_file->count() > 0);
@@ -246,15 +263,22 @@ void register_spline(CLI::App& app) {
         only(o->o_tension, o->kind == "cardinal" || o->kind == "kb", "cardinal or kb");
         only(o->o_continuity, o->kind == "kb", "kb");
         only(o->o_bias, o->kind == "kb", "kb");
-        only(o->o_ends, o->kind == "cardinal" || o->kind == "catmull-rom" || o->kind == "kb", "cardinal, catmull-rom or kb");
+        only(o->o_ends, o->kind == "cardinal" || o->kind == "catmull-rom" || o->kind == "kb",
+             "cardinal, catmull-rom or kb");
         only(o->o_param, o->kind == "natural", "natural");
-        if (o->o_knots->count() && o->o_knot_type->count()) throw UsageError("spline: give --knots or --knot-type, not both");
+        if (o->o_knots->count() && o->o_knot_type->count())
+            throw UsageError("spline: give --knots or --knot-type, not both");
         CurveFile file;
-        if (o->o_points->count()) file.points = parse_points_option("--points", o->points);
-        else file = read_curve_file(o->points_file);
-        if (pictures && file.points.dimension == 3) throw UsageError("spline: --render and --basis draw 2-D curves only");
-        if (file.points.dimension == 3) run<Point3>(*o, file);
-        else run<Point>(*o, file);
+        if (o->o_points->count())
+            file.points = parse_points_option("--points", o->points);
+        else
+            file = read_curve_file(o->points_file);
+        if (pictures && file.points.dimension == 3)
+            throw UsageError("spline: --render and --basis draw 2-D curves only");
+        if (file.points.dimension == 3)
+            run<Point3>(*o, file);
+        else
+            run<Point>(*o, file);
     });
 }
 

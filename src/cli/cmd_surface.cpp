@@ -40,13 +40,15 @@ struct SurfaceOptions {
 
 double number(const simdjson::dom::element& e, const std::string& path, const std::string& where) {
     double v = 0;
-    if (e.get_double().get(v) != simdjson::SUCCESS || !std::isfinite(v)) bad(path, where + " is not a finite number", ErrorKind::Parse);
+    if (e.get_double().get(v) != simdjson::SUCCESS || !std::isfinite(v))
+        bad(path, where + " is not a finite number", ErrorKind::Parse);
     return v;
 }
 
 std::vector<double> numbers(const simdjson::dom::element& e, const std::string& path, const std::string& member) {
     simdjson::dom::array arr;
-    if (e.get_array().get(arr) != simdjson::SUCCESS) bad(path, "\"" + member + "\" must be an array of numbers", ErrorKind::Parse);
+    if (e.get_array().get(arr) != simdjson::SUCCESS)
+        bad(path, "\"" + member + "\" must be an array of numbers", ErrorKind::Parse);
     std::vector<double> out;
     for (simdjson::dom::element x : arr) out.push_back(number(x, path, "\"" + member + "\" entry"));
     return out;
@@ -54,10 +56,11 @@ std::vector<double> numbers(const simdjson::dom::element& e, const std::string& 
 
 // A rectangular array of rows; `leaf` converts each entry. Returns rows x cols values row-major.
 template <class T, class F>
-std::vector<T> grid_of(const simdjson::dom::element& e, const std::string& path, const std::string& member, std::size_t& rows,
-                       std::size_t& cols, F leaf) {
+std::vector<T> grid_of(const simdjson::dom::element& e, const std::string& path, const std::string& member,
+                       std::size_t& rows, std::size_t& cols, F leaf) {
     simdjson::dom::array outer;
-    if (e.get_array().get(outer) != simdjson::SUCCESS) bad(path, "\"" + member + "\" must be an array of rows", ErrorKind::Parse);
+    if (e.get_array().get(outer) != simdjson::SUCCESS)
+        bad(path, "\"" + member + "\" must be an array of rows", ErrorKind::Parse);
     std::vector<T> out;
     rows = 0;
     cols = 0;
@@ -70,10 +73,11 @@ std::vector<T> grid_of(const simdjson::dom::element& e, const std::string& path,
             out.push_back(leaf(x, member + "[" + std::to_string(rows) + "][" + std::to_string(c) + "]"));
             ++c;
         }
-        if (rows == 0) cols = c;
+        if (rows == 0)
+            cols = c;
         else if (c != cols)
-            bad(path, "\"" + member + "\" row " + std::to_string(rows) + " has " + std::to_string(c) + " entries, row 0 has " +
-                          std::to_string(cols));
+            bad(path, "\"" + member + "\" row " + std::to_string(rows) + " has " + std::to_string(c) +
+                          " entries, row 0 has " + std::to_string(cols));
         ++rows;
         if (out.size() > limits::kMaxSurfacePoints) bad(path, "too many points", ErrorKind::Limit);
     }
@@ -90,7 +94,8 @@ void run(const SurfaceOptions& o) {
     if (const auto err = parser.parse(padded).get(doc); err != simdjson::SUCCESS)
         bad(path, std::string("invalid JSON: ") + simdjson::error_message(err), ErrorKind::Parse);
     simdjson::dom::object obj;
-    if (doc.get_object().get(obj) != simdjson::SUCCESS) bad(path, "the top level must be a JSON object", ErrorKind::Parse);
+    if (doc.get_object().get(obj) != simdjson::SUCCESS)
+        bad(path, "the top level must be a JSON object", ErrorKind::Parse);
 
     std::string type = "bezier";
     simdjson::dom::element e;
@@ -110,14 +115,15 @@ void run(const SurfaceOptions& o) {
 
     if (obj["points"].get(e) != simdjson::SUCCESS) bad(path, "missing \"points\"");
     std::size_t rows = 0, cols = 0;
-    std::vector<Point3> net = grid_of<Point3>(e, path, "points", rows, cols, [&](const simdjson::dom::element& x, const std::string& where) {
-        const std::vector<double> c = numbers(x, path, where);
-        if (c.size() != 3) bad(path, where + " must be [x, y, z]");
-        return Point3{c[0], c[1], c[2]};
-    });
+    std::vector<Point3> net =
+        grid_of<Point3>(e, path, "points", rows, cols, [&](const simdjson::dom::element& x, const std::string& where) {
+            const std::vector<double> c = numbers(x, path, where);
+            if (c.size() != 3) bad(path, where + " must be [x, y, z]");
+            return Point3{c[0], c[1], c[2]};
+        });
 
     SurfaceDrawing d;
-    d.projection = o.projection == "ortho" ? Projection::Orthographic
+    d.projection = o.projection == "ortho"     ? Projection::Orthographic
                    : o.projection == "cabinet" ? Projection::Cabinet
                                                : Projection::Cavalier;
     d.grid = o.grid;
@@ -128,17 +134,21 @@ void run(const SurfaceOptions& o) {
 
     if (type == "bezier") {
         if (rows != static_cast<std::size_t>(m + 1) || cols != static_cast<std::size_t>(n + 1))
-            bad(path, "a degree [" + std::to_string(m) + ", " + std::to_string(n) + "] patch needs " + std::to_string(m + 1) +
-                          " rows of " + std::to_string(n + 1) + " points, got " + std::to_string(rows) + " rows of " +
-                          std::to_string(cols));
+            bad(path, "a degree [" + std::to_string(m) + ", " + std::to_string(n) + "] patch needs " +
+                          std::to_string(m + 1) + " rows of " + std::to_string(n + 1) + " points, got " +
+                          std::to_string(rows) + " rows of " + std::to_string(cols));
         write_png(draw_surface_figure(BezierPatch<Point3>(m, n, std::move(net)), d, fo).image, o.render);
         return;
     }
     std::vector<double> ku, kv;
-    if (obj["knots_u"].get(e) == simdjson::SUCCESS) ku = numbers(e, path, "knots_u");
-    else ku = clamped_knots(m, rows);
-    if (obj["knots_v"].get(e) == simdjson::SUCCESS) kv = numbers(e, path, "knots_v");
-    else kv = clamped_knots(n, cols);
+    if (obj["knots_u"].get(e) == simdjson::SUCCESS)
+        ku = numbers(e, path, "knots_u");
+    else
+        ku = clamped_knots(m, rows);
+    if (obj["knots_v"].get(e) == simdjson::SUCCESS)
+        kv = numbers(e, path, "knots_v");
+    else
+        kv = clamped_knots(n, cols);
     if (type == "bspline") {
         const BSplineSurface<Point3> s(m, n, rows, cols, std::move(net), std::move(ku), std::move(kv));
         write_png(draw_surface_figure(s, d, fo).image, o.render);
@@ -147,8 +157,9 @@ void run(const SurfaceOptions& o) {
     std::vector<double> w(rows * cols, 1.0);
     if (obj["weights"].get(e) == simdjson::SUCCESS) {
         std::size_t wr = 0, wc = 0;
-        w = grid_of<double>(e, path, "weights", wr, wc,
-                            [&](const simdjson::dom::element& x, const std::string& where) { return number(x, path, where); });
+        w = grid_of<double>(e, path, "weights", wr, wc, [&](const simdjson::dom::element& x, const std::string& where) {
+            return number(x, path, where);
+        });
         if (wr != rows || wc != cols) bad(path, "\"weights\" must have the shape of \"points\"");
     }
     const NurbsSurface<Point3> s(m, n, rows, cols, std::move(net), std::move(w), std::move(ku), std::move(kv));
@@ -162,7 +173,8 @@ void register_surface(CLI::App& app) {
     CLI::App* sub = app.add_subcommand(
         "surface",
         "Draw a Bezier patch (or B-spline / NURBS surface) from JSON as a projected grid of iso-parameter curves.\n"
-        "File: {\"degree\": [m, n], \"points\": [[[x, y, z], ...], ...]} with m+1 rows of n+1 points; optional \"type\":\n"
+        "File: {\"degree\": [m, n], \"points\": [[[x, y, z], ...], ...]} with m+1 rows of n+1 points; optional "
+        "\"type\":\n"
         "\"bspline\"/\"nurbs\" with \"knots_u\", \"knots_v\" (default clamped) and \"weights\" (rows like points).\n"
         "y is down, z recedes. Exit status 1: bad data; 2: bad usage.");
     sub->add_option("file", o->file, "Surface JSON file ('-' reads stdin)")->required();

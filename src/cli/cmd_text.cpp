@@ -63,8 +63,8 @@ std::string find_default_font() {
         if (std::filesystem::is_regular_file(p, ec)) return p.lexically_normal().string();
         tried += (tried.empty() ? "" : ", ") + dir.lexically_normal().string();
     }
-    throw Error(ErrorKind::Io, std::string("cannot find the default font ") + kDefaultFontFile + " (looked in: " + tried +
-                                   "); pass --font FILE or set CASTELJAU_FONT_DIR");
+    throw Error(ErrorKind::Io, std::string("cannot find the default font ") + kDefaultFontFile +
+                                   " (looked in: " + tried + "); pass --font FILE or set CASTELJAU_FONT_DIR");
 }
 
 double parse_number(const std::string& option, const std::string& text) {
@@ -91,20 +91,26 @@ void register_text(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "text",
         "Render UTF-8 text to a PNG: HarfBuzz shaping (kerning, ligatures, marks, right-to-left), line breaks on "
-        "newlines, optional wrapping and alignment, font fallback (the --font chain, then the system's fonts), glyphs drawn by casteljau's exact-area "
+        "newlines, optional wrapping and alignment, font fallback (the --font chain, then the system's fonts), glyphs "
+        "drawn by casteljau's exact-area "
         "rasterizer. Without --width the image fits the text plus padding.");
-    cmd->add_option("TEXT", o->text, "The text (UTF-8; invalid bytes show as U+FFFD); - reads standard input")->required();
+    cmd->add_option("TEXT", o->text, "The text (UTF-8; invalid bytes show as U+FFFD); - reads standard input")
+        ->required();
     cmd->add_option("-o,--output", o->output, "Output PNG file")->required();
     cmd->add_option("--font", o->fonts,
                     "Font file (TrueType, OpenType CFF/CFF2, collection, variable); repeat for a fallback chain. "
                     "Default: DejaVuSans.ttf from $CASTELJAU_FONT_DIR, <exe>/../fonts, <exe>/../../fonts, "
                     "<exe>/../share/casteljau/fonts, the configured install or source fonts folder");
     cmd->add_option("--face", o->faces, "Face index in a collection, for the --font at the same position (default 0)");
-    cmd->add_option("--size", o->size, "Font size in pixels per em, greater than 0 and at most 10000")->capture_default_str();
+    cmd->add_option("--size", o->size, "Font size in pixels per em, greater than 0 and at most 10000")
+        ->capture_default_str();
     cmd->add_option("--color", o->color, "Text colour (CSS syntax)")->capture_default_str();
-    cmd->add_option("--background", o->background, "Background colour (CSS syntax; transparent allowed)")->capture_default_str();
-    cmd->add_option("--width", o->width, "Wrap lines at word boundaries to this width in pixels (the image is this wide plus padding)");
-    cmd->add_option("--align", o->align, "left, center, right, or start (left for left-to-right paragraphs, right for right-to-left)")
+    cmd->add_option("--background", o->background, "Background colour (CSS syntax; transparent allowed)")
+        ->capture_default_str();
+    cmd->add_option("--width", o->width,
+                    "Wrap lines at word boundaries to this width in pixels (the image is this wide plus padding)");
+    cmd->add_option("--align", o->align,
+                    "left, center, right, or start (left for left-to-right paragraphs, right for right-to-left)")
         ->check(CLI::IsMember({"left", "center", "right", "start"}))
         ->capture_default_str();
     cmd->add_option("--line-height", o->line_height, "Line advance as a multiple of the first font's line spacing")
@@ -114,10 +120,12 @@ void register_text(CLI::App& app) {
                     "Variable-font axis setting TAG=VALUE, e.g. wght=700 (repeatable; applied to every font that has "
                     "the axis; an axis no font has is an error)");
     cmd->add_option("--feature", o->features, "OpenType feature for HarfBuzz, e.g. kern=0, liga=0, smcp (repeatable)");
-    cmd->add_option("--direction", o->direction, "Base direction of paragraphs: auto (from the first strong letter), ltr, rtl")
+    cmd->add_option("--direction", o->direction,
+                    "Base direction of paragraphs: auto (from the first strong letter), ltr, rtl")
         ->check(CLI::IsMember({"auto", "ltr", "rtl"}))
         ->capture_default_str();
-    cmd->add_option("--script", o->script, "ISO 15924 script tag for shaping (Latn, Arab, Hebr, ...); default: detected");
+    cmd->add_option("--script", o->script,
+                    "ISO 15924 script tag for shaping (Latn, Arab, Hebr, ...); default: detected");
     cmd->add_option("--language", o->language, "BCP 47 language tag for shaping (en, ar, tr, ...)");
     cmd->add_flag("--no-system-fonts", o->no_system_fonts,
                   "Use only the --font files (or the default font): characters they lack show as the first font's "
@@ -133,16 +141,16 @@ void register_text(CLI::App& app) {
         // Usage first: every option value is checked before any file is read.
         const double size = parse_number("--size", o->size);
         if (!(size > 0) || size > limits::kMaxFontSize)
-            throw UsageError("--size: must be greater than 0 and at most " + std::to_string(static_cast<int>(limits::kMaxFontSize)) +
-                             " pixels, got '" + o->size + "'");
+            throw UsageError("--size: must be greater than 0 and at most " +
+                             std::to_string(static_cast<int>(limits::kMaxFontSize)) + " pixels, got '" + o->size + "'");
         const Color color = parse_color_option("--color", o->color);
         const Color background = parse_color_option("--background", o->background);
         double width = 0;
         if (!o->width.empty()) {
             width = parse_number("--width", o->width);
             if (!(width >= 1) || width > limits::kMaxCanvasDimension)
-                throw UsageError("--width: must be 1 to " + std::to_string(limits::kMaxCanvasDimension) + " pixels, got '" +
-                                 o->width + "'");
+                throw UsageError("--width: must be 1 to " + std::to_string(limits::kMaxCanvasDimension) +
+                                 " pixels, got '" + o->width + "'");
         }
         const double line_height = parse_number("--line-height", o->line_height);
         if (!(line_height > 0) || line_height > 100)
@@ -156,9 +164,7 @@ void register_text(CLI::App& app) {
         for (const std::string& v : o->variations) {
             try {
                 variations.push_back(parse_variation(v));
-            } catch (const Error& e) {
-                throw UsageError(std::string("--variation: ") + e.what());
-            }
+            } catch (const Error& e) { throw UsageError(std::string("--variation: ") + e.what()); }
         }
         if (o->faces.size() > std::max<std::size_t>(o->fonts.size(), 1))
             throw UsageError("--face: given " + std::to_string(o->faces.size()) + " times for " +

@@ -50,17 +50,20 @@ void parse_shard(const std::string& text, int shards_opt, int& shard, int& shard
             return v && *v ? v : nullptr;
         };
         if (const char* k = env("JOB_COMPLETION_INDEX")) {  // Kubernetes Indexed Job
-            if (shards_opt < 1) throw UsageError("JOB_COMPLETION_INDEX is set: pass --shards N (the Job's completions)");
+            if (shards_opt < 1)
+                throw UsageError("JOB_COMPLETION_INDEX is set: pass --shards N (the Job's completions)");
             shard = parse_int("JOB_COMPLETION_INDEX", k);
             shards = shards_opt;
         } else if (const char* s = env("SLURM_ARRAY_TASK_ID")) {
             const char* n = env("SLURM_ARRAY_TASK_COUNT");
-            if (!n && shards_opt < 1) throw UsageError("SLURM_ARRAY_TASK_ID is set without SLURM_ARRAY_TASK_COUNT: pass --shards N");
+            if (!n && shards_opt < 1)
+                throw UsageError("SLURM_ARRAY_TASK_ID is set without SLURM_ARRAY_TASK_COUNT: pass --shards N");
             shard = parse_int("SLURM_ARRAY_TASK_ID", s);
             shards = n ? parse_int("SLURM_ARRAY_TASK_COUNT", n) : shards_opt;
         } else if (const char* a = env("AWS_BATCH_JOB_ARRAY_INDEX")) {
             const char* n = env("AWS_BATCH_JOB_ARRAY_SIZE");
-            if (!n && shards_opt < 1) throw UsageError("AWS_BATCH_JOB_ARRAY_INDEX is set without AWS_BATCH_JOB_ARRAY_SIZE: pass --shards N");
+            if (!n && shards_opt < 1)
+                throw UsageError("AWS_BATCH_JOB_ARRAY_INDEX is set without AWS_BATCH_JOB_ARRAY_SIZE: pass --shards N");
             shard = parse_int("AWS_BATCH_JOB_ARRAY_INDEX", a);
             shards = n ? parse_int("AWS_BATCH_JOB_ARRAY_SIZE", n) : shards_opt;
         } else {
@@ -68,7 +71,8 @@ void parse_shard(const std::string& text, int shards_opt, int& shard, int& shard
             shards = 1;
         }
     }
-    if (shards < 1 || shard >= shards) throw UsageError("shard " + std::to_string(shard) + " of " + std::to_string(shards) + " is out of range");
+    if (shards < 1 || shard >= shards)
+        throw UsageError("shard " + std::to_string(shard) + " of " + std::to_string(shards) + " is out of range");
 }
 
 }  // namespace
@@ -81,23 +85,30 @@ void register_tiles(CLI::App& app) {
         MapCliStyle style;
     };
     auto o = std::make_shared<Opts>();
-    CLI::App* cmd = app.add_subcommand("tiles", "Render an XYZ tile pyramid (Web Mercator) to a folder or an .mbtiles file");
-    cmd->add_option("INPUT", o->input, "Map file: .geojson, .json, .topojson, .geojsonl (- for standard input)")->required();
+    CLI::App* cmd =
+        app.add_subcommand("tiles", "Render an XYZ tile pyramid (Web Mercator) to a folder or an .mbtiles file");
+    cmd->add_option("INPUT", o->input, "Map file: .geojson, .json, .topojson, .geojsonl (- for standard input)")
+        ->required();
     cmd->add_option("-o,--output", o->output, "Output folder (DIR/z/x/y.png) or FILE.mbtiles")->required();
     cmd->add_option("--zoom", o->zoom, "Zoom levels MIN-MAX (or one level), 0 to 24")->required();
-    cmd->add_option("--tile-size", o->tile_size, "Tile size in pixels before --scale")->check(CLI::IsMember({256, 512}))
+    cmd->add_option("--tile-size", o->tile_size, "Tile size in pixels before --scale")
+        ->check(CLI::IsMember({256, 512}))
         ->capture_default_str();
     cmd->add_option("--scale", o->scale, "Pixel ratio (2 for retina tiles; strokes and points scale too)")
         ->check(CLI::Range(1, 4))
         ->capture_default_str();
-    cmd->add_option("--metatile", o->metatile, "Tiles per metatile side")->check(CLI::Range(1, 64))->capture_default_str();
-    cmd->add_option("--buffer", o->buffer, "Pixels rendered around each metatile")->check(CLI::Range(0, 1024))
+    cmd->add_option("--metatile", o->metatile, "Tiles per metatile side")
+        ->check(CLI::Range(1, 64))
+        ->capture_default_str();
+    cmd->add_option("--buffer", o->buffer, "Pixels rendered around each metatile")
+        ->check(CLI::Range(0, 1024))
         ->capture_default_str();
     cmd->add_flag("--skip-empty", o->skip_empty, "Do not write tiles that show only the background");
     cmd->add_option("--threads", o->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 256));
     cmd->add_flag("--resume", o->resume, "Skip tiles already written (folder output)");
-    cmd->add_option("--shard", o->shard, "Render share I of N (I/N, 0-based); default from JOB_COMPLETION_INDEX, "
-                                         "SLURM_ARRAY_TASK_ID or AWS_BATCH_JOB_ARRAY_INDEX");
+    cmd->add_option("--shard", o->shard,
+                    "Render share I of N (I/N, 0-based); default from JOB_COMPLETION_INDEX, "
+                    "SLURM_ARRAY_TASK_ID or AWS_BATCH_JOB_ARRAY_INDEX");
     cmd->add_option("--shards", o->shards, "Number of shards when the index comes from JOB_COMPLETION_INDEX")
         ->check(CLI::Range(1, 1000000));
     cmd->add_option("--name", o->name, "MBTiles metadata name")->capture_default_str();
@@ -124,7 +135,8 @@ void register_tiles(CLI::App& app) {
         for (MapLayerStyle& l : style.layers) l.stroke_width *= o->scale;
         style.point_radius *= o->scale;
         const bool mbtiles = ends_with(o->output, ".mbtiles");
-        if (mbtiles && o->resume) throw UsageError("--resume works with a folder output (an .mbtiles file is written whole)");
+        if (mbtiles && o->resume)
+            throw UsageError("--resume works with a folder output (an .mbtiles file is written whole)");
         const MapData data = read_map_input(o->input, o->style.layer);
         const bool tty = !o->quiet && ::isatty(2);
         const auto t0 = std::chrono::steady_clock::now();
@@ -138,22 +150,27 @@ void register_tiles(CLI::App& app) {
         };
         TileStats st;
         if (mbtiles) {
-            MbtilesWriter w(o->output, o->name, to.min_zoom, to.max_zoom, Rect{-180, -85.0511287798, 180, 85.0511287798});
-            st = render_tiles(data, style, to, [&](int z, int x, int y, const std::vector<std::uint8_t>& png) { w.write(z, x, y, png); },
-                              {}, progress);
+            MbtilesWriter w(o->output, o->name, to.min_zoom, to.max_zoom,
+                            Rect{-180, -85.0511287798, 180, 85.0511287798});
+            st = render_tiles(
+                data, style, to,
+                [&](int z, int x, int y, const std::vector<std::uint8_t>& png) { w.write(z, x, y, png); }, {},
+                progress);
             w.finish();
         } else {
             TileFolderWriter w(o->output);
             if (o->resume) w.remove_interrupted_writes();
             st = render_tiles(
-                data, style, to, [&](int z, int x, int y, const std::vector<std::uint8_t>& png) { w.write(z, x, y, png); },
+                data, style, to,
+                [&](int z, int x, int y, const std::vector<std::uint8_t>& png) { w.write(z, x, y, png); },
                 [&](int z, int x, int y) { return w.exists(z, x, y); }, progress);
         }
         if (!o->quiet) {
             const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             if (tty) std::fprintf(stderr, "\n");
-            std::fprintf(stderr, "casteljau: tiles: shard %d/%d, %llu metatiles, %llu tiles written, %llu empty skipped, "
-                                 "%llu already there, %.2f s (%.1f tiles/s)\n",
+            std::fprintf(stderr,
+                         "casteljau: tiles: shard %d/%d, %llu metatiles, %llu tiles written, %llu empty skipped, "
+                         "%llu already there, %.2f s (%.1f tiles/s)\n",
                          to.shard, to.shards, static_cast<unsigned long long>(st.metatiles),
                          static_cast<unsigned long long>(st.written), static_cast<unsigned long long>(st.skipped_empty),
                          static_cast<unsigned long long>(st.skipped_existing), s, s > 0 ? st.written / s : 0.0);

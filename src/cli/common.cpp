@@ -15,9 +15,7 @@ namespace casteljau::cli {
 Color parse_color_option(const std::string& option, const std::string& text) {
     try {
         return parse_color(text);
-    } catch (const Error& e) {
-        throw UsageError(option + ": " + e.what());
-    }
+    } catch (const Error& e) { throw UsageError(option + ": " + e.what()); }
 }
 
 void parse_size_option(const std::string& option, const std::string& text, int& width, int& height) {

@@ -69,7 +69,8 @@ PointList parse_points_option(const std::string& option, const std::string& text
             if (!parse_double(coords[c], v[c]))
                 throw UsageError(option + ": point " + std::to_string(k + 1) + " has a bad number '" + coords[c] + "'");
         const int dim = static_cast<int>(coords.size());
-        if (k == 0) list.dimension = dim;
+        if (k == 0)
+            list.dimension = dim;
         else if (dim != list.dimension)
             throw UsageError(option + ": point " + std::to_string(k + 1) + " has " + std::to_string(dim) +
                              " coordinates but the first has " + std::to_string(list.dimension));
@@ -102,7 +103,8 @@ double number_of(const simdjson::dom::element& e, const std::string& path, const
 
 PointList points_of(const simdjson::dom::element& e, const std::string& path, const std::string& member) {
     simdjson::dom::array arr;
-    if (e.get_array().get(arr) != simdjson::SUCCESS) bad_file(path, "\"" + member + "\" must be an array of [x, y] or [x, y, z]");
+    if (e.get_array().get(arr) != simdjson::SUCCESS)
+        bad_file(path, "\"" + member + "\" must be an array of [x, y] or [x, y, z]");
     PointList list;
     std::size_t k = 0;
     for (simdjson::dom::element pe : arr) {
@@ -114,8 +116,10 @@ PointList points_of(const simdjson::dom::element& e, const std::string& path, co
         for (simdjson::dom::element ce : pa) c.push_back(number_of(ce, path, where));
         if (c.size() != 2 && c.size() != 3) bad_file(path, where + " must have 2 or 3 coordinates");
         const int dim = static_cast<int>(c.size());
-        if (k == 1) list.dimension = dim;
-        else if (dim != list.dimension) bad_file(path, where + " has a different dimension than the first point");
+        if (k == 1)
+            list.dimension = dim;
+        else if (dim != list.dimension)
+            bad_file(path, where + " has a different dimension than the first point");
         list.points.push_back({c[0], c[1], c.size() == 3 ? c[2] : 0.0});
     }
     return list;
@@ -149,7 +153,8 @@ CurveFile read_curve_file(const std::string& path) {
     if (obj["knots"].get(e) == simdjson::SUCCESS) f.knots = numbers_of(e, path, "knots");
     if (obj["degree"].get(e) == simdjson::SUCCESS) {
         int64_t d = 0;
-        if (e.get_int64().get(d) != simdjson::SUCCESS || d < 0 || d > 1000000) bad_file(path, "\"degree\" must be a non-negative integer");
+        if (e.get_int64().get(d) != simdjson::SUCCESS || d < 0 || d > 1000000)
+            bad_file(path, "\"degree\" must be a non-negative integer");
         f.degree = static_cast<int>(d);
     }
     return f;
@@ -164,7 +169,9 @@ std::string format_number(double v, double scale) {
     return s;
 }
 
-std::string format_point(const Point& p, double scale) { return format_number(p.x, scale) + " " + format_number(p.y, scale); }
+std::string format_point(const Point& p, double scale) {
+    return format_number(p.x, scale) + " " + format_number(p.y, scale);
+}
 
 std::string format_point(const Point3& p, double scale, int dimension) {
     std::string s = format_number(p.x, scale) + " " + format_number(p.y, scale);

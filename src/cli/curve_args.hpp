@@ -50,9 +50,12 @@ std::string format_point(const Point& p, double scale);
 std::string format_point(const Point3& p, double scale, int dimension);
 
 // A parsed point as the point type of a 2-D or 3-D curve, and back (2-D points have z = 0).
-template <CurvePoint P> P to_point(const Point3& p) {
-    if constexpr (std::same_as<P, Point>) return {p.x, p.y};
-    else return p;
+template <CurvePoint P>
+P to_point(const Point3& p) {
+    if constexpr (std::same_as<P, Point>)
+        return {p.x, p.y};
+    else
+        return p;
 }
 inline Point3 to_p3(const Point& p) { return {p.x, p.y, 0}; }
 inline Point3 to_p3(const Point3& p) { return p; }

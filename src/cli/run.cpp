@@ -47,13 +47,9 @@ int run(int argc, char** argv, bool execute, std::ostream& out, std::ostream& er
     if (!execute) app.parse_complete_callback([] { throw ParsedOnly{}; });
     try {
         app.parse(argc, argv);
-    } catch (const ParsedOnly&) {
-        return 0;
-    } catch (const CLI::CallForHelp& e) {
+    } catch (const ParsedOnly&) { return 0; } catch (const CLI::CallForHelp& e) {
         return app.exit(e, out, err);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e, out, err);
-    } catch (const CLI::CallForVersion& e) {
+    } catch (const CLI::CallForAllHelp& e) { return app.exit(e, out, err); } catch (const CLI::CallForVersion& e) {
         return app.exit(e, out, err);
     } catch (const CLI::ParseError& e) {
         err << "casteljau: error: " << e.what() << " (see casteljau --help)\n";

@@ -120,8 +120,8 @@ void write_file_atomic(const std::string& path, std::span<const std::uint8_t> by
     FileDescriptor fd(::mkstemp(temp.data()));
     if (fd.get() < 0) {
         const int err = errno;
-        throw Error(ErrorKind::Io, "cannot write " + quote(path) + ": cannot create a temporary file in " +
-                                       quote(dir) + ": " + std::strerror(err));
+        throw Error(ErrorKind::Io, "cannot write " + quote(path) + ": cannot create a temporary file in " + quote(dir) +
+                                       ": " + std::strerror(err));
     }
     auto fail = [&](int err) {
         ::unlink(temp.c_str());
@@ -140,7 +140,8 @@ void write_file_atomic(const std::string& path, std::span<const std::uint8_t> by
 namespace {
 
 [[noreturn]] void input_too_large(const std::string& name, std::uint64_t max_bytes) {
-    throw Error(ErrorKind::Limit, name + " is larger than " + std::to_string(max_bytes) + " bytes (Limits::input_bytes)");
+    throw Error(ErrorKind::Limit,
+                name + " is larger than " + std::to_string(max_bytes) + " bytes (Limits::input_bytes)");
 }
 
 // Reads fd to its end; `name` names it in errors ("'PATH'" or "standard input").

@@ -55,7 +55,8 @@ struct AtomicLimits {
 
     AtomicLimits() { store(Limits{}); }
     void store(const Limits& l) {
-        each_field(*this, l, [](auto& dst, const auto& src, const char*) { dst.store(src, std::memory_order_relaxed); });
+        each_field(*this, l,
+                   [](auto& dst, const auto& src, const char*) { dst.store(src, std::memory_order_relaxed); });
     }
 };
 
@@ -67,7 +68,7 @@ AtomicLimits& state() {
 }  // namespace
 
 Limits Limits::ceilings() noexcept {
-    Limits c;  // canvas, path, segment and map-position limits: the defaults are the ceilings
+    Limits c;               // canvas, path, segment and map-position limits: the defaults are the ceilings
     c.nesting_depth = 256;  // recursion depth of the SVG and JSON readers: a few KB of stack per level
     c.svg_elements = 100'000'000;
     c.svg_image_nesting = 16;
@@ -89,7 +90,8 @@ Limits Limits::ceilings() noexcept {
 
 Limits current_limits() noexcept {
     Limits out;
-    each_field(out, state(), [](auto& dst, const auto& src, const char*) { dst = src.load(std::memory_order_relaxed); });
+    each_field(out, state(),
+               [](auto& dst, const auto& src, const char*) { dst = src.load(std::memory_order_relaxed); });
     return out;
 }
 
@@ -98,8 +100,9 @@ void set_limits(const Limits& limits) {
     each_field(limits, ceil, [](const auto& value, const auto& top, const char* name) {
         const auto lowest = std::string(name) == "svg_image_nesting" ? 0 : 1;
         if (value < static_cast<std::decay_t<decltype(value)>>(lowest) || value > top)
-            throw Error(ErrorKind::InvalidArgument, std::string("Limits::") + name + " must be " + std::to_string(lowest) +
-                                                        " to " + std::to_string(top) + ", got " + std::to_string(value));
+            throw Error(ErrorKind::InvalidArgument, std::string("Limits::") + name + " must be " +
+                                                        std::to_string(lowest) + " to " + std::to_string(top) +
+                                                        ", got " + std::to_string(value));
     });
     state().store(limits);
 }

@@ -5,8 +5,7 @@
 
 namespace casteljau::platform {
 
-RuntimeLibrary::RuntimeLibrary(const char* name, const char* soname)
-    : label_(std::string(name) + " (" + soname + ")") {
+RuntimeLibrary::RuntimeLibrary(const char* name, const char* soname) : label_(std::string(name) + " (" + soname + ")") {
     handle_ = dlopen(soname, RTLD_NOW | RTLD_LOCAL);
     if (!handle_) {
         const char* why = dlerror();

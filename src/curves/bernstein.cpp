@@ -47,7 +47,8 @@ void bernstein_all(int n, double t, std::span<double> out) {
 std::vector<double> bernstein_to_power_matrix(int n) {
     if (n < 0 || n > limits::kMaxBezierDegree)
         throw Error(ErrorKind::InvalidArgument, "bernstein_to_power_matrix: degree " + std::to_string(n) +
-                                                    " is outside [0, " + std::to_string(limits::kMaxBezierDegree) + "]");
+                                                    " is outside [0, " + std::to_string(limits::kMaxBezierDegree) +
+                                                    "]");
     const std::size_t m = static_cast<std::size_t>(n) + 1;
     std::vector<double> M(m * m, 0.0);
     for (int k = 0; k <= n; ++k)
@@ -85,7 +86,9 @@ void halve(const std::vector<double>& c, std::vector<double>& left, std::vector<
     left[0] = b[0];
     right[static_cast<std::size_t>(n)] = b[static_cast<std::size_t>(n)];
     for (int r = 1; r <= n; ++r) {
-        for (int i = 0; i <= n - r; ++i) b[static_cast<std::size_t>(i)] = 0.5 * (b[static_cast<std::size_t>(i)] + b[static_cast<std::size_t>(i) + 1]);
+        for (int i = 0; i <= n - r; ++i)
+            b[static_cast<std::size_t>(i)] =
+                0.5 * (b[static_cast<std::size_t>(i)] + b[static_cast<std::size_t>(i) + 1]);
         left[static_cast<std::size_t>(r)] = b[0];
         right[static_cast<std::size_t>(n - r)] = b[static_cast<std::size_t>(n - r)];
     }
@@ -117,8 +120,9 @@ std::vector<double> bernstein_roots(std::span<const double> coeffs) {
     if (c0.back() == 0) roots.push_back(1.0);
     stack.push_back({std::move(c0), 0.0, 1.0, 0});
     std::vector<double> scratch, left, right;
-    constexpr int kMaxDepth = 52;          // interval width 2^-52
-    constexpr std::size_t kMaxWork = 50000;  // intervals examined: a safety net (about 64 roots x 2 x 52 levels are needed at most)
+    constexpr int kMaxDepth = 52;  // interval width 2^-52
+    constexpr std::size_t kMaxWork =
+        50000;  // intervals examined: a safety net (about 64 roots x 2 x 52 levels are needed at most)
     std::size_t work = 0;
 
     while (!stack.empty()) {
@@ -139,8 +143,14 @@ std::vector<double> bernstein_roots(std::span<const double> coeffs) {
                 const double ga = it.a + (it.b - it.a) * lo, gb = it.a + (it.b - it.a) * hi;
                 if (!(gb - ga > 2e-16 * std::max(1.0, std::abs(gb)))) break;
                 const double fm = eval_scalar(it.c, mid, scratch);
-                if (fm == 0) { lo = hi = mid; break; }
-                if ((fm > 0) == (sa > 0)) lo = mid; else hi = mid;
+                if (fm == 0) {
+                    lo = hi = mid;
+                    break;
+                }
+                if ((fm > 0) == (sa > 0))
+                    lo = mid;
+                else
+                    hi = mid;
             }
             roots.push_back(it.a + (it.b - it.a) * 0.5 * (lo + hi));
             continue;

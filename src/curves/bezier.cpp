@@ -16,10 +16,11 @@ using namespace curves_detail;
 
 namespace {
 
-template <CurvePoint P> void validate_points(const std::vector<P>& pts, const char* what) {
+template <CurvePoint P>
+void validate_points(const std::vector<P>& pts, const char* what) {
     if (pts.size() < 2)
-        throw Error(ErrorKind::InvalidData, std::string(what) + " needs at least 2 control points, got " +
-                                                std::to_string(pts.size()));
+        throw Error(ErrorKind::InvalidData,
+                    std::string(what) + " needs at least 2 control points, got " + std::to_string(pts.size()));
     if (pts.size() > static_cast<std::size_t>(limits::kMaxBezierDegree) + 1)
         throw Error(ErrorKind::Limit, std::string(what) + " degree " + std::to_string(pts.size() - 1) +
                                           " exceeds the limit of " + std::to_string(limits::kMaxBezierDegree));
@@ -30,7 +31,8 @@ template <CurvePoint P> void validate_points(const std::vector<P>& pts, const ch
 }
 
 // Forward differences of order k of pts, scaled by n!/(n-k)!, into out[0..n-k].
-template <CurvePoint P> int derivative_into(std::span<const P> pts, int k, P* out) {
+template <CurvePoint P>
+int derivative_into(std::span<const P> pts, int k, P* out) {
     const int n = static_cast<int>(pts.size()) - 1;
     if (k > n) {
         out[0] = P{};
@@ -50,7 +52,8 @@ template <CurvePoint P> int derivative_into(std::span<const P> pts, int k, P* ou
 
 // ---- PowerForm ----------------------------------------------------------------------------------
 
-template <CurvePoint P> P PowerForm<P>::eval(double t) const {
+template <CurvePoint P>
+P PowerForm<P>::eval(double t) const {
     if (coefficients.empty()) return P{};
     P acc = coefficients.back();
     for (std::size_t k = coefficients.size() - 1; k-- > 0;) acc = acc * t + coefficients[k];
@@ -59,18 +62,21 @@ template <CurvePoint P> P PowerForm<P>::eval(double t) const {
 
 // ---- Bezier -------------------------------------------------------------------------------------
 
-template <CurvePoint P> Bezier<P>::Bezier(std::vector<P> control_points) : points_(std::move(control_points)) {
+template <CurvePoint P>
+Bezier<P>::Bezier(std::vector<P> control_points) : points_(std::move(control_points)) {
     validate_points(points_, "Bezier curve");
 }
 
-template <CurvePoint P> P Bezier<P>::eval(double t) const {
+template <CurvePoint P>
+P Bezier<P>::eval(double t) const {
     check_t(t);
     std::array<P, kBuf> b;
     std::copy(points_.begin(), points_.end(), b.begin());
     return de_casteljau_inplace(b.data(), degree(), t);
 }
 
-template <CurvePoint P> P Bezier<P>::eval_bernstein(double t) const {
+template <CurvePoint P>
+P Bezier<P>::eval_bernstein(double t) const {
     check_t(t);
     const int n = degree();
     const double s = 1 - t;
@@ -96,14 +102,16 @@ template <CurvePoint P> P Bezier<P>::eval_bernstein(double t) const {
     return acc * std::pow(t, n);
 }
 
-template <CurvePoint P> std::vector<P> Bezier<P>::derivative_points(int k) const {
+template <CurvePoint P>
+std::vector<P> Bezier<P>::derivative_points(int k) const {
     if (k < 0) throw Error(ErrorKind::InvalidArgument, "derivative order must be >= 0, got " + std::to_string(k));
     std::array<P, kBuf> b;
     const int m = derivative_into(points(), k, b.data());
     return std::vector<P>(b.begin(), b.begin() + m + 1);
 }
 
-template <CurvePoint P> P Bezier<P>::derivative(int k, double t) const {
+template <CurvePoint P>
+P Bezier<P>::derivative(int k, double t) const {
     if (k < 0) throw Error(ErrorKind::InvalidArgument, "derivative order must be >= 0, got " + std::to_string(k));
     check_t(t);
     std::array<P, kBuf> b;
@@ -111,7 +119,8 @@ template <CurvePoint P> P Bezier<P>::derivative(int k, double t) const {
     return de_casteljau_inplace(b.data(), m, t);
 }
 
-template <CurvePoint P> double Bezier<P>::curvature(double t) const {
+template <CurvePoint P>
+double Bezier<P>::curvature(double t) const {
     const P d1 = derivative(1, t), d2 = derivative(2, t);
     const double speed = d1.length();
     if (speed == 0) return std::numeric_limits<double>::infinity();
@@ -125,11 +134,14 @@ double Bezier<P>::signed_curvature(double t) const requires std::same_as<P, Poin
     if (speed == 0) return std::numeric_limits<double>::infinity();
     // clang 14 instantiates this member for every P despite the requires clause; if constexpr
     // keeps the 2-D cross product out of the Point3 instantiation.
-    if constexpr (std::same_as<P, Point>) return d1.cross(d2) / (speed * speed * speed);
-    else return 0;
+    if constexpr (std::same_as<P, Point>)
+        return d1.cross(d2) / (speed * speed * speed);
+    else
+        return 0;
 }
 
-template <CurvePoint P> std::vector<std::vector<P>> Bezier<P>::triangle(double t) const {
+template <CurvePoint P>
+std::vector<std::vector<P>> Bezier<P>::triangle(double t) const {
     check_t(t);
     const int n = degree();
     std::vector<std::vector<P>> rows;
@@ -144,7 +156,8 @@ template <CurvePoint P> std::vector<std::vector<P>> Bezier<P>::triangle(double t
     return rows;
 }
 
-template <CurvePoint P> std::pair<Bezier<P>, Bezier<P>> Bezier<P>::split(double t) const {
+template <CurvePoint P>
+std::pair<Bezier<P>, Bezier<P>> Bezier<P>::split(double t) const {
     check_t(t);
     const int n = degree();
     std::vector<P> b = points_, left(points_.size()), right(points_.size());
@@ -159,21 +172,24 @@ template <CurvePoint P> std::pair<Bezier<P>, Bezier<P>> Bezier<P>::split(double 
     return {Bezier(std::move(left), Unchecked{}), Bezier(std::move(right), Unchecked{})};
 }
 
-template <CurvePoint P> P Bezier<P>::blossom(std::span<const double> args) const {
+template <CurvePoint P>
+P Bezier<P>::blossom(std::span<const double> args) const {
     const int n = degree();
     if (args.size() != static_cast<std::size_t>(n))
-        throw Error(ErrorKind::InvalidArgument, "blossom needs " + std::to_string(n) + " arguments, got " +
-                                                    std::to_string(args.size()));
+        throw Error(ErrorKind::InvalidArgument,
+                    "blossom needs " + std::to_string(n) + " arguments, got " + std::to_string(args.size()));
     std::array<P, kBuf> b;
     std::copy(points_.begin(), points_.end(), b.begin());
     for (int r = 1; r <= n; ++r) {
         const double u = args[static_cast<std::size_t>(r - 1)];
-        for (int i = 0; i <= n - r; ++i) b[static_cast<std::size_t>(i)] = mix(b[static_cast<std::size_t>(i)], b[static_cast<std::size_t>(i) + 1], u);
+        for (int i = 0; i <= n - r; ++i)
+            b[static_cast<std::size_t>(i)] = mix(b[static_cast<std::size_t>(i)], b[static_cast<std::size_t>(i) + 1], u);
     }
     return b[0];
 }
 
-template <CurvePoint P> Bezier<P> Bezier<P>::subcurve(double t0, double t1) const {
+template <CurvePoint P>
+Bezier<P> Bezier<P>::subcurve(double t0, double t1) const {
     check_parameter(t0, 0, 1, "t0");
     check_parameter(t1, 0, 1, "t1");
     const int n = degree();
@@ -186,12 +202,14 @@ template <CurvePoint P> Bezier<P> Bezier<P>::subcurve(double t0, double t1) cons
     return Bezier(std::move(out), Unchecked{});
 }
 
-template <CurvePoint P> Bezier<P> Bezier<P>::reversed() const {
+template <CurvePoint P>
+Bezier<P> Bezier<P>::reversed() const {
     std::vector<P> r(points_.rbegin(), points_.rend());
     return Bezier(std::move(r), Unchecked{});
 }
 
-template <CurvePoint P> Bezier<P> Bezier<P>::elevated(int times) const {
+template <CurvePoint P>
+Bezier<P> Bezier<P>::elevated(int times) const {
     if (times < 0) throw Error(ErrorKind::InvalidArgument, "elevation count must be >= 0");
     if (degree() + times > limits::kMaxBezierDegree)
         throw Error(ErrorKind::Limit, "elevating degree " + std::to_string(degree()) + " by " + std::to_string(times) +
@@ -204,14 +222,16 @@ template <CurvePoint P> Bezier<P> Bezier<P>::elevated(int times) const {
         next.back() = cur.back();
         for (int i = 1; i <= n; ++i) {
             const double a = static_cast<double>(i) / (n + 1);
-            next[static_cast<std::size_t>(i)] = cur[static_cast<std::size_t>(i - 1)] * a + cur[static_cast<std::size_t>(i)] * (1 - a);
+            next[static_cast<std::size_t>(i)] =
+                cur[static_cast<std::size_t>(i - 1)] * a + cur[static_cast<std::size_t>(i)] * (1 - a);
         }
         cur = std::move(next);
     }
     return Bezier(std::move(cur), Unchecked{});
 }
 
-template <CurvePoint P> PowerForm<P> Bezier<P>::to_power() const {
+template <CurvePoint P>
+PowerForm<P> Bezier<P>::to_power() const {
     // a_k = C(n,k) Delta^k P_0.
     const int n = degree();
     std::vector<P> d = points_;
@@ -219,13 +239,15 @@ template <CurvePoint P> PowerForm<P> Bezier<P>::to_power() const {
     pf.coefficients.resize(d.size());
     pf.coefficients[0] = d[0];
     for (int k = 1; k <= n; ++k) {
-        for (int i = 0; i <= n - k; ++i) d[static_cast<std::size_t>(i)] = d[static_cast<std::size_t>(i) + 1] - d[static_cast<std::size_t>(i)];
+        for (int i = 0; i <= n - k; ++i)
+            d[static_cast<std::size_t>(i)] = d[static_cast<std::size_t>(i) + 1] - d[static_cast<std::size_t>(i)];
         pf.coefficients[static_cast<std::size_t>(k)] = d[0] * binomial(n, k);
     }
     return pf;
 }
 
-template <CurvePoint P> Bezier<P> Bezier<P>::from_power(const PowerForm<P>& power) {
+template <CurvePoint P>
+Bezier<P> Bezier<P>::from_power(const PowerForm<P>& power) {
     // P_i = sum_{k <= i} C(i,k) / C(n,k) a_k.
     const auto& a = power.coefficients;
     if (a.size() < 2 || a.size() > static_cast<std::size_t>(limits::kMaxBezierDegree) + 1) {
@@ -241,13 +263,15 @@ template <CurvePoint P> Bezier<P> Bezier<P>::from_power(const PowerForm<P>& powe
     return Bezier(std::move(pts));
 }
 
-template <CurvePoint P> std::vector<double> Bezier<P>::extrema(int axis) const {
+template <CurvePoint P>
+std::vector<double> Bezier<P>::extrema(int axis) const {
     if (axis < 0 || axis >= point_dimension<P>)
         throw Error(ErrorKind::InvalidArgument, "axis " + std::to_string(axis) + " is outside the point's dimension");
     const int n = degree();
     std::array<double, kBuf> c{};
     for (int i = 0; i < n; ++i)
-        c[static_cast<std::size_t>(i)] = coord(points_[static_cast<std::size_t>(i) + 1], axis) - coord(points_[static_cast<std::size_t>(i)], axis);
+        c[static_cast<std::size_t>(i)] =
+            coord(points_[static_cast<std::size_t>(i) + 1], axis) - coord(points_[static_cast<std::size_t>(i)], axis);
     for (int i = 0; i < n; ++i)
         if (!std::isfinite(c[static_cast<std::size_t>(i)]))
             throw Error(ErrorKind::InvalidData, "Bezier curve: coordinates too large (the derivative overflows)");
@@ -256,7 +280,8 @@ template <CurvePoint P> std::vector<double> Bezier<P>::extrema(int axis) const {
     return roots;
 }
 
-template <CurvePoint P> Box<P> Bezier<P>::bounds() const {
+template <CurvePoint P>
+Box<P> Bezier<P>::bounds() const {
     Box<P> box{points_.front(), points_.front()};
     box.include(points_.back());
     for (int axis = 0; axis < point_dimension<P>; ++axis)
@@ -264,7 +289,8 @@ template <CurvePoint P> Box<P> Bezier<P>::bounds() const {
     return box;
 }
 
-template <CurvePoint P> Box<P> Bezier<P>::control_bounds() const {
+template <CurvePoint P>
+Box<P> Bezier<P>::control_bounds() const {
     Box<P> box{points_.front(), points_.front()};
     for (const P& p : points_) box.include(p);
     return box;
@@ -277,7 +303,8 @@ template struct PowerForm<Point3>;
 
 // ---- degree reduction ---------------------------------------------------------------------------
 
-template <CurvePoint P> Reduction<P> reduce_degree(const Bezier<P>& curve, ReductionMethod method) {
+template <CurvePoint P>
+Reduction<P> reduce_degree(const Bezier<P>& curve, ReductionMethod method) {
     const int n = curve.degree();
     if (n < 2) throw Error(ErrorKind::InvalidArgument, "degree reduction needs degree >= 2 (a line cannot be reduced)");
     const auto pts = curve.points();
@@ -314,7 +341,8 @@ template <CurvePoint P> Reduction<P> reduce_degree(const Bezier<P>& curve, Reduc
     Bezier<P> reduced(std::move(q));
     Reduction<P> out{reduced, 0, 0};
     const Bezier<P> back = reduced.elevated();
-    for (std::size_t i = 0; i <= N; ++i) out.deviation_bound = std::max(out.deviation_bound, (back[i] - pts[i]).length());
+    for (std::size_t i = 0; i <= N; ++i)
+        out.deviation_bound = std::max(out.deviation_bound, (back[i] - pts[i]).length());
     const int samples = 64 * n;
     for (int s = 0; s <= samples; ++s) {
         const double t = static_cast<double>(s) / samples;
@@ -328,7 +356,8 @@ template Reduction<Point3> reduce_degree(const Bezier<Point3>&, ReductionMethod)
 
 // ---- interpolation ------------------------------------------------------------------------------
 
-template <CurvePoint P> Bezier<P> interpolate_cubic(const P& q0, const P& q1, const P& q2, const P& q3) {
+template <CurvePoint P>
+Bezier<P> interpolate_cubic(const P& q0, const P& q1, const P& q2, const P& q3) {
     // P(1/3) = (8 P0 + 12 P1 + 6 P2 + P3) / 27 and P(2/3) = (P0 + 6 P1 + 12 P2 + 8 P3) / 27, solved
     // for P1, P2 with P0 = q0, P3 = q3.
     const P p1 = (q0 * -5.0 + q1 * 18.0 - q2 * 9.0 + q3 * 2.0) / 6.0;
@@ -345,7 +374,8 @@ namespace {
 
 // Direction in which the curve leaves its start (at_end = false) or arrives at its end (at_end =
 // true): the first P_j - P_0 (or P_n - P_(n-j)) longer than eps; zero if all points coincide.
-template <CurvePoint P> P end_direction(const Bezier<P>& c, bool at_end, double eps) {
+template <CurvePoint P>
+P end_direction(const Bezier<P>& c, bool at_end, double eps) {
     const auto pts = c.points();
     const std::size_t n = pts.size() - 1;
     for (std::size_t j = 1; j <= n; ++j) {
@@ -356,7 +386,8 @@ template <CurvePoint P> P end_direction(const Bezier<P>& c, bool at_end, double 
 }
 
 // Curvature vector (P'' - (P''.T) T) / |P'|^2 at t; ok = false when the speed is zero.
-template <CurvePoint P> P curvature_vector(const Bezier<P>& c, double t, bool& ok) {
+template <CurvePoint P>
+P curvature_vector(const Bezier<P>& c, double t, bool& ok) {
     const P d1 = c.derivative(1, t), d2 = c.derivative(2, t);
     const double s2 = dot(d1, d1);
     ok = s2 > 0;
@@ -366,7 +397,8 @@ template <CurvePoint P> P curvature_vector(const Bezier<P>& c, double t, bool& o
 
 }  // namespace
 
-template <CurvePoint P> Continuity join_continuity(const Bezier<P>& a, const Bezier<P>& b, const JoinTolerance& tolerance) {
+template <CurvePoint P>
+Continuity join_continuity(const Bezier<P>& a, const Bezier<P>& b, const JoinTolerance& tolerance) {
     if ((a.back() - b.front()).length() > tolerance.position) return Continuity::None;
     const P ta = end_direction(a, true, tolerance.position), tb = end_direction(b, false, tolerance.position);
     const double la = ta.length(), lb = tb.length();
@@ -402,7 +434,8 @@ void check_alpha(double alpha) {
 }
 }  // namespace
 
-template <CurvePoint P> std::vector<P> g1_join_points(const Bezier<P>& a, double alpha, int next_degree) {
+template <CurvePoint P>
+std::vector<P> g1_join_points(const Bezier<P>& a, double alpha, int next_degree) {
     check_alpha(alpha);
     const int n = a.degree(), m = next_degree_or(next_degree, n);
     const auto pts = a.points();
@@ -423,8 +456,8 @@ std::vector<P> g2_join_points(const Bezier<P>& a, double alpha, double beta, int
     std::vector<P> q = g1_join_points(a, alpha, m);
     // Q''(0) = alpha^2 P''(1) + beta P'(1), with Q''(0) = m(m-1)(Q2 - 2 Q1 + Q0),
     // P''(1) = n(n-1)(P_n - 2 P_(n-1) + P_(n-2)) and P'(1) = n (P_n - P_(n-1)).
-    const P second = (pts[N] - pts[N - 1] * 2.0 + pts[N - 2]) * (alpha * alpha * n * (n - 1.0)) +
-                     (pts[N] - pts[N - 1]) * (beta * n);
+    const P second =
+        (pts[N] - pts[N - 1] * 2.0 + pts[N - 2]) * (alpha * alpha * n * (n - 1.0)) + (pts[N] - pts[N - 1]) * (beta * n);
     q.push_back(q[1] * 2.0 - q[0] + second / (m * (m - 1.0)));
     return q;
 }

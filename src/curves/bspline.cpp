@@ -29,8 +29,8 @@ void validate_weights(std::span<const double> w, std::size_t count, const char* 
                                                 std::to_string(count) + " control points");
     for (std::size_t i = 0; i < w.size(); ++i)
         if (!(w[i] > 0) || !std::isfinite(w[i]))
-            throw Error(ErrorKind::InvalidData, std::string(what) + " weight " + std::to_string(i) + " is " + num(w[i]) +
-                                                    "; weights must be positive and finite");
+            throw Error(ErrorKind::InvalidData, std::string(what) + " weight " + std::to_string(i) + " is " +
+                                                    num(w[i]) + "; weights must be positive and finite");
 }
 
 }  // namespace curves_detail
@@ -38,7 +38,8 @@ void validate_weights(std::span<const double> w, std::size_t count, const char* 
 // ---- knot vectors -------------------------------------------------------------------------------
 
 void validate_knots(int degree, std::size_t count, std::span<const double> knots) {
-    if (degree < 0) throw Error(ErrorKind::InvalidArgument, "B-spline degree must be >= 0, got " + std::to_string(degree));
+    if (degree < 0)
+        throw Error(ErrorKind::InvalidArgument, "B-spline degree must be >= 0, got " + std::to_string(degree));
     if (degree > limits::kMaxSplineDegree)
         throw Error(ErrorKind::Limit, "B-spline degree " + std::to_string(degree) + " exceeds the limit of " +
                                           std::to_string(limits::kMaxSplineDegree));
@@ -80,9 +81,12 @@ std::vector<double> clamped_knots(int degree, std::size_t count) {
     std::vector<double> u(count + p + 1);
     const std::size_t spans = count - p;
     for (std::size_t i = 0; i < u.size(); ++i) {
-        if (i <= p) u[i] = 0;
-        else if (i >= count) u[i] = 1;
-        else u[i] = static_cast<double>(i - p) / static_cast<double>(spans);
+        if (i <= p)
+            u[i] = 0;
+        else if (i >= count)
+            u[i] = 1;
+        else
+            u[i] = static_cast<double>(i - p) / static_cast<double>(spans);
     }
     return u;
 }
@@ -102,7 +106,8 @@ std::vector<double> uniform_knots(int degree, std::size_t count) {
 std::vector<double> bspline_basis_all(int degree, std::span<const double> knots, double t) {
     if (degree < 0 || knots.size() < static_cast<std::size_t>(degree) + 3)
         throw Error(ErrorKind::InvalidData, "a degree-" + std::to_string(degree) + " basis needs at least " +
-                                                std::to_string(degree + 3) + " knots, got " + std::to_string(knots.size()));
+                                                std::to_string(degree + 3) + " knots, got " +
+                                                std::to_string(knots.size()));
     const std::size_t count = knots.size() - static_cast<std::size_t>(degree) - 1;
     validate_knots(degree, count, knots);
     check_domain(degree, count, knots, t);
@@ -138,19 +143,22 @@ BSpline<P>::BSpline(int degree, std::vector<P> control_points, std::vector<doubl
     validate_spline_points(points_, "B-spline");
 }
 
-template <CurvePoint P> BSpline<P> BSpline<P>::clamped(int degree, std::vector<P> control_points) {
+template <CurvePoint P>
+BSpline<P> BSpline<P>::clamped(int degree, std::vector<P> control_points) {
     validate_curve_degree(degree, "B-spline");
     auto knots = clamped_knots(degree, control_points.size());
     return BSpline(degree, std::move(control_points), std::move(knots));
 }
 
-template <CurvePoint P> BSpline<P> BSpline<P>::uniform(int degree, std::vector<P> control_points) {
+template <CurvePoint P>
+BSpline<P> BSpline<P>::uniform(int degree, std::vector<P> control_points) {
     validate_curve_degree(degree, "B-spline");
     auto knots = uniform_knots(degree, control_points.size());
     return BSpline(degree, std::move(control_points), std::move(knots));
 }
 
-template <CurvePoint P> BSpline<P> BSpline<P>::periodic(int degree, std::vector<P> control_points) {
+template <CurvePoint P>
+BSpline<P> BSpline<P>::periodic(int degree, std::vector<P> control_points) {
     validate_curve_degree(degree, "B-spline");
     if (control_points.size() < 2)
         throw Error(ErrorKind::InvalidData, "a periodic B-spline needs at least 2 control points, got " +
@@ -163,21 +171,27 @@ template <CurvePoint P> BSpline<P> BSpline<P>::periodic(int degree, std::vector<
     return BSpline(degree, std::move(control_points), std::move(knots));
 }
 
-template <CurvePoint P> std::size_t BSpline<P>::span_index(double t) const {
+template <CurvePoint P>
+std::size_t BSpline<P>::span_index(double t) const {
     check_domain(degree_, points_.size(), knots_, t);
     return find_span(degree_, points_.size(), knots_, t);
 }
 
-template <CurvePoint P> P BSpline<P>::eval(double t) const { return derivative(0, t); }
+template <CurvePoint P>
+P BSpline<P>::eval(double t) const {
+    return derivative(0, t);
+}
 
-template <CurvePoint P> P BSpline<P>::derivative(int k, double t) const {
+template <CurvePoint P>
+P BSpline<P>::derivative(int k, double t) const {
     if (k < 0) throw Error(ErrorKind::InvalidArgument, "derivative order must be >= 0, got " + std::to_string(k));
     const std::size_t span = span_index(t);
     if (k > degree_) return P{};
     return de_boor<P>(degree_, knots_, span, k, t, [&](std::size_t i) { return points_[i]; });
 }
 
-template <CurvePoint P> BSpline<P> BSpline<P>::with_knot(double u, int times) const {
+template <CurvePoint P>
+BSpline<P> BSpline<P>::with_knot(double u, int times) const {
     check_insertion(degree_, points_.size(), knots_, u, times);
     std::vector<P> ctrl = points_;
     std::vector<double> U = knots_;
@@ -185,7 +199,8 @@ template <CurvePoint P> BSpline<P> BSpline<P>::with_knot(double u, int times) co
     return BSpline(degree_, std::move(ctrl), std::move(U));
 }
 
-template <CurvePoint P> std::vector<Bezier<P>> BSpline<P>::to_bezier() const {
+template <CurvePoint P>
+std::vector<Bezier<P>> BSpline<P>::to_bezier() const {
     auto pieces = spans_to_bezier<P>(degree_, points_.size(), knots_, [&](std::size_t i) { return points_[i]; });
     std::vector<Bezier<P>> out;
     out.reserve(pieces.size());
@@ -193,7 +208,8 @@ template <CurvePoint P> std::vector<Bezier<P>> BSpline<P>::to_bezier() const {
     return out;
 }
 
-template <CurvePoint P> std::vector<double> BSpline<P>::breakpoints() const {
+template <CurvePoint P>
+std::vector<double> BSpline<P>::breakpoints() const {
     return domain_breakpoints(degree_, points_.size(), knots_);
 }
 
@@ -217,7 +233,8 @@ std::array<double, 16> bezier_to_uniform_cubic_bspline_matrix() {
 }
 
 namespace {
-template <CurvePoint P> std::array<P, 4> apply4(const std::array<double, 16>& M, const std::array<P, 4>& v) {
+template <CurvePoint P>
+std::array<P, 4> apply4(const std::array<double, 16>& M, const std::array<P, 4>& v) {
     std::array<P, 4> out{};
     for (std::size_t r = 0; r < 4; ++r)
         for (std::size_t c = 0; c < 4; ++c) out[r] += v[c] * M[r * 4 + c];
@@ -225,12 +242,14 @@ template <CurvePoint P> std::array<P, 4> apply4(const std::array<double, 16>& M,
 }
 }  // namespace
 
-template <CurvePoint P> std::array<P, 4> uniform_cubic_bspline_to_bezier(const std::array<P, 4>& d) {
+template <CurvePoint P>
+std::array<P, 4> uniform_cubic_bspline_to_bezier(const std::array<P, 4>& d) {
     // B0 = (D0 + 4 D1 + D2)/6, B1 = (2 D1 + D2)/3, B2 = (D1 + 2 D2)/3, B3 = (D1 + 4 D2 + D3)/6.
     return apply4(uniform_cubic_bspline_to_bezier_matrix(), d);
 }
 
-template <CurvePoint P> std::array<P, 4> bezier_to_uniform_cubic_bspline(const std::array<P, 4>& b) {
+template <CurvePoint P>
+std::array<P, 4> bezier_to_uniform_cubic_bspline(const std::array<P, 4>& b) {
     return apply4(bezier_to_uniform_cubic_bspline_matrix(), b);
 }
 

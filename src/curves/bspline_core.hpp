@@ -26,7 +26,8 @@ inline std::size_t find_span(int p, std::size_t n, std::span<const double> U, do
         while (k > P && U[k] == U[k + 1]) --k;
         return k;
     }
-    const auto it = std::upper_bound(U.begin() + static_cast<std::ptrdiff_t>(P), U.begin() + static_cast<std::ptrdiff_t>(n) + 1, t);
+    const auto it =
+        std::upper_bound(U.begin() + static_cast<std::ptrdiff_t>(P), U.begin() + static_cast<std::ptrdiff_t>(n) + 1, t);
     return static_cast<std::size_t>(it - U.begin()) - 1;
 }
 
@@ -40,7 +41,8 @@ inline void check_domain(int p, std::size_t n, std::span<const double> U, double
 template <class T, class Get>
 T de_boor(int p, std::span<const double> U, std::size_t k, int order, double t, Get&& get) {
     std::array<T, kBuf> d;
-    for (int j = 0; j <= p; ++j) d[static_cast<std::size_t>(j)] = get(k - static_cast<std::size_t>(p) + static_cast<std::size_t>(j));
+    for (int j = 0; j <= p; ++j)
+        d[static_cast<std::size_t>(j)] = get(k - static_cast<std::size_t>(p) + static_cast<std::size_t>(j));
     int deg = p;
     for (int r = 1; r <= order; ++r) {
         if (deg == 0) return T{};
@@ -50,7 +52,8 @@ T de_boor(int p, std::span<const double> U, std::size_t k, int order, double t, 
             const std::size_t i = kk - static_cast<std::size_t>(deg) + static_cast<std::size_t>(j);
             const std::size_t sh = static_cast<std::size_t>(r - 1);
             const double den = U[i + static_cast<std::size_t>(deg) + 1 + sh] - U[i + 1 + sh];
-            d[static_cast<std::size_t>(j)] = (d[static_cast<std::size_t>(j) + 1] - d[static_cast<std::size_t>(j)]) * (deg / den);
+            d[static_cast<std::size_t>(j)] =
+                (d[static_cast<std::size_t>(j) + 1] - d[static_cast<std::size_t>(j)]) * (deg / den);
         }
         --deg;
     }
@@ -61,7 +64,8 @@ T de_boor(int p, std::span<const double> U, std::size_t k, int order, double t, 
             const std::size_t i = kk - static_cast<std::size_t>(deg) + static_cast<std::size_t>(j);
             const double a = U[i + sh], b = U[i + static_cast<std::size_t>(deg + 1 - r) + sh];
             const double alpha = (t - a) / (b - a);
-            d[static_cast<std::size_t>(j)] = mix(d[static_cast<std::size_t>(j) - 1], d[static_cast<std::size_t>(j)], alpha);
+            d[static_cast<std::size_t>(j)] =
+                mix(d[static_cast<std::size_t>(j) - 1], d[static_cast<std::size_t>(j)], alpha);
         }
     }
     return d[static_cast<std::size_t>(deg)];
@@ -71,13 +75,15 @@ T de_boor(int p, std::span<const double> U, std::size_t k, int order, double t, 
 template <class T, class Get>
 T de_boor_blossom(int p, std::span<const double> U, std::size_t k, const double* x, Get&& get) {
     std::array<T, kBuf> d;
-    for (int j = 0; j <= p; ++j) d[static_cast<std::size_t>(j)] = get(k - static_cast<std::size_t>(p) + static_cast<std::size_t>(j));
+    for (int j = 0; j <= p; ++j)
+        d[static_cast<std::size_t>(j)] = get(k - static_cast<std::size_t>(p) + static_cast<std::size_t>(j));
     for (int r = 1; r <= p; ++r) {
         for (int j = p; j >= r; --j) {
             const std::size_t i = k - static_cast<std::size_t>(p) + static_cast<std::size_t>(j);
             const double a = U[i], b = U[i + static_cast<std::size_t>(p + 1 - r)];
             const double alpha = (x[r - 1] - a) / (b - a);
-            d[static_cast<std::size_t>(j)] = mix(d[static_cast<std::size_t>(j) - 1], d[static_cast<std::size_t>(j)], alpha);
+            d[static_cast<std::size_t>(j)] =
+                mix(d[static_cast<std::size_t>(j) - 1], d[static_cast<std::size_t>(j)], alpha);
         }
     }
     return d[static_cast<std::size_t>(p)];
@@ -113,7 +119,8 @@ inline std::vector<double> domain_breakpoints(int p, std::size_t n, std::span<co
 
 // Boehm: inserts u once into (ctrl, U) of degree p. u must lie in [U_p, U_n] with multiplicity < p + 1
 // after insertion (checked by the caller).
-template <class T> void insert_knot(int p, std::vector<T>& ctrl, std::vector<double>& U, double u) {
+template <class T>
+void insert_knot(int p, std::vector<T>& ctrl, std::vector<double>& U, double u) {
     const std::size_t n = ctrl.size();
     const std::size_t k = find_span(p, n, U, u);
     const auto P = static_cast<std::size_t>(p);
@@ -137,9 +144,9 @@ inline void check_insertion(int p, std::size_t n, std::span<const double> U, dou
     check_parameter(u, U[static_cast<std::size_t>(p)], U[n], "inserted knot");
     const auto mult = static_cast<int>(std::count(U.begin(), U.end(), u));
     if (mult + times > p + 1)
-        throw Error(ErrorKind::InvalidArgument, "inserting knot " + num(u) + " " + std::to_string(times) +
-                                                    " time(s) would raise its multiplicity above degree + 1 = " +
-                                                    std::to_string(p + 1));
+        throw Error(ErrorKind::InvalidArgument,
+                    "inserting knot " + num(u) + " " + std::to_string(times) +
+                        " time(s) would raise its multiplicity above degree + 1 = " + std::to_string(p + 1));
     if (n + static_cast<std::size_t>(times) > limits::kMaxSplinePoints)
         throw Error(ErrorKind::Limit, "knot insertion would exceed the limit of " +
                                           std::to_string(limits::kMaxSplinePoints) + " control points");
@@ -147,10 +154,12 @@ inline void check_insertion(int p, std::size_t n, std::span<const double> U, dou
 
 void validate_curve_degree(int degree, const char* what);
 
-template <CurvePoint P> void validate_spline_points(const std::vector<P>& pts, const char* what) {
+template <CurvePoint P>
+void validate_spline_points(const std::vector<P>& pts, const char* what) {
     for (std::size_t i = 0; i < pts.size(); ++i)
         if (!pts[i].is_finite())
-            throw Error(ErrorKind::InvalidData, std::string(what) + " control point " + std::to_string(i) + " is not finite");
+            throw Error(ErrorKind::InvalidData,
+                        std::string(what) + " control point " + std::to_string(i) + " is not finite");
 }
 
 void validate_weights(std::span<const double> w, std::size_t count, const char* what);

@@ -27,12 +27,16 @@ inline void check_parameter(double t, double lo, double hi, const char* what) {
 inline void check_t(double t) { check_parameter(t, 0.0, 1.0, "t"); }
 
 // (1 - t) a + t b: exact at t = 0 and t = 1, the form de Casteljau's algorithm uses.
-template <class T> inline T mix(const T& a, const T& b, double t) { return a * (1 - t) + b * t; }
+template <class T>
+inline T mix(const T& a, const T& b, double t) {
+    return a * (1 - t) + b * t;
+}
 
 // A point with its weight, in homogeneous form (w P, w): rational curves run de Casteljau and de Boor
 // on these and divide at the end.
-template <CurvePoint P> struct Hom {
-    P p{};       // weighted point w P
+template <CurvePoint P>
+struct Hom {
+    P p{};  // weighted point w P
     double w = 0;
 
     Hom operator+(const Hom& o) const { return {p + o.p, w + o.w}; }
@@ -41,10 +45,14 @@ template <CurvePoint P> struct Hom {
     P project() const { return p / w; }
 };
 
-template <CurvePoint P> inline bool finite(const P& p) { return p.is_finite(); }
+template <CurvePoint P>
+inline bool finite(const P& p) {
+    return p.is_finite();
+}
 
 // De Casteljau in place on b[0..n]: returns P(t), destroys b.
-template <class T> inline T de_casteljau_inplace(T* b, int n, double t) {
+template <class T>
+inline T de_casteljau_inplace(T* b, int n, double t) {
     for (int r = 1; r <= n; ++r)
         for (int i = 0; i <= n - r; ++i) b[i] = mix(b[i], b[i + 1], t);
     return b[0];

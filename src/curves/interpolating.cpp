@@ -13,7 +13,8 @@ using namespace curves_detail;
 
 namespace {
 
-template <CurvePoint P> void validate_through_points(std::span<const P> pts, std::size_t minimum, const char* what) {
+template <CurvePoint P>
+void validate_through_points(std::span<const P> pts, std::size_t minimum, const char* what) {
     if (pts.size() < minimum)
         throw Error(ErrorKind::InvalidData, std::string(what) + " needs at least " + std::to_string(minimum) +
                                                 " points, got " + std::to_string(pts.size()));
@@ -26,18 +27,21 @@ template <CurvePoint P> void validate_through_points(std::span<const P> pts, std
 }
 
 // A cubic piece, with a clear error when the construction overflowed (huge coordinates).
-template <CurvePoint P> Bezier<P> piece(const P& a, const P& b, const P& c, const P& d, const char* what) {
+template <CurvePoint P>
+Bezier<P> piece(const P& a, const P& b, const P& c, const P& d, const char* what) {
     if (!a.is_finite() || !b.is_finite() || !c.is_finite() || !d.is_finite())
         throw Error(ErrorKind::InvalidData, std::string(what) + ": coordinates too large (the construction overflows)");
     return Bezier<P>({a, b, c, d});
 }
 
 void check_finite_param(double v, const char* name) {
-    if (!std::isfinite(v)) throw Error(ErrorKind::InvalidArgument, std::string(name) + " must be finite, got " + num(v));
+    if (!std::isfinite(v))
+        throw Error(ErrorKind::InvalidArgument, std::string(name) + " must be finite, got " + num(v));
 }
 
 // Neighbour access with the end condition: index i may be -1 or n (one past the end).
-template <CurvePoint P> P neighbour(std::span<const P> pts, long i, EndCondition ends) {
+template <CurvePoint P>
+P neighbour(std::span<const P> pts, long i, EndCondition ends) {
     const long n = static_cast<long>(pts.size());
     if (ends == EndCondition::Closed) return pts[static_cast<std::size_t>(((i % n) + n) % n)];
     return pts[static_cast<std::size_t>(std::clamp(i, 0L, n - 1))];
@@ -67,7 +71,8 @@ std::vector<Bezier<P>> tangent_spline(std::span<const P> pts, EndCondition ends,
 
 std::array<double, 16> hermite_matrix() { return {2, -2, 1, 1, -3, 3, -2, -1, 0, 0, 1, 0, 1, 0, 0, 0}; }
 
-template <CurvePoint P> P hermite_eval(const P& p0, const P& m0, const P& p1, const P& m1, double t) {
+template <CurvePoint P>
+P hermite_eval(const P& p0, const P& m0, const P& p1, const P& m1, double t) {
     check_t(t);
     const auto M = hermite_matrix();
     const double T[4] = {t * t * t, t * t, t, 1};
@@ -77,7 +82,8 @@ template <CurvePoint P> P hermite_eval(const P& p0, const P& m0, const P& p1, co
     return p0 * h[0] + p1 * h[1] + m0 * h[2] + m1 * h[3];
 }
 
-template <CurvePoint P> Bezier<P> hermite_to_bezier(const P& p0, const P& m0, const P& p1, const P& m1) {
+template <CurvePoint P>
+Bezier<P> hermite_to_bezier(const P& p0, const P& m0, const P& p1, const P& m1) {
     return Bezier<P>({p0, p0 + m0 / 3.0, p1 - m1 / 3.0, p1});
 }
 
@@ -90,8 +96,8 @@ std::vector<Bezier<P>> hermite_spline(std::span<const P> points, std::span<const
     validate_through_points(tangents, 2, "Hermite spline tangents");
     std::vector<Bezier<P>> out;
     for (std::size_t i = 0; i + 1 < points.size(); ++i)
-        out.push_back(piece(points[i], points[i] + tangents[i] / 3.0, points[i + 1] - tangents[i + 1] / 3.0, points[i + 1],
-                            "Hermite spline"));
+        out.push_back(piece(points[i], points[i] + tangents[i] / 3.0, points[i + 1] - tangents[i + 1] / 3.0,
+                            points[i + 1], "Hermite spline"));
     return out;
 }
 
@@ -103,7 +109,8 @@ std::vector<Bezier<P>> cardinal_spline(std::span<const P> points, double tension
     return tangent_spline(points, ends, "Cardinal spline", tangent, tangent);
 }
 
-template <CurvePoint P> std::vector<Bezier<P>> catmull_rom_spline(std::span<const P> points, EndCondition ends) {
+template <CurvePoint P>
+std::vector<Bezier<P>> catmull_rom_spline(std::span<const P> points, EndCondition ends) {
     return cardinal_spline(points, 0.0, ends);
 }
 
@@ -126,7 +133,8 @@ std::vector<Bezier<P>> kochanek_bartels_spline(std::span<const P> points, const 
     return tangent_spline(points, ends, "Kochanek-Bartels spline", out_tangent, in_tangent);
 }
 
-template <CurvePoint P> std::vector<Bezier<P>> natural_spline(std::span<const P> points, Parametrization param) {
+template <CurvePoint P>
+std::vector<Bezier<P>> natural_spline(std::span<const P> points, Parametrization param) {
     validate_through_points(points, 2, "natural spline");
     const std::size_t n = points.size() - 1;  // pieces
     std::vector<double> h(n);
@@ -172,17 +180,18 @@ template <CurvePoint P> std::vector<Bezier<P>> natural_spline(std::span<const P>
         const P D = (points[i + 1] - points[i]) / h[i];
         const P d0 = D - (M[i] * 2.0 + M[i + 1]) * (h[i] / 6);
         const P d1 = D + (M[i] + M[i + 1] * 2.0) * (h[i] / 6);
-        out.push_back(piece(points[i], points[i] + d0 * (h[i] / 3), points[i + 1] - d1 * (h[i] / 3), points[i + 1], "natural spline"));
+        out.push_back(piece(points[i], points[i] + d0 * (h[i] / 3), points[i + 1] - d1 * (h[i] / 3), points[i + 1],
+                            "natural spline"));
     }
     return out;
 }
 
-#define CASTELJAU_INSTANTIATE(P)                                                                             \
-    template P hermite_eval(const P&, const P&, const P&, const P&, double);                                \
-    template Bezier<P> hermite_to_bezier(const P&, const P&, const P&, const P&);                           \
-    template std::vector<Bezier<P>> hermite_spline(std::span<const P>, std::span<const P>);                 \
-    template std::vector<Bezier<P>> cardinal_spline(std::span<const P>, double, EndCondition);              \
-    template std::vector<Bezier<P>> catmull_rom_spline(std::span<const P>, EndCondition);                   \
+#define CASTELJAU_INSTANTIATE(P)                                                                                \
+    template P hermite_eval(const P&, const P&, const P&, const P&, double);                                    \
+    template Bezier<P> hermite_to_bezier(const P&, const P&, const P&, const P&);                               \
+    template std::vector<Bezier<P>> hermite_spline(std::span<const P>, std::span<const P>);                     \
+    template std::vector<Bezier<P>> cardinal_spline(std::span<const P>, double, EndCondition);                  \
+    template std::vector<Bezier<P>> catmull_rom_spline(std::span<const P>, EndCondition);                       \
     template std::vector<Bezier<P>> kochanek_bartels_spline(std::span<const P>, const KbParams&, EndCondition); \
     template std::vector<Bezier<P>> natural_spline(std::span<const P>, Parametrization);
 CASTELJAU_INSTANTIATE(Point)

@@ -17,7 +17,8 @@ using namespace curves_detail;
 namespace {
 
 // R^(k) from the homogeneous derivatives H[j] = (A^(j), w^(j)), j = 0..k (quotient rule, recursively).
-template <CurvePoint P> P rational_derivative(const Hom<P>* H, int k) {
+template <CurvePoint P>
+P rational_derivative(const Hom<P>* H, int k) {
     std::array<P, kBuf> R;
     R[0] = H[0].project();
     for (int j = 1; j <= k; ++j) {
@@ -44,14 +45,16 @@ template <CurvePoint P>
 RationalBezier<P>::RationalBezier(const Bezier<P>& curve)
     : points_(curve.points().begin(), curve.points().end()), weights_(curve.points().size(), 1.0) {}
 
-template <CurvePoint P> P RationalBezier<P>::eval(double t) const {
+template <CurvePoint P>
+P RationalBezier<P>::eval(double t) const {
     // The ends exactly (the homogeneous route would give w P / w, off by rounding).
     if (t == 0) return points_.front();
     if (t == 1) return points_.back();
     return derivative(0, t);
 }
 
-template <CurvePoint P> P RationalBezier<P>::derivative(int k, double t) const {
+template <CurvePoint P>
+P RationalBezier<P>::derivative(int k, double t) const {
     if (k < 0) throw Error(ErrorKind::InvalidArgument, "derivative order must be >= 0, got " + std::to_string(k));
     if (k > limits::kMaxBezierDegree) throw Error(ErrorKind::Limit, "derivative order above the degree limit");
     check_t(t);
@@ -64,10 +67,13 @@ template <CurvePoint P> P RationalBezier<P>::derivative(int k, double t) const {
             continue;
         }
         for (int i = 0; i <= n; ++i)
-            b[static_cast<std::size_t>(i)] = {points_[static_cast<std::size_t>(i)] * weights_[static_cast<std::size_t>(i)], weights_[static_cast<std::size_t>(i)]};
+            b[static_cast<std::size_t>(i)] = {
+                points_[static_cast<std::size_t>(i)] * weights_[static_cast<std::size_t>(i)],
+                weights_[static_cast<std::size_t>(i)]};
         double scale = 1;
         for (int r = 1; r <= j; ++r) {
-            for (int i = 0; i <= n - r; ++i) b[static_cast<std::size_t>(i)] = b[static_cast<std::size_t>(i) + 1] - b[static_cast<std::size_t>(i)];
+            for (int i = 0; i <= n - r; ++i)
+                b[static_cast<std::size_t>(i)] = b[static_cast<std::size_t>(i) + 1] - b[static_cast<std::size_t>(i)];
             scale *= n - r + 1;
         }
         H[static_cast<std::size_t>(j)] = de_casteljau_inplace(b.data(), n - j, t) * scale;
@@ -100,7 +106,8 @@ std::pair<RationalBezier<P>, RationalBezier<P>> RationalBezier<P>::split(double 
     return {unpack(l), unpack(r)};
 }
 
-template <CurvePoint P> RationalBezier<P> RationalBezier<P>::normalized() const {
+template <CurvePoint P>
+RationalBezier<P> RationalBezier<P>::normalized() const {
     const std::size_t n = points_.size() - 1;
     const double rho = std::pow(weights_.front() / weights_.back(), 1.0 / static_cast<double>(n));
     std::vector<double> w(weights_.size());
@@ -111,7 +118,8 @@ template <CurvePoint P> RationalBezier<P> RationalBezier<P>::normalized() const 
     return RationalBezier(points_, std::move(w));
 }
 
-template <CurvePoint P> Box<P> RationalBezier<P>::control_bounds() const {
+template <CurvePoint P>
+Box<P> RationalBezier<P>::control_bounds() const {
     Box<P> box{points_.front(), points_.front()};
     for (const P& p : points_) box.include(p);
     return box;
@@ -138,9 +146,13 @@ Nurbs<P>::Nurbs(const BSpline<P>& s)
       weights_(s.points().size(), 1.0),
       knots_(s.knots().begin(), s.knots().end()) {}
 
-template <CurvePoint P> P Nurbs<P>::eval(double t) const { return derivative(0, t); }
+template <CurvePoint P>
+P Nurbs<P>::eval(double t) const {
+    return derivative(0, t);
+}
 
-template <CurvePoint P> P Nurbs<P>::derivative(int k, double t) const {
+template <CurvePoint P>
+P Nurbs<P>::derivative(int k, double t) const {
     if (k < 0) throw Error(ErrorKind::InvalidArgument, "derivative order must be >= 0, got " + std::to_string(k));
     if (k > limits::kMaxSplineDegree) throw Error(ErrorKind::Limit, "derivative order above the degree limit");
     check_domain(degree_, points_.size(), knots_, t);
@@ -152,7 +164,8 @@ template <CurvePoint P> P Nurbs<P>::derivative(int k, double t) const {
     return rational_derivative(H.data(), k);
 }
 
-template <CurvePoint P> Nurbs<P> Nurbs<P>::with_knot(double u, int times) const {
+template <CurvePoint P>
+Nurbs<P> Nurbs<P>::with_knot(double u, int times) const {
     check_insertion(degree_, points_.size(), knots_, u, times);
     std::vector<Hom<P>> h(points_.size());
     for (std::size_t i = 0; i < h.size(); ++i) h[i] = {points_[i] * weights_[i], weights_[i]};
@@ -167,7 +180,8 @@ template <CurvePoint P> Nurbs<P> Nurbs<P>::with_knot(double u, int times) const 
     return Nurbs(degree_, std::move(pts), std::move(w), std::move(U));
 }
 
-template <CurvePoint P> std::vector<RationalBezier<P>> Nurbs<P>::to_bezier() const {
+template <CurvePoint P>
+std::vector<RationalBezier<P>> Nurbs<P>::to_bezier() const {
     auto get = [&](std::size_t i) { return Hom<P>{points_[i] * weights_[i], weights_[i]}; };
     const auto pieces = spans_to_bezier<Hom<P>>(degree_, points_.size(), knots_, get);
     std::vector<RationalBezier<P>> out;
@@ -183,7 +197,8 @@ template <CurvePoint P> std::vector<RationalBezier<P>> Nurbs<P>::to_bezier() con
     return out;
 }
 
-template <CurvePoint P> std::vector<double> Nurbs<P>::breakpoints() const {
+template <CurvePoint P>
+std::vector<double> Nurbs<P>::breakpoints() const {
     return domain_breakpoints(degree_, points_.size(), knots_);
 }
 
@@ -208,7 +223,8 @@ void check_radius(double r, const char* name) {
         throw Error(ErrorKind::InvalidArgument, std::string(name) + " must be positive and finite, got " + num(r));
 }
 void check_angle(double a, const char* name) {
-    if (!std::isfinite(a)) throw Error(ErrorKind::InvalidArgument, std::string(name) + " must be finite, got " + num(a));
+    if (!std::isfinite(a))
+        throw Error(ErrorKind::InvalidArgument, std::string(name) + " must be finite, got " + num(a));
 }
 }  // namespace
 

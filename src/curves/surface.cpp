@@ -16,8 +16,9 @@ namespace {
 
 void check_net_size(std::size_t got, std::size_t rows, std::size_t cols, const char* what) {
     if (rows * cols > limits::kMaxSurfacePoints)
-        throw Error(ErrorKind::Limit, std::string(what) + " has " + std::to_string(rows) + " x " + std::to_string(cols) +
-                                          " control points; the limit is " + std::to_string(limits::kMaxSurfacePoints));
+        throw Error(ErrorKind::Limit, std::string(what) + " has " + std::to_string(rows) + " x " +
+                                          std::to_string(cols) + " control points; the limit is " +
+                                          std::to_string(limits::kMaxSurfacePoints));
     if (got != rows * cols)
         throw Error(ErrorKind::InvalidData, std::string(what) + " needs " + std::to_string(rows) + " x " +
                                                 std::to_string(cols) + " = " + std::to_string(rows * cols) +
@@ -34,13 +35,15 @@ void check_bezier_degree(int d, const char* dir) {
 }
 
 // k-th derivative control values of one row/column (scaled forward differences) evaluated at t.
-template <class T, class Get> T bezier_derivative_1d(int n, int k, double t, Get&& get) {
+template <class T, class Get>
+T bezier_derivative_1d(int n, int k, double t, Get&& get) {
     if (k > n) return T{};
     std::array<T, kBuf> b;
     for (int i = 0; i <= n; ++i) b[static_cast<std::size_t>(i)] = get(i);
     double scale = 1;
     for (int r = 1; r <= k; ++r) {
-        for (int i = 0; i <= n - r; ++i) b[static_cast<std::size_t>(i)] = b[static_cast<std::size_t>(i) + 1] - b[static_cast<std::size_t>(i)];
+        for (int i = 0; i <= n - r; ++i)
+            b[static_cast<std::size_t>(i)] = b[static_cast<std::size_t>(i) + 1] - b[static_cast<std::size_t>(i)];
         scale *= n - r + 1;
     }
     return de_casteljau_inplace(b.data(), n - k, t) * scale;
@@ -61,9 +64,13 @@ BezierPatch<P>::BezierPatch(int degree_u, int degree_v, std::vector<P> net)
             throw Error(ErrorKind::InvalidData, "Bezier patch control point " + std::to_string(i) + " is not finite");
 }
 
-template <CurvePoint P> P BezierPatch<P>::eval(double u, double v) const { return derivative(0, 0, u, v); }
+template <CurvePoint P>
+P BezierPatch<P>::eval(double u, double v) const {
+    return derivative(0, 0, u, v);
+}
 
-template <CurvePoint P> P BezierPatch<P>::derivative(int ku, int kv, double u, double v) const {
+template <CurvePoint P>
+P BezierPatch<P>::derivative(int ku, int kv, double u, double v) const {
     if (ku < 0 || kv < 0) throw Error(ErrorKind::InvalidArgument, "derivative orders must be >= 0");
     check_parameter(u, 0, 1, "u");
     check_parameter(v, 0, 1, "v");
@@ -77,7 +84,8 @@ template <CurvePoint P> P BezierPatch<P>::derivative(int ku, int kv, double u, d
 
 std::array<double, 16> bezier_cubic_matrix() { return {-1, 3, -3, 1, 3, -6, 3, 0, -3, 3, 0, 0, 1, 0, 0, 0}; }
 
-template <CurvePoint P> P BezierPatch<P>::eval_matrix(double u, double v) const {
+template <CurvePoint P>
+P BezierPatch<P>::eval_matrix(double u, double v) const {
     if (m_ != 3 || n_ != 3)
         throw Error(ErrorKind::InvalidArgument, "the matrix form U M P M^T V^T needs a bicubic patch");
     check_parameter(u, 0, 1, "u");
@@ -96,7 +104,8 @@ template <CurvePoint P> P BezierPatch<P>::eval_matrix(double u, double v) const 
     return acc;
 }
 
-template <CurvePoint P> Bezier<P> BezierPatch<P>::iso_u(double u) const {
+template <CurvePoint P>
+Bezier<P> BezierPatch<P>::iso_u(double u) const {
     check_parameter(u, 0, 1, "u");
     std::vector<P> pts(static_cast<std::size_t>(n_) + 1);
     for (int j = 0; j <= n_; ++j)
@@ -104,7 +113,8 @@ template <CurvePoint P> Bezier<P> BezierPatch<P>::iso_u(double u) const {
     return Bezier<P>(std::move(pts));
 }
 
-template <CurvePoint P> Bezier<P> BezierPatch<P>::iso_v(double v) const {
+template <CurvePoint P>
+Bezier<P> BezierPatch<P>::iso_v(double v) const {
     check_parameter(v, 0, 1, "v");
     std::vector<P> pts(static_cast<std::size_t>(m_) + 1);
     for (int i = 0; i <= m_; ++i)
@@ -112,7 +122,8 @@ template <CurvePoint P> Bezier<P> BezierPatch<P>::iso_v(double v) const {
     return Bezier<P>(std::move(pts));
 }
 
-template <CurvePoint P> Box<P> BezierPatch<P>::control_bounds() const {
+template <CurvePoint P>
+Box<P> BezierPatch<P>::control_bounds() const {
     Box<P> b{net_.front(), net_.front()};
     for (const P& p : net_) b.include(p);
     return b;
@@ -151,9 +162,14 @@ T surface_deboor(int pu, int pv, std::size_t nu, std::size_t nv, std::span<const
 }  // namespace
 
 template <CurvePoint P>
-BSplineSurface<P>::BSplineSurface(int degree_u, int degree_v, std::size_t count_u, std::size_t count_v, std::vector<P> net,
-                                  std::vector<double> knots_u, std::vector<double> knots_v)
-    : pu_(degree_u), pv_(degree_v), nu_(count_u), nv_(count_v), net_(std::move(net)), ku_(std::move(knots_u)),
+BSplineSurface<P>::BSplineSurface(int degree_u, int degree_v, std::size_t count_u, std::size_t count_v,
+                                  std::vector<P> net, std::vector<double> knots_u, std::vector<double> knots_v)
+    : pu_(degree_u),
+      pv_(degree_v),
+      nu_(count_u),
+      nv_(count_v),
+      net_(std::move(net)),
+      ku_(std::move(knots_u)),
       kv_(std::move(knots_v)) {
     validate_surface(pu_, pv_, nu_, nv_, net_.size(), ku_, kv_, "B-spline surface");
     validate_spline_points(net_, "B-spline surface");
@@ -168,13 +184,15 @@ BSplineSurface<P> BSplineSurface<P>::clamped(int degree_u, int degree_v, std::si
                           clamped_knots(degree_v, count_v));
 }
 
-template <CurvePoint P> P BSplineSurface<P>::derivative(int ku, int kv, double u, double v) const {
+template <CurvePoint P>
+P BSplineSurface<P>::derivative(int ku, int kv, double u, double v) const {
     if (ku < 0 || kv < 0) throw Error(ErrorKind::InvalidArgument, "derivative orders must be >= 0");
     return surface_deboor<P>(pu_, pv_, nu_, nv_, ku_, kv_, ku, kv, u, v,
                              [&](std::size_t i, std::size_t j) { return net_[i * nv_ + j]; });
 }
 
-template <CurvePoint P> BSpline<P> BSplineSurface<P>::iso_u(double u) const {
+template <CurvePoint P>
+BSpline<P> BSplineSurface<P>::iso_u(double u) const {
     check_domain(pu_, nu_, ku_, u);
     const std::size_t su = find_span(pu_, nu_, ku_, u);
     std::vector<P> pts(nv_);
@@ -183,7 +201,8 @@ template <CurvePoint P> BSpline<P> BSplineSurface<P>::iso_u(double u) const {
     return BSpline<P>(pv_, std::move(pts), kv_);
 }
 
-template <CurvePoint P> BSpline<P> BSplineSurface<P>::iso_v(double v) const {
+template <CurvePoint P>
+BSpline<P> BSplineSurface<P>::iso_v(double v) const {
     check_domain(pv_, nv_, kv_, v);
     const std::size_t sv = find_span(pv_, nv_, kv_, v);
     std::vector<P> pts(nu_);
@@ -200,16 +219,24 @@ template class BSplineSurface<Point3>;
 template <CurvePoint P>
 NurbsSurface<P>::NurbsSurface(int degree_u, int degree_v, std::size_t count_u, std::size_t count_v, std::vector<P> net,
                               std::vector<double> weights, std::vector<double> knots_u, std::vector<double> knots_v)
-    : pu_(degree_u), pv_(degree_v), nu_(count_u), nv_(count_v), net_(std::move(net)), w_(std::move(weights)),
-      ku_(std::move(knots_u)), kv_(std::move(knots_v)) {
+    : pu_(degree_u),
+      pv_(degree_v),
+      nu_(count_u),
+      nv_(count_v),
+      net_(std::move(net)),
+      w_(std::move(weights)),
+      ku_(std::move(knots_u)),
+      kv_(std::move(knots_v)) {
     validate_surface(pu_, pv_, nu_, nv_, net_.size(), ku_, kv_, "NURBS surface");
     validate_spline_points(net_, "NURBS surface");
     validate_weights(w_, net_.size(), "NURBS surface");
 }
 
-template <CurvePoint P> P NurbsSurface<P>::derivative(int ku, int kv, double u, double v) const {
+template <CurvePoint P>
+P NurbsSurface<P>::derivative(int ku, int kv, double u, double v) const {
     if (ku < 0 || kv < 0 || ku > 1 || kv > 1)
-        throw Error(ErrorKind::InvalidArgument, "NURBS surface derivatives are available for orders 0 and 1 in u and v");
+        throw Error(ErrorKind::InvalidArgument,
+                    "NURBS surface derivatives are available for orders 0 and 1 in u and v");
     auto get = [&](std::size_t i, std::size_t j) {
         const std::size_t k = i * nv_ + j;
         return Hom<P>{net_[k] * w_[k], w_[k]};
@@ -231,7 +258,8 @@ template <CurvePoint P> P NurbsSurface<P>::derivative(int ku, int kv, double u, 
     return (c.p - S * c.w - Sv * a.w - Su * b.w) / h.w;
 }
 
-template <CurvePoint P> Nurbs<P> NurbsSurface<P>::iso_u(double u) const {
+template <CurvePoint P>
+Nurbs<P> NurbsSurface<P>::iso_u(double u) const {
     check_domain(pu_, nu_, ku_, u);
     const std::size_t su = find_span(pu_, nu_, ku_, u);
     std::vector<P> pts(nv_);
@@ -247,7 +275,8 @@ template <CurvePoint P> Nurbs<P> NurbsSurface<P>::iso_u(double u) const {
     return Nurbs<P>(pv_, std::move(pts), std::move(w), kv_);
 }
 
-template <CurvePoint P> Nurbs<P> NurbsSurface<P>::iso_v(double v) const {
+template <CurvePoint P>
+Nurbs<P> NurbsSurface<P>::iso_v(double v) const {
     check_domain(pv_, nv_, kv_, v);
     const std::size_t sv = find_span(pv_, nv_, kv_, v);
     std::vector<P> pts(nu_);

@@ -52,7 +52,8 @@ double View::depth(const Point3& p) const {
 
 namespace {
 
-template <class S> Point3 surface_normal(const S& s, double u, double v, double u0, double u1, double v0, double v1) {
+template <class S>
+Point3 surface_normal(const S& s, double u, double v, double u0, double u1, double v0, double v1) {
     for (int attempt = 0; attempt < 2; ++attempt) {
         const Point3 n = s.du(u, v).cross(s.dv(u, v));
         const double len = n.length();
@@ -68,7 +69,10 @@ struct Domain {
     double u0, u1, v0, v1;
 };
 Domain domain_of(const BezierPatch<Point3>&) { return {0, 1, 0, 1}; }
-template <class S> Domain domain_of(const S& s) { return {s.u_start(), s.u_end(), s.v_start(), s.v_end()}; }
+template <class S>
+Domain domain_of(const S& s) {
+    return {s.u_start(), s.u_end(), s.v_start(), s.v_end()};
+}
 
 }  // namespace
 
@@ -88,12 +92,11 @@ void check_lines(int lines, const char* name) {
     if (lines == 0) return;
     if (lines < 2 || lines > limits::kMaxGridLines)
         throw Error(ErrorKind::InvalidArgument, std::string(name) + " must be 0 or 2 to " +
-                                                    std::to_string(limits::kMaxGridLines) + ", got " + std::to_string(lines));
+                                                    std::to_string(limits::kMaxGridLines) + ", got " +
+                                                    std::to_string(lines));
 }
 
-double grid_param(double a, double b, int i, int lines) {
-    return i == lines - 1 ? b : a + (b - a) * i / (lines - 1);
-}
+double grid_param(double a, double b, int i, int lines) { return i == lines - 1 ? b : a + (b - a) * i / (lines - 1); }
 
 void add_curve(Path& path, const Bezier<Point3>& c, const View& view, double tol) {
     std::vector<Point> pts;
@@ -109,12 +112,15 @@ void add_curve(Path& path, const Nurbs<Point3>& c, const View& view, double tol)
     for (const auto& piece : c.to_bezier()) {
         std::vector<Point> pts;
         for (const Point3& p : piece.points()) pts.push_back(view.apply(p));
-        append_to_path(path, RationalBezier<Point>(std::move(pts), std::vector<double>(piece.weights().begin(), piece.weights().end())),
-                       tol);
+        append_to_path(
+            path,
+            RationalBezier<Point>(std::move(pts), std::vector<double>(piece.weights().begin(), piece.weights().end())),
+            tol);
     }
 }
 
-template <class S> Path grid(const S& s, const View& view, int lines_u, int lines_v, double tol) {
+template <class S>
+Path grid(const S& s, const View& view, int lines_u, int lines_v, double tol) {
     check_lines(lines_u, "lines_u");
     check_lines(lines_v, "lines_v");
     const Domain d = domain_of(s);
@@ -152,7 +158,8 @@ std::vector<ShadedQuad> quads(const S& s, const View& view, int cu, int cv, Poin
         throw Error(ErrorKind::InvalidArgument, "shaded quads: cells must be >= 1 per direction and at most " +
                                                     std::to_string(limits::kMaxShadedQuads) + " in all");
     const double ll = light.length();
-    if (!(ll > 0) || !std::isfinite(ll)) throw Error(ErrorKind::InvalidArgument, "shaded quads: light must be a non-zero finite vector");
+    if (!(ll > 0) || !std::isfinite(ll))
+        throw Error(ErrorKind::InvalidArgument, "shaded quads: light must be a non-zero finite vector");
     const Point3 L = light / ll;
     const Domain d = domain_of(s);
     const auto CU = static_cast<std::size_t>(cu), CV = static_cast<std::size_t>(cv);
@@ -177,13 +184,15 @@ std::vector<ShadedQuad> quads(const S& s, const View& view, int cu, int cv, Poin
             out.push_back(q);
         }
     }
-    std::stable_sort(out.begin(), out.end(), [](const ShadedQuad& a, const ShadedQuad& b) { return a.depth > b.depth; });
+    std::stable_sort(out.begin(), out.end(),
+                     [](const ShadedQuad& a, const ShadedQuad& b) { return a.depth > b.depth; });
     return out;
 }
 
 }  // namespace
 
-std::vector<ShadedQuad> shaded_quads(const BezierPatch<Point3>& s, const View& view, int cells_u, int cells_v, Point3 light) {
+std::vector<ShadedQuad> shaded_quads(const BezierPatch<Point3>& s, const View& view, int cells_u, int cells_v,
+                                     Point3 light) {
     return quads(s, view, cells_u, cells_v, light);
 }
 std::vector<ShadedQuad> shaded_quads(const BSplineSurface<Point3>& s, const View& view, int cells_u, int cells_v,

@@ -25,8 +25,8 @@ Color hsl(double hue, double sat_percent, double light_percent) {
 
 void check_options(const FigureOptions& o) {
     if (o.width <= 0 || o.height <= 0)
-        throw Error(ErrorKind::InvalidArgument, "figure size must be positive, got " + std::to_string(o.width) + "x" +
-                                                    std::to_string(o.height));
+        throw Error(ErrorKind::InvalidArgument,
+                    "figure size must be positive, got " + std::to_string(o.width) + "x" + std::to_string(o.height));
     check_canvas_size(o.width, o.height);
     if (!(o.margin >= 0) || 2 * o.margin >= std::min(o.width, o.height))
         throw Error(ErrorKind::InvalidArgument, "figure margin must be >= 0 and leave room for the drawing");
@@ -91,9 +91,12 @@ Affine fit_transform(const Rect& b, int width, int height, double margin) {
     const double aw = width - 2 * margin, ah = height - 2 * margin;
     const double bw = b.x1 - b.x0, bh = b.y1 - b.y0;
     double s = 1;
-    if (bw > 0 && bh > 0) s = std::min(aw / bw, ah / bh);
-    else if (bw > 0) s = aw / bw;
-    else if (bh > 0) s = ah / bh;
+    if (bw > 0 && bh > 0)
+        s = std::min(aw / bw, ah / bh);
+    else if (bw > 0)
+        s = aw / bw;
+    else if (bh > 0)
+        s = ah / bh;
     if (!std::isfinite(s) || s <= 0)
         throw Error(ErrorKind::InvalidData, "the drawing's bounds cannot be fitted to the canvas");
     const double cx = 0.5 * (b.x0 + b.x1), cy = 0.5 * (b.y0 + b.y1);
@@ -122,7 +125,8 @@ Figure draw_bezier_figure(const Bezier<Point>& curve, const FigureOptions& o, st
     if (construction_t) {
         const int levels = curve.degree() - 1;
         for (int r = 1; r <= levels; ++r)
-            for (const Point& p : rows[static_cast<std::size_t>(r)]) marker(c, m.apply(p), 2.5, construction_color(r, levels));
+            for (const Point& p : rows[static_cast<std::size_t>(r)])
+                marker(c, m.apply(p), 2.5, construction_color(r, levels));
     }
     for (const Point& p : ctrl) marker(c, m.apply(p), 4.0, figure_colors::kControlPoint);
     if (construction_t) marker(c, m.apply(rows.back().front()), 5.5, figure_colors::kHighlight);
@@ -132,7 +136,8 @@ Figure draw_bezier_figure(const Bezier<Point>& curve, const FigureOptions& o, st
 Figure draw_spline_figure(const Path& curve, std::span<const Point> polygon, std::span<const Point> knots,
                           const FigureOptions& o) {
     check_options(o);
-    if (curve.empty() && polygon.empty()) throw Error(ErrorKind::InvalidData, "nothing to draw: empty curve and polygon");
+    if (curve.empty() && polygon.empty())
+        throw Error(ErrorKind::InvalidData, "nothing to draw: empty curve and polygon");
     Rect b = curve.empty() ? box_of(polygon) : curve.bounds();
     if (!polygon.empty()) b = b.united(box_of(polygon));
     Figure f{blank(o), fit_transform(b, o.width, o.height, o.margin)};
@@ -148,10 +153,12 @@ Figure draw_spline_figure(const Path& curve, std::span<const Point> polygon, std
 Figure draw_basis_figure(int degree, std::span<const double> knots, const FigureOptions& o) {
     check_options(o);
     if (degree < 0 || degree > limits::kMaxSplineDegree)
-        throw Error(ErrorKind::InvalidArgument, "basis degree must lie in 0.." + std::to_string(limits::kMaxSplineDegree));
+        throw Error(ErrorKind::InvalidArgument,
+                    "basis degree must lie in 0.." + std::to_string(limits::kMaxSplineDegree));
     if (knots.size() < static_cast<std::size_t>(degree) + 2)
         throw Error(ErrorKind::InvalidData, "a knot vector of degree " + std::to_string(degree) + " needs at least " +
-                                                std::to_string(degree + 2) + " knots, got " + std::to_string(knots.size()));
+                                                std::to_string(degree + 2) + " knots, got " +
+                                                std::to_string(knots.size()));
     const std::size_t count = knots.size() - static_cast<std::size_t>(degree) - 1;
     validate_knots(degree, count, knots);
     const double t0 = knots[static_cast<std::size_t>(degree)], t1 = knots[count];
@@ -159,7 +166,8 @@ Figure draw_basis_figure(int degree, std::span<const double> knots, const Figure
 
     // Plot area: extra room at the left and bottom for the axes; N in [0, 1] plus headroom.
     const double left = o.margin + 8, right = o.width - o.margin, top = o.margin, bottom = o.height - o.margin - 8;
-    if (!(right - left > 4 && bottom - top > 4)) throw Error(ErrorKind::InvalidArgument, "figure too small for a basis plot");
+    if (!(right - left > 4 && bottom - top > 4))
+        throw Error(ErrorKind::InvalidArgument, "figure too small for a basis plot");
     const double sx = (right - left) / (t1 - t0), sy = (bottom - top) / 1.08;
     Figure f{blank(o), Affine{sx, 0, 0, -sy, left - sx * t0, bottom}};
     Canvas c(f.image);
@@ -206,14 +214,16 @@ Figure draw_basis_figure(int degree, std::span<const double> knots, const Figure
         for (std::size_t j = 0; j < count; ++j) ctrl[j] = {greville[j], i == j ? 1.0 : 0.0};
         const BSpline<Point> graph(degree, std::move(ctrl), kv);
         const auto pieces = graph.to_bezier();
-        c.stroke_path(to_path(pieces, 1e-4).transformed(m), solid(2.0), Paint::solid(basis_color(static_cast<int>(i), n)));
+        c.stroke_path(to_path(pieces, 1e-4).transformed(m), solid(2.0),
+                      Paint::solid(basis_color(static_cast<int>(i), n)));
     }
     return f;
 }
 
 namespace {
 
-template <class S> Figure surface_figure(const S& s, const SurfaceDrawing& d, const FigureOptions& o) {
+template <class S>
+Figure surface_figure(const S& s, const SurfaceDrawing& d, const FigureOptions& o) {
     check_options(o);
     if (d.grid < 2 || d.grid > limits::kMaxGridLines)
         throw Error(ErrorKind::InvalidArgument,
@@ -236,8 +246,7 @@ template <class S> Figure surface_figure(const S& s, const SurfaceDrawing& d, co
             c.stroke_path(quad, solid(0.6), paint);  // hides the hairline seams between quads
         }
     }
-    c.stroke_path(grid.transformed(m), solid(d.shaded ? 0.8 : 1.2),
-                  Paint::solid(figure_colors::kGrid));
+    c.stroke_path(grid.transformed(m), solid(d.shaded ? 0.8 : 1.2), Paint::solid(figure_colors::kGrid));
     return f;
 }
 

@@ -32,8 +32,10 @@ void pad_line(const float* line, std::size_t stride, int n, int pad, EdgeMode ed
         int s = i - pad;
         if (s < 0 || s >= n) {
             if (edge == EdgeMode::None) continue;
-            if (edge == EdgeMode::Duplicate) s = std::clamp(s, 0, n - 1);
-            else s = ((s % n) + n) % n;
+            if (edge == EdgeMode::Duplicate)
+                s = std::clamp(s, 0, n - 1);
+            else
+                s = ((s % n) + n) % n;
         }
         const float* p = line + static_cast<std::size_t>(s) * stride;
         std::copy(p, p + 4, ext.data() + static_cast<std::size_t>(i) * 4);
@@ -77,8 +79,8 @@ std::pair<int, int> box_pass(const float* src, float* dst, int len, int d, int l
 
 struct Plan {
     bool exact = true;
-    std::vector<float> kernel;  // exact: 2r + 1 taps
-    int radius = 0;             // padding needed on each side
+    std::vector<float> kernel;    // exact: 2r + 1 taps
+    int radius = 0;               // padding needed on each side
     int widths[kBoxPasses] = {};  // box widths (odd)
     double alpha = 0;             // end weight of the last box
 };
@@ -89,7 +91,9 @@ Plan make_plan(double sigma, int n) {
         const int r = std::max(1, static_cast<int>(std::ceil(3 * sigma)));
         p.kernel.resize(static_cast<std::size_t>(2 * r + 1));
         double total = 0;
-        for (int i = -r; i <= r; ++i) total += p.kernel[static_cast<std::size_t>(i + r)] = static_cast<float>(std::exp(-0.5 * i * i / (sigma * sigma)));
+        for (int i = -r; i <= r; ++i)
+            total += p.kernel[static_cast<std::size_t>(i + r)] =
+                static_cast<float>(std::exp(-0.5 * i * i / (sigma * sigma)));
         for (float& k : p.kernel) k = static_cast<float>(k / total);
         p.radius = r;
         return p;
@@ -116,8 +120,8 @@ Plan make_plan(double sigma, int n) {
     return p;
 }
 
-void blur_line(const float* line, std::size_t stride, float* out, std::size_t out_stride, int n, const Plan& plan, EdgeMode edge,
-               std::vector<float>& a, std::vector<float>& b) {
+void blur_line(const float* line, std::size_t stride, float* out, std::size_t out_stride, int n, const Plan& plan,
+               EdgeMode edge, std::vector<float>& a, std::vector<float>& b) {
     pad_line(line, stride, n, plan.radius, edge, a);
     const int len = n + 2 * plan.radius;
     if (plan.exact) {
@@ -140,8 +144,8 @@ void blur_line(const float* line, std::size_t stride, float* out, std::size_t ou
     b.resize(a.size());
     std::pair<int, int> support = edge == EdgeMode::None ? std::pair{plan.radius, plan.radius + n} : std::pair{0, len};
     for (int i = 0; i < kBoxPasses; ++i) {
-        support = box_pass(a.data(), b.data(), len, plan.widths[i], plan.widths[i] / 2, i + 1 == kBoxPasses ? plan.alpha : 0.0,
-                           support.first, support.second);
+        support = box_pass(a.data(), b.data(), len, plan.widths[i], plan.widths[i] / 2,
+                           i + 1 == kBoxPasses ? plan.alpha : 0.0, support.first, support.second);
         std::swap(a, b);
     }
     std::swap(a, b);  // the last pass's output is in b
@@ -188,7 +192,8 @@ void gaussian_blur(Img& img, double sigma_x, double sigma_y, EdgeMode edge) {
         const Plan plan = make_plan(sigma_y, img.h);
         const std::size_t stride = static_cast<std::size_t>(img.w) * 4;
         for_lines(img.w, img.count(), [&](int first, int last, std::vector<float>& a, std::vector<float>& b) {
-            for (int x = first; x < last; ++x) blur_line(img.at(x, 0), stride, img.at(x, 0), stride, img.h, plan, edge, a, b);
+            for (int x = first; x < last; ++x)
+                blur_line(img.at(x, 0), stride, img.at(x, 0), stride, img.h, plan, edge, a, b);
         });
     }
 }

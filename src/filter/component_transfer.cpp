@@ -19,7 +19,8 @@ double TransferFunction::apply(double c) const {
         case Discrete: {
             const std::size_t n = table.size();
             if (n == 0) return c;
-            const std::size_t k = std::min(static_cast<std::size_t>(std::clamp(c, 0.0, 1.0) * static_cast<double>(n)), n - 1);
+            const std::size_t k =
+                std::min(static_cast<std::size_t>(std::clamp(c, 0.0, 1.0) * static_cast<double>(n)), n - 1);
             return table[k];
         }
         case Linear: return slope * c + intercept;

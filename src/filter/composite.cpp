@@ -22,12 +22,24 @@ Img composite(const Img& a, const Img& b, CompositeOp op, double k1, double k2, 
     return combine(a, b, [&](const float* s, const float* d, float* o) {
         const float as = s[3], ab = d[3];
         switch (op) {
-            case CompositeOp::Over: for (int k = 0; k < 4; ++k) o[k] = s[k] + d[k] * (1 - as); break;
-            case CompositeOp::In: for (int k = 0; k < 4; ++k) o[k] = s[k] * ab; break;
-            case CompositeOp::Out: for (int k = 0; k < 4; ++k) o[k] = s[k] * (1 - ab); break;
-            case CompositeOp::Atop: for (int k = 0; k < 4; ++k) o[k] = s[k] * ab + d[k] * (1 - as); break;
-            case CompositeOp::Xor: for (int k = 0; k < 4; ++k) o[k] = s[k] * (1 - ab) + d[k] * (1 - as); break;
-            case CompositeOp::Lighter: for (int k = 0; k < 4; ++k) o[k] = std::min(1.0f, s[k] + d[k]); break;
+            case CompositeOp::Over:
+                for (int k = 0; k < 4; ++k) o[k] = s[k] + d[k] * (1 - as);
+                break;
+            case CompositeOp::In:
+                for (int k = 0; k < 4; ++k) o[k] = s[k] * ab;
+                break;
+            case CompositeOp::Out:
+                for (int k = 0; k < 4; ++k) o[k] = s[k] * (1 - ab);
+                break;
+            case CompositeOp::Atop:
+                for (int k = 0; k < 4; ++k) o[k] = s[k] * ab + d[k] * (1 - as);
+                break;
+            case CompositeOp::Xor:
+                for (int k = 0; k < 4; ++k) o[k] = s[k] * (1 - ab) + d[k] * (1 - as);
+                break;
+            case CompositeOp::Lighter:
+                for (int k = 0; k < 4; ++k) o[k] = std::min(1.0f, s[k] + d[k]);
+                break;
             case CompositeOp::Arithmetic: {
                 for (int k = 0; k < 4; ++k)
                     o[k] = static_cast<float>(std::clamp(k1 * s[k] * d[k] + k2 * s[k] + k3 * d[k] + k4, 0.0, 1.0));

@@ -48,7 +48,8 @@ Img convolve(const Img& in, const Primitive& p) {
                 o[3] = a;
             } else {
                 o[3] = clamp01(static_cast<float>(acc[3] / div + p.bias));
-                for (int c = 0; c < 3; ++c) o[c] = std::min(o[3], clamp01(static_cast<float>(acc[c] / div + p.bias * o[3])));
+                for (int c = 0; c < 3; ++c)
+                    o[c] = std::min(o[3], clamp01(static_cast<float>(acc[c] / div + p.bias * o[3])));
             }
         }
     }

@@ -22,8 +22,12 @@ using detail::Img;
 IRect device_rect(const Affine& m, const Rect& r, int w, int h) {
     const Rect b = transform_bounds(m, r);
     if (!std::isfinite(b.x0) || !std::isfinite(b.y0) || !std::isfinite(b.x1) || !std::isfinite(b.y1)) return {};
-    auto lo = [](double v, int hi) { return static_cast<int>(std::clamp(std::floor(v + 1e-6), 0.0, static_cast<double>(hi))); };
-    auto up = [](double v, int hi) { return static_cast<int>(std::clamp(std::ceil(v - 1e-6), 0.0, static_cast<double>(hi))); };
+    auto lo = [](double v, int hi) {
+        return static_cast<int>(std::clamp(std::floor(v + 1e-6), 0.0, static_cast<double>(hi)));
+    };
+    auto up = [](double v, int hi) {
+        return static_cast<int>(std::clamp(std::ceil(v - 1e-6), 0.0, static_cast<double>(hi)));
+    };
     IRect out{lo(b.x0, w), lo(b.y0, h), up(b.x1, w), up(b.y1, h)};
     if (out.empty()) return {};
     return out;
@@ -74,8 +78,9 @@ Pixmap apply_filter(const FilterGraph& graph, const Affine& to_device, const Pix
     const IRect r = device_rect(to_device, graph.region, source.width(), source.height());
     if (r.empty() || graph.primitives.empty()) return out;
     if (static_cast<long long>(r.width()) * r.height() > lim.filter_pixels)
-        throw Error(ErrorKind::Limit, "filter region of " + std::to_string(r.width()) + " x " + std::to_string(r.height()) +
-                                          " pixels exceeds the limit of " + std::to_string(lim.filter_pixels) + " pixels");
+        throw Error(ErrorKind::Limit, "filter region of " + std::to_string(r.width()) + " x " +
+                                          std::to_string(r.height()) + " pixels exceeds the limit of " +
+                                          std::to_string(lim.filter_pixels) + " pixels");
     detail::Context ctx;
     ctx.w = r.width();
     ctx.h = r.height();
@@ -101,12 +106,14 @@ Pixmap apply_filter(const FilterGraph& graph, const Affine& to_device, const Pix
                 case Input::SourceGraphic: img = src; break;
                 case Input::SourceAlpha:
                     img = src;
-                    for (std::size_t j = 0, n = img.count(); j < n; ++j) img.px[j * 4] = img.px[j * 4 + 1] = img.px[j * 4 + 2] = 0;
+                    for (std::size_t j = 0, n = img.count(); j < n; ++j)
+                        img.px[j * 4] = img.px[j * 4 + 1] = img.px[j * 4 + 2] = 0;
                     break;
                 case Input::Result:
                     if (in.index < 0 || static_cast<std::size_t>(in.index) >= results.size())
                         throw Error(ErrorKind::InvalidData, "filter primitive " + std::to_string(i) + " reads result " +
-                                                                std::to_string(in.index) + ", which is not an earlier one");
+                                                                std::to_string(in.index) +
+                                                                ", which is not an earlier one");
                     img = results[static_cast<std::size_t>(in.index)];
                     break;
             }
@@ -128,11 +135,14 @@ Pixmap apply_filter(const FilterGraph& graph, const Affine& to_device, const Pix
             }
             case Primitive::Merge: {
                 res = Img(ctx.w, ctx.h, p.linear_rgb);
-                for (std::size_t k = 0; k < p.inputs.size(); ++k) res = detail::composite(input(k), res, CompositeOp::Over, 0, 0, 0, 0);
+                for (std::size_t k = 0; k < p.inputs.size(); ++k)
+                    res = detail::composite(input(k), res, CompositeOp::Over, 0, 0, 0, 0);
                 break;
             }
             case Primitive::Blend: res = detail::blend(input(0), input(1), p.blend); break;
-            case Primitive::Composite: res = detail::composite(input(0), input(1), p.composite, p.k1, p.k2, p.k3, p.k4); break;
+            case Primitive::Composite:
+                res = detail::composite(input(0), input(1), p.composite, p.k1, p.k2, p.k3, p.k4);
+                break;
             case Primitive::GaussianBlur: {
                 res = input(0);
                 const double sx = p.std_x * ctx.sx, sy = p.std_y * ctx.sy;
@@ -140,24 +150,33 @@ Pixmap apply_filter(const FilterGraph& graph, const Affine& to_device, const Pix
                 break;
             }
             case Primitive::DropShadow: res = drop_shadow(input(0), ctx, p); break;
-            case Primitive::ColorMatrix: res = input(0); detail::color_matrix(res, p.matrix); break;
-            case Primitive::ComponentTransfer: res = input(0); detail::component_transfer(res, p.funcs); break;
+            case Primitive::ColorMatrix:
+                res = input(0);
+                detail::color_matrix(res, p.matrix);
+                break;
+            case Primitive::ComponentTransfer:
+                res = input(0);
+                detail::component_transfer(res, p.funcs);
+                break;
             case Primitive::Morphology: {
                 const double rx = std::min(std::round(p.rx * ctx.sx), static_cast<double>(ctx.w));
                 const double ry = std::min(std::round(p.ry * ctx.sy), static_cast<double>(ctx.h));
-                res = detail::morphology(input(0), static_cast<int>(std::max(0.0, rx)), static_cast<int>(std::max(0.0, ry)), p.dilate);
+                res = detail::morphology(input(0), static_cast<int>(std::max(0.0, rx)),
+                                         static_cast<int>(std::max(0.0, ry)), p.dilate);
                 break;
             }
             case Primitive::ConvolveMatrix: {
-                if (p.order_x < 1 || p.order_y < 1 || p.order_x > limits::kMaxConvolveOrder || p.order_y > limits::kMaxConvolveOrder ||
+                if (p.order_x < 1 || p.order_y < 1 || p.order_x > limits::kMaxConvolveOrder ||
+                    p.order_y > limits::kMaxConvolveOrder ||
                     p.kernel.size() != static_cast<std::size_t>(p.order_x) * static_cast<std::size_t>(p.order_y))
-                    throw Error(ErrorKind::InvalidData, "feConvolveMatrix kernel must be order x order values with order 1.." +
-                                                            std::to_string(limits::kMaxConvolveOrder));
+                    throw Error(ErrorKind::InvalidData,
+                                "feConvolveMatrix kernel must be order x order values with order 1.." +
+                                    std::to_string(limits::kMaxConvolveOrder));
                 if (static_cast<long long>(p.order_x) * p.order_y * ctx.w * ctx.h > limits::kMaxConvolveWork)
-                    throw Error(ErrorKind::Limit, "feConvolveMatrix of " + std::to_string(p.order_x) + " x " + std::to_string(p.order_y) +
-                                                      " over " + std::to_string(ctx.w) + " x " + std::to_string(ctx.h) +
-                                                      " pixels exceeds the limit of " + std::to_string(limits::kMaxConvolveWork) +
-                                                      " kernel taps");
+                    throw Error(ErrorKind::Limit, "feConvolveMatrix of " + std::to_string(p.order_x) + " x " +
+                                                      std::to_string(p.order_y) + " over " + std::to_string(ctx.w) +
+                                                      " x " + std::to_string(ctx.h) + " pixels exceeds the limit of " +
+                                                      std::to_string(limits::kMaxConvolveWork) + " kernel taps");
                 res = detail::convolve(input(0), p);
                 break;
             }
@@ -180,7 +199,8 @@ Pixmap apply_filter(const FilterGraph& graph, const Affine& to_device, const Pix
             }
             case Primitive::Turbulence: res = detail::turbulence(ctx, p, p.linear_rgb); break;
             case Primitive::DisplacementMap:
-                res = detail::displacement(input(0), input(1), p.scale * ctx.sx, p.scale * ctx.sy, p.x_channel, p.y_channel);
+                res = detail::displacement(input(0), input(1), p.scale * ctx.sx, p.scale * ctx.sy, p.x_channel,
+                                           p.y_channel);
                 break;
             case Primitive::DiffuseLighting:
             case Primitive::SpecularLighting: res = detail::lighting(input(0), ctx, p, p.linear_rgb); break;
@@ -197,7 +217,8 @@ Pixmap apply_filter(const FilterGraph& graph, const Affine& to_device, const Pix
         for (int x = 0; x < ctx.w; ++x, s += 4, d += 4) {
             const float a = detail::clamp01(s[3]);
             d[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
-            for (int k = 0; k < 3; ++k) d[k] = std::min(d[3], static_cast<std::uint8_t>(detail::clamp01(s[k]) * 255.0f + 0.5f));
+            for (int k = 0; k < 3; ++k)
+                d[k] = std::min(d[3], static_cast<std::uint8_t>(detail::clamp01(s[k]) * 255.0f + 0.5f));
         }
     }
     return out;

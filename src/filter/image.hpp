@@ -19,11 +19,18 @@ struct Img {
 
     Img() = default;
     Img(int width, int height, bool lin)
-        : w(width), h(height), linear(lin), sub{0, 0, width, height},
+        : w(width),
+          h(height),
+          linear(lin),
+          sub{0, 0, width, height},
           px(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0.0f) {}
-    float* at(int x, int y) { return px.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 4; }
+    float* at(int x, int y) {
+        return px.data() +
+               (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 4;
+    }
     const float* at(int x, int y) const {
-        return px.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 4;
+        return px.data() +
+               (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 4;
     }
     std::size_t count() const { return static_cast<std::size_t>(w) * static_cast<std::size_t>(h); }
 };
@@ -31,16 +38,14 @@ struct Img {
 // The device parameters of one evaluation: the region's size and the user -> region-pixel map.
 struct Context {
     int w = 0, h = 0;
-    Affine to_region;  // user units -> region pixels
+    Affine to_region;       // user units -> region pixels
     double sx = 1, sy = 1;  // device pixels per user unit along x and y
 };
 
 inline float clamp01(float v) { return v < 0 ? 0.0f : (v > 1 ? 1.0f : v); }
 
 // sRGB <-> linear light for one straight channel in [0, 1].
-inline float srgb_to_linear(float c) {
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
+inline float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 inline float linear_to_srgb(float c) {
     return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }

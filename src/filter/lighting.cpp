@@ -60,7 +60,8 @@ Img lighting(const Img& in, const Context& ctx, const Primitive& p, bool linear)
                 lv = normalize({light_pos.x - surf.x, light_pos.y - surf.y, light_pos.z - surf.z});
                 if (l.type == Light::Spot) {
                     const double minus_ls = -dot(lv, spot_dir);
-                    const double f = minus_ls <= 0 || minus_ls < cone_cos ? 0.0 : std::pow(minus_ls, l.specular_exponent);
+                    const double f =
+                        minus_ls <= 0 || minus_ls < cone_cos ? 0.0 : std::pow(minus_ls, l.specular_exponent);
                     for (double& c : lc) c *= f;
                 }
             }

@@ -14,7 +14,8 @@ constexpr int kB = 0x100;
 constexpr int kMask = 0xff;
 constexpr int kPerlinN = 0x1000;
 constexpr long kRandM = 2147483647, kRandA = 16807, kRandQ = 127773, kRandR = 2836;
-constexpr int kMaxOctaves = 10;  // octave k adds at most 2^-k: the ones after the tenth move no 8-bit value by more than 1/2
+constexpr int kMaxOctaves =
+    10;  // octave k adds at most 2^-k: the ones after the tenth move no 8-bit value by more than 1/2
 
 struct Noise {
     int lattice[kB + kB + 2];
@@ -37,7 +38,8 @@ struct Noise {
                     seed = random(seed);
                     gradient[k][i][j] = static_cast<double>((seed % (kB + kB)) - kB) / kB;
                 }
-                const double s = std::sqrt(gradient[k][i][0] * gradient[k][i][0] + gradient[k][i][1] * gradient[k][i][1]);
+                const double s =
+                    std::sqrt(gradient[k][i][0] * gradient[k][i][0] + gradient[k][i][1] * gradient[k][i][1]);
                 if (s > 0) {
                     gradient[k][i][0] /= s;
                     gradient[k][i][1] /= s;

@@ -89,14 +89,16 @@ bool parse_selector(std::string_view s, Selector& out) {
                     if (body[0] == '=') {
                         a.op = '=';
                         body.remove_prefix(1);
-                    } else if (body.size() >= 2 && body[1] == '=' && std::string_view("~^$*|").find(body[0]) != std::string_view::npos) {
+                    } else if (body.size() >= 2 && body[1] == '=' &&
+                               std::string_view("~^$*|").find(body[0]) != std::string_view::npos) {
                         a.op = body[0];
                         body.remove_prefix(2);
                     } else {
                         return false;
                     }
                     body = trim(body);
-                    if (body.size() >= 2 && (body.front() == '"' || body.front() == '\'') && body.back() == body.front())
+                    if (body.size() >= 2 && (body.front() == '"' || body.front() == '\'') &&
+                        body.back() == body.front())
                         body = body.substr(1, body.size() - 2);
                     a.value = std::string(body);
                 }
@@ -151,11 +153,21 @@ bool compound_matches(const Compound& c, const pugi::xml_node& e) {
         const std::string_view w = a.value;
         switch (a.op) {
             case 0: break;
-            case '=': if (v != w) return false; break;
-            case '^': if (w.empty() || v.substr(0, w.size()) != w) return false; break;
-            case '$': if (w.empty() || v.size() < w.size() || v.substr(v.size() - w.size()) != w) return false; break;
-            case '*': if (w.empty() || v.find(w) == std::string_view::npos) return false; break;
-            case '|': if (v != w && v.substr(0, w.size() + 1) != std::string(w) + "-") return false; break;
+            case '=':
+                if (v != w) return false;
+                break;
+            case '^':
+                if (w.empty() || v.substr(0, w.size()) != w) return false;
+                break;
+            case '$':
+                if (w.empty() || v.size() < w.size() || v.substr(v.size() - w.size()) != w) return false;
+                break;
+            case '*':
+                if (w.empty() || v.find(w) == std::string_view::npos) return false;
+                break;
+            case '|':
+                if (v != w && v.substr(0, w.size() + 1) != std::string(w) + "-") return false;
+                break;
             case '~': {
                 bool found = false;
                 for (std::size_t i = 0; i < v.size() && !found;) {
@@ -209,7 +221,8 @@ std::vector<Declaration> parse_declarations(std::string_view text) {
         std::string_view value = trim(decl.substr(colon + 1));
         if (const std::size_t bang = value.rfind('!'); bang != std::string_view::npos) {
             std::string word(trim(value.substr(bang + 1)));
-            std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+            std::transform(word.begin(), word.end(), word.begin(),
+                           [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
             if (word == "important") {
                 d.important = true;
                 value = trim(value.substr(0, bang));
@@ -237,8 +250,10 @@ void parse_stylesheet(std::string_view text, StyleSheet& sheet) {
             if (j < s.size() && s[j] == '{') {
                 int depth = 0;
                 for (; j < s.size(); ++j) {
-                    if (s[j] == '{') ++depth;
-                    else if (s[j] == '}' && --depth == 0) break;
+                    if (s[j] == '{')
+                        ++depth;
+                    else if (s[j] == '}' && --depth == 0)
+                        break;
                 }
             }
             i = j + 1;
@@ -248,14 +263,16 @@ void parse_stylesheet(std::string_view text, StyleSheet& sheet) {
         if (open == std::string_view::npos) break;
         const std::size_t close = s.find('}', open);
         const std::string_view prelude = s.substr(i, open - i);
-        const std::string_view block = s.substr(open + 1, (close == std::string_view::npos ? s.size() : close) - open - 1);
+        const std::string_view block =
+            s.substr(open + 1, (close == std::string_view::npos ? s.size() : close) - open - 1);
         i = close == std::string_view::npos ? s.size() : close + 1;
         const std::vector<Declaration> decls = parse_declarations(block);
         if (decls.empty()) continue;
         std::size_t start = 0;
         while (start <= prelude.size()) {
             const std::size_t comma = prelude.find(',', start);
-            const std::string_view one = prelude.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+            const std::string_view one =
+                prelude.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
             Selector sel;
             if (parse_selector(one, sel)) {
                 if (sheet.rules.size() >= max_rules) {

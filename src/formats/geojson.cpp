@@ -52,10 +52,10 @@ std::optional<GeometryKind> kind_of(std::string_view type) {
 
 namespace {
 
+using json::JsonPath;
 using simdjson::dom::array;
 using simdjson::dom::element;
 using simdjson::dom::object;
-using json::JsonPath;
 
 struct Reader {
     JsonPath path;
@@ -70,7 +70,8 @@ struct Reader {
 
     Point position(element e) {
         array a = get_array(e, "a position (an array of numbers)");
-        if (a.size() < 2) path.fail(ErrorKind::InvalidData, "a position needs 2 numbers, got " + std::to_string(a.size()));
+        if (a.size() < 2)
+            path.fail(ErrorKind::InvalidData, "a position needs 2 numbers, got " + std::to_string(a.size()));
         double v[2];
         for (int k = 0; k < 2; ++k) {
             auto scope = path.index(static_cast<std::size_t>(k));
@@ -109,12 +110,15 @@ struct Reader {
     void geometry(element e, Feature& f) {
         if (e.is_null()) return;  // a Feature without geometry
         object obj;
-        if (e.get_object().get(obj) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected a geometry object or null");
-        if (++depth > current_limits().nesting_depth) path.fail(ErrorKind::Limit, "geometry collections nested too deeply");
+        if (e.get_object().get(obj) != simdjson::SUCCESS)
+            path.fail(ErrorKind::Parse, "expected a geometry object or null");
+        if (++depth > current_limits().nesting_depth)
+            path.fail(ErrorKind::Limit, "geometry collections nested too deeply");
         std::string_view type;
         {
             auto scope = path.key("type");
-            if (obj["type"].get_string().get(type) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "missing or not a string");
+            if (obj["type"].get_string().get(type) != simdjson::SUCCESS)
+                path.fail(ErrorKind::Parse, "missing or not a string");
         }
         if (type == "GeometryCollection") {
             auto scope = path.key("geometries");
@@ -129,7 +133,8 @@ struct Reader {
             return;
         }
         Geometry g;
-        if (const auto kind = geo_detail::kind_of(type)) g.kind = *kind;
+        if (const auto kind = geo_detail::kind_of(type))
+            g.kind = *kind;
         else {
             auto scope = path.key("type");
             path.fail(ErrorKind::Parse, "unknown geometry type \"" + std::string(type) +
@@ -281,7 +286,8 @@ MapData read_geojson_lines(std::string_view text) {
             root = json::parse(parser, line, where);
         } catch (const Error& e) {
             // Add the offset in the whole file to the message.
-            throw Error(e.kind(), std::string(e.what()) + " (line starts at byte " + std::to_string(line_start + a) + ")");
+            throw Error(e.kind(),
+                        std::string(e.what()) + " (line starts at byte " + std::to_string(line_start + a) + ")");
         }
         r.path.set_prefix("line " + std::to_string(line_no) + " ");
         r.document(root, out, false);
@@ -293,13 +299,18 @@ namespace {
 
 bool looks_like_lines(std::string_view text) {
     std::size_t i = 0;
-    while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n' || text[i] == '\x1e')) ++i;
+    while (i < text.size() &&
+           (text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n' || text[i] == '\x1e'))
+        ++i;
     const std::size_t eol = text.find('\n', i);
     if (eol == std::string_view::npos) return false;
     std::string_view first = text.substr(i, eol - i);
-    while (!first.empty() && (first.back() == '\r' || first.back() == ' ' || first.back() == '\t')) first.remove_suffix(1);
+    while (!first.empty() && (first.back() == '\r' || first.back() == ' ' || first.back() == '\t'))
+        first.remove_suffix(1);
     std::size_t j = eol + 1;
-    while (j < text.size() && (text[j] == ' ' || text[j] == '\t' || text[j] == '\r' || text[j] == '\n' || text[j] == '\x1e')) ++j;
+    while (j < text.size() &&
+           (text[j] == ' ' || text[j] == '\t' || text[j] == '\r' || text[j] == '\n' || text[j] == '\x1e'))
+        ++j;
     return first.size() >= 2 && first.front() == '{' && first.back() == '}' && j < text.size() && text[j] == '{';
 }
 
@@ -333,14 +344,18 @@ MapData read_map_file(const std::string& path, std::string_view topojson_object)
         const std::vector<std::uint8_t> bytes = read_file(path);
         return from_text(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), topojson_object);
     }
-    if (const std::uint64_t max_bytes = current_limits().input_bytes; static_cast<std::uint64_t>(st.st_size) > max_bytes)
-        throw Error(ErrorKind::Limit, "'" + path + "' is larger than " + std::to_string(max_bytes) + " bytes (Limits::input_bytes)");
+    if (const std::uint64_t max_bytes = current_limits().input_bytes;
+        static_cast<std::uint64_t>(st.st_size) > max_bytes)
+        throw Error(ErrorKind::Limit,
+                    "'" + path + "' is larger than " + std::to_string(max_bytes) + " bytes (Limits::input_bytes)");
     simdjson::padded_string text;
     if (simdjson::padded_string::load(path).get(text) != simdjson::SUCCESS)
         throw Error(ErrorKind::Io, "cannot read '" + path + "'");
     return from_text(text, topojson_object);
 }
 
-MapData read_map_data(std::string_view text, std::string_view topojson_object) { return from_text(text, topojson_object); }
+MapData read_map_data(std::string_view text, std::string_view topojson_object) {
+    return from_text(text, topojson_object);
+}
 
 }  // namespace casteljau

@@ -18,7 +18,8 @@ ImageFormat sniff_image(std::span<const std::uint8_t> b) {
     if (starts({0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'})) return ImageFormat::Png;
     if (starts({0xff, 0xd8, 0xff})) return ImageFormat::Jpeg;
     if (starts({'G', 'I', 'F', '8'})) return ImageFormat::Gif;
-    if (b.size() >= 12 && starts({'R', 'I', 'F', 'F'}) && std::memcmp(b.data() + 8, "WEBP", 4) == 0) return ImageFormat::Webp;
+    if (b.size() >= 12 && starts({'R', 'I', 'F', 'F'}) && std::memcmp(b.data() + 8, "WEBP", 4) == 0)
+        return ImageFormat::Webp;
     if (starts({0x1f, 0x8b})) return ImageFormat::Svg;  // gzip: an .svgz
     std::size_t i = starts({0xef, 0xbb, 0xbf}) ? 3 : 0;
     while (i < b.size() && (b[i] == ' ' || b[i] == '\t' || b[i] == '\r' || b[i] == '\n')) ++i;

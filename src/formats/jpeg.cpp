@@ -42,9 +42,12 @@ bool read_header(jpeg_decompress_struct* cinfo, ErrorManager* err, const std::ui
     if (setjmp(err->jump)) return false;
     jpeg_mem_src(cinfo, data, static_cast<unsigned long>(size));
     jpeg_read_header(cinfo, TRUE);
-    if (cinfo->jpeg_color_space == JCS_CMYK || cinfo->jpeg_color_space == JCS_YCCK) cinfo->out_color_space = JCS_CMYK;
-    else if (cinfo->jpeg_color_space == JCS_GRAYSCALE) cinfo->out_color_space = JCS_GRAYSCALE;
-    else cinfo->out_color_space = JCS_RGB;
+    if (cinfo->jpeg_color_space == JCS_CMYK || cinfo->jpeg_color_space == JCS_YCCK)
+        cinfo->out_color_space = JCS_CMYK;
+    else if (cinfo->jpeg_color_space == JCS_GRAYSCALE)
+        cinfo->out_color_space = JCS_GRAYSCALE;
+    else
+        cinfo->out_color_space = JCS_RGB;
     jpeg_calc_output_dimensions(cinfo);
     return true;
 }
@@ -106,11 +109,10 @@ Pixmap decode_jpeg(std::span<const std::uint8_t> bytes) {
         blocks = std::max(blocks, static_cast<double>(cinfo.comp_info[c].width_in_blocks) *
                                       static_cast<double>(cinfo.comp_info[c].height_in_blocks));
     if (blocks > 8.0 * static_cast<double>(bytes.size())) {
-        const std::string msg = "corrupt JPEG: " + std::to_string(cinfo.image_width) + "x" +
-                                std::to_string(cinfo.image_height) + " pixels need at least " +
-                                std::to_string(static_cast<long long>(std::ceil(blocks / 8))) +
-                                " bytes of coded data, the file has " + std::to_string(bytes.size()) +
-                                " (truncated, or a corrupt size)";
+        const std::string msg =
+            "corrupt JPEG: " + std::to_string(cinfo.image_width) + "x" + std::to_string(cinfo.image_height) +
+            " pixels need at least " + std::to_string(static_cast<long long>(std::ceil(blocks / 8))) +
+            " bytes of coded data, the file has " + std::to_string(bytes.size()) + " (truncated, or a corrupt size)";
         jpeg_destroy_decompress(&cinfo);
         throw Error(ErrorKind::InvalidData, msg);
     }
@@ -126,7 +128,8 @@ Pixmap decode_jpeg(std::span<const std::uint8_t> bytes) {
     }
     // libjpeg's own working memory (whole-image coefficient buffers of progressive files) is
     // bounded too: past it, decoding stops with "insufficient memory".
-    cinfo.mem->max_memory_to_use = static_cast<long>(std::min<std::uint64_t>(current_limits().jpeg_working_memory, LONG_MAX));
+    cinfo.mem->max_memory_to_use =
+        static_cast<long>(std::min<std::uint64_t>(current_limits().jpeg_working_memory, LONG_MAX));
     const bool ok = read_pixels(&cinfo, &err, *pm, row.data());
     jpeg_destroy_decompress(&cinfo);
     if (!ok) throw Error(ErrorKind::InvalidData, std::string("corrupt JPEG: ") + err.message);

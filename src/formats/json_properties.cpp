@@ -35,7 +35,8 @@ std::vector<std::pair<std::string, PropertyValue>> to_properties(simdjson::dom::
     std::vector<std::pair<std::string, PropertyValue>> out;
     if (e.is_null()) return out;
     simdjson::dom::object obj;
-    if (e.get_object().get(obj) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "\"properties\" must be an object or null");
+    if (e.get_object().get(obj) != simdjson::SUCCESS)
+        path.fail(ErrorKind::Parse, "\"properties\" must be an object or null");
     for (auto field : obj) out.emplace_back(std::string(field.key), to_property(field.value));
     return out;
 }

@@ -41,8 +41,10 @@ Rect MapData::bounds() const {
     for (const Feature& f : features)
         for (const Geometry& g : f.geometries)
             for (const Point& p : g.points) {
-                x0 = std::min(x0, p.x); y0 = std::min(y0, p.y);
-                x1 = std::max(x1, p.x); y1 = std::max(y1, p.y);
+                x0 = std::min(x0, p.x);
+                y0 = std::min(y0, p.y);
+                x1 = std::max(x1, p.x);
+                y1 = std::max(y1, p.y);
             }
     if (x0 > x1) return Rect{};
     return Rect{x0, y0, x1, y1};

@@ -115,9 +115,7 @@ void write_to_memory(png_structp png, png_bytep data, std::size_t n) {
     bool ok = true;
     try {
         st->out->insert(st->out->end(), data, data + n);
-    } catch (const std::bad_alloc&) {
-        ok = false;
-    }
+    } catch (const std::bad_alloc&) { ok = false; }
     if (!ok) png_error(png, "out of memory while encoding");  // no C++ object is alive here
 }
 
@@ -174,7 +172,8 @@ struct EncodeSettings {
 // Writes the whole image, un-premultiplying one row at a time into `row` (width x 4 bytes, owned
 // by the caller) and keeping the channels `settings.colour_type` has. No C++ objects with
 // destructors here.
-bool png_write_pixels(png_structp png, png_infop info, const Pixmap* pixmap, png_bytep row, const EncodeSettings* settings) {
+bool png_write_pixels(png_structp png, png_infop info, const Pixmap* pixmap, png_bytep row,
+                      const EncodeSettings* settings) {
     if (setjmp(png_jmpbuf(png))) return false;
     const int w = pixmap->width(), h = pixmap->height();
     const int type = settings->colour_type;
@@ -261,11 +260,11 @@ std::uint64_t check_chunk_lengths(std::span<const std::uint8_t> bytes) {
         if (length > left) {
             bool printable = true;
             for (int i = 0; i < 4; ++i) printable = printable && type[i] >= 0x21 && type[i] <= 0x7e;
-            throw Error(ErrorKind::InvalidData, "invalid PNG: chunk " +
-                                                    (printable ? "'" + std::string(type) + "'" : std::string("of unknown type")) +
-                                                    " at byte " + std::to_string(at) + " declares " + std::to_string(length) +
-                                                    " bytes but the file has " + std::to_string(left) +
-                                                    " left (truncated or corrupt)");
+            throw Error(ErrorKind::InvalidData,
+                        "invalid PNG: chunk " +
+                            (printable ? "'" + std::string(type) + "'" : std::string("of unknown type")) + " at byte " +
+                            std::to_string(at) + " declares " + std::to_string(length) + " bytes but the file has " +
+                            std::to_string(left) + " left (truncated or corrupt)");
         }
         if (std::string_view(type, 4) == "IDAT") idat += length;
         at += 12 + static_cast<std::size_t>(length);
@@ -302,7 +301,8 @@ Pixmap decode_png(std::span<const std::uint8_t> bytes) {
     png_uint_32 width = 0, height = 0;
     if (!png_read_header(h.png, h.info, &width, &height))
         throw Error(ErrorKind::InvalidData, std::string("invalid PNG: ") + state.sink.message);
-    if (width > static_cast<png_uint_32>(lim.canvas_dimension) || height > static_cast<png_uint_32>(lim.canvas_dimension) ||
+    if (width > static_cast<png_uint_32>(lim.canvas_dimension) ||
+        height > static_cast<png_uint_32>(lim.canvas_dimension) ||
         static_cast<long long>(width) * static_cast<long long>(height) > lim.canvas_pixels)
         throw Error(ErrorKind::Limit, "PNG of " + std::to_string(width) + "x" + std::to_string(height) +
                                           " pixels exceeds the image limits (" + std::to_string(lim.canvas_dimension) +
@@ -316,7 +316,8 @@ Pixmap decode_png(std::span<const std::uint8_t> bytes) {
         const double needed = std::ceil(row_bytes * height / 1032);
         if (static_cast<double>(idat_bytes) < needed)
             throw Error(ErrorKind::InvalidData, "invalid PNG: " + std::to_string(width) + "x" + std::to_string(height) +
-                                                    " pixels need at least " + std::to_string(static_cast<long long>(needed)) +
+                                                    " pixels need at least " +
+                                                    std::to_string(static_cast<long long>(needed)) +
                                                     " bytes of compressed data, the file has " +
                                                     std::to_string(idat_bytes) + " (truncated, or a corrupt size)");
     }
@@ -349,9 +350,7 @@ Pixmap read_png(const std::string& path) {
     const std::vector<std::uint8_t> bytes = read_file(path);
     try {
         return decode_png(bytes);
-    } catch (const Error& e) {
-        throw Error(e.kind(), quote(path) + ": " + e.what());
-    }
+    } catch (const Error& e) { throw Error(e.kind(), quote(path) + ": " + e.what()); }
 }
 
 }  // namespace casteljau

@@ -43,19 +43,34 @@ struct PatternTile;
 
 struct Item {
     // Bounds: a path never drawn that counts in bounding boxes (a hidden or fully transparent element).
-    enum Kind { Fill, Stroke, BeginLayer, EndLayer, PushClip, PopClip, BeginClip, BeginMask, EndMask, SvgImage, BeginFilter, EndFilter, Bounds } kind = Fill;
-    bool luminance = false;  // BeginMask: luminance (true) or alpha mask
+    enum Kind {
+        Fill,
+        Stroke,
+        BeginLayer,
+        EndLayer,
+        PushClip,
+        PopClip,
+        BeginClip,
+        BeginMask,
+        EndMask,
+        SvgImage,
+        BeginFilter,
+        EndFilter,
+        Bounds
+    } kind = Fill;
+    bool luminance = false;               // BeginMask: luminance (true) or alpha mask
     BlendMode blend = BlendMode::Normal;  // BeginLayer: mix-blend-mode
-    Path path;          // user space
-    Affine transform;   // user space -> document pixel space
+    Path path;                            // user space
+    Affine transform;                     // user space -> document pixel space
     Color color;
-    std::shared_ptr<const Shader> shader;  // a gradient or image instead of `color`
+    std::shared_ptr<const Shader> shader;          // a gradient or image instead of `color`
     std::shared_ptr<const SvgDocument> svg_image;  // SvgImage: drawn with `transform` as its base
     std::shared_ptr<const PatternTile> pattern;    // a pattern instead of `color`: rendered per fill
     FillRule rule = FillRule::NonZero;
     double opacity = 1;  // fill/stroke: multiplies colour alpha; layer: group opacity
     StrokeStyle stroke;  // Stroke items
-    std::shared_ptr<const std::vector<filter::FilterGraph>> filters;  // EndFilter: applied in order, in the user space of `transform`
+    std::shared_ptr<const std::vector<filter::FilterGraph>>
+        filters;  // EndFilter: applied in order, in the user space of `transform`
 };
 
 // The element a context-fill or context-stroke paint comes from (the shape a marker is drawn on,
@@ -71,11 +86,16 @@ struct ContextElement {
 struct PaintRef {
     enum Kind { None, Solid, Server } kind = None;
     Color color = Color::black();
-    std::string id;                    // Server: the referenced element's id
-    Kind fallback = None;              // Server: what to paint when the reference is unusable
+    std::string id;        // Server: the referenced element's id
+    Kind fallback = None;  // Server: what to paint when the reference is unusable
     Color fallback_color = Color::black();
     std::shared_ptr<const ContextElement> context;  // Server: set when the paint is context-fill/-stroke
-    static PaintRef solid(Color c) { PaintRef p; p.kind = Solid; p.color = c; return p; }
+    static PaintRef solid(Color c) {
+        PaintRef p;
+        p.kind = Solid;
+        p.color = c;
+        return p;
+    }
 };
 
 // A pattern's tile: its content (items in the fill's user space), the tile rectangle in pattern
@@ -107,14 +127,14 @@ constexpr double kDefaultFontSize = 12;
 
 struct Style {
     PaintRef fill = PaintRef::solid(Color::black());
-    Color color = Color::black();                // currentColor
+    Color color = Color::black();  // currentColor
     FillRule fill_rule = FillRule::NonZero;
     double fill_opacity = 1;
     PaintRef stroke;  // none (the SVG default)
     double stroke_opacity = 1;
     StrokeStyle stroke_style;
-    bool visible = true;  // visibility (inherited)
-    std::array<int, 3> paint_order{0, 1, 2};  // paint-order: 0 fill, 1 stroke, 2 markers (inherited)
+    bool visible = true;                               // visibility (inherited)
+    std::array<int, 3> paint_order{0, 1, 2};           // paint-order: 0 fill, 1 stroke, 2 markers (inherited)
     std::string marker_start, marker_mid, marker_end;  // marker ids (inherited)
     // What context-fill and context-stroke name: the fill and stroke of the use element or of the
     // shape a marker is drawn on (none outside those).
@@ -219,9 +239,10 @@ Affine viewbox_transform(const Rect& vb, std::string_view par, double w, double 
     bool slice = false;
     if (!words.empty()) {
         const std::string_view a = words[0];
-        const bool ok = a == "none" || (a.size() == 8 && a[0] == 'x' && a[4] == 'Y' &&
-                                        (a.substr(1, 3) == "Min" || a.substr(1, 3) == "Mid" || a.substr(1, 3) == "Max") &&
-                                        (a.substr(5, 3) == "Min" || a.substr(5, 3) == "Mid" || a.substr(5, 3) == "Max"));
+        const bool ok =
+            a == "none" || (a.size() == 8 && a[0] == 'x' && a[4] == 'Y' &&
+                            (a.substr(1, 3) == "Min" || a.substr(1, 3) == "Mid" || a.substr(1, 3) == "Max") &&
+                            (a.substr(5, 3) == "Min" || a.substr(5, 3) == "Mid" || a.substr(5, 3) == "Max"));
         if (ok && words.size() <= 2 && (words.size() == 1 || words[1] == "meet" || words[1] == "slice")) {
             align = a;
             slice = words.size() == 2 && words[1] == "slice";
@@ -233,10 +254,14 @@ Affine viewbox_transform(const Rect& vb, std::string_view par, double w, double 
     double tx = -vb.x0 * s, ty = -vb.y0 * s;
     const double ex = w - vb.width() * s, ey = h - vb.height() * s;
     const std::string_view xa = align.substr(1, 3), ya = align.substr(5, 3);
-    if (xa == "Mid") tx += ex / 2;
-    else if (xa == "Max") tx += ex;
-    if (ya == "Mid") ty += ey / 2;
-    else if (ya == "Max") ty += ey;
+    if (xa == "Mid")
+        tx += ex / 2;
+    else if (xa == "Max")
+        tx += ex;
+    if (ya == "Mid")
+        ty += ey / 2;
+    else if (ya == "Max")
+        ty += ey;
     return {s, 0, 0, s, tx, ty};
 }
 
@@ -268,7 +293,8 @@ public:
         // attribute (SVG 2): only style sheets and the style attribute set them.
         for (const pugi::xml_attribute& a : node.attributes()) {
             const std::string_view name = a.name();
-            if (name != "marker" && name != "mix-blend-mode" && name != "isolation") props.emplace_back(a.name(), a.value());
+            if (name != "marker" && name != "mix-blend-mode" && name != "isolation")
+                props.emplace_back(a.name(), a.value());
         }
         std::vector<const css::Rule*> matched;
         for (const css::Rule& r : sheet.rules)
@@ -299,28 +325,37 @@ public:
                     css::parse_stylesheet(text, sheet);
                 }
             }
-            if (pugi::xml_node c = n.first_child(); c && std::string_view(n.name()) != "style") { n = c; continue; }
+            if (pugi::xml_node c = n.first_child(); c && std::string_view(n.name()) != "style") {
+                n = c;
+                continue;
+            }
             while (n && !n.next_sibling() && n != root) n = n.parent();
             if (!n || n == root) break;
             n = n.next_sibling();
         }
         if (sheet.truncated)
-            warn("style sheets hold more than " + std::to_string(current_limits().css_rules) + " rules; the rest are ignored");
+            warn("style sheets hold more than " + std::to_string(current_limits().css_rules) +
+                 " rules; the rest are ignored");
     }
 
     // A fill or stroke value: none, currentColor, inherit (keeps the inherited paint), a colour,
     // or url(#id) with an optional fallback (none or a colour) after it.
     void apply_paint(const std::string& property, std::string_view value, Color current, PaintRef& paint) {
         auto simple = [&](std::string_view v, PaintRef::Kind& kind, Color& color) -> bool {
-            if (v == "none") { kind = PaintRef::None; return true; }
-            if (v == "currentColor") { kind = PaintRef::Solid; color = current; return true; }
+            if (v == "none") {
+                kind = PaintRef::None;
+                return true;
+            }
+            if (v == "currentColor") {
+                kind = PaintRef::Solid;
+                color = current;
+                return true;
+            }
             try {
                 color = parse_color(v);
                 kind = PaintRef::Solid;
                 return true;
-            } catch (const Error&) {
-                return false;
-            }
+            } catch (const Error&) { return false; }
         };
         if (value == "inherit") return;
         if (value.substr(0, 4) == "url(") {
@@ -340,8 +375,10 @@ public:
             return;
         }
         PaintRef p;
-        if (simple(value, p.kind, p.color)) paint = p;
-        else warn("invalid " + property + " '" + std::string(value) + "'");
+        if (simple(value, p.kind, p.color))
+            paint = p;
+        else
+            warn("invalid " + property + " '" + std::string(value) + "'");
     }
 
     // The computed font-size of `node`: the font-size (or `font` shorthand) of its ancestors and
@@ -374,24 +411,34 @@ public:
         // `color` first so that currentColor in the same element resolves to it.
         for (const auto& [k, v] : properties(node)) {
             if (k == "color") {
-                try { st.color = parse_color(trim(v)); } catch (const Error&) { warn("invalid color '" + v + "'"); }
+                try {
+                    st.color = parse_color(trim(v));
+                } catch (const Error&) { warn("invalid color '" + v + "'"); }
             }
         }
         for (const auto& [k, v] : properties(node)) {
             const std::string_view val = trim(v);
             if (k == "fill") {
-                if (val == "context-fill") st.fill = st.context_fill;
-                else if (val == "context-stroke") st.fill = st.context_stroke;
-                else apply_paint(k, val, st.color, st.fill);
+                if (val == "context-fill")
+                    st.fill = st.context_fill;
+                else if (val == "context-stroke")
+                    st.fill = st.context_stroke;
+                else
+                    apply_paint(k, val, st.color, st.fill);
             } else if (k == "fill-rule") {
-                if (val == "evenodd") st.fill_rule = FillRule::EvenOdd;
-                else if (val == "nonzero") st.fill_rule = FillRule::NonZero;
+                if (val == "evenodd")
+                    st.fill_rule = FillRule::EvenOdd;
+                else if (val == "nonzero")
+                    st.fill_rule = FillRule::NonZero;
             } else if (k == "fill-opacity") {
                 if (auto o = parse_opacity(val)) st.fill_opacity = *o;
             } else if (k == "stroke") {
-                if (val == "context-fill") st.stroke = st.context_fill;
-                else if (val == "context-stroke") st.stroke = st.context_stroke;
-                else apply_paint(k, val, st.color, st.stroke);
+                if (val == "context-fill")
+                    st.stroke = st.context_fill;
+                else if (val == "context-stroke")
+                    st.stroke = st.context_stroke;
+                else
+                    apply_paint(k, val, st.color, st.stroke);
             } else if (k == "stroke-opacity") {
                 if (auto o = parse_opacity(val)) st.stroke_opacity = *o;
             } else if (k == "stroke-width") {
@@ -418,7 +465,10 @@ public:
                         std::size_t end = list.find(' ', pos);
                         if (end == std::string::npos) end = list.size();
                         auto l = parse_length(std::string_view(list).substr(pos, end - pos), diag, font_size);
-                        if (!l || *l < 0) { ok = false; break; }
+                        if (!l || *l < 0) {
+                            ok = false;
+                            break;
+                        }
                         st.stroke_style.dashes.push_back(*l);
                         pos = end;
                     }
@@ -434,7 +484,10 @@ public:
                     const std::string_view w = rest.substr(0, sp);
                     rest = sp == std::string_view::npos ? std::string_view{} : trim(rest.substr(sp));
                     const int id = w == "fill" ? 0 : w == "stroke" ? 1 : w == "markers" ? 2 : -1;
-                    if (id < 0 || std::find(order.begin(), order.begin() + n, id) != order.begin() + n) { ok = false; break; }
+                    if (id < 0 || std::find(order.begin(), order.begin() + n, id) != order.begin() + n) {
+                        ok = false;
+                        break;
+                    }
                     order[n++] = id;
                 }
                 if (ok) {
@@ -454,8 +507,10 @@ public:
                 if (k == "marker-mid" || k == "marker") st.marker_mid = id;
                 if (k == "marker-end" || k == "marker") st.marker_end = id;
             } else if (k == "visibility") {
-                if (val == "visible") st.visible = true;
-                else if (val == "hidden" || val == "collapse") st.visible = false;
+                if (val == "visible")
+                    st.visible = true;
+                else if (val == "hidden" || val == "collapse")
+                    st.visible = false;
             } else if (k == "stroke-dashoffset") {
                 if (auto l = parse_length(val, diag, font_size)) st.stroke_style.dash_offset = *l;
             }
@@ -486,9 +541,12 @@ public:
             const double w = length_attr(n, "width", vw), h = length_attr(n, "height", vh);
             if (!(w > 0) || !(h > 0)) return std::nullopt;
             double rx = length_attr(n, "rx", vw, -1), ry = length_attr(n, "ry", vh, -1);
-            if (rx < 0 && ry < 0) rx = ry = 0;
-            else if (rx < 0) rx = ry;
-            else if (ry < 0) ry = rx;
+            if (rx < 0 && ry < 0)
+                rx = ry = 0;
+            else if (rx < 0)
+                rx = ry;
+            else if (ry < 0)
+                ry = rx;
             p.add_round_rect(Rect::from_xywh(x, y, w, h), std::min(rx, w / 2), std::min(ry, h / 2));
         } else if (name == "circle") {
             const double r = length_attr(n, "r", diag);
@@ -521,7 +579,10 @@ public:
     void index_ids(const pugi::xml_node& root) {
         for (pugi::xml_node n = root; n;) {
             if (const char* id = n.attribute("id").value(); *id) ids.emplace(id, n);
-            if (pugi::xml_node c = n.first_child(); c) { n = c; continue; }
+            if (pugi::xml_node c = n.first_child(); c) {
+                n = c;
+                continue;
+            }
             while (n && !n.next_sibling() && n != root) n = n.parent();
             if (!n || n == root) break;
             n = n.next_sibling();
@@ -649,10 +710,13 @@ public:
                     std::string val(trim(v));
                     // stop-color and stop-opacity are not inherited: `inherit` takes the parent's
                     // own value, or the initial one.
-                    if (val == "inherit") val = k == "stop-color" || k == "stop-opacity" ? own_property(s.parent(), k) : "";
+                    if (val == "inherit")
+                        val = k == "stop-color" || k == "stop-opacity" ? own_property(s.parent(), k) : "";
                     if (k == "stop-color" && !val.empty()) {
                         if (val == "currentColor") val = inherited(s, "color");
-                        try { color = parse_color(val.empty() ? "black" : val); } catch (const Error&) { warn("invalid stop-color '" + v + "'"); }
+                        try {
+                            color = parse_color(val.empty() ? "black" : val);
+                        } catch (const Error&) { warn("invalid stop-color '" + v + "'"); }
                     } else if (k == "stop-opacity") {
                         if (auto op = parse_opacity(val)) opacity = *op;
                     }
@@ -674,13 +738,13 @@ public:
                 gt = parse_svg_transform(t);
                 if (!gt.inverse()) gt = Affine{};  // a singular gradientTransform is ignored
                 gt = bbox_units ? with_origin(node, gt, 1, 1) : with_origin(node, gt, vw, vh);
-            } catch (const Error&) {
-                warn("invalid gradientTransform; ignored");
-            }
+            } catch (const Error&) { warn("invalid gradientTransform; ignored"); }
         }
         SpreadMethod spread = SpreadMethod::Pad;
-        if (const std::string_view sm = attr("spreadMethod", false); sm == "reflect") spread = SpreadMethod::Reflect;
-        else if (sm == "repeat") spread = SpreadMethod::Repeat;
+        if (const std::string_view sm = attr("spreadMethod", false); sm == "reflect")
+            spread = SpreadMethod::Reflect;
+        else if (sm == "repeat")
+            spread = SpreadMethod::Repeat;
         const double diag = std::sqrt((vw * vw + vh * vh) / 2);
         auto coord = [&](const char* name, double percent_of, double fallback) {
             const std::string_view v = attr(name, true);
@@ -707,7 +771,8 @@ public:
         if (r < 0) r = bbox_units ? 0.5 : diag / 2;
         const double fx = coord("fx", vw, cx), fy = coord("fy", vh, cy);
         const double fr = std::max(0.0, coord("fr", diag, 0));
-        it.shader = std::make_shared<const Shader>(Shader::radial({cx, cy}, r, {fx, fy}, fr, std::move(stops), spread, units * gt));
+        it.shader = std::make_shared<const Shader>(
+            Shader::radial({cx, cy}, r, {fx, fy}, fr, std::move(stops), spread, units * gt));
         return true;
     }
 
@@ -745,13 +810,15 @@ public:
         env.current_color = st.color;
         // feImage: the referenced element (drawn like a `use` in the filtered element's user
         // space) or the image, captured as items and drawn when the filter runs.
-        env.image = [this, vw, vh, depth](const pugi::xml_node& fe, const Rect& sub) -> std::function<void(Pixmap&, const Affine&)> {
+        env.image = [this, vw, vh, depth](const pugi::xml_node& fe,
+                                          const Rect& sub) -> std::function<void(Pixmap&, const Affine&)> {
             std::vector<Item> captured;
             std::swap(captured, items);
             const char* h = href(fe);
             if (*h == '#') {
                 const pugi::xml_node target = lookup(h + 1);
-                if (std::find(filtering.begin(), filtering.end(), target) != filtering.end()) filter_self_reference = true;
+                if (std::find(filtering.begin(), filtering.end(), target) != filtering.end())
+                    filter_self_reference = true;
                 else if (target && !is_active(target)) {
                     active_refs.push_back(target);
                     // Drawn like a `use`, placed at the subregion's origin (as resvg and Chrome do).
@@ -786,8 +853,8 @@ public:
     // The graphs of `refs` for element `n` with bounding box `bbox`; nullopt when one of them is
     // invalid (the element is then not drawn).
     std::optional<std::vector<filter::FilterGraph>> build_filters(const std::vector<svg_filter::FilterRef>& refs,
-                                                                   const std::optional<Rect>& bbox, const Style& st,
-                                                                   double vw, double vh, int depth) {
+                                                                  const std::optional<Rect>& bbox, const Style& st,
+                                                                  double vw, double vh, int depth) {
         const svg_filter::SvgFilterEnv env = filter_env(st, vw, vh, depth);
         std::vector<filter::FilterGraph> out;
         for (const svg_filter::FilterRef& r : refs) {
@@ -876,7 +943,8 @@ public:
             }
         }
         if (words.empty() || words.size() > 3) return t;
-        if (words.size() == 2 && (words[0] == "top" || words[0] == "bottom" || words[1] == "left" || words[1] == "right"))
+        if (words.size() == 2 &&
+            (words[0] == "top" || words[0] == "bottom" || words[1] == "left" || words[1] == "right"))
             std::swap(words[0], words[1]);
         auto axis = [&](const std::string& word, double size, bool horizontal) -> double {
             if (word == "center") return size / 2;
@@ -922,8 +990,10 @@ public:
         for (const auto& [k, v] : properties(n))
             if (k == "overflow") overflow = std::string(trim(v));
         auto draw = [&] { walk(n, st, inner, nvw, nvh, depth + 1); };
-        if (overflow == "visible" || overflow == "auto") draw();
-        else clipped(Rect::from_xywh(x, y, w, h), m, draw);
+        if (overflow == "visible" || overflow == "auto")
+            draw();
+        else
+            clipped(Rect::from_xywh(x, y, w, h), m, draw);
     }
 
     bool measuring_use = false;  // inside the first pass that measures a use element's box
@@ -960,8 +1030,8 @@ public:
         }
         const std::string_view tn = target.name();
         const bool instance = tn == "symbol" || tn == "svg";
-        if (!measuring_use &&
-            ((st.fill.kind == PaintRef::Server && !st.fill.context) || (st.stroke.kind == PaintRef::Server && !st.stroke.context))) {
+        if (!measuring_use && ((st.fill.kind == PaintRef::Server && !st.fill.context) ||
+                               (st.stroke.kind == PaintRef::Server && !st.stroke.context))) {
             // The use element is the context element of context-fill and context-stroke: a paint
             // server is resolved for its bounding box, in its user space (with x and y for an
             // element; the use's own for a symbol or svg). The box is that of the content, taken
@@ -997,7 +1067,8 @@ public:
             const pugi::xml_node size_from = u.attribute("width") ? u : target;
             const pugi::xml_node hsize_from = u.attribute("height") ? u : target;
             const double w = length_attr(size_from, "width", vw, vw), hh = length_attr(hsize_from, "height", vh, vh);
-            const double tx = tn == "svg" ? length_attr(target, "x", vw) : 0, ty = tn == "svg" ? length_attr(target, "y", vh) : 0;
+            const double tx = tn == "svg" ? length_attr(target, "x", vw) : 0,
+                         ty = tn == "svg" ? length_attr(target, "y", vh) : 0;
             Style tst = ust;
             apply_style(target, tst);
             // The instanced symbol or svg keeps its own opacity.
@@ -1029,7 +1100,8 @@ public:
             if (k == property) value = std::string(trim(v));
         if (value.empty() || value == "none" || value.substr(0, 4) != "url(") return {};
         const std::size_t close = value.find(')');
-        std::string_view ref = trim(std::string_view(value).substr(4, close == std::string::npos ? std::string::npos : close - 4));
+        std::string_view ref =
+            trim(std::string_view(value).substr(4, close == std::string::npos ? std::string::npos : close - 4));
         if (ref.size() >= 2 && (ref.front() == '\'' || ref.front() == '"')) ref = ref.substr(1, ref.size() - 2);
         const pugi::xml_node target = !ref.empty() && ref.front() == '#' ? lookup(ref.substr(1)) : pugi::xml_node();
         if (!target || std::string_view(target.name()) != want) {
@@ -1048,8 +1120,10 @@ public:
         int hidden = 0;
         for (std::size_t i = first; i < items.size(); ++i) {
             const Item& it = items[i];
-            if (it.kind == Item::BeginClip || it.kind == Item::BeginMask) ++hidden;
-            else if (it.kind == Item::EndMask) --hidden;
+            if (it.kind == Item::BeginClip || it.kind == Item::BeginMask)
+                ++hidden;
+            else if (it.kind == Item::EndMask)
+                --hidden;
             else if (hidden == 0 && (it.kind == Item::Fill || it.kind == Item::Stroke || it.kind == Item::Bounds)) {
                 const Rect b = transform_bounds(*inv * it.transform, it.path.bounds());
                 box = box ? box->united(b) : b;
@@ -1060,7 +1134,8 @@ public:
 
     // A clipPath's children drawn as opaque coverage into a mask layer that multiplies the
     // enclosing layer. clipPathUnits objectBoundingBox maps 0..1 onto `box`.
-    void emit_clip(const pugi::xml_node& clip, const Affine& cm, const std::optional<Rect>& box, double vw, double vh, int depth) {
+    void emit_clip(const pugi::xml_node& clip, const Affine& cm, const std::optional<Rect>& box, double vw, double vh,
+                   int depth) {
         active_refs.push_back(clip);
         Item begin;
         begin.kind = Item::BeginClip;
@@ -1075,8 +1150,10 @@ public:
             }
         }
         if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
-            if (!box || !(box->width() > 0) || !(box->height() > 0)) ok = false;
-            else m = m * Affine::translate(box->x0, box->y0) * Affine::scale(box->width(), box->height());
+            if (!box || !(box->width() > 0) || !(box->height() > 0))
+                ok = false;
+            else
+                m = m * Affine::translate(box->x0, box->y0) * Affine::scale(box->width(), box->height());
         }
         bool inner_missing = false;
         pugi::xml_node inner = reference(clip, "clip-path", "clipPath", inner_missing);
@@ -1101,11 +1178,13 @@ public:
 
     // One child of a clipPath: a shape (or a use of a shape), its own transform, clip-rule and
     // clip-path; fill, stroke and opacity have no effect.
-    void clip_child(const pugi::xml_node& c, const pugi::xml_node& props, const Affine& m, FillRule rule, double vw, double vh, int depth) {
+    void clip_child(const pugi::xml_node& c, const pugi::xml_node& props, const Affine& m, FillRule rule, double vw,
+                    double vh, int depth) {
         if (depth > limits_.nesting_depth)
             throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits_.nesting_depth));
         if (++expanded > limits_.svg_elements)
-            throw Error(ErrorKind::Limit, "SVG expands to more than " + std::to_string(limits_.svg_elements) + " elements");
+            throw Error(ErrorKind::Limit,
+                        "SVG expands to more than " + std::to_string(limits_.svg_elements) + " elements");
         if (!conditions_pass(c)) return;
         bool visible = true;
         for (const auto& [k, v] : properties(c)) {
@@ -1119,9 +1198,7 @@ public:
         if (const char* t = c.attribute("transform").value(); *t) {
             try {
                 cm = m * with_origin(c, parse_svg_transform(t), vw, vh);
-            } catch (const Error&) {
-                return;
-            }
+            } catch (const Error&) { return; }
         }
         const std::string_view name = c.name();
         if (name == "use") {
@@ -1129,11 +1206,12 @@ public:
             const pugi::xml_node target = *h == '#' ? lookup(h + 1) : pugi::xml_node();
             if (!target || is_active(target)) return;
             const std::string_view tn = target.name();
-            if (tn != "path" && tn != "rect" && tn != "circle" && tn != "ellipse" && tn != "polyline" && tn != "polygon" &&
-                tn != "text")
+            if (tn != "path" && tn != "rect" && tn != "circle" && tn != "ellipse" && tn != "polyline" &&
+                tn != "polygon" && tn != "text")
                 return;  // only shapes may be used inside a clipPath
             active_refs.push_back(target);
-            clip_child(target, c, cm * Affine::translate(length_attr(c, "x", vw), length_attr(c, "y", vh)), rule, vw, vh, depth + 1);
+            clip_child(target, c, cm * Affine::translate(length_attr(c, "x", vw), length_attr(c, "y", vh)), rule, vw,
+                       vh, depth + 1);
             active_refs.pop_back();
             return;
         }
@@ -1174,7 +1252,8 @@ public:
 
     // A mask's content drawn into a mask layer (luminance, or alpha with mask-type="alpha"),
     // clipped to the mask region, that multiplies the enclosing layer.
-    void emit_mask(const pugi::xml_node& mask, const Affine& cm, const std::optional<Rect>& box, double vw, double vh, int depth) {
+    void emit_mask(const pugi::xml_node& mask, const Affine& cm, const std::optional<Rect>& box, double vw, double vh,
+                   int depth) {
         active_refs.push_back(mask);
         Item begin;
         begin.kind = Item::BeginMask;
@@ -1195,15 +1274,18 @@ public:
                 return l ? *l : fallback;
             };
             if (bbox_units) {
-                region = Rect::from_xywh(box->x0 + frac("x", -0.1) * box->width(), box->y0 + frac("y", -0.1) * box->height(),
-                                         frac("width", 1.2) * box->width(), frac("height", 1.2) * box->height());
+                region =
+                    Rect::from_xywh(box->x0 + frac("x", -0.1) * box->width(), box->y0 + frac("y", -0.1) * box->height(),
+                                    frac("width", 1.2) * box->width(), frac("height", 1.2) * box->height());
             } else {
                 region = Rect::from_xywh(length_attr(mask, "x", vw, -0.1 * vw), length_attr(mask, "y", vh, -0.1 * vh),
-                                         length_attr(mask, "width", vw, 1.2 * vw), length_attr(mask, "height", vh, 1.2 * vh));
+                                         length_attr(mask, "width", vw, 1.2 * vw),
+                                         length_attr(mask, "height", vh, 1.2 * vh));
             }
             if (region.width() > 0 && region.height() > 0) {
                 Affine content_m = cm;
-                if (content_bbox) content_m = cm * Affine::translate(box->x0, box->y0) * Affine::scale(box->width(), box->height());
+                if (content_bbox)
+                    content_m = cm * Affine::translate(box->x0, box->y0) * Affine::scale(box->width(), box->height());
                 bool inner_missing = false;
                 const pugi::xml_node inner = reference(mask, "mask", "mask", inner_missing);
                 const bool inner_ok = inner && !is_active(inner);
@@ -1241,12 +1323,18 @@ public:
                 int bits = 0;
                 for (char ch : payload) {
                     int v;
-                    if (ch >= 'A' && ch <= 'Z') v = ch - 'A';
-                    else if (ch >= 'a' && ch <= 'z') v = ch - 'a' + 26;
-                    else if (ch >= '0' && ch <= '9') v = ch - '0' + 52;
-                    else if (ch == '+' || ch == '-') v = 62;
-                    else if (ch == '/' || ch == '_') v = 63;
-                    else continue;  // whitespace, padding
+                    if (ch >= 'A' && ch <= 'Z')
+                        v = ch - 'A';
+                    else if (ch >= 'a' && ch <= 'z')
+                        v = ch - 'a' + 26;
+                    else if (ch >= '0' && ch <= '9')
+                        v = ch - '0' + 52;
+                    else if (ch == '+' || ch == '-')
+                        v = 62;
+                    else if (ch == '/' || ch == '_')
+                        v = 63;
+                    else
+                        continue;  // whitespace, padding
                     acc = (acc << 6) | static_cast<unsigned>(v);
                     bits += 6;
                     if (bits >= 8) {
@@ -1270,10 +1358,12 @@ public:
         }
         namespace fs = std::filesystem;
         std::error_code ec;
-        const fs::path root = fs::weakly_canonical(options.resource_root.empty() ? options.base_dir : options.resource_root, ec);
+        const fs::path root =
+            fs::weakly_canonical(options.resource_root.empty() ? options.base_dir : options.resource_root, ec);
         const fs::path file = fs::weakly_canonical(fs::path(options.base_dir) / std::string(ref), ec);
         const std::string r = root.string(), f = file.string();
-        if (ec || r.empty() || f.size() <= r.size() || f.compare(0, r.size(), r) != 0 || (f[r.size()] != '/' && r.back() != '/')) {
+        if (ec || r.empty() || f.size() <= r.size() || f.compare(0, r.size(), r) != 0 ||
+            (f[r.size()] != '/' && r.back() != '/')) {
             warn("image '" + std::string(ref) + "' refused: outside the document's folder");
             return std::nullopt;
         }
@@ -1300,8 +1390,8 @@ public:
                 }
                 SvgOptions inner = options;
                 inner.nesting++;
-                svg = std::make_shared<const SvgDocument>(
-                    SvgDocument::parse(std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()), inner));
+                svg = std::make_shared<const SvgDocument>(SvgDocument::parse(
+                    std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()), inner));
                 // Its warnings are this document's too (a skipped image deep in a chain, a bad
                 // path inside an icon): the reader of this file would otherwise never see them.
                 for (const std::string& w : svg->warnings()) warn("in an SVG image: " + w);
@@ -1353,8 +1443,10 @@ public:
             }
             items.push_back(std::move(it));
         };
-        if (slice || svg) clipped(Rect::from_xywh(x, y, *w, *h), cm, draw);
-        else draw();
+        if (slice || svg)
+            clipped(Rect::from_xywh(x, y, *w, *h), cm, draw);
+        else
+            draw();
     }
 
     int paint_depth = 0;  // patterns inside pattern content
@@ -1400,20 +1492,20 @@ public:
         };
         Rect tile;
         if (units_bbox)
-            tile = Rect::from_xywh(b.x0 + num("x", 1) * b.width(), b.y0 + num("y", 1) * b.height(), num("width", 1) * b.width(),
-                                   num("height", 1) * b.height());
+            tile = Rect::from_xywh(b.x0 + num("x", 1) * b.width(), b.y0 + num("y", 1) * b.height(),
+                                   num("width", 1) * b.width(), num("height", 1) * b.height());
         else
             tile = Rect::from_xywh(num("x", vw), num("y", vh), num("width", vw), num("height", vh));
-        if (!(tile.width() > 0) || !(tile.height() > 0) || !std::isfinite(tile.width()) || !std::isfinite(tile.height())) return false;
+        if (!(tile.width() > 0) || !(tile.height() > 0) || !std::isfinite(tile.width()) ||
+            !std::isfinite(tile.height()))
+            return false;
         Affine pt;
         if (const std::string_view t = attr("patternTransform"); !t.empty()) {
             try {
                 pt = parse_svg_transform(t);
                 if (!pt.inverse()) return false;
                 pt = with_origin(node, pt, vw, vh);
-            } catch (const Error&) {
-                warn("invalid patternTransform; ignored");
-            }
+            } catch (const Error&) { warn("invalid patternTransform; ignored"); }
         }
         Affine cm;
         double cvw = vw, cvh = vh;
@@ -1541,7 +1633,8 @@ public:
             }
             *frefs = std::move(kept);
         }
-        if (std::any_of(filter_nodes.begin(), filter_nodes.end(), [&](const pugi::xml_node& f) { return is_active(f); })) {
+        if (std::any_of(filter_nodes.begin(), filter_nodes.end(),
+                        [&](const pugi::xml_node& f) { return is_active(f); })) {
             // Drawn inside its own filter (through feImage): drawn without the filter.
             warn(std::string("<") + child.name() + ">: recursive filter ignored");
             frefs.reset();
@@ -1590,7 +1683,8 @@ public:
         }
     }
 
-    void content(const pugi::xml_node& child, const Style& cst, const Affine& cm, double vw, double vh, int depth, double opacity) {
+    void content(const pugi::xml_node& child, const Style& cst, const Affine& cm, double vw, double vh, int depth,
+                 double opacity) {
         const std::string_view name = child.name();
         const bool container = name == "g" || name == "a" || name == "switch" || name == "svg" || name == "use";
         if (container) {
@@ -1728,14 +1822,23 @@ public:
             } else if (!orient.empty()) {
                 std::string_view o = orient;
                 double unit = kPi / 180;
-                if (o.size() > 3 && o.substr(o.size() - 3) == "deg") o.remove_suffix(3);
-                else if (o.size() > 3 && o.substr(o.size() - 3) == "rad") { o.remove_suffix(3); unit = 1; }
-                else if (o.size() > 4 && o.substr(o.size() - 4) == "grad") { o.remove_suffix(4); unit = kPi / 200; }
-                else if (o.size() > 4 && o.substr(o.size() - 4) == "turn") { o.remove_suffix(4); unit = 2 * kPi; }
+                if (o.size() > 3 && o.substr(o.size() - 3) == "deg")
+                    o.remove_suffix(3);
+                else if (o.size() > 3 && o.substr(o.size() - 3) == "rad") {
+                    o.remove_suffix(3);
+                    unit = 1;
+                } else if (o.size() > 4 && o.substr(o.size() - 4) == "grad") {
+                    o.remove_suffix(4);
+                    unit = kPi / 200;
+                } else if (o.size() > 4 && o.substr(o.size() - 4) == "turn") {
+                    o.remove_suffix(4);
+                    unit = 2 * kPi;
+                }
                 if (auto n = parse_number(o)) angle = *n * unit;
             }
             if (!context) context = std::make_shared<const ContextElement>(ContextElement{path, cm, vw, vh});
-            emit_marker(marker, st, context, cm * Affine::translate(v.p.x, v.p.y) * Affine::rotate(angle), vw, vh, depth);
+            emit_marker(marker, st, context, cm * Affine::translate(v.p.x, v.p.y) * Affine::rotate(angle), vw, vh,
+                        depth);
         }
     }
 
@@ -1754,10 +1857,12 @@ public:
         return paint;
     }
 
-    void emit_marker(const pugi::xml_node& marker, const Style& st, const std::shared_ptr<const ContextElement>& context,
-                     const Affine& at, double vw, double vh, int depth) {
+    void emit_marker(const pugi::xml_node& marker, const Style& st,
+                     const std::shared_ptr<const ContextElement>& context, const Affine& at, double vw, double vh,
+                     int depth) {
         double scale = 1;
-        if (std::string_view(marker.attribute("markerUnits").value()) != "userSpaceOnUse") scale = st.stroke_style.width;
+        if (std::string_view(marker.attribute("markerUnits").value()) != "userSpaceOnUse")
+            scale = st.stroke_style.width;
         if (!(scale > 0)) return;
         const double mw = length_attr(marker, "markerWidth", vw, 3), mh = length_attr(marker, "markerHeight", vh, 3);
         if (!(mw > 0) || !(mh > 0)) return;
@@ -1885,7 +1990,8 @@ public:
             std::size_t comma = v.find(',', i);
             if (comma == std::string_view::npos) comma = v.size();
             std::string_view f = trim(v.substr(i, comma - i));
-            if (f.size() >= 2 && (f.front() == '\'' || f.front() == '"') && f.back() == f.front()) f = f.substr(1, f.size() - 2);
+            if (f.size() >= 2 && (f.front() == '\'' || f.front() == '"') && f.back() == f.front())
+                f = f.substr(1, f.size() - 2);
             if (!f.empty()) fams.push_back(generic_family(f));
             i = comma + 1;
         }
@@ -1905,7 +2011,9 @@ public:
             std::erase(item, '\'');
             const std::size_t sp = item.find(' ');
             if (!item.empty())
-                out.emplace_back(item.substr(0, sp), sp == std::string::npos ? std::string() : std::string(trim(std::string_view(item).substr(sp))));
+                out.emplace_back(item.substr(0, sp), sp == std::string::npos
+                                                         ? std::string()
+                                                         : std::string(trim(std::string_view(item).substr(sp))));
             i = comma + 1;
         }
         return out;
@@ -1922,8 +2030,9 @@ public:
 
     static std::optional<double> font_stretch(std::string_view v) {
         static const std::pair<std::string_view, double> names[] = {
-            {"ultra-condensed", 50}, {"extra-condensed", 62.5}, {"condensed", 75}, {"semi-condensed", 87.5},
-            {"normal", 100}, {"semi-expanded", 112.5}, {"expanded", 125}, {"extra-expanded", 150}, {"ultra-expanded", 200}};
+            {"ultra-condensed", 50},  {"extra-condensed", 62.5}, {"condensed", 75},
+            {"semi-condensed", 87.5}, {"normal", 100},           {"semi-expanded", 112.5},
+            {"expanded", 125},        {"extra-expanded", 150},   {"ultra-expanded", 200}};
         for (const auto& [k, p] : names)
             if (v == k) return p;
         if (!v.empty() && v.back() == '%')
@@ -1932,8 +2041,9 @@ public:
     }
 
     static std::optional<double> font_size(std::string_view v, double parent) {
-        static const std::pair<std::string_view, int> names[] = {{"xx-small", -3}, {"x-small", -2}, {"small", -1}, {"medium", 0},
-                                                                 {"large", 1},     {"x-large", 2},  {"xx-large", 3}, {"xxx-large", 4}};
+        static const std::pair<std::string_view, int> names[] = {{"xx-small", -3}, {"x-small", -2}, {"small", -1},
+                                                                 {"medium", 0},    {"large", 1},    {"x-large", 2},
+                                                                 {"xx-large", 3},  {"xxx-large", 4}};
         for (const auto& [k, e] : names)
             if (v == k) return 12.0 * std::pow(1.2, e);
         if (v == "larger") return parent * 1.2;
@@ -1972,9 +2082,12 @@ public:
             while (e < v.size() && !std::isspace(static_cast<unsigned char>(v[e]))) ++e;
             const std::string_view w = v.substr(i, e - i);
             if (w.empty()) return;
-            if (w == "italic") t.font.slant = FontSlant::Italic;
-            else if (w == "oblique") t.font.slant = FontSlant::Oblique;
-            else if (w == "small-caps") t.small_caps = true;
+            if (w == "italic")
+                t.font.slant = FontSlant::Italic;
+            else if (w == "oblique")
+                t.font.slant = FontSlant::Oblique;
+            else if (w == "small-caps")
+                t.small_caps = true;
             else if (w == "normal") {
             } else if (w == "bold" || w == "bolder" || w == "lighter") {
                 t.font.weight = *font_weight(w, ctx.font.weight);
@@ -2019,7 +2132,8 @@ public:
         for (const auto& [k, v] : properties(node)) {
             const std::string_view val = trim(v);
             if (val == "inherit") continue;
-            if (k == "font") apply_font_shorthand(val, ctx, parent_size);
+            if (k == "font")
+                apply_font_shorthand(val, ctx, parent_size);
             else if (k == "font-size") {
                 if (auto s = font_size(val, parent_size)) ctx.font.size = *s;
             }
@@ -2028,13 +2142,17 @@ public:
         for (const auto& [k, v] : properties(node)) {
             const std::string_view val = trim(v);
             if (val == "inherit") continue;
-            if (k == "font-family") apply_font_family(val, ctx);
+            if (k == "font-family")
+                apply_font_family(val, ctx);
             else if (k == "font-weight") {
                 if (auto w = font_weight(val, ctx.font.weight)) ctx.font.weight = *w;
             } else if (k == "font-style") {
-                if (val == "normal") ctx.font.slant = FontSlant::Normal;
-                else if (val == "italic") ctx.font.slant = FontSlant::Italic;
-                else if (val.substr(0, 7) == "oblique") ctx.font.slant = FontSlant::Oblique;
+                if (val == "normal")
+                    ctx.font.slant = FontSlant::Normal;
+                else if (val == "italic")
+                    ctx.font.slant = FontSlant::Italic;
+                else if (val.substr(0, 7) == "oblique")
+                    ctx.font.slant = FontSlant::Oblique;
             } else if (k == "font-stretch") {
                 if (auto s = font_stretch(val)) ctx.font.stretch = *s;
             } else if (k == "font-variant" || k == "font-variant-caps") {
@@ -2044,8 +2162,10 @@ public:
                 if (!node.attribute("font-kerning")) ctx.no_kerning = val == "none";
             } else if (k == "kerning") {
                 // SVG 1.1: "auto" or a length; 0 turns kerning off, other lengths are not supported.
-                if (val == "auto") ctx.no_kerning = false;
-                else if (auto l = parse_length(val, 1); l && *l == 0) ctx.no_kerning = true;
+                if (val == "auto")
+                    ctx.no_kerning = false;
+                else if (auto l = parse_length(val, 1); l && *l == 0)
+                    ctx.no_kerning = true;
             } else if (k == "font-feature-settings") {
                 ctx.feature_settings.clear();
                 if (val != "normal") {
@@ -2059,17 +2179,25 @@ public:
                 ctx.font.variations.clear();
                 if (val != "normal")
                     for (const auto& [tag, value] : tag_value_list(val))
-                        if (auto n = parse_number(value); n && tag.size() <= 4) ctx.font.variations.push_back({tag, *n});
+                        if (auto n = parse_number(value); n && tag.size() <= 4)
+                            ctx.font.variations.push_back({tag, *n});
             } else if (k == "letter-spacing") {
-                if (val == "normal") ctx.letter_spacing = 0;
-                else if (auto l = text_length(val, fs, ctx.viewport_width)) ctx.letter_spacing = *l;
+                if (val == "normal")
+                    ctx.letter_spacing = 0;
+                else if (auto l = text_length(val, fs, ctx.viewport_width))
+                    ctx.letter_spacing = *l;
             } else if (k == "word-spacing") {
-                if (val == "normal") ctx.word_spacing = 0;
-                else if (auto l = text_length(val, fs, ctx.viewport_width)) ctx.word_spacing = *l;
+                if (val == "normal")
+                    ctx.word_spacing = 0;
+                else if (auto l = text_length(val, fs, ctx.viewport_width))
+                    ctx.word_spacing = *l;
             } else if (k == "text-anchor") {
-                if (val == "start") ctx.anchor = svg_text::Anchor::Start;
-                else if (val == "middle") ctx.anchor = svg_text::Anchor::Middle;
-                else if (val == "end") ctx.anchor = svg_text::Anchor::End;
+                if (val == "start")
+                    ctx.anchor = svg_text::Anchor::Start;
+                else if (val == "middle")
+                    ctx.anchor = svg_text::Anchor::Middle;
+                else if (val == "end")
+                    ctx.anchor = svg_text::Anchor::End;
             } else if (k == "dominant-baseline") {
                 ctx.dominant = baseline_kind(val, svg_text::Baseline::Alphabetic);
                 ctx.baseline = ctx.dominant;
@@ -2077,25 +2205,32 @@ public:
                 ctx.baseline = baseline_kind(val, ctx.dominant);
             } else if (k == "baseline-shift" && std::string_view(node.name()) != "text") {
                 // Not on the text element itself (as resvg): only tspans shift their baseline.
-                if (val == "sub") ctx.baseline_shifts.push_back({1, 0});
-                else if (val == "super") ctx.baseline_shifts.push_back({2, 0});
+                if (val == "sub")
+                    ctx.baseline_shifts.push_back({1, 0});
+                else if (val == "super")
+                    ctx.baseline_shifts.push_back({2, 0});
                 else if (val != "baseline")
                     if (auto l = text_length(val, fs, fs)) ctx.baseline_shifts.push_back({0, *l});
             } else if (k == "text-decoration" || k == "text-decoration-line") {
                 for (std::string_view w : split_list(val)) {
                     svg_text::Decoration d;
                     d.style = ctx.style;
-                    if (w == "underline") d.kind = svg_text::Decoration::Underline;
-                    else if (w == "overline") d.kind = svg_text::Decoration::Overline;
-                    else if (w == "line-through") d.kind = svg_text::Decoration::LineThrough;
-                    else continue;
+                    if (w == "underline")
+                        d.kind = svg_text::Decoration::Underline;
+                    else if (w == "overline")
+                        d.kind = svg_text::Decoration::Overline;
+                    else if (w == "line-through")
+                        d.kind = svg_text::Decoration::LineThrough;
+                    else
+                        continue;
                     ctx.decorations.push_back(d);
                 }
             } else if (k == "direction") {
                 ctx.direction = std::string(val);
             }
         }
-        if (const char* sp = node.attribute("xml:space").value(); *sp) ctx.preserve = std::string_view(sp) == "preserve";
+        if (const char* sp = node.attribute("xml:space").value(); *sp)
+            ctx.preserve = std::string_view(sp) == "preserve";
         ctx.font.features.clear();
         if (ctx.small_caps) ctx.font.features.push_back("smcp");
         if (ctx.no_kerning) ctx.font.features.push_back("kern=0");
@@ -2114,7 +2249,7 @@ public:
         };
         std::vector<Range> ranges;  // elements with position lists, in document order
         std::size_t chars = 0;
-        bool last_space = true;     // collapsing: the text so far ends in a space (or is empty)
+        bool last_space = true;       // collapsing: the text so far ends in a space (or is empty)
         bool last_preserved = false;  // the last character came from xml:space="preserve" text
         bool truncated = false;
         int path_elements = 0;
@@ -2169,15 +2304,16 @@ public:
     // The text content of an element and its descendants (for tref).
     static void all_text(const pugi::xml_node& n, std::string& out) {
         for (const pugi::xml_node& c : n.children()) {
-            if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) out += c.value();
+            if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata)
+                out += c.value();
             else if (c.type() == pugi::node_element && std::string_view(c.name()) != "title" &&
                      std::string_view(c.name()) != "desc" && std::string_view(c.name()) != "metadata")
                 all_text(c, out);
         }
     }
 
-    void text_element(const pugi::xml_node& node, TextCtx ctx, const Style& parent, const Affine& text_m, double vw, double vh,
-                      TextBuild& b, int depth) {
+    void text_element(const pugi::xml_node& node, TextCtx ctx, const Style& parent, const Affine& text_m, double vw,
+                      double vh, TextBuild& b, int depth) {
         if (depth > limits_.nesting_depth)
             throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(limits_.nesting_depth));
         for (const auto& [k, v] : properties(node))
@@ -2206,8 +2342,7 @@ public:
             if (const char* t = target.attribute("transform").value(); *t) {
                 try {
                     pt = parse_svg_transform(t);
-                } catch (const Error&) {
-                }
+                } catch (const Error&) {}
             }
             (void)text_m;
             svg_text::TextPath tp;
@@ -2227,7 +2362,8 @@ public:
                         std::uint32_t s0 = 0;
                         for (std::size_t c = 0; c < poly.contour_count(); ++c) {
                             for (std::uint32_t i = s0 + 1; i < poly.contour_ends[c]; ++i)
-                                total += std::hypot(poly.points[i].x - poly.points[i - 1].x, poly.points[i].y - poly.points[i - 1].y);
+                                total += std::hypot(poly.points[i].x - poly.points[i - 1].x,
+                                                    poly.points[i].y - poly.points[i - 1].y);
                             s0 = poly.contour_ends[c];
                         }
                         tp.start_offset = *pct / 100 * total;
@@ -2294,7 +2430,8 @@ public:
         }
         for (const svg_text::Span& sp : b.in.spans) {
             if (!(sp.font.size <= limits::kMaxSvgFontSize)) {
-                warn("font-size above " + std::to_string(static_cast<long long>(limits::kMaxSvgFontSize)) + "; text not drawn");
+                warn("font-size above " + std::to_string(static_cast<long long>(limits::kMaxSvgFontSize)) +
+                     "; text not drawn");
                 return {};
             }
         }
@@ -2306,14 +2443,16 @@ public:
         for (TextBuild::Range& r : b.ranges) {
             r.end = std::min(r.end, b.chars);  // the trailing space may have gone
             r.begin = std::min(r.begin, r.end);
-            auto list = [&](const char* attr, double percent_of, std::optional<double> svg_text::CharPos::*field, bool repeat_last) {
+            auto list = [&](const char* attr, double percent_of, std::optional<double> svg_text::CharPos::*field,
+                            bool repeat_last) {
                 const char* v = r.node.attribute(attr).value();
                 if (!*v) return;
                 std::optional<double> last;
                 std::size_t i = r.begin;
                 for (std::string_view w : split_list(v)) {
                     if (i >= r.end) break;
-                    auto l = std::string_view(attr) == "rotate" ? parse_number(w) : text_length(w, r.font_size, percent_of);
+                    auto l =
+                        std::string_view(attr) == "rotate" ? parse_number(w) : text_length(w, r.font_size, percent_of);
                     if (!l) return;
                     b.in.pos[i++].*field = *l;
                     last = *l;
@@ -2328,8 +2467,9 @@ public:
             list("rotate", 1, &svg_text::CharPos::rotate, true);
             if (const char* tl = r.node.attribute("textLength").value(); *tl && r.end > r.begin) {
                 if (auto l = text_length(tl, r.font_size, vw); l && *l > 0)
-                    b.in.lengths.push_back({r.begin, r.end, *l,
-                                            std::string_view(r.node.attribute("lengthAdjust").value()) == "spacingAndGlyphs"});
+                    b.in.lengths.push_back(
+                        {r.begin, r.end, *l,
+                         std::string_view(r.node.attribute("lengthAdjust").value()) == "spacingAndGlyphs"});
             }
         }
         std::string dir;
@@ -2354,7 +2494,8 @@ public:
         if (!cells || outlines.empty()) return;
         Path box;
         box.add_rect(*cells);
-        for (svg_text::Outline::Layer layer : {svg_text::Outline::Under, svg_text::Outline::Glyphs, svg_text::Outline::Over}) {
+        for (svg_text::Outline::Layer layer :
+             {svg_text::Outline::Under, svg_text::Outline::Glyphs, svg_text::Outline::Over}) {
             for (const svg_text::Outline& o : outlines) {
                 if (o.layer != layer || o.path.empty()) continue;
                 const Style& s = styles[o.style];
@@ -2436,7 +2577,8 @@ void normalise_namespaces(pugi::xml_node node, std::vector<std::string> prefixes
         const std::string_view name = n.name();
         if (const std::size_t colon = name.find(':'); colon != std::string_view::npos) {
             const std::string prefix(name.substr(0, colon));
-            if (std::find(scope.begin(), scope.end(), prefix) != scope.end()) n.set_name(std::string(name.substr(colon + 1)).c_str());
+            if (std::find(scope.begin(), scope.end(), prefix) != scope.end())
+                n.set_name(std::string(name.substr(colon + 1)).c_str());
         }
         for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling())
             if (c.type() == pugi::node_element) stack.emplace_back(c, scope);
@@ -2447,9 +2589,9 @@ void normalise_namespaces(pugi::xml_node node, std::vector<std::string> prefixes
 
 struct SvgDocument::Impl {
     pugi::xml_document doc;
-    int width = 0, height = 0;   // output size: the intrinsic size rounded, at least 1
+    int width = 0, height = 0;       // output size: the intrinsic size rounded, at least 1
     double fwidth = 0, fheight = 0;  // intrinsic size, fractional
-    Affine view;  // viewBox -> pixels
+    Affine view;                     // viewBox -> pixels
     std::vector<Item> items;
     std::vector<std::string> warnings;
 };
@@ -2480,13 +2622,14 @@ SvgDocument SvgDocument::load(const std::string& path, const SvgOptions& options
 
 SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options) {
     std::string inflated;
-    if (input.size() >= 2 && static_cast<unsigned char>(input[0]) == 0x1f && static_cast<unsigned char>(input[1]) == 0x8b)
+    if (input.size() >= 2 && static_cast<unsigned char>(input[0]) == 0x1f &&
+        static_cast<unsigned char>(input[1]) == 0x8b)
         inflated = gunzip(input);
     const std::string_view text = inflated.empty() ? input : std::string_view(inflated);
     auto impl = std::make_unique<Impl>();
     if (trim(text).empty()) throw Error(ErrorKind::Parse, "SVG input is empty");
-    const pugi::xml_parse_result res =
-        impl->doc.load_buffer(text.data(), text.size(), pugi::parse_default | pugi::parse_ws_pcdata);  // text needs the spaces between tspans
+    const pugi::xml_parse_result res = impl->doc.load_buffer(
+        text.data(), text.size(), pugi::parse_default | pugi::parse_ws_pcdata);  // text needs the spaces between tspans
     if (!res)
         throw Error(ErrorKind::Parse, std::string("malformed SVG (XML) at byte ") + std::to_string(res.offset) + ": " +
                                           res.description());
@@ -2510,8 +2653,8 @@ SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options
     if (!w) w = vb ? vb->width() : 100.0;
     if (!h) h = vb ? vb->height() : 100.0;
     if (!(*w > 0) || !(*h > 0))
-        throw Error(ErrorKind::InvalidData, "SVG width and height must be positive, got " + std::to_string(*w) + " x " +
-                                                std::to_string(*h));
+        throw Error(ErrorKind::InvalidData,
+                    "SVG width and height must be positive, got " + std::to_string(*w) + " x " + std::to_string(*h));
     // The output size is the intrinsic size rounded to whole pixels (at least 1), as resvg does;
     // the fractional size stays for the scale (render() fills the whole output).
     const double rw = std::max(1.0, std::round(*w)), rh = std::max(1.0, std::round(*h));
@@ -2581,7 +2724,8 @@ void render_items(const std::vector<Item>& items, Canvas& canvas, const Affine& 
                 frames.pop_back();
                 Pixmap result = std::move(f->pm);
                 if (it.filters)
-                    for (const filter::FilterGraph& g : *it.filters) result = filter::apply_filter(g, base * it.transform, result);
+                    for (const filter::FilterGraph& g : *it.filters)
+                        result = filter::apply_filter(g, base * it.transform, result);
                 cur().draw_layer(result, 1.0);
                 continue;
             }
@@ -2608,14 +2752,11 @@ void render_items(const std::vector<Item>& items, Canvas& canvas, const Affine& 
                 c.set_transform(saved);
                 continue;
             }
-            case Item::PopClip:
-                cur().restore();
-                continue;
+            case Item::PopClip: cur().restore(); continue;
             case Item::SvgImage:
                 if (it.svg_image) it.svg_image->render(cur(), base * it.transform);
                 continue;
-            case Item::Bounds:
-                continue;
+            case Item::Bounds: continue;
             case Item::Fill:
             case Item::Stroke: break;
         }
@@ -2634,16 +2775,20 @@ void render_items(const std::vector<Item>& items, Canvas& canvas, const Affine& 
             Canvas tc(*tile);
             tc.fill_options() = c.fill_options();
             render_items(pt.items, tc,
-                         Affine::scale(tw / pt.tile.width(), th / pt.tile.height()) * Affine::translate(-pt.tile.x0, -pt.tile.y0));
-            paint.shader = std::make_shared<const Shader>(Shader::image(
-                tile, true,
-                pt.transform * Affine::translate(pt.tile.x0, pt.tile.y0) * Affine::scale(pt.tile.width() / tw, pt.tile.height() / th),
-                true));
+                         Affine::scale(tw / pt.tile.width(), th / pt.tile.height()) *
+                             Affine::translate(-pt.tile.x0, -pt.tile.y0));
+            paint.shader = std::make_shared<const Shader>(
+                Shader::image(tile, true,
+                              pt.transform * Affine::translate(pt.tile.x0, pt.tile.y0) *
+                                  Affine::scale(pt.tile.width() / tw, pt.tile.height() / th),
+                              true));
         }
         const Affine saved = c.transform();
         c.set_transform(base * it.transform);
-        if (it.kind == Item::Stroke) c.stroke_path(it.path, it.stroke, paint);
-        else c.fill_path(it.path, paint, it.rule);
+        if (it.kind == Item::Stroke)
+            c.stroke_path(it.path, it.stroke, paint);
+        else
+            c.fill_path(it.path, paint, it.rule);
         c.set_transform(saved);
     }
 }

@@ -95,8 +95,7 @@ Color flood_color(const pugi::xml_node& n, const SvgFilterEnv& env, const char* 
             } else {
                 c = env.color(cv);
             }
-        } catch (const Error&) {
-        }
+        } catch (const Error&) {}
     }
     const std::string ov = env.property(n, opacity_name);
     if (!ov.empty()) {
@@ -113,18 +112,50 @@ std::array<double, 20> identity_matrix() {
 }
 
 std::array<double, 20> saturate_matrix(double s) {
-    return {0.213 + 0.787 * s, 0.715 - 0.715 * s, 0.072 - 0.072 * s, 0, 0,
-            0.213 - 0.213 * s, 0.715 + 0.285 * s, 0.072 - 0.072 * s, 0, 0,
-            0.213 - 0.213 * s, 0.715 - 0.715 * s, 0.072 + 0.928 * s, 0, 0,
-            0, 0, 0, 1, 0};
+    return {0.213 + 0.787 * s,
+            0.715 - 0.715 * s,
+            0.072 - 0.072 * s,
+            0,
+            0,
+            0.213 - 0.213 * s,
+            0.715 + 0.285 * s,
+            0.072 - 0.072 * s,
+            0,
+            0,
+            0.213 - 0.213 * s,
+            0.715 - 0.715 * s,
+            0.072 + 0.928 * s,
+            0,
+            0,
+            0,
+            0,
+            0,
+            1,
+            0};
 }
 
 std::array<double, 20> hue_rotate_matrix(double degrees) {
     const double r = degrees * kPi / 180, c = std::cos(r), s = std::sin(r);
-    return {0.213 + c * 0.787 - s * 0.213, 0.715 - c * 0.715 - s * 0.715, 0.072 - c * 0.072 + s * 0.928, 0, 0,
-            0.213 - c * 0.213 + s * 0.143, 0.715 + c * 0.285 + s * 0.140, 0.072 - c * 0.072 - s * 0.283, 0, 0,
-            0.213 - c * 0.213 - s * 0.787, 0.715 - c * 0.715 + s * 0.715, 0.072 + c * 0.928 + s * 0.072, 0, 0,
-            0, 0, 0, 1, 0};
+    return {0.213 + c * 0.787 - s * 0.213,
+            0.715 - c * 0.715 - s * 0.715,
+            0.072 - c * 0.072 + s * 0.928,
+            0,
+            0,
+            0.213 - c * 0.213 + s * 0.143,
+            0.715 + c * 0.285 + s * 0.140,
+            0.072 - c * 0.072 - s * 0.283,
+            0,
+            0,
+            0.213 - c * 0.213 - s * 0.787,
+            0.715 - c * 0.715 + s * 0.715,
+            0.072 + c * 0.928 + s * 0.072,
+            0,
+            0,
+            0,
+            0,
+            0,
+            1,
+            0};
 }
 
 std::array<double, 20> luminance_to_alpha_matrix() {
@@ -153,7 +184,9 @@ struct Units {
     double y(double v) const { return bbox ? box.y0 + v * box.height() : v; }
     double lx(double v) const { return bbox ? v * box.width() : v; }
     double ly(double v) const { return bbox ? v * box.height() : v; }
-    double lz(double v) const { return bbox ? v * std::sqrt((box.width() * box.width() + box.height() * box.height()) / 2) : v; }
+    double lz(double v) const {
+        return bbox ? v * std::sqrt((box.width() * box.width() + box.height() * box.height()) / 2) : v;
+    }
 };
 
 bool read_light(const pugi::xml_node& n, const Units& u, filter::Light& l) {
@@ -205,8 +238,13 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
         p.op = P::Composite;
         const std::string_view o = trim(n.attribute("operator").value());
         using C = filter::CompositeOp;
-        p.composite = o == "in" ? C::In : o == "out" ? C::Out : o == "atop" ? C::Atop : o == "xor" ? C::Xor
-                    : o == "arithmetic" ? C::Arithmetic : o == "lighter" ? C::Lighter : C::Over;
+        p.composite = o == "in"           ? C::In
+                      : o == "out"        ? C::Out
+                      : o == "atop"       ? C::Atop
+                      : o == "xor"        ? C::Xor
+                      : o == "arithmetic" ? C::Arithmetic
+                      : o == "lighter"    ? C::Lighter
+                                          : C::Over;
         p.k1 = number_attr(n, "k1", 0);
         p.k2 = number_attr(n, "k2", 0);
         p.k3 = number_attr(n, "k3", 0);
@@ -280,14 +318,18 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
         p.ry = u.ly(r->second);
     } else if (name == "feConvolveMatrix") {
         p.op = P::ConvolveMatrix;
-        auto order = n.attribute("order") ? number_pair(n, "order") : std::optional<std::pair<double, double>>{std::pair{3.0, 3.0}};
+        auto order = n.attribute("order") ? number_pair(n, "order")
+                                          : std::optional<std::pair<double, double>>{std::pair{3.0, 3.0}};
         if (!order || order->first < 1 || order->second < 1 || order->first != std::floor(order->first) ||
             order->second != std::floor(order->second))
             return false;
         if (order->first > limits::kMaxConvolveOrder || order->second > limits::kMaxConvolveOrder)
-            throw Error(ErrorKind::Limit, "feConvolveMatrix order " + std::to_string(static_cast<long long>(std::min(order->first, 1e18))) + " x " +
-                                              std::to_string(static_cast<long long>(std::min(order->second, 1e18))) + " exceeds the limit of " +
-                                              std::to_string(limits::kMaxConvolveOrder) + " x " + std::to_string(limits::kMaxConvolveOrder));
+            throw Error(ErrorKind::Limit, "feConvolveMatrix order " +
+                                              std::to_string(static_cast<long long>(std::min(order->first, 1e18))) +
+                                              " x " +
+                                              std::to_string(static_cast<long long>(std::min(order->second, 1e18))) +
+                                              " exceeds the limit of " + std::to_string(limits::kMaxConvolveOrder) +
+                                              " x " + std::to_string(limits::kMaxConvolveOrder));
         p.order_x = static_cast<int>(order->first);
         p.order_y = static_cast<int>(order->second);
         auto k = numbers(n.attribute("kernelMatrix").value());
@@ -323,7 +365,8 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
         p.draw = env.image(n, p.subregion);
     } else if (name == "feTurbulence") {
         p.op = P::Turbulence;
-        auto f = n.attribute("baseFrequency") ? number_pair(n, "baseFrequency") : std::optional<std::pair<double, double>>{std::pair{0.0, 0.0}};
+        auto f = n.attribute("baseFrequency") ? number_pair(n, "baseFrequency")
+                                              : std::optional<std::pair<double, double>>{std::pair{0.0, 0.0}};
         if (!f || f->first < 0 || f->second < 0) f = std::pair{0.0, 0.0};
         p.freq_x = f->first;
         p.freq_y = f->second;
@@ -359,7 +402,8 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
 
 }  // namespace
 
-std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const std::optional<Rect>& bbox, const SvgFilterEnv& env) {
+std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const std::optional<Rect>& bbox,
+                                                const SvgFilterEnv& env) {
     std::vector<pugi::xml_node> chain{f};
     while (chain.size() < 32) {
         const pugi::xml_node& last = chain.back();
@@ -367,7 +411,9 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
         if (!*h) h = last.attribute("xlink:href").value();
         if (*h != '#') break;
         const pugi::xml_node next = env.lookup(h + 1);
-        if (!next || std::string_view(next.name()) != "filter" || std::find(chain.begin(), chain.end(), next) != chain.end()) break;
+        if (!next || std::string_view(next.name()) != "filter" ||
+            std::find(chain.begin(), chain.end(), next) != chain.end())
+            break;
         chain.push_back(next);
     }
     auto attr = [&](const char* name) -> const char* {
@@ -389,7 +435,8 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
     if ((bbox_units || prim_bbox) && !have_box) return std::nullopt;
 
     filter::FilterGraph g;
-    auto region_value = [&](const char* name, double def_fraction, double size, double origin, bool is_pos) -> std::optional<double> {
+    auto region_value = [&](const char* name, double def_fraction, double size, double origin,
+                            bool is_pos) -> std::optional<double> {
         const char* v = attr(name);
         if (bbox_units) {
             std::optional<double> fr = v ? fraction(v) : std::optional<double>(def_fraction);
@@ -402,8 +449,10 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
         return l;
     };
     const Rect b = have_box ? *bbox : Rect{};
-    const double rx = *region_value("x", -0.1, b.width(), b.x0, true), ry = *region_value("y", -0.1, b.height(), b.y0, true);
-    const double rw = *region_value("width", 1.2, b.width(), 0, false), rh = *region_value("height", 1.2, b.height(), 0, false);
+    const double rx = *region_value("x", -0.1, b.width(), b.x0, true),
+                 ry = *region_value("y", -0.1, b.height(), b.y0, true);
+    const double rw = *region_value("width", 1.2, b.width(), 0, false),
+                 rh = *region_value("height", 1.2, b.height(), 0, false);
     if (!(rw > 0) || !(rh > 0)) return std::nullopt;
     g.region = Rect::from_xywh(rx, ry, rw, rh);
 
@@ -438,7 +487,8 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
         // An `in` value: a standard input, an earlier result, or (empty or unknown) the previous.
         auto input = [&](const pugi::xml_node& node, const char* a) {
             const std::string_view v = trim(node.attribute(a).value());
-            if (v == "SourceGraphic" || v == "BackgroundImage" || v == "BackgroundAlpha" || v == "FillPaint" || v == "StrokePaint")
+            if (v == "SourceGraphic" || v == "BackgroundImage" || v == "BackgroundAlpha" || v == "FillPaint" ||
+                v == "StrokePaint")
                 return filter::Input::source_graphic();
             if (v == "SourceAlpha") return filter::Input::source_alpha();
             const auto it = results.find(v);
@@ -451,7 +501,8 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
         } else {
             p.inputs = {input(n, "in"), input(n, "in2")};
         }
-        if (const std::size_t max_primitives = current_limits().filter_primitives; g.primitives.size() >= max_primitives)
+        if (const std::size_t max_primitives = current_limits().filter_primitives;
+            g.primitives.size() >= max_primitives)
             throw Error(ErrorKind::Limit, "filter has more than " + std::to_string(max_primitives) + " primitives");
         if (const char* r = n.attribute("result").value(); *r) results[r] = static_cast<int>(g.primitives.size());
         g.primitives.push_back(std::move(p));
@@ -468,18 +519,22 @@ std::optional<std::vector<FilterRef>> parse_filter_property(std::string_view val
         while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '-')) ++i;
         if (i == 0 || i >= s.size() || s[i] != '(') return std::nullopt;
         std::string name(s.substr(0, i));
-        std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        std::transform(name.begin(), name.end(), name.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
         int depth = 0;
         std::size_t j = i;
         for (; j < s.size(); ++j) {
-            if (s[j] == '(') ++depth;
-            else if (s[j] == ')' && --depth == 0) break;
+            if (s[j] == '(')
+                ++depth;
+            else if (s[j] == ')' && --depth == 0)
+                break;
         }
         if (j >= s.size()) return std::nullopt;
         std::string_view inner = trim(s.substr(i + 1, j - i - 1));
         FilterRef r;
         if (name == "url") {
-            if (inner.size() >= 2 && (inner.front() == '\'' || inner.front() == '"')) inner = inner.substr(1, inner.size() - 2);
+            if (inner.size() >= 2 && (inner.front() == '\'' || inner.front() == '"'))
+                inner = inner.substr(1, inner.size() - 2);
             if (inner.empty() || inner.front() != '#') return std::nullopt;
             r.url = std::string(inner.substr(1));
         } else {
@@ -507,7 +562,8 @@ std::optional<std::vector<FilterRef>> parse_filter_property(std::string_view val
     return out;
 }
 
-std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std::optional<Rect>& bbox, const SvgFilterEnv& env) {
+std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std::optional<Rect>& bbox,
+                                                  const SvgFilterEnv& env) {
     using P = filter::Primitive;
     filter::FilterGraph g;
     // The region of a filter function: -10% .. 110% of the viewport in user space (as resvg
@@ -542,7 +598,8 @@ std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std
             p.matrix = identity_matrix();
             for (int r = 0; r < 3; ++r)
                 for (int c = 0; c < 3; ++c)
-                    p.matrix[static_cast<std::size_t>(r * 5 + c)] = t[r * 3 + c] + (1 - v) * ((r == c ? 1.0 : 0.0) - t[r * 3 + c]);
+                    p.matrix[static_cast<std::size_t>(r * 5 + c)] =
+                        t[r * 3 + c] + (1 - v) * ((r == c ? 1.0 : 0.0) - t[r * 3 + c]);
         } else if (name == "saturate") {
             p.op = P::ColorMatrix;
             p.matrix = saturate_matrix(v);
@@ -560,8 +617,10 @@ std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std
                 t.slope = v;
                 t.intercept = name == "contrast" ? 0.5 - 0.5 * v : 0;
             }
-            if (name == "opacity") p.funcs[3] = t;
-            else p.funcs[0] = p.funcs[1] = p.funcs[2] = t;
+            if (name == "opacity")
+                p.funcs[3] = t;
+            else
+                p.funcs[0] = p.funcs[1] = p.funcs[2] = t;
         }
     } else if (name == "hue-rotate") {
         double deg = 0;
@@ -569,18 +628,23 @@ std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std
         if (!fn.args.empty()) {
             std::string_view a = trim(fn.args[0]);
             std::size_t k = 0;
-            while (k < a.size() && (std::isdigit(static_cast<unsigned char>(a[k])) || a[k] == '.' || a[k] == '-' || a[k] == '+' ||
-                                    a[k] == 'e' || a[k] == 'E'))
+            while (k < a.size() && (std::isdigit(static_cast<unsigned char>(a[k])) || a[k] == '.' || a[k] == '-' ||
+                                    a[k] == '+' || a[k] == 'e' || a[k] == 'E'))
                 ++k;
             auto v = number(a.substr(0, k));
             const std::string_view unit = a.substr(k);
             if (!v) return std::nullopt;
             // A unitless angle other than 0 is invalid CSS.
-            if (unit == "deg" || (unit.empty() && *v == 0)) deg = *v;
-            else if (unit == "grad") deg = *v * 0.9;
-            else if (unit == "rad") deg = *v * 180 / kPi;
-            else if (unit == "turn") deg = *v * 360;
-            else return std::nullopt;
+            if (unit == "deg" || (unit.empty() && *v == 0))
+                deg = *v;
+            else if (unit == "grad")
+                deg = *v * 0.9;
+            else if (unit == "rad")
+                deg = *v * 180 / kPi;
+            else if (unit == "turn")
+                deg = *v * 360;
+            else
+                return std::nullopt;
         }
         p.op = P::ColorMatrix;
         p.matrix = hue_rotate_matrix(deg);
@@ -608,9 +672,7 @@ std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std
             if (have_color) return std::nullopt;
             try {
                 p.color = trim(a) == "currentColor" ? env.current_color : env.color(a);
-            } catch (const Error&) {
-                return std::nullopt;
-            }
+            } catch (const Error&) { return std::nullopt; }
             have_color = true;
         }
         if (lengths.size() == 1 || lengths.size() > 3) return std::nullopt;

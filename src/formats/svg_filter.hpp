@@ -46,10 +46,12 @@ std::optional<std::vector<FilterRef>> parse_filter_property(std::string_view val
 
 // The graph of filter `f` applied to an element whose bounding box (user units) is `bbox`;
 // nullopt when the filter is invalid and the element must not be drawn.
-std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const std::optional<Rect>& bbox, const SvgFilterEnv& env);
+std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const std::optional<Rect>& bbox,
+                                                const SvgFilterEnv& env);
 
 // The graph of one CSS filter function (grayscale(), blur(), drop-shadow(), ...); nullopt when
 // its arguments are invalid.
-std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std::optional<Rect>& bbox, const SvgFilterEnv& env);
+std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std::optional<Rect>& bbox,
+                                                  const SvgFilterEnv& env);
 
 }  // namespace casteljau::svg_filter

@@ -32,10 +32,10 @@ struct Cluster {
     std::size_t span = 0;
     std::vector<Glyph> glyphs;
     double advance = 0;
-    double x = 0, y = 0;  // origin on the baseline (before baseline offsets)
-    double step = 0;      // distance to the next cluster's origin (advance + spacing)
-    double scale_x = 1;   // lengthAdjust="spacingAndGlyphs"
-    bool upright = false;  // vertical text: drawn upright (else turned 90 degrees clockwise)
+    double x = 0, y = 0;         // origin on the baseline (before baseline offsets)
+    double step = 0;             // distance to the next cluster's origin (advance + spacing)
+    double scale_x = 1;          // lengthAdjust="spacingAndGlyphs"
+    bool upright = false;        // vertical text: drawn upright (else turned 90 degrees clockwise)
     const Font* font = nullptr;  // metrics for baselines and decorations
 };
 
@@ -47,7 +47,9 @@ bool is_upright(char32_t c) {
            (c >= 0x1f000 && c <= 0x1faff) || (c >= 0x20000 && c <= 0x3ffff);
 }
 
-bool is_word_space(char32_t c) { return c == U' ' || c == 0xa0 || c == 0x1361 || c == 0x10100 || c == 0x10101 || c == 0x3000; }
+bool is_word_space(char32_t c) {
+    return c == U' ' || c == 0xa0 || c == 0x1361 || c == 0x10100 || c == 0x10101 || c == 0x3000;
+}
 
 // An arc-length parametrised polyline of a path (curves sampled finely enough for glyph placement).
 struct PathWalker {
@@ -60,17 +62,17 @@ struct PathWalker {
         Polyline poly;
         try {
             flatten(path, Affine{}, 0.01, poly);
-        } catch (const Error&) {
-            return;
-        }
+        } catch (const Error&) { return; }
         std::uint32_t start = 0;
         for (std::size_t c = 0; c < poly.contour_count(); ++c) {
             const std::uint32_t end = poly.contour_ends[c];
             for (std::uint32_t i = start; i < end; ++i) {
                 const bool first = i == start;
                 const Point p = poly.points[i];
-                if (pts.empty()) len.push_back(0);
-                else len.push_back(len.back() + (first ? 0 : std::hypot(p.x - pts.back().x, p.y - pts.back().y)));
+                if (pts.empty())
+                    len.push_back(0);
+                else
+                    len.push_back(len.back() + (first ? 0 : std::hypot(p.x - pts.back().x, p.y - pts.back().y)));
                 pts.push_back(p);
                 jump.push_back(first);
             }
@@ -101,8 +103,8 @@ struct PathWalker {
 };
 
 std::string variation_key(const FontSpec& spec) {
-    std::string k = std::to_string(spec.weight) + "/" + std::to_string(spec.stretch) + "/" + std::to_string(spec.size) + "/" +
-                    std::to_string(static_cast<int>(spec.slant));
+    std::string k = std::to_string(spec.weight) + "/" + std::to_string(spec.stretch) + "/" + std::to_string(spec.size) +
+                    "/" + std::to_string(static_cast<int>(spec.slant));
     for (const Variation& v : spec.variations) k += "/" + v.tag + "=" + std::to_string(v.value);
     return k;
 }
@@ -181,7 +183,8 @@ std::vector<const Font*> FontSet::chain(const FontSpec& spec, std::u32string_vie
     return out;
 }
 
-std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std::string>& warnings, std::optional<Rect>* box) {
+std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std::string>& warnings,
+                            std::optional<Rect>* box) {
     std::u32string text;
     std::vector<std::size_t> span_of;
     for (std::size_t s = 0; s < in.spans.size(); ++s) {
@@ -327,8 +330,10 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
         if (on_path) {
             const bool first = c == 0 || in.spans[span_of[chunk_starts[c - 1]]].path_element != first_span.path_element;
             const double offset = in.paths[static_cast<std::size_t>(first_span.path)].start_offset;
-            if (pos(cb).x) pen_x = *pos(cb).x + offset;  // an absolute x is a distance along the path
-            else if (first) pen_x = offset;
+            if (pos(cb).x)
+                pen_x = *pos(cb).x + offset;  // an absolute x is a distance along the path
+            else if (first)
+                pen_x = offset;
             if (first) pen_y = 0;  // dy moves glyphs off the path
         }
         // Vertical text advances along y; `along` is the coordinate that advances.
@@ -452,9 +457,12 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
             double shift = 0;
             for (const Span::Shift& bs : sp.baseline_shifts) {
                 const double s = g.font ? size / g.font->units_per_em() : 0;
-                if (bs.kind == 0) shift += bs.value;
-                else if (bs.kind == 1) shift -= g.font ? g.font->metrics().subscript_offset * s : 0.2 * size;
-                else shift += g.font ? g.font->metrics().superscript_offset * s : 0.4 * size;
+                if (bs.kind == 0)
+                    shift += bs.value;
+                else if (bs.kind == 1)
+                    shift -= g.font ? g.font->metrics().subscript_offset * s : 0.2 * size;
+                else
+                    shift += g.font ? g.font->metrics().superscript_offset * s : 0.4 * size;
             }
             const double by = g.y + baseline_offset(sp.baseline, g.font, size) - shift;
             Affine t;
@@ -496,11 +504,10 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                 const double s = size / gl.font->units_per_em();
                 try {
                     gl.font->glyph_path(gl.id, glyph);
-                } catch (const Error&) {
-                    continue;
-                }
+                } catch (const Error&) { continue; }
                 if (glyph.empty()) continue;
-                outline_for(Outline::Glyphs, sp.style).append(glyph, t * Affine::translate(gl.x_off, gl.y_off) * Affine::scale(s, -s));
+                outline_for(Outline::Glyphs, sp.style)
+                    .append(glyph, t * Affine::translate(gl.x_off, gl.y_off) * Affine::scale(s, -s));
             }
             if (!sp.decorations.empty() && g.font) {
                 const FontMetrics& m = g.font->metrics();

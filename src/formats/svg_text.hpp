@@ -58,7 +58,7 @@ struct Span {
     };
     std::vector<Shift> baseline_shifts;
     std::vector<Decoration> decorations;
-    int path = -1;  // index into TextInput::paths, or -1
+    int path = -1;          // index into TextInput::paths, or -1
     int path_element = -1;  // which textPath element (each starts a new chunk)
 };
 

@@ -17,10 +17,10 @@ namespace casteljau {
 
 namespace {
 
+using json::JsonPath;
 using simdjson::dom::array;
 using simdjson::dom::element;
 using simdjson::dom::object;
-using json::JsonPath;
 
 struct TopoReader {
     JsonPath path;
@@ -64,7 +64,8 @@ struct TopoReader {
 
     Point raw_position(element e) {
         array a = get_array(e, "a position (an array of numbers)");
-        if (a.size() < 2) path.fail(ErrorKind::InvalidData, "a position needs 2 numbers, got " + std::to_string(a.size()));
+        if (a.size() < 2)
+            path.fail(ErrorKind::InvalidData, "a position needs 2 numbers, got " + std::to_string(a.size()));
         return {number(a.at(0).value_unsafe()), number(a.at(1).value_unsafe())};
     }
 
@@ -106,10 +107,12 @@ struct TopoReader {
         for (element ie : a) {
             auto s = path.index(i);
             std::int64_t k;
-            if (ie.get_int64().get(k) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected an integer arc index");
+            if (ie.get_int64().get(k) != simdjson::SUCCESS)
+                path.fail(ErrorKind::Parse, "expected an integer arc index");
             const std::int64_t idx = k < 0 ? ~k : k;
             if (idx >= static_cast<std::int64_t>(out.arc_ends.size()))
-                path.fail(ErrorKind::InvalidData, "arc index " + std::to_string(k) + " is out of range (the topology has " +
+                path.fail(ErrorKind::InvalidData, "arc index " + std::to_string(k) +
+                                                      " is out of range (the topology has " +
                                                       std::to_string(out.arc_ends.size()) + " arcs)");
             used[static_cast<std::size_t>(idx)] = true;
             const std::size_t a0 = idx == 0 ? 0 : out.arc_ends[static_cast<std::size_t>(idx) - 1];
@@ -161,14 +164,18 @@ struct TopoReader {
     }
 
     void geometry(object obj, Feature& f) {
-        if (++depth > current_limits().nesting_depth) path.fail(ErrorKind::Limit, "geometry collections nested too deeply");
+        if (++depth > current_limits().nesting_depth)
+            path.fail(ErrorKind::Limit, "geometry collections nested too deeply");
         element te;
         std::string_view type;
         if (obj["type"].get(te) != simdjson::SUCCESS) {
             auto s = path.key("type");
             path.fail(ErrorKind::Parse, "missing");
         }
-        if (te.is_null()) { --depth; return; }
+        if (te.is_null()) {
+            --depth;
+            return;
+        }
         if (te.get_string().get(type) != simdjson::SUCCESS) {
             auto s = path.key("type");
             path.fail(ErrorKind::Parse, "expected a string");
@@ -181,7 +188,8 @@ struct TopoReader {
             for (element ge : get_array(gs, "an array of geometries")) {
                 auto s2 = path.index(i++);
                 object go;
-                if (ge.get_object().get(go) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected a geometry object");
+                if (ge.get_object().get(go) != simdjson::SUCCESS)
+                    path.fail(ErrorKind::Parse, "expected a geometry object");
                 geometry(go, f);
             }
             --depth;
@@ -189,7 +197,8 @@ struct TopoReader {
         }
         Geometry g;
         const bool is_point = type == "Point" || type == "MultiPoint";
-        if (const auto kind = geo_detail::kind_of(type)) g.kind = *kind;
+        if (const auto kind = geo_detail::kind_of(type))
+            g.kind = *kind;
         else {
             auto s = path.key("type");
             path.fail(ErrorKind::Parse, "unknown geometry type \"" + std::string(type) + "\"");
@@ -231,7 +240,8 @@ struct TopoReader {
             for (element ge : get_array(gs, "an array of geometries")) {
                 auto s2 = path.index(i++);
                 object go;
-                if (ge.get_object().get(go) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected a geometry object");
+                if (ge.get_object().get(go) != simdjson::SUCCESS)
+                    path.fail(ErrorKind::Parse, "expected a geometry object");
                 feature(go);
             }
         } else {
@@ -257,8 +267,10 @@ MapData topojson_from(element root, std::string_view object_name) {
         auto s = r.path.key("transform");
         r.transform(e);
     }
-    if (obj["arcs"].get(e) == simdjson::SUCCESS) r.arcs(e);
-    else r.used.clear();
+    if (obj["arcs"].get(e) == simdjson::SUCCESS)
+        r.arcs(e);
+    else
+        r.used.clear();
     element objs;
     object objects;
     if (obj["objects"].get(objs) != simdjson::SUCCESS || objs.get_object().get(objects) != simdjson::SUCCESS) {
@@ -277,8 +289,8 @@ MapData topojson_from(element root, std::string_view object_name) {
         r.top_object(field.value);
     }
     if (!object_name.empty() && !found)
-        throw Error(ErrorKind::InvalidArgument, "TopoJSON has no object named '" + std::string(object_name) +
-                                                    "' (it has: " + names + ")");
+        throw Error(ErrorKind::InvalidArgument,
+                    "TopoJSON has no object named '" + std::string(object_name) + "' (it has: " + names + ")");
     for (std::size_t i = 0; i < r.used.size(); ++i)
         if (r.used[i]) out.used_arcs.push_back(static_cast<std::uint32_t>(i));
     return out;

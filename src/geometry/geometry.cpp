@@ -41,8 +41,8 @@ Affine Affine::skew_x(double radians) { return {1, 0, std::tan(radians), 1, 0, 0
 Affine Affine::skew_y(double radians) { return {1, std::tan(radians), 0, 1, 0, 0}; }
 
 bool Affine::is_finite() const {
-    return std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && std::isfinite(d) &&
-           std::isfinite(e) && std::isfinite(f);
+    return std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && std::isfinite(d) && std::isfinite(e) &&
+           std::isfinite(f);
 }
 
 std::optional<Affine> Affine::inverse() const {
@@ -65,8 +65,7 @@ double Affine::max_scale() const {
 }
 
 Rect transform_bounds(const Affine& m, const Rect& r) {
-    const Point p[4] = {m.apply({r.x0, r.y0}), m.apply({r.x1, r.y0}), m.apply({r.x0, r.y1}),
-                        m.apply({r.x1, r.y1})};
+    const Point p[4] = {m.apply({r.x0, r.y0}), m.apply({r.x1, r.y0}), m.apply({r.x0, r.y1}), m.apply({r.x1, r.y1})};
     Rect out{p[0].x, p[0].y, p[0].x, p[0].y};
     for (const Point& q : p) out.include(q);
     return out;

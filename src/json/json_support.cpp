@@ -19,7 +19,9 @@ std::size_t syntax_error_offset(std::string_view s) {
     std::size_t i = 0;
     const std::size_t n = s.size();
     std::vector<char> stack;  // '{' or '['
-    auto skip_ws = [&] { while (i < n && is_ws(s[i])) ++i; };
+    auto skip_ws = [&] {
+        while (i < n && is_ws(s[i])) ++i;
+    };
     // Scans one scalar at i; returns false at the offending byte.
     auto scalar = [&]() -> bool {
         if (i >= n) return false;
@@ -28,7 +30,10 @@ std::size_t syntax_error_offset(std::string_view s) {
             ++i;
             while (i < n) {
                 const unsigned char ch = static_cast<unsigned char>(s[i]);
-                if (ch == '"') { ++i; return true; }
+                if (ch == '"') {
+                    ++i;
+                    return true;
+                }
                 if (ch < 0x20) return false;
                 if (ch == '\\') {
                     ++i;
@@ -59,8 +64,10 @@ std::size_t syntax_error_offset(std::string_view s) {
         if (c == '-' || (c >= '0' && c <= '9')) {
             if (s[i] == '-') ++i;
             if (i >= n || !std::isdigit(static_cast<unsigned char>(s[i]))) return false;
-            if (s[i] == '0') ++i;
-            else while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+            if (s[i] == '0')
+                ++i;
+            else
+                while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
             if (i < n && s[i] == '.') {
                 ++i;
                 if (i >= n || !std::isdigit(static_cast<unsigned char>(s[i]))) return false;
@@ -98,8 +105,11 @@ std::size_t syntax_error_offset(std::string_view s) {
             stack.push_back('{');
             ++i;
             skip_ws();
-            if (i < n && s[i] == '}') { ++i; stack.pop_back(); value_done = true; }
-            else {
+            if (i < n && s[i] == '}') {
+                ++i;
+                stack.pop_back();
+                value_done = true;
+            } else {
                 if (const std::size_t bad = member_key(); bad != kNoError) return bad;
                 continue;
             }
@@ -107,8 +117,12 @@ std::size_t syntax_error_offset(std::string_view s) {
             stack.push_back('[');
             ++i;
             skip_ws();
-            if (i < n && s[i] == ']') { ++i; stack.pop_back(); value_done = true; }
-            else continue;
+            if (i < n && s[i] == ']') {
+                ++i;
+                stack.pop_back();
+                value_done = true;
+            } else
+                continue;
         } else {
             if (!scalar()) return i >= n ? n : i;
             value_done = true;
@@ -144,8 +158,10 @@ std::size_t skip_ws(std::string_view s, std::size_t i) {
 // The end of the string whose opening quote is at i, in valid JSON.
 std::size_t string_end(std::string_view s, std::size_t i) {
     for (++i; i < s.size(); ++i) {
-        if (s[i] == '\\') ++i;
-        else if (s[i] == '"') return i + 1;
+        if (s[i] == '\\')
+            ++i;
+        else if (s[i] == '"')
+            return i + 1;
     }
     return s.size();
 }
@@ -166,8 +182,10 @@ std::size_t value_end(std::string_view s, std::size_t i) {
             i = string_end(s, i);
             continue;
         }
-        if (c == '{' || c == '[') ++depth;
-        else if ((c == '}' || c == ']') && --depth == 0) return i + 1;
+        if (c == '{' || c == '[')
+            ++depth;
+        else if ((c == '}' || c == ']') && --depth == 0)
+            return i + 1;
         ++i;
     }
     return s.size();
@@ -223,8 +241,10 @@ simdjson::dom::element parse(simdjson::dom::parser& parser, std::string_view tex
         throw Error(ErrorKind::Limit, what + ": JSON document too large (" + std::to_string(text.size()) + " bytes)");
     const std::size_t at = syntax_error_offset(text);
     std::string msg = what + ": invalid JSON";
-    if (at < text.size()) msg += " at byte " + std::to_string(at);
-    else if (at == text.size()) msg += " (ends early, at byte " + std::to_string(text.size()) + ")";
+    if (at < text.size())
+        msg += " at byte " + std::to_string(at);
+    else if (at == text.size())
+        msg += " (ends early, at byte " + std::to_string(text.size()) + ")";
     msg += ": ";
     msg += simdjson::error_message(err);
     throw Error(ErrorKind::Parse, msg);

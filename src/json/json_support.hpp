@@ -46,8 +46,14 @@ public:
         JsonPath& p;
         ~Scope() { p.parts_.pop_back(); }
     };
-    Scope key(std::string_view k) { parts_.push_back({std::string(k), 0, true}); return {*this}; }
-    Scope index(std::size_t i) { parts_.push_back({{}, i, false}); return {*this}; }
+    Scope key(std::string_view k) {
+        parts_.push_back({std::string(k), 0, true});
+        return {*this};
+    }
+    Scope index(std::size_t i) {
+        parts_.push_back({{}, i, false});
+        return {*this};
+    }
     std::string str() const;
     void set_prefix(std::string p) { prefix_ = std::move(p); }
     [[noreturn]] void fail(ErrorKind kind, const std::string& what) const;

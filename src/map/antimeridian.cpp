@@ -21,8 +21,13 @@ bool unwrap(std::span<const Point> in, std::vector<Point>& out) {
     for (std::size_t i = 0; i < in.size(); ++i) {
         if (i > 0) {
             const double d = in[i].x - in[i - 1].x;
-            if (d > 180) { turns -= 360; crossed = true; }
-            else if (d < -180) { turns += 360; crossed = true; }
+            if (d > 180) {
+                turns -= 360;
+                crossed = true;
+            } else if (d < -180) {
+                turns += 360;
+                crossed = true;
+            }
         }
         out.push_back({in[i].x + turns, in[i].y});
     }
@@ -75,8 +80,10 @@ void split_ring_at_antimeridian(std::span<const Point> ring, std::vector<std::ve
     {
         const std::size_t n = ring.size();
         double d = ring[0].x - ring[n - 1].x;
-        if (d > 180) d -= 360;
-        else if (d < -180) d += 360;
+        if (d > 180)
+            d -= 360;
+        else if (d < -180)
+            d += 360;
         net = (u.back().x + d) - first.x;  // closing step included
     }
     if (std::fabs(net) > 180) {
@@ -86,8 +93,10 @@ void split_ring_at_antimeridian(std::span<const Point> ring, std::vector<std::ve
         const double pole = mean < 0 ? -90.0 : 90.0;
         const Point last = u.back();
         double d = ring[0].x - ring[ring.size() - 1].x;
-        if (d > 180) d -= 360;
-        else if (d < -180) d += 360;
+        if (d > 180)
+            d -= 360;
+        else if (d < -180)
+            d += 360;
         const double end_x = last.x + d;  // where the ring would return, k*360 away from its start
         u.push_back({end_x, first.y});
         u.push_back({end_x, pole});

@@ -11,9 +11,9 @@ namespace casteljau {
 
 namespace {
 
+using json::JsonPath;
 using simdjson::dom::element;
 using simdjson::dom::object;
-using json::JsonPath;
 
 std::optional<Color> color_or_none(element e, JsonPath& path) {
     if (e.is_null()) return std::nullopt;
@@ -23,14 +23,13 @@ std::optional<Color> color_or_none(element e, JsonPath& path) {
         const Color c = parse_color(s);
         if (s == "none") return std::nullopt;
         return c;
-    } catch (const Error& err) {
-        path.fail(ErrorKind::Parse, err.what());
-    }
+    } catch (const Error& err) { path.fail(ErrorKind::Parse, err.what()); }
 }
 
 double number(element e, JsonPath& path) {
     double v;
-    if (e.get_double().get(v) != simdjson::SUCCESS || !std::isfinite(v)) path.fail(ErrorKind::Parse, "expected a finite number");
+    if (e.get_double().get(v) != simdjson::SUCCESS || !std::isfinite(v))
+        path.fail(ErrorKind::Parse, "expected a finite number");
     return v;
 }
 
@@ -50,9 +49,12 @@ MapFilter filter(element e, JsonPath& path) {
         if (o["property"].get(v) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "missing");
         f.property = string_of(v, path);
     }
-    struct OpName { const char* name; MapFilter::Op op; };
+    struct OpName {
+        const char* name;
+        MapFilter::Op op;
+    };
     const OpName ops[] = {{"==", MapFilter::Op::Equals}, {"!=", MapFilter::Op::NotEquals}, {"<", MapFilter::Op::Less},
-                          {">", MapFilter::Op::Greater}, {"in", MapFilter::Op::In}, {"has", MapFilter::Op::Has}};
+                          {">", MapFilter::Op::Greater}, {"in", MapFilter::Op::In},        {"has", MapFilter::Op::Has}};
     for (const OpName& op : ops) {
         if (o[op.name].get(v) != simdjson::SUCCESS) continue;
         auto s = path.key(op.name);
@@ -109,10 +111,22 @@ MapStyle read_map_style(std::string_view text) {
         object lo;
         if (le.get_object().get(lo) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected a layer object");
         MapLayerStyle l;
-        if (lo["filter"].get(e) == simdjson::SUCCESS) { auto s2 = path.key("filter"); l.filter = filter(e, path); }
-        if (lo["fill"].get(e) == simdjson::SUCCESS) { auto s2 = path.key("fill"); l.fill = color_or_none(e, path); }
-        if (lo["stroke"].get(e) == simdjson::SUCCESS) { auto s2 = path.key("stroke"); l.stroke = color_or_none(e, path); }
-        if (lo["fill_by"].get(e) == simdjson::SUCCESS) { auto s2 = path.key("fill_by"); l.fill_by = string_of(e, path); }
+        if (lo["filter"].get(e) == simdjson::SUCCESS) {
+            auto s2 = path.key("filter");
+            l.filter = filter(e, path);
+        }
+        if (lo["fill"].get(e) == simdjson::SUCCESS) {
+            auto s2 = path.key("fill");
+            l.fill = color_or_none(e, path);
+        }
+        if (lo["stroke"].get(e) == simdjson::SUCCESS) {
+            auto s2 = path.key("stroke");
+            l.stroke = color_or_none(e, path);
+        }
+        if (lo["fill_by"].get(e) == simdjson::SUCCESS) {
+            auto s2 = path.key("fill_by");
+            l.fill_by = string_of(e, path);
+        }
         if (lo["width"].get(e) == simdjson::SUCCESS) {
             auto s2 = path.key("width");
             l.stroke_width = number(e, path);
@@ -146,7 +160,13 @@ MapStyle read_map_style(std::string_view text) {
                     path.fail(ErrorKind::Parse, "expected [VALUE, COLOUR]");
                 const double v = number(stop.at(0).value_unsafe(), path);
                 const Color c = color_or_none(stop.at(1).value_unsafe(), path).value_or(Color::transparent());
-                if (k == 0) { r.min = v; r.min_color = c; } else { r.max = v; r.max_color = c; }
+                if (k == 0) {
+                    r.min = v;
+                    r.min_color = c;
+                } else {
+                    r.max = v;
+                    r.max_color = c;
+                }
             }
             l.ramp = r;
         }

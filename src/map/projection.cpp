@@ -84,9 +84,7 @@ MapProjection MapProjection::clone() const { return parse(spec_); }
 
 bool MapProjection::project(Point ll, Point& out) const {
     switch (kind_) {
-        case Kind::Equirectangular:
-            out = ll;
-            return true;
+        case Kind::Equirectangular: out = ll; return true;
         case Kind::WebMercator: {
             constexpr double d2r = kPi / 180.0;
             const double lat = std::clamp(ll.y, -kWebMercatorMaxLatitude, kWebMercatorMaxLatitude);

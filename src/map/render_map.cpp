@@ -140,11 +140,17 @@ private:
 struct BoundsVisitor final : PieceVisitor {
     Rect r{INFINITY, INFINITY, -INFINITY, -INFINITY};
     void add(Point p) {
-        r.x0 = std::min(r.x0, p.x); r.y0 = std::min(r.y0, p.y);
-        r.x1 = std::max(r.x1, p.x); r.y1 = std::max(r.y1, p.y);
+        r.x0 = std::min(r.x0, p.x);
+        r.y0 = std::min(r.y0, p.y);
+        r.x1 = std::max(r.x1, p.x);
+        r.y1 = std::max(r.y1, p.y);
     }
-    void ring(const std::vector<Point>& pts) override { for (const Point& p : pts) add(p); }
-    void line(const std::vector<Point>& pts) override { for (const Point& p : pts) add(p); }
+    void ring(const std::vector<Point>& pts) override {
+        for (const Point& p : pts) add(p);
+    }
+    void line(const std::vector<Point>& pts) override {
+        for (const Point& p : pts) add(p);
+    }
     void point(Point p) override { add(p); }
 };
 
@@ -152,8 +158,8 @@ struct BoundsVisitor final : PieceVisitor {
 struct PathVisitor final : PieceVisitor {
     Affine m;
     double point_radius = 3;
-    Path fill;   // polygons + point disks
-    Path lines;  // open polylines, to be stroked
+    Path fill;                  // polygons + point disks
+    Path lines;                 // open polylines, to be stroked
     std::vector<Point> mapped;  // a ring in pixel space
     void ring(const std::vector<Point>& pts) override {
         mapped.resize(pts.size());
@@ -259,8 +265,8 @@ MapFrame fit_map(const MapData& data, const MapProjection& proj, const MapOption
     Rect ext;
     if (opts.bbox) {
         const Rect& b = *opts.bbox;
-        if (!std::isfinite(b.x0) || !std::isfinite(b.x1) || !std::isfinite(b.y0) || !std::isfinite(b.y1) || !(b.x0 < b.x1) ||
-            !(b.y0 < b.y1) || b.y0 < -90 || b.y1 > 90 || b.x0 < -540 || b.x1 > 540)
+        if (!std::isfinite(b.x0) || !std::isfinite(b.x1) || !std::isfinite(b.y0) || !std::isfinite(b.y1) ||
+            !(b.x0 < b.x1) || !(b.y0 < b.y1) || b.y0 < -90 || b.y1 > 90 || b.x0 < -540 || b.x1 > 540)
             throw Error(ErrorKind::InvalidArgument,
                         "bbox must be W,S,E,N degrees with W < E, S < N, latitudes within -90..90");
         ext = projected_bbox(proj, b);
@@ -272,7 +278,8 @@ MapFrame fit_map(const MapData& data, const MapProjection& proj, const MapOption
         for (const Feature& f : data.features)
             for (const Geometry& g : f.geometries) pr.geometry(g, b);
         if (!(b.r.x1 >= b.r.x0))
-            throw Error(ErrorKind::InvalidData, "the map has no geometry to draw (pass --bbox to draw an empty extent)");
+            throw Error(ErrorKind::InvalidData,
+                        "the map has no geometry to draw (pass --bbox to draw an empty extent)");
         ext = b.r;
     }
     double ew = ext.width(), eh = ext.height();
@@ -280,9 +287,13 @@ MapFrame fit_map(const MapData& data, const MapProjection& proj, const MapOption
         ew = eh = 1;
         ext = Rect{ext.x0 - 0.5, ext.y0 - 0.5, ext.x0 + 0.5, ext.y0 + 0.5};
     } else if (ew <= 0) {
-        ext.x0 -= eh / 2; ext.x1 += eh / 2; ew = eh;
+        ext.x0 -= eh / 2;
+        ext.x1 += eh / 2;
+        ew = eh;
     } else if (eh <= 0) {
-        ext.y0 -= ew / 2; ext.y1 += ew / 2; eh = ew;
+        ext.y0 -= ew / 2;
+        ext.y1 += ew / 2;
+        eh = ew;
     }
     const double p = opts.padding;
     const double inner_w = opts.width - 2 * p;
@@ -352,7 +363,8 @@ struct Drawable {
 }  // namespace
 
 int map_threads(int requested) {
-    if (requested < 0 || requested > 256) throw Error(ErrorKind::InvalidArgument, "threads must be 0 (all cores) to 256");
+    if (requested < 0 || requested > 256)
+        throw Error(ErrorKind::InvalidArgument, "threads must be 0 (all cores) to 256");
     const int pool = parallel::thread_count();
     return requested > 0 ? std::min(requested, pool) : pool;
 }
@@ -362,10 +374,14 @@ namespace {
 // Starts `sc` over `region`, making it first when needed: writing into `*into` itself when given
 // (SeamlessCompositor::reset_into), else with a layer of its own.
 void start_compositor(std::optional<SeamlessCompositor>& sc, const IRect& region, Pixmap* into) {
-    if (!sc && into) sc.emplace(*into, region);
-    else if (!sc) sc.emplace(region);
-    else if (into) sc->reset_into(*into, region);
-    else sc->reset(region);
+    if (!sc && into)
+        sc.emplace(*into, region);
+    else if (!sc)
+        sc.emplace(region);
+    else if (into)
+        sc->reset_into(*into, region);
+    else
+        sc->reset(region);
 }
 
 // render_map onto `target`; `cleared`: the target is known to be transparent already (a new
@@ -405,10 +421,12 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
     // (SeamlessCompositor::reset_into): the same pixels, without a layer.
     bool target_clear = cleared && style.background.a == 0;
     if (!target_clear)
-        parallel::for_each_index(threads, bands.size(),
-                                 [&](int, std::size_t b) { target.fill_rows(bands[b].y0, bands[b].y1, style.background); });
-    std::optional<SeamlessCompositor> whole;                                     // the whole image
-    std::vector<std::optional<SeamlessCompositor>> band_compositors(static_cast<std::size_t>(threads));  // one band per worker
+        parallel::for_each_index(threads, bands.size(), [&](int, std::size_t b) {
+            target.fill_rows(bands[b].y0, bands[b].y1, style.background);
+        });
+    std::optional<SeamlessCompositor> whole;  // the whole image
+    std::vector<std::optional<SeamlessCompositor>> band_compositors(
+        static_cast<std::size_t>(threads));  // one band per worker
 
     auto build = [&](int w, const Feature& f, PathVisitor& v) {
         v.m = frame.to_pixel;
@@ -436,9 +454,8 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
             while (end < order.size() && (end == begin || positions < kChunkPositions))
                 positions += positions_of(data.features[order[end++]]);
             chunk.assign(end - begin, std::nullopt);
-            parallel::for_each_index(threads, end - begin, [&](int w, std::size_t i) {
-                make(w, data.features[order[begin + i]], chunk[i]);
-            });
+            parallel::for_each_index(threads, end - begin,
+                                     [&](int w, std::size_t i) { make(w, data.features[order[begin + i]], chunk[i]); });
             draw(chunk);
             begin = end;
         }
@@ -565,7 +582,8 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
             chains.assign(chunk.size(), Path{});
             whole.assign(chunk.size(), Path{});
             for (std::size_t i = 0; i < chunk.size(); ++i)
-                if (chunk[i] && !chunk[i]->rings.empty()) borders.add(chunk[i]->rings, chains[i], whole[i], merge_distance);
+                if (chunk[i] && !chunk[i]->rings.empty())
+                    borders.add(chunk[i]->rings, chains[i], whole[i], merge_distance);
             parallel::for_each_index(threads, chunk.size(), [&](int, std::size_t i) {
                 if (!chains[i].empty()) chunk[i]->path.append(stroke(chains[i], chain_style, Affine{}, opts.tolerance));
                 if (!whole[i].empty()) chunk[i]->path.append(stroke(whole[i], ss, Affine{}, opts.tolerance));

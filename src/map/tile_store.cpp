@@ -27,7 +27,8 @@ TileFolderWriter::TileFolderWriter(std::string dir) : dir_(std::move(dir)) {
     std::error_code ec;
     std::filesystem::create_directories(dir_, ec);
     if (ec || !std::filesystem::is_directory(dir_))
-        throw Error(ErrorKind::Io, "cannot create the tile folder '" + dir_ + "': " + (ec ? ec.message() : "not a folder"));
+        throw Error(ErrorKind::Io,
+                    "cannot create the tile folder '" + dir_ + "': " + (ec ? ec.message() : "not a folder"));
 }
 
 std::string TileFolderWriter::tile_path(int z, int x, int y) const {
@@ -95,7 +96,8 @@ MbtilesWriter::MbtilesWriter(std::string path, const std::string& name, int min_
     impl_->tmp = impl_->path + ".tmp-" + std::to_string(::getpid());
     try {
         std::remove(impl_->tmp.c_str());
-        if (sq().open_v2(impl_->tmp.c_str(), &impl_->db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK)
+        if (sq().open_v2(impl_->tmp.c_str(), &impl_->db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) !=
+            SQLITE_OK)
             impl_->fail("cannot create the database");
         impl_->exec(
             "PRAGMA journal_mode=OFF; PRAGMA synchronous=OFF;"
@@ -111,10 +113,15 @@ MbtilesWriter::MbtilesWriter(std::string path, const std::string& name, int min_
         center.precision(10);
         bounds << b.x0 << "," << b.y0 << "," << b.x1 << "," << b.y1;
         center << (b.x0 + b.x1) / 2 << "," << (b.y0 + b.y1) / 2 << "," << min_zoom;
-        const std::pair<std::string, std::string> meta[] = {
-            {"name", name}, {"format", "png"}, {"type", "overlay"}, {"version", "1.3"},
-            {"description", "rendered by casteljau"}, {"bounds", bounds.str()}, {"center", center.str()},
-            {"minzoom", std::to_string(min_zoom)}, {"maxzoom", std::to_string(max_zoom)}};
+        const std::pair<std::string, std::string> meta[] = {{"name", name},
+                                                            {"format", "png"},
+                                                            {"type", "overlay"},
+                                                            {"version", "1.3"},
+                                                            {"description", "rendered by casteljau"},
+                                                            {"bounds", bounds.str()},
+                                                            {"center", center.str()},
+                                                            {"minzoom", std::to_string(min_zoom)},
+                                                            {"maxzoom", std::to_string(max_zoom)}};
         for (const auto& [k, v] : meta) {
             sq().reset(st);
             sq().bind_text(st, 1, k.c_str(), -1, SQLITE_TRANSIENT);
@@ -125,8 +132,8 @@ MbtilesWriter::MbtilesWriter(std::string path, const std::string& name, int min_
             }
         }
         sq().finalize(st);
-        if (sq().prepare_v2(impl_->db, "INSERT OR REPLACE INTO tiles VALUES (?, ?, ?, ?)", -1, &impl_->insert, nullptr) !=
-            SQLITE_OK)
+        if (sq().prepare_v2(impl_->db, "INSERT OR REPLACE INTO tiles VALUES (?, ?, ?, ?)", -1, &impl_->insert,
+                            nullptr) != SQLITE_OK)
             impl_->fail("cannot prepare");
     } catch (...) {
         impl_->close_and_remove();
@@ -202,8 +209,10 @@ void merge_mbtiles(const std::vector<std::string>& inputs, const std::string& ou
             if (k == "bounds") {
                 double w, s, e, n;
                 if (std::sscanf(v.c_str(), "%lf,%lf,%lf,%lf", &w, &s, &e, &n) == 4) {
-                    b.x0 = std::min(b.x0, w); b.y0 = std::min(b.y0, s);
-                    b.x1 = std::max(b.x1, e); b.y1 = std::max(b.y1, n);
+                    b.x0 = std::min(b.x0, w);
+                    b.y0 = std::min(b.y0, s);
+                    b.x1 = std::max(b.x1, e);
+                    b.y1 = std::max(b.y1, n);
                 }
             }
         }
@@ -215,8 +224,8 @@ void merge_mbtiles(const std::vector<std::string>& inputs, const std::string& ou
     for (const std::string& path : inputs) {
         ReadDb in(path);
         sqlite3_stmt* st = nullptr;
-        if (sq().prepare_v2(in.db, "SELECT zoom_level, tile_column, tile_row, tile_data FROM tiles", -1, &st, nullptr) !=
-            SQLITE_OK)
+        if (sq().prepare_v2(in.db, "SELECT zoom_level, tile_column, tile_row, tile_data FROM tiles", -1, &st,
+                            nullptr) != SQLITE_OK)
             throw Error(ErrorKind::InvalidData, "'" + path + "' is not an MBTiles file (no tiles table)");
         while (sq().step(st) == SQLITE_ROW) {
             const int z = sq().column_int(st, 0);

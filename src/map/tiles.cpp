@@ -110,7 +110,8 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
                             std::copy(src, src + static_cast<std::size_t>(T) * 4, tile.row(r));
                             if (is_empty)
                                 for (int c = 0; c < T; ++c)
-                                    if (!(PremulPixel{src[c * 4], src[c * 4 + 1], src[c * 4 + 2], src[c * 4 + 3]} == bg)) {
+                                    if (!(PremulPixel{src[c * 4], src[c * 4 + 1], src[c * 4 + 2], src[c * 4 + 3]} ==
+                                          bg)) {
                                         is_empty = false;
                                         break;
                                     }

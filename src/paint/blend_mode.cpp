@@ -74,20 +74,38 @@ float separable(BlendMode m, float b, float s) {
 
 }  // namespace
 
-constexpr std::pair<std::string_view, BlendMode> kNames[] = {
-    {"normal", BlendMode::Normal},         {"multiply", BlendMode::Multiply},     {"screen", BlendMode::Screen},
-    {"overlay", BlendMode::Overlay},       {"darken", BlendMode::Darken},         {"lighten", BlendMode::Lighten},
-    {"color-dodge", BlendMode::ColorDodge}, {"color-burn", BlendMode::ColorBurn}, {"hard-light", BlendMode::HardLight},
-    {"soft-light", BlendMode::SoftLight},  {"difference", BlendMode::Difference}, {"exclusion", BlendMode::Exclusion},
-    {"hue", BlendMode::Hue},               {"saturation", BlendMode::Saturation}, {"color", BlendMode::Color},
-    {"luminosity", BlendMode::Luminosity}, {"clear", BlendMode::Clear},           {"copy", BlendMode::Source},
-    {"destination", BlendMode::Destination}, {"destination-over", BlendMode::DestinationOver},
-    {"source-in", BlendMode::SourceIn},    {"destination-in", BlendMode::DestinationIn},
-    {"source-out", BlendMode::SourceOut},  {"destination-out", BlendMode::DestinationOut},
-    {"source-atop", BlendMode::SourceAtop}, {"destination-atop", BlendMode::DestinationAtop},
-    {"xor", BlendMode::Xor},               {"plus-lighter", BlendMode::Plus},
-    // Aliases (parsed, never printed).
-    {"source-over", BlendMode::SourceOver}, {"source", BlendMode::Source},       {"lighter", BlendMode::Plus}};
+constexpr std::pair<std::string_view, BlendMode> kNames[] = {{"normal", BlendMode::Normal},
+                                                             {"multiply", BlendMode::Multiply},
+                                                             {"screen", BlendMode::Screen},
+                                                             {"overlay", BlendMode::Overlay},
+                                                             {"darken", BlendMode::Darken},
+                                                             {"lighten", BlendMode::Lighten},
+                                                             {"color-dodge", BlendMode::ColorDodge},
+                                                             {"color-burn", BlendMode::ColorBurn},
+                                                             {"hard-light", BlendMode::HardLight},
+                                                             {"soft-light", BlendMode::SoftLight},
+                                                             {"difference", BlendMode::Difference},
+                                                             {"exclusion", BlendMode::Exclusion},
+                                                             {"hue", BlendMode::Hue},
+                                                             {"saturation", BlendMode::Saturation},
+                                                             {"color", BlendMode::Color},
+                                                             {"luminosity", BlendMode::Luminosity},
+                                                             {"clear", BlendMode::Clear},
+                                                             {"copy", BlendMode::Source},
+                                                             {"destination", BlendMode::Destination},
+                                                             {"destination-over", BlendMode::DestinationOver},
+                                                             {"source-in", BlendMode::SourceIn},
+                                                             {"destination-in", BlendMode::DestinationIn},
+                                                             {"source-out", BlendMode::SourceOut},
+                                                             {"destination-out", BlendMode::DestinationOut},
+                                                             {"source-atop", BlendMode::SourceAtop},
+                                                             {"destination-atop", BlendMode::DestinationAtop},
+                                                             {"xor", BlendMode::Xor},
+                                                             {"plus-lighter", BlendMode::Plus},
+                                                             // Aliases (parsed, never printed).
+                                                             {"source-over", BlendMode::SourceOver},
+                                                             {"source", BlendMode::Source},
+                                                             {"lighter", BlendMode::Plus}};
 
 bool parse_blend_mode(std::string_view name, BlendMode& out) {
     for (const auto& [n, m] : kNames)
@@ -144,15 +162,30 @@ void blend_pixel(BlendMode mode, const float s[4], const float d[4], float out[4
             case BlendMode::Clear: break;
             case BlendMode::Source: fa = 1; break;
             case BlendMode::Destination: fb = 1; break;
-            case BlendMode::DestinationOver: fa = 1 - ab; fb = 1; break;
+            case BlendMode::DestinationOver:
+                fa = 1 - ab;
+                fb = 1;
+                break;
             case BlendMode::SourceIn: fa = ab; break;
             case BlendMode::DestinationIn: fb = as; break;
             case BlendMode::SourceOut: fa = 1 - ab; break;
             case BlendMode::DestinationOut: fb = 1 - as; break;
-            case BlendMode::SourceAtop: fa = ab; fb = 1 - as; break;
-            case BlendMode::DestinationAtop: fa = 1 - ab; fb = as; break;
-            case BlendMode::Xor: fa = 1 - ab; fb = 1 - as; break;
-            default: fa = 1; fb = 1 - as; break;  // source-over
+            case BlendMode::SourceAtop:
+                fa = ab;
+                fb = 1 - as;
+                break;
+            case BlendMode::DestinationAtop:
+                fa = 1 - ab;
+                fb = as;
+                break;
+            case BlendMode::Xor:
+                fa = 1 - ab;
+                fb = 1 - as;
+                break;
+            default:
+                fa = 1;
+                fb = 1 - as;
+                break;  // source-over
         }
         for (int k = 0; k < 4; ++k) out[k] = fa * s[k] + fb * d[k];
         return;

@@ -92,8 +92,9 @@ public:
         if (n == s.size()) {
             if (iequals(s, "transparent") || iequals(s, "none")) return Color::transparent();
             if (iequals(s, "currentcolor"))
-                fail("currentColor is not supported here: it depends on the element's 'color' property; "
-                     "give a colour value instead");
+                fail(
+                    "currentColor is not supported here: it depends on the element's 'color' property; "
+                    "give a colour value instead");
             if (auto c = detail::find_named_color(s)) return *c;
         }
         fail("expected #rgb, #rrggbb, rgb(...), hsl(...) or a CSS colour name");
@@ -111,7 +112,8 @@ private:
         for (std::size_t i = 0; i < h.size(); ++i) {
             v[i] = hex_value(h[i]);
             if (v[i] < 0) {
-                std::string why = "'";  // built step by step: GCC 12 gives a false -Wrestrict on "'" + std::string(1, c)
+                std::string why =
+                    "'";  // built step by step: GCC 12 gives a false -Wrestrict on "'" + std::string(1, c)
                 why += h[i];
                 why += "' is not a hex digit";
                 fail(why);
@@ -122,7 +124,8 @@ private:
             return {byte(v[0], v[0]), byte(v[1], v[1]), byte(v[2], v[2]),
                     h.size() == 4 ? byte(v[3], v[3]) : std::uint8_t{255}};
         }
-        return {byte(v[0], v[1]), byte(v[2], v[3]), byte(v[4], v[5]), h.size() == 8 ? byte(v[6], v[7]) : std::uint8_t{255}};
+        return {byte(v[0], v[1]), byte(v[2], v[3]), byte(v[4], v[5]),
+                h.size() == 8 ? byte(v[6], v[7]) : std::uint8_t{255}};
     }
 
     // --- Tokens inside the parentheses -------------------------------------------------------
@@ -203,15 +206,16 @@ private:
                 ++count;
                 skip_space();
             }
-            if (count < 3) fail(std::string(fn) + "() needs 3 components separated by commas, got " + std::to_string(count));
-            if (peek() == '/') fail("'/' cannot be mixed with commas in " + std::string(fn) + "(); write " +
-                                    std::string(fn) + "(r, g, b, alpha) or " + std::string(fn) + "(r g b / alpha)");
+            if (count < 3)
+                fail(std::string(fn) + "() needs 3 components separated by commas, got " + std::to_string(count));
+            if (peek() == '/')
+                fail("'/' cannot be mixed with commas in " + std::string(fn) + "(); write " + std::string(fn) +
+                     "(r, g, b, alpha) or " + std::string(fn) + "(r g b / alpha)");
         } else {
             for (; count < 3; ++count) {
                 skip_space();
                 if (at_end()) fail(std::string(fn) + "() needs 3 components, got " + std::to_string(count));
-                if (peek() == ',')
-                    fail("commas cannot be mixed with spaces in " + std::string(fn) + "()");
+                if (peek() == ',') fail("commas cannot be mixed with spaces in " + std::string(fn) + "()");
                 if (peek() == '/') fail(std::string(fn) + "() needs 3 components before '/'");
                 out[count] = component(kWhat[count]);
             }
@@ -250,8 +254,9 @@ private:
             fail("rgb() with commas needs all three components as numbers or all as percentages");
         std::uint8_t v[3];
         for (int i = 0; i < 3; ++i) {
-            v[i] = c[i].kind == Component::Kind::Percent ? round_byte(std::clamp(c[i].value, 0.0, 100.0) * 255.0 / 100.0)
-                                                         : round_byte(std::clamp(c[i].value, 0.0, 255.0));
+            v[i] = c[i].kind == Component::Kind::Percent
+                       ? round_byte(std::clamp(c[i].value, 0.0, 100.0) * 255.0 / 100.0)
+                       : round_byte(std::clamp(c[i].value, 0.0, 255.0));
         }
         return {v[0], v[1], v[2], n == 4 ? alpha(c[3]) : std::uint8_t{255}};
     }

@@ -44,7 +44,8 @@ struct LinearTables {
         for (int i = 0; i <= 4096; ++i) {
             const double l = i / 4096.0;
             const double c = l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1 / 2.4) - 0.055;
-            to_srgb[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255));
+            to_srgb[static_cast<std::size_t>(i)] =
+                static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255));
         }
     }
     std::uint8_t srgb(float linear) const {
@@ -72,13 +73,18 @@ void composite_linear(std::uint8_t* dst, int length, const std::uint8_t* coverag
         float dr = 0, dg = 0, db = 0;
         if (dst[3] != 0) {
             const Color d = unpremultiply({dst[0], dst[1], dst[2], dst[3]});
-            dr = t.to_linear[d.r]; dg = t.to_linear[d.g]; db = t.to_linear[d.b];
+            dr = t.to_linear[d.r];
+            dg = t.to_linear[d.g];
+            db = t.to_linear[d.b];
         }
         const float wd = da * (1 - a) / oa, ws = a / oa;
         const Color out{t.srgb(sr * ws + dr * wd), t.srgb(sg * ws + dg * wd), t.srgb(sb * ws + db * wd),
                         static_cast<std::uint8_t>(std::lround(oa * 255))};
         const PremulPixel p = premultiply(out);
-        dst[0] = p.r; dst[1] = p.g; dst[2] = p.b; dst[3] = p.a;
+        dst[0] = p.r;
+        dst[1] = p.g;
+        dst[2] = p.b;
+        dst[3] = p.a;
     }
 }
 
@@ -116,8 +122,10 @@ void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage,
             const unsigned c = coverage[i];
             if (c == 0) continue;
             std::uint8_t* d = dst + 4 * static_cast<std::size_t>(i);
-            if (c == 255 && opaque) std::memcpy(d, solid, 4);
-            else source_over(d, solid, c);
+            if (c == 255 && opaque)
+                std::memcpy(d, solid, 4);
+            else
+                source_over(d, solid, c);
         }
     }
 }
@@ -134,8 +142,10 @@ void blend_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, con
         // source at full coverage, the formula otherwise.
         auto over = [](std::uint8_t* d, const std::uint8_t* sp, unsigned c) {
             if (c == 0 || sp[3] == 0) return;
-            if (c == 255 && sp[3] == 255) std::memcpy(d, sp, 4);
-            else source_over(d, sp, c);
+            if (c == 255 && sp[3] == 255)
+                std::memcpy(d, sp, 4);
+            else
+                source_over(d, sp, c);
         };
         if (!coverage && step == 4) {
             // A whole layer (SeamlessCompositor, groups) is mostly runs of transparent pixels, which

@@ -25,11 +25,14 @@ int wrap_or_clamp(int i, int n, bool repeat) { return repeat ? ((i % n) + n) % n
 }  // namespace
 
 Shader Shader::image(std::shared_ptr<const Pixmap> image, bool smooth, const Affine& transform, bool repeat) {
-    return Shader::image(std::move(image), smooth ? ImageSampling::Bilinear : ImageSampling::Nearest, transform, repeat);
+    return Shader::image(std::move(image), smooth ? ImageSampling::Bilinear : ImageSampling::Nearest, transform,
+                         repeat);
 }
 
-Shader Shader::image(std::shared_ptr<const Pixmap> image, ImageSampling sampling, const Affine& transform, bool repeat) {
-    if (!image || image->width() < 1 || image->height() < 1) throw Error(ErrorKind::InvalidArgument, "an image shader needs an image");
+Shader Shader::image(std::shared_ptr<const Pixmap> image, ImageSampling sampling, const Affine& transform,
+                     bool repeat) {
+    if (!image || image->width() < 1 || image->height() < 1)
+        throw Error(ErrorKind::InvalidArgument, "an image shader needs an image");
     Shader s;
     s.kind_ = Kind::Image;
     s.image_ = std::move(image);
@@ -88,8 +91,10 @@ void Shader::shade_image_row(const Affine& inv, int x, int y, int length, double
             const double u = q.x - 0.5, v = q.y - 0.5;
             const double fu = std::floor(u), fv = std::floor(v);
             const float au = static_cast<float>(u - fu), av = static_cast<float>(v - fv);
-            const int x0 = wrap_or_clamp(static_cast<int>(fu), w, repeat_), x1 = wrap_or_clamp(static_cast<int>(fu) + 1, w, repeat_);
-            const int y0 = wrap_or_clamp(static_cast<int>(fv), h, repeat_), y1 = wrap_or_clamp(static_cast<int>(fv) + 1, h, repeat_);
+            const int x0 = wrap_or_clamp(static_cast<int>(fu), w, repeat_),
+                      x1 = wrap_or_clamp(static_cast<int>(fu) + 1, w, repeat_);
+            const int y0 = wrap_or_clamp(static_cast<int>(fv), h, repeat_),
+                      y1 = wrap_or_clamp(static_cast<int>(fv) + 1, h, repeat_);
             const std::uint8_t* a = im.row(y0) + 4 * static_cast<std::size_t>(x0);
             const std::uint8_t* b = im.row(y0) + 4 * static_cast<std::size_t>(x1);
             const std::uint8_t* cc = im.row(y1) + 4 * static_cast<std::size_t>(x0);

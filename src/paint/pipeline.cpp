@@ -19,8 +19,10 @@ PaintPipeline::PaintPipeline(const Paint& paint, const Affine& user_to_pixel, do
     mode_ = paint.blend != BlendMode::SourceOver ? paint.blend : mode;
     if (paint.shader) {
         shader_ = paint.shader.get();
-        if (auto inv = (user_to_pixel * shader_->transform()).inverse()) inverse_ = *inv;
-        else skip_ = true;  // a singular shader transform paints nothing
+        if (auto inv = (user_to_pixel * shader_->transform()).inverse())
+            inverse_ = *inv;
+        else
+            skip_ = true;  // a singular shader transform paints nothing
     } else {
         const PremulPixel p = premultiply(paint.color.with_opacity(opacity_));
         premul_[0] = p.r;

@@ -23,9 +23,7 @@ Color Color::with_opacity(double opacity) const {
     return c;
 }
 
-PremulPixel premultiply(Color c) {
-    return {mul_div255(c.r, c.a), mul_div255(c.g, c.a), mul_div255(c.b, c.a), c.a};
-}
+PremulPixel premultiply(Color c) { return {mul_div255(c.r, c.a), mul_div255(c.g, c.a), mul_div255(c.b, c.a), c.a}; }
 
 Color unpremultiply(PremulPixel p) {
     if (p.a == 0) return {0, 0, 0, 0};
@@ -41,24 +39,26 @@ void check_canvas_size(double width, double height) {
     if (!std::isfinite(width) || !std::isfinite(height))
         throw Error(ErrorKind::InvalidData, "canvas size must be finite");
     if (width < 1 || height < 1)
-        throw Error(ErrorKind::InvalidData, "canvas size must be at least 1x1 pixels, got " +
-                                                std::to_string(width) + "x" + std::to_string(height));
+        throw Error(ErrorKind::InvalidData, "canvas size must be at least 1x1 pixels, got " + std::to_string(width) +
+                                                "x" + std::to_string(height));
     const Limits lim = current_limits();
     if (width > lim.canvas_dimension || height > lim.canvas_dimension)
-        throw Error(ErrorKind::Limit, "canvas side exceeds the limit of " + std::to_string(lim.canvas_dimension) + " pixels");
+        throw Error(ErrorKind::Limit,
+                    "canvas side exceeds the limit of " + std::to_string(lim.canvas_dimension) + " pixels");
     if (width * height > static_cast<double>(lim.canvas_pixels))
-        throw Error(ErrorKind::Limit, "canvas area exceeds the limit of " + std::to_string(lim.canvas_pixels) + " pixels");
+        throw Error(ErrorKind::Limit,
+                    "canvas area exceeds the limit of " + std::to_string(lim.canvas_pixels) + " pixels");
 }
 
 Pixmap::Pixmap(int width, int height) {
-    if (width < 1 || height < 1)
-        throw Error(ErrorKind::InvalidArgument, "a Pixmap needs at least 1x1 pixels");
+    if (width < 1 || height < 1) throw Error(ErrorKind::InvalidArgument, "a Pixmap needs at least 1x1 pixels");
     check_canvas_size(width, height);
     width_ = width;
     height_ = height;
     stride_ = static_cast<std::size_t>(width) * 4;
     const std::size_t bytes = stride_ * static_cast<std::size_t>(height);
-    storage_ = std::unique_ptr<std::uint8_t[], Free>(static_cast<std::uint8_t*>(platform::allocate(bytes, true)), Free{bytes});
+    storage_ =
+        std::unique_ptr<std::uint8_t[], Free>(static_cast<std::uint8_t*>(platform::allocate(bytes, true)), Free{bytes});
     if (!storage_) throw std::bad_alloc();
     pixels_ = storage_.get();
 }
@@ -80,15 +80,18 @@ Pixmap Pixmap::borrow(std::uint8_t* pixels, int width, int height, std::size_t s
     return p;
 }
 
-Pixmap::Pixmap(const Pixmap& o) : width_(o.width_), height_(o.height_), stride_(static_cast<std::size_t>(o.width_) * 4) {
+Pixmap::Pixmap(const Pixmap& o)
+    : width_(o.width_), height_(o.height_), stride_(static_cast<std::size_t>(o.width_) * 4) {
     if (!o.pixels_) {
         stride_ = 0;
         return;
     }
     const std::size_t bytes = stride_ * static_cast<std::size_t>(height_);
-    storage_ = std::unique_ptr<std::uint8_t[], Free>(static_cast<std::uint8_t*>(platform::allocate(bytes, false)), Free{bytes});
+    storage_ = std::unique_ptr<std::uint8_t[], Free>(static_cast<std::uint8_t*>(platform::allocate(bytes, false)),
+                                                     Free{bytes});
     if (!storage_) throw std::bad_alloc();
-    for (int y = 0; y < height_; ++y) std::memcpy(storage_.get() + stride_ * static_cast<std::size_t>(y), o.row(y), stride_);
+    for (int y = 0; y < height_; ++y)
+        std::memcpy(storage_.get() + stride_ * static_cast<std::size_t>(y), o.row(y), stride_);
     pixels_ = storage_.get();
 }
 
@@ -139,7 +142,8 @@ void Pixmap::fill_rows(int y0, int y1, Color c) {
     y1 = std::min(y1, height_);
     if (y0 >= y1) return;
     if (p.r == p.g && p.g == p.b && p.b == p.a) {  // transparent, opaque black or white: one byte value
-        if (stride_ == bytes) std::memset(row(y0), p.r, bytes * static_cast<std::size_t>(y1 - y0));
+        if (stride_ == bytes)
+            std::memset(row(y0), p.r, bytes * static_cast<std::size_t>(y1 - y0));
         else
             for (int y = y0; y < y1; ++y) std::memset(row(y), p.r, bytes);
         return;

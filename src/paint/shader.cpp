@@ -38,7 +38,8 @@ double spread_t(double t, SpreadMethod m) {
 
 }  // namespace
 
-Shader Shader::linear(Point p0, Point p1, std::vector<GradientStop> stops, SpreadMethod spread, const Affine& transform) {
+Shader Shader::linear(Point p0, Point p1, std::vector<GradientStop> stops, SpreadMethod spread,
+                      const Affine& transform) {
     Shader s;
     s.kind_ = Kind::Linear;
     s.p0_ = p0;
@@ -102,8 +103,14 @@ bool Shader::parameter(Point p, double& t) const {
     const double sq = std::sqrt(disc);
     const double t1 = (b + sq) / a, t2 = (b - sq) / a;
     const double hi = std::max(t1, t2), lo = std::min(t1, t2);
-    if (radius_ok(hi)) { t = hi; return true; }
-    if (radius_ok(lo)) { t = lo; return true; }
+    if (radius_ok(hi)) {
+        t = hi;
+        return true;
+    }
+    if (radius_ok(lo)) {
+        t = lo;
+        return true;
+    }
     return false;
 }
 

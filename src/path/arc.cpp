@@ -24,10 +24,26 @@ namespace {
 void sincos_degrees(double degrees, double& c, double& s) {
     double r = std::fmod(degrees, 360.0);
     if (r < 0) r += 360.0;
-    if (r == 0) { c = 1; s = 0; return; }
-    if (r == 90) { c = 0; s = 1; return; }
-    if (r == 180) { c = -1; s = 0; return; }
-    if (r == 270) { c = 0; s = -1; return; }
+    if (r == 0) {
+        c = 1;
+        s = 0;
+        return;
+    }
+    if (r == 90) {
+        c = 0;
+        s = 1;
+        return;
+    }
+    if (r == 180) {
+        c = -1;
+        s = 0;
+        return;
+    }
+    if (r == 270) {
+        c = 0;
+        s = -1;
+        return;
+    }
     const double rad = r * (kPi / 180.0);
     c = std::cos(rad);
     s = std::sin(rad);
@@ -71,10 +87,16 @@ namespace detail {
 
 bool arc_center(Point start, double rx, double ry, double x_axis_rotation_degrees, bool large_arc, bool sweep,
                 Point end, ArcCenter& c, ArcKind& kind) {
-    if (start == end) { kind = ArcKind::Nothing; return false; }
+    if (start == end) {
+        kind = ArcKind::Nothing;
+        return false;
+    }
     rx = std::abs(rx);
     ry = std::abs(ry);
-    if (rx == 0 || ry == 0) { kind = ArcKind::Line; return false; }
+    if (rx == 0 || ry == 0) {
+        kind = ArcKind::Line;
+        return false;
+    }
 
     double cp, sp;
     sincos_degrees(x_axis_rotation_degrees, cp, sp);
@@ -83,11 +105,17 @@ bool arc_center(Point start, double rx, double ry, double x_axis_rotation_degree
     const double x1p = cp * hx + sp * hy, y1p = -sp * hx + cp * hy;
     // The start point in unit space; the end point is -p.
     double px = x1p / rx, py = y1p / ry;
-    if (!std::isfinite(px) || !std::isfinite(py)) { kind = ArcKind::OutOfRange; return false; }
+    if (!std::isfinite(px) || !std::isfinite(py)) {
+        kind = ArcKind::OutOfRange;
+        return false;
+    }
     const double len = std::hypot(px, py);
     // len == 0 although start != end: the half chord underflowed, or the radii exceed the chord by
     // more than 1e308; either way the arc is indistinguishable from its chord.
-    if (len == 0) { kind = ArcKind::Line; return false; }
+    if (len == 0) {
+        kind = ArcKind::Line;
+        return false;
+    }
 
     double cx = 0, cy = 0;  // center in unit space
     if (len >= 1) {
@@ -108,8 +136,10 @@ bool arc_center(Point start, double rx, double ry, double x_axis_rotation_degree
     const double vx = -px - cx, vy = -py - cy;  // end, relative to the center
     c.theta1 = std::atan2(uy, ux);
     double dt = std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
-    if (!sweep && dt > 0) dt -= 2 * kPi;
-    else if (sweep && dt < 0) dt += 2 * kPi;
+    if (!sweep && dt > 0)
+        dt -= 2 * kPi;
+    else if (sweep && dt < 0)
+        dt += 2 * kPi;
     c.dtheta = dt;
     c.rx = rx;
     c.ry = ry;
@@ -167,11 +197,9 @@ void arc_to(Path& path, double rx, double ry, double x_axis_rotation_degrees, bo
             double tolerance) {
     if (!std::isfinite(rx) || !std::isfinite(ry) || !std::isfinite(x_axis_rotation_degrees) || !end.is_finite())
         throw Error(ErrorKind::InvalidArgument, "arc_to: radii, rotation and end point must be finite");
-    if (!(tolerance > 0))
-        throw Error(ErrorKind::InvalidArgument, "arc_to: the tolerance must be a positive number");
+    if (!(tolerance > 0)) throw Error(ErrorKind::InvalidArgument, "arc_to: the tolerance must be a positive number");
     const Point start = path.current_point();
-    if (!start.is_finite())
-        throw Error(ErrorKind::InvalidArgument, "arc_to: the path's current point is not finite");
+    if (!start.is_finite()) throw Error(ErrorKind::InvalidArgument, "arc_to: the path's current point is not finite");
     std::array<Point, 3 * limits::kMaxArcPieces> buf;
     const detail::ArcCubics r =
         detail::arc_cubics(start, rx, ry, x_axis_rotation_degrees, large_arc, sweep, end, tolerance, buf);

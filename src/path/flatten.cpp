@@ -91,7 +91,8 @@ Rect check_flatten_input(const Path& path, const Affine& m, double tolerance) {
     for (Point p : path.points()) {
         const Point q = m.apply(p);
         if (!(std::isfinite(q.x) && std::isfinite(q.y))) {
-            if (!p.is_finite()) throw Error(ErrorKind::InvalidData, "path has a non-finite coordinate (NaN or infinity)");
+            if (!p.is_finite())
+                throw Error(ErrorKind::InvalidData, "path has a non-finite coordinate (NaN or infinity)");
             // 1e300 scaled by 1e10 overflows.
             throw Error(ErrorKind::InvalidData, "path coordinate overflows after the transform");
         }

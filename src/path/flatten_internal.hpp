@@ -44,8 +44,10 @@ struct Flattener {
         if (!cull) return false;
         double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
         for (Point p : pts) {
-            x0 = std::min(x0, p.x); x1 = std::max(x1, p.x);
-            y0 = std::min(y0, p.y); y1 = std::max(y1, p.y);
+            x0 = std::min(x0, p.x);
+            x1 = std::max(x1, p.x);
+            y0 = std::min(y0, p.y);
+            y1 = std::max(y1, p.y);
         }
         return x1 < cull->x0 || x0 > cull->x1 || y1 < cull->y0 || y0 > cull->y1;
     }
@@ -164,7 +166,11 @@ struct Flattener {
     void conic(Point a, Point b, Point c, double w) {
         const Point p0 = m(a), p1 = m(b), p2 = m(c);
         if (culled({p0, p1, p2})) return emit(p2);
-        struct K { Point p0, p1, p2; double w; int depth; };
+        struct K {
+            Point p0, p1, p2;
+            double w;
+            int depth;
+        };
         K stack[limits::kMaxFlattenDepth + 2];
         int n = 0;
         stack[n++] = {p0, p1, p2, w, 0};

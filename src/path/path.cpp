@@ -72,9 +72,7 @@ Path& Path::conic_to(Point c, Point p, double w) {
 }
 
 Path& Path::close() {
-    if (open_ && !verbs_.empty() && verbs_.back() != Verb::Close) {
-        verbs_.push_back(Verb::Close);
-    }
+    if (open_ && !verbs_.empty() && verbs_.back() != Verb::Close) { verbs_.push_back(Verb::Close); }
     open_ = false;
     current_ = start_;
     return *this;
@@ -229,7 +227,9 @@ namespace {
 // Roots in (0, 1) of a t^2 + b t + c (numerically stable form; a tiny a degrades to linear).
 int roots_in_unit_interval(double a, double b, double c, double out[2]) {
     int n = 0;
-    auto push = [&](double t) { if (t > 0 && t < 1) out[n++] = t; };
+    auto push = [&](double t) {
+        if (t > 0 && t < 1) out[n++] = t;
+    };
     if (std::abs(a) < 1e-12 * (std::abs(b) + std::abs(c) + 1e-300)) {
         if (b != 0) push(-c / b);
         return n;
@@ -248,7 +248,10 @@ int quad_extrema(double a, double b, double c, double out[1]) {
     const double den = a - 2 * b + c;
     if (den == 0) return 0;
     const double t = (a - b) / den;
-    if (t > 0 && t < 1) { out[0] = t; return 1; }
+    if (t > 0 && t < 1) {
+        out[0] = t;
+        return 1;
+    }
     return 0;
 }
 
@@ -302,8 +305,10 @@ Rect Path::bounds() const {
         void cubic(Point a, Point c1, Point c2, Point b) {
             r.include(b);
             double t[2];
-            for (int i = 0, n = cubic_extrema(a.x, c1.x, c2.x, b.x, t); i < n; ++i) r.include(eval_cubic(a, c1, c2, b, t[i]));
-            for (int i = 0, n = cubic_extrema(a.y, c1.y, c2.y, b.y, t); i < n; ++i) r.include(eval_cubic(a, c1, c2, b, t[i]));
+            for (int i = 0, n = cubic_extrema(a.x, c1.x, c2.x, b.x, t); i < n; ++i)
+                r.include(eval_cubic(a, c1, c2, b, t[i]));
+            for (int i = 0, n = cubic_extrema(a.y, c1.y, c2.y, b.y, t); i < n; ++i)
+                r.include(eval_cubic(a, c1, c2, b, t[i]));
         }
         void conic(Point a, Point c, Point b, double w) {
             r.include(b);

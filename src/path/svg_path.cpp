@@ -30,12 +30,27 @@ constexpr bool starts_number(char c) { return is_digit(c) || c == '-' || c == '+
 
 constexpr bool is_command(char c) {
     switch (c) {
-        case 'M': case 'm': case 'L': case 'l': case 'H': case 'h': case 'V': case 'v':
-        case 'C': case 'c': case 'S': case 's': case 'Q': case 'q': case 'T': case 't':
-        case 'A': case 'a': case 'Z': case 'z':
-            return true;
-        default:
-            return false;
+        case 'M':
+        case 'm':
+        case 'L':
+        case 'l':
+        case 'H':
+        case 'h':
+        case 'V':
+        case 'v':
+        case 'C':
+        case 'c':
+        case 'S':
+        case 's':
+        case 'Q':
+        case 'q':
+        case 'T':
+        case 't':
+        case 'A':
+        case 'a':
+        case 'Z':
+        case 'z': return true;
+        default: return false;
     }
 }
 
@@ -58,7 +73,9 @@ struct CommandArgs {
 
 CommandArgs command_args(char upper) {
     switch (upper) {
-        case 'M': case 'L': case 'T': return {2, {"x", "y"}};
+        case 'M':
+        case 'L':
+        case 'T': return {2, {"x", "y"}};
         case 'H': return {1, {"x"}};
         case 'V': return {1, {"y"}};
         case 'C': return {6, {"x1", "y1", "x2", "y2", "x", "y"}};
@@ -169,9 +186,7 @@ public:
     }
 
     // Records "expected <what>, found <thing at pos>" (what == nullptr: caller sets error_).
-    bool fail_at(std::size_t pos, const std::string& what) {
-        return fail_at(pos, what.c_str());
-    }
+    bool fail_at(std::size_t pos, const std::string& what) { return fail_at(pos, what.c_str()); }
     bool fail_at(std::size_t pos, const char* what) {
         failed_ = true;
         error_pos_ = pos;
@@ -209,18 +224,29 @@ private:
         // Decode one UTF-8 sequence for a readable U+XXXX; anything else is shown as a byte.
         std::uint32_t cp = 0;
         int len = 0;
-        if (c < 0x80) { cp = c; len = 1; }
-        else if ((c & 0xE0) == 0xC0) { cp = c & 0x1F; len = 2; }
-        else if ((c & 0xF0) == 0xE0) { cp = c & 0x0F; len = 3; }
-        else if ((c & 0xF8) == 0xF0) { cp = c & 0x07; len = 4; }
+        if (c < 0x80) {
+            cp = c;
+            len = 1;
+        } else if ((c & 0xE0) == 0xC0) {
+            cp = c & 0x1F;
+            len = 2;
+        } else if ((c & 0xF0) == 0xE0) {
+            cp = c & 0x0F;
+            len = 3;
+        } else if ((c & 0xF8) == 0xF0) {
+            cp = c & 0x07;
+            len = 4;
+        }
         bool ok = len > 0 && pos + static_cast<std::size_t>(len) <= s_.size();
         for (int k = 1; ok && k < len; ++k) {
             const unsigned char cc = static_cast<unsigned char>(s_[pos + static_cast<std::size_t>(k)]);
             if ((cc & 0xC0) != 0x80) ok = false;
             cp = (cp << 6) | (cc & 0x3F);
         }
-        if (ok) std::snprintf(buf, sizeof buf, "U+%04X", static_cast<unsigned>(cp));
-        else std::snprintf(buf, sizeof buf, "byte 0x%02X", static_cast<unsigned>(c));
+        if (ok)
+            std::snprintf(buf, sizeof buf, "U+%04X", static_cast<unsigned>(cp));
+        else
+            std::snprintf(buf, sizeof buf, "byte 0x%02X", static_cast<unsigned>(c));
         return buf;
     }
 
@@ -340,18 +366,24 @@ private:
                 prev_ = Prev::None;
                 return true;
             }
-            case 'L': case 'H': case 'V': {
+            case 'L':
+            case 'H':
+            case 'V': {
                 Point p;
-                if (cmd == 'H' || cmd == 'h') p = {rel ? cur.x + a[0] : a[0], cur.y};
-                else if (cmd == 'V' || cmd == 'v') p = {cur.x, rel ? cur.y + a[0] : a[0]};
-                else p = pt(a[0], a[1]);
+                if (cmd == 'H' || cmd == 'h')
+                    p = {rel ? cur.x + a[0] : a[0], cur.y};
+                else if (cmd == 'V' || cmd == 'v')
+                    p = {cur.x, rel ? cur.y + a[0] : a[0]};
+                else
+                    p = pt(a[0], a[1]);
                 if (!p.is_finite()) return out_of_range(pos);
                 if (!reserve(1, true, pos)) return false;
                 path_.line_to(p);
                 prev_ = Prev::None;
                 return true;
             }
-            case 'C': case 'S': {
+            case 'C':
+            case 'S': {
                 Point c1, c2, p;
                 if (cmd == 'C' || cmd == 'c') {
                     c1 = pt(a[0], a[1]);
@@ -369,7 +401,8 @@ private:
                 last_ctrl_ = c2;
                 return true;
             }
-            case 'Q': case 'T': {
+            case 'Q':
+            case 'T': {
                 Point c, p;
                 if (cmd == 'Q' || cmd == 'q') {
                     c = pt(a[0], a[1]);
@@ -409,8 +442,7 @@ private:
                 }
                 return true;
             }
-            default:
-                return true;
+            default: return true;
         }
     }
 
@@ -455,8 +487,10 @@ private:
                 error_ = "more than " + std::to_string(max_points_) + " points";
                 return false;
             }
-            if (count == 0) path_.move_to({x, y});
-            else path_.line_to({x, y});
+            if (count == 0)
+                path_.move_to({x, y});
+            else
+                path_.line_to({x, y});
             ++count;
             skip_wsp();
             if (!at_end() && peek() == ',') {
@@ -466,8 +500,7 @@ private:
                 continue;
             }
             if (at_end()) return true;
-            if (!starts_number(peek()))
-                return fail_at(i_, "a number (x of point " + std::to_string(count + 1) + ")");
+            if (!starts_number(peek())) return fail_at(i_, "a number (x of point " + std::to_string(count + 1) + ")");
         }
     }
 
@@ -495,8 +528,10 @@ std::size_t compact_number(char* b, std::size_t len) {
     while (r < len && b[r] != 'e') b[w++] = b[r++];
     if (r < len) {
         b[w++] = b[r++];  // 'e'
-        if (r < len && b[r] == '+') ++r;
-        else if (r < len && b[r] == '-') b[w++] = b[r++];
+        if (r < len && b[r] == '+')
+            ++r;
+        else if (r < len && b[r] == '-')
+            b[w++] = b[r++];
         while (r + 1 < len && b[r] == '0') ++r;
         while (r < len) b[w++] = b[r++];
     }
@@ -667,8 +702,8 @@ private:
             a[la++] = '0';
         } else {
             la = compact_number(a, static_cast<std::size_t>(std::to_chars(a, a + sizeof a, v).ptr - a));
-            lb = compact_number(b, static_cast<std::size_t>(
-                                       std::to_chars(b, b + sizeof b, v, std::chars_format::scientific).ptr - b));
+            lb = compact_number(
+                b, static_cast<std::size_t>(std::to_chars(b, b + sizeof b, v, std::chars_format::scientific).ptr - b));
         }
         const char* s = a;
         std::size_t len = la;
@@ -705,8 +740,10 @@ Path parse_svg_path_lenient(std::string_view d, std::string* error, const SvgPat
     PathDataParser p(d, options);
     const bool ok = p.parse();
     if (error) {
-        if (ok) error->clear();
-        else *error = p.message();
+        if (ok)
+            error->clear();
+        else
+            *error = p.message();
     }
     return std::move(p.path());
 }
@@ -731,8 +768,10 @@ Path parse_points_lenient(std::string_view points, bool close, std::string* erro
     PointsParser p(points);
     const bool ok = p.parse(close);
     if (error) {
-        if (ok) error->clear();
-        else *error = p.message();
+        if (ok)
+            error->clear();
+        else
+            *error = p.message();
     }
     return std::move(p.path());
 }

@@ -28,7 +28,7 @@ HWY_INLINE V ApplyRule(D d, V v, FillRule rule) {
     if (rule == FillRule::NonZero) return hn::Min(a, hn::Set(d, 1.0));
     const auto two = hn::Set(d, 2.0);
     a = hn::NegMulAdd(hn::Floor(hn::Mul(a, hn::Set(d, 0.5))), two, a);  // |v| mod 2, in [0, 2)
-    return hn::Min(a, hn::Sub(two, a));                                  // distance to an even integer
+    return hn::Min(a, hn::Sub(two, a));                                 // distance to an even integer
 }
 
 // Coverage in [0, 1] (double or float lanes) to 8-bit, rounded to nearest, half-way up.
@@ -38,16 +38,18 @@ HWY_INLINE void StoreCoverage(D d, V a, std::uint8_t* HWY_RESTRICT out) {
     const hn::Rebind<std::uint8_t, D> du8;
     const double bias = sizeof(hn::TFromD<D>) == 8 ? kRoundUp : kRoundUpFloat;  // see kRoundUp
     const auto scaled = hn::MulAdd(a, hn::Set(d, 255.0), hn::Set(d, bias));
-    if constexpr (sizeof(hn::TFromD<D>) == 8) hn::StoreU(hn::DemoteTo(du8, hn::DemoteTo(di, scaled)), du8, out);
-    else hn::StoreU(hn::DemoteTo(du8, hn::ConvertTo(di, scaled)), du8, out);
+    if constexpr (sizeof(hn::TFromD<D>) == 8)
+        hn::StoreU(hn::DemoteTo(du8, hn::DemoteTo(di, scaled)), du8, out);
+    else
+        hn::StoreU(hn::DemoteTo(du8, hn::ConvertTo(di, scaled)), du8, out);
 }
 
 // Scans acc[i, to) in whole vectors of tag d: `scan` makes a vector's inclusive prefix sum and
 // `last` broadcasts its last lane. The carry chain is one add per vector; the in-register scans of
 // successive vectors are independent of it. Clears what it reads; returns where it stopped.
 template <class D, class Scan, class Last>
-HWY_INLINE int ScanVectors(D d, double* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT cov, int i, int to,
-                           double& sum, FillRule rule, Scan scan, Last last) {
+HWY_INLINE int ScanVectors(D d, double* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT cov, int i, int to, double& sum,
+                           FillRule rule, Scan scan, Last last) {
     const int n = static_cast<int>(hn::Lanes(d));
     if (to - i < n) return i;
     const auto zero = hn::Zero(d);
@@ -64,7 +66,7 @@ HWY_INLINE int ScanVectors(D d, double* HWY_RESTRICT acc, std::uint8_t* HWY_REST
 }
 
 HWY_INLINE double ScanRange(double* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT cov, int from, int to, double start,
-                             FillRule rule) {
+                            FillRule rule) {
     double sum = start;
     int i = from;
     // Double precision keeps rows crossing hundreds of stacked edges exact to far below 1/255.
@@ -76,7 +78,7 @@ HWY_INLINE double ScanRange(double* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT
         i = ScanVectors(
             d4, acc, cov, i, to, sum, rule,
             [d4](auto v) {
-                v = hn::Add(v, hn::ShiftLeftLanes<1>(d4, v));                                  // a, a+b, c, c+d
+                v = hn::Add(v, hn::ShiftLeftLanes<1>(d4, v));                                    // a, a+b, c, c+d
                 return hn::Add(v, hn::ConcatLowerLower(d4, hn::Broadcast<1>(v), hn::Zero(d4)));  // + 0, 0, a+b, a+b
             },
             [d4](auto v) { return hn::Broadcast<1>(hn::ConcatUpperUpper(d4, v, v)); });
@@ -105,8 +107,8 @@ struct ScanSpan {
     int from, end;
 };
 
-HWY_INLINE ScanSpan ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::uint64_t* bm, int words, int w, int stride,
-                        FillRule rule) {
+HWY_INLINE ScanSpan ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::uint64_t* bm, int words, int w,
+                                   int stride, FillRule rule) {
     const int nb = words * 64;
     auto bit = [&](int b) { return b < nb && ((bm[b >> 6] >> (b & 63)) & 1) != 0; };
     auto next_set = [&](int b) {
@@ -166,7 +168,8 @@ int RowVectorLanesImpl() {
 void RowVectorAccumulateImpl(const RowPiece* HWY_RESTRICT pieces, std::size_t n, float* HWY_RESTRICT acc, int stride) {
     const hn::ScalableTag<float> d;
     for (std::size_t k = 0; k < n; ++k)
-        AddRowPiece(d, pieces[k], acc + static_cast<std::size_t>(pieces[k].r) * static_cast<std::size_t>(stride), stride);
+        AddRowPiece(d, pieces[k], acc + static_cast<std::size_t>(pieces[k].r) * static_cast<std::size_t>(stride),
+                    stride);
 }
 
 void RowVectorEmitImpl(const RowVectorRows& s, SpanSink& sink) {
@@ -205,7 +208,9 @@ int row_vector_lanes() { return CASTELJAU_SIMD_DISPATCH(RowVectorLanesImpl)(); }
 void row_vector_accumulate(const RowPiece* pieces, std::size_t n, float* acc, int stride) {
     CASTELJAU_SIMD_DISPATCH(RowVectorAccumulateImpl)(pieces, n, acc, stride);
 }
-void row_vector_emit(const RowVectorRows& rows, SpanSink& sink) { CASTELJAU_SIMD_DISPATCH(RowVectorEmitImpl)(rows, sink); }
+void row_vector_emit(const RowVectorRows& rows, SpanSink& sink) {
+    CASTELJAU_SIMD_DISPATCH(RowVectorEmitImpl)(rows, sink);
+}
 
 }  // namespace casteljau::raster
 #endif

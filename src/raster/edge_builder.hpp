@@ -32,10 +32,14 @@ void clip_edge(double W, double H, Point p, Point q, Out& out) {
     if (std::max(p.y, q.y) <= 0 || std::min(p.y, q.y) >= H) return;
     auto at_y = [&](double y) { return p.x + (q.x - p.x) * ((y - p.y) / (q.y - p.y)); };
     Point a = p, b = q;
-    if (a.y < 0) a = {at_y(0), 0};
-    else if (a.y > H) a = {at_y(H), H};
-    if (b.y < 0) b = {at_y(0), 0};
-    else if (b.y > H) b = {at_y(H), H};
+    if (a.y < 0)
+        a = {at_y(0), 0};
+    else if (a.y > H)
+        a = {at_y(H), H};
+    if (b.y < 0)
+        b = {at_y(0), 0};
+    else if (b.y > H)
+        b = {at_y(H), H};
     if (a.y == b.y) return;
     if (std::min(a.x, b.x) >= W) return;
     if (std::max(a.x, b.x) <= 0) {
@@ -79,8 +83,10 @@ struct EdgeSink {
     }
     [[gnu::always_inline]] inline void point(Point p) {
         check(p);
-        if constexpr (kClip) add_clipped(cur, p);
-        else push(cur.x, cur.y, p.x, p.y);
+        if constexpr (kClip)
+            add_clipped(cur, p);
+        else
+            push(cur.x, cur.y, p.x, p.y);
         cur = p;
     }
     void mark_closed() {}
@@ -100,7 +106,8 @@ struct EdgeSink {
     [[gnu::always_inline]] static inline void check(Point p) {
         constexpr double kFar = 4 * limits::kMaxCoordinate;
         if (!(std::fabs(p.x) <= kFar && std::fabs(p.y) <= kFar)) [[unlikely]]
-            throw Error(ErrorKind::InvalidData, "flattening produced a non-finite or out-of-range point (a conic weight out of range?)");
+            throw Error(ErrorKind::InvalidData,
+                        "flattening produced a non-finite or out-of-range point (a conic weight out of range?)");
     }
 };
 

@@ -177,8 +177,8 @@ void Engine::contour_end() {
             last.merged_away = true;
             // Entering the cell again made it a candidate; when these two parts are its only
             // visits, it is a one-visit cell after all (classify() still checks that run).
-            if (!cands_.empty() && cands_.back() == last.cell && last.next == static_cast<std::int32_t>(contour_visit_) &&
-                first.next < 0) {
+            if (!cands_.empty() && cands_.back() == last.cell &&
+                last.next == static_cast<std::int32_t>(contour_visit_) && first.next < 0) {
                 cand_[last.cell] = 0;
                 cands_.pop_back();
             }
@@ -452,8 +452,18 @@ void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
     stats.exact_work += scratch_.work;
     stats.dense_cells += scratch_.dense_cells;
     // Then every row in one call (one dispatch per shape, not per row).
-    const ScanRows rows{acc_.data(), cov_.data(), blocks_.data(), static_cast<int>(words_), w_, h_, static_cast<int>(stride_),
-                        rule, patches_.data(), patches_.size(), ox, oy};
+    const ScanRows rows{acc_.data(),
+                        cov_.data(),
+                        blocks_.data(),
+                        static_cast<int>(words_),
+                        w_,
+                        h_,
+                        static_cast<int>(stride_),
+                        rule,
+                        patches_.data(),
+                        patches_.size(),
+                        ox,
+                        oy};
     scan_rows(rows, sink);
     dirty_ = false;
 }

@@ -17,7 +17,8 @@ template <class T>
 class AppendList {
 public:
     [[gnu::always_inline]] void push(const T& v) {
-        if (n_ == buf_.size()) [[unlikely]] grow();
+        if (n_ == buf_.size()) [[unlikely]]
+            grow();
         buf_[n_++] = v;
     }
     void clear() { n_ = 0; }
@@ -62,12 +63,12 @@ public:
 
 private:
     struct Visit {
-        std::uint32_t cell;     // row * stride + col
-        std::int32_t next;      // the cell's previous visit (-1: none)
-        std::uint32_t s0, s1;   // first and last edge of the visit (indices into segs_)
-        std::int32_t pre;       // merged visit holding the part of this run before the contour start
-        std::uint8_t dirs;      // +x, -x, +y, -y seen along the run
-        bool merged_away;       // this record is the first part of another visit (`pre` of it)
+        std::uint32_t cell;    // row * stride + col
+        std::int32_t next;     // the cell's previous visit (-1: none)
+        std::uint32_t s0, s1;  // first and last edge of the visit (indices into segs_)
+        std::int32_t pre;      // merged visit holding the part of this run before the contour start
+        std::uint8_t dirs;     // +x, -x, +y, -y seen along the run
+        bool merged_away;      // this record is the first part of another visit (`pre` of it)
     };
 
     template <bool kTrack, bool kVec>
@@ -98,12 +99,12 @@ private:
     // measured 5 % slower at 12 px, equal at 48 and 96 px).
     bool vec_ = false;
     static constexpr int kRowVectorMax = 8;
-    int vstride_ = 0;                 // floats per row of facc_ (w rounded up to whole vectors)
-    std::vector<float> facc_;         // per pixel: the integral of the winding number, all zero between shapes
+    int vstride_ = 0;          // floats per row of facc_ (w rounded up to whole vectors)
+    std::vector<float> facc_;  // per pixel: the integral of the winding number, all zero between shapes
     std::vector<RowPiece> pieces_;
     std::vector<int> row_from_;       // per row: first column a piece touches (INT_MAX: none)
-    bool dirty_ = false;            // buffers may hold data from an interrupted shape
-    std::vector<double> acc_;       // cover/area, (w + 2) x h, all zero between shapes
+    bool dirty_ = false;              // buffers may hold data from an interrupted shape
+    std::vector<double> acc_;         // cover/area, (w + 2) x h, all zero between shapes
     std::vector<std::int32_t> head_;  // per cell: last visit + 1 (0: none), all zero between shapes
     std::vector<std::uint8_t> cand_;  // per cell: listed in cands_ (1) or not, all zero between shapes
     // Touched cells, per row, in blocks of kBlock cells: bit b of the row's words is block b. The
@@ -112,11 +113,11 @@ private:
     std::vector<std::uint64_t> blocks_;
     std::size_t words_ = 1;  // words per row
     inline void mark(int r, int c0, int c1);
-    AppendList<Edge> segs_;          // the edges (kept when tracking: exact cells need them)
-    std::size_t count_ = 0;          // edges pushed
-    std::size_t max_edges_ = 0;      // Limits::flattened_segments, read by begin()
+    AppendList<Edge> segs_;      // the edges (kept when tracking: exact cells need them)
+    std::size_t count_ = 0;      // edges pushed
+    std::size_t max_edges_ = 0;  // Limits::flattened_segments, read by begin()
     AppendList<Visit> visits_;
-    std::vector<std::uint32_t> cands_;     // cells with two or more visits, or a non-simple one (each once)
+    std::vector<std::uint32_t> cands_;  // cells with two or more visits, or a non-simple one (each once)
     void add_cand(std::uint32_t cell) {
         if (!cand_[cell]) {
             cand_[cell] = 1;
@@ -207,8 +208,12 @@ template <bool kTrack, bool kVec>
         add_cell(acc, c0, dy, xl, xr);
         mark(r, c0, c0 + 1);
         if constexpr (kTrack) {
-            if (xl == xr && xl == c0) cur_cell_ = kNoCell;  // on the cell's left side: no visit
-            else touch(static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_) + static_cast<std::uint32_t>(c0), sid, bits);
+            if (xl == xr && xl == c0)
+                cur_cell_ = kNoCell;  // on the cell's left side: no visit
+            else
+                touch(
+                    static_cast<std::uint32_t>(static_cast<std::size_t>(r) * stride_) + static_cast<std::uint32_t>(c0),
+                    sid, bits);
         }
         return;
     }
@@ -246,9 +251,12 @@ inline void Engine::push(double x0, double y0, double x1, double y1) {
     if (x0 == x1 && y0 == y1) return;
     if (++count_ > max_edges_)
         throw Error(ErrorKind::Limit, "path too complex: more than " + std::to_string(max_edges_) + " edges");
-    if (track_) walk<true, false>(x0, y0, x1, y1);
-    else if (vec_) walk<false, true>(x0, y0, x1, y1);
-    else walk<false, false>(x0, y0, x1, y1);
+    if (track_)
+        walk<true, false>(x0, y0, x1, y1);
+    else if (vec_)
+        walk<false, true>(x0, y0, x1, y1);
+    else
+        walk<false, false>(x0, y0, x1, y1);
 }
 
 template <bool kTrack, bool kVec>

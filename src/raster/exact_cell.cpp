@@ -43,7 +43,6 @@ bool segments_meet(double ax, double ay, double bx, double by, double cx, double
            (d3 == 0 && on(ax, ay, bx, by, cx, cy)) || (d4 == 0 && on(ax, ay, bx, by, dx, dy));
 }
 
-
 bool cell_portion(const Edge& e, double cx, double ry, double& ax, double& ay, double& bx, double& by) {
     // Liang-Barsky clip of the segment to the closed square, keeping the edge's direction.
     double t0 = 0, t1 = 1;
@@ -64,8 +63,7 @@ bool cell_portion(const Edge& e, double cx, double ry, double& ax, double& ay, d
         return true;
     };
     const double qx0 = e.x0 - cx, qx1 = cx + 1 - e.x0, qy0 = e.y0 - ry, qy1 = ry + 1 - e.y0;
-    if (!clip(-dx, qx0, -ix) || !clip(dx, qx1, ix) || !clip(-dy, qy0, -iy) || !clip(dy, qy1, iy))
-        return false;
+    if (!clip(-dx, qx0, -ix) || !clip(dx, qx1, ix) || !clip(-dy, qy0, -iy) || !clip(dy, qy1, iy)) return false;
     ax = e.x0 + dx * t0;
     ay = e.y0 + dy * t0;
     bx = e.x0 + dx * t1;
@@ -80,8 +78,8 @@ inline double fill_value(long w, FillRule rule) {
 }
 
 // Reference points inside the unit cell, tried in order until one is in general position.
-constexpr double kRef[4][2] = {{0.5012345, 0.4987654}, {0.3141593, 0.7182818}, {0.6931472, 0.2718282},
-                               {0.1414214, 0.8660254}};
+constexpr double kRef[4][2] = {
+    {0.5012345, 0.4987654}, {0.3141593, 0.7182818}, {0.6931472, 0.2718282}, {0.1414214, 0.8660254}};
 
 // For pathological pixels the slab decomposition (up to cubic in the pieces) gives way to
 // horizontal lines through the cell, each integrated exactly in x (the dense method): the result is
@@ -123,8 +121,10 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         sc.breaks.push_back(ay);
         sc.breaks.push_back(by);
         if (ay == by) continue;  // horizontal: a slab boundary, no slab of its own
-        if (ay < by) sc.inside.push_back({ay, by, ax, bx, 1});
-        else sc.inside.push_back({by, ay, bx, ax, -1});
+        if (ay < by)
+            sc.inside.push_back({ay, by, ax, bx, 1});
+        else
+            sc.inside.push_back({by, ay, bx, ax, -1});
     }
     const std::size_t n = sc.inside.size();
     sc.work += static_cast<double>(ids.size());  // clipping every edge to the cell
@@ -135,7 +135,10 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         ryy = ry + ref[1];
         bool ok = true;
         for (const ExactScratch::Piece& p : pieces)
-            if (orient(p.ax, p.ay, p.bx, p.by, rx, ryy) == 0) { ok = false; break; }
+            if (orient(p.ax, p.ay, p.bx, p.by, rx, ryy) == 0) {
+                ok = false;
+                break;
+            }
         if (ok) break;
     }
     auto winding_offset = [&](double px, double py) {
@@ -181,8 +184,10 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         std::sort(sc.breaks.begin(), sc.breaks.end());
         sc.breaks.erase(std::unique(sc.breaks.begin(), sc.breaks.end()), sc.breaks.end());
         const double slab_work = 2 * static_cast<double>(sc.breaks.size()) * nd;
-        if (slab_work > 2 * kMaxSlabWork || slab_work > left()) dense = true;
-        else sc.work += slab_work;
+        if (slab_work > 2 * kMaxSlabWork || slab_work > left())
+            dense = true;
+        else
+            sc.work += slab_work;
     }
     int lines = kDenseRows;
     if (dense) {
@@ -259,7 +264,8 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
     for (const ExactScratch::Piece& p : pieces)
         if ((p.ax < rx) != (p.bx < rx))
             vc.push_back({p.ay + (rx - p.ax) * (p.by - p.ay) / (p.bx - p.ax), p.bx < p.ax ? 1 : -1});
-    std::sort(vc.begin(), vc.end(), [](const ExactScratch::VCross& u, const ExactScratch::VCross& v) { return u.y < v.y; });
+    std::sort(vc.begin(), vc.end(),
+              [](const ExactScratch::VCross& u, const ExactScratch::VCross& v) { return u.y < v.y; });
     int above_r = 0;
     for (const ExactScratch::VCross& c : vc)
         if (c.y < ryy) above_r += c.d;

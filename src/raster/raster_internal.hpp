@@ -30,20 +30,37 @@ struct Edge {
 bool cell_portion(const Edge& e, double cx, double ry, double& ax, double& ay, double& bx, double& by);
 
 struct ExactScratch {
-    struct Piece { double ax, ay, bx, by; };  // in the edge's direction
+    struct Piece {
+        double ax, ay, bx, by;
+    };  // in the edge's direction
     std::vector<Piece> pieces;
     std::vector<std::uint32_t> ids;
     std::vector<double> breaks;
-    struct Part { double ya, yb, xa, xb; int dir; };
+    struct Part {
+        double ya, yb, xa, xb;
+        int dir;
+    };
     std::vector<Part> inside;
-    struct Cross { double x0, x1, xm; int dir; };
+    struct Cross {
+        double x0, x1, xm;
+        int dir;
+    };
     std::vector<Cross> active;
-    struct Region { int b; double area; };
+    struct Region {
+        int b;
+        double area;
+    };
     std::vector<Region> regions;
     std::vector<std::uint32_t> order, live;  // the pieces by top end, and the active ones
-    struct Ranked { Cross c; std::uint32_t id; };
-    std::vector<Ranked> ranked;               // active pieces re-sorted whole (see sort_active)
-    struct VCross { double y; int d; };       // a piece crossing the vertical through r
+    struct Ranked {
+        Cross c;
+        std::uint32_t id;
+    };
+    std::vector<Ranked> ranked;  // active pieces re-sorted whole (see sort_active)
+    struct VCross {
+        double y;
+        int d;
+    };  // a piece crossing the vertical through r
     std::vector<VCross> vcross;
     // The work the exact cells of the current fill may spend, in piece visits (see
     // exact_cell.cpp), and what they spent; the engine sets both before each fill's exact cells.
@@ -170,4 +187,3 @@ struct RowVectorRows {
 void row_vector_emit(const RowVectorRows& rows, SpanSink& sink);
 
 }  // namespace casteljau::raster
-

@@ -78,8 +78,8 @@ private:
 
 void check_clip(const IRect& clip) {
     if (clip.width() > limits::kMaxCanvasDimension || clip.height() > limits::kMaxCanvasDimension)
-        throw Error(ErrorKind::Limit, "raster target exceeds " + std::to_string(limits::kMaxCanvasDimension) +
-                                          " pixels per side");
+        throw Error(ErrorKind::Limit,
+                    "raster target exceeds " + std::to_string(limits::kMaxCanvasDimension) + " pixels per side");
 }
 
 // Transformed control-point bounds; throws for non-finite input (flatten's checks).
@@ -100,10 +100,10 @@ void check_coordinate_range(const Rect& b) {
 }  // namespace
 
 struct Rasterizer::Impl {
-    raster::Engine engine;                        // the one engine: cell walk, overlap check, scan
-    std::vector<Edge> edges;                      // banded fills: the clipped edges ...
-    std::vector<std::uint32_t> contour;           // ... their contours ...
-    std::vector<std::vector<std::uint32_t>> band; // ... and the edges of each band, in contour order
+    raster::Engine engine;                         // the one engine: cell walk, overlap check, scan
+    std::vector<Edge> edges;                       // banded fills: the clipped edges ...
+    std::vector<std::uint32_t> contour;            // ... their contours ...
+    std::vector<std::vector<std::uint32_t>> band;  // ... and the edges of each band, in contour order
 
     // Releases the edge lists and the engine's records when a fill made them larger than an
     // ordinary one needs (before waiting in the spare pool).
@@ -117,8 +117,7 @@ struct Rasterizer::Impl {
         engine.trim(kMaxSpareEdges);
     }
     // Fills the box of bw x bh cells at (ox, oy) band by band from `edges`.
-    void run_bands(const FillOptions& opts, int ox, int oy, int bw, int bh, SpanSink& sink,
-                   RasterStats& stats);
+    void run_bands(const FillOptions& opts, int ox, int oy, int bw, int bh, SpanSink& sink, RasterStats& stats);
 };
 
 namespace {
@@ -172,7 +171,8 @@ Topology decide_topology(const Path& path, const Affine& m, double tolerance, do
     return s > 0 ? classify_topology(path, tolerance / s) : classify_topology(path);
 }
 
-void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& options, const IRect& clip, SpanSink& sink) {
+void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& options, const IRect& clip,
+                      SpanSink& sink) {
     stats_ = {};
     check_clip(clip);
     if (clip.empty() || path.empty()) return;
@@ -231,11 +231,12 @@ void Rasterizer::fill(const Polyline& poly, const FillOptions& opts, const IRect
 }
 
 void Rasterizer::Impl::run_bands(const FillOptions& opts, int ox, int oy, int bw, int bh, SpanSink& sink,
-                                  RasterStats& stats) {
+                                 RasterStats& stats) {
     stats.segments = edges.size();
     if (edges.empty()) return;
     const std::size_t stride = static_cast<std::size_t>(bw) + 2;
-    const int rows = static_cast<int>(std::clamp<std::size_t>(kMaxStripCells / stride, 1, static_cast<std::size_t>(bh)));
+    const int rows =
+        static_cast<int>(std::clamp<std::size_t>(kMaxStripCells / stride, 1, static_cast<std::size_t>(bh)));
     const std::size_t nbands = static_cast<std::size_t>((bh + rows - 1) / rows);
     if (band.size() < nbands) band.resize(nbands);
     for (std::size_t k = 0; k < nbands; ++k) band[k].clear();
@@ -276,8 +277,10 @@ Mask Rasterizer::fill_mask(const Path& path, const Affine& m, const FillOptions&
     const Rect b = transformed_bounds(path, m, opts.tolerance);
     if (path.empty() || b.x0 > b.x1) return {};
     const double lim = limits::kMaxCanvasDimension;
-    IRect r{static_cast<int>(std::floor(std::clamp(b.x0, -lim, lim))), static_cast<int>(std::floor(std::clamp(b.y0, -lim, lim))),
-            static_cast<int>(std::ceil(std::clamp(b.x1, -lim, lim))), static_cast<int>(std::ceil(std::clamp(b.y1, -lim, lim)))};
+    IRect r{static_cast<int>(std::floor(std::clamp(b.x0, -lim, lim))),
+            static_cast<int>(std::floor(std::clamp(b.y0, -lim, lim))),
+            static_cast<int>(std::ceil(std::clamp(b.x1, -lim, lim))),
+            static_cast<int>(std::ceil(std::clamp(b.y1, -lim, lim)))};
     if (r.x1 == r.x0) ++r.x1;
     if (r.y1 == r.y0) ++r.y1;
     r.x1 = std::min(r.x1, r.x0 + limits::kMaxCanvasDimension);

@@ -30,7 +30,7 @@ HWY_INLINE void AddRowPiece(D d, const RowPiece& p, float* HWY_RESTRICT row, int
     const auto iota = hn::Iota(d, 0.0f);
     const auto xl = hn::Set(d, p.xl), xr = hn::Set(d, p.xr), k = hn::Set(d, p.k);
     const int first = static_cast<int>(p.xl) & -N;  // N is a power of two
-    if (p.xl == p.xr) {  // vertical: k * clamp(c + 1 - x, 0, 1)
+    if (p.xl == p.xr) {                             // vertical: k * clamp(c + 1 - x, 0, 1)
         for (int i = first; i < stride; i += N) {
             const auto cr = hn::Add(iota, hn::Set(d, static_cast<float>(i + 1)));
             const auto part = hn::Min(hn::Max(hn::Sub(cr, xl), zero), one);

@@ -41,7 +41,7 @@ const char* target_name(std::int64_t target);
 #define CASTELJAU_SIMD_EXPORT(FUNC) HWY_EXPORT(FUNC)
 #define CASTELJAU_SIMD_DISPATCH(FUNC) HWY_STATIC_DISPATCH(FUNC)
 #else
-#define CASTELJAU_SIMD_EXPORT(FUNC)                                                                   \
+#define CASTELJAU_SIMD_EXPORT(FUNC)                                                                             \
     static decltype(&HWY_STATIC_DISPATCH(FUNC)) const HWY_DISPATCH_TABLE(FUNC)[HWY_MAX_DYNAMIC_TARGETS + 2] = { \
         nullptr, HWY_CHOOSE_TARGET_LIST(FUNC), HWY_CHOOSE_FALLBACK(FUNC)}
 #define CASTELJAU_SIMD_DISPATCH(FUNC) (*(HWY_DISPATCH_TABLE(FUNC)[::casteljau::simd::chosen().GetIndex()]))

@@ -62,11 +62,11 @@ namespace {
 
 struct Seg {
     Point p[4];
-    int n = 2;          // control points: 2 line, 3 quadratic or conic, 4 cubic
+    int n = 2;  // control points: 2 line, 3 quadratic or conic, 4 cubic
     bool conic = false;
-    double w = 1;       // conic weight
+    double w = 1;  // conic weight
     int contour = 0;
-    int index = 0;      // position in its contour
+    int index = 0;  // position in its contour
     Rect box;
     // For the similarity verdict (classify_topology with a tolerance): whether this is a segment
     // of the path itself (not a half made by add_contour), its depth in the flattener's halving
@@ -156,10 +156,10 @@ private:
     std::vector<std::uint32_t> cstart_, members_, fill_;
     std::vector<Rect> boxes_;
     std::vector<int> orient_;
-    double delta_ = 0;                     // distance margin (path units)
-    double lambda_ = 0;                    // largest tolerance in path units (0: any, whole hulls only)
-    std::vector<char> relaxed_;            // per contour: a pair inside it was decided by chords
-    long budget_ = 0;                      // hull tests left
+    double delta_ = 0;           // distance margin (path units)
+    double lambda_ = 0;          // largest tolerance in path units (0: any, whole hulls only)
+    std::vector<char> relaxed_;  // per contour: a pair inside it was decided by chords
+    long budget_ = 0;            // hull tests left
 
     void add_contour(std::vector<Seg>& c);
     bool boxes_apart(const Rect& a, const Rect& b) const {
@@ -507,9 +507,12 @@ bool Classifier::orientation(std::size_t c, int& o, double slack) const {
         hi += a;
     }
     const double margin = delta_ * scale * 64 + slack;
-    if (lo > margin) o = 1;
-    else if (hi < -margin) o = -1;
-    else return false;
+    if (lo > margin)
+        o = 1;
+    else if (hi < -margin)
+        o = -1;
+    else
+        return false;
     return true;
 }
 
@@ -545,8 +548,8 @@ Topology Classifier::run(const Path& path, double lambda) {
     if (!path.is_finite()) return Topology::Overlapping;
     const Rect cb = path.control_bounds();
     if (!(cb.x1 >= cb.x0)) return Topology::Simple;  // no points
-    const double extent = std::max({std::abs(cb.x0), std::abs(cb.x1), std::abs(cb.y0), std::abs(cb.y1),
-                                    cb.width(), cb.height()});
+    const double extent =
+        std::max({std::abs(cb.x0), std::abs(cb.x1), std::abs(cb.y0), std::abs(cb.y1), cb.width(), cb.height()});
     if (extent == 0) return Topology::Simple;
     // Beyond 2^500 products of coordinates (and the grid's cell indices) could overflow, and below
     // 2^-500 the margin could underflow to nothing: no proof is attempted there (the per-cell
@@ -639,7 +642,8 @@ Topology Classifier::run(const Path& path, double lambda) {
     constexpr int kDepth = 0;
     const std::size_t n = segs_.size();
     const int grid = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(n))), 1, 1024);
-    const double gx = grid / std::max(cb.width() + 2 * delta_, delta_), gy = grid / std::max(cb.height() + 2 * delta_, delta_);
+    const double gx = grid / std::max(cb.width() + 2 * delta_, delta_),
+                 gy = grid / std::max(cb.height() + 2 * delta_, delta_);
     auto cell_x = [&](double x) { return std::clamp(static_cast<int>((x - cb.x0 + delta_) * gx), 0, grid - 1); };
     auto cell_y = [&](double y) { return std::clamp(static_cast<int>((y - cb.y0 + delta_) * gy), 0, grid - 1); };
     std::vector<Cells>& span = span_;
@@ -661,7 +665,8 @@ Topology Classifier::run(const Path& path, double lambda) {
         fill.assign(cstart.begin(), cstart.end() - 1);
         for (std::uint32_t i = 0; i < n; ++i)
             for (int y = span[i].y0; y <= span[i].y1; ++y)
-                for (int x = span[i].x0; x <= span[i].x1; ++x) members[fill[static_cast<std::size_t>(y) * grid + x]++] = i;
+                for (int x = span[i].x0; x <= span[i].x1; ++x)
+                    members[fill[static_cast<std::size_t>(y) * grid + x]++] = i;
     }
     relaxed_.assign(ncontours, 0);
     long box_tests = 0;
@@ -677,8 +682,8 @@ Topology Classifier::run(const Path& path, double lambda) {
                     const Seg& t = segs_[j];
                     if (boxes_apart(s.box, t.box)) continue;
                     bool ok;
-                    const std::size_t count =
-                        contour_at_[static_cast<std::size_t>(s.contour) + 1] - contour_at_[static_cast<std::size_t>(s.contour)];
+                    const std::size_t count = contour_at_[static_cast<std::size_t>(s.contour) + 1] -
+                                              contour_at_[static_cast<std::size_t>(s.contour)];
                     const int last = static_cast<int>(count) - 1;
                     if (s.contour == t.contour && (t.index == s.index + 1 || (s.index == last && t.index == 0)))
                         ok = meet_only_at_end(s, t, kDepth);

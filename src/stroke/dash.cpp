@@ -147,8 +147,8 @@ void dash_polyline(const Polyline& in, std::span<const double> pattern, double o
     const Limits lim = current_limits();
     const std::size_t max_dashes = lim.dashes;
     if (!(periods * static_cast<double>(pattern.size()) <= 2.0 * static_cast<double>(max_dashes)))
-        throw Error(ErrorKind::Limit, "stroke: dash pattern too fine for the path (more than " +
-                                          std::to_string(max_dashes) + " dashes)");
+        throw Error(ErrorKind::Limit,
+                    "stroke: dash pattern too fine for the path (more than " + std::to_string(max_dashes) + " dashes)");
 
     Dasher d{pattern, out, dirs, {}, {}, 0, max_dashes, lim.flattened_segments};
     start = 0;

@@ -199,7 +199,7 @@ private:
         const double d = h_ * (1 - 1e-9);
         for (std::size_t i = 0; i < n && !poly.empty(); ++i) {
             const Vec in = perp(dir_[i]) * static_cast<double>(turn);  // towards the inside
-            const double c = in.dot(q_[i]) + d;                       // keep in . x >= c
+            const double c = in.dot(q_[i]) + d;                        // keep in . x >= c
             next.clear();
             for (std::size_t k = 0; k < poly.size(); ++k) {
                 const Point a = poly[k], b = poly[(k + 1) % poly.size()];
@@ -277,8 +277,7 @@ private:
     void emit(const std::vector<Point>& pts) {
         if (pts.size() < 2) return;
         total_ += pts.size() + 1;
-        if (total_ > max_points_)
-            throw Error(ErrorKind::Limit, "stroke: outline exceeds the path size limit");
+        if (total_ > max_points_) throw Error(ErrorKind::Limit, "stroke: outline exceeds the path size limit");
         for (const Point& p : pts)
             if (!p.is_finite()) throw Error(ErrorKind::Limit, "stroke: outline coordinates overflow");
         out_.move_to(pts[0]);
@@ -390,19 +389,28 @@ Path dash(const Path& path, std::span<const double> dashes, double offset, const
 }
 
 bool parse_line_cap(std::string_view name, LineCap& out) {
-    if (name == "butt") out = LineCap::Butt;
-    else if (name == "round") out = LineCap::Round;
-    else if (name == "square") out = LineCap::Square;
-    else return false;
+    if (name == "butt")
+        out = LineCap::Butt;
+    else if (name == "round")
+        out = LineCap::Round;
+    else if (name == "square")
+        out = LineCap::Square;
+    else
+        return false;
     return true;
 }
 
 bool parse_line_join(std::string_view name, LineJoin& out) {
-    if (name == "miter") out = LineJoin::Miter;
-    else if (name == "miter-clip") out = LineJoin::MiterClip;
-    else if (name == "round") out = LineJoin::Round;
-    else if (name == "bevel") out = LineJoin::Bevel;
-    else return false;
+    if (name == "miter")
+        out = LineJoin::Miter;
+    else if (name == "miter-clip")
+        out = LineJoin::MiterClip;
+    else if (name == "round")
+        out = LineJoin::Round;
+    else if (name == "bevel")
+        out = LineJoin::Bevel;
+    else
+        return false;
     return true;
 }
 

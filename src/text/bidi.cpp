@@ -20,8 +20,8 @@ namespace {
 enum class BidiClass : std::uint8_t { L, R, Number, Mark, Neutral };
 
 BidiClass bidi_class(char32_t c) {
-    if (c == 0x200e) return BidiClass::L;                  // LEFT-TO-RIGHT MARK
-    if (c == 0x200f || c == 0x061c) return BidiClass::R;   // RIGHT-TO-LEFT MARK, ARABIC LETTER MARK
+    if (c == 0x200e) return BidiClass::L;                 // LEFT-TO-RIGHT MARK
+    if (c == 0x200f || c == 0x061c) return BidiClass::R;  // RIGHT-TO-LEFT MARK, ARABIC LETTER MARK
     hb_unicode_funcs_t* uf = hb_unicode_funcs_get_default();
     switch (hb_unicode_general_category(uf, c)) {
         case HB_UNICODE_GENERAL_CATEGORY_UPPERCASE_LETTER:
@@ -33,14 +33,11 @@ BidiClass bidi_class(char32_t c) {
         case HB_UNICODE_GENERAL_CATEGORY_LETTER_NUMBER:
         case HB_UNICODE_GENERAL_CATEGORY_PRIVATE_USE:
             return hb_script_get_horizontal_direction(hb_unicode_script(uf, c)) == HB_DIRECTION_RTL ? BidiClass::R
-                                                                                                   : BidiClass::L;
-        case HB_UNICODE_GENERAL_CATEGORY_DECIMAL_NUMBER:
-            return BidiClass::Number;
+                                                                                                    : BidiClass::L;
+        case HB_UNICODE_GENERAL_CATEGORY_DECIMAL_NUMBER: return BidiClass::Number;
         case HB_UNICODE_GENERAL_CATEGORY_NON_SPACING_MARK:
-        case HB_UNICODE_GENERAL_CATEGORY_ENCLOSING_MARK:
-            return BidiClass::Mark;
-        default:
-            return BidiClass::Neutral;
+        case HB_UNICODE_GENERAL_CATEGORY_ENCLOSING_MARK: return BidiClass::Mark;
+        default: return BidiClass::Neutral;
     }
 }
 
@@ -57,7 +54,10 @@ int resolve_bidi_levels(std::u32string_view para, TextDirection direction, std::
     } else if (direction == TextDirection::Auto) {
         for (BidiClass c : t) {  // P2, P3: the first strong character
             if (c == BidiClass::L) break;
-            if (c == BidiClass::R) { p = 1; break; }
+            if (c == BidiClass::R) {
+                p = 1;
+                break;
+            }
         }
     }
     const BidiClass sos = p ? BidiClass::R : BidiClass::L;
@@ -68,14 +68,19 @@ int resolve_bidi_levels(std::u32string_view para, TextDirection direction, std::
     // W7: a number after L (or at the start of an LTR paragraph) becomes L.
     BidiClass last_strong = sos;
     for (std::size_t i = 0; i < n; ++i) {
-        if (t[i] == BidiClass::L || t[i] == BidiClass::R) last_strong = t[i];
-        else if (t[i] == BidiClass::Number && last_strong == BidiClass::L) t[i] = BidiClass::L;
+        if (t[i] == BidiClass::L || t[i] == BidiClass::R)
+            last_strong = t[i];
+        else if (t[i] == BidiClass::Number && last_strong == BidiClass::L)
+            t[i] = BidiClass::L;
     }
     // N1, N2: neutrals between two like directions take it (numbers count as R), others the
     // paragraph's direction.
     auto dir_of = [](BidiClass c) { return c == BidiClass::L ? BidiClass::L : BidiClass::R; };
     for (std::size_t i = 0; i < n;) {
-        if (t[i] != BidiClass::Neutral) { ++i; continue; }
+        if (t[i] != BidiClass::Neutral) {
+            ++i;
+            continue;
+        }
         std::size_t j = i;
         while (j < n && t[j] == BidiClass::Neutral) ++j;
         const BidiClass before = i ? dir_of(t[i - 1]) : sos;
@@ -111,10 +116,14 @@ void bidi_visual_order(std::span<const std::uint8_t> levels, std::vector<std::si
     }
     for (int lev = hi; lev >= lo_odd; --lev) {
         for (std::size_t i = 0; i < n;) {
-            if (levels[order[i]] < lev) { ++i; continue; }
+            if (levels[order[i]] < lev) {
+                ++i;
+                continue;
+            }
             std::size_t j = i;
             while (j < n && levels[order[j]] >= lev) ++j;
-            std::reverse(order.begin() + static_cast<std::ptrdiff_t>(i), order.begin() + static_cast<std::ptrdiff_t>(j));
+            std::reverse(order.begin() + static_cast<std::ptrdiff_t>(i),
+                         order.begin() + static_cast<std::ptrdiff_t>(j));
             i = j;
         }
     }

@@ -148,7 +148,8 @@ void draw_scaled_bitmap(Canvas& canvas, const StrikeBitmap& bm, double k, double
     // Horizontal pass into floats (one row per strike row), then vertical into the pixmap.
     std::vector<float> rows(static_cast<std::size_t>(bm.height) * static_cast<std::size_t>(w) * 4, 0.0f);
     for (int sy = 0; sy < bm.height; ++sy) {
-        const std::uint8_t* src = bm.rgba.data() + static_cast<std::size_t>(sy) * static_cast<std::size_t>(bm.width) * 4;
+        const std::uint8_t* src =
+            bm.rgba.data() + static_cast<std::size_t>(sy) * static_cast<std::size_t>(bm.width) * 4;
         float* dst = rows.data() + static_cast<std::size_t>(sy) * static_cast<std::size_t>(w) * 4;
         for (int d = 0; d < w; ++d) {
             const auto& ws = wx.weights[static_cast<std::size_t>(d)];
@@ -172,7 +173,8 @@ void draw_scaled_bitmap(Canvas& canvas, const StrikeBitmap& bm, double k, double
             // Overlaps are in device pixels: a fully covered device pixel sums to 1.
             const float a = std::clamp(std::round(acc[3]), 0.0f, 255.0f);
             out[4 * px + 3] = static_cast<std::uint8_t>(a);
-            for (int c = 0; c < 3; ++c) out[4 * px + c] = static_cast<std::uint8_t>(std::clamp(std::round(acc[c]), 0.0f, a));
+            for (int c = 0; c < 3; ++c)
+                out[4 * px + c] = static_cast<std::uint8_t>(std::clamp(std::round(acc[c]), 0.0f, a));
         }
     }
     canvas.save();
@@ -185,7 +187,9 @@ void draw_bitmap_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, do
                        Point origin, double opacity) {
     Font::Impl& fi = font.impl();
     const bool axis_aligned = to_device.b == 0 && to_device.c == 0 && to_device.a > 0 && to_device.a == to_device.d;
-    const double device_size = size * (axis_aligned ? to_device.a : std::sqrt(std::abs(to_device.a * to_device.d - to_device.b * to_device.c)));
+    const double device_size =
+        size *
+        (axis_aligned ? to_device.a : std::sqrt(std::abs(to_device.a * to_device.d - to_device.b * to_device.c)));
     const StrikeBitmap* found = cached_bitmap(fi, glyph, pick_strike(fi.face, device_size));
     if (!found) return;
     const StrikeBitmap& bm = *found;
@@ -273,8 +277,10 @@ void draw_color_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, dou
     bool first = true;
     for (Point p : {Point{b.x0, b.y0}, Point{b.x1, b.y0}, Point{b.x0, b.y1}, Point{b.x1, b.y1}}) {
         const Point q = to_pixels.apply(p);
-        if (first) device = {q.x, q.y, q.x, q.y};
-        else device.include(q);
+        if (first)
+            device = {q.x, q.y, q.x, q.y};
+        else
+            device.include(q);
         first = false;
     }
     const IRect& clip = canvas.clip();

@@ -104,8 +104,10 @@ struct Walker {
 
     Color color_of(std::uint16_t index, double alpha) const {
         Color c = Color::transparent();
-        if (index == 0xffff) c = foreground;
-        else if (palette && index < palette->size()) c = (*palette)[index];
+        if (index == 0xffff)
+            c = foreground;
+        else if (palette && index < palette->size())
+            c = (*palette)[index];
         return c.with_opacity(std::clamp(alpha, 0.0, 1.0));
     }
 
@@ -131,9 +133,7 @@ struct Walker {
     bool simple_paint(const ColrPaint& p, Paint& out) const {
         double lo = 0, hi = 1;
         switch (p.kind) {
-            case ColrPaint::Kind::Solid:
-                out = Paint::solid(color_of(p.palette_index, p.alpha));
-                return true;
+            case ColrPaint::Kind::Solid: out = Paint::solid(color_of(p.palette_index, p.alpha)); return true;
             case ColrPaint::Kind::Linear: {
                 std::vector<GradientStop> st = stops(p.line, lo, hi);
                 if (st.empty()) return false;
@@ -168,15 +168,15 @@ struct Walker {
                                                    spread_of(p.line.extend)));
                 return true;
             }
-            default:
-                return false;
+            default: return false;
         }
     }
 
     // The device pixels of the current clip, as a Rect.
     static Rect clip_rect(const Canvas& canvas) {
         const IRect& c = canvas.clip();
-        return {static_cast<double>(c.x0), static_cast<double>(c.y0), static_cast<double>(c.x1), static_cast<double>(c.y1)};
+        return {static_cast<double>(c.x0), static_cast<double>(c.y0), static_cast<double>(c.x1),
+                static_cast<double>(c.y1)};
     }
 
     // Fills the whole clip with `paint`, whose shader is in the current paint space.
@@ -197,8 +197,8 @@ struct Walker {
         const Affine& m = canvas.transform();
         const double det = m.a * m.d - m.b * m.c;
         if (!(std::abs(det) > 1e-12)) return;
-        const Affine inv{m.d / det, -m.b / det, -m.c / det, m.a / det, (m.c * m.f - m.d * m.e) / det,
-                         (m.b * m.e - m.a * m.f) / det};
+        const Affine inv{
+            m.d / det, -m.b / det, -m.c / det, m.a / det, (m.c * m.f - m.d * m.e) / det, (m.b * m.e - m.a * m.f) / det};
         const Point c = g.p0;
         // Angles in degrees, counter-clockwise from the x axis; the colour line spans [start, end].
         const double a0 = g.start_angle + lo * (g.end_angle - g.start_angle);
@@ -214,8 +214,11 @@ struct Walker {
                 const double t = a1 != a0 ? (angle - a0) / (a1 - a0) : (angle < a0 ? 0.0 : 1.0);
                 float rgba[4];
                 line.color_at(t, rgba);
-                auto byte = [](float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255)); };
-                const PremulPixel px = premultiply(Color::rgba(byte(rgba[0]), byte(rgba[1]), byte(rgba[2]), byte(rgba[3])));
+                auto byte = [](float v) {
+                    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255));
+                };
+                const PremulPixel px =
+                    premultiply(Color::rgba(byte(rgba[0]), byte(rgba[1]), byte(rgba[2]), byte(rgba[3])));
                 row[4 * x] = px.r;
                 row[4 * x + 1] = px.g;
                 row[4 * x + 2] = px.b;
@@ -231,9 +234,7 @@ struct Walker {
     Path outline(std::uint32_t glyph) const {
         try {
             return font.glyph_path(glyph);
-        } catch (const Error&) {
-            return {};
-        }
+        } catch (const Error&) { return {}; }
     }
 
     void clip_box(Canvas& canvas, std::uint32_t glyph) const {
@@ -282,9 +283,7 @@ struct Walker {
             case ColrPaint::Kind::Radial:
                 if (simple_paint(p, simple)) fill_clip(canvas, simple);
                 return;
-            case ColrPaint::Kind::Sweep:
-                sweep(canvas, p);
-                return;
+            case ColrPaint::Kind::Sweep: sweep(canvas, p); return;
             case ColrPaint::Kind::ColrGlyph: {
                 const auto root = table.root(p.glyph);
                 if (!root) return;
@@ -302,8 +301,7 @@ struct Walker {
                 canvas.end_layer();
                 canvas.end_layer();
                 return;
-            default:
-                return;
+            default: return;
         }
     }
 
@@ -313,19 +311,20 @@ struct Walker {
         ColrPaint p;
         if (depth > kMaxDepth || !get(at, p)) return;
         switch (p.kind) {
-            case ColrPaint::Kind::Transform:
-                bounds(p.child, m * p.transform, depth + 1, box, have, unbounded);
-                return;
+            case ColrPaint::Kind::Transform: bounds(p.child, m * p.transform, depth + 1, box, have, unbounded); return;
             case ColrPaint::Kind::Layers:
                 for (std::uint32_t i = 0; i < p.layer_count && paints < kMaxPaints; ++i)
-                    if (const auto layer = table.layer(p.first_layer + i)) bounds(*layer, m, depth + 1, box, have, unbounded);
+                    if (const auto layer = table.layer(p.first_layer + i))
+                        bounds(*layer, m, depth + 1, box, have, unbounded);
                 return;
             case ColrPaint::Kind::Glyph: {
                 const Path shape = outline(p.glyph);
                 for (Point q : shape.points()) {
                     const Point r = m.apply(q);
-                    if (!have) box = {r.x, r.y, r.x, r.y};
-                    else box.include(r);
+                    if (!have)
+                        box = {r.x, r.y, r.x, r.y};
+                    else
+                        box.include(r);
                     have = true;
                 }
                 return;
@@ -337,9 +336,7 @@ struct Walker {
                 bounds(p.backdrop, m, depth + 1, box, have, unbounded);
                 bounds(p.child, m, depth + 1, box, have, unbounded);
                 return;
-            default:
-                unbounded = true;
-                return;
+            default: unbounded = true; return;
         }
     }
 };
@@ -366,7 +363,9 @@ bool paint_colr_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, con
     for (int n = 0; n < kMaxPaints && FT_Get_Color_Glyph_Layer(face, glyph, &layer, &color, &it); ++n) {
         any = true;
         const Path shape = w.outline(layer);
-        if (!shape.empty()) canvas.fill_path(shape, Paint::solid(w.color_of(static_cast<std::uint16_t>(color), 1.0)), FillRule::NonZero);
+        if (!shape.empty())
+            canvas.fill_path(shape, Paint::solid(w.color_of(static_cast<std::uint16_t>(color), 1.0)),
+                             FillRule::NonZero);
     }
     return any;
 }
@@ -385,8 +384,10 @@ Rect colr_glyph_bounds(const Font& font, std::uint32_t glyph) {
         for (int n = 0; n < kMaxPaints && FT_Get_Color_Glyph_Layer(font.impl().face, glyph, &layer, &color, &it); ++n) {
             const Path shape = w.outline(layer);
             for (Point q : shape.points()) {
-                if (!have) box = {q.x, q.y, q.x, q.y};
-                else box.include(q);
+                if (!have)
+                    box = {q.x, q.y, q.x, q.y};
+                else
+                    box.include(q);
                 have = true;
             }
         }

@@ -61,8 +61,10 @@ std::optional<std::size_t> ColrTable::root(std::uint32_t glyph) const {
         const std::uint32_t mid = lo + (hi - lo) / 2;
         Cursor r{data_, base_list_ + 4 + 6u * mid};
         const std::uint16_t id = r.u16();
-        if (id < glyph) lo = mid + 1;
-        else if (id > glyph) hi = mid;
+        if (id < glyph)
+            lo = mid + 1;
+        else if (id > glyph)
+            hi = mid;
         else {
             const std::uint32_t off = r.u32();
             if (!r.ok || off == 0 || base_list_ + off >= data_.size()) return std::nullopt;
@@ -198,7 +200,14 @@ bool ColrTable::paint(std::size_t at, ColrPaint& out) const {
             out.transform = Affine::translate(dx, dy);
             break;
         }
-        case 16: case 17: case 18: case 19: case 20: case 21: case 22: case 23: {
+        case 16:
+        case 17:
+        case 18:
+        case 19:
+        case 20:
+        case 21:
+        case 22:
+        case 23: {
             out.kind = ColrPaint::Kind::Transform;
             child(out.child);
             const bool uniform = format >= 20;
@@ -208,7 +217,10 @@ bool ColrTable::paint(std::size_t at, ColrPaint& out) const {
             out.transform = about(cx, cy, Affine::scale(sx, sy));
             break;
         }
-        case 24: case 25: case 26: case 27: {
+        case 24:
+        case 25:
+        case 26:
+        case 27: {
             out.kind = ColrPaint::Kind::Transform;
             child(out.child);
             const double angle = c.f2dot14() * kPi;  // counter-clockwise, half turns per unit
@@ -216,7 +228,10 @@ bool ColrTable::paint(std::size_t at, ColrPaint& out) const {
             out.transform = about(cx, cy, Affine::rotate(angle));
             break;
         }
-        case 28: case 29: case 30: case 31: {
+        case 28:
+        case 29:
+        case 30:
+        case 31: {
             out.kind = ColrPaint::Kind::Transform;
             child(out.child);
             const double ax = c.f2dot14() * kPi, ay = c.f2dot14() * kPi;
@@ -230,8 +245,7 @@ bool ColrTable::paint(std::size_t at, ColrPaint& out) const {
             out.mode = c.u8();
             child(out.backdrop);
             break;
-        default:
-            return false;
+        default: return false;
     }
     return c.ok;
 }

@@ -95,7 +95,8 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
             }
             const std::size_t mi = k++;
             const GlyphCache::MaskRequest& r = requests[i];
-            const Mask& m = masks.empty() ? gc.mask(*r.font, r.glyph, r.size, r.offset, canvas.rasterizer()) : *masks[mi];
+            const Mask& m =
+                masks.empty() ? gc.mask(*r.font, r.glyph, r.size, r.offset, canvas.rasterizer()) : *masks[mi];
             canvas.fill_mask(m, at[i].first, at[i].second, paint);
         }
         return;

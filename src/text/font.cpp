@@ -57,8 +57,8 @@ std::string tag_string(std::uint32_t tag) {
 
 void check_face_index(int face_index, const std::string& name) {
     if (face_index < 0 || face_index > 0xffff)
-        throw Error(ErrorKind::InvalidArgument, "font '" + name + "': face index must be 0 to 65535, got " +
-                                                    std::to_string(face_index));
+        throw Error(ErrorKind::InvalidArgument,
+                    "font '" + name + "': face index must be 0 to 65535, got " + std::to_string(face_index));
 }
 
 // Checks the table directory of an sfnt (TrueType/OpenType) file or collection against the file
@@ -102,8 +102,7 @@ void check_sfnt_directory(const std::uint8_t* b, std::size_t n, const std::strin
 std::vector<std::uint8_t> read_font_file(const std::string& path) {
     std::error_code ec;
     const auto st = std::filesystem::status(path, ec);
-    if (ec || !std::filesystem::exists(st))
-        throw Error(ErrorKind::Io, "cannot read font '" + path + "': no such file");
+    if (ec || !std::filesystem::exists(st)) throw Error(ErrorKind::Io, "cannot read font '" + path + "': no such file");
     if (std::filesystem::is_directory(st))
         throw Error(ErrorKind::Io, "cannot read font '" + path + "': it is a directory");
     std::FILE* f = std::fopen(path.c_str(), "rb");
@@ -123,8 +122,7 @@ std::vector<std::uint8_t> read_font_file(const std::string& path) {
         bytes.insert(bytes.end(), buf, buf + got);
         if (bytes.size() > max_bytes) {
             std::fclose(f);
-            throw Error(ErrorKind::Limit, "font '" + path + "' is larger than " +
-                                              std::to_string(max_bytes) + " bytes");
+            throw Error(ErrorKind::Limit, "font '" + path + "' is larger than " + std::to_string(max_bytes) + " bytes");
         }
     }
     const bool failed = std::ferror(f) != 0;
@@ -207,8 +205,10 @@ std::string sfnt_name(FT_Face face, FT_UInt id) {
         FT_SfntName n;
         if (FT_Get_Sfnt_Name(face, i, &n) || n.name_id != id) continue;
         int rank = 0;
-        if (n.platform_id == TT_PLATFORM_MICROSOFT) rank = n.language_id == 0x409 ? 3 : 2;
-        else if (n.platform_id == TT_PLATFORM_MACINTOSH) rank = 1;
+        if (n.platform_id == TT_PLATFORM_MICROSOFT)
+            rank = n.language_id == 0x409 ? 3 : 2;
+        else if (n.platform_id == TT_PLATFORM_MACINTOSH)
+            rank = 1;
         if (rank > best_rank) {
             best_rank = rank;
             best = name_to_utf8(n);
@@ -354,8 +354,7 @@ Font Font::load(const std::string& path, int face_index) {
 Font Font::from_memory(std::vector<std::uint8_t> bytes, int face_index, std::string name) {
     check_face_index(face_index, name);
     if (const std::uint64_t max_bytes = current_limits().font_file_bytes; bytes.size() > max_bytes)
-        throw Error(ErrorKind::Limit, "font '" + name + "' is larger than " +
-                                          std::to_string(max_bytes) + " bytes");
+        throw Error(ErrorKind::Limit, "font '" + name + "' is larger than " + std::to_string(max_bytes) + " bytes");
     check_sfnt_directory(bytes.data(), bytes.size(), name);
     auto owner = std::make_shared<const std::vector<std::uint8_t>>(std::move(bytes));
     const std::size_t size = owner->size();
@@ -365,7 +364,8 @@ Font Font::from_memory(std::vector<std::uint8_t> bytes, int face_index, std::str
 }
 
 // A Font over bytes already checked (load, from_memory), shared with the Fonts cloned from it.
-Font Font::from_shared_bytes(std::shared_ptr<const std::uint8_t> bytes, std::size_t size, int face_index, std::string name) {
+Font Font::from_shared_bytes(std::shared_ptr<const std::uint8_t> bytes, std::size_t size, int face_index,
+                             std::string name) {
     auto impl = std::make_unique<Impl>();
     impl->source = std::move(name);
     impl->face_index = face_index;
@@ -407,8 +407,9 @@ Font Font::from_shared_bytes(std::shared_ptr<const std::uint8_t> bytes, std::siz
     if (face->units_per_EM < 16 || face->units_per_EM > 16384)
         font_error(impl->source, "unusable units per em: " + std::to_string(face->units_per_EM));
     FT_ULong colr_length = 0;
-    impl->has_colr = FT_HAS_COLOR(face) && FT_Load_Sfnt_Table(face, FT_MAKE_TAG('C', 'O', 'L', 'R'), 0, nullptr,
-                                                              &colr_length) == 0 && colr_length > 0;
+    impl->has_colr = FT_HAS_COLOR(face) &&
+                     FT_Load_Sfnt_Table(face, FT_MAKE_TAG('C', 'O', 'L', 'R'), 0, nullptr, &colr_length) == 0 &&
+                     colr_length > 0;
     if (impl->bitmap_only) {
         // Colour bitmaps only: the largest strike (glyphs are scaled from it when drawn).
         FT_Int largest = 0;
@@ -425,10 +426,14 @@ Font Font::from_shared_bytes(std::shared_ptr<const std::uint8_t> bytes, std::siz
 
     const char* fmt = FT_Get_Font_Format(face);
     const std::string format = fmt ? fmt : "";
-    if (format == "TrueType") impl->format = OutlineFormat::TrueType;
-    else if (format == "CFF") impl->format = OutlineFormat::CFF;
-    else if (format == "CFF2") impl->format = OutlineFormat::CFF2;  // FreeType reports "CFF" for CFF2 in some versions
-    else impl->format = OutlineFormat::Other;
+    if (format == "TrueType")
+        impl->format = OutlineFormat::TrueType;
+    else if (format == "CFF")
+        impl->format = OutlineFormat::CFF;
+    else if (format == "CFF2")
+        impl->format = OutlineFormat::CFF2;  // FreeType reports "CFF" for CFF2 in some versions
+    else
+        impl->format = OutlineFormat::Other;
     FT_ULong cff2_length = 0;
     if (impl->format == OutlineFormat::CFF &&
         FT_Load_Sfnt_Table(face, FT_MAKE_TAG('C', 'F', 'F', '2'), 0, nullptr, &cff2_length) == 0 && cff2_length > 0)
@@ -449,7 +454,8 @@ Font Font::from_shared_bytes(std::shared_ptr<const std::uint8_t> bytes, std::siz
             for (FT_UInt i = 0; i < mm->num_namedstyles; ++i) {
                 NamedInstance ni;
                 ni.name = sfnt_name(face, mm->namedstyle[i].strid);
-                for (FT_UInt k = 0; k < mm->num_axis; ++k) ni.coordinates.push_back(mm->namedstyle[i].coords[k] / 65536.0);
+                for (FT_UInt k = 0; k < mm->num_axis; ++k)
+                    ni.coordinates.push_back(mm->namedstyle[i].coords[k] / 65536.0);
                 impl->instances.push_back(std::move(ni));
             }
             FT_Done_MM_Var(impl->library, mm);
@@ -611,8 +617,9 @@ void Font::set_named_instance(std::string_view name) {
         if (lower(impl_->instances[i].name) == want) return set_named_instance(i);
         names += (names.empty() ? "" : ", ") + impl_->instances[i].name;
     }
-    font_error(impl_->source, "no named instance '" + std::string(name) + "'" +
-                                  (names.empty() ? std::string(" (the font has none)") : " (the font has: " + names + ")"));
+    font_error(impl_->source,
+               "no named instance '" + std::string(name) + "'" +
+                   (names.empty() ? std::string(" (the font has none)") : " (the font has: " + names + ")"));
 }
 
 void Font::reset_variations() { set_variations({}); }

@@ -21,7 +21,8 @@ namespace {
 bool same_name(std::string_view a, std::string_view b) {
     if (a.size() != b.size()) return false;
     for (std::size_t i = 0; i < a.size(); ++i)
-        if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) return false;
+        if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i])))
+            return false;
     return true;
 }
 
@@ -123,7 +124,8 @@ struct FontDatabase::Impl {
         std::vector<FcPattern*> pats(set->fonts, set->fonts + set->nfont);
         auto file_of = [](FcPattern* p) {
             FcChar8* f = nullptr;
-            return FcPatternGetString(p, FC_FILE, 0, &f) == FcResultMatch ? std::string(reinterpret_cast<char*>(f)) : std::string();
+            return FcPatternGetString(p, FC_FILE, 0, &f) == FcResultMatch ? std::string(reinterpret_cast<char*>(f))
+                                                                          : std::string();
         };
         std::stable_sort(pats.begin(), pats.end(), [&](FcPattern* a, FcPattern* b) { return file_of(a) < file_of(b); });
         for (FcPattern* p : pats) {
@@ -155,10 +157,14 @@ struct FontDatabase::Impl {
             }
             int slant = FC_SLANT_ROMAN;
             FcPatternGetInteger(p, FC_SLANT, 0, &slant);
-            info.slant = slant == FC_SLANT_ITALIC ? FontSlant::Italic : slant == FC_SLANT_OBLIQUE ? FontSlant::Oblique : FontSlant::Normal;
+            info.slant = slant == FC_SLANT_ITALIC    ? FontSlant::Italic
+                         : slant == FC_SLANT_OBLIQUE ? FontSlant::Oblique
+                                                     : FontSlant::Normal;
             if (FcPatternGet(p, FC_WIDTH, 0, &v) == FcResultMatch) {
-                if (v.type == FcTypeInteger) info.stretch = v.u.i;
-                else if (v.type == FcTypeDouble) info.stretch = v.u.d;
+                if (v.type == FcTypeInteger)
+                    info.stretch = v.u.i;
+                else if (v.type == FcTypeDouble)
+                    info.stretch = v.u.d;
             }
             FcCharSet* cs = nullptr;
             if (FcPatternGetCharSet(p, FC_CHARSET, 0, &cs) != FcResultMatch) cs = nullptr;
@@ -226,7 +232,8 @@ FontDatabase::~FontDatabase() = default;
 
 const std::vector<FontFaceInfo>& FontDatabase::faces() const { return impl_->faces; }
 
-std::optional<std::size_t> FontDatabase::match(std::string_view family, int weight, FontSlant slant, double stretch) const {
+std::optional<std::size_t> FontDatabase::match(std::string_view family, int weight, FontSlant slant,
+                                               double stretch) const {
     // Stretch narrows first, then style, then weight (CSS Fonts 4, 5.2 step 4).
     return best_face(
         impl_->faces,
@@ -245,9 +252,7 @@ bool FontDatabase::covers(std::size_t face, char32_t c) const {
     if (FcCharSet* cs = impl_->charsets[face]) return FcCharSetHasChar(cs, static_cast<FcChar32>(c));
     try {
         return open(face).has_glyph(c);
-    } catch (const Error&) {
-        return false;
-    }
+    } catch (const Error&) { return false; }
 }
 
 std::optional<std::size_t> FontDatabase::fallback(char32_t c, int weight, FontSlant slant, double stretch) const {

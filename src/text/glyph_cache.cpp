@@ -82,7 +82,7 @@ struct GlyphCache::Impl {
     };
     static constexpr double kSimilarityFirstPx = 64;
     std::unordered_map<OutlineKey, Verdict, OutlineKeyHash> topologies;  // a few bytes each, not counted
-    std::unordered_map<const void*, std::weak_ptr<const int>> fonts;  // lifetime tokens seen
+    std::unordered_map<const void*, std::weak_ptr<const int>> fonts;     // lifetime tokens seen
     GlyphCacheStats stats;
 
     void clear() {
@@ -122,7 +122,8 @@ struct GlyphCache::Impl {
             std::memcpy(&b, &v, sizeof b);
             return b;
         };
-        return MaskKey{&font.impl(), font.variation_key(), bits(size), bits(offset.x + 0.0), bits(offset.y + 0.0), glyph};
+        return MaskKey{&font.impl(),         font.variation_key(), bits(size),
+                       bits(offset.x + 0.0), bits(offset.y + 0.0), glyph};
     }
 
     // What rasterizing one mask needs: the outline in font units (read on the calling thread:
@@ -140,12 +141,14 @@ struct GlyphCache::Impl {
             const OutlineKey okey{&font.impl(), font.variation_key(), glyph};
             const double lambda = fill.tolerance / scale;  // the tolerance in font units
             Verdict& v = topologies.try_emplace(okey, Verdict{Topology::Unknown, false, 0}).first->second;
-            const bool similar = v.topology == Topology::Unknown
-                                     ? size >= kSimilarityFirstPx
-                                     : (v.similarity ? lambda > v.max_tolerance
-                                                     : v.topology != Topology::Simple);  // a second mask
-            if (similar) v = {classify_topology(j.outline, 2 * lambda), true, 2 * lambda};
-            else if (v.topology == Topology::Unknown) v = {classify_topology(j.outline), false, INFINITY};
+            const bool similar =
+                v.topology == Topology::Unknown
+                    ? size >= kSimilarityFirstPx
+                    : (v.similarity ? lambda > v.max_tolerance : v.topology != Topology::Simple);  // a second mask
+            if (similar)
+                v = {classify_topology(j.outline, 2 * lambda), true, 2 * lambda};
+            else if (v.topology == Topology::Unknown)
+                v = {classify_topology(j.outline), false, INFINITY};
             j.fill.topology = v.topology;
         }
         return j;

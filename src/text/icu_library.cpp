@@ -14,16 +14,14 @@ namespace casteljau::icu_library {
 
 const Api* api() {
     try {
-        return &platform::open_once<Api>(
-            "ICU", "libicuuc.so." CASTELJAU_ICU_NAME_OF(U_ICU_VERSION_MAJOR_NUM), [](platform::RuntimeLibrary& lib, Api& a) {
-                lib.get(a.break_open, CASTELJAU_ICU_NAME_OF(ubrk_open));
-                lib.get(a.break_first, CASTELJAU_ICU_NAME_OF(ubrk_first));
-                lib.get(a.break_next, CASTELJAU_ICU_NAME_OF(ubrk_next));
-                lib.get(a.break_close, CASTELJAU_ICU_NAME_OF(ubrk_close));
-            });
-    } catch (const Error&) {
-        return nullptr;
-    }
+        return &platform::open_once<Api>("ICU", "libicuuc.so." CASTELJAU_ICU_NAME_OF(U_ICU_VERSION_MAJOR_NUM),
+                                         [](platform::RuntimeLibrary& lib, Api& a) {
+                                             lib.get(a.break_open, CASTELJAU_ICU_NAME_OF(ubrk_open));
+                                             lib.get(a.break_first, CASTELJAU_ICU_NAME_OF(ubrk_first));
+                                             lib.get(a.break_next, CASTELJAU_ICU_NAME_OF(ubrk_next));
+                                             lib.get(a.break_close, CASTELJAU_ICU_NAME_OF(ubrk_close));
+                                         });
+    } catch (const Error&) { return nullptr; }
 }
 
 }  // namespace casteljau::icu_library

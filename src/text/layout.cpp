@@ -50,11 +50,12 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
         if (!f) throw Error(ErrorKind::InvalidArgument, "layout_text: null font in the font list");
     check_font_size(style.size);
     if (!std::isfinite(style.line_height) || style.line_height <= 0 || style.line_height > 100)
-        throw Error(ErrorKind::InvalidArgument, "line height must be a number in (0, 100], got " +
-                                                    std::to_string(style.line_height));
+        throw Error(ErrorKind::InvalidArgument,
+                    "line height must be a number in (0, 100], got " + std::to_string(style.line_height));
     if (!std::isfinite(style.max_width) || style.max_width < 0 || style.max_width > limits::kMaxCanvasDimension * 16.0)
-        throw Error(ErrorKind::InvalidArgument, "wrap width must be 0 (no wrapping) or a positive number of pixels up to " +
-                                                    std::to_string(limits::kMaxCanvasDimension * 16));
+        throw Error(ErrorKind::InvalidArgument,
+                    "wrap width must be 0 (no wrapping) or a positive number of pixels up to " +
+                        std::to_string(limits::kMaxCanvasDimension * 16));
     if (const std::size_t max_bytes = current_limits().text_bytes; utf8.size() > max_bytes)
         throw Error(ErrorKind::Limit, "text of " + std::to_string(utf8.size()) + " bytes exceeds the limit of " +
                                           std::to_string(max_bytes) + " bytes");
@@ -97,7 +98,8 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
                text[pe] != 0x85)
             ++pe;
         std::size_t next = pe;
-        if (next < text.size()) next += (text[next] == U'\r' && next + 1 < text.size() && text[next + 1] == U'\n') ? 2 : 1;
+        if (next < text.size())
+            next += (text[next] == U'\r' && next + 1 < text.size() && text[next + 1] == U'\n') ? 2 : 1;
 
         work.assign(text, pos, pe - pos);
         for (char32_t& c : work)
@@ -119,8 +121,10 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
                 }
 
         // Greedy line breaking at the UAX #14 opportunities (none needed without a wrap width).
-        if (style.max_width > 0) text_detail::line_break_opportunities(para, style.language, breaks);
-        else breaks.assign(n + 1, 0);
+        if (style.max_width > 0)
+            text_detail::line_break_opportunities(para, style.language, breaks);
+        else
+            breaks.assign(n + 1, 0);
         ranges.clear();
         {
             std::size_t line_begin = 0;
@@ -219,8 +223,10 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
         TextAlign a = style.align;
         if (a == TextAlign::Start) a = l.rtl ? TextAlign::Right : TextAlign::Left;
         double x = 0;
-        if (a == TextAlign::Center) x = (L.width - l.width) / 2;
-        else if (a == TextAlign::Right) x = L.width - l.width;
+        if (a == TextAlign::Center)
+            x = (L.width - l.width) / 2;
+        else if (a == TextAlign::Right)
+            x = L.width - l.width;
         l.x = x;
         for (std::size_t g = l.first_glyph; g < l.first_glyph + l.glyph_count; ++g) L.glyphs[g].position.x += x;
     }
@@ -236,13 +242,15 @@ TextLayout layout_text(std::string_view utf8, std::span<const Font* const> fonts
             const Font& font = *L.fonts[g.font];
             const bool color = text_detail::color_glyph_kind(font, g.glyph) != text_detail::ColorGlyphKind::None;
             it = glyph_bounds
-                     .emplace(key, color ? text_detail::color_glyph_bounds(font, g.glyph) : font.glyph_metrics(g.glyph).bounds)
+                     .emplace(key, color ? text_detail::color_glyph_bounds(font, g.glyph)
+                                         : font.glyph_metrics(g.glyph).bounds)
                      .first;
         }
         const Rect& b = it->second;
         if (b.empty()) continue;
         const double s = style.size / L.fonts[g.font]->units_per_em();
-        const Rect r{g.position.x + b.x0 * s, g.position.y - b.y1 * s, g.position.x + b.x1 * s, g.position.y - b.y0 * s};
+        const Rect r{g.position.x + b.x0 * s, g.position.y - b.y1 * s, g.position.x + b.x1 * s,
+                     g.position.y - b.y0 * s};
         L.ink = have_ink ? L.ink.united(r) : r;
         have_ink = true;
     }

@@ -56,7 +56,10 @@ std::size_t cluster_end(std::u32string_view para, std::size_t i, hb_unicode_func
 }  // namespace
 
 Shaper::Shaper(std::span<const Font* const> fonts, const TextStyle& style, bool vertical, SystemFallback* fallback)
-    : fonts_(fonts.begin(), fonts.end()), chain_size_(fonts.size()), fallback_(fallback), size_(style.size),
+    : fonts_(fonts.begin(), fonts.end()),
+      chain_size_(fonts.size()),
+      fallback_(fallback),
+      size_(style.size),
       vertical_(vertical) {
     for (const std::string& f : style.features) {
         hb_feature_t feat;
@@ -67,7 +70,9 @@ Shaper::Shaper(std::span<const Font* const> fonts, const TextStyle& style, bool 
     if (!style.script.empty()) {
         bool ok = style.script.size() == 4;
         for (char c : style.script) ok = ok && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'));
-        if (!ok) throw Error(ErrorKind::Parse, "invalid script '" + style.script + "' (expected an ISO 15924 tag like Latn, Arab, Hebr)");
+        if (!ok)
+            throw Error(ErrorKind::Parse,
+                        "invalid script '" + style.script + "' (expected an ISO 15924 tag like Latn, Arab, Hebr)");
         script_override_ = hb_script_from_string(style.script.c_str(), 4);
         if (script_override_ == HB_SCRIPT_INVALID || script_override_ == HB_SCRIPT_UNKNOWN)
             throw Error(ErrorKind::Parse, "unknown script '" + style.script + "'");
@@ -75,7 +80,8 @@ Shaper::Shaper(std::span<const Font* const> fonts, const TextStyle& style, bool 
     if (!style.language.empty()) {
         for (char c : style.language)
             if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_'))
-                throw Error(ErrorKind::Parse, "invalid language tag '" + style.language + "' (expected BCP 47, e.g. en, ar, tr)");
+                throw Error(ErrorKind::Parse,
+                            "invalid language tag '" + style.language + "' (expected BCP 47, e.g. en, ar, tr)");
         language_ = hb_language_from_string(style.language.c_str(), static_cast<int>(style.language.size()));
     }
     buf_ = hb_buffer_create();
@@ -147,11 +153,16 @@ void Shaper::shape_paragraph(std::u32string_view para, std::span<const std::uint
     // Scripts: common and inherited characters take the script before them (after them at the start).
     hb_script_t first = HB_SCRIPT_COMMON;
     for (std::size_t i = 0; i < n; ++i)
-        if (!is_weak_script(script_of_[i])) { first = script_of_[i]; break; }
+        if (!is_weak_script(script_of_[i])) {
+            first = script_of_[i];
+            break;
+        }
     hb_script_t cur = first;
     for (std::size_t i = 0; i < n; ++i) {
-        if (is_weak_script(script_of_[i])) script_of_[i] = cur;
-        else cur = script_of_[i];
+        if (is_weak_script(script_of_[i]))
+            script_of_[i] = cur;
+        else
+            cur = script_of_[i];
     }
 
     const hb_language_t lang = language_ != HB_LANGUAGE_INVALID ? language_ : hb_language_get_default();
@@ -168,7 +179,9 @@ void Shaper::shape_paragraph(std::u32string_view para, std::span<const std::uint
         hb_buffer_clear_contents(buf_);
         hb_buffer_add_utf32(buf_, reinterpret_cast<const std::uint32_t*>(para.data()), static_cast<int>(n),
                             static_cast<unsigned>(b), static_cast<int>(e - b));
-        hb_buffer_set_direction(buf_, vertical_ ? HB_DIRECTION_TTB : (run.level & 1) ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
+        hb_buffer_set_direction(buf_, vertical_         ? HB_DIRECTION_TTB
+                                      : (run.level & 1) ? HB_DIRECTION_RTL
+                                                        : HB_DIRECTION_LTR);
         hb_buffer_set_script(buf_, script_override_ != HB_SCRIPT_INVALID ? script_override_ : script_of_[b]);
         hb_buffer_set_language(buf_, lang);
         unsigned flags = HB_BUFFER_FLAG_DEFAULT;
@@ -220,13 +233,23 @@ void TextShaper::shape_paragraph(std::u32string_view paragraph, std::span<const 
 
 bool letter_spacing_allowed(char32_t c) {
     switch (hb_unicode_script(hb_unicode_funcs_get_default(), c)) {
-        case HB_SCRIPT_ARABIC: case HB_SCRIPT_SYRIAC: case HB_SCRIPT_NKO: case HB_SCRIPT_MANICHAEAN:
-        case HB_SCRIPT_PSALTER_PAHLAVI: case HB_SCRIPT_MANDAIC: case HB_SCRIPT_MONGOLIAN: case HB_SCRIPT_PHAGS_PA:
-        case HB_SCRIPT_DEVANAGARI: case HB_SCRIPT_BENGALI: case HB_SCRIPT_GURMUKHI: case HB_SCRIPT_MODI:
-        case HB_SCRIPT_SHARADA: case HB_SCRIPT_SYLOTI_NAGRI: case HB_SCRIPT_TIRHUTA: case HB_SCRIPT_OGHAM:
-            return false;
-        default:
-            return true;
+        case HB_SCRIPT_ARABIC:
+        case HB_SCRIPT_SYRIAC:
+        case HB_SCRIPT_NKO:
+        case HB_SCRIPT_MANICHAEAN:
+        case HB_SCRIPT_PSALTER_PAHLAVI:
+        case HB_SCRIPT_MANDAIC:
+        case HB_SCRIPT_MONGOLIAN:
+        case HB_SCRIPT_PHAGS_PA:
+        case HB_SCRIPT_DEVANAGARI:
+        case HB_SCRIPT_BENGALI:
+        case HB_SCRIPT_GURMUKHI:
+        case HB_SCRIPT_MODI:
+        case HB_SCRIPT_SHARADA:
+        case HB_SCRIPT_SYLOTI_NAGRI:
+        case HB_SCRIPT_TIRHUTA:
+        case HB_SCRIPT_OGHAM: return false;
+        default: return true;
     }
 }
 

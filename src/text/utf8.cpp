@@ -25,14 +25,32 @@ std::u32string decode_utf8(std::string_view s) {
         int need;
         unsigned lo = 0x80, hi = 0xbf;
         char32_t cp;
-        if (b0 >= 0xc2 && b0 <= 0xdf) { need = 1; cp = b0 & 0x1f; }
-        else if (b0 == 0xe0) { need = 2; lo = 0xa0; cp = 0; }
-        else if ((b0 >= 0xe1 && b0 <= 0xec) || b0 == 0xee || b0 == 0xef) { need = 2; cp = b0 & 0x0f; }
-        else if (b0 == 0xed) { need = 2; hi = 0x9f; cp = 0xd; }
-        else if (b0 == 0xf0) { need = 3; lo = 0x90; cp = 0; }
-        else if (b0 >= 0xf1 && b0 <= 0xf3) { need = 3; cp = b0 & 0x07; }
-        else if (b0 == 0xf4) { need = 3; hi = 0x8f; cp = 4; }
-        else {
+        if (b0 >= 0xc2 && b0 <= 0xdf) {
+            need = 1;
+            cp = b0 & 0x1f;
+        } else if (b0 == 0xe0) {
+            need = 2;
+            lo = 0xa0;
+            cp = 0;
+        } else if ((b0 >= 0xe1 && b0 <= 0xec) || b0 == 0xee || b0 == 0xef) {
+            need = 2;
+            cp = b0 & 0x0f;
+        } else if (b0 == 0xed) {
+            need = 2;
+            hi = 0x9f;
+            cp = 0xd;
+        } else if (b0 == 0xf0) {
+            need = 3;
+            lo = 0x90;
+            cp = 0;
+        } else if (b0 >= 0xf1 && b0 <= 0xf3) {
+            need = 3;
+            cp = b0 & 0x07;
+        } else if (b0 == 0xf4) {
+            need = 3;
+            hi = 0x8f;
+            cp = 4;
+        } else {
             out.push_back(U'\uFFFD');
             ++i;
             continue;

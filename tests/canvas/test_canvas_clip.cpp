@@ -41,7 +41,8 @@ TEST_CASE("clip_path: coverage is the product of shape and clip coverage within 
     int bad1 = 0, bad2 = 0, partial = 0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const double s = coverage(ms, x, y) / 255.0, k = coverage(mc, x, y) / 255.0, k2 = coverage(mc2, x, y) / 255.0;
+            const double s = coverage(ms, x, y) / 255.0, k = coverage(mc, x, y) / 255.0,
+                         k2 = coverage(mc2, x, y) / 255.0;
             bad1 += std::abs(one.pixel(x, y).a - s * k * 255) > 1.0;
             bad2 += std::abs(two.pixel(x, y).a - s * k * k2 * 255) > 1.5;  // two roundings
             partial += s * k > 0 && s * k < 1;
@@ -85,8 +86,8 @@ TEST_CASE("clip_rect: whole pixels clip exactly, fractional edges clip by their 
     cd.reset_transform();
     cd.fill_rect({0, 0, 20, 20}, Paint::solid(Color::white()));
     CHECK(d.pixel(10, 10).a == 255);
-    CHECK(d.pixel(10, 1).a == 0);   // above the diamond's top corner (10, 2.93)
-    CHECK(d.pixel(14, 5).a == 0);   // outside an edge, inside the axis-aligned bounds
+    CHECK(d.pixel(10, 1).a == 0);  // above the diamond's top corner (10, 2.93)
+    CHECK(d.pixel(14, 5).a == 0);  // outside an edge, inside the axis-aligned bounds
 }
 
 TEST_CASE("save and restore bring back transform, clip, opacity and blend mode", "[canvas][clip]") {

@@ -24,7 +24,8 @@ double lerp_channel(int a, int b, double t) { return a + (b - a) * t; }
 
 }  // namespace
 
-TEST_CASE("linear gradient: sampled pixels match the projection formula under a canvas transform", "[canvas][gradient]") {
+TEST_CASE("linear gradient: sampled pixels match the projection formula under a canvas transform",
+          "[canvas][gradient]") {
     Pixmap pm(100, 40);
     Canvas c(pm);
     c.scale(2, 2);  // user (5, 0)..(45, 0) is pixels 10..90
@@ -154,7 +155,8 @@ TEST_CASE("Canvas opacity multiplies fills, restore inside a layer stops at the 
     CHECK(c.transform() == Affine{});
 }
 
-TEST_CASE("Canvas over caller-owned memory draws into it with its stride and leaves the padding alone", "[canvas][pixmap]") {
+TEST_CASE("Canvas over caller-owned memory draws into it with its stride and leaves the padding alone",
+          "[canvas][pixmap]") {
     const int w = 5, h = 3;
     const std::size_t stride = 4 * w + 12;
     std::vector<std::uint8_t> buf(stride * h, 0xAB);
@@ -200,17 +202,13 @@ TEST_CASE("canvas limits: save() nests 1024 deep and layers 64 deep, one more is
     try {
         c.save();
         FAIL("save 1025 deep succeeded");
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::Limit);
-    }
+    } catch (const Error& e) { CHECK(e.kind() == ErrorKind::Limit); }
     for (int i = 0; i < 1024; ++i) c.restore();
     for (int i = 0; i < limits::kMaxNestingDepth; ++i) c.begin_layer(0.5);
     try {
         c.begin_layer(0.5);
         FAIL("a layer 65 deep was begun");
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::Limit);
-    }
+    } catch (const Error& e) { CHECK(e.kind() == ErrorKind::Limit); }
     // The canvas still works once the layers are unwound.
     for (int i = 0; i < limits::kMaxNestingDepth; ++i) c.end_layer();
     Path r;
@@ -219,8 +217,9 @@ TEST_CASE("canvas limits: save() nests 1024 deep and layers 64 deep, one more is
     CHECK(pm.pixel(1, 1) == PremulPixel{0, 0, 0, 255});
 }
 
-TEST_CASE("Pixmap: a new pixmap is transparent, fill_rows replaces rows in range only, copies and moves own their pixels",
-          "[pixmap]") {
+TEST_CASE(
+    "Pixmap: a new pixmap is transparent, fill_rows replaces rows in range only, copies and moves own their pixels",
+    "[pixmap]") {
     Pixmap p(3, 4);
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 3; ++x) CHECK(p.pixel(x, y) == PremulPixel{0, 0, 0, 0});
@@ -257,7 +256,8 @@ TEST_CASE("Pixmap: a new pixmap is transparent, fill_rows replaces rows in range
     }
 }
 
-TEST_CASE("Pixmap: large pixmaps (mapped on huge pages) read as zero, copy, move and free like small ones", "[pixmap]") {
+TEST_CASE("Pixmap: large pixmaps (mapped on huge pages) read as zero, copy, move and free like small ones",
+          "[pixmap]") {
     // 2048 x 1100 x 4 bytes is past platform::kHugeBlock (8 MiB) and not a multiple of 2 MiB.
     const int w = 2048, h = 1100;
     REQUIRE(std::size_t(w) * h * 4 >= platform::kHugeBlock);

@@ -11,24 +11,24 @@
 
 static int failures = 0;
 
-#define CHECK(cond)                                                         \
-    do {                                                                    \
-        if (!(cond)) {                                                      \
+#define CHECK(cond)                                                                  \
+    do {                                                                             \
+        if (!(cond)) {                                                               \
             fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
-            ++failures;                                                     \
-        }                                                                   \
+            ++failures;                                                              \
+        }                                                                            \
     } while (0)
 
 /* Expects `call` to fail with `status` and a last-error message containing `needle`. */
-#define CHECK_ERROR(call, status, needle)                                                         \
-    do {                                                                                          \
-        casteljau_status s_ = (call);                                                             \
-        CHECK(s_ == (status));                                                                    \
-        if (strstr(casteljau_last_error(), (needle)) == NULL) {                                  \
-            fprintf(stderr, "%s:%d: message \"%s\" lacks \"%s\"\n", __FILE__, __LINE__,           \
-                    casteljau_last_error(), (needle));                                            \
-            ++failures;                                                                           \
-        }                                                                                         \
+#define CHECK_ERROR(call, status, needle)                                                                       \
+    do {                                                                                                        \
+        casteljau_status s_ = (call);                                                                           \
+        CHECK(s_ == (status));                                                                                  \
+        if (strstr(casteljau_last_error(), (needle)) == NULL) {                                                 \
+            fprintf(stderr, "%s:%d: message \"%s\" lacks \"%s\"\n", __FILE__, __LINE__, casteljau_last_error(), \
+                    (needle));                                                                                  \
+            ++failures;                                                                                         \
+        }                                                                                                       \
     } while (0)
 
 static const uint8_t* pixel(casteljau_image* im, int x, int y) {
@@ -164,8 +164,8 @@ int main(int argc, char** argv) {
     CHECK_ERROR(casteljau_image_read_png(missing, &badpng), CASTELJAU_ERROR_IO, "no-such-font");
     CHECK_ERROR(casteljau_canvas_fill_path(NULL, path, solid, CASTELJAU_FILL_NONZERO), CASTELJAU_ERROR_INVALID_ARGUMENT,
                 "canvas is NULL");
-    CHECK_ERROR(casteljau_canvas_fill_path(canvas, NULL, solid, CASTELJAU_FILL_NONZERO), CASTELJAU_ERROR_INVALID_ARGUMENT,
-                "path is NULL");
+    CHECK_ERROR(casteljau_canvas_fill_path(canvas, NULL, solid, CASTELJAU_FILL_NONZERO),
+                CASTELJAU_ERROR_INVALID_ARGUMENT, "path is NULL");
     CHECK_ERROR(casteljau_path_line_to(path, NAN, 0), CASTELJAU_ERROR_INVALID_ARGUMENT, "finite");
     CHECK_ERROR(casteljau_image_create(0, 10, &badpng), CASTELJAU_ERROR_INVALID_ARGUMENT, "1x1");
     CHECK_ERROR(casteljau_image_create(100000, 100000, &badpng), CASTELJAU_ERROR_LIMIT, "limit");
@@ -176,7 +176,8 @@ int main(int argc, char** argv) {
     CHECK_ERROR(casteljau_canvas_set_blend_mode(canvas, (casteljau_blend_mode)99), CASTELJAU_ERROR_INVALID_ARGUMENT,
                 "blend");
     casteljau_canvas* nocanvas = NULL;
-    CHECK_ERROR(casteljau_canvas_create_for_pixels(buffer, 8, 3, 16, &nocanvas), CASTELJAU_ERROR_INVALID_ARGUMENT, "stride");
+    CHECK_ERROR(casteljau_canvas_create_for_pixels(buffer, 8, 3, 16, &nocanvas), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "stride");
     CHECK(nocanvas == NULL);
     CHECK_ERROR(casteljau_canvas_draw_text(canvas, font, "x", NAN, 0, 0, solid), CASTELJAU_ERROR_INVALID_ARGUMENT, "");
     CHECK_ERROR(casteljau_image_write_png(image, "/nonexistent-dir/x.png"), CASTELJAU_ERROR_IO, "nonexistent-dir");
@@ -202,7 +203,8 @@ int main(int argc, char** argv) {
         CHECK_ERROR(casteljau_paint_create_linear(0, 0, 1, 0, many, 65537, CASTELJAU_SPREAD_PAD, NULL, &nopaint),
                     CASTELJAU_ERROR_LIMIT, "65536");
         CHECK(nopaint == NULL);
-        CHECK(casteljau_paint_create_linear(0, 0, 1, 0, many, 65536, CASTELJAU_SPREAD_PAD, NULL, &nopaint) == CASTELJAU_OK);
+        CHECK(casteljau_paint_create_linear(0, 0, 1, 0, many, 65536, CASTELJAU_SPREAD_PAD, NULL, &nopaint) ==
+              CASTELJAU_OK);
         casteljau_paint_destroy(nopaint);
         CHECK_ERROR(casteljau_stroke_set_dashes(stroke, dashes, 4097, 0), CASTELJAU_ERROR_LIMIT, "4096");
         CHECK(casteljau_stroke_set_dashes(stroke, dashes, 4096, 0) == CASTELJAU_OK);
@@ -241,10 +243,12 @@ int main(int argc, char** argv) {
         CHECK_ERROR(casteljau_image_create(101, 10, &big), CASTELJAU_ERROR_LIMIT, "100");
         CHECK(big == NULL);
         CHECK(casteljau_image_create(100, 10, &big) == CASTELJAU_OK);
-        CHECK_ERROR(casteljau_path_from_svg("M0 0 1 1 2 2 3 3 4 4 5 5 6 6 7 7 8 8 9 9 10 10", &pts), CASTELJAU_ERROR_LIMIT, "10");
+        CHECK_ERROR(casteljau_path_from_svg("M0 0 1 1 2 2 3 3 4 4 5 5 6 6 7 7 8 8 9 9 10 10", &pts),
+                    CASTELJAU_ERROR_LIMIT, "10");
         CHECK(pts == NULL);
         CHECK_ERROR(casteljau_font_load(font_path, &nofont), CASTELJAU_ERROR_LIMIT, "1000");
-        CHECK_ERROR(casteljau_canvas_draw_text(canvas, font, "hello world", 10, 0, 0, solid), CASTELJAU_ERROR_LIMIT, "5");
+        CHECK_ERROR(casteljau_canvas_draw_text(canvas, font, "hello world", 10, 0, 0, solid), CASTELJAU_ERROR_LIMIT,
+                    "5");
         CHECK(casteljau_canvas_create(big, &small) == CASTELJAU_OK);
         for (i = 0; i < 3; ++i) CHECK(casteljau_canvas_save(small) == CASTELJAU_OK);
         CHECK_ERROR(casteljau_canvas_save(small), CASTELJAU_ERROR_LIMIT, "3");
@@ -289,7 +293,9 @@ int main(int argc, char** argv) {
     casteljau_font_destroy(font);
     casteljau_path_destroy(NULL);
     casteljau_canvas_destroy(NULL);
-    if (failures) fprintf(stderr, "%d checks failed\n", failures);
-    else printf("C API: all checks passed\n");
+    if (failures)
+        fprintf(stderr, "%d checks failed\n", failures);
+    else
+        printf("C API: all checks passed\n");
     return failures ? 1 : 0;
 }

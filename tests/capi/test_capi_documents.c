@@ -23,28 +23,28 @@ static int failures = 0;
         }                                                                            \
     } while (0)
 
-#define CHECK_OK(call)                                                                                   \
-    do {                                                                                                 \
-        casteljau_status s_ = (call);                                                                    \
-        if (s_ != CASTELJAU_OK) {                                                                        \
+#define CHECK_OK(call)                                                                                    \
+    do {                                                                                                  \
+        casteljau_status s_ = (call);                                                                     \
+        if (s_ != CASTELJAU_OK) {                                                                         \
             fprintf(stderr, "%s:%d: %s failed: %s\n", __FILE__, __LINE__, #call, casteljau_last_error()); \
-            ++failures;                                                                                  \
-        }                                                                                                \
+            ++failures;                                                                                   \
+        }                                                                                                 \
     } while (0)
 
 /* Expects `call` to fail with `status` and a last-error message containing `needle`. */
-#define CHECK_ERROR(call, status, needle)                                                                          \
-    do {                                                                                                           \
-        casteljau_status s_ = (call);                                                                              \
-        if (s_ != (status)) {                                                                                      \
+#define CHECK_ERROR(call, status, needle)                                                                           \
+    do {                                                                                                            \
+        casteljau_status s_ = (call);                                                                               \
+        if (s_ != (status)) {                                                                                       \
             fprintf(stderr, "%s:%d: %s gave %d, expected %d\n", __FILE__, __LINE__, #call, (int)s_, (int)(status)); \
-            ++failures;                                                                                            \
-        }                                                                                                          \
-        if (strstr(casteljau_last_error(), (needle)) == NULL || casteljau_last_error()[0] == '\0') {               \
+            ++failures;                                                                                             \
+        }                                                                                                           \
+        if (strstr(casteljau_last_error(), (needle)) == NULL || casteljau_last_error()[0] == '\0') {                \
             fprintf(stderr, "%s:%d: message \"%s\" lacks \"%s\"\n", __FILE__, __LINE__, casteljau_last_error(),     \
-                    (needle));                                                                                     \
-            ++failures;                                                                                            \
-        }                                                                                                          \
+                    (needle));                                                                                      \
+            ++failures;                                                                                             \
+        }                                                                                                           \
     } while (0)
 
 static char source[2048], scratch[2048];
@@ -86,8 +86,9 @@ static void check_svg(void) {
     double w = 0, h = 0;
     int ow = 0, oh = 0;
     const casteljau_color white = {255, 255, 255, 255}, clear = {0, 0, 0, 0};
-    const char* svg_text = "<svg xmlns='http://www.w3.org/2000/svg' width='60.5' height='20'>"
-                           "<text x='2' y='16' font-family='sans-serif' font-size='14'>Svg</text><blink/></svg>";
+    const char* svg_text =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='60.5' height='20'>"
+        "<text x='2' y='16' font-family='sans-serif' font-size='14'>Svg</text><blink/></svg>";
     CHECK(options != NULL);
     CHECK_OK(casteljau_svg_options_add_font_dir(options, in_source("fonts")));
     CHECK_OK(casteljau_svg_options_add_font_file(options, in_source("fonts/DejaVuSans.ttf")));
@@ -133,14 +134,17 @@ static void check_svg(void) {
     /* Bad input */
     CHECK_ERROR(casteljau_svg_parse((const uint8_t*)"<svg", 4, NULL, &bad), CASTELJAU_ERROR_PARSE, "");
     CHECK(bad == NULL);
-    CHECK_ERROR(casteljau_svg_parse((const uint8_t*)"<svg xmlns='http://www.w3.org/2000/svg' width='0'/>", 51, NULL, &bad),
-                CASTELJAU_ERROR_INVALID_DATA, "positive");
+    CHECK_ERROR(
+        casteljau_svg_parse((const uint8_t*)"<svg xmlns='http://www.w3.org/2000/svg' width='0'/>", 51, NULL, &bad),
+        CASTELJAU_ERROR_INVALID_DATA, "positive");
     CHECK_ERROR(casteljau_svg_parse(NULL, 5, NULL, &bad), CASTELJAU_ERROR_INVALID_ARGUMENT, "data is NULL");
     CHECK_ERROR(casteljau_svg_load(in_scratch("no-such.svg"), NULL, &bad), CASTELJAU_ERROR_IO, "no-such.svg");
     CHECK_ERROR(casteljau_svg_load(NULL, NULL, &bad), CASTELJAU_ERROR_INVALID_ARGUMENT, "path is NULL");
-    CHECK_ERROR(casteljau_svg_load(in_source("examples/data/badge.svg"), NULL, NULL), CASTELJAU_ERROR_INVALID_ARGUMENT, "out");
+    CHECK_ERROR(casteljau_svg_load(in_source("examples/data/badge.svg"), NULL, NULL), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "out");
     CHECK_OK(casteljau_svg_options_add_font_dir(options, in_scratch("no-such-fonts")));
-    CHECK_ERROR(casteljau_svg_load(in_source("examples/data/badge.svg"), options, &bad), CASTELJAU_ERROR_IO, "no-such-fonts");
+    CHECK_ERROR(casteljau_svg_load(in_source("examples/data/badge.svg"), options, &bad), CASTELJAU_ERROR_IO,
+                "no-such-fonts");
     CHECK(bad == NULL);
     CHECK_ERROR(casteljau_svg_options_set_font_family(options, (casteljau_font_generic)6, "X"),
                 CASTELJAU_ERROR_INVALID_ARGUMENT, "generic");
@@ -166,13 +170,15 @@ static void check_svg(void) {
 }
 
 static void check_map(void) {
-    const char* geojson = "{\"type\": \"FeatureCollection\", \"features\": ["
-                          "{\"type\": \"Feature\", \"properties\": {\"v\": 1}, \"geometry\": {\"type\": \"Polygon\","
-                          " \"coordinates\": [[[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]]]}},"
-                          "{\"type\": \"Feature\", \"properties\": {\"v\": 9}, \"geometry\": {\"type\": \"Polygon\","
-                          " \"coordinates\": [[[10, 0], [20, 0], [20, 10], [10, 10], [10, 0]]]}}]}";
-    const char* style_json = "{\"background\": \"white\", \"layers\": [{\"fill_by\": \"v\", \"ramp\": [[0, \"#ffffff\"],"
-                             " [10, \"#000080\"]], \"stroke\": \"black\", \"width\": 1}]}";
+    const char* geojson =
+        "{\"type\": \"FeatureCollection\", \"features\": ["
+        "{\"type\": \"Feature\", \"properties\": {\"v\": 1}, \"geometry\": {\"type\": \"Polygon\","
+        " \"coordinates\": [[[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]]]}},"
+        "{\"type\": \"Feature\", \"properties\": {\"v\": 9}, \"geometry\": {\"type\": \"Polygon\","
+        " \"coordinates\": [[[10, 0], [20, 0], [20, 10], [10, 10], [10, 0]]]}}]}";
+    const char* style_json =
+        "{\"background\": \"white\", \"layers\": [{\"fill_by\": \"v\", \"ramp\": [[0, \"#ffffff\"],"
+        " [10, \"#000080\"]], \"stroke\": \"black\", \"width\": 1}]}";
     casteljau_map *map = NULL, *world = NULL, *bad = (casteljau_map*)1;
     casteljau_map_style *style = casteljau_map_style_create(), *from_file = NULL, *nostyle = NULL;
     casteljau_map_options* options = casteljau_map_options_create();
@@ -253,28 +259,37 @@ static void check_map(void) {
                 CASTELJAU_ERROR_PARSE, "");
     CHECK_ERROR(casteljau_map_parse("{\"type\": \"Point\", \"coordinates\": [0, 91]}", 41, NULL, &bad),
                 CASTELJAU_ERROR_INVALID_DATA, "coordinates");
-    CHECK_ERROR(casteljau_map_parse(geojson, strlen(geojson), "countries", &bad), CASTELJAU_ERROR_INVALID_ARGUMENT, "TopoJSON");
+    CHECK_ERROR(casteljau_map_parse(geojson, strlen(geojson), "countries", &bad), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "TopoJSON");
     CHECK_ERROR(casteljau_map_load(in_source("tests/data/maps/countries-110m.json"), "nowhere", &bad),
                 CASTELJAU_ERROR_INVALID_ARGUMENT, "nowhere");
     CHECK_ERROR(casteljau_map_load(in_scratch("no-such.geojson"), NULL, &bad), CASTELJAU_ERROR_IO, "no-such.geojson");
-    CHECK_ERROR(casteljau_map_options_set_projection(options, "+proj=nonsense"), CASTELJAU_ERROR_INVALID_ARGUMENT, "nonsense");
-    CHECK_ERROR(casteljau_map_options_set_projection(options, NULL), CASTELJAU_ERROR_INVALID_ARGUMENT, "projection is NULL");
+    CHECK_ERROR(casteljau_map_options_set_projection(options, "+proj=nonsense"), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "nonsense");
+    CHECK_ERROR(casteljau_map_options_set_projection(options, NULL), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "projection is NULL");
     CHECK_ERROR(casteljau_map_options_set_bbox(options, 10, 0, 0, 10), CASTELJAU_ERROR_INVALID_ARGUMENT, "bbox");
     CHECK_ERROR(casteljau_map_options_set_bbox(options, 0, NAN, 10, 10), CASTELJAU_ERROR_INVALID_ARGUMENT, "bbox");
     CHECK_ERROR(casteljau_map_options_set_size(options, 0, 0), CASTELJAU_ERROR_INVALID_ARGUMENT, "width");
     CHECK_ERROR(casteljau_map_options_set_tolerance(options, 0), CASTELJAU_ERROR_INVALID_ARGUMENT, "tolerance");
     CHECK_ERROR(casteljau_map_options_set_padding(options, -1), CASTELJAU_ERROR_INVALID_ARGUMENT, "padding");
     CHECK_ERROR(casteljau_map_style_set_ramp(style, 5, white, 5, navy), CASTELJAU_ERROR_INVALID_ARGUMENT, "ramp");
-    CHECK_ERROR(casteljau_map_style_set_stroke_width(style, INFINITY), CASTELJAU_ERROR_INVALID_ARGUMENT, "stroke width");
+    CHECK_ERROR(casteljau_map_style_set_stroke_width(style, INFINITY), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "stroke width");
     CHECK_ERROR(casteljau_map_style_set_opacity(style, 2), CASTELJAU_ERROR_INVALID_ARGUMENT, "opacity");
-    CHECK_ERROR(casteljau_map_style_set_line_join(style, (casteljau_line_join)7), CASTELJAU_ERROR_INVALID_ARGUMENT, "join");
-    CHECK_ERROR(casteljau_map_style_set_line_cap(style, (casteljau_line_cap)-1), CASTELJAU_ERROR_INVALID_ARGUMENT, "cap");
+    CHECK_ERROR(casteljau_map_style_set_line_join(style, (casteljau_line_join)7), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "join");
+    CHECK_ERROR(casteljau_map_style_set_line_cap(style, (casteljau_line_cap)-1), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "cap");
     CHECK_ERROR(casteljau_map_style_set_point_radius(NULL, 1), CASTELJAU_ERROR_INVALID_ARGUMENT, "style is NULL");
     CHECK_ERROR(casteljau_map_style_parse("{\"layers\": 5}", &nostyle), CASTELJAU_ERROR_PARSE, "layers");
     CHECK(nostyle == NULL);
-    CHECK_ERROR(casteljau_map_style_load(in_scratch("no-such-style.json"), &nostyle), CASTELJAU_ERROR_IO, "no-such-style");
-    CHECK_ERROR(casteljau_map_render_image(NULL, style, options, &image), CASTELJAU_ERROR_INVALID_ARGUMENT, "map is NULL");
-    CHECK_ERROR(casteljau_map_render_image(map, style, NULL, &image), CASTELJAU_ERROR_INVALID_ARGUMENT, "options is NULL");
+    CHECK_ERROR(casteljau_map_style_load(in_scratch("no-such-style.json"), &nostyle), CASTELJAU_ERROR_IO,
+                "no-such-style");
+    CHECK_ERROR(casteljau_map_render_image(NULL, style, options, &image), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "map is NULL");
+    CHECK_ERROR(casteljau_map_render_image(map, style, NULL, &image), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "options is NULL");
     CHECK_ERROR(casteljau_map_render(map, style, options, NULL), CASTELJAU_ERROR_INVALID_ARGUMENT, "canvas is NULL");
     {
         casteljau_map* empty = NULL;
@@ -378,8 +393,8 @@ static void check_tiles(void) {
     CHECK_ERROR(casteljau_tile_options_set_tolerance(options, NAN), CASTELJAU_ERROR_INVALID_ARGUMENT, "tolerance");
     CHECK_ERROR(casteljau_map_render_tiles(world, NULL, NULL, in_scratch("x"), NULL, NULL, NULL),
                 CASTELJAU_ERROR_INVALID_ARGUMENT, "options is NULL");
-    CHECK_ERROR(casteljau_map_render_tiles(world, NULL, options, NULL, NULL, NULL, NULL), CASTELJAU_ERROR_INVALID_ARGUMENT,
-                "output is NULL");
+    CHECK_ERROR(casteljau_map_render_tiles(world, NULL, options, NULL, NULL, NULL, NULL),
+                CASTELJAU_ERROR_INVALID_ARGUMENT, "output is NULL");
     CHECK_ERROR(casteljau_map_render_tiles(world, NULL, options, "/nonexistent-dir/x.mbtiles", NULL, NULL, NULL),
                 CASTELJAU_ERROR_IO, "nonexistent-dir");
 
@@ -447,13 +462,17 @@ static void check_text(void) {
     CHECK_ERROR(casteljau_font_load(in_scratch("no-such-font.ttf"), &nofont), CASTELJAU_ERROR_IO, "no-such-font");
     CHECK(nofont == NULL);
     CHECK_ERROR(casteljau_font_load_face(in_source("fonts/DejaVuSans.ttf"), 3, &nofont), CASTELJAU_ERROR_FONT, "");
-    CHECK_ERROR(casteljau_font_load_face(in_source("fonts/DejaVuSans.ttf"), -1, &nofont), CASTELJAU_ERROR_INVALID_ARGUMENT, "face");
+    CHECK_ERROR(casteljau_font_load_face(in_source("fonts/DejaVuSans.ttf"), -1, &nofont),
+                CASTELJAU_ERROR_INVALID_ARGUMENT, "face");
     CHECK_ERROR(casteljau_text_layout_create("x", chain, 0, NULL, &bad), CASTELJAU_ERROR_INVALID_ARGUMENT, "font");
     CHECK(bad == NULL);
-    CHECK_ERROR(casteljau_text_layout_create("x", NULL, 1, NULL, &bad), CASTELJAU_ERROR_INVALID_ARGUMENT, "fonts is NULL");
+    CHECK_ERROR(casteljau_text_layout_create("x", NULL, 1, NULL, &bad), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "fonts is NULL");
     chain[1] = NULL;
-    CHECK_ERROR(casteljau_text_layout_create("x", chain, 2, NULL, &bad), CASTELJAU_ERROR_INVALID_ARGUMENT, "font is NULL");
-    CHECK_ERROR(casteljau_text_layout_create(NULL, chain, 1, NULL, &bad), CASTELJAU_ERROR_INVALID_ARGUMENT, "text is NULL");
+    CHECK_ERROR(casteljau_text_layout_create("x", chain, 2, NULL, &bad), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "font is NULL");
+    CHECK_ERROR(casteljau_text_layout_create(NULL, chain, 1, NULL, &bad), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "text is NULL");
     CHECK_OK(casteljau_text_style_add_variation(style, "wght=700"));
     CHECK_ERROR(casteljau_text_layout_create("x", chain, 1, style, &bad), CASTELJAU_ERROR_FONT, "wght");
     CHECK_ERROR(casteljau_text_style_add_variation(style, "wght"), CASTELJAU_ERROR_PARSE, "");
@@ -465,14 +484,18 @@ static void check_text(void) {
     CHECK_ERROR(casteljau_text_style_set_size(style, 1e9), CASTELJAU_ERROR_LIMIT, "");
     CHECK_ERROR(casteljau_text_style_set_line_height(style, NAN), CASTELJAU_ERROR_INVALID_ARGUMENT, "line height");
     CHECK_ERROR(casteljau_text_style_set_width(style, -3), CASTELJAU_ERROR_INVALID_ARGUMENT, "wrap width");
-    CHECK_ERROR(casteljau_text_style_set_align(style, (casteljau_text_align)4), CASTELJAU_ERROR_INVALID_ARGUMENT, "alignment");
-    CHECK_ERROR(casteljau_text_style_set_direction(style, (casteljau_text_direction)-1), CASTELJAU_ERROR_INVALID_ARGUMENT,
-                "direction");
+    CHECK_ERROR(casteljau_text_style_set_align(style, (casteljau_text_align)4), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "alignment");
+    CHECK_ERROR(casteljau_text_style_set_direction(style, (casteljau_text_direction)-1),
+                CASTELJAU_ERROR_INVALID_ARGUMENT, "direction");
     CHECK_ERROR(casteljau_text_layout_line(layout, 99, &line), CASTELJAU_ERROR_INVALID_ARGUMENT, "line");
     CHECK_ERROR(casteljau_text_layout_draw(layout, canvas, NAN, 0, ink), CASTELJAU_ERROR_INVALID_ARGUMENT, "finite");
-    CHECK_ERROR(casteljau_text_layout_draw(NULL, canvas, 0, 0, ink), CASTELJAU_ERROR_INVALID_ARGUMENT, "layout is NULL");
-    CHECK_ERROR(casteljau_text_layout_draw(layout, canvas, 0, 0, NULL), CASTELJAU_ERROR_INVALID_ARGUMENT, "paint is NULL");
-    CHECK_ERROR(casteljau_text_layout_render_image(layout, ink, white, -1, &image), CASTELJAU_ERROR_INVALID_ARGUMENT, "padding");
+    CHECK_ERROR(casteljau_text_layout_draw(NULL, canvas, 0, 0, ink), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "layout is NULL");
+    CHECK_ERROR(casteljau_text_layout_draw(layout, canvas, 0, 0, NULL), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "paint is NULL");
+    CHECK_ERROR(casteljau_text_layout_render_image(layout, ink, white, -1, &image), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                "padding");
     CHECK_ERROR(casteljau_text_layout_size(NULL, &w, &h), CASTELJAU_ERROR_INVALID_ARGUMENT, "layout is NULL");
     CHECK_ERROR(casteljau_text_style_set_size(NULL, 10), CASTELJAU_ERROR_INVALID_ARGUMENT, "style is NULL");
     CHECK_ERROR(casteljau_paint_set_linear_blend(NULL, 1), CASTELJAU_ERROR_INVALID_ARGUMENT, "paint is NULL");
@@ -527,7 +550,9 @@ int main(int argc, char** argv) {
     check_map();
     check_tiles();
     check_text();
-    if (failures) fprintf(stderr, "%d checks failed\n", failures);
-    else printf("C API documents: all checks passed\n");
+    if (failures)
+        fprintf(stderr, "%d checks failed\n", failures);
+    else
+        printf("C API documents: all checks passed\n");
     return failures ? 1 : 0;
 }

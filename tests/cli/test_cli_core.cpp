@@ -43,8 +43,9 @@ TEST_CASE("path: half-covered pixels and the even-odd rule", "[cli]") {
     const fs::path d = scratch_dir("path-aa");
     const std::string out = (d / "a.png").string();
     // A square from x = 0.5 to 2.5: edge pixels are half covered; a nested square makes a hole under even-odd.
-    REQUIRE(run_cli("path 'M0.5 0 H2.5 V3 H0.5 Z M1 1 H2 V2 H1 Z' --size 3x3 --fill-rule evenodd -o " + shell_quote(out))
-                .status == 0);
+    REQUIRE(
+        run_cli("path 'M0.5 0 H2.5 V3 H0.5 Z M1 1 H2 V2 H1 Z' --size 3x3 --fill-rule evenodd -o " + shell_quote(out))
+            .status == 0);
     const Pixmap pm = read_png(out);
     CHECK(pm.pixel(0, 0).a == 128);
     CHECK(pm.pixel(1, 0).a == 255);
@@ -55,7 +56,8 @@ TEST_CASE("path: half-covered pixels and the even-odd rule", "[cli]") {
 TEST_CASE("path: path data from a file and from standard input", "[cli]") {
     const fs::path d = scratch_dir("path-input");
     write_text(d / "p.txt", "M0 0 H2 V2 H0 Z");
-    REQUIRE(run_cli("path @" + shell_quote((d / "p.txt").string()) + " --size 2x2 -o " + shell_quote((d / "a.png").string()))
+    REQUIRE(run_cli("path @" + shell_quote((d / "p.txt").string()) + " --size 2x2 -o " +
+                    shell_quote((d / "a.png").string()))
                 .status == 0);
     REQUIRE(run_cli("path - --size 2x2 -o " + shell_quote((d / "b.png").string()), "M0 0 H2 V2 H0 Z").status == 0);
     CHECK(read_png((d / "a.png").string()).pixel(1, 1).a == 255);
@@ -93,9 +95,9 @@ TEST_CASE("path: bad data exits 1 with one line and writes nothing", "[cli]") {
 TEST_CASE("path: bad usage exits 2", "[cli]") {
     const fs::path d = scratch_dir("path-usage");
     const std::string out = shell_quote((d / "o.png").string());
-    CHECK(run_cli("path 'M0 0 H1 V1 Z' --size 10x10").status == 2);            // missing -o
-    CHECK(run_cli("path 'M0 0 H1 V1 Z' --size 10 -o " + out).status == 2);     // bad size
-    CHECK(run_cli("path 'M0 0 H1 V1 Z' --size 0x10 -o " + out).status == 2);   // zero size
+    CHECK(run_cli("path 'M0 0 H1 V1 Z' --size 10x10").status == 2);               // missing -o
+    CHECK(run_cli("path 'M0 0 H1 V1 Z' --size 10 -o " + out).status == 2);        // bad size
+    CHECK(run_cli("path 'M0 0 H1 V1 Z' --size 0x10 -o " + out).status == 2);      // zero size
     CHECK(run_cli("path 'M0 0 H1 V1 Z' --size 99999x10 -o " + out).status == 2);  // over the limit
     CHECK(run_cli("path 'M0 0 H1 V1 Z' --size 10x10 --fill nocolour -o " + out).status == 2);
     CHECK(run_cli("path 'M0 0 H1 V1 Z' --size 10x10 --fill-rule winding -o " + out).status == 2);
@@ -130,7 +132,9 @@ TEST_CASE("svg: renders at the declared size, transparent elsewhere", "[cli][svg
     write_text(d / "a.svg",
                "<svg xmlns='http://www.w3.org/2000/svg' width='20' height='10' viewBox='0 0 40 20'>"
                "<rect x='0' y='0' width='20' height='20' fill='blue'/></svg>");
-    REQUIRE(run_cli("svg " + shell_quote((d / "a.svg").string()) + " -o " + shell_quote((d / "a.png").string())).status == 0);
+    REQUIRE(
+        run_cli("svg " + shell_quote((d / "a.svg").string()) + " -o " + shell_quote((d / "a.png").string())).status ==
+        0);
     const Pixmap pm = read_png((d / "a.png").string());
     CHECK(pm.width() == 20);
     CHECK(pm.height() == 10);
@@ -154,7 +158,8 @@ TEST_CASE("svg: bad files exit 1 with one line and write nothing", "[cli][svg]")
     for (int i = 0; i < 200; ++i) deep += "<g>";
     for (int i = 0; i < 200; ++i) deep += "</g>";
     write_text(in / "deep.svg", deep + "</svg>");
-    for (const char* f : {"empty.svg", "huge.svg", "negative.svg", "broken.svg", "notsvg.svg", "deep.svg", "missing.svg"}) {
+    for (const char* f :
+         {"empty.svg", "huge.svg", "negative.svg", "broken.svg", "notsvg.svg", "deep.svg", "missing.svg"}) {
         INFO(f);
         const CliResult r = run_cli("svg " + shell_quote((in / f).string()) + " -o " + out);
         CHECK(r.status == 1);
@@ -168,7 +173,8 @@ TEST_CASE("path: --stroke draws the stroke outline over the fill", "[cli][stroke
     const fs::path d = scratch_dir("path-stroke");
     const std::string out = (d / "s.png").string();
     // A horizontal line from x = 2 to 8 at y = 5, width 2: rows 4 and 5, columns 2..7 covered.
-    REQUIRE(run_cli("path 'M2 5 H8' --size 10x10 --fill none --stroke blue --stroke-width 2 -o " + shell_quote(out)).status == 0);
+    REQUIRE(run_cli("path 'M2 5 H8' --size 10x10 --fill none --stroke blue --stroke-width 2 -o " + shell_quote(out))
+                .status == 0);
     const Pixmap pm = read_png(out);
     CHECK(pm.pixel(4, 4) == PremulPixel{0, 0, 255, 255});
     CHECK(pm.pixel(4, 5) == PremulPixel{0, 0, 255, 255});
@@ -179,12 +185,15 @@ TEST_CASE("path: --stroke draws the stroke outline over the fill", "[cli][stroke
 
 TEST_CASE("svg: strokes with width, caps and opacity", "[cli][svg][stroke]") {
     const fs::path d = scratch_dir("svg-stroke");
-    write_text(d / "a.svg",
-               "<svg xmlns='http://www.w3.org/2000/svg' width='20' height='20'>"
-               "<line x1='4' y1='10' x2='16' y2='10' stroke='#00ff00' stroke-width='4' stroke-linecap='square'/></svg>");
-    REQUIRE(run_cli("svg " + shell_quote((d / "a.svg").string()) + " -o " + shell_quote((d / "a.png").string())).status == 0);
+    write_text(
+        d / "a.svg",
+        "<svg xmlns='http://www.w3.org/2000/svg' width='20' height='20'>"
+        "<line x1='4' y1='10' x2='16' y2='10' stroke='#00ff00' stroke-width='4' stroke-linecap='square'/></svg>");
+    REQUIRE(
+        run_cli("svg " + shell_quote((d / "a.svg").string()) + " -o " + shell_quote((d / "a.png").string())).status ==
+        0);
     const Pixmap pm = read_png((d / "a.png").string());
-    CHECK(pm.pixel(2, 9) == PremulPixel{0, 255, 0, 255});   // square cap extends 2 px
+    CHECK(pm.pixel(2, 9) == PremulPixel{0, 255, 0, 255});  // square cap extends 2 px
     CHECK(pm.pixel(17, 11) == PremulPixel{0, 255, 0, 255});
     CHECK(pm.pixel(10, 7).a == 0);
     CHECK(pm.pixel(10, 13).a == 0);
@@ -195,7 +204,9 @@ TEST_CASE("svg: strokes with width, caps and opacity", "[cli][svg][stroke]") {
                "<svg xmlns='http://www.w3.org/2000/svg' width='20' height='20'>"
                "<line x1='4' y1='10' x2='16' y2='10' stroke='#00ff00' stroke-width='4' stroke-opacity='0.5' "
                "opacity='0.5'/></svg>");
-    REQUIRE(run_cli("svg " + shell_quote((d / "b.svg").string()) + " -o " + shell_quote((d / "b.png").string())).status == 0);
+    REQUIRE(
+        run_cli("svg " + shell_quote((d / "b.svg").string()) + " -o " + shell_quote((d / "b.png").string())).status ==
+        0);
     const Pixmap half = read_png((d / "b.png").string());
     CHECK(half.pixel(10, 9) == PremulPixel{0, 64, 0, 64});
     CHECK(half.pixel(4, 10) == PremulPixel{0, 64, 0, 64});

@@ -83,20 +83,20 @@ TEST_CASE("CLI bezier: split, derivative, reduce, bounds, 3-D, JSON file", "[cur
 }
 
 TEST_CASE("CLI bezier: bad input exits 1 for data and 2 for usage", "[curves-cli]") {
-    CHECK(run("bezier --points '1,2' --eval 0.5").status == 1);            // fewer than 2 points
+    CHECK(run("bezier --points '1,2' --eval 0.5").status == 1);  // fewer than 2 points
     CHECK(run("bezier --points '' --eval 0.5").status == 1);
     std::string many;
     for (int i = 0; i < 1001; ++i) many += std::to_string(i) + ",0 ";
     CHECK(run("bezier --points '" + many + "' --eval 0.5").status == 1);  // degree 1000
-    CHECK(run("bezier --points '0,0 1,1' --eval 1.5").status == 2);        // t outside [0, 1]
+    CHECK(run("bezier --points '0,0 1,1' --eval 1.5").status == 2);       // t outside [0, 1]
     CHECK(run("bezier --points '0,0 1,1' --eval -0.1").status == 2);
-    CHECK(run("bezier --points '0,0 1,x' --eval 0.5").status == 2);        // malformed
-    CHECK(run("bezier --points '0,0 1,1,1' --eval 0.5").status == 2);      // mixed dimensions
-    CHECK(run("bezier --points '0,0 1,1'").status == 2);                   // no action
+    CHECK(run("bezier --points '0,0 1,x' --eval 0.5").status == 2);    // malformed
+    CHECK(run("bezier --points '0,0 1,1,1' --eval 0.5").status == 2);  // mixed dimensions
+    CHECK(run("bezier --points '0,0 1,1'").status == 2);               // no action
     CHECK(run("bezier --points '0,0 1,1' --eval 0.5 --elevate").status == 2);
-    CHECK(run("bezier --eval 0.5").status == 2);                           // no points
+    CHECK(run("bezier --eval 0.5").status == 2);  // no points
     CHECK(run("bezier --points '0,0 1,1' --bogus").status == 2);
-    CHECK(run("bezier --points '0,0 1,1' --reduce").status == 2);          // a line cannot be reduced
+    CHECK(run("bezier --points '0,0 1,1' --reduce").status == 2);  // a line cannot be reduced
     CHECK(run("bezier --points-file /nonexistent/x.json --eval 0.5").status == 1);
     const std::string bad = temp_file("bad.json", R"({"points": [[0, 0], [1]]})");
     CHECK(run("bezier --points-file '" + bad + "' --eval 0.5").status == 1);
@@ -114,7 +114,9 @@ TEST_CASE("CLI spline: Bezier pieces and evaluation", "[curves-cli]") {
     r = run("spline --kind nurbs --points '1,0 1,1 0,1' --weights '1 0.7071067811865476 1' --degree 2 --eval 0.5");
     CHECK(r.out == "0.707106781187 0.707106781187\n");
     r = run("spline --kind catmull-rom --points '0,0 10,10 20,0' --to-bezier");
-    CHECK(r.out == "0 0\n1.66666666667 1.66666666667\n6.66666666667 10\n10 10\n\n10 10\n13.3333333333 10\n18.3333333333 1.66666666667\n20 0\n");
+    CHECK(r.out ==
+          "0 0\n1.66666666667 1.66666666667\n6.66666666667 10\n10 10\n\n10 10\n13.3333333333 10\n18.3333333333 "
+          "1.66666666667\n20 0\n");
     r = run("spline --kind natural --points '0,0 1,2 2,4 3,6' --eval 1.5");
     CHECK(r.out == "1.5 3\n");
     r = run("spline --kind hermite --points '0,0 10,0' --tangents '30,0 0,30' --to-bezier");
@@ -123,13 +125,14 @@ TEST_CASE("CLI spline: Bezier pieces and evaluation", "[curves-cli]") {
     CHECK(r.status == 0);
     r = run("spline --kind bspline --points '0,0 1,1 2,0 3,1' --basis-at 0.5");
     CHECK(r.out == "0.125\n0.375\n0.375\n0.125\n");
-    const std::string f = temp_file("nurbs.json", R"({"points": [[1, 0], [1, 1], [0, 1]], "weights": [1, 0.5, 1], "degree": 2})");
+    const std::string f =
+        temp_file("nurbs.json", R"({"points": [[1, 0], [1, 1], [0, 1]], "weights": [1, 0.5, 1], "degree": 2})");
     r = run("spline --kind nurbs --points-file '" + f + "' --to-bezier");
     CHECK(r.out == "1 0 1\n1 1 0.5\n0 1 1\n");
 }
 
 TEST_CASE("CLI spline: bad input exits 1 for data and 2 for usage", "[curves-cli]") {
-    CHECK(run("spline --kind bspline --points '0,0' --degree 1 --to-bezier").status == 1);       // fewer than 2 points
+    CHECK(run("spline --kind bspline --points '0,0' --degree 1 --to-bezier").status == 1);  // fewer than 2 points
     CHECK(run("spline --kind natural --points '0,0' --to-bezier").status == 1);
     CHECK(run("spline --kind bspline --points '0,0 1,1 2,2' --degree 1 --knots '0 0 1 1' --to-bezier").status == 1);
     CHECK(run("spline --kind bspline --points '0,0 1,1 2,2' --degree 1 --knots '0 0 2 1 1' --to-bezier").status == 1);
@@ -140,11 +143,11 @@ TEST_CASE("CLI spline: bad input exits 1 for data and 2 for usage", "[curves-cli
     CHECK(run("spline --kind bspline --points '0,0 1,1' --degree 1000 --to-bezier").status == 2);
     const std::string f = temp_file("deg.json", R"({"points": [[0, 0], [1, 1]], "degree": 1000})");
     CHECK(run("spline --kind bspline --points-file '" + f + "' --to-bezier").status == 1);
-    CHECK(run("spline --kind bspline --points '0,0 1,1 2,0 3,1' --eval 1.5").status == 2);      // outside the domain
+    CHECK(run("spline --kind bspline --points '0,0 1,1 2,0 3,1' --eval 1.5").status == 2);  // outside the domain
     CHECK(run("spline --kind catmull-rom --points '0,0 1,1 2,0' --eval 5").status == 2);
     CHECK(run("spline --kind wobbly --points '0,0 1,1' --to-bezier").status == 2);
     CHECK(run("spline --kind bspline --points '0,0 1,1' --weights '1 1' --to-bezier").status == 2);
-    CHECK(run("spline --kind bspline --points '0,0 1,1' --degree 1").status == 2);             // no action
-    CHECK(run("spline --points '0,0 1,1' --to-bezier").status == 2);                           // no kind
+    CHECK(run("spline --kind bspline --points '0,0 1,1' --degree 1").status == 2);  // no action
+    CHECK(run("spline --points '0,0 1,1' --to-bezier").status == 2);                // no kind
     CHECK(run("spline --kind hermite --points '0,0 1,1' --tangents '1,0' --to-bezier").status == 1);
 }

@@ -80,13 +80,13 @@ TEST_CASE("bezier --render errors: exit status, one line, no file", "[curves-ren
     for (const Case& c : std::initializer_list<Case>{
              {"bezier " + kCubic + " --render " + shell_quote(out) + " --construction 1.5", 2},
              {"bezier " + kCubic + " --render " + shell_quote(out) + " --construction -0.1", 2},
-             {"bezier " + kCubic + " --construction 0.5", 2},                          // without --render
-             {"bezier " + kCubic + " --size 100x100 --eval 0.5", 2},                   // --size without --render
+             {"bezier " + kCubic + " --construction 0.5", 2},         // without --render
+             {"bezier " + kCubic + " --size 100x100 --eval 0.5", 2},  // --size without --render
              {"bezier " + kCubic + " --render " + shell_quote(out) + " --size 0x10", 2},
              {"bezier " + kCubic + " --render " + shell_quote(out) + " --size big", 2},
              {"bezier " + kCubic + " --render " + shell_quote(out) + " --eval 0.5", 2},  // two actions
-             {"bezier --points '0,0,0 1,1,1' --render " + shell_quote(out), 2},         // 3-D
-             {"bezier --points '0,0' --render " + shell_quote(out), 1},                 // one point
+             {"bezier --points '0,0,0 1,1,1' --render " + shell_quote(out), 2},          // 3-D
+             {"bezier --points '0,0' --render " + shell_quote(out), 1},                  // one point
              {"bezier " + kCubic + " --render " + shell_quote((dir / "no" / "such" / "x.png").string()), 1},
          }) {
         INFO(c.args);
@@ -100,10 +100,12 @@ TEST_CASE("bezier --render errors: exit status, one line, no file", "[curves-ren
 TEST_CASE("spline --render and --basis draw the library's figures", "[curves-render]") {
     const fs::path dir = scratch_dir("spline-render");
     const std::string curve_png = (dir / "s.png").string(), basis_png = (dir / "b.png").string();
-    const auto r = run_cli("spline --kind bspline --degree 3 --points '0,60 40,0 90,20 120,90 170,100 200,30 240,50' --render " +
-                           shell_quote(curve_png) + " --basis " + shell_quote(basis_png));
+    const auto r =
+        run_cli("spline --kind bspline --degree 3 --points '0,60 40,0 90,20 120,90 170,100 200,30 240,50' --render " +
+                shell_quote(curve_png) + " --basis " + shell_quote(basis_png));
     REQUIRE(r.status == 0);
-    const BSpline<Point> s = BSpline<Point>::clamped(3, {{0, 60}, {40, 0}, {90, 20}, {120, 90}, {170, 100}, {200, 30}, {240, 50}});
+    const BSpline<Point> s =
+        BSpline<Point>::clamped(3, {{0, 60}, {40, 0}, {90, 20}, {120, 90}, {170, 100}, {200, 30}, {240, 50}});
     std::vector<Point> knots;
     for (double u : s.breakpoints()) knots.push_back(s.eval(u));
     CHECK(max_difference(curve_png, draw_spline_figure(to_path(s.to_bezier()), s.points(), knots, {}).image) == 0);
@@ -111,18 +113,23 @@ TEST_CASE("spline --render and --basis draw the library's figures", "[curves-ren
 
     // Explicit knots with a double knot, and a non-square size.
     const std::string b2 = (dir / "b2.png").string();
-    REQUIRE(run_cli("spline --kind bspline --degree 2 --knots '0 0 0 1 2 2 3 4 4 4' --points '0,0 1,2 2,0 3,2 4,0 5,2 6,0' "
-                    "--basis " + shell_quote(b2) + " --size 480x240")
-                .status == 0);
-    CHECK(max_difference(b2, draw_basis_figure(2, std::vector<double>{0, 0, 0, 1, 2, 2, 3, 4, 4, 4}, {480, 240, 24}).image) == 0);
+    REQUIRE(
+        run_cli("spline --kind bspline --degree 2 --knots '0 0 0 1 2 2 3 4 4 4' --points '0,0 1,2 2,0 3,2 4,0 5,2 6,0' "
+                "--basis " +
+                shell_quote(b2) + " --size 480x240")
+            .status == 0);
+    CHECK(max_difference(
+              b2, draw_basis_figure(2, std::vector<double>{0, 0, 0, 1, 2, 2, 3, 4, 4, 4}, {480, 240, 24}).image) == 0);
 
     // Interpolating kinds render too (their Bézier control polygon, the data points as knots).
     const std::string cr = (dir / "cr.png").string();
-    REQUIRE(run_cli("spline --kind catmull-rom --points '0,50 40,0 90,40 130,10' --render " + shell_quote(cr)).status == 0);
+    REQUIRE(run_cli("spline --kind catmull-rom --points '0,50 40,0 90,40 130,10' --render " + shell_quote(cr)).status ==
+            0);
     CHECK(read_png(cr).width() == 400);
     // NURBS: a quarter circle.
     const std::string nu = (dir / "nurbs.png").string();
-    REQUIRE(run_cli("spline --kind nurbs --degree 2 --points '100,0 100,100 0,100' --weights '1 0.7071067811865476 1' --render " +
+    REQUIRE(run_cli("spline --kind nurbs --degree 2 --points '100,0 100,100 0,100' --weights '1 0.7071067811865476 1' "
+                    "--render " +
                     shell_quote(nu))
                 .status == 0);
     CHECK(read_png(nu).height() == 400);
@@ -140,8 +147,12 @@ TEST_CASE("spline --render/--basis errors", "[curves-render]") {
              {"spline --kind bspline --points '0,0,0 1,1,1 2,0,0 3,1,1' --render " + shell_quote(out), 2},
              {"spline --kind bspline --points '0,0 1,1 2,0 3,1' --render " + shell_quote(out) + " --eval 0.5", 2},
              {"spline --kind bspline --points '0,0 1,1 2,0 3,1' --size 10x10 --eval 0.5", 2},
-             {"spline --kind bspline --degree 3 --knots '0 0 0 1 1 1' --points '0,0 1,1 2,0 3,1' --basis " + shell_quote(out), 1},
-             {"spline --kind bspline --degree 2 --knots '0 0 0 2 1 1 1' --points '0,0 1,1 2,0 3,1' --render " + shell_quote(out), 1},
+             {"spline --kind bspline --degree 3 --knots '0 0 0 1 1 1' --points '0,0 1,1 2,0 3,1' --basis " +
+                  shell_quote(out),
+              1},
+             {"spline --kind bspline --degree 2 --knots '0 0 0 2 1 1 1' --points '0,0 1,1 2,0 3,1' --render " +
+                  shell_quote(out),
+              1},
          }) {
         INFO(c.args);
         const auto r = run_cli(c.args);
@@ -167,10 +178,11 @@ TEST_CASE("surface --render draws the shipped patch as the library does", "[surf
         int grid;
         bool shaded;
     };
-    for (const Case& c : std::initializer_list<Case>{{"", Projection::Cavalier, 10, false},
-                                                     {"--projection cabinet --grid 12", Projection::Cabinet, 12, false},
-                                                     {"--projection ortho --grid 4", Projection::Orthographic, 4, false},
-                                                     {"--shaded --grid 6", Projection::Cavalier, 6, true}}) {
+    for (const Case& c :
+         std::initializer_list<Case>{{"", Projection::Cavalier, 10, false},
+                                     {"--projection cabinet --grid 12", Projection::Cabinet, 12, false},
+                                     {"--projection ortho --grid 4", Projection::Orthographic, 4, false},
+                                     {"--shaded --grid 6", Projection::Cavalier, 6, true}}) {
         INFO(c.opts);
         const std::string out = (dir / "s.png").string();
         const auto r = run_cli("surface " + shell_quote(patch) + " --render " + shell_quote(out) + " " + c.opts);
@@ -183,8 +195,10 @@ TEST_CASE("surface --render draws the shipped patch as the library does", "[surf
     }
     // The projections differ from each other.
     const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string();
-    REQUIRE(run_cli("surface " + shell_quote(patch) + " --render " + shell_quote(a) + " --projection ortho").status == 0);
-    REQUIRE(run_cli("surface " + shell_quote(patch) + " --render " + shell_quote(b) + " --projection cabinet").status == 0);
+    REQUIRE(run_cli("surface " + shell_quote(patch) + " --render " + shell_quote(a) + " --projection ortho").status ==
+            0);
+    REQUIRE(run_cli("surface " + shell_quote(patch) + " --render " + shell_quote(b) + " --projection cabinet").status ==
+            0);
     CHECK(max_difference(a, read_png(b)) > 100);
 }
 
@@ -194,17 +208,21 @@ TEST_CASE("surface: B-spline and NURBS surfaces from JSON", "[surface-cli]") {
         "[[[0,0,0],[0,-10,50],[0,0,100],[0,-10,150]],[[50,-10,0],[50,-60,50],[50,-60,100],[50,-10,150]],"
         "[[100,0,0],[100,-60,50],[100,-60,100],[100,0,150]],[[150,-10,0],[150,-10,50],[150,0,100],[150,-10,150]],"
         "[[200,0,0],[200,0,50],[200,-10,100],[200,0,150]]]";
-    const std::string bs = write_text(dir / "bs.json", R"({"type": "bspline", "degree": [2, 3], "points": )" + grid + "}");
+    const std::string bs =
+        write_text(dir / "bs.json", R"({"type": "bspline", "degree": [2, 3], "points": )" + grid + "}");
     const std::string out = (dir / "bs.png").string();
     REQUIRE(run_cli("surface " + shell_quote(bs) + " --render " + shell_quote(out)).status == 0);
     std::vector<Point3> net;
-    const double ys[5][4] = {{0, -10, 0, -10}, {-10, -60, -60, -10}, {0, -60, -60, 0}, {-10, -10, 0, -10}, {0, 0, -10, 0}};
+    const double ys[5][4] = {
+        {0, -10, 0, -10}, {-10, -60, -60, -10}, {0, -60, -60, 0}, {-10, -10, 0, -10}, {0, 0, -10, 0}};
     for (int i = 0; i < 5; ++i)
         for (int j = 0; j < 4; ++j) net.push_back({50.0 * i, ys[i][j], 50.0 * j});
-    CHECK(max_difference(out, draw_surface_figure(BSplineSurface<Point3>::clamped(2, 3, 5, 4, net), {}, {}).image) == 0);
+    CHECK(max_difference(out, draw_surface_figure(BSplineSurface<Point3>::clamped(2, 3, 5, 4, net), {}, {}).image) ==
+          0);
 
-    const std::string nu = write_text(dir / "nu.json", R"({"type": "nurbs", "degree": [2, 3], "points": )" + grid +
-                                                           R"(, "weights": [[1,1,1,1],[1,2,2,1],[1,2,2,1],[1,1,1,1],[1,1,1,1]]})");
+    const std::string nu =
+        write_text(dir / "nu.json", R"({"type": "nurbs", "degree": [2, 3], "points": )" + grid +
+                                        R"(, "weights": [[1,1,1,1],[1,2,2,1],[1,2,2,1],[1,1,1,1],[1,1,1,1]]})");
     REQUIRE(run_cli("surface " + shell_quote(nu) + " --render " + shell_quote(out)).status == 0);
     CHECK(read_png(out).width() == 400);
 }
@@ -220,20 +238,22 @@ TEST_CASE("surface errors: bad files exit 1 with one line, bad options exit 2, n
     };
     const std::string row3 = "[[0,0,0],[1,0,0],[2,0,0]]";
     for (const Case& c : std::initializer_list<Case>{
-             {"{\"degree\": [3, 3], \"points\": [", "", 1},                                  // malformed JSON
+             {"{\"degree\": [3, 3], \"points\": [", "", 1},                                    // malformed JSON
              {"[1, 2]", "", 1},                                                                // not an object
              {"{\"points\": [" + row3 + "," + row3 + "]}", "", 1},                             // no degree
-             {"{\"degree\": [2, 2], \"points\": [" + row3 + "," + row3 + "]}", "", 1},          // 2 rows for m = 2
-             {"{\"degree\": [1, 1], \"points\": [" + row3 + "," + row3 + "]}", "", 1},          // 3 columns for n = 1
-             {"{\"degree\": [1, 2], \"points\": [" + row3 + ",[[0,0,0],[1,0,0]]]}", "", 1},     // ragged
-             {"{\"degree\": [1, 2], \"points\": [" + row3 + ",[[0,0],[1,0],[2,0]]]}", "", 1},   // 2-D point
+             {"{\"degree\": [2, 2], \"points\": [" + row3 + "," + row3 + "]}", "", 1},         // 2 rows for m = 2
+             {"{\"degree\": [1, 1], \"points\": [" + row3 + "," + row3 + "]}", "", 1},         // 3 columns for n = 1
+             {"{\"degree\": [1, 2], \"points\": [" + row3 + ",[[0,0,0],[1,0,0]]]}", "", 1},    // ragged
+             {"{\"degree\": [1, 2], \"points\": [" + row3 + ",[[0,0],[1,0],[2,0]]]}", "", 1},  // 2-D point
              {"{\"degree\": [1, 2], \"points\": [" + row3 + ",[[0,0,0],[1,\"a\",0],[2,0,0]]]}", "", 1},
-             {"{\"degree\": [0, 2], \"points\": [" + row3 + "]}", "", 1},                       // degree 0
-             {"{\"degree\": [1000, 2], \"points\": [" + row3 + "]}", "", 1},                    // absurd degree
+             {"{\"degree\": [0, 2], \"points\": [" + row3 + "]}", "", 1},     // degree 0
+             {"{\"degree\": [1000, 2], \"points\": [" + row3 + "]}", "", 1},  // absurd degree
              {"{\"type\": \"coons\", \"degree\": [1, 2], \"points\": [" + row3 + "," + row3 + "]}", "", 1},
-             {"{\"type\": \"bspline\", \"degree\": [1, 2], \"points\": [" + row3 + "," + row3 + "], \"knots_u\": [0, 1]}", "",
-              1},
-             {"{\"type\": \"nurbs\", \"degree\": [1, 2], \"points\": [" + row3 + "," + row3 + "], \"weights\": [[1,1,1],[1,0,1]]}",
+             {"{\"type\": \"bspline\", \"degree\": [1, 2], \"points\": [" + row3 + "," + row3 +
+                  "], \"knots_u\": [0, 1]}",
+              "", 1},
+             {"{\"type\": \"nurbs\", \"degree\": [1, 2], \"points\": [" + row3 + "," + row3 +
+                  "], \"weights\": [[1,1,1],[1,0,1]]}",
               "", 1},
              {"", "--projection isometric", 2},
              {"", "--grid 1", 2},

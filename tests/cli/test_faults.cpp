@@ -62,8 +62,9 @@ TEST_CASE("faults: a full disk (file-size limit) is a one-line error and leaves 
     const fs::path dir = casteljau::test::scratch_dir("faults_full_disk");
     const std::string png = (dir / "world.png").string();
     // 2 KiB may be written; the PNG is far larger.
-    const auto r = run_with("ulimit -f 2;", "map " + shell_quote(kWorld) + " --layer countries --width 1024 --fill-by name -o " +
-                                                shell_quote(png));
+    const auto r =
+        run_with("ulimit -f 2;", "map " + shell_quote(kWorld) + " --layer countries --width 1024 --fill-by name -o " +
+                                     shell_quote(png));
     INFO(r.err);
     CHECK(r.status == 1);
     CHECK(r.err.rfind("casteljau: error: ", 0) == 0);
@@ -72,8 +73,9 @@ TEST_CASE("faults: a full disk (file-size limit) is a one-line error and leaves 
     CHECK(names_in(dir).empty());  // neither the PNG nor its temporary file
     // Tiles stop at the first failed write, with no tile under its final name cut short.
     const fs::path tiles = dir / "tiles";
-    const auto t = run_with("ulimit -f 1;", "tiles " + shell_quote(kWorld) + " --layer countries --zoom 0-3 --threads 1 -o " +
-                                                 shell_quote(tiles.string()));
+    const auto t =
+        run_with("ulimit -f 1;", "tiles " + shell_quote(kWorld) + " --layer countries --zoom 0-3 --threads 1 -o " +
+                                     shell_quote(tiles.string()));
     INFO(t.err);
     CHECK(t.status == 1);
     CHECK(t.err.find("too large") != std::string::npos);
@@ -139,8 +141,9 @@ TEST_CASE("faults: truncated input files are one-line errors with no output", "[
 
 TEST_CASE("faults: a tile run killed in the middle and resumed equals an uninterrupted run", "[faults][tiles][cli]") {
     const fs::path dir = casteljau::test::scratch_dir("faults_kill_resume");
-    const std::string args = "tiles " + shell_quote(kWorld) +
-                             " --layer countries --zoom 0-5 --metatile 2 --threads 1 --fill-by name --stroke '#333' -o ";
+    const std::string args =
+        "tiles " + shell_quote(kWorld) +
+        " --layer countries --zoom 0-5 --metatile 2 --threads 1 --fill-by name --stroke '#333' -o ";
     const fs::path whole = dir / "whole", killed = dir / "killed";
     auto r = run_cli(args + shell_quote(whole.string()));
     REQUIRE(r.status == 0);

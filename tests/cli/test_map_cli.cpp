@@ -23,7 +23,8 @@ fs::path write_text(const fs::path& dir, const std::string& name, const std::str
     return p;
 }
 
-const char* kSquare = R"({"type":"Feature","properties":{"v":3},"geometry":{"type":"Polygon","coordinates":[[[0,0],[10,0],[10,10],[0,10],[0,0]]]}})";
+const char* kSquare =
+    R"({"type":"Feature","properties":{"v":3},"geometry":{"type":"Polygon","coordinates":[[[0,0],[10,0],[10,10],[0,10],[0,0]]]}})";
 
 }  // namespace
 
@@ -55,7 +56,8 @@ TEST_CASE("map CLI reads GeoJSON lines, standard input and the bbox", "[map][cli
     CHECK(pm.pixel(0, 0).a == 255);
     CHECK(pm.pixel(19, 19).a == 255);
     CHECK(pm.pixel(20, 0).a == 0);
-    r = run_cli("map - -o " + shell_quote((dir / "b.png").string()) + " --width 30 --padding 5 --fill-by v --ramp 0:white,3:red",
+    r = run_cli("map - -o " + shell_quote((dir / "b.png").string()) +
+                    " --width 30 --padding 5 --fill-by v --ramp 0:white,3:red",
                 kSquare);
     INFO(r.err);
     REQUIRE(r.status == 0);
@@ -64,9 +66,11 @@ TEST_CASE("map CLI reads GeoJSON lines, standard input and the bbox", "[map][cli
     CHECK(pm.pixel(15, 15) == casteljau::PremulPixel{255, 0, 0, 255});
     CHECK(pm.pixel(2, 2).a == 0);
     // A style file.
-    const fs::path style = write_text(dir, "style.json", R"({"layers":[{"fill":"#00ff00","stroke":"black","width":2}]})");
-    r = run_cli("map - -o " + shell_quote((dir / "c.png").string()) + " --width 30 --style " + shell_quote(style.string()),
-                kSquare);
+    const fs::path style =
+        write_text(dir, "style.json", R"({"layers":[{"fill":"#00ff00","stroke":"black","width":2}]})");
+    r = run_cli(
+        "map - -o " + shell_quote((dir / "c.png").string()) + " --width 30 --style " + shell_quote(style.string()),
+        kSquare);
     INFO(r.err);
     REQUIRE(r.status == 0);
     pm = casteljau::read_png((dir / "c.png").string());
@@ -91,17 +95,20 @@ TEST_CASE("map CLI bad input: one-line error, exit code, no output file", "[map]
         {"NaN coordinate", head + R"({"type":"Point","coordinates":[NaN,0]}}]})", "", 1, "invalid JSON at byte"},
         {"out-of-range coordinate", head + R"({"type":"Point","coordinates":[0,95]}}]})", "", 1,
          "features[0].geometry.coordinates: position"},
-        {"unclosed ring", head + R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,1]]]}}]})", "", 1, "not closed"},
+        {"unclosed ring", head + R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,1]]]}}]})", "", 1,
+         "not closed"},
         {"ring with 3 positions", head + R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[0,0]]]}}]})", "", 1,
          "at least 4 positions"},
-        {"arc index out of range", R"({"type":"Topology","objects":{"a":{"type":"Polygon","arcs":[[7]]}},"arcs":[[[0,0],[1,0],[1,1],[0,0]]]})",
+        {"arc index out of range",
+         R"({"type":"Topology","objects":{"a":{"type":"Polygon","arcs":[[7]]}},"arcs":[[[0,0],[1,0],[1,1],[0,0]]]})",
          "", 1, "arc index 7 is out of range"},
         {"unknown projection", kSquare, "--projection +proj=nonsense", 2, "unknown projection"},
         {"bad bbox", kSquare, "--bbox 10,0,5,10", 2, "--bbox"},
         {"ramp without fill-by", kSquare, "--ramp 0:red,1:blue", 2, "--ramp needs --fill-by"},
         {"bad ramp", kSquare, "--fill-by v --ramp 0:red", 2, "--ramp"},
-        {"unknown TopoJSON layer", R"({"type":"Topology","objects":{"a":{"type":"Point","coordinates":[0,0]}},"arcs":[]})",
-         "--layer b", 2, "no object named 'b'"},
+        {"unknown TopoJSON layer",
+         R"({"type":"Topology","objects":{"a":{"type":"Point","coordinates":[0,0]}},"arcs":[]})", "--layer b", 2,
+         "no object named 'b'"},
         {"bad colour", kSquare, "--fill nocolour", 2, "--fill"},
     };
     for (const Case& c : cases) {
@@ -116,9 +123,9 @@ TEST_CASE("map CLI bad input: one-line error, exit code, no output file", "[map]
         CHECK(!fs::exists(out));
     }
     // With a bbox, an empty collection is an empty (background) map.
-    const auto r = run_cli("map - -o " + shell_quote((dir / "empty.png").string()) +
-                               " --width 16 --bbox -10,-10,10,10 --background white",
-                           R"({"type":"FeatureCollection","features":[]})");
+    const auto r = run_cli(
+        "map - -o " + shell_quote((dir / "empty.png").string()) + " --width 16 --bbox -10,-10,10,10 --background white",
+        R"({"type":"FeatureCollection","features":[]})");
     CHECK(r.status == 0);
     CHECK(casteljau::read_png((dir / "empty.png").string()).pixel(3, 3) == casteljau::PremulPixel{255, 255, 255, 255});
     // A missing input file.

@@ -25,8 +25,10 @@ namespace {
 std::string quote(const std::string& s) {
     std::string q = "'";
     for (char c : s) {
-        if (c == '\'') q += "'\\''";
-        else q += c;
+        if (c == '\'')
+            q += "'\\''";
+        else
+            q += c;
     }
     return q + "'";
 }
@@ -56,7 +58,8 @@ const std::string kShippedFontEnv = std::string("CASTELJAU_FONT_DIR=") + quote(C
 // Runs `casteljau text ARGS...` and returns the exit status and standard error. `prefix` goes in
 // front of the whole command (e.g. a pipe), `env` right before the executable (environment
 // assignments, or `env -u NAME `).
-Run run_text(const std::vector<std::string>& args, const std::string& prefix = "", const std::string& env = kShippedFontEnv) {
+Run run_text(const std::vector<std::string>& args, const std::string& prefix = "",
+             const std::string& env = kShippedFontEnv) {
     const fs::path err = temp_dir() / "stderr.txt";
     std::string cmd = prefix + env + quote(CASTELJAU_CLI_PATH) + " text";
     for (const auto& a : args) {
@@ -116,14 +119,16 @@ TEST_CASE("casteljau text: '-' reads standard input, minus its final newline", "
 TEST_CASE("casteljau text: options change the picture as documented", "[text-cli]") {
     const std::string text = "The quick brown fox jumps over the lazy dog";
     const fs::path wrapped = out_path("wrapped.png");
-    REQUIRE(run_text({text, "-o", wrapped.string(), "--width", "200", "--align", "center", "--size", "20", "--padding", "0"})
+    REQUIRE(run_text(
+                {text, "-o", wrapped.string(), "--width", "200", "--align", "center", "--size", "20", "--padding", "0"})
                 .status == 0);
     const Pixmap w = read_png(wrapped.string());
     CHECK(w.width() == 200);
     CHECK(w.height() > 3 * 20);
 
     const fs::path transparent = out_path("transparent.png");
-    REQUIRE(run_text({"x", "-o", transparent.string(), "--background", "transparent", "--color", "#ff0000"}).status == 0);
+    REQUIRE(run_text({"x", "-o", transparent.string(), "--background", "transparent", "--color", "#ff0000"}).status ==
+            0);
     const Pixmap t = read_png(transparent.string());
     CHECK(t.pixel(0, 0).a == 0);
     bool red = false;
@@ -138,8 +143,8 @@ TEST_CASE("casteljau text: options change the picture as documented", "[text-cli
 
     // A fallback chain and a right-to-left line.
     const fs::path chain = out_path("chain.png");
-    const Run rc = run_text({"Salam \xD8\xB3\xD9\x84\xD8\xA7\xD9\x85", "-o", chain.string(), "--font", kLibertine, "--font",
-                             kNotoArabic});
+    const Run rc = run_text(
+        {"Salam \xD8\xB3\xD9\x84\xD8\xA7\xD9\x85", "-o", chain.string(), "--font", kLibertine, "--font", kNotoArabic});
     INFO(rc.err);
     CHECK(rc.status == 0);
 
@@ -166,7 +171,8 @@ TEST_CASE("casteljau text: CASTELJAU_FONT_DIR points at the default font", "[tex
     CHECK(slurp(a) != slurp(b));
 }
 
-TEST_CASE("casteljau text finds the shipped fonts with no CASTELJAU_FONT_DIR, wherever the build folder is", "[text-cli]") {
+TEST_CASE("casteljau text finds the shipped fonts with no CASTELJAU_FONT_DIR, wherever the build folder is",
+          "[text-cli]") {
     // The executable lies in the build folder, which may be anywhere (a packager's /tmp/build): the
     // folder fixed at configure time must still lead to the shipped DejaVu Sans.
     const fs::path a = out_path("explicit.png"), b = out_path("configured.png");
@@ -181,7 +187,8 @@ TEST_CASE("casteljau text: bad input gives a clear error, the right status and n
     const fs::path trunc = temp_dir() / "truncated.ttf";
     {
         const auto bytes = read_bytes(kDejaVu);
-        write_bytes(trunc.string(), std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(bytes.size() / 2)));
+        write_bytes(trunc.string(), std::vector<std::uint8_t>(
+                                        bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(bytes.size() / 2)));
     }
     struct Case {
         std::vector<std::string> args;
@@ -200,7 +207,10 @@ TEST_CASE("casteljau text: bad input gives a clear error, the right status and n
         {{"x", "--size=-5"}, 2, "--size: must be greater than 0", ""},
         {{"x", "--size", "1e6"}, 2, "at most 10000 pixels, got '1e6'", ""},
         {{"x", "--size", "big"}, 2, "--size: expected a number", ""},
-        {{"x", "--font", kInterVar, "--variation", "wdth=100"}, 1, "unknown variation axis 'wdth': the fonts' axes are wght", ""},
+        {{"x", "--font", kInterVar, "--variation", "wdth=100"},
+         1,
+         "unknown variation axis 'wdth': the fonts' axes are wght",
+         ""},
         {{"x", "--variation", "wght=700"}, 1, "unknown variation axis 'wght': no font given is a variable font", ""},
         {{"x", "--variation", "wght"}, 2, "--variation: invalid variation 'wght'", ""},
         {{"x", "--color", "nocolour"}, 2, "--color", ""},

@@ -78,7 +78,10 @@ std::map<std::string, Count> read_counts(const fs::path& file) {
     std::string line;
     bool inside = false;
     while (std::getline(in, line)) {
-        if (line.find(kBegin) != std::string::npos) { inside = true; continue; }
+        if (line.find(kBegin) != std::string::npos) {
+            inside = true;
+            continue;
+        }
         if (line.find(kEnd) != std::string::npos) break;
         if (!inside || line.empty() || line[0] != '|') continue;
         const auto cells = split(line, '|');
@@ -97,9 +100,11 @@ std::map<std::string, Count> read_counts(const fs::path& file) {
 }
 
 std::string table(const std::map<std::string, Count>& counts) {
-    std::string t = std::string(kBegin) + "\n| area or feature | rule B (min) | rule A (min) | files |\n| --- | ---: | ---: | ---: |\n";
+    std::string t = std::string(kBegin) +
+                    "\n| area or feature | rule B (min) | rule A (min) | files |\n| --- | ---: | ---: | ---: |\n";
     for (const auto& [k, c] : counts)
-        t += "| " + k + " | " + std::to_string(c.b) + " | " + std::to_string(c.a) + " | " + std::to_string(c.total) + " |\n";
+        t += "| " + k + " | " + std::to_string(c.b) + " | " + std::to_string(c.a) + " | " + std::to_string(c.total) +
+             " |\n";
     return t + kEnd + "\n";
 }
 
@@ -139,9 +144,7 @@ Outcome run_one(const fs::path& suite, const Entry& e, const fs::path& out_dir, 
             so.resource_root = suite.string();
             const SvgDocument doc = SvgDocument::load((suite / e.svg).string(), so);
             actual = resvg_compare::render_reference_size(doc);
-        } catch (const Error& err) {
-            o.why = std::string("error: ") + err.what();
-        }
+        } catch (const Error& err) { o.why = std::string("error: ") + err.what(); }
         if (actual.width() == 0) {
             // A rejected file passes when the reference shows nothing.
             bool empty = true;
@@ -153,8 +156,8 @@ Outcome run_one(const fs::path& suite, const Entry& e, const fs::path& out_dir, 
             o.pass_a = r.pass_a;
             o.pass_b = r.pass_b;
             if (!r.size_ok)
-                o.why = "size " + std::to_string(actual.width()) + "x" + std::to_string(actual.height()) + ", reference " +
-                        std::to_string(ref.width()) + "x" + std::to_string(ref.height());
+                o.why = "size " + std::to_string(actual.width()) + "x" + std::to_string(actual.height()) +
+                        ", reference " + std::to_string(ref.width()) + "x" + std::to_string(ref.height());
             else if (!r.pass_b)
                 o.why = std::to_string(r.bad_b) + " bad pixels (rule B), " + std::to_string(r.bad_a) + " (rule A)";
             if (!r.pass_b && images) {
@@ -193,14 +196,22 @@ int main(int argc, char** argv) {
             return argv[++i];
         };
         try {
-            if (a == "--suite") suite = value();
-            else if (a == "--counts") counts_file = value();
-            else if (a == "--out") out_dir = value();
-            else if (a == "--threads") threads = static_cast<unsigned>(std::max(1, std::stoi(value())));
-            else if (a == "--stride") stride = std::max(1, std::stoi(value()));
-            else if (a == "--only") only = value();
-            else if (a == "--update") update = true;
-            else if (a == "--no-images") images = false;
+            if (a == "--suite")
+                suite = value();
+            else if (a == "--counts")
+                counts_file = value();
+            else if (a == "--out")
+                out_dir = value();
+            else if (a == "--threads")
+                threads = static_cast<unsigned>(std::max(1, std::stoi(value())));
+            else if (a == "--stride")
+                stride = std::max(1, std::stoi(value()));
+            else if (a == "--only")
+                only = value();
+            else if (a == "--update")
+                update = true;
+            else if (a == "--no-images")
+                images = false;
             else {
                 std::cerr << "svg_conformance: unknown option " << a << "\n";
                 return 2;
@@ -240,7 +251,8 @@ int main(int argc, char** argv) {
     std::vector<std::thread> pool;
     for (unsigned t = 0; t < threads; ++t)
         pool.emplace_back([&] {
-            for (std::size_t i = next++; i < entries.size(); i = next++) outcomes[i] = run_one(suite, entries[i], out_dir, images);
+            for (std::size_t i = next++; i < entries.size(); i = next++)
+                outcomes[i] = run_one(suite, entries[i], out_dir, images);
         });
     for (auto& th : pool) th.join();
     const double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -259,18 +271,22 @@ int main(int argc, char** argv) {
             c.a += o.pass_a;
         }
         hard += o.hard_failure;
-        if (!o.pass_b) failures << e.svg << '\t' << e.area << '\t' << e.feature << '\t' << (o.pass_a ? "pass" : "fail") << '\t' << o.why << '\n';
+        if (!o.pass_b)
+            failures << e.svg << '\t' << e.area << '\t' << e.feature << '\t' << (o.pass_a ? "pass" : "fail") << '\t'
+                     << o.why << '\n';
         if (o.hard_failure) std::cout << "HARD FAILURE " << e.svg << ": " << o.why << "\n";
     }
     std::vector<std::size_t> order(entries.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return outcomes[a].seconds > outcomes[b].seconds; });
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return outcomes[a].seconds > outcomes[b].seconds; });
 
-    std::printf("resvg suite: %zu files in %.1f s on %u threads; failures and diff pictures in %s\n", entries.size(), total_s,
-                threads, out_dir.string().c_str());
+    std::printf("resvg suite: %zu files in %.1f s on %u threads; failures and diff pictures in %s\n", entries.size(),
+                total_s, threads, out_dir.string().c_str());
     std::printf("%-36s %9s %9s %6s\n", "area / feature", "rule B", "rule A", "files");
     for (const auto& [k, c] : counts)
-        std::printf("%-36s %9d %9d %6d%s\n", k.c_str(), c.b, c.a, c.total, k.find('/') == std::string::npos ? "   <- area" : "");
+        std::printf("%-36s %9d %9d %6d%s\n", k.c_str(), c.b, c.a, c.total,
+                    k.find('/') == std::string::npos ? "   <- area" : "");
     std::printf("slowest:");
     for (std::size_t i = 0; i < std::min<std::size_t>(5, order.size()); ++i)
         std::printf(" %s (%.2f s)", entries[order[i]].svg.c_str(), outcomes[order[i]].seconds);
@@ -286,7 +302,8 @@ int main(int argc, char** argv) {
         const auto it = counts.find(k);
         const Count now = it == counts.end() ? Count{} : it->second;
         if (now.b < rec.b || now.a < rec.a) {
-            std::printf("DROPPED %s: rule B %d (minimum %d), rule A %d (minimum %d)\n", k.c_str(), now.b, rec.b, now.a, rec.a);
+            std::printf("DROPPED %s: rule B %d (minimum %d), rule A %d (minimum %d)\n", k.c_str(), now.b, rec.b, now.a,
+                        rec.a);
             ++dropped;
         }
     }

@@ -47,9 +47,7 @@ template <class F>
 std::pair<ErrorKind, std::string> error_of(F&& f) {
     try {
         f();
-    } catch (const Error& e) {
-        return {e.kind(), e.what()};
-    }
+    } catch (const Error& e) { return {e.kind(), e.what()}; }
     FAIL("no Error thrown");
     return {};
 }
@@ -168,7 +166,8 @@ TEST_CASE("limits: path_points bounds parsed path data, points lists and stroke 
     auto [kind, msg] = error_of([] { parse_svg_path("M0 0 1 1 2 2 3 3 4 4 5 5 6 6 7 7 8 8 9 9 10 10"); });
     CHECK(kind == ErrorKind::Limit);
     CHECK_THAT(msg, Catch::Contains("10 points"));
-    CHECK(error_of([] { parse_points("0 0 1 1 2 2 3 3 4 4 5 5 6 6 7 7 8 8 9 9 10 10", false); }).first == ErrorKind::Limit);
+    CHECK(error_of([] { parse_points("0 0 1 1 2 2 3 3 4 4 5 5 6 6 7 7 8 8 9 9 10 10", false); }).first ==
+          ErrorKind::Limit);
     Path p;
     p.move_to({0, 0});
     for (int i = 1; i < 8; ++i) p.line_to({i * 10.0, (i % 2) * 10.0});
@@ -226,7 +225,8 @@ TEST_CASE("limits: nesting_depth bounds SVG elements, GeoJSON collections and ca
         very += "<g>";
         very_closing += "</g>";
     }
-    const Pixmap pm = SvgDocument::parse(svg(very + "<rect width='10' height='10' fill='#00f'/>" + very_closing)).render();
+    const Pixmap pm =
+        SvgDocument::parse(svg(very + "<rect width='10' height='10' fill='#00f'/>" + very_closing)).render();
     CHECK(pm.pixel(5, 5).b == 255);
 }
 
@@ -238,7 +238,8 @@ TEST_CASE("limits: svg_elements refuses a document that draws more elements (a u
     CHECK(kind == ErrorKind::Limit);
     CHECK_THAT(msg, Catch::Contains("more than 5 elements"));
     // Two rects, each used twice: 2 + 4 + the uses themselves stay above 5 too.
-    const std::string uses = "<defs><rect id='r' width='1' height='1'/></defs><use href='#r'/><use href='#r'/><use href='#r'/>";
+    const std::string uses =
+        "<defs><rect id='r' width='1' height='1'/></defs><use href='#r'/><use href='#r'/><use href='#r'/>";
     CHECK(error_of([&] { SvgDocument::parse(svg(uses)).render(); }).first == ErrorKind::Limit);
 }
 
@@ -264,7 +265,8 @@ TEST_CASE("limits: svgz_bytes bounds the inflated size of an .svgz", "[limits]")
 }
 
 TEST_CASE("limits: css_rules ignores the rules past it, with a warning", "[limits]") {
-    const std::string doc = svg("<style>rect{fill:#f00} .a{fill:#0f0} #b{fill:#00f}</style><rect id='b' class='a' width='10' height='10'/>");
+    const std::string doc = svg(
+        "<style>rect{fill:#f00} .a{fill:#0f0} #b{fill:#00f}</style><rect id='b' class='a' width='10' height='10'/>");
     CHECK(SvgDocument::parse(doc).render().pixel(5, 5).b == 255);
     ScopedLimits s([](Limits& l) { l.css_rules = 2; });
     const SvgDocument d = SvgDocument::parse(doc);
@@ -273,7 +275,8 @@ TEST_CASE("limits: css_rules ignores the rules past it, with a warning", "[limit
 }
 
 TEST_CASE("limits: svg_text_chars cuts SVG text with a warning", "[limits]") {
-    const std::string doc = svg("<text x='0' y='20' font-family='DejaVu Sans' font-size='10'>abcdefghijklmnopqrst</text>", 200, 40);
+    const std::string doc =
+        svg("<text x='0' y='20' font-family='DejaVu Sans' font-size='10'>abcdefghijklmnopqrst</text>", 200, 40);
     SvgOptions o;
     FontDatabaseOptions fo;
     fo.font_dirs = {CASTELJAU_TEST_FONT_DIR};
@@ -286,8 +289,9 @@ TEST_CASE("limits: svg_text_chars cuts SVG text with a warning", "[limits]") {
 }
 
 TEST_CASE("limits: filter_pixels and filter_primitives bound SVG filters", "[limits]") {
-    const std::string blur = "<filter id='f'><feGaussianBlur stdDeviation='2'/><feOffset dx='1'/></filter>"
-                             "<rect x='5' y='5' width='30' height='30' filter='url(#f)'/>";
+    const std::string blur =
+        "<filter id='f'><feGaussianBlur stdDeviation='2'/><feOffset dx='1'/></filter>"
+        "<rect x='5' y='5' width='30' height='30' filter='url(#f)'/>";
     CHECK_NOTHROW(SvgDocument::parse(svg(blur)).render());
     {
         ScopedLimits s([](Limits& l) { l.filter_pixels = 100; });

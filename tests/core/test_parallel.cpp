@@ -113,8 +113,7 @@ TEST_CASE("parallel: successive calls reuse the pool's threads instead of starti
             last_call = call;
             ++helped;
             int m = most.load();
-            while (helped > m && !most.compare_exchange_weak(m, helped)) {
-            }
+            while (helped > m && !most.compare_exchange_weak(m, helped)) {}
         });
     CHECK(most.load() >= 2);
 }

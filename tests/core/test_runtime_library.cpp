@@ -31,13 +31,15 @@ TEST_CASE("runtime library: functions are found, and a missing library or functi
     CHECK(missing.error().rfind("cannot load Nothing (libcasteljau-no-such-library.so.0): ", 0) == 0);
 }
 
-TEST_CASE("runtime library: casteljau text loads neither SQLite nor PROJ, an MBTiles run loads SQLite", "[platform][cli]") {
+TEST_CASE("runtime library: casteljau text loads neither SQLite nor PROJ, an MBTiles run loads SQLite",
+          "[platform][cli]") {
     using namespace casteljau::test;
     const auto dir = scratch_dir("runtime_library");
     // The dynamic loader lists every object it loads on stderr.
     ::setenv("LD_DEBUG", "files", 1);
-    const CliResult text = run_cli("text Ag --font " + shell_quote(std::string(CASTELJAU_TEST_FONT_DIR) + "/DejaVuSans.ttf") +
-                                   " --size 24 -o " + shell_quote((dir / "a.png").string()));
+    const CliResult text =
+        run_cli("text Ag --font " + shell_quote(std::string(CASTELJAU_TEST_FONT_DIR) + "/DejaVuSans.ttf") +
+                " --size 24 -o " + shell_quote((dir / "a.png").string()));
     const CliResult tiles =
         run_cli("tiles " + shell_quote(std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/maps/countries-110m.json") +
                 " --layer countries --zoom 0-0 -o " + shell_quote((dir / "t.mbtiles").string()));

@@ -54,7 +54,8 @@ TEST_CASE("Bezier: the cubic power-form matrix is the textbook one", "[bezier]")
     CHECK(bernstein_to_power_matrix(2) == std::vector<double>{1, 0, 0, -2, 2, 0, 1, -2, 1});
 }
 
-TEST_CASE("Bezier: elevating (0,0),(0,100),(100,0),(100,100) gives (0,0),(0,75),(50,50),(100,25),(100,100)", "[bezier]") {
+TEST_CASE("Bezier: elevating (0,0),(0,100),(100,0),(100,100) gives (0,0),(0,75),(50,50),(100,25),(100,100)",
+          "[bezier]") {
     const Bezier<Point> c{{0, 0}, {0, 100}, {100, 0}, {100, 100}};
     const Bezier<Point> e = c.elevated();
     REQUIRE(e.degree() == 4);
@@ -233,7 +234,8 @@ TEST_CASE("Bezier: symmetry, end points and end tangents over random curves", "[
         CHECK(c.eval(0) == pts.front());
         CHECK(c.eval(1) == pts.back());
         CHECK(dist(c.derivative(1, 0), (pts[1] - pts[0]) * n) <= 1e-12 * scale * n);
-        CHECK(dist(c.derivative(1, 1), (pts[static_cast<std::size_t>(n)] - pts[static_cast<std::size_t>(n) - 1]) * n) <= 1e-12 * scale * n);
+        CHECK(dist(c.derivative(1, 1), (pts[static_cast<std::size_t>(n)] - pts[static_cast<std::size_t>(n) - 1]) * n) <=
+              1e-12 * scale * n);
     }
 }
 
@@ -447,7 +449,8 @@ TEST_CASE("Bezier: G1 and G2 joins from alpha and beta", "[bezier]") {
 }
 
 TEST_CASE("Bezier: to Path, exact verbs up to cubic and proven cubic approximations above", "[bezier]") {
-    const Bezier<Point> line{{0, 0}, {10, 0}}, quad{{0, 0}, {5, 10}, {10, 0}}, cubic{{0, 0}, {0, 10}, {10, 10}, {10, 0}};
+    const Bezier<Point> line{{0, 0}, {10, 0}}, quad{{0, 0}, {5, 10}, {10, 0}},
+        cubic{{0, 0}, {0, 10}, {10, 10}, {10, 0}};
     CHECK(to_path(line).verbs().size() == 2);
     CHECK(to_path(quad).verbs()[1] == Verb::Quad);
     const Path pc = to_path(cubic);
@@ -471,7 +474,8 @@ TEST_CASE("Bezier: to Path, exact verbs up to cubic and proven cubic approximati
         CHECK(p.points().back() == c.back());
     }
     // Pieces sharing end points share a contour.
-    const std::vector<Bezier<Point>> pieces = {cubic, Bezier<Point>{{10, 0}, {20, 0}}, Bezier<Point>{{50, 50}, {60, 60}}};
+    const std::vector<Bezier<Point>> pieces = {cubic, Bezier<Point>{{10, 0}, {20, 0}},
+                                               Bezier<Point>{{50, 50}, {60, 60}}};
     CHECK(to_path(pieces).contour_count() == 2);
 }
 
@@ -481,9 +485,7 @@ TEST_CASE("Bezier: bad input gives clear errors", "[bezier]") {
     auto kind_of = [](auto&& f) {
         try {
             f();
-        } catch (const Error& e) {
-            return e.kind();
-        }
+        } catch (const Error& e) { return e.kind(); }
         return ErrorKind::Io;  // "did not throw" marker for these tests
     };
     CHECK(kind_of([] { Bezier<Point>(std::vector<Point>{}); }) == ErrorKind::InvalidData);
@@ -502,8 +504,9 @@ TEST_CASE("Bezier: bad input gives clear errors", "[bezier]") {
     CHECK(kind_of([&] { c.split(2); }) == ErrorKind::InvalidArgument);
     CHECK(kind_of([&] { c.derivative(-1, 0.5); }) == ErrorKind::InvalidArgument);
     CHECK(kind_of([&] { c.elevated(63); }) == ErrorKind::Limit);
-    CHECK(kind_of([&] { reduce_degree(Bezier<Point>{{0, 0}, {1, 1}}, ReductionMethod::Combined); }) ==
-          ErrorKind::InvalidArgument);
+    CHECK(kind_of([&] {
+              reduce_degree(Bezier<Point>{{0, 0}, {1, 1}}, ReductionMethod::Combined);
+          }) == ErrorKind::InvalidArgument);
     CHECK(kind_of([&] { g1_join_points(c, 0.0); }) == ErrorKind::InvalidArgument);
     CHECK(kind_of([&] { g1_join_points(c, -1.0); }) == ErrorKind::InvalidArgument);
     CHECK(kind_of([&] { to_path(c, 0.0); }) == ErrorKind::InvalidArgument);

@@ -23,7 +23,8 @@ std::vector<double> random_weights(std::mt19937& rng, std::size_t n) {
 }
 
 // Direct formula sum w_i P_i B_i / sum w_i B_i.
-template <class P> P rational_direct(const std::vector<P>& pts, const std::vector<double>& w, double t) {
+template <class P>
+P rational_direct(const std::vector<P>& pts, const std::vector<double>& w, double t) {
     const int n = static_cast<int>(pts.size()) - 1;
     P num{};
     double den = 0;
@@ -91,8 +92,8 @@ TEST_CASE("NURBS: circular and elliptical arcs are exact", "[nurbs]") {
         }
         const Point end = e.eval(1) - c;
         const double ex = std::cos(start + big), ey = std::sin(start + big);
-        CHECK(dist(end, Point{std::cos(rot) * rx * ex - std::sin(rot) * ry * ey, std::sin(rot) * rx * ex + std::cos(rot) * ry * ey}) <=
-              1e-10 * (1 + c.length()));
+        CHECK(dist(end, Point{std::cos(rot) * rx * ex - std::sin(rot) * ry * ey,
+                              std::sin(rot) * rx * ex + std::cos(rot) * ry * ey}) <= 1e-10 * (1 + c.length()));
     }
     CHECK(conic_kind(1.0) == ConicKind::Parabola);
     CHECK(conic_kind(2.0) == ConicKind::Hyperbola);

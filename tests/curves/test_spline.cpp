@@ -22,7 +22,8 @@ double naive_basis(int i, int p, const std::vector<double>& U, double t) {
     if (p == 0) return U[I] <= t && t < U[I + 1] ? 1.0 : 0.0;
     double v = 0;
     if (U[I + Pp] > U[I]) v += (t - U[I]) / (U[I + Pp] - U[I]) * naive_basis(i, p - 1, U, t);
-    if (U[I + Pp + 1] > U[I + 1]) v += (U[I + Pp + 1] - t) / (U[I + Pp + 1] - U[I + 1]) * naive_basis(i + 1, p - 1, U, t);
+    if (U[I + Pp + 1] > U[I + 1])
+        v += (U[I + Pp + 1] - t) / (U[I + Pp + 1] - U[I + 1]) * naive_basis(i + 1, p - 1, U, t);
     return v;
 }
 
@@ -50,7 +51,8 @@ std::vector<double> random_knots(std::mt19937& rng, int p, std::size_t count, bo
     }
 }
 
-template <class P> BSpline<P> random_spline(std::mt19937& rng, int kind) {
+template <class P>
+BSpline<P> random_spline(std::mt19937& rng, int kind) {
     const int p = 1 + static_cast<int>(uniform(rng, 0, 5));
     const std::size_t count = static_cast<std::size_t>(p) + 1 + static_cast<std::size_t>(uniform(rng, 0, 8));
     auto pts = random_points<P>(rng, count);
@@ -94,7 +96,8 @@ TEST_CASE("B-spline basis: the uniform cubic at a knot and mid-span", "[spline]"
     CHECK(B[2] == Approx(0.0625));
 }
 
-TEST_CASE("B-spline basis: partition of unity, non-negativity, local support, agreement with the recursion", "[spline]") {
+TEST_CASE("B-spline basis: partition of unity, non-negativity, local support, agreement with the recursion",
+          "[spline]") {
     std::mt19937 rng(101);
     for (int rep = 0; rep < 300; ++rep) {
         const int p = rep % 6;  // degrees 0..5
@@ -284,7 +287,8 @@ TEST_CASE("B-spline: periodic splines close with C^(p-1) continuity", "[spline]"
         const auto s = BSpline<Point>::periodic(p, pts);
         const double a = s.domain_start(), b = s.domain_end();
         CHECK(b - a == 7);
-        for (int k = 0; k < p; ++k) CHECK(dist(s.derivative(k, a), s.derivative(k, b)) <= 1e-9 * (1 + s.derivative(k, a).length()));
+        for (int k = 0; k < p; ++k)
+            CHECK(dist(s.derivative(k, a), s.derivative(k, b)) <= 1e-9 * (1 + s.derivative(k, a).length()));
     }
 }
 
@@ -297,8 +301,8 @@ TEST_CASE("B-spline: knot multiplicity p passes through a control point, p + 1 b
     std::vector<Point> eight = pts;
     eight.push_back({70, 20});
     const BSpline<Point> c(3, eight, {0, 0, 0, 0, 0.5, 0.5, 0.5, 0.5, 1, 1, 1, 1});
-    CHECK(dist(c.eval(0.5), eight[4]) <= 1e-12);           // the right piece starts at P_4
-    CHECK(dist(c.eval(0.5 - 1e-12), eight[3]) <= 1e-9);    // the left piece ends at P_3
+    CHECK(dist(c.eval(0.5), eight[4]) <= 1e-12);         // the right piece starts at P_4
+    CHECK(dist(c.eval(0.5 - 1e-12), eight[3]) <= 1e-9);  // the left piece ends at P_3
     CHECK(c.to_bezier().size() == 2);
 }
 
@@ -325,7 +329,8 @@ TEST_CASE("Hermite: the Mh basis and the Bezier form agree", "[spline]") {
         const Point p0 = random_point<Point>(rng), p1 = random_point<Point>(rng);
         const Point m0 = random_point<Point>(rng), m1 = random_point<Point>(rng);
         const Bezier<Point> b = hermite_to_bezier(p0, m0, p1, m1);
-        for (int k = 0; k <= 10; ++k) CHECK(dist(hermite_eval(p0, m0, p1, m1, k / 10.0), b.eval(k / 10.0)) <= 1e-12 * 300);
+        for (int k = 0; k <= 10; ++k)
+            CHECK(dist(hermite_eval(p0, m0, p1, m1, k / 10.0), b.eval(k / 10.0)) <= 1e-12 * 300);
         CHECK(dist(b.derivative(1, 0), m0) <= 1e-12 * 300);
         CHECK(dist(b.derivative(1, 1), m1) <= 1e-12 * 300);
     }
@@ -393,7 +398,8 @@ TEST_CASE("Kochanek-Bartels: reduces to Catmull-Rom and Cardinal, continuity -1 
             CHECK(dist(biased[i - 1].derivative(1, 1), biased[i].derivative(1, 0)) <= 1e-10 * 300);
         const auto kinked = kochanek_bartels_spline<Point>(pts, {0, 0.5, 0});
         int kinks = 0;
-        for (std::size_t i = 1; i < kinked.size(); ++i) kinks += join_continuity(kinked[i - 1], kinked[i]) == Continuity::G0;
+        for (std::size_t i = 1; i < kinked.size(); ++i)
+            kinks += join_continuity(kinked[i - 1], kinked[i]) == Continuity::G0;
         CHECK(kinks > 0);
         // c = -1: each piece is its chord (box corners).
         const auto box = kochanek_bartels_spline<Point>(pts, {0, -1, 0});
@@ -407,7 +413,8 @@ TEST_CASE("Kochanek-Bartels: reduces to Catmull-Rom and Cardinal, continuity -1 
 
 TEST_CASE("Natural cubic spline: through the points, C2, zero curvature at the ends", "[spline]") {
     std::mt19937 rng(113);
-    for (Parametrization param : {Parametrization::Uniform, Parametrization::ChordLength, Parametrization::Centripetal}) {
+    for (Parametrization param :
+         {Parametrization::Uniform, Parametrization::ChordLength, Parametrization::Centripetal}) {
         for (int rep = 0; rep < 30; ++rep) {
             const auto pts = random_points<Point3>(rng, 2 + static_cast<std::size_t>(rep % 9));
             const auto s = natural_spline<Point3>(pts, param);
@@ -415,7 +422,9 @@ TEST_CASE("Natural cubic spline: through the points, C2, zero curvature at the e
             std::vector<double> h;
             for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
                 const double d = (pts[i + 1] - pts[i]).length();
-                h.push_back(param == Parametrization::Uniform ? 1 : param == Parametrization::ChordLength ? d : std::sqrt(d));
+                h.push_back(param == Parametrization::Uniform       ? 1
+                            : param == Parametrization::ChordLength ? d
+                                                                    : std::sqrt(d));
             }
             for (std::size_t i = 0; i < s.size(); ++i) {
                 CHECK(s[i].front() == pts[i]);
@@ -463,8 +472,9 @@ TEST_CASE("Splines: bad input gives clear errors", "[spline]") {
     CHECK(kind_of([&] { natural_spline<Point>(one); }) == ErrorKind::InvalidData);
     CHECK(kind_of([&] { catmull_rom_spline<Point>(one); }) == ErrorKind::InvalidData);
     CHECK(kind_of([&] { hermite_spline<Point>(one, one); }) == ErrorKind::InvalidData);
-    CHECK(kind_of([&] { catmull_rom_spline<Point>(std::vector<Point>{{0, 0}, {1, 1}, {2, 2}}, EndCondition::Inner); }) ==
-          ErrorKind::InvalidData);
+    CHECK(kind_of([&] {
+              catmull_rom_spline<Point>(std::vector<Point>{{0, 0}, {1, 1}, {2, 2}}, EndCondition::Inner);
+          }) == ErrorKind::InvalidData);
     // Too few control points for the degree.
     CHECK(kind_of([&] { BSpline<Point>::clamped(4, four); }) == ErrorKind::InvalidData);
     CHECK_THROWS_WITH(BSpline<Point>::clamped(4, four), "a degree-4 B-spline needs at least 5 control points, got 4");
@@ -481,7 +491,9 @@ TEST_CASE("Splines: bad input gives clear errors", "[spline]") {
     CHECK(kind_of([&] { BSpline<Point>(1, four, {0, 0, 0, 1, 1, 1}); }) == ErrorKind::InvalidData);
     CHECK(kind_of([&] { BSpline<Point>(2, four, {0, 0, 1, 1, 2, 2, 2}); }) == ErrorKind::Io);  // valid: domain [1, 2]
     CHECK(kind_of([&] { BSpline<Point>(2, four, {0, 0, 1, 1, 1, 2, 2}); }) == ErrorKind::InvalidData);  // empty domain
-    CHECK(kind_of([&] { BSpline<Point>(1, std::vector<Point>{{0, 0}, {1, 1}}, {0, 1, 1, 2}); }) == ErrorKind::InvalidData);
+    CHECK(kind_of([&] {
+              BSpline<Point>(1, std::vector<Point>{{0, 0}, {1, 1}}, {0, 1, 1, 2});
+          }) == ErrorKind::InvalidData);
     // Degree 0 and absurd degrees.
     CHECK(kind_of([&] { BSpline<Point>::clamped(0, four); }) == ErrorKind::InvalidArgument);
     CHECK_THROWS_WITH(BSpline<Point>::clamped(0, four), "B-spline degree must be at least 1, got 0");
@@ -505,12 +517,14 @@ TEST_CASE("Splines: bad input gives clear errors", "[spline]") {
     CHECK(kind_of([&] { BSpline<Point>::clamped(1, {{0, 0}, {INFINITY, 0}}); }) == ErrorKind::InvalidData);
     CHECK(kind_of([&] { cardinal_spline<Point>(four, NAN); }) == ErrorKind::InvalidArgument);
     CHECK(kind_of([&] { hermite_spline<Point>(four, std::vector<Point>{{1, 0}}); }) == ErrorKind::InvalidData);
-    CHECK(kind_of([&] { natural_spline<Point>(std::vector<Point>{{0, 0}, {0, 0}, {1, 1}}, Parametrization::ChordLength); }) ==
-          ErrorKind::InvalidData);
+    CHECK(kind_of([&] {
+              natural_spline<Point>(std::vector<Point>{{0, 0}, {0, 0}, {1, 1}}, Parametrization::ChordLength);
+          }) == ErrorKind::InvalidData);
     CHECK(kind_of([&] { hermite_eval(Point{}, Point{}, Point{}, Point{}, 2.0); }) == ErrorKind::InvalidArgument);
     // Regression: an overflowing construction names the spline, not an internal Bézier point.
     CHECK_THROWS_WITH(natural_spline<Point>(std::vector<Point>{{0, 0}, {1e308, 0}, {-1e308, 0}}),
                       "natural spline: coordinates too large (the construction overflows)");
-    CHECK(kind_of([&] { catmull_rom_spline<Point>(std::vector<Point>{{-1e308, 0}, {1e308, 0}, {-1e308, 0}}); }) ==
-          ErrorKind::InvalidData);
+    CHECK(kind_of([&] {
+              catmull_rom_spline<Point>(std::vector<Point>{{-1e308, 0}, {1e308, 0}, {-1e308, 0}});
+          }) == ErrorKind::InvalidData);
 }

@@ -16,10 +16,12 @@ using namespace curve_test;
 
 namespace {
 
-template <class P> P tensor_sum(const BezierPatch<P>& s, double u, double v) {
+template <class P>
+P tensor_sum(const BezierPatch<P>& s, double u, double v) {
     P acc{};
     for (int i = 0; i <= s.degree_u(); ++i)
-        for (int j = 0; j <= s.degree_v(); ++j) acc += s.at(i, j) * (bernstein(i, s.degree_u(), u) * bernstein(j, s.degree_v(), v));
+        for (int j = 0; j <= s.degree_v(); ++j)
+            acc += s.at(i, j) * (bernstein(i, s.degree_u(), u) * bernstein(j, s.degree_v(), v));
     return acc;
 }
 
@@ -38,8 +40,8 @@ NurbsSurface<Point3> cylinder(double r, double h) {
             w.push_back(c.weights()[i]);
         }
     }
-    return NurbsSurface<Point3>(2, 1, c.points().size(), 2, net, w, std::vector<double>(c.knots().begin(), c.knots().end()),
-                                {0, 0, 1, 1});
+    return NurbsSurface<Point3>(2, 1, c.points().size(), 2, net, w,
+                                std::vector<double>(c.knots().begin(), c.knots().end()), {0, 0, 1, 1});
 }
 
 }  // namespace
@@ -134,15 +136,17 @@ TEST_CASE("Surface normals: flat, cylindrical, degenerate", "[surface]") {
     CHECK(n.length() == Approx(1).epsilon(1e-12));
 }
 
-TEST_CASE("B-spline surface: tensor-product basis sum, iso curves, derivatives, single span equals the Bezier patch", "[surface]") {
+TEST_CASE("B-spline surface: tensor-product basis sum, iso curves, derivatives, single span equals the Bezier patch",
+          "[surface]") {
     std::mt19937 rng(304);
     for (int rep = 0; rep < 40; ++rep) {
         const int pu = 1 + rep % 3, pv = 1 + (rep / 3) % 3;
         const std::size_t nu = static_cast<std::size_t>(pu) + 1 + static_cast<std::size_t>(rep % 4);
         const std::size_t nv = static_cast<std::size_t>(pv) + 1 + static_cast<std::size_t>(rep % 3);
         const auto net = random_points<Point3>(rng, nu * nv);
-        const auto s = rep % 2 ? BSplineSurface<Point3>::clamped(pu, pv, nu, nv, net)
-                               : BSplineSurface<Point3>(pu, pv, nu, nv, net, uniform_knots(pu, nu), uniform_knots(pv, nv));
+        const auto s = rep % 2
+                           ? BSplineSurface<Point3>::clamped(pu, pv, nu, nv, net)
+                           : BSplineSurface<Point3>(pu, pv, nu, nv, net, uniform_knots(pu, nu), uniform_knots(pv, nv));
         const double scale = max_norm(net);
         for (int k = 0; k < 8; ++k) {
             const double u = uniform(rng, s.u_start(), s.u_end()), v = uniform(rng, s.v_start(), s.v_end());
@@ -170,7 +174,8 @@ TEST_CASE("B-spline surface: tensor-product basis sum, iso curves, derivatives, 
     const auto net = random_points<Point3>(rng, 16);
     const auto bs = BSplineSurface<Point3>::clamped(3, 3, 4, 4, net);
     const BezierPatch<Point3> bz(3, 3, net);
-    for (int k = 0; k <= 10; ++k) CHECK(dist(bs.eval(k / 10.0, 1 - k / 10.0), bz.eval(k / 10.0, 1 - k / 10.0)) <= 1e-12 * 300);
+    for (int k = 0; k <= 10; ++k)
+        CHECK(dist(bs.eval(k / 10.0, 1 - k / 10.0), bz.eval(k / 10.0, 1 - k / 10.0)) <= 1e-12 * 300);
 }
 
 TEST_CASE("NURBS surface: the cylinder is exact, derivatives, unit weights give the B-spline surface", "[surface]") {
@@ -299,7 +304,9 @@ TEST_CASE("Surfaces: bad input gives clear errors", "[surface]") {
     CHECK(kind_of([&] { BezierPatch<Point3>(0, 8, nine); }) == ErrorKind::InvalidArgument);
     CHECK(kind_of([&] { BezierPatch<Point3>(65, 1, std::vector<Point3>(132)); }) == ErrorKind::Limit);
     CHECK(kind_of([&] { BezierPatch<Point3>(1000, 1000, nine); }) == ErrorKind::Limit);
-    CHECK(kind_of([&] { BezierPatch<Point3>(2, 2, std::vector<Point3>(9, Point3{0, NAN, 0})); }) == ErrorKind::InvalidData);
+    CHECK(kind_of([&] {
+              BezierPatch<Point3>(2, 2, std::vector<Point3>(9, Point3{0, NAN, 0}));
+          }) == ErrorKind::InvalidData);
     const BezierPatch<Point3> s(2, 2, nine);
     CHECK(kind_of([&] { s.eval(1.5, 0); }) == ErrorKind::InvalidArgument);
     CHECK(kind_of([&] { s.eval(0, -0.5); }) == ErrorKind::InvalidArgument);
@@ -309,10 +316,13 @@ TEST_CASE("Surfaces: bad input gives clear errors", "[surface]") {
     CHECK(kind_of([&] { shaded_quads(s, View{}, 0, 2); }) == ErrorKind::InvalidArgument);
     CHECK(kind_of([&] { shaded_quads(s, View{}, 2, 2, {0, 0, 0}); }) == ErrorKind::InvalidArgument);
     CHECK(kind_of([&] { BSplineSurface<Point3>::clamped(2, 2, 3, 4, nine); }) == ErrorKind::InvalidData);
-    CHECK(kind_of([&] { BSplineSurface<Point3>(2, 2, 3, 3, nine, {0, 0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}); }) ==
-          ErrorKind::InvalidData);
-    CHECK(kind_of([&] { NurbsSurface<Point3>(2, 2, 3, 3, nine, std::vector<double>(9, 0.0), clamped_knots(2, 3),
-                                             clamped_knots(2, 3)); }) == ErrorKind::InvalidData);
+    CHECK(kind_of([&] {
+              BSplineSurface<Point3>(2, 2, 3, 3, nine, {0, 0, 0, 1, 1}, {0, 0, 0, 1, 1, 1});
+          }) == ErrorKind::InvalidData);
+    CHECK(kind_of([&] {
+              NurbsSurface<Point3>(2, 2, 3, 3, nine, std::vector<double>(9, 0.0), clamped_knots(2, 3),
+                                   clamped_knots(2, 3));
+          }) == ErrorKind::InvalidData);
     CHECK(kind_of([&] { cylinder(3, 4).derivative(2, 0, 0.5, 0.5); }) == ErrorKind::InvalidArgument);
     CHECK(kind_of([&] { cylinder(3, 4).eval(0.5, 2); }) == ErrorKind::InvalidArgument);
 }

@@ -139,7 +139,8 @@ TEST_CASE("Golden: Bezier cubic with its de Casteljau construction at t = 0.4", 
 }
 
 TEST_CASE("Golden: cubic B-spline with control polygon and knots", "[curves-render][golden]") {
-    const BSpline<Point> s = BSpline<Point>::clamped(3, {{0, 60}, {40, 0}, {90, 20}, {120, 90}, {170, 100}, {200, 30}, {240, 50}});
+    const BSpline<Point> s =
+        BSpline<Point>::clamped(3, {{0, 60}, {40, 0}, {90, 20}, {120, 90}, {170, 100}, {200, 30}, {240, 50}});
     const auto pieces = s.to_bezier();
     std::vector<Point> knots;
     for (double u : s.breakpoints()) knots.push_back(s.eval(u));
@@ -188,7 +189,8 @@ TEST_CASE("Golden: quadratic B-spline basis functions with a double knot", "[cur
         double sum = 0;
         for (double v : n) sum += v;
         CHECK(sum == Approx(1).margin(1e-12));
-        for (int i = 0; i < count; ++i) graphs[static_cast<std::size_t>(i)].push_back(m.apply({t, n[static_cast<std::size_t>(i)]}));
+        for (int i = 0; i < count; ++i)
+            graphs[static_cast<std::size_t>(i)].push_back(m.apply({t, n[static_cast<std::size_t>(i)]}));
         if (k % 4) continue;
         for (int i = 0; i < count; ++i) {
             const Point q = m.apply({t, n[static_cast<std::size_t>(i)]});
@@ -289,9 +291,12 @@ TEST_CASE("Golden: clock at 10:08:30", "[clock][golden]") {
     CHECK(clock_face::minute_angle(t) * 180 / std::numbers::pi == Approx(51));
     CHECK(clock_face::second_angle(t) * 180 / std::numbers::pi == Approx(180));
     // Near each hand's tip the pixel has that hand's colour.
-    CHECK(color_distance(at(img, clock_face::polar(g, clock_face::hour_angle(t), 0.9 * g.hour_length())), col.hour_hand) <= 24);
-    CHECK(color_distance(at(img, clock_face::polar(g, clock_face::minute_angle(t), 0.9 * g.minute_length())), col.minute_hand) <= 24);
-    CHECK(color_distance(at(img, clock_face::polar(g, clock_face::second_angle(t), 0.9 * g.second_length())), col.second_hand) <= 24);
+    CHECK(color_distance(at(img, clock_face::polar(g, clock_face::hour_angle(t), 0.9 * g.hour_length())),
+                         col.hour_hand) <= 24);
+    CHECK(color_distance(at(img, clock_face::polar(g, clock_face::minute_angle(t), 0.9 * g.minute_length())),
+                         col.minute_hand) <= 24);
+    CHECK(color_distance(at(img, clock_face::polar(g, clock_face::second_angle(t), 0.9 * g.second_length())),
+                         col.second_hand) <= 24);
     // Where no hand points (3 o'clock, half-way out) the dial shows.
     CHECK(color_distance(at(img, clock_face::polar(g, std::numbers::pi / 2, 0.5 * g.dial_radius())), col.dial) <= 4);
     // The centre is covered by the hub; the corner is background; the case shows above the dial.
@@ -301,7 +306,8 @@ TEST_CASE("Golden: clock at 10:08:30", "[clock][golden]") {
     // 12 hour ticks: at radius 0.32 size each is the hour-tick colour, except where a hand covers it.
     for (int h = 0; h < 12; ++h) {
         if (h == 6) continue;  // under the second hand at :30
-        CHECK(color_distance(at(img, clock_face::polar(g, h * std::numbers::pi / 6, 0.32 * g.size)), col.hour_tick) <= 24);
+        CHECK(color_distance(at(img, clock_face::polar(g, h * std::numbers::pi / 6, 0.32 * g.size)), col.hour_tick) <=
+              24);
     }
 
     curves_test::check_golden("curves", "clock", img, kGoldenMax, kGoldenMean);

@@ -49,13 +49,15 @@ TEST_CASE("filter blur: a single white pixel spreads as the sampled Gaussian wit
     }
 }
 
-TEST_CASE("filter blur: a step edge follows the Gaussian distribution within 2 of 255 for exact and box blurs", "[filter][blur]") {
+TEST_CASE("filter blur: a step edge follows the Gaussian distribution within 2 of 255 for exact and box blurs",
+          "[filter][blur]") {
     for (double sigma : {3.0, 8.0, 10.5, 15.0, 40.0, 123.4}) {
         const int w = 400, h = 2, edge = 200;
         Pixmap src(w, h);
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < edge; ++x) src.set_pixel(x, y, {255, 255, 255, 255});
-        const Pixmap out = filter::apply_filter(blur_graph(w, h, sigma, 0, filter::EdgeMode::Duplicate), Affine::identity(), src);
+        const Pixmap out =
+            filter::apply_filter(blur_graph(w, h, sigma, 0, filter::EdgeMode::Duplicate), Affine::identity(), src);
         double worst = 0;
         for (int x = 0; x < w; ++x) {
             // Pixels 0 .. edge-1 are 1: the sum of the sampled Gaussian over them is (midpoint rule)
@@ -84,11 +86,13 @@ TEST_CASE("filter blur: the deviation is per axis and scales with the transform"
     CHECK(s.pixel(24, 19) == d.pixel(24, 19));
 }
 
-TEST_CASE("filter blur: edgeMode none fades at the region border, duplicate keeps a full field full", "[filter][blur]") {
+TEST_CASE("filter blur: edgeMode none fades at the region border, duplicate keeps a full field full",
+          "[filter][blur]") {
     Pixmap src(30, 30);
     src.fill(Color::white());
     const Pixmap none = filter::apply_filter(blur_graph(30, 30, 4, 4, filter::EdgeMode::None), Affine::identity(), src);
-    const Pixmap dup = filter::apply_filter(blur_graph(30, 30, 4, 4, filter::EdgeMode::Duplicate), Affine::identity(), src);
+    const Pixmap dup =
+        filter::apply_filter(blur_graph(30, 30, 4, 4, filter::EdgeMode::Duplicate), Affine::identity(), src);
     const Pixmap wrap = filter::apply_filter(blur_graph(30, 30, 4, 4, filter::EdgeMode::Wrap), Affine::identity(), src);
     CHECK(none.pixel(0, 0).a < 100);
     CHECK(dup.pixel(0, 0).a == 255);
@@ -119,7 +123,8 @@ TEST_CASE("filter blur: a large region blurred by several threads equals its lin
                 line.set_pixel(axis == 0 ? i : 0, axis == 0 ? 0 : i, axis == 0 ? src.pixel(i, k) : src.pixel(k, i));
             const Pixmap one = filter::apply_filter(blur_graph(lw, lh, sx, sy), Affine::identity(), line);
             for (int i = 0; i < (axis == 0 ? w : h); ++i)
-                mismatches += !(one.pixel(axis == 0 ? i : 0, axis == 0 ? 0 : i) == (axis == 0 ? all.pixel(i, k) : all.pixel(k, i)));
+                mismatches += !(one.pixel(axis == 0 ? i : 0, axis == 0 ? 0 : i) ==
+                                (axis == 0 ? all.pixel(i, k) : all.pixel(k, i)));
         }
         INFO("axis " << axis);
         CHECK(mismatches == 0);

@@ -20,8 +20,9 @@ Pixmap colour_grid() {
         for (int g : levels)
             for (int b : levels)
                 for (int a : levels) {
-                    pm.set_pixel(i % 25, i / 25, premultiply(Color::rgba(static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g),
-                                                                         static_cast<std::uint8_t>(b), static_cast<std::uint8_t>(a))));
+                    pm.set_pixel(i % 25, i / 25,
+                                 premultiply(Color::rgba(static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g),
+                                                         static_cast<std::uint8_t>(b), static_cast<std::uint8_t>(a))));
                     ++i;
                 }
     return pm;
@@ -51,15 +52,17 @@ TEST_CASE("filter feColorMatrix: every pixel of a colour grid equals the matrix 
             const PremulPixel s = src.pixel(x, y);
             // The formula on straight values in [0, 1], clamped, premultiplied.
             const double a = s.a / 255.0;
-            const double c[4] = {a > 0 ? s.r / 255.0 / a : 0, a > 0 ? s.g / 255.0 / a : 0, a > 0 ? s.b / 255.0 / a : 0, a};
+            const double c[4] = {a > 0 ? s.r / 255.0 / a : 0, a > 0 ? s.g / 255.0 / a : 0, a > 0 ? s.b / 255.0 / a : 0,
+                                 a};
             double o[4];
             for (int r = 0; r < 4; ++r) {
                 double v = p.matrix[r * 5 + 4];
                 for (int k = 0; k < 4; ++k) v += p.matrix[r * 5 + k] * c[k];
                 o[r] = std::clamp(v, 0.0, 1.0);
             }
-            const int expect[4] = {static_cast<int>(std::lround(o[0] * o[3] * 255)), static_cast<int>(std::lround(o[1] * o[3] * 255)),
-                                   static_cast<int>(std::lround(o[2] * o[3] * 255)), static_cast<int>(std::lround(o[3] * 255))};
+            const int expect[4] = {
+                static_cast<int>(std::lround(o[0] * o[3] * 255)), static_cast<int>(std::lround(o[1] * o[3] * 255)),
+                static_cast<int>(std::lround(o[2] * o[3] * 255)), static_cast<int>(std::lround(o[3] * 255))};
             const PremulPixel d = out.pixel(x, y);
             const int got[4] = {d.r, d.g, d.b, d.a};
             for (int k = 0; k < 4; ++k) worst = std::max(worst, std::abs(got[k] - expect[k]));
@@ -98,11 +101,13 @@ TEST_CASE("filter feComposite arithmetic: k1 i1 i2 + k2 i1 + k3 i2 + k4 on a col
             const PremulPixel s = src.pixel(x, y);
             const double i1[4] = {s.r / 255.0, s.g / 255.0, s.b / 255.0, s.a / 255.0};
             double o[4];
-            for (int k = 0; k < 4; ++k) o[k] = std::clamp(c.k1 * i1[k] * i2[k] + c.k2 * i1[k] + c.k3 * i2[k] + c.k4, 0.0, 1.0);
+            for (int k = 0; k < 4; ++k)
+                o[k] = std::clamp(c.k1 * i1[k] * i2[k] + c.k2 * i1[k] + c.k3 * i2[k] + c.k4, 0.0, 1.0);
             for (int k = 0; k < 3; ++k) o[k] = std::min(o[k], o[3]);
             const PremulPixel d = out.pixel(x, y);
             const int got[4] = {d.r, d.g, d.b, d.a};
-            for (int k = 0; k < 4; ++k) worst = std::max(worst, std::abs(got[k] - static_cast<int>(std::lround(o[k] * 255))));
+            for (int k = 0; k < 4; ++k)
+                worst = std::max(worst, std::abs(got[k] - static_cast<int>(std::lround(o[k] * 255))));
         }
     CHECK(worst <= 1);
 }
@@ -172,7 +177,8 @@ TEST_CASE("filter feComponentTransfer: table, discrete, linear and gamma follow 
     CHECK(t.apply(0.5) == Approx(0.3));
 }
 
-TEST_CASE("filter color-interpolation-filters: an identity primitive in linearRGB returns the source within 1", "[filter][color]") {
+TEST_CASE("filter color-interpolation-filters: an identity primitive in linearRGB returns the source within 1",
+          "[filter][color]") {
     const Pixmap src = colour_grid();
     filter::Primitive p;
     p.op = filter::Primitive::Offset;  // dx = dy = 0
@@ -182,7 +188,8 @@ TEST_CASE("filter color-interpolation-filters: an identity primitive in linearRG
     for (int y = 0; y < 25; ++y)
         for (int x = 0; x < 25; ++x) {
             const PremulPixel a = src.pixel(x, y), b = out.pixel(x, y);
-            worst = std::max({worst, std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b), std::abs(a.a - b.a)});
+            worst =
+                std::max({worst, std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b), std::abs(a.a - b.a)});
         }
     CHECK(worst <= 1);
 }

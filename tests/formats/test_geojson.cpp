@@ -80,7 +80,8 @@ TEST_CASE("GeoJSON accepts a bare Feature, a bare geometry and empty collections
               .features.size() == 1);
     CHECK(read_geojson(R"({"type":"LineString","coordinates":[[1,2],[3,4]]})").features.at(0).geometries.size() == 1);
     CHECK(read_geojson(R"({"type":"FeatureCollection","features":[]})").features.empty());
-    const MapData e = read_geojson(R"({"type":"Feature","properties":{},"geometry":{"type":"MultiPolygon","coordinates":[]}})");
+    const MapData e =
+        read_geojson(R"({"type":"Feature","properties":{},"geometry":{"type":"MultiPolygon","coordinates":[]}})");
     CHECK(e.features.at(0).geometries.empty());
     CHECK(read_geojson(R"({"type":"GeometryCollection","geometries":[]})").features.at(0).geometries.empty());
 }
@@ -111,7 +112,8 @@ TEST_CASE("GeoJSON bad content names the JSON path", "[geojson][errors]") {
     // Ring with fewer than 4 positions.
     m = error_of(head + R"({"type":"Polygon","coordinates":[[[0,0],[1,1],[0,0]]]}}]})", &k);
     CHECK(k == ErrorKind::InvalidData);
-    CHECK(m.find("features[0].geometry.coordinates[0]: a polygon ring needs at least 4 positions, got 3") != std::string::npos);
+    CHECK(m.find("features[0].geometry.coordinates[0]: a polygon ring needs at least 4 positions, got 3") !=
+          std::string::npos);
     // Unclosed ring.
     m = error_of(head + R"({"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[1,1],[0,1]]]]}}]})", &k);
     CHECK(k == ErrorKind::InvalidData);
@@ -158,18 +160,19 @@ TEST_CASE("GeoJSON lines: one feature per line, errors name the line", "[geojson
     const std::string text =
         "{\"type\":\"Feature\",\"properties\":{\"n\":1},\"geometry\":{\"type\":\"Point\",\"coordinates\":[1,2]}}\n"
         "\n"
-        "\x1e{\"type\":\"Feature\",\"properties\":{\"n\":2},\"geometry\":{\"type\":\"Point\",\"coordinates\":[3,4]}}\r\n";
+        "\x1e{\"type\":\"Feature\",\"properties\":{\"n\":2},\"geometry\":{\"type\":\"Point\",\"coordinates\":[3,4]}}"
+        "\r\n";
     const MapData d = read_geojson_lines(text);
     REQUIRE(d.features.size() == 2);
     CHECK(d.features[1].property("n")->number == 2);
     // read_map_data recognises the form.
     CHECK(read_map_data(text).features.size() == 2);
     try {
-        (void)read_geojson_lines(text + "{\"type\":\"Feature\",\"properties\":{},\"geometry\":{\"type\":\"Point\",\"coordinates\":[1,99]}}\n");
+        (void)read_geojson_lines(
+            text +
+            "{\"type\":\"Feature\",\"properties\":{},\"geometry\":{\"type\":\"Point\",\"coordinates\":[1,99]}}\n");
         FAIL("expected an error");
-    } catch (const Error& e) {
-        CHECK(std::string(e.what()).find("line 4 geometry.coordinates") != std::string::npos);
-    }
+    } catch (const Error& e) { CHECK(std::string(e.what()).find("line 4 geometry.coordinates") != std::string::npos); }
     try {
         (void)read_geojson_lines(text + "{oops}\n");
         FAIL("expected an error");
@@ -184,9 +187,7 @@ TEST_CASE("read_map_data refuses a TopoJSON layer name for GeoJSON", "[geojson][
     try {
         (void)read_map_data(R"({"type":"Point","coordinates":[1,2]})", "countries");
         FAIL("expected an error");
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::InvalidArgument);
-    }
+    } catch (const Error& e) { CHECK(e.kind() == ErrorKind::InvalidArgument); }
 }
 
 TEST_CASE("read_map_file reads in place like read_map_data and reports errors", "[geojson]") {
@@ -202,9 +203,7 @@ TEST_CASE("read_map_file reads in place like read_map_data and reports errors", 
     try {
         (void)read_map_file("/nonexistent/file.geojson");
         FAIL("expected an error");
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::Io);
-    }
+    } catch (const Error& e) { CHECK(e.kind() == ErrorKind::Io); }
     const std::string bad = (casteljau::testing::process_temp_dir() / "bad.geojson").string();
     {
         std::ofstream f(bad, std::ios::binary);
@@ -220,13 +219,16 @@ TEST_CASE("read_map_file reads in place like read_map_data and reports errors", 
 }
 
 TEST_CASE("GeoJSON FeatureCollection read feature by feature equals the same features read as lines", "[geojson]") {
-    const std::string f1 = R"({"type":"Feature","properties":{"n":"a\"]}"},"geometry":{"type":"Point","coordinates":[1,2]}})";
-    const std::string f2 = R"({"type":"Feature","properties":{"n":[[{}]]},"geometry":{"type":"LineString","coordinates":[[0,0],[3,4]]}})";
+    const std::string f1 =
+        R"({"type":"Feature","properties":{"n":"a\"]}"},"geometry":{"type":"Point","coordinates":[1,2]}})";
+    const std::string f2 =
+        R"({"type":"Feature","properties":{"n":[[{}]]},"geometry":{"type":"LineString","coordinates":[[0,0],[3,4]]}})";
     const MapData lines = read_geojson_lines(f1 + "\n" + f2 + "\n");
     // Member order, escaped keys, whitespace and foreign members must not matter.
     for (const std::string& text : {
              R"({"type":"FeatureCollection","features":[)" + f1 + "," + f2 + "]}",
-             " {\n \"features\" : [ " + f1 + " ,\n " + f2 + " ] , \"bbox\":[0,0,3,4], \"type\" : \"FeatureCollection\" } ",
+             " {\n \"features\" : [ " + f1 + " ,\n " + f2 +
+                 " ] , \"bbox\":[0,0,3,4], \"type\" : \"FeatureCollection\" } ",
              R"({"typ\u0065":"FeatureCollection","feat\u0075res":[)" + f1 + "," + f2 + "]}",
          }) {
         INFO(text);
@@ -239,7 +241,8 @@ TEST_CASE("GeoJSON FeatureCollection read feature by feature equals the same fea
         CHECK(read_map_data(text).features.size() == 2);
     }
     // An error in the second feature names its index in the whole collection.
-    const std::string bad = R"({"type":"FeatureCollection","features":[)" + f1 + R"(,{"type":"Feature","properties":{},"geometry":{"type":"Point","coordinates":[1,95]}}]})";
+    const std::string bad = R"({"type":"FeatureCollection","features":[)" + f1 +
+                            R"(,{"type":"Feature","properties":{},"geometry":{"type":"Point","coordinates":[1,95]}}]})";
     try {
         (void)read_geojson(bad);
         FAIL("expected an error");

@@ -83,15 +83,16 @@ TEST_CASE("decode_jpeg: baseline and progressive, RGB and grey, decode to their 
 TEST_CASE("decode_jpeg: a file too short for its declared size is refused before allocating the image", "[jpeg]") {
     // Found by fuzz_image: 265 bytes declaring 4160 x 13824 pixels; libjpeg pads missing data, so
     // the decoder allocated and filled a 230 MB image. Huffman coding needs a bit per 8x8 block.
-    const auto bytes = read_file(std::string(CASTELJAU_SOURCE_DIR) +
-                                 "/fuzz/regressions/image/jpeg-265-bytes-declaring-57-megapixels");
+    const auto bytes =
+        read_file(std::string(CASTELJAU_SOURCE_DIR) + "/fuzz/regressions/image/jpeg-265-bytes-declaring-57-megapixels");
     REQUIRE(bytes.size() == 265);
     try {
         (void)decode_jpeg(bytes);
         FAIL("decoded");
     } catch (const Error& e) {
         CHECK(e.kind() == ErrorKind::InvalidData);
-        CHECK_THAT(e.what(), Catch::Contains("4160x13824 pixels need at least 112320 bytes of coded data, the file has 265"));
+        CHECK_THAT(e.what(),
+                   Catch::Contains("4160x13824 pixels need at least 112320 bytes of coded data, the file has 265"));
     }
     // A real 2000 x 1500 image cut to its first 1 KB: refused the same way.
     const auto big = encode_jpeg(2000, 1500, false, false, 50);
@@ -108,7 +109,8 @@ TEST_CASE("decode_jpeg: truncations and corruptions end in InvalidData or an ima
         if (trial % 2 == 0) {
             bad.resize(static_cast<std::size_t>(rng() % good.size()));
         } else {
-            for (int f = 0; f < 1 + trial % 4; ++f) bad[2 + rng() % (bad.size() - 2)] ^= static_cast<std::uint8_t>(1 + rng() % 255);
+            for (int f = 0; f < 1 + trial % 4; ++f)
+                bad[2 + rng() % (bad.size() - 2)] ^= static_cast<std::uint8_t>(1 + rng() % 255);
         }
         try {
             const Pixmap p = decode_image(bad);

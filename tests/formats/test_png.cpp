@@ -17,13 +17,13 @@
 using casteljau::Color;
 using casteljau::decode_png;
 using casteljau::encode_png;
-using casteljau::PngEncodeOptions;
-using casteljau::PngFilter;
 using casteljau::Error;
 using casteljau::ErrorKind;
 using casteljau::Pixmap;
-using casteljau::premultiply;
+using casteljau::PngEncodeOptions;
+using casteljau::PngFilter;
 using casteljau::PremulPixel;
+using casteljau::premultiply;
 using png_test::pack;
 using png_test::Spec;
 
@@ -321,7 +321,9 @@ TEST_CASE("decode_png: Adam7-interlaced images decode like the same image non-in
                         samples.push_back(i);
                         const png_color& c = s.palette[i];
                         want.push_back(Color{c.red, c.green, c.blue,
-                                             static_cast<std::uint8_t>(i == 0 ? 0 : i == 1 ? 77 : 255)});
+                                             static_cast<std::uint8_t>(i == 0   ? 0
+                                                                       : i == 1 ? 77
+                                                                                : 255)});
                     } else {
                         const unsigned g = rng() % 4;
                         samples.push_back(g);
@@ -444,7 +446,7 @@ TEST_CASE("encode_png: the smallest colour type that holds the pixels, every fil
         int colour_type;  // PNG IHDR colour type expected
     };
     const Case cases[] = {{true, true, 0}, {true, false, 4}, {false, true, 2}, {false, false, 6}};
-    const PngFilter filters[] = {PngFilter::Auto, PngFilter::None, PngFilter::Sub, PngFilter::Up,
+    const PngFilter filters[] = {PngFilter::Auto,    PngFilter::None,  PngFilter::Sub,     PngFilter::Up,
                                  PngFilter::Average, PngFilter::Paeth, PngFilter::Adaptive};
     for (const Case& c : cases) {
         const Pixmap pm = picture(c.grey, c.opaque);
@@ -469,7 +471,8 @@ TEST_CASE("encode_png: the smallest colour type that holds the pixels, every fil
                     for (int y = 0; y < 23; ++y)
                         for (int x = 0; x < 37; ++x) {
                             const Color s = casteljau::unpremultiply(pm.pixel(x, y));
-                            const std::uint8_t* p = &rgba[(static_cast<std::size_t>(y) * 37 + static_cast<std::size_t>(x)) * 4];
+                            const std::uint8_t* p =
+                                &rgba[(static_cast<std::size_t>(y) * 37 + static_cast<std::size_t>(x)) * 4];
                             same = same && p[0] == s.r && p[1] == s.g && p[2] == s.b && p[3] == s.a;
                         }
                     CHECK(same);
@@ -482,9 +485,7 @@ TEST_CASE("encode_png: the smallest colour type that holds the pixels, every fil
         try {
             (void)encode_png(picture(true, true), o);
             FAIL("no error for level " << level);
-        } catch (const Error& e) {
-            CHECK(e.kind() == ErrorKind::InvalidArgument);
-        }
+        } catch (const Error& e) { CHECK(e.kind() == ErrorKind::InvalidArgument); }
     }
 }
 
@@ -492,9 +493,7 @@ TEST_CASE("encode_png: an empty Pixmap is an InvalidArgument error", "[png]") {
     try {
         encode_png(Pixmap{});
         FAIL("no error");
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::InvalidArgument);
-    }
+    } catch (const Error& e) { CHECK(e.kind() == ErrorKind::InvalidArgument); }
 }
 
 TEST_CASE("decode_png: empty, garbage and non-PNG data are InvalidData errors", "[png]") {
@@ -588,7 +587,8 @@ TEST_CASE("decode_png: randomly corrupted files never crash", "[png]") {
         for (int trial = 0; trial < 400; ++trial) {
             auto bad = good;
             const int flips = 1 + static_cast<int>(rng() % 3);
-            for (int f = 0; f < flips; ++f) bad[8 + rng() % (bad.size() - 8)] ^= static_cast<std::uint8_t>(1 + rng() % 255);
+            for (int f = 0; f < flips; ++f)
+                bad[8 + rng() % (bad.size() - 8)] ^= static_cast<std::uint8_t>(1 + rng() % 255);
             try {
                 const Pixmap p = decode_png(bad);
                 CHECK(p.width() == 20);
@@ -603,7 +603,8 @@ TEST_CASE("decode_png: randomly corrupted files never crash", "[png]") {
     CHECK(failures + decoded == 800);
 }
 
-TEST_CASE("decode_png: a chunk declaring more data than the file holds is refused before libpng allocates it", "[png]") {
+TEST_CASE("decode_png: a chunk declaring more data than the file holds is refused before libpng allocates it",
+          "[png]") {
     // libpng allocates an ancillary chunk at its declared length before reading it: a text chunk
     // declaring 2 GB in a small file (found by fuzz_image) must fail on the length, up front.
     const auto good = encode_png(random_premultiplied(4, 4, 9));
@@ -619,8 +620,9 @@ TEST_CASE("decode_png: a chunk declaring more data than the file holds is refuse
 namespace {
 
 // `png` with `chunks` inserted after IHDR (the signature and IHDR are its first 33 bytes).
-std::vector<std::uint8_t> with_chunks_after_ihdr(const std::vector<std::uint8_t>& png,
-                                                 const std::vector<std::pair<std::string, std::vector<std::uint8_t>>>& chunks) {
+std::vector<std::uint8_t> with_chunks_after_ihdr(
+    const std::vector<std::uint8_t>& png,
+    const std::vector<std::pair<std::string, std::vector<std::uint8_t>>>& chunks) {
     std::vector<std::uint8_t> out(png.begin(), png.begin() + 33);
     for (const auto& [type, data] : chunks) png_test::append_chunk(out, type.c_str(), data);
     out.insert(out.end(), png.begin() + 33, png.end());

@@ -147,8 +147,9 @@ TEST_CASE("decode_png: every resvg reference PNG decodes, with the size rule's d
         int wrong = 0;
         for (int y = 0; y < sh; ++y)
             for (int x = 0; x < sw; ++x) {
-                const std::uint8_t* s = &ref[(static_cast<std::size_t>(y) * static_cast<std::size_t>(sw) +
-                                              static_cast<std::size_t>(x)) * 4];
+                const std::uint8_t* s =
+                    &ref[(static_cast<std::size_t>(y) * static_cast<std::size_t>(sw) + static_cast<std::size_t>(x)) *
+                         4];
                 if (pm.pixel(x, y) != casteljau::premultiply(casteljau::Color{s[0], s[1], s[2], s[3]})) ++wrong;
             }
         CHECK(wrong == 0);

@@ -90,21 +90,24 @@ TEST_CASE("TopoJSON bad input: arc index out of range, unclosed ring, not a topo
     };
     ErrorKind k{};
     std::string m = error_of(R"({"type":"Topology","objects":{"a":{"type":"GeometryCollection","geometries":[
-        {"type":"Polygon","arcs":[[0,5]]}]}},"arcs":[[[0,0],[1,0],[1,1],[0,0]]]})", k);
+        {"type":"Polygon","arcs":[[0,5]]}]}},"arcs":[[[0,0],[1,0],[1,1],[0,0]]]})",
+                             k);
     CHECK(k == ErrorKind::InvalidData);
     CHECK(m.find("objects.a.geometries[0].arcs[0][1]: arc index 5 is out of range (the topology has 1 arcs)") !=
           std::string::npos);
     m = error_of(R"({"type":"Topology","objects":{"a":{"type":"LineString","arcs":[-3]}},"arcs":[[[0,0],[1,0]]]})", k);
     CHECK(k == ErrorKind::InvalidData);
     CHECK(m.find("arc index -3") != std::string::npos);
-    m = error_of(R"({"type":"Topology","objects":{"a":{"type":"Polygon","arcs":[[0]]}},"arcs":[[[0,0],[1,0],[1,1],[0,1]]]})", k);
+    m = error_of(
+        R"({"type":"Topology","objects":{"a":{"type":"Polygon","arcs":[[0]]}},"arcs":[[[0,0],[1,0],[1,1],[0,1]]]})", k);
     CHECK(k == ErrorKind::InvalidData);
     CHECK(m.find("not closed") != std::string::npos);
     m = error_of(R"({"type":"Topology","objects":{"a":{"type":"Polygon","arcs":[[0]]}},"arcs":[[[0,0],[500,0]]]})", k);
     CHECK(k == ErrorKind::InvalidData);
     CHECK(m.find("arcs[0][1]") != std::string::npos);
     // A ring collapsed by quantization is dropped, not an error.
-    const MapData collapsed = read_topojson(R"({"type":"Topology","objects":{"a":{"type":"MultiPolygon","arcs":[[[1]],[[0]]]}},
+    const MapData collapsed =
+        read_topojson(R"({"type":"Topology","objects":{"a":{"type":"MultiPolygon","arcs":[[[1]],[[0]]]}},
         "arcs":[[[0,0],[1,0],[1,1],[0,0]],[[5,5],[5,5]]]})");
     REQUIRE(collapsed.features.size() == 1);
     CHECK(collapsed.features[0].geometries.at(0).polygon_ends == std::vector<std::uint32_t>{1});

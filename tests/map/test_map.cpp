@@ -154,7 +154,8 @@ TEST_CASE("Antimeridian: a polygon crossing 180 matches the exact reference, no 
         "coordinates":[[[170.3,-10.1],[-170.2,-10.1],[-169.7,10.4],[170.3,10.4],[170.3,-10.1]]]}})");
     const Pixmap pm = render_map(d, MapProjection{}, MapStyle{}, world_options(720, 360, false));
     const EquirectFrame fr{720, 360};
-    const ref::CoverageGrid g = ref::slab_area(test::reference_contours(d.features[0], fr), FillRule::EvenOdd, {0, 0, 720, 360});
+    const ref::CoverageGrid g =
+        ref::slab_area(test::reference_contours(d.features[0], fr), FillRule::EvenOdd, {0, 0, 720, 360});
     double max_err = 0;
     for (int y = 0; y < 360; ++y)
         for (int x = 0; x < 720; ++x) max_err = std::max(max_err, std::fabs(pm.pixel(x, y).a / 255.0 - g.at(x, y)));
@@ -230,7 +231,8 @@ TEST_CASE("Map --separate: world countries at 2048x1024 within 0.5/255 of the ex
                 max_err = std::max(max_err, e);
             }
         const double mean = sum / (static_cast<double>(W) * H);
-        INFO("exact_overlaps " << exact << ": mean abs error " << mean * 255 << "/255, max " << max_err * 255 << "/255");
+        INFO("exact_overlaps " << exact << ": mean abs error " << mean * 255 << "/255, max " << max_err * 255
+                               << "/255");
         CHECK(mean <= 0.5 / 255);
         CHECK(max_err <= 2.0 / 255);
     }
@@ -255,7 +257,10 @@ TEST_CASE("Seamless: world countries show no seam, --separate does", "[map][seam
             bool partial = false;  // covered by two or more features sharing the pixel
             for (const ref::CoverageGrid& g : r.grids) {
                 const double c = g.at(x, y);
-                if (c > 1e-9 && c < 1 - 1e-9) { partial = true; break; }
+                if (c > 1e-9 && c < 1 - 1e-9) {
+                    partial = true;
+                    break;
+                }
             }
             if (partial) ++shared;
             if (seamless.pixel(x, y).a != 255) ++seamless_gaps;
@@ -294,7 +299,8 @@ TEST_CASE("Map fills: a feature whose parts overlap is exact in both modes", "[m
     // 2 px per degree: its sides at x = 10.3 and 80.3, y = 19.7 and 89.7. A stacked copy adds
     // nothing: the side pixels keep their area (0.7 and 0.3 of a pixel), not twice it. Its box is
     // large for its few segments, so the renderer classifies it once (Overlapping) for every band.
-    const MapData d = read_geojson(R"({"type":"Feature","properties":{},"geometry":{"type":"MultiPolygon","coordinates":[
+    const MapData d =
+        read_geojson(R"({"type":"Feature","properties":{},"geometry":{"type":"MultiPolygon","coordinates":[
       [[[5.15,5.15],[40.15,5.15],[40.15,40.15],[5.15,40.15],[5.15,5.15]]],
       [[[5.15,5.15],[40.15,5.15],[40.15,40.15],[5.15,40.15],[5.15,5.15]]]]}})");
     MapStyle st;
@@ -383,7 +389,8 @@ TEST_CASE("Seamless: reset() and clear() forget every earlier fill, composite_on
     CHECK(pm.pixel(41, 21) == PremulPixel{255, 255, 255, 255});
 }
 
-TEST_CASE("Seamless: band compositors give the whole-image compositor's pixels, also on a strided target", "[map][seamless]") {
+TEST_CASE("Seamless: band compositors give the whole-image compositor's pixels, also on a strided target",
+          "[map][seamless]") {
     // render_map composites each band in a compositor covering that band only; the result must
     // equal one compositor over the whole image, and compositing must follow the target's stride.
     std::mt19937 rng(21);
@@ -414,9 +421,12 @@ TEST_CASE("Seamless: band compositors give the whole-image compositor's pixels, 
     std::optional<SeamlessCompositor> band;
     for (int y0 = 0; y0 < 48; y0 += 17) {
         const IRect region{0, y0, 64, std::min(48, y0 + 17)};
-        if (band) band->reset(region);
-        else band.emplace(region);
-        for (std::size_t i = 0; i < fills.size(); ++i) band->add(raster, fills[i], FillOptions{}, colors[i], 0.9, region);
+        if (band)
+            band->reset(region);
+        else
+            band.emplace(region);
+        for (std::size_t i = 0; i < fills.size(); ++i)
+            band->add(raster, fills[i], FillOptions{}, colors[i], 0.9, region);
         band->composite_onto(banded);
     }
     int differ = 0;
@@ -425,7 +435,8 @@ TEST_CASE("Seamless: band compositors give the whole-image compositor's pixels, 
     CHECK(differ == 0);
     int padding_touched = 0;
     for (int y = 0; y < 48; ++y)
-        for (std::size_t k = 64 * 4; k < stride; ++k) padding_touched += memory[static_cast<std::size_t>(y) * stride + k] != 0xAB;
+        for (std::size_t k = 64 * 4; k < stride; ++k)
+            padding_touched += memory[static_cast<std::size_t>(y) * stride + k] != 0xAB;
     CHECK(padding_touched == 0);
 }
 
@@ -515,8 +526,7 @@ TEST_CASE("Map threads: 1, 2 and 5 threads give the same pixels in every mode", 
     CHECK_THROWS_AS(render_map(world, MapProjection{}, style, bad), Error);
 }
 
-TEST_CASE("render_map onto a drawn pixmap replaces every pixel with the background first, transparent too",
-          "[map]") {
+TEST_CASE("render_map onto a drawn pixmap replaces every pixel with the background first, transparent too", "[map]") {
     const MapData d = read_map_data(R"({"type":"FeatureCollection","features":[
       {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[10,10],[40,10],[40,40],[10,40],[10,10]]]}}]})");
     MapOptions o;
@@ -561,7 +571,7 @@ TEST_CASE("Seamless: a compositor writing into a transparent target gives the pi
     Pixmap got(64, 32);
     SeamlessCompositor into(got, top);
     fills(into);
-    into.composite_onto(got);  // nothing: the layer is got's own pixels
+    into.composite_onto(got);      // nothing: the layer is got's own pixels
     into.reset_into(got, bottom);  // the top band's pixels stay
     fills(into);
     std::size_t differ = 0, drawn = 0;
@@ -599,7 +609,8 @@ TEST_CASE("render_map into a new pixmap equals render_map onto a drawn one, laye
     g.kind = GeometryKind::Polygons;
     // A square whose first corner is repeated: 2^20 positions, cheap to draw (repeats add no edge).
     g.points.assign((1 << 20) + 10, Point{-40.3, -30.7});
-    for (Point p : {Point{80.2, -30.7}, Point{80.2, 50.4}, Point{-40.3, 50.4}, Point{-40.3, -30.7}}) g.points.push_back(p);
+    for (Point p : {Point{80.2, -30.7}, Point{80.2, 50.4}, Point{-40.3, 50.4}, Point{-40.3, -30.7}})
+        g.points.push_back(p);
     g.ring_ends.push_back(static_cast<std::uint32_t>(g.points.size()));
     g.polygon_ends.push_back(1);
     square.geometries.push_back(std::move(g));

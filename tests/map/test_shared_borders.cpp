@@ -35,8 +35,8 @@ std::size_t closes_in(const Path& p) {
 
 // Largest coverage difference between stroking every path as it is and stroking what SharedBorders
 // keeps of them (in order) with Butt caps, filled as one path each, nonzero, over `clip`.
-int union_difference(const std::vector<Path>& paths, const StrokeStyle& st, const IRect& clip, std::size_t* kept = nullptr,
-                     std::size_t* total = nullptr) {
+int union_difference(const std::vector<Path>& paths, const StrokeStyle& st, const IRect& clip,
+                     std::size_t* kept = nullptr, std::size_t* total = nullptr) {
     Path all, once;
     SharedBorders borders;
     StrokeStyle butt = st;
@@ -99,13 +99,15 @@ TEST_CASE("SharedBorders: open contours, curves and degenerate rings pass throug
     SharedBorders b;
     Path in;
     in.move_to(0, 0).line_to(10, 0).line_to(10, 10);  // open
-    in.add_circle({50, 50}, 5);                        // curves
-    in.move_to(70, 70).line_to(80, 70).close();        // a there-and-back ring
+    in.add_circle({50, 50}, 5);                       // curves
+    in.move_to(70, 70).line_to(80, 70).close();       // a there-and-back ring
     Path chains, out;
     b.add(in, chains, out);
     CHECK(chains.empty());
-    CHECK(std::vector<Verb>(out.verbs().begin(), out.verbs().end()) == std::vector<Verb>(in.verbs().begin(), in.verbs().end()));
-    CHECK(std::vector<Point>(out.points().begin(), out.points().end()) == std::vector<Point>(in.points().begin(), in.points().end()));
+    CHECK(std::vector<Verb>(out.verbs().begin(), out.verbs().end()) ==
+          std::vector<Verb>(in.verbs().begin(), in.verbs().end()));
+    CHECK(std::vector<Point>(out.points().begin(), out.points().end()) ==
+          std::vector<Point>(in.points().begin(), in.points().end()));
     // Repeated positions carry no segment: this ring is the square above with repeats.
     SharedBorders c;
     Path a, dup, rest;
@@ -119,8 +121,9 @@ TEST_CASE("SharedBorders: stroking what is kept covers what every ring's stroke 
     const IRect clip{0, 0, 120, 100};
     // Four squares meeting at one point (the Four Corners): each join there is new, although both
     // of its segments were drawn by other rings.
-    const std::vector<Path> four = {ring({{20, 20}, {60, 20}, {60, 50}, {20, 50}}), ring({{60, 20}, {100, 20}, {100, 50}, {60, 50}}),
-                                    ring({{60, 50}, {100, 50}, {100, 80}, {60, 80}}), ring({{20, 50}, {60, 50}, {60, 80}, {20, 80}})};
+    const std::vector<Path> four = {
+        ring({{20, 20}, {60, 20}, {60, 50}, {20, 50}}), ring({{60, 20}, {100, 20}, {100, 50}, {60, 50}}),
+        ring({{60, 50}, {100, 50}, {100, 80}, {60, 80}}), ring({{20, 50}, {60, 50}, {60, 80}, {20, 80}})};
     // Rings touching at a vertex with other neighbours, a spike, sharp turns, a partly shared
     // border that turns, a hole sharing its outline with an island inside it; a ring of one
     // position, one of two and one the stroker merges into a point (their strokes depend on the
@@ -128,7 +131,10 @@ TEST_CASE("SharedBorders: stroking what is kept covers what every ring's stroke 
     Path line;
     line.move_to(5, 5).line_to(60, 12).line_to(20, 30);
     const std::vector<Path> mixed = {
-        line, ring({{5, 90}, {5, 90}, {5, 90}}), ring({{100, 90}, {110, 95}}), ring({{10, 70}, {40, 68}}),
+        line,
+        ring({{5, 90}, {5, 90}, {5, 90}}),
+        ring({{100, 90}, {110, 95}}),
+        ring({{10, 70}, {40, 68}}),
         ring({{115, 5}, {115 + 1e-6, 5}, {115, 5 + 2e-6}}),  // three positions the stroker merges: a dot
         ring({{10, 10}, {40, 12}, {70, 10}, {72, 40}, {70, 70}, {40, 68}, {10, 70}, {12, 40}}),
         ring({{70, 10}, {100, 25}, {72, 40}}),

@@ -22,7 +22,8 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kWorld = std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/maps/countries-110m.json";
-const std::string kStyle = " --layer countries --fill-by name --stroke '#333' --stroke-width 1.5 --background '#cde0ee'";
+const std::string kStyle =
+    " --layer countries --fill-by name --stroke '#333' --stroke-width 1.5 --background '#cde0ee'";
 
 std::map<std::string, std::vector<std::uint8_t>> folder_files(const fs::path& dir) {
     std::map<std::string, std::vector<std::uint8_t>> out;
@@ -36,8 +37,8 @@ std::map<std::string, std::vector<std::uint8_t>> mbtiles_files(const fs::path& f
     sqlite3* db = nullptr;
     REQUIRE(sqlite3_open_v2(file.string().c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
     sqlite3_stmt* st = nullptr;
-    REQUIRE(sqlite3_prepare_v2(db, "SELECT zoom_level, tile_column, tile_row, tile_data FROM tiles", -1, &st, nullptr) ==
-            SQLITE_OK);
+    REQUIRE(sqlite3_prepare_v2(db, "SELECT zoom_level, tile_column, tile_row, tile_data FROM tiles", -1, &st,
+                               nullptr) == SQLITE_OK);
     while (sqlite3_step(st) == SQLITE_ROW) {
         const int z = sqlite3_column_int(st, 0);
         const int x = sqlite3_column_int(st, 1);
@@ -58,7 +59,8 @@ std::map<std::string, std::string> mbtiles_metadata(const fs::path& file) {
     sqlite3_stmt* st = nullptr;
     REQUIRE(sqlite3_prepare_v2(db, "SELECT name, value FROM metadata", -1, &st, nullptr) == SQLITE_OK);
     while (sqlite3_step(st) == SQLITE_ROW)
-        out[reinterpret_cast<const char*>(sqlite3_column_text(st, 0))] = reinterpret_cast<const char*>(sqlite3_column_text(st, 1));
+        out[reinterpret_cast<const char*>(sqlite3_column_text(st, 0))] =
+            reinterpret_cast<const char*>(sqlite3_column_text(st, 1));
     sqlite3_finalize(st);
     sqlite3_close(db);
     return out;
@@ -89,14 +91,15 @@ TEST_CASE("tiles: three shards in parallel processes equal one unsharded run byt
     CHECK(folder_files(dir / "threads") == one);
     std::string env_cmd;
     for (int i = 0; i < 2; ++i)
-        env_cmd += "SLURM_ARRAY_TASK_ID=" + std::to_string(i) + " SLURM_ARRAY_TASK_COUNT=2 " + CASTELJAU_CLI_PATH + " " + args +
-                   " -o " + shell_quote((dir / "slurm").string()) + " && ";
+        env_cmd += "SLURM_ARRAY_TASK_ID=" + std::to_string(i) + " SLURM_ARRAY_TASK_COUNT=2 " + CASTELJAU_CLI_PATH +
+                   " " + args + " -o " + shell_quote((dir / "slurm").string()) + " && ";
     env_cmd += "true";
     REQUIRE(std::system(env_cmd.c_str()) == 0);
     CHECK(folder_files(dir / "slurm") == one);
 }
 
-TEST_CASE("tiles: MBTiles holds the folder's tiles, TMS rows and metadata, and tiles-merge joins shards", "[tiles][cli]") {
+TEST_CASE("tiles: MBTiles holds the folder's tiles, TMS rows and metadata, and tiles-merge joins shards",
+          "[tiles][cli]") {
     const fs::path dir = casteljau::test::scratch_dir("tiles_mbtiles");
     const std::string args = "tiles " + shell_quote(kWorld) + " --zoom 0-2 --metatile 2 -q" + kStyle;
     REQUIRE(run_cli(args + " -o " + shell_quote((dir / "folder").string())).status == 0);
@@ -114,11 +117,13 @@ TEST_CASE("tiles: MBTiles holds the folder's tiles, TMS rows and metadata, and t
     CHECK(meta.at("bounds") == "-180,-85.05112878,180,85.05112878");
     CHECK(meta.count("center") == 1);
     for (int i = 0; i < 2; ++i)
-        REQUIRE(run_cli(args + " --shard " + std::to_string(i) + "/2 -o " + shell_quote((dir / ("s" + std::to_string(i) + ".mbtiles")).string()))
+        REQUIRE(run_cli(args + " --shard " + std::to_string(i) + "/2 -o " +
+                        shell_quote((dir / ("s" + std::to_string(i) + ".mbtiles")).string()))
                     .status == 0);
     CHECK(mbtiles_files(dir / "s0.mbtiles").size() < folder.size());
-    REQUIRE(run_cli("tiles-merge " + shell_quote((dir / "s0.mbtiles").string()) + " " + shell_quote((dir / "s1.mbtiles").string()) +
-                    " -o " + shell_quote((dir / "merged.mbtiles").string()))
+    REQUIRE(run_cli("tiles-merge " + shell_quote((dir / "s0.mbtiles").string()) + " " +
+                    shell_quote((dir / "s1.mbtiles").string()) + " -o " +
+                    shell_quote((dir / "merged.mbtiles").string()))
                 .status == 0);
     CHECK(mbtiles_files(dir / "merged.mbtiles") == folder);
     // No temporary files left next to the outputs.
@@ -140,7 +145,9 @@ TEST_CASE("tiles: a stroke crossing tile edges matches a single render of the ar
     to.metatile = 1;  // every tile rendered on its own (with its buffer)
     to.buffer = 16;
     std::map<std::pair<int, int>, Pixmap> tiles;
-    render_tiles(d, st, to, [&](int, int x, int y, const std::vector<std::uint8_t>& png) { tiles[{x, y}] = decode_png(png); });
+    render_tiles(d, st, to, [&](int, int x, int y, const std::vector<std::uint8_t>& png) {
+        tiles[{x, y}] = decode_png(png);
+    });
     REQUIRE(tiles.size() == 16);
     // One render of the whole zoom-2 world (1024 x 1024).
     const double half = std::numbers::pi * kWebMercatorRadius, s = 1024 / (2 * half);
@@ -154,7 +161,8 @@ TEST_CASE("tiles: a stroke crossing tile edges matches a single render of the ar
         for (int y = 0; y < 256; ++y)
             for (int x = 0; x < 256; ++x) {
                 const PremulPixel a = tile.pixel(x, y), b = whole.pixel(xy.first * 256 + x, xy.second * 256 + y);
-                max_diff = std::max({max_diff, std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b), std::abs(a.a - b.a)});
+                max_diff = std::max(
+                    {max_diff, std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b), std::abs(a.a - b.a)});
                 if (b.b > 100) ++stroke_pixels;
             }
     CHECK(stroke_pixels > 500);

@@ -52,11 +52,18 @@ double sep(BlendMode m, double b, double s) {
 }
 void blend(BlendMode m, const double b[3], const double s[3], double o[3]) {
     double t[3];
-    if (m == BlendMode::Hue) { setsat(s, sat(b), t); setlum(t, lum(b), o); }
-    else if (m == BlendMode::Saturation) { setsat(b, sat(s), t); setlum(t, lum(b), o); }
-    else if (m == BlendMode::Color) setlum(s, lum(b), o);
-    else if (m == BlendMode::Luminosity) setlum(b, lum(s), o);
-    else for (int k = 0; k < 3; ++k) o[k] = sep(m, b[k], s[k]);
+    if (m == BlendMode::Hue) {
+        setsat(s, sat(b), t);
+        setlum(t, lum(b), o);
+    } else if (m == BlendMode::Saturation) {
+        setsat(b, sat(s), t);
+        setlum(t, lum(b), o);
+    } else if (m == BlendMode::Color)
+        setlum(s, lum(b), o);
+    else if (m == BlendMode::Luminosity)
+        setlum(b, lum(s), o);
+    else
+        for (int k = 0; k < 3; ++k) o[k] = sep(m, b[k], s[k]);
 }
 
 }  // namespace
@@ -79,13 +86,15 @@ TEST_CASE("blend: every mode matches its formula on a grid of colours", "[blend]
         for (int y = 0; y < n; ++y)
             for (int x = 0; x < n; ++x) {
                 const Color cb = color(y), cs = color(x);
-                const double b[3] = {cb.r / 255.0, cb.g / 255.0, cb.b / 255.0}, s[3] = {cs.r / 255.0, cs.g / 255.0, cs.b / 255.0};
+                const double b[3] = {cb.r / 255.0, cb.g / 255.0, cb.b / 255.0},
+                             s[3] = {cs.r / 255.0, cs.g / 255.0, cs.b / 255.0};
                 double o[3];
                 blend(mode, b, s, o);
                 const double as = 128 / 255.0;  // ab = 1: co = cs as (1 - 1) + cb (1 - as) + as B
                 const PremulPixel got = dst.pixel(x, y);
                 const std::uint8_t g[3] = {got.r, got.g, got.b};
-                for (int k = 0; k < 3; ++k) bad += std::fabs(g[k] - 255 * (b[k] * (1 - as) + as * std::clamp(o[k], 0.0, 1.0))) > 2;
+                for (int k = 0; k < 3; ++k)
+                    bad += std::fabs(g[k] - 255 * (b[k] * (1 - as) + as * std::clamp(o[k], 0.0, 1.0))) > 2;
                 bad += got.a != 255;
             }
         INFO("mode " << mi);

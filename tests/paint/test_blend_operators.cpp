@@ -75,7 +75,8 @@ std::vector<std::array<int, 4>> premul_grid() {
 
 }  // namespace
 
-TEST_CASE("blend_span: every Porter-Duff operator and blend mode matches its formula on a colour grid", "[blend][paint]") {
+TEST_CASE("blend_span: every Porter-Duff operator and blend mode matches its formula on a colour grid",
+          "[blend][paint]") {
     const auto grid = premul_grid();
     const std::uint8_t coverages[] = {255, 128, 17};
     for (int mi = 0; mi < kBlendModeCount; ++mi) {
@@ -111,7 +112,8 @@ TEST_CASE("blend_span: every Porter-Duff operator and blend mode matches its for
     }
 }
 
-TEST_CASE("Canvas fills with Paint::blend and with the state's blend mode follow the same formulas", "[blend][canvas]") {
+TEST_CASE("Canvas fills with Paint::blend and with the state's blend mode follow the same formulas",
+          "[blend][canvas]") {
     const auto grid = premul_grid();
     const int n = static_cast<int>(grid.size());
     const Color src = Color::rgba(200, 30, 120, 180);
@@ -122,14 +124,17 @@ TEST_CASE("Canvas fills with Paint::blend and with the state's blend mode follow
         for (bool via_state : {false, true}) {
             Pixmap pm(n, 1);
             for (int x = 0; x < n; ++x)
-                pm.set_pixel(x, 0, {static_cast<std::uint8_t>(grid[static_cast<std::size_t>(x)][0]),
-                                    static_cast<std::uint8_t>(grid[static_cast<std::size_t>(x)][1]),
-                                    static_cast<std::uint8_t>(grid[static_cast<std::size_t>(x)][2]),
-                                    static_cast<std::uint8_t>(grid[static_cast<std::size_t>(x)][3])});
+                pm.set_pixel(x, 0,
+                             {static_cast<std::uint8_t>(grid[static_cast<std::size_t>(x)][0]),
+                              static_cast<std::uint8_t>(grid[static_cast<std::size_t>(x)][1]),
+                              static_cast<std::uint8_t>(grid[static_cast<std::size_t>(x)][2]),
+                              static_cast<std::uint8_t>(grid[static_cast<std::size_t>(x)][3])});
             Canvas c(pm);
             Paint p = Paint::solid(src);
-            if (via_state) c.set_blend_mode(mode);
-            else p.blend = mode;
+            if (via_state)
+                c.set_blend_mode(mode);
+            else
+                p.blend = mode;
             c.fill_rect({0, 0, static_cast<double>(n), 1}, p);
             int bad = 0;
             for (int x = 0; x < n; ++x) {

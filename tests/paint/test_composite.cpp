@@ -42,7 +42,8 @@ std::vector<std::array<int, 4>> destinations() {
     for (int a : {255, 254, 200, 128, 64, 1, 0})
         for (const auto& frac : {std::array<double, 3>{0, 0, 0}, std::array<double, 3>{1, 1, 1},
                                  std::array<double, 3>{0.3, 0.7, 1.0}, std::array<double, 3>{0.9, 0.05, 0.5}})
-            out.push_back({static_cast<int>(a * frac[0]), static_cast<int>(a * frac[1]), static_cast<int>(a * frac[2]), a});
+            out.push_back(
+                {static_cast<int>(a * frac[0]), static_cast<int>(a * frac[1]), static_cast<int>(a * frac[2]), a});
     return out;
 }
 
@@ -66,7 +67,8 @@ struct Span {
     explicit Span(const std::array<int, 4>& d) : px(256 * 4) {
         for (int i = 0; i < 256; ++i) {
             coverage[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(i);
-            for (int k = 0; k < 4; ++k) px[static_cast<std::size_t>(4 * i + k)] = static_cast<std::uint8_t>(d[static_cast<std::size_t>(k)]);
+            for (int k = 0; k < 4; ++k)
+                px[static_cast<std::size_t>(4 * i + k)] = static_cast<std::uint8_t>(d[static_cast<std::size_t>(k)]);
         }
     }
     std::array<int, 4> at(int i) const {
@@ -111,7 +113,8 @@ TEST_CASE("composite_span is source-over rounded once, for every coverage, colou
     CHECK(checked == 4L * 54 * 28 * 256);
 }
 
-TEST_CASE("composite_span_premul is source-over rounded once, for every coverage, source and destination", "[composite]") {
+TEST_CASE("composite_span_premul is source-over rounded once, for every coverage, source and destination",
+          "[composite]") {
     // Per-pixel premultiplied sources (gradients, images, layers): every valid premultiplied
     // source of a grid, every coverage, every destination of the grid.
     long checked = 0, wrong = 0;
@@ -177,13 +180,17 @@ TEST_CASE("composite_span with linear_blend is the blend in linear light within 
                 std::array<int, 4> want{};
                 const double out_a = std::floor(oa * 255 + 0.5);
                 for (int k = 0; k < 3; ++k) {
-                    const double dst_straight = d[3] ? std::min(255.0, std::floor(d[static_cast<std::size_t>(k)] * 255.0 / d[3] + 0.5)) : 0;
-                    const double straight = to_srgb(to_linear(src[static_cast<std::size_t>(k)]) * ws + to_linear(dst_straight) * wd);
+                    const double dst_straight =
+                        d[3] ? std::min(255.0, std::floor(d[static_cast<std::size_t>(k)] * 255.0 / d[3] + 0.5)) : 0;
+                    const double straight =
+                        to_srgb(to_linear(src[static_cast<std::size_t>(k)]) * ws + to_linear(dst_straight) * wd);
                     want[static_cast<std::size_t>(k)] = static_cast<int>(std::floor(straight * out_a / 255.0 + 0.5));
                 }
                 want[3] = static_cast<int>(out_a);
                 const auto got = span.at(c);
-                for (int k = 0; k < 4; ++k) worst = std::max(worst, std::abs(got[static_cast<std::size_t>(k)] - want[static_cast<std::size_t>(k)]));
+                for (int k = 0; k < 4; ++k)
+                    worst =
+                        std::max(worst, std::abs(got[static_cast<std::size_t>(k)] - want[static_cast<std::size_t>(k)]));
                 ++checked;
             }
         }
@@ -215,7 +222,9 @@ TEST_CASE("composite_span: runs of empty and full coverage at every offset and l
             for (int length = 0; offset + length <= static_cast<int>(coverage.size()); ++length) {
                 std::vector<std::uint8_t> px(4 * coverage.size());
                 for (std::size_t i = 0; i < coverage.size(); ++i)
-                    for (int k = 0; k < 4; ++k) px[4 * i + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(d[static_cast<std::size_t>(k)]);
+                    for (int k = 0; k < 4; ++k)
+                        px[4 * i + static_cast<std::size_t>(k)] =
+                            static_cast<std::uint8_t>(d[static_cast<std::size_t>(k)]);
                 composite_span(px.data() + 4 * offset, length, coverage.data() + offset, paint);
                 for (int i = 0; i < static_cast<int>(coverage.size()); ++i) {
                     const bool inside = i >= offset && i < offset + length;
@@ -230,8 +239,9 @@ TEST_CASE("composite_span: runs of empty and full coverage at every offset and l
     CHECK(wrong == 0);
 }
 
-TEST_CASE("blend_span source-over of a whole layer (no coverage): runs of transparent and opaque pixels at every offset",
-          "[composite]") {
+TEST_CASE(
+    "blend_span source-over of a whole layer (no coverage): runs of transparent and opaque pixels at every offset",
+    "[composite]") {
     // A layer as the SeamlessCompositor leaves it: runs of transparent pixels, of opaque ones and of
     // translucent ones, composited at every offset and length onto a translucent destination.
     constexpr std::size_t kPixels = 80;
@@ -243,7 +253,8 @@ TEST_CASE("blend_span source-over of a whole layer (no coverage): runs of transp
         const unsigned kind = next() % 3;
         for (std::size_t k = 0; k < run && i < kPixels; ++k, ++i) {
             const unsigned a = kind == 0 ? 0 : kind == 1 ? 255 : 1 + next() % 254;
-            for (int c = 0; c < 3; ++c) layer[4 * i + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(next() % (a + 1));
+            for (int c = 0; c < 3; ++c)
+                layer[4 * i + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(next() % (a + 1));
             layer[4 * i + 3] = static_cast<std::uint8_t>(a);
         }
     }
@@ -253,7 +264,8 @@ TEST_CASE("blend_span source-over of a whole layer (no coverage): runs of transp
         for (int length = 0; offset + length <= static_cast<int>(kPixels); ++length) {
             std::vector<std::uint8_t> px(4 * kPixels);
             for (std::size_t i = 0; i < kPixels; ++i)
-                for (int k = 0; k < 4; ++k) px[4 * i + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(d[static_cast<std::size_t>(k)]);
+                for (int k = 0; k < 4; ++k)
+                    px[4 * i + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(d[static_cast<std::size_t>(k)]);
             blend_span(px.data() + 4 * offset, length, nullptr, layer.data() + 4 * offset, BlendMode::SourceOver);
             for (int i = 0; i < static_cast<int>(kPixels); ++i) {
                 const std::uint8_t* s = layer.data() + 4 * i;

@@ -109,8 +109,10 @@ TEST_CASE("shader: a radial gradient with a focal circle solves the two-point co
                 return std::hypot(p.x - cx, p.y - cy) - rr;
             };
             double t;
-            if (g(0) <= 0) t = 0;
-            else if (g(1) >= 0) t = 1;
+            if (g(0) <= 0)
+                t = 0;
+            else if (g(1) >= 0)
+                t = 1;
             else {
                 double lo = 0, hi = 1;
                 for (int i = 0; i < 60; ++i) (g((lo + hi) / 2) > 0 ? lo : hi) = (lo + hi) / 2;
@@ -122,7 +124,8 @@ TEST_CASE("shader: a radial gradient with a focal circle solves the two-point co
 }
 
 TEST_CASE("shader: stops are clamped and made non-decreasing, and no stops is an error", "[shader]") {
-    const Shader s = Shader::linear({0, 0}, {1, 0}, {{0.7, Color::white()}, {0.2, Color::black()}, {1.5, Color::white()}});
+    const Shader s =
+        Shader::linear({0, 0}, {1, 0}, {{0.7, Color::white()}, {0.2, Color::black()}, {1.5, Color::white()}});
     REQUIRE(s.stops().size() == 3);
     CHECK(s.stops()[0].offset == 0.7);
     CHECK(s.stops()[1].offset == 0.7);

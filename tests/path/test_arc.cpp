@@ -20,7 +20,6 @@ using namespace svg_path_test;
 
 namespace {
 
-
 // Independent reference: SVG 2 F.6.5 / F.6.6 exactly as written in the specification.
 struct RefArc {
     double cx, cy, rx, ry, cphi, sphi, theta1, dtheta;
@@ -69,9 +68,9 @@ RefArc reference_arc(Point p1, double rx, double ry, double deg, bool fa, bool f
 }
 
 struct ArcCheck {
-    double max_distance = 0;  // upper bound of the distance of a sample to the ellipse
+    double max_distance = 0;                    // upper bound of the distance of a sample to the ellipse
     double min_radius = 1e300, max_radius = 0;  // |q| in the unit space of the ellipse
-    double travel = 0;  // signed angle travelled along the samples
+    double travel = 0;                          // signed angle travelled along the samples
     int cubics = 0;
 };
 
@@ -154,9 +153,9 @@ TEST_CASE("svg arc: the cubics stay within the documented bound of the true elli
         Point end;
     };
     const Case cases[] = {
-        {{0, 0}, 50, 50, 0, false, true, {100, 0}},        // half circle, radii exact
-        {{0, 0}, 50, 50, 0, true, false, {50, 50}},        // three quarters, large arc
-        {{10, 20}, 30, 10, 30, false, true, {40, 5}},      // rotated ellipse
+        {{0, 0}, 50, 50, 0, false, true, {100, 0}},    // half circle, radii exact
+        {{0, 0}, 50, 50, 0, true, false, {50, 50}},    // three quarters, large arc
+        {{10, 20}, 30, 10, 30, false, true, {40, 5}},  // rotated ellipse
         {{10, 20}, 30, 10, 30, true, true, {40, 5}},
         {{10, 20}, 30, 10, -150, true, false, {40, 5}},
         {{0, 0}, 1, 2, 0, false, false, {100, 100}},       // radii far too small: scaled
@@ -186,8 +185,10 @@ TEST_CASE("svg arc: the cubics stay within the documented bound of the true elli
             CHECK(k.max_radius <= 1 + arc_cubic_error(ref.dtheta / n) + 1e-12);
             // The cubics cover exactly the arc the flags select, in the right direction.
             CHECK(k.travel == Approx(ref.dtheta).margin(1e-9));
-            if (ref.scaled) CHECK(std::abs(ref.dtheta) == Approx(kPi));
-            else CHECK((std::abs(ref.dtheta) > kPi) == c.large);
+            if (ref.scaled)
+                CHECK(std::abs(ref.dtheta) == Approx(kPi));
+            else
+                CHECK((std::abs(ref.dtheta) > kPi) == c.large);
             CHECK((ref.dtheta > 0) == c.sweep);
             // Exact endpoint; the first cubic starts at the current point.
             CHECK(p.points().back() == c.end);
@@ -294,9 +295,7 @@ TEST_CASE("svg arc: invalid arguments and overflow", "[svgpath]") {
     try {
         arc_to(p, 1e-300, 1, 45, false, false, {1e10, 1e10});
         FAIL("no error");
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::InvalidData);
-    }
+    } catch (const Error& e) { CHECK(e.kind() == ErrorKind::InvalidData); }
     CHECK(p == Path().move_to(0, 0));  // unchanged
     CHECK(parse_error("M0 0 A1e-300 1 45 0 0 1e10 1e10") == "path data column 7: arc out of range");
     // Huge but finite arcs work: radii 1e300, endpoints near the limits of double.

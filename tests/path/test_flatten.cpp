@@ -26,7 +26,8 @@ double dist_to_segment(Point p, Point a, Point b) {
 }
 double dist_to_polyline(Point p, const Polyline& pl) {
     double best = INFINITY;
-    for (std::size_t i = 0; i + 1 < pl.points.size(); ++i) best = std::min(best, dist_to_segment(p, pl.points[i], pl.points[i + 1]));
+    for (std::size_t i = 0; i + 1 < pl.points.size(); ++i)
+        best = std::min(best, dist_to_segment(p, pl.points[i], pl.points[i + 1]));
     return best;
 }
 }  // namespace
@@ -38,7 +39,8 @@ TEST_CASE("flatness bound: the curve stays within the bound of its chord", "[fla
         const Point p0{u(rng), u(rng)}, p1{u(rng), u(rng)}, p2{u(rng), u(rng)}, p3{u(rng), u(rng)};
         const double bound = flatness_bound_cubic(p0, p1, p2, p3);
         double worst = 0;
-        for (int k = 0; k <= 200; ++k) worst = std::max(worst, dist_to_segment(cubic_at(p0, p1, p2, p3, k / 200.0), p0, p3));
+        for (int k = 0; k <= 200; ++k)
+            worst = std::max(worst, dist_to_segment(cubic_at(p0, p1, p2, p3, k / 200.0), p0, p3));
         REQUIRE(worst <= bound * (1 + 1e-12) + 1e-12);
     }
     // The quadratic bound is attained at t = 1/2 for a symmetric curve.
@@ -57,7 +59,8 @@ TEST_CASE("flatten: every curve point is within the tolerance of the polyline", 
             flatten(p, Affine{}, tol, pl);
             REQUIRE(pl.points.front() == p0);
             REQUIRE(pl.points.back() == p3);
-            for (int k = 0; k <= 400; ++k) REQUIRE(dist_to_polyline(cubic_at(p0, p1, p2, p3, k / 400.0), pl) <= tol * 1.0000001);
+            for (int k = 0; k <= 400; ++k)
+                REQUIRE(dist_to_polyline(cubic_at(p0, p1, p2, p3, k / 400.0), pl) <= tol * 1.0000001);
         }
     }
 }
@@ -73,7 +76,8 @@ void halving_leaves(Point p0, Point p1, Point p2, Point p3, double tol, int dept
         return;
     }
     auto mid = [](Point a, Point b) { return a * 0.5 + b * 0.5; };
-    const Point a1 = mid(p0, p1), b1 = mid(p1, p2), c1 = mid(p2, p3), a2 = mid(a1, b1), b2 = mid(b1, c1), a3 = mid(a2, b2);
+    const Point a1 = mid(p0, p1), b1 = mid(p1, p2), c1 = mid(p2, p3), a2 = mid(a1, b1), b2 = mid(b1, c1),
+                a3 = mid(a2, b2);
     halving_leaves(p0, a1, a2, a3, tol, depth + 1, out);
     halving_leaves(a3, b2, c1, p3, tol, depth + 1, out);
 }
@@ -90,8 +94,8 @@ TEST_CASE("flatten: a cubic's vertices are the end points of its halving tree's 
                 const double size = std::pow(10.0, lg(rng));
                 Point q[4];
                 for (Point& pt : q) pt = Point{500 + size * u(rng), 300 + size * u(rng)};
-                if (i % 5 == 0) q[1] = q[0];                  // a coincident control point
-                if (i % 7 == 0) q[2] = q[1] * 2 - q[0];      // collinear controls
+                if (i % 5 == 0) q[1] = q[0];             // a coincident control point
+                if (i % 7 == 0) q[2] = q[1] * 2 - q[0];  // collinear controls
                 Path p;
                 p.move_to(q[0]).cubic_to(q[1], q[2], q[3]);
                 Polyline pl;
@@ -143,7 +147,8 @@ TEST_CASE("flatten: quadratics in both modes stay within the tolerance, both way
                     for (double t : {0.0, 0.25, 0.5, 0.75}) {
                         const Point q = pl.points[k] + (pl.points[k + 1] - pl.points[k]) * t;
                         double best = INFINITY;
-                        for (std::size_t j = 0; j + 1 < curve.size(); ++j) best = std::min(best, dist_to_segment(q, curve[j], curve[j + 1]));
+                        for (std::size_t j = 0; j + 1 < curve.size(); ++j)
+                            best = std::min(best, dist_to_segment(q, curve[j], curve[j + 1]));
                         to_curve = std::max(to_curve, best);
                     }
                 INFO("tolerance " << tol << ", " << pl.points.size() << " points");
@@ -167,9 +172,9 @@ TEST_CASE("flatten: area-balanced quadratics lose far less area than chords", "[
     flatten(p, Affine{}, 0.05, balanced, FlattenMode::AreaBalanced);
     const double e_chords = exact - std::abs(polygon_area(chords.points));
     const double e_balanced = exact - std::abs(polygon_area(balanced.points));
-    INFO("chords: " << chords.points.size() << " points, area error " << e_chords << "; balanced: "
-                    << balanced.points.size() << " points, area error " << e_balanced);
-    CHECK(e_chords > 0);                              // chords are always inside a convex arc
+    INFO("chords: " << chords.points.size() << " points, area error " << e_chords
+                    << "; balanced: " << balanced.points.size() << " points, area error " << e_balanced);
+    CHECK(e_chords > 0);                                   // chords are always inside a convex arc
     CHECK(balanced.points.size() < chords.points.size());  // the balanced bound is 25/36 of the chord's
     CHECK(std::abs(e_balanced) < 0.3 * e_chords);
     // The pieces are equal in parameter, so with n pieces the loss is one chord piece's worth:
@@ -203,9 +208,9 @@ TEST_CASE("flatten: conics (exact circle arcs) stay within tolerance", "[flatten
 
 TEST_CASE("flatten: degenerate curves, cusps and loops do not explode", "[flatten]") {
     Path p;
-    p.move_to(5, 5).cubic_to({5, 5}, {5, 5}, {5, 5});       // coincident points
+    p.move_to(5, 5).cubic_to({5, 5}, {5, 5}, {5, 5});          // coincident points
     p.move_to(0, 0).cubic_to({100, 100}, {0, 100}, {100, 0});  // loop
-    p.move_to(0, 0).cubic_to({100, 0}, {0, 0}, {100, 0});       // cusp / collinear backtrack
+    p.move_to(0, 0).cubic_to({100, 0}, {0, 0}, {100, 0});      // cusp / collinear backtrack
     Polyline pl;
     flatten(p, Affine{}, 0.05, pl);
     CHECK(pl.contour_count() == 3);
@@ -242,9 +247,7 @@ TEST_CASE("flatten and fill: more than limits::kMaxFlattenedSegments segments is
     try {
         flatten(p, Affine{}, 1e-9, pl);
         FAIL("no error");
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::Limit);
-    }
+    } catch (const Error& e) { CHECK(e.kind() == ErrorKind::Limit); }
     pl.clear();
     pl.points.shrink_to_fit();
     // The rasterizer builds its own edges with the same limit.
@@ -254,9 +257,7 @@ TEST_CASE("flatten and fill: more than limits::kMaxFlattenedSegments segments is
     try {
         (void)r.fill_mask(p, Affine::translate(2000, 100), o, IRect{0, 0, 4000, 2000});
         FAIL("no error");
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::Limit);
-    }
+    } catch (const Error& e) { CHECK(e.kind() == ErrorKind::Limit); }
 }
 
 namespace {
@@ -284,7 +285,8 @@ Path overlapping_shapes() {
 
 }  // namespace
 
-TEST_CASE("fill: a rasterizer interrupted by the edge limit renders the next shape as a fresh one does", "[flatten][limits]") {
+TEST_CASE("fill: a rasterizer interrupted by the edge limit renders the next shape as a fresh one does",
+          "[flatten][limits]") {
     const Path big = limit_breaking_shape(), shapes = overlapping_shapes();
     FillOptions fine;
     fine.tolerance = 1e-9;
@@ -327,12 +329,18 @@ TEST_CASE("Path: append equals adding the other path's segments one by one", "[f
         const auto ws = other.weights();
         std::size_t p = 0, w = 0;
         for (const Verb v : other.verbs()) {
-            if (v == Verb::Move) into.move_to(m(pts[p]));
-            else if (v == Verb::Line) into.line_to(m(pts[p]));
-            else if (v == Verb::Quad) into.quad_to(m(pts[p]), m(pts[p + 1]));
-            else if (v == Verb::Cubic) into.cubic_to(m(pts[p]), m(pts[p + 1]), m(pts[p + 2]));
-            else if (v == Verb::Conic) into.conic_to(m(pts[p]), m(pts[p + 1]), ws[w++]);
-            else into.close();
+            if (v == Verb::Move)
+                into.move_to(m(pts[p]));
+            else if (v == Verb::Line)
+                into.line_to(m(pts[p]));
+            else if (v == Verb::Quad)
+                into.quad_to(m(pts[p]), m(pts[p + 1]));
+            else if (v == Verb::Cubic)
+                into.cubic_to(m(pts[p]), m(pts[p + 1]), m(pts[p + 2]));
+            else if (v == Verb::Conic)
+                into.conic_to(m(pts[p]), m(pts[p + 1]), ws[w++]);
+            else
+                into.close();
             p += static_cast<std::size_t>(verb_point_count(v));
         }
         return into;

@@ -19,10 +19,7 @@
 using namespace casteljau;
 using namespace svg_path_test;
 
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 // ---------------------------------------------------------------------------------------------
 // Commands, absolute and relative
@@ -68,11 +65,8 @@ TEST_CASE("svg path: smooth curves reflect only after the matching command", "[s
     check_parse("M0 0 C1 1 2 1 3 0 Z S1 1 2 2",
                 Path().move_to(0, 0).cubic_to({1, 1}, {2, 1}, {3, 0}).close().cubic_to({0, 0}, {1, 1}, {2, 2}));
     // T after Q, T after T (reflects the previous T's computed control point), relative t.
-    check_parse("M0 0 Q1 1 2 0 T4 0 t2 0", Path()
-                                               .move_to(0, 0)
-                                               .quad_to({1, 1}, {2, 0})
-                                               .quad_to({3, -1}, {4, 0})
-                                               .quad_to({5, 1}, {6, 0}));
+    check_parse("M0 0 Q1 1 2 0 T4 0 t2 0",
+                Path().move_to(0, 0).quad_to({1, 1}, {2, 0}).quad_to({3, -1}, {4, 0}).quad_to({5, 1}, {6, 0}));
     // T at the start and after C: control point = current point, and a following T reflects it.
     check_parse("M0 0 T2 0 4 0", Path().move_to(0, 0).quad_to({0, 0}, {2, 0}).quad_to({4, 0}, {4, 0}));
     check_parse("M0 0 C1 1 2 1 3 0 T5 0",
@@ -115,16 +109,26 @@ TEST_CASE("svg path: every relative command after every other command equals its
         Point end, start;  // current point and subpath start after it
     };
     const std::vector<First> firsts = {
-        {"M30 40", {30, 40}, {30, 40}},          {"m20 30", {30, 40}, {30, 40}},
-        {"L30 40", {30, 40}, {10, 10}},          {"l20 30", {30, 40}, {10, 10}},
-        {"H30", {30, 10}, {10, 10}},             {"h20", {30, 10}, {10, 10}},
-        {"V40", {10, 40}, {10, 10}},             {"v30", {10, 40}, {10, 10}},
-        {"C12 14 20 30 30 40", {30, 40}, {10, 10}}, {"c2 4 10 20 20 30", {30, 40}, {10, 10}},
-        {"S20 30 30 40", {30, 40}, {10, 10}},    {"s10 20 20 30", {30, 40}, {10, 10}},
-        {"Q20 30 30 40", {30, 40}, {10, 10}},    {"q10 20 20 30", {30, 40}, {10, 10}},
-        {"T30 40", {30, 40}, {10, 10}},          {"t20 30", {30, 40}, {10, 10}},
-        {"A10 10 0 0 1 30 40", {30, 40}, {10, 10}}, {"a10 10 0 0 1 20 30", {30, 40}, {10, 10}},
-        {"L30 40 Z", {10, 10}, {10, 10}},        {"L30 40 z", {10, 10}, {10, 10}},
+        {"M30 40", {30, 40}, {30, 40}},
+        {"m20 30", {30, 40}, {30, 40}},
+        {"L30 40", {30, 40}, {10, 10}},
+        {"l20 30", {30, 40}, {10, 10}},
+        {"H30", {30, 10}, {10, 10}},
+        {"h20", {30, 10}, {10, 10}},
+        {"V40", {10, 40}, {10, 10}},
+        {"v30", {10, 40}, {10, 10}},
+        {"C12 14 20 30 30 40", {30, 40}, {10, 10}},
+        {"c2 4 10 20 20 30", {30, 40}, {10, 10}},
+        {"S20 30 30 40", {30, 40}, {10, 10}},
+        {"s10 20 20 30", {30, 40}, {10, 10}},
+        {"Q20 30 30 40", {30, 40}, {10, 10}},
+        {"q10 20 20 30", {30, 40}, {10, 10}},
+        {"T30 40", {30, 40}, {10, 10}},
+        {"t20 30", {30, 40}, {10, 10}},
+        {"A10 10 0 0 1 30 40", {30, 40}, {10, 10}},
+        {"a10 10 0 0 1 20 30", {30, 40}, {10, 10}},
+        {"L30 40 Z", {10, 10}, {10, 10}},
+        {"L30 40 z", {10, 10}, {10, 10}},
     };
     auto num = [](double v) {
         char buf[32];
@@ -186,7 +190,7 @@ TEST_CASE("svg path: number syntax", "[svgpath]") {
     check_parse("M+3+4", Path().move_to(3, 4));
     check_parse("M1.+2.", Path().move_to(1, 2));
     check_parse("M1.e2 2.5E-1", Path().move_to(100, 0.25));
-    check_parse("M1e2.5", Path().move_to(100, 0.5));   // the exponent ends at '.'
+    check_parse("M1e2.5", Path().move_to(100, 0.5));  // the exponent ends at '.'
     check_parse("M-.5-.5", Path().move_to(-0.5, -0.5));
     check_parse("M000012 0.000", Path().move_to(12, 0));
     check_parse("M0.1 0.2", Path().move_to(0.1, 0.2));  // correctly rounded, as std::from_chars
@@ -278,15 +282,13 @@ TEST_CASE("svg path: errors carry the column, what was expected and what was fou
     CHECK(parse_error("M") == "path data column 2: expected a number after 'M', found end of data");
     CHECK(parse_error("M1 2 L") == "path data column 7: expected a number after 'L', found end of data");
     CHECK(parse_error("M1 2 L3") == "path data column 8: expected a number for y of 'L', found end of data");
-    CHECK(parse_error("M1 2 C1 2 3 4 5") ==
-          "path data column 16: expected a number for y of 'C', found end of data");
+    CHECK(parse_error("M1 2 C1 2 3 4 5") == "path data column 16: expected a number for y of 'C', found end of data");
     CHECK(parse_error("M1 2 C1 2 3 x") == "path data column 13: expected a number for y2 of 'C', found 'x'");
     CHECK(parse_error("M1 2 x") == "path data column 6: expected a number or a command letter, found 'x'");
     CHECK(parse_error("M1 2 Z 3") == "path data column 8: expected a command letter after 'Z', found '3'");
     CHECK(parse_error("M1 2 L3 4 5") == "path data column 12: expected a number for y of 'L', found end of data");
     // Columns count characters, not bytes; non-ASCII is named by its code point.
-    CHECK(parse_error("M0 0 \xC3\xA9 L") ==
-          "path data column 6: expected a number or a command letter, found U+00E9");
+    CHECK(parse_error("M0 0 \xC3\xA9 L") == "path data column 6: expected a number or a command letter, found U+00E9");
     CHECK(parse_error("M0 0 L\xC3\xA9\xC3\xA9 x") == "path data column 7: expected a number after 'L', found U+00E9");
     CHECK(parse_error("M0 0 L\xFF") == "path data column 7: expected a number after 'L', found byte 0xFF");
     CHECK(parse_error("M0 0 L\t") == "path data column 8: expected a number after 'L', found end of data");
@@ -433,7 +435,10 @@ TEST_CASE("svg path: format then parse gives the same path (random paths)", "[sv
                 case 1: p.line_to({coord(), coord()}); break;
                 case 2: p.line_to({coord(), cur.y}); break;  // horizontal
                 case 3: p.line_to({cur.x, coord()}); break;  // vertical
-                case 4: last_quad = {coord(), coord()}; p.quad_to(last_quad, {coord(), coord()}); break;
+                case 4:
+                    last_quad = {coord(), coord()};
+                    p.quad_to(last_quad, {coord(), coord()});
+                    break;
                 case 5:
                     last_cubic = {coord(), coord()};
                     p.cubic_to({coord(), coord()}, last_cubic, {coord(), coord()});
@@ -471,11 +476,11 @@ TEST_CASE("svg path: conics are written as cubics within 1e-9 relative", "[svgpa
     };
     const double h = std::sqrt(0.5);
     const Case cases[] = {
-        {{100, 0}, {100, 100}, {0, 100}, h},        // quarter circle of radius 100
-        {{0, 0}, {50, 80}, {100, 0}, 0.2},          // an ellipse arc
-        {{0, 0}, {50, 80}, {100, 0}, 1.0},          // a parabola
-        {{0, 0}, {50, 80}, {100, 0}, 3.0},          // a hyperbola
-        {{0, 0}, {50, 80}, {100, 0}, 50.0},         // nearly the control polygon
+        {{100, 0}, {100, 100}, {0, 100}, h},                  // quarter circle of radius 100
+        {{0, 0}, {50, 80}, {100, 0}, 0.2},                    // an ellipse arc
+        {{0, 0}, {50, 80}, {100, 0}, 1.0},                    // a parabola
+        {{0, 0}, {50, 80}, {100, 0}, 3.0},                    // a hyperbola
+        {{0, 0}, {50, 80}, {100, 0}, 50.0},                   // nearly the control polygon
         {{1e6, 1e6}, {1e6 + 3, 1e6}, {1e6 + 3, 1e6 + 3}, h},  // small, far from the origin
     };
     for (const Case& c : cases) {
@@ -513,8 +518,10 @@ TEST_CASE("svg path: conics are written as cubics within 1e-9 relative", "[svgpa
                 double hi = std::min(1.0, (static_cast<double>(best) + 1) / kRef);
                 for (int it = 0; it < 100; ++it) {
                     const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-                    if (distance(conic(m1), s) < distance(conic(m2), s)) hi = m2;
-                    else lo = m1;
+                    if (distance(conic(m1), s) < distance(conic(m2), s))
+                        hi = m2;
+                    else
+                        lo = m1;
                 }
                 worst = std::max(worst, distance(conic((lo + hi) / 2), s));
             }

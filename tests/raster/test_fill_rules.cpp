@@ -39,7 +39,9 @@ TEST_CASE("fill rules: self-intersecting stars", "[fillrule]") {
     Worst worst;
     std::mt19937 rng(21);
     std::uniform_real_distribution<double> u(0, 1);
-    struct Star { int p, q; };
+    struct Star {
+        int p, q;
+    };
     for (Star s : {Star{5, 2}, Star{7, 3}, Star{7, 2}, Star{9, 4}, Star{8, 3}, Star{11, 5}}) {
         for (int i = 0; i < 12; ++i) {
             const double radius = 1.5 + 30 * u(rng) * u(rng);
@@ -60,8 +62,10 @@ TEST_CASE("fill rules: self-intersecting stars", "[fillrule]") {
     }
     // The pentagram's centre: winding 2, so full under nonzero and empty under even-odd.
     const Contour penta = star_polygon({20, 20}, 18, 5, 2);
-    const Rendered nz = render(r, ref::to_path({penta}), Affine::identity(), with_rule(FillRule::NonZero), {0, 0, 40, 40});
-    const Rendered eo = render(r, ref::to_path({penta}), Affine::identity(), with_rule(FillRule::EvenOdd), {0, 0, 40, 40});
+    const Rendered nz =
+        render(r, ref::to_path({penta}), Affine::identity(), with_rule(FillRule::NonZero), {0, 0, 40, 40});
+    const Rendered eo =
+        render(r, ref::to_path({penta}), Affine::identity(), with_rule(FillRule::EvenOdd), {0, 0, 40, 40});
     CHECK(nz.at(20, 20) == 255);
     CHECK(eo.at(20, 20) == 0);
     CHECK(nz.at(20, 5) == 255);  // a tip: winding 1
@@ -144,16 +148,18 @@ TEST_CASE("fill rules: nested contours in both orientations", "[fillrule]") {
         INFO("orientations " << mask << ", centre winding " << w);
         CHECK(nz.at(20, 20) == (w != 0 ? 255 : 0));
         CHECK(eo.at(20, 20) == 255);  // three contours around it: odd whatever the orientations
-        CHECK(eo.at(6, 20) == 255);    // inside the outer square only
-        CHECK(eo.at(10, 20) == 0);     // between the second and third squares: two contours around
+        CHECK(eo.at(6, 20) == 255);   // inside the outer square only
+        CHECK(eo.at(10, 20) == 0);    // between the second and third squares: two contours around
     }
     // Nested curves: circles in both orientations, rendered as curves (curve bounds).
     Path same, opposite;
     same.add_circle({20, 20}, 17).add_circle({20, 20}, 9.5);
     opposite.add_circle({20, 20}, 17).append(Path().add_circle({20, 20}, 9.5).reversed());
     for (FillRule rule : kRules) {
-        worst.add(check_curves(r, same, Affine::identity(), with_rule(rule), clip, "nested circles, same orientation"), "circles same");
-        worst.add(check_curves(r, opposite, Affine::identity(), with_rule(rule), clip, "nested circles, opposite"), "circles opposite");
+        worst.add(check_curves(r, same, Affine::identity(), with_rule(rule), clip, "nested circles, same orientation"),
+                  "circles same");
+        worst.add(check_curves(r, opposite, Affine::identity(), with_rule(rule), clip, "nested circles, opposite"),
+                  "circles opposite");
     }
     CHECK(render(r, same, Affine::identity(), with_rule(FillRule::NonZero), clip).at(20, 20) == 255);
     CHECK(render(r, same, Affine::identity(), with_rule(FillRule::EvenOdd), clip).at(20, 20) == 0);
@@ -182,17 +188,17 @@ TEST_CASE("fill rules: winding reaching +3 and -3", "[fillrule]") {
     // The same squares three times with shifts: regions of winding 1, 2 and 3 side by side, and
     // a ring where +3 meets -3 contours (winding 0 between them).
     const Contours ladder{rect(2.5, 2.5, 20.5, 20.5), rect(5.25, 5.25, 23.25, 23.25), rect(8.75, 8.75, 26.75, 26.75)};
-    const Contours mixed{rect(2.5, 2.5, 20.5, 20.5), rect(5.25, 5.25, 23.25, 23.25), rect(8.75, 8.75, 26.75, 26.75),
-                         reversed(rect(3.5, 3.5, 27.5, 27.5)), reversed(rect(4.5, 4.5, 28.5, 28.5)),
-                         reversed(rect(6.5, 6.5, 29.5, 29.5))};
+    const Contours mixed{rect(2.5, 2.5, 20.5, 20.5),           rect(5.25, 5.25, 23.25, 23.25),
+                         rect(8.75, 8.75, 26.75, 26.75),       reversed(rect(3.5, 3.5, 27.5, 27.5)),
+                         reversed(rect(4.5, 4.5, 28.5, 28.5)), reversed(rect(6.5, 6.5, 29.5, 29.5))};
     for (FillRule rule : kRules) {
         check_polygons(r, ladder, rule, clip, "ladder of windings 1..3");
         check_polygons(r, mixed, rule, clip, "windings from -3 to +3");
     }
     const Rendered eo = render(r, ref::to_path(ladder), Affine::identity(), with_rule(FillRule::EvenOdd), clip);
-    CHECK(eo.at(3, 3) == 255);   // winding 1
-    CHECK(eo.at(6, 6) == 0);     // winding 2
-    CHECK(eo.at(12, 12) == 255); // winding 3
+    CHECK(eo.at(3, 3) == 255);    // winding 1
+    CHECK(eo.at(6, 6) == 0);      // winding 2
+    CHECK(eo.at(12, 12) == 255);  // winding 3
 }
 
 TEST_CASE("fill rules: +1/-1 contours sharing a pixel", "[fillrule]") {
@@ -249,7 +255,11 @@ TEST_CASE("fill rules: 300 stacked copies", "[fillrule]") {
     // is about the fill rule, not the default tolerance (tested in test_raster_accuracy.cpp).
     Rasterizer r;
     GlyphFont font(dejavu_sans_path());
-    struct Shape { std::string name; Path path; IRect clip; };
+    struct Shape {
+        std::string name;
+        Path path;
+        IRect clip;
+    };
     std::vector<Shape> shapes;
     shapes.push_back({"triangle", ref::to_path({{{1.2, 0.7}, {17.9, 6.3}, {5.1, 14.6}}}), {0, 0, 20, 16}});
     shapes.push_back({"pentagram", ref::to_path({star_polygon({10.3, 10.1}, 9.2, 5, 2, 0.3)}), {0, 0, 21, 21}});
@@ -366,11 +376,14 @@ TEST_CASE("fill rules regression: pixels outside 300 stacked pentagrams stay emp
     // carries an error of ~1/500 into pixels no edge touches (their winding is an integer), which
     // rounded to 1/255 at (17, 8) (outside the star) under both rules.
     Rasterizer r;
-    const Contour star{{13.018785901284325, 1.3109043000444256}, {13.266556835215056, 18.80859004336746},
-                       {2.7812243097794003, 4.7983010156981072}, {19.499077785348327, 9.9697391113538014},
+    const Contour star{{13.018785901284325, 1.3109043000444256},
+                       {13.266556835215056, 18.80859004336746},
+                       {2.7812243097794003, 4.7983010156981072},
+                       {19.499077785348327, 9.9697391113538014},
                        {2.9343551683728979, 15.612465529536211}};
     for (FillRule rule : kRules) {
-        const Rendered out = render(r, ref::to_path(Contours(300, star)), Affine::identity(), with_rule(rule), {0, 0, 21, 21});
+        const Rendered out =
+            render(r, ref::to_path(Contours(300, star)), Affine::identity(), with_rule(rule), {0, 0, 21, 21});
         CHECK(out.at(17, 8) == 0);
         check_polygons(r, Contours(300, star), rule, {0, 0, 21, 21}, "300 pentagrams");
     }
@@ -395,8 +408,8 @@ TEST_CASE("fill rules: narrow shapes accumulate by rows as the cell walk does (e
         if (i % 3 == 0) cs.push_back(star_polygon({20.5, 19.5}, 4 + 14 * u(rng), 7, 3, u(rng)));
         shapes.push_back(cs);
     }
-    shapes.push_back({rect(0, 0, 40, 40), rect(3, 4, 17, 30)});                  // sides on pixel sides and the box
-    shapes.push_back({{{10, 2}, {10.00001, 37}, {30, 37}, {29.99999, 2}}});         // nearly vertical sides
+    shapes.push_back({rect(0, 0, 40, 40), rect(3, 4, 17, 30)});              // sides on pixel sides and the box
+    shapes.push_back({{{10, 2}, {10.00001, 37}, {30, 37}, {29.99999, 2}}});  // nearly vertical sides
     shapes.push_back(Contours(300, Contour{{2.3, 1.7}, {37.9, 12.2}, {9.4, 38.6}}));  // winding 300
     shapes.push_back(Contours(301, Contour{{2.3, 1.7}, {37.9, 12.2}, {9.4, 38.6}}));
     const IRect window{0, 0, 40, 40};
@@ -420,9 +433,9 @@ TEST_CASE("fill rules: narrow shapes accumulate by rows as the cell walk does (e
                     const int d = std::abs(a.at(x, y) - b.at(x, y));
                     if (d > worst) {
                         worst = d;
-                        INFO(simd::target_name(t) << ": " << describe(cs, Affine::identity(), window) << " "
-                                                << rule_name(rule) << " at " << x << "," << y << ": " << a.at(x, y)
-                                                << " vs " << b.at(x, y));
+                        INFO(simd::target_name(t)
+                             << ": " << describe(cs, Affine::identity(), window) << " " << rule_name(rule) << " at "
+                             << x << "," << y << ": " << a.at(x, y) << " vs " << b.at(x, y));
                         CHECK(d <= 1);
                     }
                     ++compared;
@@ -460,7 +473,8 @@ TEST_CASE("fill rules: proven-simple narrow shapes round half-way coverage up, a
     // multiple of 1 / (32 a b), and their diagonals give half-way values that are not dyadic.
     std::vector<double> grain(shapes.size(), 16.0);
     for (int i = 0; i < 200; ++i) {
-        const int a = std::uniform_int_distribution<int>(1, 12)(rng), b = std::uniform_int_distribution<int>(1, 12)(rng);
+        const int a = std::uniform_int_distribution<int>(1, 12)(rng),
+                  b = std::uniform_int_distribution<int>(1, 12)(rng);
         const double x = 12 + half(30), y = half(40);
         shapes.push_back(Contour{{x, y}, {x + a, y}, {x, y + b}});
         grain.push_back(32.0 * a * b);
@@ -488,7 +502,7 @@ TEST_CASE("fill rules: proven-simple narrow shapes round half-way coverage up, a
                     ties += a - std::floor(a) == 0.5;
                     if (m.at(x, y) != want && ++wrong <= 5) {
                         INFO(simd::target_name(t) << ": " << describe({c}, Affine::identity(), window) << " at " << x
-                                                << "," << y << ": " << int(m.at(x, y)) << ", exact " << a << "/255");
+                                                  << "," << y << ": " << int(m.at(x, y)) << ", exact " << a << "/255");
                         CHECK(m.at(x, y) == want);
                     }
                 }

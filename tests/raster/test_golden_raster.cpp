@@ -46,7 +46,8 @@ void scene(const std::string& name, const Path& path, const FillOptions& opts, c
     REQUIRE(out.contract_violation.empty());
     const Comparison c = compare(out, truth);
     bool passed = polygon ? c.max_err <= kPolygonMaxErr : (c.max_err <= kCurveMaxErr && c.mean_all <= kCurveMeanErr);
-    std::string summary = std::string(polygon ? "polygon vs exact reference: " : "curves vs fine reference: ") + c.text();
+    std::string summary =
+        std::string(polygon ? "polygon vs exact reference: " : "curves vs fine reference: ") + c.text();
     if (!polygon) {
         const Comparison own =
             compare(out, ref::slab_area(library_flattening(path, Affine::identity(), opts.tolerance), opts.rule, clip));

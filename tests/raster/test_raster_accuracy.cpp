@@ -27,7 +27,8 @@ TEST_CASE("accuracy: axis-aligned rectangles at fractional coordinates", "[accur
     // Worked numbers: [0.25, 3.75] x [1.5, 2.5] covers pixel (0, 1) by 0.75 x 0.5 -> 96 (95.625),
     // pixel (1, 1) by 0.5 -> 128 (127.5 rounds up), pixel (3, 2) by 0.75 x 0.5 -> 96.
     {
-        const Rendered out = render(r, ref::to_path({rect(0.25, 1.5, 3.75, 2.5)}), Affine::identity(), {}, {0, 0, 5, 4});
+        const Rendered out =
+            render(r, ref::to_path({rect(0.25, 1.5, 3.75, 2.5)}), Affine::identity(), {}, {0, 0, 5, 4});
         CHECK(out.at(0, 1) == 96);
         CHECK(out.at(1, 1) == 128);
         CHECK(out.at(2, 2) == 128);
@@ -53,7 +54,9 @@ TEST_CASE("accuracy: axis-aligned rectangles at fractional coordinates", "[accur
         const double w = std::pow(10.0, -3 + 4.3 * size(rng)), h = std::pow(10.0, -3 + 4.3 * size(rng));
         Contour c = rect(x0, y0, x0 + w, y0 + h);
         if (i % 2) c = reversed(c);
-        for (FillRule rule : kRules) worst.add(check_polygons(r, {c}, rule, {0, 0, 32, 32}, "rect " + std::to_string(i)), "rect " + std::to_string(i));
+        for (FillRule rule : kRules)
+            worst.add(check_polygons(r, {c}, rule, {0, 0, 32, 32}, "rect " + std::to_string(i)),
+                      "rect " + std::to_string(i));
         // The same through Path::add_rect.
         Path p;
         p.add_rect({x0, y0, x0 + w, y0 + h});
@@ -74,7 +77,9 @@ TEST_CASE("accuracy: random triangles", "[accuracy]") {
         const Point o{c(rng), c(rng)};
         std::uniform_real_distribution<double> d(-s, s);
         const Contour t{{o.x + d(rng), o.y + d(rng)}, {o.x + d(rng), o.y + d(rng)}, {o.x + d(rng), o.y + d(rng)}};
-        for (FillRule rule : kRules) worst.add(check_polygons(r, {t}, rule, {0, 0, 24, 24}, "triangle " + std::to_string(i)), "triangle " + std::to_string(i));
+        for (FillRule rule : kRules)
+            worst.add(check_polygons(r, {t}, rule, {0, 0, 24, 24}, "triangle " + std::to_string(i)),
+                      "triangle " + std::to_string(i));
     }
     WARN("triangles: " << worst.text());
 }
@@ -86,7 +91,9 @@ TEST_CASE("accuracy: random simple and self-intersecting polygons", "[accuracy]"
     for (int i = 0; i < 300; ++i) {
         const int n = 3 + i % 30;
         const Contour s = random_simple_polygon(rng, {16.3, 15.7}, 1 + (i % 5), 6 + (i % 9), n);
-        for (FillRule rule : kRules) simple.add(check_polygons(r, {s}, rule, {0, 0, 32, 32}, "simple " + std::to_string(i)), "simple " + std::to_string(i));
+        for (FillRule rule : kRules)
+            simple.add(check_polygons(r, {s}, rule, {0, 0, 32, 32}, "simple " + std::to_string(i)),
+                       "simple " + std::to_string(i));
     }
     for (int i = 0; i < 300; ++i) {
         const int n = 4 + i % 25;
@@ -104,7 +111,9 @@ TEST_CASE("accuracy: random simple and self-intersecting polygons", "[accuracy]"
             if ((i >> k) & 1) c = reversed(c);
             set.push_back(c);
         }
-        for (FillRule rule : kRules) multi.add(check_polygons(r, set, rule, {0, 0, 24, 24}, "set " + std::to_string(i)), "set " + std::to_string(i));
+        for (FillRule rule : kRules)
+            multi.add(check_polygons(r, set, rule, {0, 0, 24, 24}, "set " + std::to_string(i)),
+                      "set " + std::to_string(i));
     }
     WARN("simple polygons: " << simple.text());
     WARN("self-intersecting polygons: " << crossing.text());
@@ -123,13 +132,14 @@ TEST_CASE("accuracy: two edges from one vertex outside a pixel, crossing it", "[
         // Vertex V left of the pixel column x in [5, 6], rays through it to x = 40.
         const double vy = 8 + y(rng), ay = 8 + y(rng), by = 8 + y(rng);
         const Point v{0.5 + 3 * y(rng), vy}, p{40, ay}, q{40, by};
-        const Contour wedge{p, v, q};                               // ... -> p -> V -> q -> ...
-        const Contour below{v, p, {40, ay + far(rng)}};             // V -> p first
-        const Contour above{v, q, {40, by - far(rng)}};             // V -> q first
+        const Contour wedge{p, v, q};                    // ... -> p -> V -> q -> ...
+        const Contour below{v, p, {40, ay + far(rng)}};  // V -> p first
+        const Contour above{v, q, {40, by - far(rng)}};  // V -> q first
         for (FillRule rule : kRules) {
             check_polygons(r, {wedge}, rule, {0, 0, 48, 40}, "wedge " + std::to_string(i));
             check_polygons(r, {below, above}, rule, {0, 0, 48, 40}, "touching at V " + std::to_string(i));
-            check_polygons(r, {below, reversed(above)}, rule, {0, 0, 48, 40}, "touching at V, one reversed " + std::to_string(i));
+            check_polygons(r, {below, reversed(above)}, rule, {0, 0, 48, 40},
+                           "touching at V, one reversed " + std::to_string(i));
         }
     }
 }
@@ -146,14 +156,20 @@ TEST_CASE("accuracy: thin slivers", "[accuracy]") {
         const Point d{std::cos(ang) * len / 2, std::sin(ang) * len / 2};
         const Point nrm{-std::sin(ang) * wid / 2, std::cos(ang) * wid / 2};
         const Contour q{c - d - nrm, c + d - nrm, c + d + nrm, c - d + nrm};
-        for (FillRule rule : kRules) worst.add(check_polygons(r, {q}, rule, {0, 0, 32, 32}, "sliver " + std::to_string(i)), "sliver " + std::to_string(i));
+        for (FillRule rule : kRules)
+            worst.add(check_polygons(r, {q}, rule, {0, 0, 32, 32}, "sliver " + std::to_string(i)),
+                      "sliver " + std::to_string(i));
         // A needle triangle (apex angle tiny).
         const Contour t{c - d, c + d - nrm, c + d + nrm};
-        worst.add(check_polygons(r, {t}, FillRule::NonZero, {0, 0, 32, 32}, "needle " + std::to_string(i)), "needle " + std::to_string(i));
+        worst.add(check_polygons(r, {t}, FillRule::NonZero, {0, 0, 32, 32}, "needle " + std::to_string(i)),
+                  "needle " + std::to_string(i));
     }
     // Axis-aligned slivers: a horizontal and a vertical strip of height/width 1/1024.
-    worst.add(check_polygons(r, {rect(1.1, 5.25, 20.7, 5.25 + 1.0 / 1024)}, FillRule::NonZero, {0, 0, 24, 12}, "h strip"), "h strip");
-    worst.add(check_polygons(r, {rect(5.5, 0.3, 5.5 + 1.0 / 1024, 11.2)}, FillRule::NonZero, {0, 0, 24, 12}, "v strip"), "v strip");
+    worst.add(
+        check_polygons(r, {rect(1.1, 5.25, 20.7, 5.25 + 1.0 / 1024)}, FillRule::NonZero, {0, 0, 24, 12}, "h strip"),
+        "h strip");
+    worst.add(check_polygons(r, {rect(5.5, 0.3, 5.5 + 1.0 / 1024, 11.2)}, FillRule::NonZero, {0, 0, 24, 12}, "v strip"),
+              "v strip");
     WARN("slivers: " << worst.text());
 }
 
@@ -172,7 +188,8 @@ TEST_CASE("accuracy: polygons at huge offsets translated back by the transform",
                 FillOptions o;
                 for (FillRule rule : kRules) {
                     o.rule = rule;
-                    const std::string what = "offset (" + std::to_string(ox) + ", " + std::to_string(oy) + ") #" + std::to_string(i);
+                    const std::string what =
+                        "offset (" + std::to_string(ox) + ", " + std::to_string(oy) + ") #" + std::to_string(i);
                     worst.add(check_polygons(r, {far}, back, o, {0, 0, 16, 16}, what), what);
                 }
             }
@@ -206,14 +223,16 @@ TEST_CASE("accuracy: polygons partly outside the target on every side", "[accura
     }
     // Bigger than the clip on all sides: every pixel full.
     {
-        const Rendered out = render(r, ref::to_path({rect(-100.5, -50.25, 400.75, 300.5)}), Affine::identity(), {}, clip);
+        const Rendered out =
+            render(r, ref::to_path({rect(-100.5, -50.25, 400.75, 300.5)}), Affine::identity(), {}, clip);
         for (std::uint8_t v : out.cov) REQUIRE(v == 255);
         CHECK(out.rows_delivered == static_cast<std::size_t>(clip.height()));
     }
     // Crossing the clip on all sides at once (a rotated square larger than the clip).
     {
         const Contour big = regular_polygon({26.5, 31.7}, 24, 4, true, 0.3);
-        for (FillRule rule : kRules) worst.add(check_polygons(r, {big}, rule, clip, "big rotated square"), "big rotated square");
+        for (FillRule rule : kRules)
+            worst.add(check_polygons(r, {big}, rule, clip, "big rotated square"), "big rotated square");
     }
     WARN("partly outside: " << worst.text());
 }
@@ -228,7 +247,9 @@ TEST_CASE("accuracy: tiny polygons inside one pixel", "[accuracy]") {
         const Point c{3 + u(rng), 2 + u(rng)};
         const Contour p = (i % 2) ? random_simple_polygon(rng, c, 0.2 * s, s, 3 + i % 6)
                                   : random_polygon(rng, {c.x - s, c.y - s, c.x + s, c.y + s}, 3 + i % 5);
-        for (FillRule rule : kRules) worst.add(check_polygons(r, {p}, rule, {0, 0, 8, 6}, "tiny " + std::to_string(i)), "tiny " + std::to_string(i));
+        for (FillRule rule : kRules)
+            worst.add(check_polygons(r, {p}, rule, {0, 0, 8, 6}, "tiny " + std::to_string(i)),
+                      "tiny " + std::to_string(i));
     }
     // Worked number: a 0.5 x 0.5 square inside pixel (2, 3): 63.75 -> 64.
     const Rendered out = render(r, ref::to_path({rect(2.2, 3.3, 2.7, 3.8)}), Affine::identity(), {}, {0, 0, 8, 6});
@@ -245,13 +266,16 @@ TEST_CASE("accuracy: a polygon with many vertices inside one pixel", "[accuracy]
     std::mt19937 rng(8);
     // 2000-vertex simple polygon, radius 0.05 .. 0.45 around the pixel centre.
     const Contour many = random_simple_polygon(rng, {5.5, 4.5}, 0.05, 0.45, 2000);
-    for (FillRule rule : kRules) worst.add(check_polygons(r, {many}, rule, {0, 0, 10, 8}, "2000-gon in a pixel"), "2000-gon");
+    for (FillRule rule : kRules)
+        worst.add(check_polygons(r, {many}, rule, {0, 0, 10, 8}, "2000-gon in a pixel"), "2000-gon");
     // 500 random vertices inside one pixel: hundreds of crossings.
     const Contour scribble = random_polygon(rng, {5.02, 4.03, 5.97, 4.98}, 500);
-    for (FillRule rule : kRules) worst.add(check_polygons(r, {scribble}, rule, {0, 0, 10, 8}, "500-vertex scribble"), "scribble");
+    for (FillRule rule : kRules)
+        worst.add(check_polygons(r, {scribble}, rule, {0, 0, 10, 8}, "500-vertex scribble"), "scribble");
     // Many vertices straddling a pixel corner.
     const Contour corner = random_simple_polygon(rng, {6.0, 3.0}, 0.1, 0.6, 1000);
-    for (FillRule rule : kRules) worst.add(check_polygons(r, {corner}, rule, {0, 0, 10, 8}, "1000-gon on a corner"), "corner");
+    for (FillRule rule : kRules)
+        worst.add(check_polygons(r, {corner}, rule, {0, 0, 10, 8}, "1000-gon on a corner"), "corner");
     WARN("many vertices: " << worst.text());
 }
 
@@ -280,24 +304,27 @@ TEST_CASE("accuracy: thousands of pieces over many pixels stay within the fill's
     }
 }
 
-TEST_CASE("accuracy: thousands of pieces crossing between the dense method's lines are re-sorted, not swapped one by one",
-          "[accuracy][regression]") {
+TEST_CASE(
+    "accuracy: thousands of pieces crossing between the dense method's lines are re-sorted, not swapped one by one",
+    "[accuracy][regression]") {
     // Found by fuzz_stroke (fuzz/regressions/stroke/huge-width-...): a stroke 1.3e8 wide under a
     // singular transform puts nearly all of a 27,785-segment outline through each of 270 pixels.
     // Once the exact-work budget is spent each such pixel is integrated on 16 lines, and between
     // two lines nearly every pair of pieces swaps: restoring their x order by insertion cost the
     // square of the pieces per line (5 s in Release). The swaps count as work, so the fill stays
     // within twice its budget plus the last cell's lines only when the order is re-sorted whole.
-    const std::vector<std::uint8_t> bytes = read_file(std::string(CASTELJAU_SOURCE_DIR) +
-        "/fuzz/regressions/stroke/huge-width-under-a-singular-transform-piles-crossing-pieces-dense-lines-insertion-sort-quadratic");
+    const std::vector<std::uint8_t> bytes =
+        read_file(std::string(CASTELJAU_SOURCE_DIR) +
+                  "/fuzz/regressions/stroke/"
+                  "huge-width-under-a-singular-transform-piles-crossing-pieces-dense-lines-insertion-sort-quadratic");
     fuzz::Bytes in(bytes.data(), bytes.size());
     const fuzz::StrokeCase c = fuzz::read_stroke_case(in);
     const Path outline = stroke(c.path, c.style, c.m, 0.05);
     Rasterizer r;
     (void)r.fill_mask(outline, c.m, FillOptions{}, IRect{0, 0, 128, 128});
     const RasterStats st = r.last_stats();
-    INFO("segments " << st.segments << ", exact cells " << st.exact_cells << ", dense " << st.dense_cells << ", accumulated "
-                     << st.accumulated_cells << ", work " << st.exact_work);
+    INFO("segments " << st.segments << ", exact cells " << st.exact_cells << ", dense " << st.dense_cells
+                     << ", accumulated " << st.accumulated_cells << ", work " << st.exact_work);
     CHECK(st.dense_cells > 0);
     // 16 lines of 2 visits and a sort (log2 of 27,785 pieces < 15 visits) per piece.
     const double budget = 5e7 + 2000.0 * static_cast<double>(st.segments);
@@ -310,13 +337,15 @@ TEST_CASE("accuracy: polygons under rotation, scale and skew transforms", "[accu
     std::mt19937 rng(9);
     std::uniform_real_distribution<double> u(0, 1);
     for (int i = 0; i < 100; ++i) {
-        const Contour p = (i % 2) ? random_simple_polygon(rng, {0, 0}, 0.3, 1.0, 6 + i % 7) : random_polygon(rng, {-1, -1, 1, 1}, 6);
+        const Contour p =
+            (i % 2) ? random_simple_polygon(rng, {0, 0}, 0.3, 1.0, 6 + i % 7) : random_polygon(rng, {-1, -1, 1, 1}, 6);
         const Affine m = Affine::translate(16 + 3 * u(rng), 16 + 3 * u(rng)) * Affine::rotate(2 * kPi * u(rng)) *
                          Affine::skew_x(0.8 * (u(rng) - 0.5)) * Affine::scale(2 + 12 * u(rng), 2 + 12 * u(rng));
         FillOptions o;
         for (FillRule rule : kRules) {
             o.rule = rule;
-            worst.add(check_polygons(r, {p}, m, o, {0, 0, 32, 32}, "transformed " + std::to_string(i)), "transformed " + std::to_string(i));
+            worst.add(check_polygons(r, {p}, m, o, {0, 0, 32, 32}, "transformed " + std::to_string(i)),
+                      "transformed " + std::to_string(i));
         }
     }
     WARN("transformed polygons: " << worst.text());
@@ -381,7 +410,10 @@ TEST_CASE("accuracy: cubic loops and cusps", "[accuracy]") {
     Rasterizer r;
     Worst worst;
     const IRect clip{0, 0, 80, 80};
-    struct Case { const char* name; Point p0, p1, p2, p3; };
+    struct Case {
+        const char* name;
+        Point p0, p1, p2, p3;
+    };
     const Case cases[] = {
         {"loop", {10, 60}, {90, 0}, {-10, 0}, {70, 60}},
         {"small loop", {20, 40}, {50, 10}, {30, 10}, {60, 40}},
@@ -464,9 +496,9 @@ TEST_CASE("accuracy: huge coordinates crossing the target", "[accuracy]") {
     const IRect clip{0, 0, 64, 48};
     const Contours cases[] = {
         {{{-1e7, -1e7}, {1e7, 7.5}, {20.25, 1e7}}},
-        {{{-1e7, 30.2}, {1e7, 31.7}, {1e7, 29.1}}},                 // a needle 2e7 px long through the canvas
-        {{{-1e7, -1e7}, {1e7, -1e7}, {1e7, 1e7}, {-1e7, 1e7}}},     // covers everything
-        {{{-1e7, -1e7}, {1e7, 1e7 + 3.3}, {-1e7, 1e7}}},            // diagonal edge through the canvas
+        {{{-1e7, 30.2}, {1e7, 31.7}, {1e7, 29.1}}},              // a needle 2e7 px long through the canvas
+        {{{-1e7, -1e7}, {1e7, -1e7}, {1e7, 1e7}, {-1e7, 1e7}}},  // covers everything
+        {{{-1e7, -1e7}, {1e7, 1e7 + 3.3}, {-1e7, 1e7}}},         // diagonal edge through the canvas
         {{{32.1, -1e7}, {32.6, 1e7}, {-1e7, 24.4}}, {{-1e7, 10}, {1e7, 40.5}, {1e7, 10.2}}},  // crossing triangles
         {{{1e7, 1e7}, {-1e7, 1e7 - 5}, {-3e6, -1e7}, {5e6, -1e7}, {17.3, 20.9}}},
     };
@@ -540,7 +572,8 @@ TEST_CASE("accuracy: a 16384 x 16384 target holding one small shape", "[accuracy
             // No buffer that scales with the 2^28-pixel target: a few MiB at most in total (the
             // strip buffers are bounded by the shape's width), no single block near a canvas row
             // count times its width.
-            INFO("fill allocated " << alloc.bytes << " bytes in " << alloc.count << " blocks, largest " << alloc.largest);
+            INFO("fill allocated " << alloc.bytes << " bytes in " << alloc.count << " blocks, largest "
+                                   << alloc.largest);
             CHECK(alloc.bytes <= (8u << 20));
             CHECK(alloc.largest <= (4u << 20));
             const Comparison cmp = compare(out, ref::path_reference(p, Affine::identity(), rule, window));
@@ -562,7 +595,11 @@ TEST_CASE("accuracy: error against the flattening tolerance", "[accuracy]") {
     // boundaries in one pixel (thin stems). At tol = 1e-3 the result is nearly exact.
     Rasterizer r;
     GlyphFont font(dejavu_sans_path());
-    struct Scene { std::string name; Path path; IRect clip; };
+    struct Scene {
+        std::string name;
+        Path path;
+        IRect clip;
+    };
     std::vector<Scene> scenes;
     {
         Path p;
@@ -580,7 +617,8 @@ TEST_CASE("accuracy: error against the flattening tolerance", "[accuracy]") {
             FillOptions o;
             o.tolerance = tol;
             const Rendered out = render(r, s.path, Affine::identity(), o, s.clip);
-            const Comparison c = compare(out, ref::path_reference(s.path, Affine::identity(), FillRule::NonZero, s.clip));
+            const Comparison c =
+                compare(out, ref::path_reference(s.path, Affine::identity(), FillRule::NonZero, s.clip));
             char line[200];
             std::snprintf(line, sizeof line, "%.3f | %s | %.2f | %.3f | %.3f | %zu\n", tol, s.name.c_str(), c.max_err,
                           c.mean_all, c.mean_err, out.stats.segments);
@@ -604,11 +642,13 @@ TEST_CASE("raster regression: a square inside one pixel keeps all four edges in 
     const Contour sq{{1.25, 2.25}, {1.75, 2.25}, {1.75, 2.75}, {1.25, 2.75}};
     for (const Contour& c : {sq, reversed(sq)})
         for (FillRule rule : kRules) {
-            const Rendered out = render(r, ref::to_path({c}), Affine::identity(), [&] {
-                FillOptions o;
-                o.rule = rule;
-                return o;
-            }(), {0, 0, 4, 4});
+            const Rendered out = render(r, ref::to_path({c}), Affine::identity(),
+                                        [&] {
+                                            FillOptions o;
+                                            o.rule = rule;
+                                            return o;
+                                        }(),
+                                        {0, 0, 4, 4});
             CHECK(out.at(1, 2) == 64);  // 0.25 x 255 = 63.75
         }
     // The seeded case that found it: a sliver rectangle of 0.553 x 0.0035 px.
@@ -616,7 +656,8 @@ TEST_CASE("raster regression: a square inside one pixel keeps all four edges in 
                    FillRule::NonZero, {0, 0, 32, 32}, "sliver rectangle in one pixel");
 }
 
-TEST_CASE("raster regression: curves crossing the side of a target not at the origin are not culled to chords", "[accuracy]") {
+TEST_CASE("raster regression: curves crossing the side of a target not at the origin are not culled to chords",
+          "[accuracy]") {
     // The clipping path culls curves whose control box misses the target (plus a pixel); the cull
     // rectangle must be in the same coordinates as the points (local to the target).
     Rasterizer r;

@@ -68,8 +68,8 @@ TEST_CASE("raster paths: banded and dense storage (tiles, clipped) agree", "[ras
                     }
             }
         }
-        INFO("rule " << (rule == FillRule::NonZero ? "nonzero" : "evenodd") << ": worst difference " << worst
-                     << " at (" << worst_x << ", " << worst_y << ")");
+        INFO("rule " << (rule == FillRule::NonZero ? "nonzero" : "evenodd") << ": worst difference " << worst << " at ("
+                     << worst_x << ", " << worst_y << ")");
         CHECK(direct_tiles == tiles);
         CHECK(worst <= 1);  // both exact; only the rounding of sums in a different order may differ
     }
@@ -101,8 +101,13 @@ TEST_CASE("raster paths: every SIMD target of the row scan gives the same pixels
     for (int i = 0; i < 300; ++i) stacked.add_polygon(star_polygon({60, 60}, 50, 7, 3, 0.2));
     Path one;
     one.add_polygon(star_polygon({60, 60}, 50, 7, 3, 0.2));
-    struct Job { const Path* path; IRect clip; };
-    const Job jobs[] = {{&scene, {0, 0, 910, 720}}, {&scene, {130, 150, 260, 300}}, {&stacked, {0, 0, 120, 120}},
+    struct Job {
+        const Path* path;
+        IRect clip;
+    };
+    const Job jobs[] = {{&scene, {0, 0, 910, 720}},
+                        {&scene, {130, 150, 260, 300}},
+                        {&stacked, {0, 0, 120, 120}},
                         {&one, {0, 0, 120, 120}}};
     const std::vector<std::int64_t> targets = simd::available_targets();
     REQUIRE(!targets.empty());
@@ -122,7 +127,8 @@ TEST_CASE("raster paths: every SIMD target of the row scan gives the same pixels
                     first.push_back(out.cov);
                 } else {
                     int worst = 0;
-                    for (std::size_t i = 0; i < out.cov.size(); ++i) worst = std::max(worst, std::abs(out.cov[i] - first[k][i]));
+                    for (std::size_t i = 0; i < out.cov.size(); ++i)
+                        worst = std::max(worst, std::abs(out.cov[i] - first[k][i]));
                     CHECK(worst <= 1);  // the same sums, added in another order
                 }
                 ++k;
@@ -131,7 +137,8 @@ TEST_CASE("raster paths: every SIMD target of the row scan gives the same pixels
         // 300 stacked copies: the single star under nonzero, nothing under even-odd.
         FillOptions nz;
         Rasterizer r;
-        CHECK(render(r, stacked, Affine{}, nz, {0, 0, 120, 120}).cov == render(r, one, Affine{}, nz, {0, 0, 120, 120}).cov);
+        CHECK(render(r, stacked, Affine{}, nz, {0, 0, 120, 120}).cov ==
+              render(r, one, Affine{}, nz, {0, 0, 120, 120}).cov);
         FillOptions eo;
         eo.rule = FillRule::EvenOdd;
         const Rendered none = render(r, stacked, Affine{}, eo, {0, 0, 120, 120});

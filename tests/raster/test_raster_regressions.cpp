@@ -18,14 +18,21 @@
 using namespace casteljau;
 
 namespace {
-int ft_move(const FT_Vector* t, void* u) { static_cast<Path*>(u)->move_to(t->x, t->y); return 0; }
-int ft_line(const FT_Vector* t, void* u) { static_cast<Path*>(u)->line_to(t->x, t->y); return 0; }
+int ft_move(const FT_Vector* t, void* u) {
+    static_cast<Path*>(u)->move_to(t->x, t->y);
+    return 0;
+}
+int ft_line(const FT_Vector* t, void* u) {
+    static_cast<Path*>(u)->line_to(t->x, t->y);
+    return 0;
+}
 int ft_conic(const FT_Vector* c, const FT_Vector* t, void* u) {
     static_cast<Path*>(u)->quad_to({double(c->x), double(c->y)}, {double(t->x), double(t->y)});
     return 0;
 }
 int ft_cubic(const FT_Vector* c, const FT_Vector* d, const FT_Vector* t, void* u) {
-    static_cast<Path*>(u)->cubic_to({double(c->x), double(c->y)}, {double(d->x), double(d->y)}, {double(t->x), double(t->y)});
+    static_cast<Path*>(u)->cubic_to({double(c->x), double(c->y)}, {double(d->x), double(d->y)},
+                                    {double(t->x), double(t->y)});
     return 0;
 }
 }  // namespace
@@ -105,7 +112,8 @@ TEST_CASE("regression: thousands of crossings in one pixel finish and stay accur
             }
         }
         const double truth = 255.0 * inside / (N * N);
-        INFO("rule " << (rule == FillRule::NonZero ? "nonzero" : "evenodd") << ": got " << int(m.at(3, 2)) << ", sampled " << truth);
+        INFO("rule " << (rule == FillRule::NonZero ? "nonzero" : "evenodd") << ": got " << int(m.at(3, 2))
+                     << ", sampled " << truth);
         CHECK(std::abs(m.at(3, 2) - truth) <= 3.0);  // sampling noise of 40,000 points is ~1/255
         CHECK(m.at(0, 0) == 0);
     }
@@ -151,7 +159,5 @@ TEST_CASE("regression: a conic whose flattening overflows to NaN is refused, not
     try {
         (void)r.fill_mask(p, Affine{}, FillOptions{}, IRect{0, 0, 128, 128});
         FAIL("expected an error");
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::InvalidData);
-    }
+    } catch (const Error& e) { CHECK(e.kind() == ErrorKind::InvalidData); }
 }

@@ -28,8 +28,10 @@ Path polygon(std::initializer_list<Point> pts) {
     Path p;
     bool first = true;
     for (Point q : pts) {
-        if (first) p.move_to(q);
-        else p.line_to(q);
+        if (first)
+            p.move_to(q);
+        else
+            p.line_to(q);
         first = false;
     }
     p.close();
@@ -122,8 +124,8 @@ TEST_CASE("topology: crossings, nesting and stacked copies are Overlapping", "[r
 
 TEST_CASE("topology: verdicts do not change under affine maps", "[raster][topology]") {
     std::mt19937 rng(7);
-    const Affine maps[] = {Affine::scale(1e-3, 1e-3), Affine::scale(-3, 2), Affine::rotate(0.7) * Affine::translate(1e6, -5e5),
-                           Affine{0.5, 0.1, -0.2, 0.9, 3, 4}};
+    const Affine maps[] = {Affine::scale(1e-3, 1e-3), Affine::scale(-3, 2),
+                           Affine::rotate(0.7) * Affine::translate(1e6, -5e5), Affine{0.5, 0.1, -0.2, 0.9, 3, 4}};
     for (int trial = 0; trial < 60; ++trial) {
         const ref::Contour c = testing::random_polygon(rng, Rect{0, 0, 50, 50}, 3 + trial % 6);
         const Path p = ref::to_path({c});
@@ -140,8 +142,10 @@ TEST_CASE("topology: random shapes classified Simple render plainly within the e
         ref::Contours cs;
         const int n = 1 + trial % 3;
         for (int k = 0; k < n; ++k) {
-            if (trial % 2) cs.push_back(testing::random_simple_polygon(rng, {12.0 + 9 * k, 14.0 + 5 * k}, 2, 9, 5 + k));
-            else cs.push_back(testing::random_polygon(rng, Rect{1, 1, 30, 30}, 3 + trial % 4));
+            if (trial % 2)
+                cs.push_back(testing::random_simple_polygon(rng, {12.0 + 9 * k, 14.0 + 5 * k}, 2, 9, 5 + k));
+            else
+                cs.push_back(testing::random_polygon(rng, Rect{1, 1, 30, 30}, 3 + trial % 4));
         }
         const Path p = ref::to_path(cs);
         const Topology t = classify_topology(p);
@@ -253,7 +257,8 @@ TEST_CASE("topology: the rasterizer classifies shapes large for their number of 
     out = render(r, stacked, Affine::identity(), exact, clip);
     CHECK(r.last_stats().topology == Topology::Overlapping);
     CHECK(r.last_stats().exact_cells > 0);
-    const auto cmp = compare(out, ref::path_reference(square(20.25, 20.25, 200), Affine::identity(), FillRule::NonZero, clip));
+    const auto cmp =
+        compare(out, ref::path_reference(square(20.25, 20.25, 200), Affine::identity(), FillRule::NonZero, clip));
     INFO(cmp.text());
     CHECK(cmp.max_err <= 1.0);
     CHECK(out.at(20, 100) == 191);  // three quarters of the pixel, not clamped double coverage (255)
@@ -321,9 +326,7 @@ TEST_CASE("regression: classify_topology attempts no proof for extreme conic wei
     Rasterizer r;
     try {
         (void)r.fill_mask(conic, Affine::scale(2, 2));
-    } catch (const Error& e) {
-        CHECK(e.kind() != ErrorKind::Io);
-    }
+    } catch (const Error& e) { CHECK(e.kind() != ErrorKind::Io); }
     // Coordinates beyond 2^500 or an extent below 2^-500: no proof either.
     CHECK(classify_topology(square(0, 0, 1).transformed(Affine::scale(1e300, 1e300))) == Topology::Overlapping);
     CHECK(classify_topology(square(0, 0, 1).transformed(Affine::scale(1e-300, 1e-300))) == Topology::Overlapping);
@@ -338,8 +341,10 @@ TEST_CASE("topology: verdicts after a path large enough to free the classifier's
     for (int i = 0; i < n; ++i) {
         const double t = 2 * kPi * i / n;
         const Point q{1000 * std::cos(t), 1000 * std::sin(t)};
-        if (i == 0) ring.move_to(q);
-        else ring.line_to(q);
+        if (i == 0)
+            ring.move_to(q);
+        else
+            ring.line_to(q);
     }
     ring.close();
     CHECK(classify_topology(ring) == Topology::Simple);
@@ -411,8 +416,10 @@ TEST_CASE("topology: under similarity maps, a hole under an arch is Simple only 
             const Affine m = similarity(s, 0.7 * k, k & 1, {10.3 + k, 30.7});
             const int worst = plain_vs_cells(r, p, m, lambda * s);
             INFO("lambda " << lambda << ", scale " << s);
-            if (t == Topology::Simple) CHECK(worst <= 1);
-            else if (worst > 1) ++refused_and_needed;
+            if (t == Topology::Simple)
+                CHECK(worst <= 1);
+            else if (worst > 1)
+                ++refused_and_needed;
         }
         simple += t == Topology::Simple;
     }

@@ -58,22 +58,30 @@ std::string svg_document(int i) {
     std::ostringstream s;
     s << "<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' width='96' height='96'>"
       << "<defs><linearGradient id='g' x1='0' x2='1'><stop offset='0' stop-color='#" << std::hex << (rng() & 0xffffff)
-      << "'/><stop offset='1' stop-color='#" << (rng() & 0xffffff) << std::dec << "' stop-opacity='0.5'/></linearGradient>"
+      << "'/><stop offset='1' stop-color='#" << (rng() & 0xffffff) << std::dec
+      << "' stop-opacity='0.5'/></linearGradient>"
       << "<clipPath id='c'><circle cx='48' cy='48' r='" << 20 + u(28) << "'/></clipPath>"
       << "<path id='p' d='M0 0 L" << 5 + u(20) << " 0 L0 " << 5 + u(20) << " Z'/></defs>";
     s << "<g opacity='0." << 3 + u(7) << "' clip-path='url(#c)'>";
     for (int k = 0, n = 3 + u(12); k < n; ++k) {
         switch (u(4)) {
-            case 0: s << "<rect x='" << u(80) << "' y='" << u(80) << "' width='" << 1 + u(60) << "' height='" << 1 + u(60)
-                      << "' fill='url(#g)'/>"; break;
-            case 1: s << "<circle cx='" << u(96) << "' cy='" << u(96) << "' r='" << 1 + u(40) << "' fill='none' stroke='#"
-                      << std::hex << (rng() & 0xffffff) << std::dec << "' stroke-width='" << 1 + u(6)
-                      << "' stroke-dasharray='" << 1 + u(9) << " " << 1 + u(5) << "'/>"; break;
-            case 2: s << "<use xlink:href='#p' x='" << u(90) << "' y='" << u(90) << "' transform='rotate(" << u(360) << " 48 48)'/>";
+            case 0:
+                s << "<rect x='" << u(80) << "' y='" << u(80) << "' width='" << 1 + u(60) << "' height='" << 1 + u(60)
+                  << "' fill='url(#g)'/>";
                 break;
-            default: s << "<path d='M" << u(96) << " " << u(96) << " C" << u(96) << " " << u(96) << " " << u(96) << " " << u(96)
-                       << " " << u(96) << " " << u(96) << " Z' fill-rule='evenodd' fill='#" << std::hex << (rng() & 0xffffff)
-                       << std::dec << "'/>";
+            case 1:
+                s << "<circle cx='" << u(96) << "' cy='" << u(96) << "' r='" << 1 + u(40) << "' fill='none' stroke='#"
+                  << std::hex << (rng() & 0xffffff) << std::dec << "' stroke-width='" << 1 + u(6)
+                  << "' stroke-dasharray='" << 1 + u(9) << " " << 1 + u(5) << "'/>";
+                break;
+            case 2:
+                s << "<use xlink:href='#p' x='" << u(90) << "' y='" << u(90) << "' transform='rotate(" << u(360)
+                  << " 48 48)'/>";
+                break;
+            default:
+                s << "<path d='M" << u(96) << " " << u(96) << " C" << u(96) << " " << u(96) << " " << u(96) << " "
+                  << u(96) << " " << u(96) << " " << u(96) << " Z' fill-rule='evenodd' fill='#" << std::hex
+                  << (rng() & 0xffffff) << std::dec << "'/>";
         }
     }
     s << "</g></svg>";
@@ -81,7 +89,8 @@ std::string svg_document(int i) {
 }
 
 std::string text_line(int i) {
-    static const char* kWords[] = {"casteljau", "glyph", "Bézier", "curve", "مرحبا", "كتاب", "ﬁnal", "Ωmega", "42", "—"};
+    static const char* kWords[] = {"casteljau", "glyph", "Bézier", "curve", "مرحبا",
+                                   "كتاب",      "ﬁnal",  "Ωmega",  "42",    "—"};
     std::mt19937 rng(static_cast<unsigned>(i) * 40503u + 7u);
     std::string s;
     for (int k = 0, n = 2 + static_cast<int>(rng() % 8); k < n; ++k) {
@@ -106,9 +115,12 @@ int main(int argc, char** argv) {
     std::string out;
     for (int i = 3; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
-        if (a == "--only") only = std::atoi(argv[i + 1]);
-        else if (a == "--out") out = argv[i + 1];
-        else usage();
+        if (a == "--only")
+            only = std::atoi(argv[i + 1]);
+        else if (a == "--out")
+            out = argv[i + 1];
+        else
+            usage();
     }
     if (n < 1 || (kind != "svg" && kind != "text" && kind != "tiles")) usage();
     try {
@@ -134,7 +146,9 @@ int main(int argc, char** argv) {
                 if (++count == total / 2) middle = rss_kib();
                 if (only < 0 || (z == n && x == only && y == only)) {
                     if (z > lz || (z == lz && (x > lx || (x == lx && y > ly)))) {
-                        lz = z; lx = x; ly = y;
+                        lz = z;
+                        lx = x;
+                        ly = y;
                         last = png;
                     }
                 }
@@ -174,7 +188,8 @@ int main(int argc, char** argv) {
                 // LeakSanitizer's to find at exit. The flat-memory check runs in the normal build.
                 std::printf("the growth check is left to the normal build (AddressSanitizer's quarantine)\n");
             } else if (after > middle + middle / 10 + 4096) {
-                std::fprintf(stderr, "soak: memory grew from %ld KiB at the middle to %ld KiB at the end\n", middle, after);
+                std::fprintf(stderr, "soak: memory grew from %ld KiB at the middle to %ld KiB at the end\n", middle,
+                             after);
                 return 1;
             }
         }

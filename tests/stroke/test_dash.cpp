@@ -14,10 +14,7 @@
 using namespace casteljau;
 using namespace stroke_test;
 
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 TEST_CASE("dash: pattern normalisation (odd counts, zero and negative values)", "[stroke]") {
     const Path p = line({0, 0}, {100, 0});
@@ -103,7 +100,7 @@ TEST_CASE("dash: the offset is taken modulo the period, negative offsets and off
 TEST_CASE("dash: dashes continue across segments and restart per subpath", "[stroke]") {
     Path p;
     p.move_to(0, 0).line_to(10, 0).line_to(10, 10).line_to(30, 10);  // length 40
-    p.move_to(0, 50).line_to(40, 50);                                 // length 40
+    p.move_to(0, 50).line_to(40, 50);                                // length 40
     const double pat[] = {6, 4};
     const Path d = dash(p, pat, 0);
     CHECK(total_length(d) == Approx(2 * expected_on_length({6, 4}, 0, 40)));
@@ -186,11 +183,12 @@ TEST_CASE("dash: zero-length dashes become dots or squares along the path", "[st
     sq.dashes = {0, 1000};
     const Path squares = stroke(diag, sq);
     CHECK(std::abs(signed_area(squares)) == Approx(16));
-    CHECK(inside(squares, {2.6, 0}));        // along/across 1.84: inside the rotated square
-    CHECK_FALSE(inside(squares, {1.9, 1.9})); // along 2.69: outside it (inside an axis-aligned one)
+    CHECK(inside(squares, {2.6, 0}));          // along/across 1.84: inside the rotated square
+    CHECK_FALSE(inside(squares, {1.9, 1.9}));  // along 2.69: outside it (inside an axis-aligned one)
 }
 
-TEST_CASE("regression: a dash pattern too fine for its path is refused before any dash is made", "[stroke][regression]") {
+TEST_CASE("regression: a dash pattern too fine for its path is refused before any dash is made",
+          "[stroke][regression]") {
     // A 2000-segment path with a dash pattern of tiny values would make millions of dashes, each
     // stroked and filled, past the fuzzer's 10 s timeout. Limits::dashes (2^18 dashes per path by
     // default) is checked before dashing.

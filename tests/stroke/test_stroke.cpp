@@ -22,7 +22,6 @@ using namespace stroke_test;
 
 namespace {
 
-
 // ---- Independent reference for the stroke region, from the SVG definition -------------------
 // Convex pieces; each reports a conservative signed distance (positive inside): sd_in > 0 proves a
 // point is inside the true stroke region AND inside the polygonal output (round parts shrunk by the
@@ -180,7 +179,8 @@ TEST_CASE("stroke: closed square gives outer minus inner, no caps", "[stroke]") 
         CHECK(std::abs(signed_area(stroke(p, style(10, cap, LineJoin::Miter)))) == Approx(4000).margin(1e-9));
     }
     // Bevel: each outer corner loses a right triangle with legs 5.
-    CHECK(std::abs(signed_area(stroke(p, style(10, LineCap::Butt, LineJoin::Bevel)))) == Approx(4000 - 4 * 12.5).margin(1e-9));
+    CHECK(std::abs(signed_area(stroke(p, style(10, LineCap::Butt, LineJoin::Bevel)))) ==
+          Approx(4000 - 4 * 12.5).margin(1e-9));
     // Round: each outer corner loses 25 - pi 25 / 4 (up to the arc tolerance).
     const double round = std::abs(signed_area(stroke(p, style(10, LineCap::Butt, LineJoin::Round))));
     CHECK(round == Approx(4000 - 4 * (25 - kPi * 25 / 4)).margin(2 * kPi * 5 * 0.05));
@@ -302,21 +302,18 @@ TEST_CASE("stroke: width <= 0 gives nothing, bad input throws", "[stroke]") {
     try {
         (void)stroke(nan, style(1));
         FAIL("no error for NaN");
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::InvalidData);
-    }
+    } catch (const Error& e) { CHECK(e.kind() == ErrorKind::InvalidData); }
     auto kind_of = [](auto&& f) {
         try {
             f();
-        } catch (const Error& e) {
-            return static_cast<int>(e.kind());
-        }
+        } catch (const Error& e) { return static_cast<int>(e.kind()); }
         return -1;
     };
     const double inf = std::numeric_limits<double>::infinity();
     CHECK(kind_of([&] { (void)stroke(p, style(1), Affine{inf, 0, 0, 1, 0, 0}); }) == int(ErrorKind::InvalidData));
     CHECK(kind_of([&] { (void)stroke(p, style(inf)); }) == int(ErrorKind::InvalidData));
-    CHECK(kind_of([&] { (void)stroke(p, style(1, LineCap::Butt, LineJoin::Miter, std::nan(""))); }) == int(ErrorKind::InvalidData));
+    CHECK(kind_of([&] { (void)stroke(p, style(1, LineCap::Butt, LineJoin::Miter, std::nan(""))); }) ==
+          int(ErrorKind::InvalidData));
     CHECK(kind_of([&] { (void)stroke(p, style(1), {}, 0); }) == int(ErrorKind::InvalidArgument));
     CHECK(kind_of([&] { (void)stroke(p, style(1), {}, -1); }) == int(ErrorKind::InvalidArgument));
     StrokeStyle s = style(1);
@@ -359,9 +356,7 @@ TEST_CASE("stroke: hostile but finite inputs finish with finite output or a clea
     try {
         const Path huge = stroke(line({0, 0}, {1, 1}), style(1e308, LineCap::Round, LineJoin::Miter));
         CHECK(all_finite(huge));
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::Limit);
-    }
+    } catch (const Error& e) { CHECK(e.kind() == ErrorKind::Limit); }
 }
 
 TEST_CASE("stroke: curves are flattened in user space with tolerance / max_scale", "[stroke]") {
@@ -439,8 +434,8 @@ TEST_CASE("stroke: random polylines agree with the reference region at sample po
         path.add_polygon(pts, closed);
         const double tol = 0.05;
         const Path out = stroke(path, st, {}, tol);
-        INFO("iteration " << iter << " closed " << closed << " width " << st.width << " cap " << int(st.cap)
-                          << " join " << int(st.join) << " limit " << st.miter_limit);
+        INFO("iteration " << iter << " closed " << closed << " width " << st.width << " cap " << int(st.cap) << " join "
+                          << int(st.join) << " limit " << st.miter_limit);
         total += check_against_reference(out, pts, closed, st, tol, rng, 200);
     }
     CHECK(total > 40000);
@@ -516,7 +511,10 @@ TEST_CASE("stroke: rasterized overlapping outline matches the supersampled refer
                         for (const Piece& pc : pieces) {
                             double a, b;
                             pc.sd(q, 0, a, b);
-                            if (b >= 0) { in = true; break; }
+                            if (b >= 0) {
+                                in = true;
+                                break;
+                            }
                         }
                         hits += in;
                     }
@@ -547,8 +545,10 @@ TEST_CASE("parse_line_cap and parse_line_join read the SVG names and refuse othe
     CHECK_FALSE(parse_line_cap("", cap));
     CHECK(cap == LineCap::Butt);  // unchanged by a refused name
     LineJoin join = LineJoin::Round;
-    const std::pair<const char*, LineJoin> joins[] = {
-        {"miter", LineJoin::Miter}, {"miter-clip", LineJoin::MiterClip}, {"round", LineJoin::Round}, {"bevel", LineJoin::Bevel}};
+    const std::pair<const char*, LineJoin> joins[] = {{"miter", LineJoin::Miter},
+                                                      {"miter-clip", LineJoin::MiterClip},
+                                                      {"round", LineJoin::Round},
+                                                      {"bevel", LineJoin::Bevel}};
     for (const auto& [name, want] : joins) {
         INFO(name);
         CHECK(parse_line_join(name, join));
@@ -558,7 +558,8 @@ TEST_CASE("parse_line_cap and parse_line_join read the SVG names and refuse othe
     CHECK(join == LineJoin::Bevel);
 }
 
-TEST_CASE("regression: round joins at a huge width stop at the path size limit, not after gigabytes", "[stroke][regression]") {
+TEST_CASE("regression: round joins at a huge width stop at the path size limit, not after gigabytes",
+          "[stroke][regression]") {
     // At a width of 1e12 against a 0.05 px tolerance every round join takes up to 32,768 arc
     // points (the cap of 65,536 per turn), so a 2000-segment zig-zag would grow one contour's sides
     // to a 2 GiB vector if the size limit were checked only at its end. It is checked as the sides
@@ -601,20 +602,20 @@ TEST_CASE("regression: round joins and caps of segments whose length overflows e
                 try {
                     (void)stroke(p, st);
                     FAIL("no error");
-                } catch (const Error& e) {
-                    CHECK(e.kind() == ErrorKind::Limit);
-                }
+                } catch (const Error& e) { CHECK(e.kind() == ErrorKind::Limit); }
             }
 }
 
 namespace {
 
-std::size_t move_count(const Path& p) { return static_cast<std::size_t>(std::count(p.verbs().begin(), p.verbs().end(), Verb::Move)); }
+std::size_t move_count(const Path& p) {
+    return static_cast<std::size_t>(std::count(p.verbs().begin(), p.verbs().end(), Verb::Move));
+}
 
 // Largest |difference| between two masks over the union of their bounds, in 1/255.
 int mask_difference(const Mask& a, const Mask& b) {
-    const IRect u{std::min(a.bounds.x0, b.bounds.x0), std::min(a.bounds.y0, b.bounds.y0), std::max(a.bounds.x1, b.bounds.x1),
-                  std::max(a.bounds.y1, b.bounds.y1)};
+    const IRect u{std::min(a.bounds.x0, b.bounds.x0), std::min(a.bounds.y0, b.bounds.y0),
+                  std::max(a.bounds.x1, b.bounds.x1), std::max(a.bounds.y1, b.bounds.y1)};
     auto at = [](const Mask& m, int x, int y) -> int {
         if (x < m.bounds.x0 || x >= m.bounds.x1 || y < m.bounds.y0 || y >= m.bounds.y1) return 0;
         return m.data[static_cast<std::size_t>(y - m.bounds.y0) * static_cast<std::size_t>(m.bounds.width()) +

@@ -44,7 +44,8 @@ struct Worst {
     }
     std::string text() const {
         return std::to_string(count) + " cases; largest per-case mean " + std::to_string(mean_max) +
-               "/255 (over edge pixels only: " + std::to_string(edge_mean_max) + "/255); pixels not correctly rounded: " + std::to_string(misrounded) + "; worst case: " + label + ": " +
+               "/255 (over edge pixels only: " + std::to_string(edge_mean_max) +
+               "/255); pixels not correctly rounded: " + std::to_string(misrounded) + "; worst case: " + label + ": " +
                c.text();
     }
 };
@@ -60,8 +61,8 @@ inline std::string describe(const ref::Contours& cs, const Affine& m, const IRec
     char buf[512];
     std::string s = "clip {" + std::to_string(clip.x0) + ", " + std::to_string(clip.y0) + ", " +
                     std::to_string(clip.x1) + ", " + std::to_string(clip.y1) + "}";
-    std::snprintf(buf, sizeof buf, "; transform {%.17g, %.17g, %.17g, %.17g, %.17g, %.17g}; ", m.a, m.b, m.c, m.d,
-                  m.e, m.f);
+    std::snprintf(buf, sizeof buf, "; transform {%.17g, %.17g, %.17g, %.17g, %.17g, %.17g}; ", m.a, m.b, m.c, m.d, m.e,
+                  m.f);
     s += buf;
     if (n > 64) return s + std::to_string(cs.size()) + " contours, " + std::to_string(n) + " points";
     s += "contours {";
@@ -106,7 +107,8 @@ inline ref::Contours library_flattening(const Path& path, const Affine& m, doubl
     ref::Contours cs;
     std::size_t b = 0;
     for (std::uint32_t e : pl.contour_ends) {
-        cs.emplace_back(pl.points.begin() + static_cast<std::ptrdiff_t>(b), pl.points.begin() + static_cast<std::ptrdiff_t>(e));
+        cs.emplace_back(pl.points.begin() + static_cast<std::ptrdiff_t>(b),
+                        pl.points.begin() + static_cast<std::ptrdiff_t>(e));
         b = e;
     }
     return cs;

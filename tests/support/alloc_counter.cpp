@@ -37,10 +37,14 @@ void* counted_alloc(std::size_t n) {
 void* operator new(std::size_t n) { return casteljau::testing::counted_alloc(n); }
 void* operator new[](std::size_t n) { return casteljau::testing::counted_alloc(n); }
 void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-    try { return casteljau::testing::counted_alloc(n); } catch (...) { return nullptr; }
+    try {
+        return casteljau::testing::counted_alloc(n);
+    } catch (...) { return nullptr; }
 }
 void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-    try { return casteljau::testing::counted_alloc(n); } catch (...) { return nullptr; }
+    try {
+        return casteljau::testing::counted_alloc(n);
+    } catch (...) { return nullptr; }
 }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete[](void* p) noexcept { std::free(p); }

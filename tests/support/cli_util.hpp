@@ -22,8 +22,10 @@ struct CliResult {
 inline std::string shell_quote(const std::string& s) {
     std::string q = "'";
     for (char c : s) {
-        if (c == '\'') q += "'\\''";
-        else q += c;
+        if (c == '\'')
+            q += "'\\''";
+        else
+            q += c;
     }
     return q + "'";
 }
@@ -39,8 +41,8 @@ inline CliResult run_cli(const std::string& args, const std::string& stdin_text 
         std::ofstream in(base + ".in", std::ios::binary);
         in << stdin_text;
     }
-    const std::string cmd = std::string(CASTELJAU_CLI_PATH) + " " + args + " < " + base + ".in > " + base + ".out 2> " +
-                            base + ".err";
+    const std::string cmd =
+        std::string(CASTELJAU_CLI_PATH) + " " + args + " < " + base + ".in > " + base + ".out 2> " + base + ".err";
     const int raw = std::system(cmd.c_str());
     CliResult r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
@@ -64,8 +66,6 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
     return d;
 }
 
-inline bool dir_is_empty(const std::filesystem::path& d) {
-    return std::filesystem::is_empty(d);
-}
+inline bool dir_is_empty(const std::filesystem::path& d) { return std::filesystem::is_empty(d); }
 
 }  // namespace casteljau::test

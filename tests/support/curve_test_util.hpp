@@ -17,7 +17,8 @@ namespace curve_test {
 using casteljau::Point;
 using casteljau::Point3;
 
-template <class P> P random_point(std::mt19937& rng, double lo = -100, double hi = 100) {
+template <class P>
+P random_point(std::mt19937& rng, double lo = -100, double hi = 100) {
     std::uniform_real_distribution<double> d(lo, hi);
     if constexpr (std::is_same_v<P, Point>) {
         const double x = d(rng);
@@ -29,7 +30,8 @@ template <class P> P random_point(std::mt19937& rng, double lo = -100, double hi
     }
 }
 
-template <class P> std::vector<P> random_points(std::mt19937& rng, std::size_t n, double lo = -100, double hi = 100) {
+template <class P>
+std::vector<P> random_points(std::mt19937& rng, std::size_t n, double lo = -100, double hi = 100) {
     std::vector<P> v;
     v.reserve(n);
     for (std::size_t i = 0; i < n; ++i) v.push_back(random_point<P>(rng, lo, hi));
@@ -40,9 +42,13 @@ inline double uniform(std::mt19937& rng, double lo, double hi) {
     return std::uniform_real_distribution<double>(lo, hi)(rng);
 }
 
-template <class P> double dist(const P& a, const P& b) { return (a - b).length(); }
+template <class P>
+double dist(const P& a, const P& b) {
+    return (a - b).length();
+}
 
-template <class P> double max_norm(const std::vector<P>& v) {
+template <class P>
+double max_norm(const std::vector<P>& v) {
     double m = 0;
     for (const auto& p : v) m = std::max(m, p.length());
     return m;
@@ -85,9 +91,7 @@ inline bool in_convex_hull(const std::vector<Point>& pts, Point p, double eps) {
 inline casteljau::ErrorKind kind_of(const std::function<void()>& f) {
     try {
         f();
-    } catch (const casteljau::Error& e) {
-        return e.kind();
-    }
+    } catch (const casteljau::Error& e) { return e.kind(); }
     return casteljau::ErrorKind::Io;
 }
 

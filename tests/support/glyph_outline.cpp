@@ -38,10 +38,12 @@ namespace {
 
 struct Decompose {
     Path* out;
-    double s;   // pixels per font unit
-    Point o;    // origin in pixels
+    double s;  // pixels per font unit
+    Point o;   // origin in pixels
     bool open = false;
-    Point map(const FT_Vector* v) const { return {o.x + s * static_cast<double>(v->x), o.y - s * static_cast<double>(v->y)}; }
+    Point map(const FT_Vector* v) const {
+        return {o.x + s * static_cast<double>(v->x), o.y - s * static_cast<double>(v->y)};
+    }
 };
 
 int cb_move(const FT_Vector* to, void* user) {
@@ -84,7 +86,8 @@ double GlyphFont::append_glyph(char32_t cp, double px, Point origin, Path& out) 
     funcs.cubic_to = cb_cubic;
     funcs.shift = 0;
     funcs.delta = 0;
-    if (FT_Outline_Decompose(&f->glyph->outline, &funcs, &d) != 0) throw std::runtime_error("FT_Outline_Decompose failed");
+    if (FT_Outline_Decompose(&f->glyph->outline, &funcs, &d) != 0)
+        throw std::runtime_error("FT_Outline_Decompose failed");
     if (d.open) out.close();
     return s * static_cast<double>(f->glyph->advance.x);
 }

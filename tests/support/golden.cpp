@@ -91,9 +91,7 @@ Outcome compare_golden(const Setup& setup, const std::string& name, const Pixmap
     if (exists) {
         try {
             expected = read_png(golden);
-        } catch (const Error& e) {
-            previous = std::string("unreadable golden (") + e.what() + ")";
-        }
+        } catch (const Error& e) { previous = std::string("unreadable golden (") + e.what() + ")"; }
     }
     const Difference d = (exists && previous.empty()) ? difference(expected, actual) : Difference{};
     if (exists && previous.empty()) previous = d.text();

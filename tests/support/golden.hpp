@@ -53,10 +53,10 @@ struct Setup {
     bool update = false;
 };
 struct Outcome {
-    bool ok = false;       // matched within tolerance, or (update mode) written
+    bool ok = false;  // matched within tolerance, or (update mode) written
     bool wrote_golden = false;
     bool wrote_outputs = false;
-    std::string message;   // one paragraph for the test log
+    std::string message;  // one paragraph for the test log
 };
 Outcome compare_golden(const Setup& setup, const std::string& name, const Pixmap& actual, const Tolerance& tol,
                        const Validation& validated);

@@ -64,8 +64,7 @@ inline bool write_spec_rows(png_structp png, png_infop info, const Spec* spec, p
     png_set_IHDR(png, info, spec->width, spec->height, spec->bit_depth, spec->color_type,
                  spec->interlace ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                  PNG_FILTER_TYPE_DEFAULT);
-    if (!spec->palette.empty())
-        png_set_PLTE(png, info, spec->palette.data(), static_cast<int>(spec->palette.size()));
+    if (!spec->palette.empty()) png_set_PLTE(png, info, spec->palette.data(), static_cast<int>(spec->palette.size()));
     if (!spec->trans_alpha.empty() || spec->has_trans_color)
         png_set_tRNS(png, info, spec->trans_alpha.empty() ? nullptr : spec->trans_alpha.data(),
                      static_cast<int>(spec->trans_alpha.size()), spec->has_trans_color ? &spec->trans_color : nullptr);

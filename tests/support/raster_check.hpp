@@ -19,10 +19,10 @@ namespace casteljau::testing {
 // (default: the clip). The SpanSink contract is checked as rows arrive.
 struct Rendered {
     IRect clip, window;
-    std::vector<std::uint8_t> cov;       // window, row-major
+    std::vector<std::uint8_t> cov;  // window, row-major
     std::size_t rows_delivered = 0;
     std::size_t nonzero_outside_window = 0;  // covered pixels delivered outside `window`
-    std::string contract_violation;      // first violation (row outside clip, y not increasing, ...)
+    std::string contract_violation;          // first violation (row outside clip, y not increasing, ...)
     RasterStats stats;
 
     int at(int x, int y) const;  // 0 outside the window
@@ -33,17 +33,17 @@ Rendered render(Rasterizer& r, const Path& path, const Affine& m, const FillOpti
                 const IRect& window);
 
 struct Comparison {
-    double max_err = 0;              // in 1/255 units, over every pixel of the union of both rects
-    double mean_err = 0;             // mean over edge pixels (see below)
-    double mean_all = 0;             // mean over every compared pixel
-    std::size_t pixels = 0;          // pixels compared
-    std::size_t edge_pixels = 0;     // reference strictly inside (0, 1), or actual not 0/255, or err > 0.5
-    std::size_t misrounded = 0;      // pixels with err > 0.5 + 1e-3 (not the correctly rounded value)
+    double max_err = 0;           // in 1/255 units, over every pixel of the union of both rects
+    double mean_err = 0;          // mean over edge pixels (see below)
+    double mean_all = 0;          // mean over every compared pixel
+    std::size_t pixels = 0;       // pixels compared
+    std::size_t edge_pixels = 0;  // reference strictly inside (0, 1), or actual not 0/255, or err > 0.5
+    std::size_t misrounded = 0;   // pixels with err > 0.5 + 1e-3 (not the correctly rounded value)
     int worst_x = 0, worst_y = 0;
-    double worst_ref = 0;            // reference coverage at the worst pixel (0..1)
-    int worst_actual = 0;            // actual u8 at the worst pixel
+    double worst_ref = 0;  // reference coverage at the worst pixel (0..1)
+    int worst_actual = 0;  // actual u8 at the worst pixel
 
-    std::string text() const;        // one line: max, mean, worst pixel
+    std::string text() const;  // one line: max, mean, worst pixel
 };
 
 Comparison compare(const Rendered& actual, const ref::CoverageGrid& reference);

@@ -59,8 +59,10 @@ IRect pixel_bounds(const Contours& cs, int pad) {
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     for (const Contour& c : cs)
         for (Point p : c) {
-            x0 = std::min(x0, p.x); x1 = std::max(x1, p.x);
-            y0 = std::min(y0, p.y); y1 = std::max(y1, p.y);
+            x0 = std::min(x0, p.x);
+            x1 = std::max(x1, p.x);
+            y0 = std::min(y0, p.y);
+            y1 = std::max(y1, p.y);
         }
     if (!(x1 >= x0)) return {};
     return {static_cast<int>(std::floor(x0)) - pad, static_cast<int>(std::floor(y0)) - pad,
@@ -97,7 +99,10 @@ void clip_half_plane(const std::vector<Point>& in, std::vector<Point>& out, int 
             const double t = vc / (vc - vn);
             Point q{cur.x + (nxt.x - cur.x) * t, cur.y + (nxt.y - cur.y) * t};
             // Put the intersection exactly on the clip line.
-            if (axis == 0) q.x = k; else q.y = k;
+            if (axis == 0)
+                q.x = k;
+            else
+                q.y = k;
             out.push_back(q);
         }
     }
@@ -191,8 +196,10 @@ CoverageGrid slab_area(const Contours& polys, FillRule rule, const IRect& region
         for (std::size_t i = 0; i < n; ++i) {
             const Point p = c[i], q = c[(i + 1) % n];
             if (p.y == q.y) continue;  // horizontal: no crossing with any horizontal line
-            if (p.y < q.y) edges.push_back({p.x, p.y, q.x, q.y, +1});
-            else edges.push_back({q.x, q.y, p.x, p.y, -1});
+            if (p.y < q.y)
+                edges.push_back({p.x, p.y, q.x, q.y, +1});
+            else
+                edges.push_back({q.x, q.y, p.x, p.y, -1});
         }
     }
     std::sort(edges.begin(), edges.end(), [](const RefEdge& a, const RefEdge& b) { return a.y0 < b.y0; });
@@ -320,8 +327,8 @@ struct FineFlattener {
         for (int i = 1; i < n; ++i) {
             const double t = static_cast<double>(i) / n, s = 1 - t;
             const double b0 = s * s * s, b1 = 3 * s * s * t, b2 = 3 * s * t * t, b3 = t * t * t;
-            out.back().push_back({b0 * p0.x + b1 * p1.x + b2 * p2.x + b3 * p3.x,
-                                  b0 * p0.y + b1 * p1.y + b2 * p2.y + b3 * p3.y});
+            out.back().push_back(
+                {b0 * p0.x + b1 * p1.x + b2 * p2.x + b3 * p3.x, b0 * p0.y + b1 * p1.y + b2 * p2.y + b3 * p3.y});
         }
         out.back().push_back(p3);
     }
@@ -333,7 +340,8 @@ struct FineFlattener {
             const double t = static_cast<double>(i) / n, s = 1 - t;
             const double b0 = s * s, b1 = 2 * s * t * w, b2 = t * t;
             const double den = b0 + b1 + b2;
-            out.back().push_back({(b0 * p0.x + b1 * p1.x + b2 * p2.x) / den, (b0 * p0.y + b1 * p1.y + b2 * p2.y) / den});
+            out.back().push_back(
+                {(b0 * p0.x + b1 * p1.x + b2 * p2.x) / den, (b0 * p0.y + b1 * p1.y + b2 * p2.y) / den});
         }
         out.back().push_back(p2);
     }

@@ -46,9 +46,11 @@ Result compare(const Pixmap& actual, const Pixmap& reference) {
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             int d = 0;
-            for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(channel(actual, x, y, c) - channel(reference, x, y, c)));
+            for (int c = 0; c < 4; ++c)
+                d = std::max(d, std::abs(channel(actual, x, y, c) - channel(reference, x, y, c)));
             if (d > 32) ++r.bad_a;
-            if (d > 24 && (outside_neighbourhood(actual, reference, x, y) || outside_neighbourhood(reference, actual, x, y)))
+            if (d > 24 &&
+                (outside_neighbourhood(actual, reference, x, y) || outside_neighbourhood(reference, actual, x, y)))
                 ++r.bad_b;
         }
     const long long n = static_cast<long long>(w) * h;
@@ -86,8 +88,10 @@ Pixmap diff_image(const Pixmap& actual, const Pixmap& reference) {
                 px = {255, 0, 0, 255};
             } else {
                 int d = 0;
-                for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(channel(actual, x, y, c) - channel(reference, x, y, c)));
-                if (d > 24 && (outside_neighbourhood(actual, reference, x, y) || outside_neighbourhood(reference, actual, x, y)))
+                for (int c = 0; c < 4; ++c)
+                    d = std::max(d, std::abs(channel(actual, x, y, c) - channel(reference, x, y, c)));
+                if (d > 24 &&
+                    (outside_neighbourhood(actual, reference, x, y) || outside_neighbourhood(reference, actual, x, y)))
                     px = {230, 0, 0, 255};
                 else if (d > 32)
                     px = {255, 160, 0, 255};

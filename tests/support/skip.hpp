@@ -33,10 +33,10 @@ inline std::filesystem::path shared_dir() {
 
 // Skips the rest of the current test case: CASTELJAU_SKIP("no " << path). Use only at the top
 // level of a TEST_CASE body (it returns from the enclosing function).
-#define CASTELJAU_SKIP(message)                         \
-    do {                                                \
-        std::ostringstream casteljau_skip_reason_;      \
-        casteljau_skip_reason_ << message;              \
+#define CASTELJAU_SKIP(message)                                       \
+    do {                                                              \
+        std::ostringstream casteljau_skip_reason_;                    \
+        casteljau_skip_reason_ << message;                            \
         ::casteljau::test::record_skip(casteljau_skip_reason_.str()); \
-        return;                                         \
+        return;                                                       \
     } while (false)

@@ -147,8 +147,9 @@ TEST_CASE("reference: winding rules on overlaps, bow-ties and stars", "[referenc
     Contour outline, inner;
     for (int i = 0; i < 5; ++i) {
         const Point a = tips[static_cast<std::size_t>(i)];
-        const Point q = intersect(tips[static_cast<std::size_t>(i)], tips[static_cast<std::size_t>((i + 2) % 5)],
-                                  tips[static_cast<std::size_t>((i + 1) % 5)], tips[static_cast<std::size_t>((i + 4) % 5)]);
+        const Point q =
+            intersect(tips[static_cast<std::size_t>(i)], tips[static_cast<std::size_t>((i + 2) % 5)],
+                      tips[static_cast<std::size_t>((i + 1) % 5)], tips[static_cast<std::size_t>((i + 4) % 5)]);
         outline.push_back(a);
         outline.push_back(q);
         inner.push_back(q);

@@ -99,8 +99,8 @@ public:
         // Bounds in pixel space from the transformed control box.
         FT_BBox box;
         FT_Outline_Get_CBox(o, &box);
-        casteljau::Rect r = casteljau::transform_bounds(
-            m, {box.xMin / 64.0, box.yMin / 64.0, box.xMax / 64.0, box.yMax / 64.0});
+        casteljau::Rect r =
+            casteljau::transform_bounds(m, {box.xMin / 64.0, box.yMin / 64.0, box.xMax / 64.0, box.yMax / 64.0});
         const int x0 = static_cast<int>(std::floor(r.x0)) - 1, x1 = static_cast<int>(std::ceil(r.x1)) + 1;
         const int y0 = static_cast<int>(std::floor(r.y0)) - 1, y1 = static_cast<int>(std::ceil(r.y1)) + 1;
         const int w = x1 - x0, h = y1 - y0;
@@ -151,7 +151,8 @@ public:
                 for (int sy = 0; sy < k; ++sy)
                     for (int sx = 0; sx < k; ++sx) sum += big.at(x * k + sx, y * k + sy);
                 g.data[static_cast<std::size_t>(y - g.bounds.y0) * static_cast<std::size_t>(g.bounds.width()) +
-                       static_cast<std::size_t>(x - g.bounds.x0)] = static_cast<std::uint8_t>((sum + k * k / 2) / (k * k));
+                       static_cast<std::size_t>(x - g.bounds.x0)] =
+                    static_cast<std::uint8_t>((sum + k * k / 2) / (k * k));
             }
         return g;
     }
@@ -196,7 +197,8 @@ template <class A, class B>
 DiffStats compare_coverage(const A& a, const B& b) {
     DiffStats s;
     casteljau::IRect u = a.bounds;
-    if (u.empty()) u = b.bounds;
+    if (u.empty())
+        u = b.bounds;
     else if (!b.bounds.empty())
         u = {std::min(u.x0, b.bounds.x0), std::min(u.y0, b.bounds.y0), std::max(u.x1, b.bounds.x1),
              std::max(u.y1, b.bounds.y1)};
@@ -213,7 +215,8 @@ DiffStats compare_coverage(const A& a, const B& b) {
             }
     u = ink;
     for (int y = u.y0; y < u.y1; ++y)
-        for (int x = u.x0; x < u.x1; ++x) s.add(std::abs(static_cast<int>(a.at(x, y)) - static_cast<int>(b.at(x, y))), x, y);
+        for (int x = u.x0; x < u.x1; ++x)
+            s.add(std::abs(static_cast<int>(a.at(x, y)) - static_cast<int>(b.at(x, y))), x, y);
     s.finish();
     return s;
 }
@@ -226,9 +229,9 @@ DiffStats compare_coverage(const A& a, const B& b) {
 // box-filters it (see FtRenderer::render_supersampled).
 inline casteljau::Pixmap reference_text_image(const casteljau::TextLayout& layout, std::vector<FtRenderer*> ft,
                                               int width, int height, casteljau::Point origin,
-                                              casteljau::Color background, const casteljau::Paint& paint,
-                                              int steps = 4, const casteljau::Affine* transform = nullptr,
-                                              int supersample = 1, int steps_y = 1) {
+                                              casteljau::Color background, const casteljau::Paint& paint, int steps = 4,
+                                              const casteljau::Affine* transform = nullptr, int supersample = 1,
+                                              int steps_y = 1) {
     casteljau::Pixmap pm(width, height);
     pm.fill(background);
     for (const auto& g : layout.glyphs) {
@@ -236,10 +239,12 @@ inline casteljau::Pixmap reference_text_image(const casteljau::TextLayout& layou
         if (!transform) {
             const double px = std::round((g.position.x + origin.x) * steps) / steps;
             const double py = std::round((g.position.y + origin.y) * steps_y) / steps_y;
-            gr = supersample > 1 ? ft[g.font]->render_supersampled(g.glyph, layout.size, casteljau::Point{px, py}, supersample)
-                                 : ft[g.font]->render(g.glyph, layout.size, casteljau::Point{px, py});
+            gr = supersample > 1
+                     ? ft[g.font]->render_supersampled(g.glyph, layout.size, casteljau::Point{px, py}, supersample)
+                     : ft[g.font]->render(g.glyph, layout.size, casteljau::Point{px, py});
         } else {
-            const casteljau::Affine m = *transform * casteljau::Affine::translate(origin.x + g.position.x, origin.y + g.position.y) *
+            const casteljau::Affine m = *transform *
+                                        casteljau::Affine::translate(origin.x + g.position.x, origin.y + g.position.y) *
                                         casteljau::Affine::scale(1, -1);
             gr = supersample > 1 ? ft[g.font]->render_supersampled(g.glyph, layout.size, m, supersample)
                                  : ft[g.font]->render(g.glyph, layout.size, m);
@@ -247,8 +252,8 @@ inline casteljau::Pixmap reference_text_image(const casteljau::TextLayout& layou
         for (int y = std::max(gr.bounds.y0, 0); y < std::min(gr.bounds.y1, height); ++y) {
             const int x0 = std::max(gr.bounds.x0, 0), x1 = std::min(gr.bounds.x1, width);
             if (x0 >= x1) continue;
-            const std::uint8_t* cov = gr.data.data() + static_cast<std::size_t>(y - gr.bounds.y0) * gr.bounds.width() +
-                                      (x0 - gr.bounds.x0);
+            const std::uint8_t* cov =
+                gr.data.data() + static_cast<std::size_t>(y - gr.bounds.y0) * gr.bounds.width() + (x0 - gr.bounds.x0);
             casteljau::composite_span(pm.row(y) + 4 * x0, x1 - x0, cov, paint);
         }
     }
@@ -274,7 +279,9 @@ inline DiffStats compare_pixmaps(const casteljau::Pixmap& a, const casteljau::Pi
 // Builds an OpenType collection ('ttcf' version 1.0) holding the given single fonts, tables copied
 // and offsets rewritten (tables are not shared).
 inline std::vector<std::uint8_t> make_collection(const std::vector<std::vector<std::uint8_t>>& fonts) {
-    auto u16 = [](const std::vector<std::uint8_t>& b, std::size_t o) { return static_cast<std::uint32_t>(b[o] << 8 | b[o + 1]); };
+    auto u16 = [](const std::vector<std::uint8_t>& b, std::size_t o) {
+        return static_cast<std::uint32_t>(b[o] << 8 | b[o + 1]);
+    };
     auto u32 = [](const std::vector<std::uint8_t>& b, std::size_t o) {
         return static_cast<std::uint32_t>(b[o]) << 24 | static_cast<std::uint32_t>(b[o + 1]) << 16 |
                static_cast<std::uint32_t>(b[o + 2]) << 8 | b[o + 3];

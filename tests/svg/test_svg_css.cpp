@@ -12,8 +12,8 @@ using namespace casteljau;
 
 namespace {
 Pixmap draw(const std::string& sheet, const std::string& body) {
-    return SvgDocument::parse("<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'><style>" + sheet + "</style>" +
-                              body + "</svg>")
+    return SvgDocument::parse("<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'><style>" + sheet +
+                              "</style>" + body + "</svg>")
         .render();
 }
 const PremulPixel kGreen{0, 128, 0, 255};
@@ -45,7 +45,8 @@ TEST_CASE("css: specificity, order, !important and the cascade with attributes",
     CHECK(draw("rect { fill: green !important }", rect + "style='fill: red'/>").pixel(5, 5) == kGreen);
     // Inheritance through groups, and inherit / currentColor.
     CHECK(draw("g { fill: green }", "<g><rect width='10' height='10'/></g>").pixel(5, 5) == kGreen);
-    CHECK(draw("g { color: green } rect { fill: currentColor }", "<g><rect width='10' height='10'/></g>").pixel(5, 5) == kGreen);
+    CHECK(draw("g { color: green } rect { fill: currentColor }", "<g><rect width='10' height='10'/></g>").pixel(5, 5) ==
+          kGreen);
 }
 
 TEST_CASE("css: a style sheet of 1 MB of garbage is read without error or hang", "[svg][css][bad-input]") {
@@ -77,8 +78,9 @@ TEST_CASE("css: rules past the 10,000th are ignored with a warning", "[svg][css]
     std::string sheet;
     for (int i = 0; i < 10000; ++i) sheet += ".c" + std::to_string(i) + "{fill:blue}";
     const std::string tail = "rect{fill:red}";
-    const SvgDocument doc = SvgDocument::parse("<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'><style>" +
-                                               sheet + tail + "</style><rect width='10' height='10' fill='green'/></svg>");
+    const SvgDocument doc =
+        SvgDocument::parse("<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'><style>" + sheet + tail +
+                           "</style><rect width='10' height='10' fill='green'/></svg>");
     bool warned = false;
     for (const std::string& w : doc.warnings()) warned = warned || w.find("more than 10000 rules") != std::string::npos;
     CHECK(warned);
@@ -94,9 +96,10 @@ TEST_CASE("css: mix-blend-mode and isolation are set by CSS only, not as present
     const std::string green = "<rect width='10' height='10' fill='green'/>";
     const PremulPixel red{255, 0, 0, 255}, black{0, 0, 0, 255};
     CHECK(draw("", green + "<rect width='10' height='10' fill='red' mix-blend-mode='multiply'/>").pixel(5, 5) == red);
-    CHECK(draw("", green + "<rect width='10' height='10' fill='red' style='mix-blend-mode: multiply'/>").pixel(5, 5) == black);
-    CHECK(draw(".m { mix-blend-mode: multiply }", green + "<rect width='10' height='10' fill='red' class='m'/>").pixel(5, 5) ==
+    CHECK(draw("", green + "<rect width='10' height='10' fill='red' style='mix-blend-mode: multiply'/>").pixel(5, 5) ==
           black);
+    CHECK(draw(".m { mix-blend-mode: multiply }", green + "<rect width='10' height='10' fill='red' class='m'/>")
+              .pixel(5, 5) == black);
     // An isolated group gives its multiplying child a transparent backdrop: the red stays red.
     const std::string child = "><rect width='10' height='10' fill='red' style='mix-blend-mode: multiply'/></g>";
     CHECK(draw("", green + "<g isolation='isolate'" + child).pixel(5, 5) == black);

@@ -18,7 +18,8 @@ Pixmap draw(const std::string& body, int w = 100, int h = 10) {
 
 TEST_CASE("svg gradient: objectBoundingBox maps 0..1 onto the shape's box", "[svg][gradient]") {
     const Pixmap pm = draw(
-        "<linearGradient id='g'><stop offset='0' stop-color='#000'/><stop offset='1' stop-color='#fff'/></linearGradient>"
+        "<linearGradient id='g'><stop offset='0' stop-color='#000'/><stop offset='1' "
+        "stop-color='#fff'/></linearGradient>"
         "<rect x='50' width='50' height='10' fill='url(#g)'/>");
     // Pixel 74's centre is at 24.5 / 50 of the box.
     CHECK(std::abs(pm.pixel(74, 5).r - std::lround(255 * 24.5 / 50)) <= 1);
@@ -42,17 +43,20 @@ TEST_CASE("svg gradient: bad input is drawn as documented", "[svg][gradient]") {
     // No stops: painted as none.
     CHECK(draw("<linearGradient id='g'/><rect width='100' height='10' fill='url(#g)'/>").pixel(5, 5).a == 0);
     // One stop: its colour everywhere.
-    CHECK(draw("<linearGradient id='g'><stop stop-color='#0f0'/></linearGradient><rect width='100' height='10' fill='url(#g)'/>")
+    CHECK(draw("<linearGradient id='g'><stop stop-color='#0f0'/></linearGradient><rect width='100' height='10' "
+               "fill='url(#g)'/>")
               .pixel(5, 5) == PremulPixel{0, 255, 0, 255});
     // Out-of-order offsets: a stop before its predecessor moves up to it (a hard edge at 0.6).
     const Pixmap pm = draw(
-        "<linearGradient id='g'><stop offset='0.6' stop-color='#f00'/><stop offset='0.2' stop-color='#00f'/></linearGradient>"
+        "<linearGradient id='g'><stop offset='0.6' stop-color='#f00'/><stop offset='0.2' "
+        "stop-color='#00f'/></linearGradient>"
         "<rect width='100' height='10' fill='url(#g)'/>");
     CHECK(pm.pixel(30, 5) == PremulPixel{255, 0, 0, 255});
     CHECK(pm.pixel(70, 5) == PremulPixel{0, 0, 255, 255});
     // An href cycle ends the chain (no hang); the stops are still found on the first element.
     const Pixmap cyc = draw(
-        "<linearGradient id='a' xlink:href='#b'><stop stop-color='#0f0'/><stop offset='1' stop-color='#0f0'/></linearGradient>"
+        "<linearGradient id='a' xlink:href='#b'><stop stop-color='#0f0'/><stop offset='1' "
+        "stop-color='#0f0'/></linearGradient>"
         "<linearGradient id='b' xlink:href='#a'/><rect width='100' height='10' fill='url(#b)'/>");
     CHECK(cyc.pixel(5, 5) == PremulPixel{0, 255, 0, 255});
     // A missing server uses the fallback colour, or none.
@@ -75,13 +79,17 @@ TEST_CASE("svg pattern: a tile repeats across the fill", "[svg][pattern]") {
     CHECK(pm.pixel(97, 5).a == 0);
 }
 
-TEST_CASE("svg pattern: a tile of 1e-6 px on a large canvas and a self-referencing pattern", "[svg][pattern][bad-input]") {
+TEST_CASE("svg pattern: a tile of 1e-6 px on a large canvas and a self-referencing pattern",
+          "[svg][pattern][bad-input]") {
     const SvgDocument doc = SvgDocument::parse(
         "<svg xmlns='http://www.w3.org/2000/svg' width='4000' height='4000'>"
-        "<pattern id='p' patternUnits='userSpaceOnUse' width='1e-6' height='1e-6'><rect width='1' height='1' fill='#00f'/></pattern>"
-        "<pattern id='q' patternUnits='userSpaceOnUse' width='10' height='10'><rect width='10' height='10' fill='url(#q)'/></pattern>"
-        "<rect width='4000' height='2000' fill='url(#p)'/><rect y='2000' width='4000' height='2000' fill='url(#q)'/></svg>");
+        "<pattern id='p' patternUnits='userSpaceOnUse' width='1e-6' height='1e-6'><rect width='1' height='1' "
+        "fill='#00f'/></pattern>"
+        "<pattern id='q' patternUnits='userSpaceOnUse' width='10' height='10'><rect width='10' height='10' "
+        "fill='url(#q)'/></pattern>"
+        "<rect width='4000' height='2000' fill='url(#p)'/><rect y='2000' width='4000' height='2000' "
+        "fill='url(#q)'/></svg>");
     const Pixmap pm = doc.render();
     CHECK(pm.pixel(100, 100) == PremulPixel{0, 0, 255, 255});  // the tile is all blue: one pixel, repeated
-    CHECK(pm.pixel(100, 3000).a == 0);                          // the self-reference paints nothing
+    CHECK(pm.pixel(100, 3000).a == 0);                         // the self-reference paints nothing
 }

@@ -23,7 +23,8 @@ std::string base64(const std::vector<std::uint8_t>& in) {
     static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     std::string out;
     for (std::size_t i = 0; i < in.size(); i += 3) {
-        const unsigned n = (in[i] << 16) | ((i + 1 < in.size() ? in[i + 1] : 0) << 8) | (i + 2 < in.size() ? in[i + 2] : 0);
+        const unsigned n =
+            (in[i] << 16) | ((i + 1 < in.size() ? in[i + 1] : 0) << 8) | (i + 2 < in.size() ? in[i + 2] : 0);
         out += k[(n >> 18) & 63];
         out += k[(n >> 12) & 63];
         out += i + 1 < in.size() ? k[(n >> 6) & 63] : '=';
@@ -43,7 +44,8 @@ void write(const fs::path& p, const std::string& s) {
     f << s;
 }
 
-const std::string kHead = "<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' width='10' height='10'>";
+const std::string kHead =
+    "<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' width='10' height='10'>";
 const PremulPixel kGreen{0, 128, 0, 255};
 }  // namespace
 
@@ -68,8 +70,8 @@ TEST_CASE("svg image: relative files inside the folder load, everything else is 
         return std::make_pair(doc.render().pixel(5, 5), doc.warnings());
     };
     CHECK(render("ok.png").first == kGreen);
-    for (const char* bad : {"missing.png", "corrupt.png", "http://example.com/a.png", "/etc/passwd", "file:///etc/passwd",
-                            "../outside.png", "../../../../../../../etc/passwd"}) {
+    for (const char* bad : {"missing.png", "corrupt.png", "http://example.com/a.png", "/etc/passwd",
+                            "file:///etc/passwd", "../outside.png", "../../../../../../../etc/passwd"}) {
         INFO(bad);
         const auto [px, warnings] = render(bad);
         CHECK(px.a == 0);
@@ -78,7 +80,8 @@ TEST_CASE("svg image: relative files inside the folder load, everything else is 
     // A wider resource root lets ../ through, and only there.
     CHECK(render("../outside.png", d.string()).first == kGreen);
     // Parsed from memory there is no folder: files are refused.
-    CHECK(SvgDocument::parse(kHead + "<image width='10' height='10' href='ok.png'/></svg>").render().pixel(5, 5).a == 0);
+    CHECK(SvgDocument::parse(kHead + "<image width='10' height='10' href='ok.png'/></svg>").render().pixel(5, 5).a ==
+          0);
 }
 
 TEST_CASE("svg: an .svgz file (gzip) is read, a corrupt one is a clear error", "[svg][image]") {
@@ -98,7 +101,8 @@ TEST_CASE("svg image: SVG images nest 4 deep, a fifth level is skipped with a wa
         for (int i = 0; i < levels; ++i)
             write(d / ("level" + std::to_string(i) + ".svg"),
                   kHead + "<image width='10' height='10' href='level" + std::to_string(i + 1) + ".svg'/></svg>");
-        write(d / ("level" + std::to_string(levels) + ".svg"), kHead + "<rect width='10' height='10' fill='green'/></svg>");
+        write(d / ("level" + std::to_string(levels) + ".svg"),
+              kHead + "<rect width='10' height='10' fill='green'/></svg>");
         return SvgDocument::load((d / "level0.svg").string());
     };
     const SvgDocument four = chain(4);  // images at nesting 1..4

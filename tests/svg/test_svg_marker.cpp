@@ -10,7 +10,8 @@ using namespace casteljau;
 
 namespace {
 Pixmap draw(const std::string& body) {
-    return SvgDocument::parse("<svg xmlns='http://www.w3.org/2000/svg' width='40' height='40'>" + body + "</svg>").render();
+    return SvgDocument::parse("<svg xmlns='http://www.w3.org/2000/svg' width='40' height='40'>" + body + "</svg>")
+        .render();
 }
 const PremulPixel kGreen{0, 128, 0, 255};
 }  // namespace
@@ -23,8 +24,8 @@ TEST_CASE("svg marker: start, mid and end vertices, orient auto, strokeWidth uni
     const Pixmap pm = draw(marker +
                            "<path d='M 5 5 L 25 5 L 25 30' stroke='none' stroke-width='2' fill='none' "
                            "marker-start='url(#m)' marker-mid='url(#m)' marker-end='url(#m)'/>");
-    CHECK(pm.pixel(7, 5) == kGreen);    // start, pointing right
-    CHECK(pm.pixel(3, 5).a == 0);       // nothing before the reference point
+    CHECK(pm.pixel(7, 5) == kGreen);  // start, pointing right
+    CHECK(pm.pixel(3, 5).a == 0);     // nothing before the reference point
     // The mid vertex bisects right and down: 45 degrees; its first pixel along the diagonal.
     CHECK(pm.pixel(26, 6).a > 0);
     CHECK(pm.pixel(25, 32) == kGreen);  // end, pointing down
@@ -74,7 +75,8 @@ TEST_CASE("svg marker: the marker shorthand works in CSS, not as a presentation 
 TEST_CASE("svg marker: overflow inherit takes the parent's value, visible when the parent sets none", "[svg][marker]") {
     // The content (a 12 x 12 square from -4, -4) overflows the 4 x 4 marker box by 4 on each side.
     const std::string marker =
-        "<marker id='m' overflow='inherit' markerUnits='userSpaceOnUse' markerWidth='4' markerHeight='4' refX='2' refY='2'>"
+        "<marker id='m' overflow='inherit' markerUnits='userSpaceOnUse' markerWidth='4' markerHeight='4' refX='2' "
+        "refY='2'>"
         "<rect x='-4' y='-4' width='12' height='12' fill='green'/></marker>";
     const std::string path = "<path d='M 20 20 L 30 20' fill='none' marker-start='url(#m)'/>";
     const Pixmap visible = draw(marker + path);
@@ -84,8 +86,10 @@ TEST_CASE("svg marker: overflow inherit takes the parent's value, visible when t
     CHECK(hidden.pixel(15, 15).a == 0);
     CHECK(hidden.pixel(20, 20) == kGreen);
     // Without inherit, a marker clips to its box.
-    const Pixmap plain = draw("<marker id='m' markerUnits='userSpaceOnUse' markerWidth='4' markerHeight='4' refX='2' refY='2'>"
-                              "<rect x='-4' y='-4' width='12' height='12' fill='green'/></marker>" + path);
+    const Pixmap plain = draw(
+        "<marker id='m' markerUnits='userSpaceOnUse' markerWidth='4' markerHeight='4' refX='2' refY='2'>"
+        "<rect x='-4' y='-4' width='12' height='12' fill='green'/></marker>" +
+        path);
     CHECK(plain.pixel(15, 15).a == 0);
 }
 
@@ -98,17 +102,19 @@ TEST_CASE("svg marker: context-fill with a paint server uses the marked shape's 
     // objectBoundingBox gradient: black on the left half of the strip's box (x < 20), green on the
     // right half. The marker at x = 0 is all black, the one at x = 40 all green (with the marker's
     // own box each would be half black, half green).
-    const Pixmap grad = draw("<linearGradient id='g'><stop offset='0.5' stop-color='black'/>"
-                             "<stop offset='0.5' stop-color='green'/></linearGradient>" +
-                             marker + "<path fill='url(#g)' " + strip);
+    const Pixmap grad = draw(
+        "<linearGradient id='g'><stop offset='0.5' stop-color='black'/>"
+        "<stop offset='0.5' stop-color='green'/></linearGradient>" +
+        marker + "<path fill='url(#g)' " + strip);
     const PremulPixel black{0, 0, 0, 255};
     for (int x : {1, 3}) CHECK(grad.pixel(x, 17) == black);
     for (int x : {37, 38}) CHECK(grad.pixel(x, 17) == kGreen);
     // userSpaceOnUse pattern in the strip's user space: green for x mod 20 < 10, black otherwise.
     // Around x = 40 the pixels 36..39 are black (marker space would give green at 36..39).
-    const Pixmap patt = draw("<pattern id='p' patternUnits='userSpaceOnUse' width='20' height='40'>"
-                             "<rect width='20' height='40' fill='black'/><rect width='10' height='40' fill='green'/></pattern>" +
-                             marker + "<path fill='url(#p)' " + strip);
+    const Pixmap patt = draw(
+        "<pattern id='p' patternUnits='userSpaceOnUse' width='20' height='40'>"
+        "<rect width='20' height='40' fill='black'/><rect width='10' height='40' fill='green'/></pattern>" +
+        marker + "<path fill='url(#p)' " + strip);
     for (int x : {37, 38}) CHECK(patt.pixel(x, 17) == black);
     for (int x : {1, 3}) CHECK(patt.pixel(x, 17) == kGreen);
 }

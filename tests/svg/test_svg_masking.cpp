@@ -22,7 +22,8 @@ TEST_CASE("clip: coverage equals the product of shape and clip coverage within 1
     // coverages of each alone come from the rasterizer on the same geometry.
     const char* quad = "M 9.3 3.1 L 35.2 10.4 L 29.9 36.6 L 4.1 28.7 Z";
     const Pixmap pm = doc(std::string("<clipPath id='c'><circle cx='20' cy='20' r='13.3'/></clipPath>"
-                                      "<path d='") + quad + "' fill='#000' clip-path='url(#c)'/>")
+                                      "<path d='") +
+                          quad + "' fill='#000' clip-path='url(#c)'/>")
                           .render();
     Rasterizer r;
     Path circle;
@@ -52,25 +53,30 @@ TEST_CASE("mask: luminance and alpha masks multiply the content", "[svg][mask]")
                            "<rect width='40' height='40' fill='#000' mask='url(#m)'/>")
                            .render();
     CHECK(std::abs(lum.pixel(20, 20).a - 128) <= 1);
-    const Pixmap alpha = doc("<mask id='m' mask-type='alpha' maskUnits='userSpaceOnUse' x='0' y='0' width='40' height='40'>"
-                             "<rect width='40' height='40' fill='rgb(0,0,0)' fill-opacity='0.25'/></mask>"
-                             "<rect width='40' height='40' fill='#000' mask='url(#m)'/>")
-                             .render();
+    const Pixmap alpha =
+        doc("<mask id='m' mask-type='alpha' maskUnits='userSpaceOnUse' x='0' y='0' width='40' height='40'>"
+            "<rect width='40' height='40' fill='rgb(0,0,0)' fill-opacity='0.25'/></mask>"
+            "<rect width='40' height='40' fill='#000' mask='url(#m)'/>")
+            .render();
     CHECK(std::abs(alpha.pixel(20, 20).a - 64) <= 1);
 }
 
-TEST_CASE("clip and mask cycles: the reference back into the cycle is ignored, or the element not drawn", "[svg][clip][bad-input]") {
+TEST_CASE("clip and mask cycles: the reference back into the cycle is ignored, or the element not drawn",
+          "[svg][clip][bad-input]") {
     // Inside clip paths the reference that closes a cycle is ignored (resvg's behaviour), so the
     // clip is the plain rectangle.
-    const SvgDocument a = doc("<clipPath id='a' clip-path='url(#b)'><rect width='40' height='40'/></clipPath>"
-                              "<clipPath id='b' clip-path='url(#a)'><rect width='40' height='40'/></clipPath>"
-                              "<rect width='40' height='40' clip-path='url(#a)'/>");
+    const SvgDocument a =
+        doc("<clipPath id='a' clip-path='url(#b)'><rect width='40' height='40'/></clipPath>"
+            "<clipPath id='b' clip-path='url(#a)'><rect width='40' height='40'/></clipPath>"
+            "<rect width='40' height='40' clip-path='url(#a)'/>");
     CHECK(a.render().pixel(20, 20).a == 255);
-    const SvgDocument self = doc("<clipPath id='a'><rect width='40' height='40' clip-path='url(#a)'/></clipPath>"
-                                 "<rect width='40' height='40' clip-path='url(#a)'/>");
+    const SvgDocument self =
+        doc("<clipPath id='a'><rect width='40' height='40' clip-path='url(#a)'/></clipPath>"
+            "<rect width='40' height='40' clip-path='url(#a)'/>");
     CHECK(self.render().pixel(20, 20).a == 255);
     // A mask whose content uses the mask itself: that content is not drawn, so the mask is empty.
-    const SvgDocument m = doc("<mask id='m'><rect width='40' height='40' fill='white' mask='url(#m)'/></mask>"
-                              "<rect width='40' height='40' mask='url(#m)'/>");
+    const SvgDocument m =
+        doc("<mask id='m'><rect width='40' height='40' fill='white' mask='url(#m)'/></mask>"
+            "<rect width='40' height='40' mask='url(#m)'/>");
     CHECK(m.render().pixel(20, 20).a == 0);
 }

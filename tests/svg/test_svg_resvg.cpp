@@ -35,7 +35,8 @@ fs::path corpus_dir() { return casteljau::test::shared_dir() / "conformance" / "
 TEST_CASE("svg: resvg conformance corpus, gradient-free files, rule A", "[svg][resvg]") {
     const fs::path root = corpus_dir();
     if (!fs::exists(root / "manifest.tsv"))
-        CASTELJAU_SKIP("the resvg corpus is not at " << root.string() << " (../shared absent; set CASTELJAU_SHARED_DIR)");
+        CASTELJAU_SKIP("the resvg corpus is not at " << root.string()
+                                                     << " (../shared absent; set CASTELJAU_SHARED_DIR)");
     std::ifstream manifest(root / "manifest.tsv");
     std::string line;
     std::getline(manifest, line);  // header
@@ -56,12 +57,13 @@ TEST_CASE("svg: resvg conformance corpus, gradient-free files, rule A", "[svg][r
             const SvgDocument doc = SvgDocument::load((root / svg).string());
             const Pixmap pm = resvg_compare::render_reference_size(doc, svg.rfind("extra/", 0) == 0);
             const resvg_compare::Result r = resvg_compare::compare(pm, ref);
-            if (!r.size_ok) why = "size " + std::to_string(pm.width()) + "x" + std::to_string(pm.height());
-            else if (r.pass_a) ++passing;
-            else why = std::to_string(r.bad_a) + " bad pixels";
-        } catch (const Error& e) {
-            why = std::string("error: ") + e.what();
-        }
+            if (!r.size_ok)
+                why = "size " + std::to_string(pm.width()) + "x" + std::to_string(pm.height());
+            else if (r.pass_a)
+                ++passing;
+            else
+                why = std::to_string(r.bad_a) + " bad pixels";
+        } catch (const Error& e) { why = std::string("error: ") + e.what(); }
         if (!why.empty()) failures += "\n  " + svg + ": " + why;
     }
     INFO("passing " << passing << " of " << total << "; failing:" << failures);

@@ -42,10 +42,12 @@ TEST_CASE("svg size: the CLI at --width 256 writes 256x256 for a 16.031 x 16 doc
     const fs::path d = scratch_dir("svg-size");
     {
         std::ofstream f(d / "a.svg");
-        f << "<svg xmlns='http://www.w3.org/2000/svg' width='16.031' height='16'><rect width='20' height='20' fill='red'/></svg>";
+        f << "<svg xmlns='http://www.w3.org/2000/svg' width='16.031' height='16'><rect width='20' height='20' "
+             "fill='red'/></svg>";
     }
     for (const char* opt : {"--width 256", "-w 256"}) {
-        const CliResult r = run_cli("svg " + shell_quote((d / "a.svg").string()) + " " + opt + " -o " + shell_quote((d / "a.png").string()));
+        const CliResult r = run_cli("svg " + shell_quote((d / "a.svg").string()) + " " + opt + " -o " +
+                                    shell_quote((d / "a.png").string()));
         REQUIRE(r.status == 0);
         const Pixmap pm = read_png((d / "a.png").string());
         CHECK(pm.width() == 256);
@@ -61,7 +63,8 @@ TEST_CASE("svg size: the CLI at --width 256 writes 256x256 for a 16.031 x 16 doc
 
 TEST_CASE("svg: a root written <svg:svg> with the SVG namespace bound to its prefix", "[svg]") {
     const SvgDocument doc = SvgDocument::parse(
-        "<svg:svg xmlns:svg='http://www.w3.org/2000/svg' width='4' height='4'><svg:rect width='2' height='4' fill='#00ff00'/>"
+        "<svg:svg xmlns:svg='http://www.w3.org/2000/svg' width='4' height='4'><svg:rect width='2' height='4' "
+        "fill='#00ff00'/>"
         "<other:rect xmlns:other='urn:x' width='4' height='4' fill='red'/></svg:svg>");
     const Pixmap pm = doc.render();
     CHECK(pm.pixel(0, 0) == PremulPixel{0, 255, 0, 255});

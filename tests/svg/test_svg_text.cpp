@@ -100,7 +100,8 @@ std::vector<HbGlyph> harfbuzz_positions(const std::string& font_file, const std:
 
 // Draws glyphs at the given positions (font units) as one filled path, the way an independent
 // program would: origin (x0, y0) on the baseline, `size` px per em.
-Pixmap draw_positions(const Font& font, const std::vector<HbGlyph>& glyphs, double size, double x0, double y0, int w, int h) {
+Pixmap draw_positions(const Font& font, const std::vector<HbGlyph>& glyphs, double size, double x0, double y0, int w,
+                      int h) {
     const double s = size / font.units_per_em();
     Path all;
     for (const HbGlyph& g : glyphs)
@@ -172,7 +173,7 @@ TEST_CASE("FontDatabase: CSS matching picks stretch, then style, then weight in 
     CHECK(weight_of(800).first == 900);
     CHECK(weight_of(350).first == 300);  // below 400: lighter first
     CHECK(weight_of(200).first == 100);
-    CHECK(weight_of(50).first == 100);   // nothing lighter: the nearest heavier
+    CHECK(weight_of(50).first == 100);  // nothing lighter: the nearest heavier
     CHECK(weight_of(400, FontSlant::Italic).second == FontSlant::Italic);
     CHECK(weight_of(400, FontSlant::Oblique).second == FontSlant::Italic);  // oblique falls back to italic
     CHECK(weight_of(700, FontSlant::Italic).second == FontSlant::Italic);   // style before weight
@@ -194,8 +195,10 @@ TEST_CASE("SVG text: glyph positions equal HarfBuzz's own shaping of the same st
     // Kerning pairs (AV, Ty, We) make positions differ from plain advances.
     const std::string s = "AVATAR To We";
     const double size = 40, x0 = 10, y0 = 60;
-    const std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='320' height='80'><text x='10' y='60' "
-                            "font-family='DejaVu Sans' font-size='40'>" + s + "</text></svg>";
+    const std::string svg =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='320' height='80'><text x='10' y='60' "
+        "font-family='DejaVu Sans' font-size='40'>" +
+        s + "</text></svg>";
     const SvgDocument doc = SvgDocument::parse(svg, repo_options());
     const Pixmap actual = doc.render();
     const Font font = Font::load(kFontDir + "/DejaVuSans.ttf");
@@ -216,8 +219,10 @@ TEST_CASE("SVG text: glyph positions equal HarfBuzz's own shaping of the same st
 
 TEST_CASE("SVG text: kerning 0 places glyphs at their plain advances", "[svg_text]") {
     const std::string s = "AVAV";
-    const std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='60'><text x='10' y='45' "
-                            "font-family='DejaVu Sans' font-size='40' kerning='0'>" + s + "</text></svg>";
+    const std::string svg =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='60'><text x='10' y='45' "
+        "font-family='DejaVu Sans' font-size='40' kerning='0'>" +
+        s + "</text></svg>";
     const Pixmap actual = SvgDocument::parse(svg, repo_options()).render();
     const Font font = Font::load(kFontDir + "/DejaVuSans.ttf");
     std::vector<HbGlyph> plain = harfbuzz_positions(kFontDir + "/DejaVuSans.ttf", s);
@@ -228,15 +233,19 @@ TEST_CASE("SVG text: kerning 0 places glyphs at their plain advances", "[svg_tex
     }
     CHECK(max_diff(actual, draw_positions(font, plain, 40, 10, 45, 200, 60)) <= 1);
     // Without kerning="0" the AV pairs move closer.
-    const std::string kerned = "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='60'><text x='10' y='45' "
-                               "font-family='DejaVu Sans' font-size='40'>" + s + "</text></svg>";
+    const std::string kerned =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='60'><text x='10' y='45' "
+        "font-family='DejaVu Sans' font-size='40'>" +
+        s + "</text></svg>";
     CHECK(max_diff(SvgDocument::parse(kerned, repo_options()).render(), actual) > 100);
 }
 
 TEST_CASE("SVG text: x, dx, text-anchor and letter-spacing move glyphs by their exact amounts", "[svg_text]") {
     auto render = [](const std::string& attrs) {
-        const std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='60'><text y='40' "
-                                "font-family='DejaVu Sans' font-size='30' " + attrs + ">H</text></svg>";
+        const std::string svg =
+            "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='60'><text y='40' "
+            "font-family='DejaVu Sans' font-size='30' " +
+            attrs + ">H</text></svg>";
         return SvgDocument::parse(svg, repo_options()).render();
     };
     // The left edge of the ink.
@@ -259,8 +268,10 @@ TEST_CASE("SVG text: x, dx, text-anchor and letter-spacing move glyphs by their 
 TEST_CASE("SVG text: fill, stroke and gradients paint text like shapes", "[svg_text]") {
     const std::string svg =
         "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='60'>"
-        "<linearGradient id='g'><stop offset='0' stop-color='red'/><stop offset='1' stop-color='blue'/></linearGradient>"
-        "<text x='5' y='45' font-family='DejaVu Sans' font-size='40' fill='url(#g)' stroke='lime' stroke-width='2'>MMMM</text></svg>";
+        "<linearGradient id='g'><stop offset='0' stop-color='red'/><stop offset='1' "
+        "stop-color='blue'/></linearGradient>"
+        "<text x='5' y='45' font-family='DejaVu Sans' font-size='40' fill='url(#g)' stroke='lime' "
+        "stroke-width='2'>MMMM</text></svg>";
     const Pixmap pm = SvgDocument::parse(svg, repo_options()).render();
     bool reddish = false, bluish = false, green = false;
     for (int y = 0; y < pm.height(); ++y)
@@ -276,22 +287,26 @@ TEST_CASE("SVG text: fill, stroke and gradients paint text like shapes", "[svg_t
 }
 
 TEST_CASE("SVG text: a textPath to a missing or degenerate path draws nothing and warns", "[svg_text][bad-input]") {
-    for (const std::string& defs : {std::string(""), std::string("<path id='p' d='M 10 10'/>"), std::string("<circle id='p' r='0'/>")}) {
-        const std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><defs>" + defs +
-                                "</defs><text font-family='DejaVu Sans' font-size='20'><textPath href='#p'>Text</textPath></text></svg>";
+    for (const std::string& defs :
+         {std::string(""), std::string("<path id='p' d='M 10 10'/>"), std::string("<circle id='p' r='0'/>")}) {
+        const std::string svg =
+            "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><defs>" + defs +
+            "</defs><text font-family='DejaVu Sans' font-size='20'><textPath href='#p'>Text</textPath></text></svg>";
         const SvgDocument doc = SvgDocument::parse(svg, repo_options());
         CHECK(ink(doc.render()) == 0);
         CHECK(has_warning(doc, "textPath"));
     }
     // A usable path draws the text along it.
-    const std::string ok = "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><defs><path id='p' d='M 10 50 L 90 50'/>"
-                           "</defs><text font-family='DejaVu Sans' font-size='20'><textPath href='#p'>Text</textPath></text></svg>";
+    const std::string ok =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><defs><path id='p' d='M 10 50 L 90 50'/>"
+        "</defs><text font-family='DejaVu Sans' font-size='20'><textPath href='#p'>Text</textPath></text></svg>";
     CHECK(ink(SvgDocument::parse(ok, repo_options()).render()) > 100);
 }
 
 TEST_CASE("SVG text: a font-size of 1e9 is skipped with a warning in bounded time", "[svg_text][bad-input]") {
-    const std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><text x='0' y='50' "
-                            "font-family='DejaVu Sans' font-size='1e9'>W</text></svg>";
+    const std::string svg =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><text x='0' y='50' "
+        "font-family='DejaVu Sans' font-size='1e9'>W</text></svg>";
     const SvgDocument doc = SvgDocument::parse(svg, repo_options());
     CHECK(has_warning(doc, "font-size"));
     CHECK(ink(doc.render()) == 0);
@@ -300,19 +315,24 @@ TEST_CASE("SVG text: a font-size of 1e9 is skipped with a warning in bounded tim
 TEST_CASE("SVG text: a 1 MB text node is cut at the documented limit with a warning", "[svg_text][bad-input]") {
     std::string body(1u << 20, 'x');
     for (std::size_t i = 7; i < body.size(); i += 8) body[i] = ' ';
-    const std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><text x='0' y='50' "
-                            "font-family='DejaVu Sans' font-size='10'>" + body + "</text></svg>";
+    const std::string svg =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><text x='0' y='50' "
+        "font-family='DejaVu Sans' font-size='10'>" +
+        body + "</text></svg>";
     const SvgDocument doc = SvgDocument::parse(svg, repo_options());
     CHECK(has_warning(doc, std::to_string(Limits{}.svg_text_chars) + " characters"));
     CHECK(ink(doc.render()) > 0);
 }
 
-TEST_CASE("SVG text: a missing font family falls back to the default family, and no font at all warns", "[svg_text][bad-input]") {
-    const std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='60'><text x='5' y='40' "
-                            "font-family='No Such Font' font-size='30'>Ab</text></svg>";
+TEST_CASE("SVG text: a missing font family falls back to the default family, and no font at all warns",
+          "[svg_text][bad-input]") {
+    const std::string svg =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='60'><text x='5' y='40' "
+        "font-family='No Such Font' font-size='30'>Ab</text></svg>";
     const Pixmap with_fallback = SvgDocument::parse(svg, repo_options()).render();
-    const std::string same = "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='60'><text x='5' y='40' "
-                             "font-family='DejaVu Sans' font-size='30'>Ab</text></svg>";
+    const std::string same =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='60'><text x='5' y='40' "
+        "font-family='DejaVu Sans' font-size='30'>Ab</text></svg>";
     CHECK(ink(with_fallback) > 100);
     CHECK(max_diff(with_fallback, SvgDocument::parse(same, repo_options()).render()) == 0);
     // An empty database: nothing to draw with.
@@ -324,13 +344,15 @@ TEST_CASE("SVG text: a missing font family falls back to the default family, and
 }
 
 TEST_CASE("SVG text: per-character fallback draws Arabic from another font of the folder", "[svg_text]") {
-    const std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='60'><text x='5' y='40' "
-                            "font-family='Linux Libertine O' font-size='30'>\xd9\x85\xd8\xb1\xd8\xad\xd8\xa8\xd8\xa7</text></svg>";
+    const std::string svg =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='60'><text x='5' y='40' "
+        "font-family='Linux Libertine O' font-size='30'>\xd9\x85\xd8\xb1\xd8\xad\xd8\xa8\xd8\xa7</text></svg>";
     const SvgDocument doc = SvgDocument::parse(svg, repo_options());
     CHECK(ink(doc.render()) > 100);
 }
 
-TEST_CASE("casteljau svg: --font-dir and --font-family draw text, a missing font folder is an error", "[svg_text][cli]") {
+TEST_CASE("casteljau svg: --font-dir and --font-family draw text, a missing font folder is an error",
+          "[svg_text][cli]") {
     namespace fs = std::filesystem;
     const fs::path dir = casteljau::test::scratch_dir("svg_text_cli");
     const fs::path in = dir / "t.svg", out = dir / "t.png";
@@ -355,9 +377,11 @@ TEST_CASE("casteljau svg: --font-dir and --font-family draw text, a missing font
     CHECK_FALSE(fs::exists(out2));
 }
 
-TEST_CASE("SVG text: spacing and text paths beyond double range neither fail nor draw garbage", "[svg_text][bad-input]") {
+TEST_CASE("SVG text: spacing and text paths beyond double range neither fail nor draw garbage",
+          "[svg_text][bad-input]") {
     const std::string svg =
-        "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><defs><path id='p' d='M 0 0 L 1e308 1e308 L -1e308 0'/></defs>"
+        "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'><defs><path id='p' d='M 0 0 L 1e308 1e308 L "
+        "-1e308 0'/></defs>"
         "<text x='5' y='50' font-family='DejaVu Sans' font-size='20' letter-spacing='1e308'>ABC</text>"
         "<text font-family='DejaVu Sans' font-size='20'><textPath href='#p'>Text</textPath></text></svg>";
     const SvgDocument doc = SvgDocument::parse(svg, repo_options());
@@ -368,8 +392,10 @@ TEST_CASE("SVG text: spacing and text paths beyond double range neither fail nor
 }
 
 TEST_CASE("SVG text: the character budget counts every use copy of a text", "[svg_text][bad-input]") {
-    std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' width='100' height='100'>"
-                      "<defs><text id='t' font-family='DejaVu Sans' font-size='5'>" + std::string(1000, 'x') + "</text></defs>";
+    std::string svg =
+        "<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' width='100' height='100'>"
+        "<defs><text id='t' font-family='DejaVu Sans' font-size='5'>" +
+        std::string(1000, 'x') + "</text></defs>";
     for (int i = 0; i < 200; ++i) svg += "<use xlink:href='#t'/>";
     svg += "</svg>";
     const SvgDocument doc = SvgDocument::parse(svg, repo_options());

@@ -13,8 +13,9 @@ using namespace casteljau;
 
 namespace {
 SvgDocument doc(const std::string& body, int w = 20, int h = 20) {
-    return SvgDocument::parse("<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' width='" +
-                              std::to_string(w) + "' height='" + std::to_string(h) + "'>" + body + "</svg>");
+    return SvgDocument::parse(
+        "<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' width='" +
+        std::to_string(w) + "' height='" + std::to_string(h) + "'>" + body + "</svg>");
 }
 const PremulPixel kGreen{0, 128, 0, 255};
 }  // namespace
@@ -40,9 +41,10 @@ TEST_CASE("svg: a nested svg is a new viewport that clips its content", "[svg][u
 }
 
 TEST_CASE("svg switch: only the first child whose conditions pass is drawn", "[svg][use]") {
-    const Pixmap pm = doc("<switch><rect systemLanguage='xx' width='20' height='20' fill='red'/>"
-                          "<rect width='20' height='20' fill='green'/><rect width='20' height='20' fill='blue'/></switch>")
-                          .render();
+    const Pixmap pm =
+        doc("<switch><rect systemLanguage='xx' width='20' height='20' fill='red'/>"
+            "<rect width='20' height='20' fill='green'/><rect width='20' height='20' fill='blue'/></switch>")
+            .render();
     CHECK(pm.pixel(5, 5) == kGreen);
 }
 
@@ -52,8 +54,9 @@ TEST_CASE("svg use: references to itself, directly or through a cycle, are skipp
     CHECK_FALSE(self.warnings().empty());
     const SvgDocument parent = doc("<g id='g'><rect width='5' height='5' fill='green'/><use href='#g'/></g>");
     CHECK(parent.render().pixel(2, 2) == kGreen);
-    const SvgDocument cycle = doc("<g id='a'><use href='#b'/></g><g id='b'><use href='#a'/></g>"
-                                  "<rect width='5' height='5' fill='green'/>");
+    const SvgDocument cycle =
+        doc("<g id='a'><use href='#b'/></g><g id='b'><use href='#a'/></g>"
+            "<rect width='5' height='5' fill='green'/>");
     CHECK(cycle.render().pixel(2, 2) == kGreen);
     CHECK_FALSE(cycle.warnings().empty());
 }
@@ -84,25 +87,27 @@ TEST_CASE("svg: 10,000 nested groups are refused with a limit error, not a crash
     try {
         (void)doc(body);
         FAIL("accepted");
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::Limit);
-    }
+    } catch (const Error& e) { CHECK(e.kind() == ErrorKind::Limit); }
 }
 
 TEST_CASE("svg transform-origin: the transform turns about the origin given", "[svg]") {
     // scale(0.5) about the centre of a 20x20 viewport keeps the square centred: 5..15.
-    const Pixmap pm = doc("<rect width='20' height='20' fill='green' transform='scale(0.5)' transform-origin='center'/>").render();
+    const Pixmap pm =
+        doc("<rect width='20' height='20' fill='green' transform='scale(0.5)' transform-origin='center'/>").render();
     CHECK(pm.pixel(10, 10) == kGreen);
     CHECK(pm.pixel(6, 6) == kGreen);
     CHECK(pm.pixel(3, 3).a == 0);
     CHECK(pm.pixel(16, 16).a == 0);
-    const Pixmap px = doc("<rect width='20' height='20' fill='green' transform='scale(0.5)' transform-origin='20px 0'/>").render();
+    const Pixmap px =
+        doc("<rect width='20' height='20' fill='green' transform='scale(0.5)' transform-origin='20px 0'/>").render();
     CHECK(px.pixel(15, 5) == kGreen);
     CHECK(px.pixel(5, 5).a == 0);
 }
 
 TEST_CASE("svg use: an instanced symbol keeps its own opacity", "[svg][use]") {
-    const Pixmap pm = doc("<symbol id='s' opacity='0.5'><rect width='20' height='20' fill='#000'/></symbol><use href='#s'/>").render();
+    const Pixmap pm =
+        doc("<symbol id='s' opacity='0.5'><rect width='20' height='20' fill='#000'/></symbol><use href='#s'/>")
+            .render();
     CHECK(std::abs(pm.pixel(10, 10).a - 128) <= 1);
 }
 
@@ -129,8 +134,9 @@ TEST_CASE("svg use: 25 nested uses with a gradient fill draw, without an exponen
     // Each use measures its content's box for context-fill; uses met while measuring are not
     // measured again, so this chain costs about 25^2 elements, not 2^25 (which would pass the
     // 1,000,000-element limit and be refused).
-    std::string body = "<linearGradient id='g'><stop offset='0.5' stop-color='black'/><stop offset='0.5' stop-color='green'/>"
-                       "</linearGradient><defs><rect id='l0' width='20' height='10' fill='context-fill'/>";
+    std::string body =
+        "<linearGradient id='g'><stop offset='0.5' stop-color='black'/><stop offset='0.5' stop-color='green'/>"
+        "</linearGradient><defs><rect id='l0' width='20' height='10' fill='context-fill'/>";
     for (int i = 1; i <= 25; ++i)
         body += "<g id='l" + std::to_string(i) + "'><use href='#l" + std::to_string(i - 1) + "' fill='url(#g)'/></g>";
     body += "</defs><use href='#l25' fill='url(#g)'/>";

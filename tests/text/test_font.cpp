@@ -186,7 +186,8 @@ TEST_CASE("Fonts from files (mapped) and from a FIFO (read) equal fonts from mem
     same(piped);
     // A truncated file is the same error through the mapped path as from memory.
     const std::string half = temp_file("half.ttf");
-    write_bytes(half, std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(bytes.size() / 2)));
+    write_bytes(
+        half, std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(bytes.size() / 2)));
     std::string msg;
     CHECK(error_kind_of([&] { (void)Font::load(half); }, &msg) == ErrorKind::Font);
     CHECK(msg.find("truncated") != std::string::npos);
@@ -207,13 +208,9 @@ TEST_CASE("Corrupted font bytes never crash: errors or glyphs, nothing else", "[
             for (char32_t c = U'A'; c <= U'z'; ++c) {
                 try {
                     (void)f.glyph_path(f.glyph_index(c));
-                } catch (const Error& e) {
-                    CHECK(e.kind() == ErrorKind::Font);
-                }
+                } catch (const Error& e) { CHECK(e.kind() == ErrorKind::Font); }
             }
-        } catch (const Error& e) {
-            CHECK(e.kind() == ErrorKind::Font);
-        }
+        } catch (const Error& e) { CHECK(e.kind() == ErrorKind::Font); }
     }
 }
 
@@ -332,14 +329,22 @@ struct Worst {
     int max = -1;
     std::string what_mean, what_max;
     void add(const DiffStats& d, const std::string& what) {
-        if (d.mean > mean) { mean = d.mean; what_mean = what; }
-        if (d.max > max) { max = d.max; what_max = what; }
+        if (d.mean > mean) {
+            mean = d.mean;
+            what_mean = what;
+        }
+        if (d.max > max) {
+            max = d.max;
+            what_max = what;
+        }
     }
 };
 
-std::string describe(const std::string& path, char32_t c, std::uint32_t gid, double size, Point origin, const DiffStats& d) {
+std::string describe(const std::string& path, char32_t c, std::uint32_t gid, double size, Point origin,
+                     const DiffStats& d) {
     char buf[220];
-    std::snprintf(buf, sizeof buf, "%s U+%04X (glyph %u) at %g px, origin (%g, %g): mean %.3f/255, max %d/255 at (%d, %d)",
+    std::snprintf(buf, sizeof buf,
+                  "%s U+%04X (glyph %u) at %g px, origin (%g, %g): mean %.3f/255, max %d/255 at (%d, %d)",
                   path.substr(path.rfind('/') + 1).c_str(), static_cast<unsigned>(c), gid, size, origin.x, origin.y,
                   d.mean, d.max, d.max_x, d.max_y);
     return buf;
@@ -393,16 +398,16 @@ TEST_CASE("Glyph coverage matches FreeType's smooth rendering of the same unhint
             }
         }
         const std::string name = path.substr(path.rfind('/') + 1);
-        std::printf("[font] %s: %d glyphs, %d renderings\n"
-                    "  ours vs FreeType (supersampled): worst mean %s\n"
-                    "                                   worst max  %s\n"
-                    "  ours vs FreeType 1x:             worst mean %s\n"
-                    "                                   worst max  %s\n"
-                    "  FreeType 1x vs supersampled:     worst mean %s\n"
-                    "                                   worst max  %s\n",
-                    name.c_str(), glyphs, count, vs_ref.what_mean.c_str(), vs_ref.what_max.c_str(),
-                    vs_ft1.what_mean.c_str(), vs_ft1.what_max.c_str(), ft1_vs_ref.what_mean.c_str(),
-                    ft1_vs_ref.what_max.c_str());
+        std::printf(
+            "[font] %s: %d glyphs, %d renderings\n"
+            "  ours vs FreeType (supersampled): worst mean %s\n"
+            "                                   worst max  %s\n"
+            "  ours vs FreeType 1x:             worst mean %s\n"
+            "                                   worst max  %s\n"
+            "  FreeType 1x vs supersampled:     worst mean %s\n"
+            "                                   worst max  %s\n",
+            name.c_str(), glyphs, count, vs_ref.what_mean.c_str(), vs_ref.what_max.c_str(), vs_ft1.what_mean.c_str(),
+            vs_ft1.what_max.c_str(), ft1_vs_ref.what_mean.c_str(), ft1_vs_ref.what_max.c_str());
         INFO(name << ": worst mean " << vs_ref.what_mean << "; worst max " << vs_ref.what_max);
         CHECK(glyphs >= 200);
         CHECK(vs_ref.mean <= 1.0);
@@ -438,8 +443,10 @@ TEST_CASE("Exact overlap cells never add coverage to glyphs", "[font]") {
                         if (a.at(x, y) > b.at(x, y) + 1) {
                             if (bad++ == 0) {
                                 char buf[200];
-                                std::snprintf(buf, sizeof buf, "U+%04X at %g px, origin (%g, %g), pixel (%d, %d): exact %d, accumulated %d",
-                                              static_cast<unsigned>(c), size, origin.x, origin.y, x, y, a.at(x, y), b.at(x, y));
+                                std::snprintf(
+                                    buf, sizeof buf,
+                                    "U+%04X at %g px, origin (%g, %g), pixel (%d, %d): exact %d, accumulated %d",
+                                    static_cast<unsigned>(c), size, origin.x, origin.y, x, y, a.at(x, y), b.at(x, y));
                                 first_bad = buf;
                             }
                         }

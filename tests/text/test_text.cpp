@@ -45,7 +45,10 @@ struct Fonts {
 
 TEST_CASE("UTF-8 decoding replaces each maximal invalid subpart with one U+FFFD", "[text]") {
     CHECK(decode_utf8("a\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80") == U"a\u00e9\u20ac\U0001F600");
-    CHECK(decode_utf8("a\x80" "b") == U"a\uFFFD" "b");
+    CHECK(decode_utf8("a\x80"
+                      "b") ==
+          U"a\uFFFD"
+          "b");
     CHECK(decode_utf8("\xC3") == U"\uFFFD");                      // truncated at the end
     CHECK(decode_utf8("\xE2\x82x") == U"\uFFFDx");                // one U+FFFD for a truncated sequence
     CHECK(decode_utf8("\xC0\xAF") == U"\uFFFD\uFFFD");            // overlong: invalid lead, stray continuation
@@ -186,8 +189,10 @@ TEST_CASE("Font fallback: missing characters come from the next font, .notdef on
     for (const auto& g : l.glyphs) {
         const char32_t c = l.text[g.cluster];
         INFO("cluster " << g.cluster);
-        if (c >= 0x600 && c < 0x700) CHECK(g.font == 1);
-        else if (c >= U'A' && c <= U'z') CHECK(g.font == 0);
+        if (c >= 0x600 && c < 0x700)
+            CHECK(g.font == 1);
+        else if (c >= U'A' && c <= U'z')
+            CHECK(g.font == 0);
         CHECK(g.glyph != 0);
     }
     // A character no font has: .notdef of the first font.
@@ -249,7 +254,7 @@ TEST_CASE("Wrapping at word boundaries, within the width, words whole, alignment
                 const char32_t last = l.text[ln.text_end - 1];
                 CHECK((last == U' ' || last == U'-'));
             }
-            const double expect_x = align == TextAlign::Center ? (150 - ln.width) / 2
+            const double expect_x = align == TextAlign::Center  ? (150 - ln.width) / 2
                                     : align == TextAlign::Right ? 150 - ln.width
                                                                 : 0.0;
             CHECK(ln.x == Approx(expect_x).margin(1e-9));
@@ -281,8 +286,13 @@ TEST_CASE("Empty text, invalid UTF-8, bad sizes and styles", "[text]") {
     CHECK(e.ink.empty());
 
     // Invalid bytes show U+FFFD (DejaVu has a glyph for it).
-    const TextLayout bad = layout_text("a\xFF" "b", f.dejavu, sized(16));
-    CHECK(bad.text == U"a\uFFFD" "b");
+    const TextLayout bad = layout_text(
+        "a\xFF"
+        "b",
+        f.dejavu, sized(16));
+    CHECK(bad.text ==
+          U"a\uFFFD"
+          "b");
     REQUIRE(bad.glyphs.size() == 3);
     CHECK(bad.glyphs[1].glyph == f.dejavu.glyph_index(U'\uFFFD'));
     CHECK(bad.glyphs[1].glyph != 0);
@@ -357,7 +367,8 @@ TEST_CASE("Glyph cache: hits, misses, keys by subpixel offset, size, font and va
     CHECK(cache.stats().entries == 0);
 }
 
-TEST_CASE("Glyph cache: masks of many glyphs at once equal mask() one by one, on any number of threads", "[text][threads]") {
+TEST_CASE("Glyph cache: masks of many glyphs at once equal mask() one by one, on any number of threads",
+          "[text][threads]") {
     Fonts f;
     std::vector<GlyphCache::MaskRequest> req;
     for (char32_t c = U'A'; c <= U'z'; ++c)
@@ -404,7 +415,8 @@ TEST_CASE("draw_text: the same pixels with glyph masks made on 1 or 4 threads", 
     st.max_width = 400;
     const TextLayout layout = layout_text(
         "Sphinx of black quartz, judge my vow! 0123456789 The five boxing wizards jump quickly; "
-        "Pack my box with five dozen liquor jugs.", f.dejavu, st);
+        "Pack my box with five dozen liquor jugs.",
+        f.dejavu, st);
     Pixmap images[2] = {Pixmap(420, 120), Pixmap(420, 120)};
     int k = 0;
     for (int threads : {1, 4}) {

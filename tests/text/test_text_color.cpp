@@ -60,10 +60,9 @@ void check_against(const Pixmap& pm, const std::function<Rgba(double, double)>& 
     for (int y = 0; y < pm.height(); ++y)
         for (int x = 0; x < pm.width(); ++x) {
             const Rgba e = expected((x + 0.5) * 10, (100 - (y + 0.5)) * 10);
-            const PremulPixel want = premultiply(Color::rgba(static_cast<std::uint8_t>(std::lround(e[0])),
-                                                             static_cast<std::uint8_t>(std::lround(e[1])),
-                                                             static_cast<std::uint8_t>(std::lround(e[2])),
-                                                             static_cast<std::uint8_t>(std::lround(e[3]))));
+            const PremulPixel want = premultiply(Color::rgba(
+                static_cast<std::uint8_t>(std::lround(e[0])), static_cast<std::uint8_t>(std::lround(e[1])),
+                static_cast<std::uint8_t>(std::lround(e[2])), static_cast<std::uint8_t>(std::lround(e[3]))));
             const PremulPixel got = pm.pixel(x, y);
             const int d = std::max({std::abs(got.r - want.r), std::abs(got.g - want.g), std::abs(got.b - want.b),
                                     std::abs(got.a - want.a)});
@@ -85,8 +84,7 @@ const Rgba kNone{0, 0, 0, 0};
 
 TEST_CASE("COLR v1: a linear and a radial gradient in glyph layers match the paint graph", "[text][color]") {
     check_against(draw_colr("A"), [](double fx, double fy) {
-        if (in_box(fx, fy, 300, 700))
-            return mix(kYellow, kGreen, std::hypot(fx - 500, fy - 500) / 300);
+        if (in_box(fx, fy, 300, 700)) return mix(kYellow, kGreen, std::hypot(fx - 500, fy - 500) / 300);
         if (in_box(fx, fy, 100, 900)) return mix(kRed, kBlue, (fx - 100) / 800);
         return kNone;
     });
@@ -196,7 +194,8 @@ TEST_CASE("CBDT and sbix emoji: drawn in colour, the font's bitmap averaged over
             const PremulPixel got = pm.pixel(x, y);
             if (acc[3] == 0 && got.a == 0) continue;
             total += (std::abs(got.r - acc[0]) + std::abs(got.g - acc[1]) + std::abs(got.b - acc[2]) +
-                      std::abs(got.a - acc[3])) / 4;
+                      std::abs(got.a - acc[3])) /
+                     4;
             ++count;
         }
     FT_Done_Face(face);

@@ -24,7 +24,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* kMixed = "Hello \U0001F44B world \u2713 \u65E5\u672C\u8A9E \u0395\u03BB\u03BB\u03B7\u03BD\u03B9\u03BA\u03AC";
+const char* kMixed =
+    "Hello \U0001F44B world \u2713 \u65E5\u672C\u8A9E \u0395\u03BB\u03BB\u03B7\u03BD\u03B9\u03BA\u03AC";
 const std::string kSystemDejaVu = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 const std::string kNotoEmoji = "/usr/share/fonts/truetype/noto/NotoColorEmoji.ttf";
 const std::string kNotoCjk = "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc";
@@ -102,10 +103,9 @@ std::vector<IRect> ink_groups(const Pixmap& pm) {
 // one per process. Not casteljau's memory, so not reported.
 extern "C" const char* __lsan_default_suppressions() { return "leak:libfontconfig.so\n"; }
 
-TEST_CASE("Fallback: the mixed line has no .notdef glyph and takes emoji and CJK from system fonts", "[text][fallback]") {
-    if (const std::string why = missing_fonts(); !why.empty()) {
-        CASTELJAU_SKIP(why);
-    }
+TEST_CASE("Fallback: the mixed line has no .notdef glyph and takes emoji and CJK from system fonts",
+          "[text][fallback]") {
+    if (const std::string why = missing_fonts(); !why.empty()) { CASTELJAU_SKIP(why); }
     const Font base = Font::load(text_test::kDejaVu);
     TextStyle st;
     st.size = 40;
@@ -138,15 +138,16 @@ TEST_CASE("Fallback: the mixed line has no .notdef glyph and takes emoji and CJK
 }
 
 TEST_CASE("Fallback: the language picks the regional forms of Han characters", "[text][fallback]") {
-    if (const std::string why = missing_fonts(); !why.empty()) {
-        CASTELJAU_SKIP(why);
-    }
+    if (const std::string why = missing_fonts(); !why.empty()) { CASTELJAU_SKIP(why); }
     const Font base = Font::load(text_test::kDejaVu);
     TextStyle st;
     st.size = 20;
     st.system_fonts = true;
-    for (const auto& [language, family] : std::vector<std::pair<std::string, std::string>>{
-             {"ja", "Noto Sans CJK JP"}, {"zh-cn", "Noto Sans CJK SC"}, {"zh-tw", "Noto Sans CJK TC"}, {"ko", "Noto Sans CJK KR"}}) {
+    for (const auto& [language, family] :
+         std::vector<std::pair<std::string, std::string>>{{"ja", "Noto Sans CJK JP"},
+                                                          {"zh-cn", "Noto Sans CJK SC"},
+                                                          {"zh-tw", "Noto Sans CJK TC"},
+                                                          {"ko", "Noto Sans CJK KR"}}) {
         st.language = language;
         const TextLayout layout = layout_text("\u76F4", base, st);  // a character with regional forms
         INFO(language);
@@ -158,9 +159,7 @@ TEST_CASE("Fallback: the language picks the regional forms of Han characters", "
 TEST_CASE("Fallback: the fallback face follows the base font's weight", "[text][fallback]") {
     const std::string bold = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
     const std::string cjk_bold = "/usr/share/fonts/opentype/noto/NotoSansCJK-Bold.ttc";
-    if (!fs::exists(bold) || !fs::exists(cjk_bold)) {
-        CASTELJAU_SKIP("no " << bold << " or " << cjk_bold);
-    }
+    if (!fs::exists(bold) || !fs::exists(cjk_bold)) { CASTELJAU_SKIP("no " << bold << " or " << cjk_bold); }
     TextStyle st;
     st.size = 20;
     st.system_fonts = true;
@@ -175,16 +174,14 @@ TEST_CASE("Fallback: the fallback face follows the base font's weight", "[text][
 }
 
 TEST_CASE("Fallback: each cluster's ink lies within 2 px of pango-view's", "[text][fallback]") {
-    if (const std::string why = missing_fonts(); !why.empty()) {
-        CASTELJAU_SKIP(why);
-    }
-    if (run("command -v pango-view >/dev/null 2>&1") != 0) {
-        CASTELJAU_SKIP("no pango-view (Debian pango1.0-tools)");
-    }
+    if (const std::string why = missing_fonts(); !why.empty()) { CASTELJAU_SKIP(why); }
+    if (run("command -v pango-view >/dev/null 2>&1") != 0) { CASTELJAU_SKIP("no pango-view (Debian pango1.0-tools)"); }
     const fs::path dir = temp_dir();
     const fs::path theirs = dir / "pango.png", ours = dir / "ours.png";
-    REQUIRE(run("pango-view --no-display --pixels --subpixel-positions --hinting=none --margin 10 --font 'DejaVu Sans 40px' "
-                "--text " + quote(kMixed) + " -o " + quote(theirs.string()) + " >/dev/null 2>&1") == 0);
+    REQUIRE(run("pango-view --no-display --pixels --subpixel-positions --hinting=none --margin 10 --font 'DejaVu Sans "
+                "40px' "
+                "--text " +
+                quote(kMixed) + " -o " + quote(theirs.string()) + " >/dev/null 2>&1") == 0);
     REQUIRE(run(quote(CASTELJAU_CLI_PATH) + " text " + quote(kMixed) + " --size 40 --padding 10 --font " +
                 quote(kSystemDejaVu) + " -o " + quote(ours.string())) == 0);
     const std::vector<IRect> a = ink_groups(read_png(theirs.string())), b = ink_groups(read_png(ours.string()));
@@ -212,8 +209,8 @@ TEST_CASE("casteljau text --no-system-fonts gives the same bytes whatever fonts 
         std::ofstream f(conf);
         f << "<?xml version=\"1.0\"?>\n<fontconfig></fontconfig>\n";
     }
-    const std::string cli = quote(CASTELJAU_CLI_PATH) + " text " + quote(kMixed) + " --size 30 --no-system-fonts --font " +
-                            quote(text_test::kDejaVu) + " -o ";
+    const std::string cli = quote(CASTELJAU_CLI_PATH) + " text " + quote(kMixed) +
+                            " --size 30 --no-system-fonts --font " + quote(text_test::kDejaVu) + " -o ";
     REQUIRE(run(cli + quote(normal.string())) == 0);
     // A process whose fontconfig knows no fonts at all.
     REQUIRE(run("FONTCONFIG_FILE=" + quote(conf.string()) + " " + cli + quote(bare.string())) == 0);
@@ -236,9 +233,10 @@ TEST_CASE("Line breaking follows UAX #14: CJK between characters, Thai between w
     // Thai (no spaces between words): breaks fall only between the words
     // ภาษา|ไทย|เป็น|ภาษา|ที่|สวยงาม.
     st.max_width = 60;
-    const TextLayout t = layout_text("\u0E20\u0E32\u0E29\u0E32\u0E44\u0E17\u0E22\u0E40\u0E1B\u0E47\u0E19\u0E20\u0E32\u0E29"
-                                     "\u0E32\u0E17\u0E35\u0E48\u0E2A\u0E27\u0E22\u0E07\u0E32\u0E21",
-                                     base, st);
+    const TextLayout t = layout_text(
+        "\u0E20\u0E32\u0E29\u0E32\u0E44\u0E17\u0E22\u0E40\u0E1B\u0E47\u0E19\u0E20\u0E32\u0E29"
+        "\u0E32\u0E17\u0E35\u0E48\u0E2A\u0E27\u0E22\u0E07\u0E32\u0E21",
+        base, st);
     CHECK(t.lines.size() > 1);
     for (std::size_t i = 1; i < t.lines.size(); ++i) {
         const std::size_t at = t.lines[i].text_begin;

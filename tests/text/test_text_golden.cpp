@@ -44,7 +44,8 @@ void golden_layout(const std::string& name, const TextLayout& layout, std::vecto
     Canvas canvas(ours);
     if (transform) canvas.set_transform(*transform);
     draw_text(canvas, layout, origin, black);
-    const Pixmap ref = reference_text_image(layout, ft, w, h, origin, Color::white(), black, 4, transform, kSupersample);
+    const Pixmap ref =
+        reference_text_image(layout, ft, w, h, origin, Color::white(), black, 4, transform, kSupersample);
     const DiffStats d = compare_pixmaps(ours, ref);
     INFO(name << " vs FreeType: max " << d.max << "/255 at (" << d.max_x << ", " << d.max_y << "), mean " << d.mean);
     CHECK(d.max <= kFtMax);
@@ -83,7 +84,8 @@ TEST_CASE("Golden: combining marks (DejaVu Sans 40 px)", "[text][golden]") {
     const Font f = Font::load(kDejaVu);
     FtRenderer ft(kDejaVu);
     // a + U+0302 + U+0309 (-> U+1EA9), x + U+0323 + U+0302, q + U+0303, e + U+0301 + U+0327.
-    golden_layout("marks", layout_text("a\xCC\x82\xCC\x89 x\xCC\xA3\xCC\x82 q\xCC\x83 e\xCC\x81\xCC\xA7", f, sized(40)), {&ft});
+    golden_layout("marks", layout_text("a\xCC\x82\xCC\x89 x\xCC\xA3\xCC\x82 q\xCC\x83 e\xCC\x81\xCC\xA7", f, sized(40)),
+                  {&ft});
 }
 
 TEST_CASE("Golden: right-to-left line (Noto Sans Arabic, Hebrew from DejaVu Sans, 32 px)", "[text][golden]") {
@@ -91,9 +93,10 @@ TEST_CASE("Golden: right-to-left line (Noto Sans Arabic, Hebrew from DejaVu Sans
     FtRenderer ft_ar(kNotoArabic), ft_dv(kDejaVu);
     const std::vector<const Font*> chain{&ar, &dv};
     // "as-salamu alaykum 2024" then "shalom": an RTL paragraph with a number and a Hebrew word.
-    const TextLayout l = layout_text("\xD8\xA7\xD9\x84\xD8\xB3\xD9\x84\xD8\xA7\xD9\x85 \xD8\xB9\xD9\x84\xD9\x8A\xD9\x83\xD9\x85 "
-                                     "2024 \xD7\xA9\xD7\x9C\xD7\x95\xD7\x9D",
-                                     chain, sized(32));
+    const TextLayout l = layout_text(
+        "\xD8\xA7\xD9\x84\xD8\xB3\xD9\x84\xD8\xA7\xD9\x85 \xD8\xB9\xD9\x84\xD9\x8A\xD9\x83\xD9\x85 "
+        "2024 \xD7\xA9\xD7\x9C\xD7\x95\xD7\x9D",
+        chain, sized(32));
     REQUIRE(l.lines.size() == 1);
     CHECK(l.lines[0].rtl);
     golden_layout("rtl", l, {&ft_ar, &ft_dv});
@@ -118,7 +121,8 @@ TEST_CASE("Golden: CFF outlines (Linux Libertine 28 px)", "[text][golden]") {
     const Font f = Font::load(kLibertine);
     REQUIRE(f.outline_format() == OutlineFormat::CFF);
     FtRenderer ft(kLibertine);
-    golden_layout("cff", layout_text("Quirky spud boys can jam after zapping five worthy Polysixes.", f, sized(28)), {&ft});
+    golden_layout("cff", layout_text("Quirky spud boys can jam after zapping five worthy Polysixes.", f, sized(28)),
+                  {&ft});
 }
 
 TEST_CASE("Golden: variable font weights 100, 400, 900 (Inter 28 px)", "[text][golden]") {
