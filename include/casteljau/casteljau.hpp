@@ -17,10 +17,14 @@
 //     wait behind a lock for the next Rasterizer; nothing to set;
 //   - per-thread scratch buffers of classify_topology (raster.hpp), kept until the thread ends;
 //   - the SIMD instruction set of the raster kernels, chosen from the CPU on first use;
-//   - PROJ and SQLite, opened once on first use (projections that are not built in; MBTiles) and
-//     kept open.
-// There is no process-wide font cache: each Font owns its FreeType and HarfBuzz objects, and glyph
-// masks are cached in GlyphCache objects the caller owns (text.hpp).
+//   - PROJ, SQLite and ICU, opened once on first use (projections that are not built in; MBTiles;
+//     line breaking of wrapped text) and kept open;
+//   - system font fallback (text.hpp, TextStyle::system_fonts): fontconfig's configuration, read
+//     when a text first needs a font its chain lacks, the sorted face lists of each query and the
+//     face chosen for each character cluster, kept behind a lock until the process ends; off with
+//     system_fonts = false.
+// Each Font owns its FreeType and HarfBuzz objects, and glyph masks are cached in GlyphCache
+// objects the caller owns (text.hpp).
 #pragma once
 
 #include "casteljau/arc.hpp"
