@@ -152,6 +152,8 @@ static void check_svg(void) {
     CHECK_ERROR(casteljau_svg_output_size(doc, 10, 0, 2, &ow, &oh), CASTELJAU_ERROR_INVALID_ARGUMENT, "zoom");
     CHECK_ERROR(casteljau_svg_output_size(doc, 0, 0, NAN, &ow, &oh), CASTELJAU_ERROR_INVALID_ARGUMENT, "zoom");
     CHECK_ERROR(casteljau_svg_output_size(doc, 0, 0, 1e3, &ow, &oh), CASTELJAU_ERROR_LIMIT, "");
+    casteljau_image_destroy(direct); /* a failing call hands back NULL in its place */
+    direct = NULL;
     CHECK_ERROR(casteljau_svg_render_image(doc, -1, 0, 0, white, &direct), CASTELJAU_ERROR_INVALID_ARGUMENT, "width");
     CHECK_ERROR(casteljau_svg_render(NULL, canvas), CASTELJAU_ERROR_INVALID_ARGUMENT, "svg is NULL");
     CHECK_ERROR(casteljau_svg_render(doc, NULL), CASTELJAU_ERROR_INVALID_ARGUMENT, "canvas is NULL");
@@ -286,6 +288,8 @@ static void check_map(void) {
     CHECK(nostyle == NULL);
     CHECK_ERROR(casteljau_map_style_load(in_scratch("no-such-style.json"), &nostyle), CASTELJAU_ERROR_IO,
                 "no-such-style");
+    casteljau_image_destroy(image); /* a failing call hands back NULL in its place */
+    image = NULL;
     CHECK_ERROR(casteljau_map_render_image(NULL, style, options, &image), CASTELJAU_ERROR_INVALID_ARGUMENT,
                 "map is NULL");
     CHECK_ERROR(casteljau_map_render_image(map, style, NULL, &image), CASTELJAU_ERROR_INVALID_ARGUMENT,
@@ -494,6 +498,8 @@ static void check_text(void) {
                 "layout is NULL");
     CHECK_ERROR(casteljau_text_layout_draw(layout, canvas, 0, 0, NULL), CASTELJAU_ERROR_INVALID_ARGUMENT,
                 "paint is NULL");
+    casteljau_image_destroy(image); /* a failing call hands back NULL in its place */
+    image = NULL;
     CHECK_ERROR(casteljau_text_layout_render_image(layout, ink, white, -1, &image), CASTELJAU_ERROR_INVALID_ARGUMENT,
                 "padding");
     CHECK_ERROR(casteljau_text_layout_size(NULL, &w, &h), CASTELJAU_ERROR_INVALID_ARGUMENT, "layout is NULL");
