@@ -1,0 +1,224 @@
+// Map stage: finding the nodes of the data's borders (src/map/border_nodes.hpp).
+//
+// One hash table of the distinct positions, each entry with the first pair of neighbours it was
+// seen with; a later occurrence with another pair makes it a node. Neighbours are entry indices,
+// so a pair compares as two integers.
+#include "map/border_nodes.hpp"
+
+#include <bit>
+#include <cmath>
+#include <limits>
+
+#include "casteljau/error.hpp"
+
+namespace casteljau::map_detail {
+
+namespace {
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+std::uint64_t mix(std::uint64_t h) {
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdull;
+    h ^= h >> 33;
+    h *= 0xc4ceb9fe1a85ec53ull;
+    h ^= h >> 33;
+    return h;
+}
+
+std::uint64_t hash_point(Point p) {
+    // + 0.0 turns -0.0 into +0.0, which compares equal to it.
+    return mix(std::bit_cast<std::uint64_t>(p.x + 0.0) ^ mix(std::bit_cast<std::uint64_t>(p.y + 0.0)));
+}
+
+// Open addressing with linear probing, the entries in the slots themselves (one cache miss per
+// lookup, which the callers prefetch ahead of time). Slot index = entry id.
+class PositionTable {
+public:
+    explicit PositionTable(std::size_t positions) : slots_(positions + positions / 3 + 64) {
+        if (slots_.size() >= kNone) throw Error(ErrorKind::Limit, "border nodes: too many positions");
+    }
+
+    std::size_t home(std::uint64_t hash) const {
+        return static_cast<std::size_t>(((hash >> 32) * slots_.size()) >> 32);  // slots_.size() < 2^32
+    }
+    void prefetch(std::uint64_t hash) const { __builtin_prefetch(&slots_[home(hash)]); }
+    void prefetch_entry(std::uint32_t e) const { __builtin_prefetch(&slots_[e]); }
+
+    // The entry of position p (hash h), added when it is new.
+    std::uint32_t find_or_add(Point p, std::uint64_t h) {
+        for (std::size_t s = home(h);; s = s + 1 == slots_.size() ? 0 : s + 1) {
+            Slot& x = slots_[s];
+            if (!x.used) {
+                x = Slot{p, kNone, kNone, 1, 0};
+                return static_cast<std::uint32_t>(s);
+            }
+            if (x.p == p) return static_cast<std::uint32_t>(s);
+        }
+    }
+
+    // The entry of position p (hash h), or kNone.
+    std::uint32_t find(Point p, std::uint64_t h) const {
+        for (std::size_t s = home(h);; s = s + 1 == slots_.size() ? 0 : s + 1) {
+            const Slot& x = slots_[s];
+            if (!x.used) return kNone;
+            if (x.p == p) return static_cast<std::uint32_t>(s);
+        }
+    }
+
+    // Records that entry e occurs between entries u and v.
+    void neighbours(std::uint32_t e, std::uint32_t u, std::uint32_t v) {
+        Slot& x = slots_[e];
+        if (u > v) std::swap(u, v);
+        if (x.a == kNone) {
+            x.a = u;
+            x.b = v;
+        } else if (x.a != u || x.b != v) {
+            x.node = 1;
+        }
+    }
+
+    void make_node(std::uint32_t e) { slots_[e].node = 1; }
+    bool is_node(std::uint32_t e) const { return slots_[e].node != 0; }
+
+private:
+    struct Slot {
+        Point p;
+        std::uint32_t a = kNone, b = kNone;  // the first pair of neighbours, a <= b (kNone: not seen yet)
+        std::uint8_t used = 0, node = 0;
+    };
+    std::vector<Slot> slots_;
+};
+
+constexpr std::size_t kAhead = 8;  // lookups prefetched ahead
+
+// Adds one ring or line (positions `pts`, the first of which has index `base` in the result) to
+// the table, and its entries to ids (kNone for the positions skipped).
+void add_line(std::span<const Point> pts, bool closed, std::size_t base, PositionTable& table,
+              std::vector<std::uint32_t>& ids, std::vector<std::uint32_t>& distinct, std::vector<std::uint64_t>& hashes,
+              std::vector<std::uint32_t>& ring) {
+    distinct_positions(pts, closed, distinct);
+    const std::size_t m = distinct.size();
+    hashes.resize(m);
+    for (std::size_t k = 0; k < m; ++k) hashes[k] = hash_point(pts[distinct[k]]);
+    ring.resize(m);
+    for (std::size_t k = 0; k < m; ++k) {
+        if (k + kAhead < m) table.prefetch(hashes[k + kAhead]);
+        ring[k] = table.find_or_add(pts[distinct[k]], hashes[k]);
+        ids[base + distinct[k]] = ring[k];
+        // The previous position's neighbours are known now, and its entry is still in cache.
+        if (m >= 3 && k >= 2) table.neighbours(ring[k - 1], ring[k - 2], ring[k]);
+    }
+    if (m < 3) {
+        for (std::uint32_t e : ring) table.make_node(e);
+        return;
+    }
+    if (closed) {
+        table.neighbours(ring[m - 1], ring[m - 2], ring[0]);
+        table.neighbours(ring[0], ring[m - 1], ring[1]);
+    } else {
+        table.make_node(ring[0]);
+        table.make_node(ring[m - 1]);
+    }
+    for (std::size_t k = 0; k + 1 < m + (closed ? 1 : 0); ++k) {
+        const std::size_t next = (k + 1) % m;
+        if (std::fabs(pts[distinct[next]].x - pts[distinct[k]].x) > 180) {
+            table.make_node(ring[k]);
+            table.make_node(ring[next]);
+        }
+    }
+}
+
+}  // namespace
+
+void distinct_positions(std::span<const Point> line, bool closed, std::vector<std::uint32_t>& out) {
+    out.clear();
+    for (std::size_t i = 0; i < line.size(); ++i)
+        if (out.empty() || !(line[i] == line[out.back()])) out.push_back(static_cast<std::uint32_t>(i));
+    if (closed)
+        while (out.size() > 1 && line[out.back()] == line[out.front()]) out.pop_back();
+}
+
+namespace {
+
+// Calls each(line, closed, base) for every ring (closed) and line of the data; base is the index
+// of its first position in BorderNodes::node.
+template <class Each>
+void for_each_line(const MapData& data, Each&& each) {
+    std::size_t base = 0;
+    for (const Feature& f : data.features)
+        for (const Geometry& g : f.geometries) {
+            if (g.kind != GeometryKind::Points) {
+                std::uint32_t start = 0;
+                const std::span<const Point> pts(g.points);
+                for (std::uint32_t end : g.ring_ends) {
+                    each(pts.subspan(start, end - start), g.kind == GeometryKind::Polygons, base + start);
+                    start = end;
+                }
+            }
+            base += g.points.size();
+        }
+}
+
+// Any data: the table of every position and its neighbours.
+void nodes_from_positions(const MapData& data, BorderNodes& r) {
+    const std::size_t total = r.node.size();
+    PositionTable table(total);
+    std::vector<std::uint32_t> ids(total, kNone), distinct, ring;
+    std::vector<std::uint64_t> hashes;
+    for_each_line(data, [&](std::span<const Point> pts, bool closed, std::size_t base) {
+        add_line(pts, closed, base, table, ids, distinct, hashes, ring);
+    });
+    for (std::size_t i = 0; i < total; ++i) {
+        if (i + kAhead < total && ids[i + kAhead] != kNone) table.prefetch_entry(ids[i + kAhead]);
+        if (ids[i] != kNone && table.is_node(ids[i])) r.node[i] = 1;
+    }
+}
+
+// TopoJSON: every ring and line is a chain of arcs, and a border two rings share is one arc, so
+// the nodes are the ends of the arcs (a table of those only), and what every ring or line has
+// whatever its neighbours.
+void nodes_from_arcs(const MapData& data, BorderNodes& r) {
+    PositionTable ends(2 * data.used_arcs.size());
+    for (std::uint32_t a : data.used_arcs) {
+        const std::uint32_t first = a == 0 ? 0 : data.arc_ends[a - 1], last = data.arc_ends[a];
+        if (first == last) continue;
+        for (Point p : {data.arc_points[first], data.arc_points[last - 1]}) ends.make_node(ends.find_or_add(p, hash_point(p)));
+    }
+    std::vector<std::uint32_t> distinct;
+    std::vector<std::uint64_t> hashes;
+    for_each_line(data, [&](std::span<const Point> pts, bool closed, std::size_t base) {
+        distinct_positions(pts, closed, distinct);
+        const std::size_t m = distinct.size();
+        hashes.resize(m);
+        for (std::size_t k = 0; k < m; ++k) hashes[k] = hash_point(pts[distinct[k]]);
+        for (std::size_t k = 0; k < m; ++k) {
+            if (k + kAhead < m) ends.prefetch(hashes[k + kAhead]);
+            const Point p = pts[distinct[k]];
+            const Point q = pts[distinct[(k + 1) % m]];
+            const bool end = !closed && (k == 0 || k + 1 == m);
+            if (m < 3 || end || ends.find(p, hashes[k]) != kNone) r.node[base + distinct[k]] = 1;
+            if ((closed || k + 1 < m) && std::fabs(q.x - p.x) > 180)
+                r.node[base + distinct[k]] = r.node[base + distinct[(k + 1) % m]] = 1;
+        }
+    });
+}
+
+}  // namespace
+
+BorderNodes find_border_nodes(const MapData& data) {
+    BorderNodes r;
+    r.feature_start.reserve(data.features.size() + 1);
+    std::size_t total = 0;
+    for (const Feature& f : data.features) {
+        r.feature_start.push_back(total);
+        for (const Geometry& g : f.geometries) total += g.points.size();
+    }
+    r.feature_start.push_back(total);
+    r.node.assign(total, 0);
+    if (!data.arc_ends.empty()) nodes_from_arcs(data, r);
+    else nodes_from_positions(data, r);
+    return r;
+}
+
+}  // namespace casteljau::map_detail
