@@ -37,6 +37,7 @@ struct MapCliStyle {
     std::string fill = "black", stroke, join = "round", cap = "round", background = "transparent";
     std::string fill_by, ramp, style_file, projection = "equirectangular", layer;
     double stroke_width = 1, point_radius = 3, opacity = 1, tolerance = kDefaultTolerance;
+    double simplify = kDefaultMapSimplify;
     bool separate = false, no_exact = false;
 };
 void add_map_style_options(CLI::App* cmd, MapCliStyle& o);

@@ -116,6 +116,10 @@ void add_map_style_options(CLI::App* cmd, MapCliStyle& o) {
     cmd->add_option("--tolerance", o.tolerance, "Flattening tolerance in pixels")
         ->check(CLI::Range(1e-4, 10.0))
         ->capture_default_str();
+    cmd->add_option("--simplify", o.simplify,
+                    "Pixels the geometry may move when reduced to the output's resolution (0: every position)")
+        ->check(CLI::Range(0.0, 100.0))
+        ->capture_default_str();
 }
 
 MapStyle build_map_style(const MapCliStyle& o) {
@@ -181,6 +185,7 @@ void register_map(CLI::App& app) {
         mo.padding = o->padding;
         mo.seamless = !o->style.separate;
         mo.tolerance = o->style.tolerance;
+        mo.simplify = o->style.simplify;
         mo.exact_overlaps = !o->style.no_exact;
         if (!o->bbox.empty()) mo.bbox = parse_bbox(o->bbox);
         const MapStyle style = build_map_style(o->style);

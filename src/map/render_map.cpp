@@ -16,13 +16,13 @@
 #include "casteljau/map.hpp"
 #include "casteljau/seamless.hpp"
 #include "core/for_each_index.hpp"
+#include "map/simplify_map.hpp"
 
 namespace casteljau {
 
 namespace {
 
-// Densify step for projections that bend straight lon/lat segments (degrees).
-constexpr double kDensifyDegrees = 1.0;
+using map_detail::kDensifyDegrees;
 
 // Visits the projected pieces of one geometry: polygon rings (oriented: exteriors positive signed
 // area in lon/lat, holes negative), lines, and points, in projected coordinates.
@@ -384,13 +384,55 @@ void start_compositor(std::optional<SeamlessCompositor>& sc, const IRect& region
         sc->reset(region);
 }
 
+// How far outside its positions' bounds a feature may draw: the longest reach of a stroke (a miter
+// or a square cap) and a point's disk, plus a pixel of anti-aliasing.
+double draw_reach(const MapStyle& style) {
+    double reach = 0;
+    for (const MapLayerStyle& l : style.layers)
+        reach = std::max(reach, 0.5 * l.stroke_width * std::max({style.miter_limit, std::sqrt(2.0), 1.0}));
+    return reach + std::max(style.point_radius, 0.0) + 1;
+}
+
+// Whether projected bounds `b` reach the frame's image, `reach` pixels around it.
+bool reaches_image(const Rect& b, const MapFrame& frame, double reach) {
+    if (!(b.x0 <= b.x1) || !(b.y0 <= b.y1)) return false;  // nothing projected
+    if (!std::isfinite(b.x0) || !std::isfinite(b.x1) || !std::isfinite(b.y0) || !std::isfinite(b.y1)) return true;
+    Rect r{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (Point c : {Point{b.x0, b.y0}, Point{b.x1, b.y0}, Point{b.x0, b.y1}, Point{b.x1, b.y1}}) {
+        const Point p = frame.to_pixel.apply(c);
+        r = Rect{std::min(r.x0, p.x), std::min(r.y0, p.y), std::max(r.x1, p.x), std::max(r.y1, p.y)};
+    }
+    return r.x1 >= -reach && r.y1 >= -reach && r.x0 <= frame.width + reach && r.y0 <= frame.height + reach;
+}
+
 // render_map onto `target`; `cleared`: the target is known to be transparent already (a new
-// Pixmap), so a transparent background need not be written.
-void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& frame, const MapStyle& style,
-              const MapOptions& opts, Pixmap& target, bool cleared) {
+// Pixmap), so a transparent background need not be written. `simplified`: the geometry to draw
+// in place of the data's (nullptr: the data's, simplified here when opts.simplify asks).
+void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, const MapProjection& proj,
+              const MapFrame& frame, const MapStyle& style, const MapOptions& opts, Pixmap& target, bool cleared) {
     if (target.width() != frame.width || target.height() != frame.height)
         throw Error(ErrorKind::InvalidArgument, "render_map: the pixmap does not have the frame's size");
+    if (!(opts.simplify >= 0) || !std::isfinite(opts.simplify))
+        throw Error(ErrorKind::InvalidArgument, "simplify must be a finite number of pixels >= 0");
     const int threads = map_threads(opts.threads);
+    // The geometry at the image's resolution, unless the caller brings it (or asks for none), made
+    // when the first layer draws something.
+    std::optional<map_detail::SimplifiedMap> own;
+    auto simplify_once = [&] {
+        if (simplified || !(opts.simplify > 0)) return;
+        own = map_detail::simplify_map(data, map_detail::find_border_nodes(data), proj, frame.to_pixel, opts.simplify,
+                                       threads);
+        simplified = &*own;
+    };
+    auto geometries = [&](std::size_t i) -> const std::vector<Geometry>& {
+        return simplified ? simplified->features[i] : data.features[i].geometries;
+    };
+    // Features that cannot reach the image are not drawn (their bounds are known only with the
+    // simplified copy; a projection that bends segments may draw outside its positions' bounds).
+    const double reach = draw_reach(style);
+    auto visible = [&](std::size_t i) {
+        return !simplified || !proj.preserves_graticule_lines() || reaches_image(simplified->bounds[i], frame, reach);
+    };
     FillOptions fo;
     fo.rule = opts.fill_rule;
     fo.tolerance = opts.tolerance;
@@ -428,21 +470,21 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
     std::vector<std::optional<SeamlessCompositor>> band_compositors(
         static_cast<std::size_t>(threads));  // one band per worker
 
-    auto build = [&](int w, const Feature& f, PathVisitor& v) {
+    auto build = [&](int w, std::size_t feature, PathVisitor& v) {
         v.m = frame.to_pixel;
         v.point_radius = style.point_radius;
         std::size_t n = 0, rings = 0;
-        for (const Geometry& g : f.geometries) {
+        for (const Geometry& g : geometries(feature)) {
             n += g.points.size();
             rings += g.ring_ends.size();
         }
         // A closed ring is its positions plus a close (the projector may add points: a hint).
         if (n > 0) v.fill.reserve(n + rings, n + 2 * rings);
-        for (const Geometry& g : f.geometries) projectors[static_cast<std::size_t>(w)]->geometry(g, v);
+        for (const Geometry& g : geometries(feature)) projectors[static_cast<std::size_t>(w)]->geometry(g, v);
     };
-    auto positions_of = [](const Feature& f) {
+    auto positions_of = [&](std::size_t feature) {
         std::size_t n = 0;
-        for (const Geometry& g : f.geometries) n += g.points.size();
+        for (const Geometry& g : geometries(feature)) n += g.points.size();
         return n;
     };
     // Calls make(worker, feature, out) for the features in `order`, a chunk at a time built in
@@ -452,25 +494,27 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
         for (std::size_t begin = 0; begin < order.size();) {
             std::size_t end = begin, positions = 0;
             while (end < order.size() && (end == begin || positions < kChunkPositions))
-                positions += positions_of(data.features[order[end++]]);
+                positions += positions_of(order[end++]);
             chunk.assign(end - begin, std::nullopt);
-            parallel::for_each_index(threads, end - begin,
-                                     [&](int w, std::size_t i) { make(w, data.features[order[begin + i]], chunk[i]); });
+            parallel::for_each_index(threads, end - begin, [&](int w, std::size_t i) {
+                make(w, order[begin + i], chunk[i]);
+            });
             draw(chunk);
             begin = end;
         }
     };
 
     for (const MapLayerStyle& layer : style.layers) {
+        if (layer.fill || ((layer.stroke || layer.fill) && layer.stroke_width > 0)) simplify_once();
         std::vector<std::size_t> order;
         for (std::size_t i = 0; i < data.features.size(); ++i)
-            if (layer.filter.matches(data.features[i])) order.push_back(i);
+            if (layer.filter.matches(data.features[i]) && visible(i)) order.push_back(i);
         // Fills: seamless (SeamlessCompositor, last feature first so that later features win) or source-over in order.
-        auto make_fill = [&](int w, const Feature& f, std::optional<Drawable>& out) {
-            const std::optional<Color> c = layer.fill_for(f);
+        auto make_fill = [&](int w, std::size_t feature, std::optional<Drawable>& out) {
+            const std::optional<Color> c = layer.fill_for(data.features[feature]);
             if (!c) return;
             PathVisitor v;
-            build(w, f, v);
+            build(w, feature, v);
             if (v.fill.empty()) return;
             out = Drawable{std::move(v.fill), *c, Path{}};
             out->box = out->path.control_bounds();
@@ -489,7 +533,7 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
         if (layer.fill && opts.seamless) {
             std::reverse(order.begin(), order.end());
             std::size_t positions = 0;
-            for (std::size_t i : order) positions += positions_of(data.features[i]);
+            for (std::size_t i : order) positions += positions_of(i);
             // A layer that fits in one chunk is composited band by band, each band in a compositor
             // of its size that the worker reuses (5 bytes per pixel of one band per thread, not of
             // the image). Several chunks add up in one compositor of the whole image instead,
@@ -566,9 +610,9 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
             outline.clear();
             borders.clear();  // bounds its memory; a border split by a flush is drawn twice
         };
-        auto make_outline = [&](int w, const Feature& f, std::optional<Drawable>& out) {
+        auto make_outline = [&](int w, std::size_t feature, std::optional<Drawable>& out) {
             PathVisitor v;
-            build(w, f, v);
+            build(w, feature, v);
             Path o;
             // Lines are always stroked; polygon outlines (point disks too) take the stroke colour.
             if (!v.lines.empty()) o = stroke(v.lines, ss, Affine{}, opts.tolerance);
@@ -602,13 +646,22 @@ void draw_map(const MapData& data, const MapProjection& proj, const MapFrame& fr
 
 void render_map(const MapData& data, const MapProjection& proj, const MapFrame& frame, const MapStyle& style,
                 const MapOptions& opts, Pixmap& target) {
-    draw_map(data, proj, frame, style, opts, target, false);
+    draw_map(data, nullptr, proj, frame, style, opts, target, false);
 }
+
+namespace map_detail {
+
+void render_simplified_map(const MapData& data, const SimplifiedMap& simplified, const MapProjection& proj,
+                           const MapFrame& frame, const MapStyle& style, const MapOptions& opts, Pixmap& target) {
+    draw_map(data, &simplified, proj, frame, style, opts, target, false);
+}
+
+}  // namespace map_detail
 
 Pixmap render_map(const MapData& data, const MapProjection& proj, const MapStyle& style, const MapOptions& opts) {
     const MapFrame fr = fit_map(data, proj, opts);
     Pixmap pm(fr.width, fr.height);
-    draw_map(data, proj, fr, style, opts, pm, true);
+    draw_map(data, nullptr, proj, fr, style, opts, pm, true);
     return pm;
 }
 

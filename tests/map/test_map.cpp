@@ -183,7 +183,11 @@ TEST_CASE("Antimeridian: Fiji, Russia and Antarctica against the exact reference
         for (const Feature& f : world.features)
             if (f.property("name") && f.property("name")->text == name) one.features.push_back(f);
         REQUIRE(one.features.size() == 1);
-        const Pixmap pm = render_map(one, MapProjection{}, MapStyle{}, world_options(2048, 1024, false));
+        // Every position drawn: this checks the cut and the rasterizer against the exact area; the
+        // simplification's bound is checked in test_map_simplify.cpp.
+        MapOptions o = world_options(2048, 1024, false);
+        o.simplify = 0;
+        const Pixmap pm = render_map(one, MapProjection{}, MapStyle{}, o);
         const ref::CoverageGrid g =
             ref::slab_area(test::reference_contours(one.features[0], fr), FillRule::EvenOdd, {0, 0, 2048, 1024});
         double sum_err = 0, max_err = 0;
@@ -219,9 +223,11 @@ TEST_CASE("Map --separate: world countries at 2048x1024 within 0.5/255 of the ex
                 a = a + g.at(x, y) * (1 - a);
             }
     // Natural Earth polygons are valid, so plain accumulation (exact_overlaps off) is exact too.
+    // Every position drawn (the simplification's bound is checked in test_map_simplify.cpp).
     for (bool exact : {true, false}) {
         MapOptions o = world_options(W, H, false);
         o.exact_overlaps = exact;
+        o.simplify = 0;
         const Pixmap pm = render_map(world, MapProjection{}, MapStyle{}, o);
         double sum = 0, max_err = 0;
         for (int y = 0; y < H; ++y)

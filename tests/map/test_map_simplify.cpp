@@ -1,5 +1,6 @@
-// Geometry at the output's resolution: the run simplifier's bound on random polylines, its
-// degenerate inputs, and the border nodes that shared borders are cut at.
+// Geometry at the output's resolution (MapOptions::simplify): the run simplifier's bound on random
+// polylines, its degenerate inputs, border nodes, shared borders simplified identically in both
+// rings (GeoJSON and TopoJSON), seams, and coverage against the original on the shipped world.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -10,9 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "casteljau/geojson.hpp"
+#include "casteljau/error.hpp"
+#include "casteljau/map.hpp"
 #include "map/border_nodes.hpp"
+#include "map/simplify_map.hpp"
 #include "map/simplify_polyline.hpp"
+#include "map_test_util.hpp"
 
 using namespace casteljau;
 using casteljau::map_detail::RunSimplifier;
@@ -163,3 +167,119 @@ TEST_CASE("Border nodes: where a shared border starts and ends, line ends, antim
     CHECK(ln.node == std::vector<std::uint8_t>{1, 0, 1, 1, 0, 1});
 }
 
+namespace {
+
+MapOptions world_options(int w, int h) {
+    MapOptions o;
+    o.width = w;
+    o.height = h;
+    o.bbox = Rect{-180, -90, 180, 90};
+    return o;
+}
+
+// The positions of feature f's first ring after simplification, less its closing repeat.
+std::vector<Point> first_ring(const map_detail::SimplifiedMap& sm, std::size_t f) {
+    const Geometry& g = sm.features[f].at(0);
+    return std::vector<Point>(g.points.begin(), g.points.begin() + g.ring_ends.at(0) - 1);
+}
+
+// The positions of `ring` on the border near longitude 0 (two features' common edge), top to bottom.
+std::vector<Point> on_border(const std::vector<Point>& ring) {
+    std::vector<Point> out;
+    for (Point p : ring)
+        if (std::fabs(p.x) < 1) out.push_back(p);
+    std::sort(out.begin(), out.end(), [](Point a, Point b) { return a.y > b.y; });
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("Map simplify: non-finite positions are rejected before, bad tolerances at the call", "[map][simplify]") {
+    CHECK_THROWS_AS(read_geojson(R"({"type":"LineString","coordinates":[[0,0],[1e999,0]]})"), Error);
+    const MapData d = read_geojson(R"({"type":"LineString","coordinates":[[0,0],[10,5]]})");
+    for (double bad : {-1.0, double(NAN), double(INFINITY)}) {
+        MapOptions o = world_options(64, 32);
+        o.simplify = bad;
+        CHECK_THROWS_AS(render_map(d, MapProjection{}, MapStyle{}, o), Error);
+    }
+}
+
+TEST_CASE("Map simplify: a dense border shared by two features keeps the same positions in both", "[map][simplify]") {
+    const MapData d = read_geojson(two_neighbours(5000, 0.02));
+    const MapData topo = read_topojson(R"({"type":"Topology","objects":{"o":{"type":"GeometryCollection","geometries":[
+        {"type":"Polygon","arcs":[[0,1]]},{"type":"Polygon","arcs":[[2,-1]]}]}},"arcs":[
+        [[0,40],[0.01,30],[-0.02,20],[0.015,10],[-0.01,0],[0.02,-10],[-0.005,-20],[0.01,-30],[0,-40]],
+        [[0,-40],[-40,-40],[-40,40],[0,40]],
+        [[0,40],[40,40],[40,-40],[0,-40]]]})");
+    for (int w : {64, 256, 4096}) {
+        const Affine to_pixel{w / 360.0, 0, 0, -w / 360.0, w / 2.0, w / 4.0};
+        for (const MapData* data : {&d, &topo}) {
+            const map_detail::SimplifiedMap sm =
+                map_detail::simplify_map(*data, map_detail::find_border_nodes(*data), MapProjection{}, to_pixel, 1.0 / 64, 2);
+            const std::vector<Point> a = on_border(first_ring(sm, 0)), b = on_border(first_ring(sm, 1));
+            INFO("width " << w << (data == &d ? " GeoJSON" : " TopoJSON"));
+            CHECK(a == b);
+            CHECK(a.size() >= 2);
+            if (data == &d && w == 64) CHECK(a.size() < 1000);  // at 64 px the 5000 positions mostly go
+        }
+    }
+}
+
+TEST_CASE("Seamless: two features sharing a long dense border stay seamless when simplified", "[map][seamless][simplify]") {
+    // 20,000 positions along 80 degrees: at 200 px about a thousand per pixel of border, which the
+    // simplification reduces; the border runs at a fractional pixel position.
+    const MapData d = read_geojson(two_neighbours(20000, 0.003));
+    MapOptions o = world_options(200, 100);
+    o.bbox = Rect{-60.123, -50, 59.877, 50};
+    MapStyle st;
+    st.layers[0].fill = Color::rgba(20, 40, 200);
+    for (double simplify : {0.0, 1.0 / 64, 0.25}) {
+        o.simplify = simplify;
+        const Pixmap pm = render_map(d, MapProjection{}, st, o);
+        const MapFrame fr = fit_map(d, MapProjection{}, o);
+        const Point top = fr.to_pixel.apply({0, 38}), bottom = fr.to_pixel.apply({0, -38});
+        int gaps = 0;
+        for (int y = static_cast<int>(top.y) + 1; y < static_cast<int>(bottom.y); ++y)
+            for (int x = static_cast<int>(top.x) - 3; x <= static_cast<int>(top.x) + 3; ++x) gaps += pm.pixel(x, y).a != 255;
+        INFO("simplify " << simplify);
+        CHECK(gaps == 0);
+    }
+}
+
+TEST_CASE("Map simplify: the world's coverage within 0.2/255 on average and 8/255 at most of the original",
+          "[map][simplify][accuracy]") {
+    // The original drawn with simplify 0 is the reference (the shipped world has few positions per
+    // pixel, so no fill runs out of its exact-work budget). The frame is moved by a fraction of a
+    // pixel so that the -180 meridian does not lie on a pixel boundary (see bench/map_accuracy.cpp).
+    const MapData world = test::load_world();
+    for (int w : {256, 4096}) {
+        MapOptions o = world_options(w, w / 2);
+        MapFrame fr = fit_map(world, MapProjection{}, o);
+        fr.to_pixel = Affine{1, 0, 0, 1, 0.37, 0.29} * fr.to_pixel;
+        for (bool stroke : {false, true}) {
+            MapStyle st;
+            if (stroke) {
+                st.layers[0].fill.reset();
+                st.layers[0].stroke = Color::black();
+                st.layers[0].stroke_width = 0.8;
+            }
+            Pixmap ref(fr.width, fr.height), out(fr.width, fr.height);
+            o.simplify = 0;
+            render_map(world, MapProjection{}, fr, st, o, ref);
+            o.simplify = kDefaultMapSimplify;
+            render_map(world, MapProjection{}, fr, st, o, out);
+            double sum = 0;
+            int worst = 0;
+            for (int y = 0; y < fr.height; ++y)
+                for (int x = 0; x < fr.width; ++x) {
+                    const int e = std::abs(int(ref.pixel(x, y).a) - int(out.pixel(x, y).a));
+                    sum += e;
+                    worst = std::max(worst, e);
+                }
+            const double mean = sum / (double(fr.width) * fr.height);
+            INFO(w << " px, " << (stroke ? "stroke" : "fill") << ": mean " << mean << "/255, max " << worst << "/255");
+            CHECK(mean <= 0.2);
+            CHECK(worst <= 8);
+        }
+    }
+}

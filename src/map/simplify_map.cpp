@@ -1,0 +1,194 @@
+// Map stage: simplifying a MapData for one output resolution (src/map/simplify_map.hpp).
+#include "map/simplify_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <span>
+
+#include "map/simplify_polyline.hpp"
+#include "core/for_each_index.hpp"
+
+namespace casteljau::map_detail {
+
+namespace {
+
+bool less(Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+
+// One worker's projection and scratch buffers.
+class LineSimplifier {
+public:
+    LineSimplifier(const MapProjection& proj, const Affine& to_pixel, double tolerance)
+        : proj_(proj.clone()), scale_{to_pixel.a, to_pixel.b, to_pixel.c, to_pixel.d, 0, 0}, tolerance_(tolerance),
+          max_degrees_(proj_.preserves_graticule_lines() ? INFINITY : kDensifyDegrees) {}
+
+    // Appends to `out` the positions of the ring or line `pts` that stay (a ring closed again by
+    // its first position); `node` holds the node flags of pts. Widens `bounds` by the projected
+    // positions; returns true when a step crosses the antimeridian.
+    bool simplify(std::span<const Point> pts, std::span<const std::uint8_t> node, bool closed, std::vector<Point>& out,
+                  Rect& bounds) {
+        distinct_positions(pts, closed, distinct_);
+        const std::size_t m = distinct_.size();
+        lonlat_.resize(m);
+        pixel_.resize(m);
+        locked_.assign(m, 0);
+        unprojected_.assign(m, 0);
+        keep_.assign(m, 0);
+        bool crosses = false;
+        for (std::size_t k = 0; k < m; ++k) {
+            const Point p = pts[distinct_[k]];
+            lonlat_[k] = p;
+            Point q;
+            if (proj_.project(p, q)) {
+                pixel_[k] = scale_.apply(q);
+                bounds = Rect{std::min(bounds.x0, q.x), std::min(bounds.y0, q.y), std::max(bounds.x1, q.x),
+                              std::max(bounds.y1, q.y)};
+            } else {
+                locked_[k] = unprojected_[k] = 1;  // dropped by the renderer: its runs are kept whole
+            }
+            locked_[k] |= node[distinct_[k]];
+            if (k > 0 && std::fabs(p.x - lonlat_[k - 1].x) > 180) crosses = true;
+        }
+        if (closed && m > 1 && std::fabs(lonlat_[0].x - lonlat_[m - 1].x) > 180) crosses = true;
+        if (m < 3) keep_.assign(m, 1);
+        else if (closed) simplify_ring();
+        else simplify_open();
+        for (std::size_t k = 0; k < m; ++k)
+            if (keep_[k]) out.push_back(lonlat_[k]);
+        if (closed && m > 0) out.push_back(lonlat_[0]);
+        return crosses;
+    }
+
+    // Widens `bounds` by the projected points.
+    void bound_points(std::span<const Point> pts, Rect& bounds) const {
+        Point q;
+        for (Point p : pts)
+            if (proj_.project(p, q))
+                bounds = Rect{std::min(bounds.x0, q.x), std::min(bounds.y0, q.y), std::max(bounds.x1, q.x),
+                              std::max(bounds.y1, q.y)};
+    }
+
+private:
+    void simplify_ring() {
+        const std::size_t m = lonlat_.size();
+        std::size_t first = m;
+        for (std::size_t k = 0; k < m && first == m; ++k)
+            if (locked_[k]) first = k;
+        if (first == m) {
+            // No node: the ring is one closed run from its least position (the same start in
+            // every ring that holds the same loop).
+            first = 0;
+            for (std::size_t k = 1; k < m; ++k)
+                if (less(lonlat_[k], lonlat_[first])) first = k;
+            run(first, first + m);
+            return;
+        }
+        // Runs from each node to the next, round the ring.
+        const std::size_t stop = first + m;
+        for (std::size_t k = first + 1, from = first; k <= stop; ++k)
+            if (locked_[k % m]) {
+                run(from, k);
+                from = k;
+            }
+    }
+
+    void simplify_open() {
+        std::size_t first = 0;
+        for (std::size_t k = 1; k < lonlat_.size(); ++k)
+            if (locked_[k]) {
+                run(first, k);
+                first = k;
+            }
+    }
+
+    // Simplifies the run of ring positions first .. last (indices taken modulo the size), in its
+    // canonical direction.
+    void run(std::size_t first, std::size_t last) {
+        const std::size_t m = lonlat_.size();
+        const std::size_t n = last - first + 1;
+        auto at = [&](std::size_t i, bool reversed) { return (reversed ? last - i : first + i) % m; };
+        if (unprojected_[first % m] || unprojected_[last % m]) {
+            for (std::size_t i = first; i <= last; ++i) keep_[i % m] = 1;
+            return;
+        }
+        const Point a = lonlat_[first % m], b = lonlat_[last % m];
+        bool reversed = less(b, a);
+        if (a == b && n > 2) reversed = less(lonlat_[at(n - 2, false)], lonlat_[at(1, false)]);
+        run_pixel_.resize(n);
+        run_lonlat_.resize(n);
+        run_keep_.assign(n, 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            run_pixel_[i] = pixel_[at(i, reversed)];
+            run_lonlat_[i] = lonlat_[at(i, reversed)];
+        }
+        // A step of more than 180 degrees of longitude would be read as crossing the antimeridian;
+        // a projection that bends lon/lat steps draws a step longer than kDensifyDegrees as a curve.
+        auto too_long = [&](std::size_t i, std::size_t j) {
+            const double dx = std::fabs(run_lonlat_[j].x - run_lonlat_[i].x);
+            return dx > 180 || dx > max_degrees_ || std::fabs(run_lonlat_[j].y - run_lonlat_[i].y) > max_degrees_;
+        };
+        runs_.simplify(run_pixel_, tolerance_, run_keep_, too_long);
+        for (std::size_t i = 0; i < n; ++i)
+            if (run_keep_[i]) keep_[at(i, reversed)] = 1;
+    }
+
+    MapProjection proj_;
+    Affine scale_;  // to_pixel without its translation: the same distances, the same choices in every translated frame
+    double tolerance_, max_degrees_;
+    RunSimplifier runs_;
+    std::vector<std::uint32_t> distinct_;
+    std::vector<Point> lonlat_, pixel_, run_lonlat_, run_pixel_;
+    std::vector<std::uint8_t> locked_, unprojected_, keep_, run_keep_;
+};
+
+Geometry simplify_geometry(const Geometry& g, std::span<const std::uint8_t> node, LineSimplifier& ls, Rect& bounds,
+                           bool& crosses) {
+    if (g.kind == GeometryKind::Points) {
+        ls.bound_points(g.points, bounds);
+        return g;
+    }
+    Geometry out;
+    out.kind = g.kind;
+    out.polygon_ends = g.polygon_ends;
+    out.ring_ends.reserve(g.ring_ends.size());
+    std::uint32_t start = 0;
+    const std::span<const Point> pts(g.points);
+    for (std::uint32_t end : g.ring_ends) {
+        crosses = ls.simplify(pts.subspan(start, end - start), node.subspan(start, end - start),
+                              g.kind == GeometryKind::Polygons, out.points, bounds) || crosses;
+        out.ring_ends.push_back(static_cast<std::uint32_t>(out.points.size()));
+        start = end;
+    }
+    out.points.shrink_to_fit();
+    return out;
+}
+
+}  // namespace
+
+SimplifiedMap simplify_map(const MapData& data, const BorderNodes& nodes, const MapProjection& proj,
+                           const Affine& to_pixel, double tolerance, int threads) {
+    SimplifiedMap r;
+    r.features.resize(data.features.size());
+    r.bounds.resize(data.features.size());
+    std::vector<std::unique_ptr<LineSimplifier>> workers;
+    for (int w = 0; w < threads; ++w) workers.push_back(std::make_unique<LineSimplifier>(proj, to_pixel, tolerance));
+    parallel::for_each_index(threads, data.features.size(), [&](int w, std::size_t i) {
+        const Feature& f = data.features[i];
+        LineSimplifier& ls = *workers[static_cast<std::size_t>(w)];
+        Rect bounds{INFINITY, INFINITY, -INFINITY, -INFINITY};
+        bool crosses = false;
+        std::size_t base = nodes.feature_start[i];
+        r.features[i].reserve(f.geometries.size());
+        for (const Geometry& g : f.geometries) {
+            const std::span<const std::uint8_t> node = std::span<const std::uint8_t>(nodes.node).subspan(base, g.points.size());
+            r.features[i].push_back(simplify_geometry(g, node, ls, bounds, crosses));
+            base += g.points.size();
+        }
+        r.bounds[i] = crosses ? Rect{-INFINITY, -INFINITY, INFINITY, INFINITY} : bounds;
+    });
+    for (const auto& f : r.features)
+        for (const Geometry& g : f) r.positions += g.points.size();
+    return r;
+}
+
+}  // namespace casteljau::map_detail
