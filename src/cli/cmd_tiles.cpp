@@ -128,6 +128,7 @@ void register_tiles(CLI::App& app) {
         to.threads = map_threads(0);
         to.seamless = !o->style.separate;
         to.tolerance = o->style.tolerance;
+        to.simplify = o->style.simplify;
         to.exact_overlaps = !o->style.no_exact;
         if (o->style.projection != "equirectangular" && o->style.projection != "mercator")
             throw UsageError("--projection: tiles are always Web Mercator");

@@ -4,12 +4,14 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <memory>
 #include <mutex>
 
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/png.hpp"
 #include "core/for_each_index.hpp"
+#include "map/simplify_map.hpp"
 
 namespace casteljau {
 
@@ -41,9 +43,26 @@ void check_options(const TileOptions& o) {
     if (o.buffer < 0 || o.buffer > 1024) bad("buffer must be 0 to 1024 pixels");
     if (o.threads < 1 || o.threads > 256) bad("threads must be 1 to 256");
     if (o.shards < 1 || o.shard < 0 || o.shard >= o.shards) bad("shard must be I/N with 0 <= I < N");
+    if (!(o.simplify >= 0) || !std::isfinite(o.simplify)) bad("simplify must be a finite number of pixels >= 0");
     const long long side = static_cast<long long>(o.metatile) * o.tile_px + 2LL * o.buffer;
     if (const Limits lim = current_limits(); side > lim.canvas_dimension || side * side > lim.canvas_pixels)
         bad("metatile x tile size + 2 x buffer exceeds the canvas limits");
+}
+
+// One zoom level's geometry, simplified once for all of its metatiles when the first of them needs
+// it, and released when the last of them is done.
+struct ZoomLevel {
+    std::once_flag once;
+    map_detail::SimplifiedMap map;
+    std::atomic<std::size_t> left{0};  // metatiles of this level still to finish
+};
+
+// Zoom z's projected-to-pixel transform for a metatile whose first pixel is (ox, oy) of the world.
+Affine zoom_transform(int z, int tile_px, double ox, double oy) {
+    const double world = static_cast<double>(tile_px) * static_cast<double>(std::int64_t{1} << z);
+    const double half = kPi * kWebMercatorRadius;
+    const double s = world / (2 * half);
+    return Affine{s, 0, 0, -s, half * s - ox, half * s - oy};
 }
 
 }  // namespace
@@ -60,8 +79,26 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
     MapOptions mo;
     mo.seamless = opts.seamless;
     mo.tolerance = opts.tolerance;
+    mo.simplify = opts.simplify;
     mo.exact_overlaps = opts.exact_overlaps;
     mo.threads = 1;  // the worker threads take a metatile each
+    // The border nodes do not depend on the zoom: found once. Each level's simplified copy is made
+    // in the frame of the world at that zoom, which a metatile's frame only translates.
+    const map_detail::BorderNodes nodes = opts.simplify > 0 ? map_detail::find_border_nodes(data) : map_detail::BorderNodes{};
+    std::vector<std::unique_ptr<ZoomLevel>> levels;
+    for (int z = opts.min_zoom; z <= opts.max_zoom; ++z) levels.push_back(std::make_unique<ZoomLevel>());
+    for (std::size_t i = begin; i < end; ++i) levels[static_cast<std::size_t>(all[i].z - opts.min_zoom)]->left += 1;
+    auto simplified = [&](int z) -> const map_detail::SimplifiedMap& {
+        ZoomLevel& level = *levels[static_cast<std::size_t>(z - opts.min_zoom)];
+        std::call_once(level.once, [&] {
+            level.map = map_detail::simplify_map(data, nodes, merc, zoom_transform(z, opts.tile_px, 0, 0), opts.simplify, 1);
+        });
+        return level.map;
+    };
+    auto finished = [&](int z) {
+        ZoomLevel& level = *levels[static_cast<std::size_t>(z - opts.min_zoom)];
+        if (level.left.fetch_sub(1) == 1) level.map = map_detail::SimplifiedMap{};
+    };
 
     std::mutex mu;  // guards sink, stats and progress
     TileStats stats;
@@ -72,6 +109,11 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
     auto metatile = [&](int, std::size_t index) {
         try {
             const Metatile& m = all[begin + index];
+            struct Done {
+                const decltype(finished)& f;
+                int z;
+                ~Done() { f(z); }
+            } done_guard{finished, m.z};
             const std::int64_t dim = std::int64_t{1} << m.z;
             const int nx = static_cast<int>(std::min<std::int64_t>(m.n, dim - m.x0));
             const int ny = static_cast<int>(std::min<std::int64_t>(m.n, dim - m.y0));
@@ -90,16 +132,14 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
             if (existing < static_cast<std::uint64_t>(nx * ny)) {
                 const int T = opts.tile_px, B = opts.buffer;
                 const int W = nx * T + 2 * B, H = ny * T + 2 * B;
-                const double world = static_cast<double>(T) * static_cast<double>(dim);
-                const double half = kPi * kWebMercatorRadius;
-                const double s = world / (2 * half);
                 const double ox = static_cast<double>(m.x0) * T - B, oy = static_cast<double>(m.y0) * T - B;
                 MapFrame fr;
                 fr.width = W;
                 fr.height = H;
-                fr.to_pixel = Affine{s, 0, 0, -s, half * s - ox, half * s - oy};
+                fr.to_pixel = zoom_transform(m.z, T, ox, oy);
                 Pixmap pm(W, H);
-                render_map(data, merc, fr, style, mo, pm);
+                if (opts.simplify > 0) map_detail::render_simplified_map(data, simplified(m.z), merc, fr, style, mo, pm);
+                else render_map(data, merc, fr, style, mo, pm);
                 Pixmap tile(T, T);
                 for (int j = 0; j < ny; ++j)
                     for (int i = 0; i < nx; ++i) {

@@ -1,11 +1,14 @@
 // Geometry at the output's resolution (MapOptions::simplify): the run simplifier's bound on random
 // polylines, its degenerate inputs, border nodes, shared borders simplified identically in both
-// rings (GeoJSON and TopoJSON), seams, and coverage against the original on the shipped world.
+// rings (GeoJSON and TopoJSON), seams, coverage against the original on the shipped world, and
+// tiles drawn from one simplified copy per zoom.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <numbers>
 #include <random>
 #include <span>
 #include <string>
@@ -13,6 +16,8 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/map.hpp"
+#include "casteljau/png.hpp"
+#include "casteljau/tiles.hpp"
 #include "map/border_nodes.hpp"
 #include "map/simplify_map.hpp"
 #include "map/simplify_polyline.hpp"
@@ -282,4 +287,44 @@ TEST_CASE("Map simplify: the world's coverage within 0.2/255 on average and 8/25
             CHECK(worst <= 8);
         }
     }
+}
+
+TEST_CASE("Tiles: one simplified copy per zoom draws what render_map draws for the metatile", "[map][simplify][tiles]") {
+    const MapData world = test::load_world();
+    MapStyle st;
+    st.layers[0].stroke = Color::black();
+    st.layers[0].stroke_width = 1.2;
+    TileOptions to;
+    to.min_zoom = 0;
+    to.max_zoom = 2;
+    to.metatile = 2;
+    to.buffer = 16;
+    to.threads = 2;
+    std::map<std::string, std::vector<std::uint8_t>> tiles;
+    render_tiles(world, st, to, [&](int z, int x, int y, const std::vector<std::uint8_t>& png) {
+        tiles[std::to_string(z) + "/" + std::to_string(x) + "/" + std::to_string(y)] = png;
+    });
+    CHECK(tiles.size() == 1 + 4 + 16);
+    // Zoom 2, metatile (2, 2): drawn alone through render_map, which simplifies in its own frame
+    // (the zoom's, translated), then cut.
+    const int T = to.tile_px, B = to.buffer;
+    const double half = std::numbers::pi * kWebMercatorRadius, s = 4.0 * T / (2 * half);
+    MapFrame fr;
+    fr.width = fr.height = 2 * T + 2 * B;
+    fr.to_pixel = Affine{s, 0, 0, -s, half * s - (2.0 * T - B), half * s - (2.0 * T - B)};
+    MapOptions mo;
+    mo.threads = 1;
+    Pixmap pm(fr.width, fr.height);
+    render_map(world, MapProjection::parse("mercator"), fr, st, mo, pm);
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) {
+            Pixmap tile(T, T);
+            for (int r = 0; r < T; ++r) {
+                const std::uint8_t* src = pm.row(B + j * T + r) + static_cast<std::size_t>(B + i * T) * 4;
+                std::copy(src, src + static_cast<std::size_t>(T) * 4, tile.row(r));
+            }
+            const std::string key = "2/" + std::to_string(2 + i) + "/" + std::to_string(2 + j);
+            INFO(key);
+            CHECK(tiles.at(key) == encode_png(tile));
+        }
 }
