@@ -16,6 +16,7 @@
 #include "casteljau/map.hpp"
 #include "casteljau/seamless.hpp"
 #include "core/for_each_index.hpp"
+#include "map/clip_to_frame.hpp"
 #include "map/simplify_map.hpp"
 
 namespace casteljau {
@@ -158,17 +159,30 @@ struct BoundsVisitor final : PieceVisitor {
 struct PathVisitor final : PieceVisitor {
     Affine m;
     double point_radius = 3;
-    Path fill;                  // polygons + point disks
-    Path lines;                 // open polylines, to be stroked
-    std::vector<Point> mapped;  // a ring in pixel space
+    // Strokes only: rings and lines cut to this rectangle around the image (clip_to_frame.hpp).
+    std::optional<Rect> clip;
+    Path fill;   // polygons + point disks
+    Path lines;  // open polylines, to be stroked
+    std::vector<Point> mapped, clipped;  // a ring in pixel space
     void ring(const std::vector<Point>& pts) override {
         mapped.resize(pts.size());
         for (std::size_t i = 0; i < pts.size(); ++i) mapped[i] = m.apply(pts[i]);
+        if (clip && !map_detail::inside(mapped, *clip)) {
+            map_detail::clip_ring(mapped, *clip, clipped);
+            if (clipped.size() >= 3) fill.add_polygon(clipped);
+            return;
+        }
         fill.add_polygon(mapped);
     }
     void line(const std::vector<Point>& pts) override {
-        lines.move_to(m.apply(pts[0]));
-        for (std::size_t i = 1; i < pts.size(); ++i) lines.line_to(m.apply(pts[i]));
+        mapped.resize(pts.size());
+        for (std::size_t i = 0; i < pts.size(); ++i) mapped[i] = m.apply(pts[i]);
+        if (clip && !map_detail::inside(mapped, *clip)) {
+            map_detail::clip_line(mapped, *clip, lines);
+            return;
+        }
+        lines.move_to(mapped[0]);
+        for (std::size_t i = 1; i < mapped.size(); ++i) lines.line_to(mapped[i]);
     }
     void point(Point p) override {
         if (point_radius > 0) fill.add_circle(m.apply(p), point_radius);
@@ -430,6 +444,8 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
     // Features that cannot reach the image are not drawn (their bounds are known only with the
     // simplified copy; a projection that bends segments may draw outside its positions' bounds).
     const double reach = draw_reach(style);
+    // Outlines are cut a little farther out than anything reaches (clip_to_frame.hpp).
+    const Rect stroke_clip{-2 * reach, -2 * reach, frame.width + 2 * reach, frame.height + 2 * reach};
     auto visible = [&](std::size_t i) {
         return !simplified || !proj.preserves_graticule_lines() || reaches_image(simplified->bounds[i], frame, reach);
     };
@@ -612,6 +628,7 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
         };
         auto make_outline = [&](int w, std::size_t feature, std::optional<Drawable>& out) {
             PathVisitor v;
+            v.clip = stroke_clip;
             build(w, feature, v);
             Path o;
             // Lines are always stroked; polygon outlines (point disks too) take the stroke colour.
