@@ -112,14 +112,14 @@ std::vector<std::uint8_t> windowed(const MapData& data, const std::vector<Rect>&
     return out;
 }
 
-struct Error {
+struct CoverageError {
     double mean = 0;
     int max = 0;
     std::size_t differ = 0;
 };
 
-Error compare(const std::vector<std::uint8_t>& ref, const std::vector<std::uint8_t>& out) {
-    Error e;
+CoverageError compare(const std::vector<std::uint8_t>& ref, const std::vector<std::uint8_t>& out) {
+    CoverageError e;
     for (std::size_t i = 0; i < ref.size(); ++i) {
         const int d = std::abs(int(ref[i]) - int(out[i]));
         e.mean += d;
@@ -182,8 +182,8 @@ int run(int argc, char** argv) {
                 oe.simplify = e;
                 Pixmap pm(frame.width, frame.height);
                 render_map(data, proj, frame, p.style, oe, pm);
-                const Error out = compare(ref, alpha_of(pm));
-                Error alone;
+                const CoverageError out = compare(ref, alpha_of(pm));
+                CoverageError alone;
                 if (e > 0) alone = compare(ref, windowed(data, bounds, proj, frame, p.style, side, reach, e));
                 std::printf("| %d x %d | %s | %g | %.3f | %d | %zu | %.3f | %d |\n", w, w / 2, p.name, e, out.mean, out.max,
                             out.differ, alone.mean, alone.max);
