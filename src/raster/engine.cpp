@@ -171,7 +171,10 @@ void Engine::contour_end() {
         contour_visit_ < visits_.size() && contour_started_ && px_ == sx_ && py_ == sy_) {
         Visit& last = visits_[static_cast<std::size_t>(cur_visit_)];
         Visit& first = visits_[contour_visit_];
-        if (last.cell == first.cell && cur_cell_ == last.cell && first.pre < 0) {
+        // Only a first visit that starts with the contour's first edge continues the last one: when
+        // that edge lies on a cell side (no visit), the first visit starts further on, and joining
+        // the two would hide the step between them from the run's directions.
+        if (last.cell == first.cell && cur_cell_ == last.cell && first.pre < 0 && first.s0 == contour_seg_) {
             first.pre = cur_visit_;
             first.dirs |= last.dirs;
             last.merged_away = true;

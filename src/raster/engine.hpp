@@ -138,6 +138,7 @@ private:
     std::size_t contour_visit_ = 0;  // first visit of the current contour
     double px_ = 0, py_ = 0;         // end of the last edge
     double sx_ = 0, sy_ = 0;         // start of the contour's first edge
+    std::uint32_t contour_seg_ = 0;  // the contour's first edge (index into segs_)
     bool contour_started_ = false;
 };
 
@@ -269,6 +270,7 @@ template <bool kTrack, bool kVec>
             contour_started_ = true;
             sx_ = x0;
             sy_ = y0;
+            contour_seg_ = static_cast<std::uint32_t>(segs_.size());
         }
         px_ = x1;
         py_ = y1;

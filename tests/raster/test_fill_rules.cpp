@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "casteljau/stroke.hpp"
 #include "raster/simd_dispatch.hpp"
 
 #include "accuracy_util.hpp"
@@ -511,4 +512,21 @@ TEST_CASE("fill rules: proven-simple narrow shapes round half-way coverage up, a
     simd::restrict_targets(0);
     CHECK(wrong == 0);
     CHECK(ties > 100);  // the half-way values this test is about do occur
+}
+
+TEST_CASE("fill rules: a thin stroke outline folding back along its own ring", "[fillrule]") {
+    // A ring that turns back along x = 2 (as a world map's rings do along the -180 meridian). Its
+    // 0.8 px outline has a contour whose first edge lies on the pixel side x = 2 and whose last edge
+    // ends there; in pixel (2, 3) the parts before and after that edge cross each other, so they
+    // are two runs to check, not one run through the contour's start.
+    Path ring;
+    ring.move_to({2, 3.68});
+    for (Point p : {Point{2, 3.45}, Point{2, -4.2}, Point{22, -4.2}, Point{32, 3.68}}) ring.line_to(p);
+    ring.close();
+    StrokeStyle style;
+    style.width = 0.8;
+    style.join = LineJoin::Round;
+    const ref::Contours outline = ref::fine_flatten(stroke(ring, style), Affine::identity());
+    Rasterizer r;
+    check_polygons(r, outline, FillRule::NonZero, {-2, -6, 36, 6}, "folded ring outline");
 }
