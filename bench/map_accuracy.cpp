@@ -84,7 +84,8 @@ std::vector<Rect> feature_bounds(const MapData& data, const MapProjection& proj,
 // features that reach each window; simplified, from all of them (the simplification depends on the
 // neighbours; render_map leaves out the features that do not reach the window itself).
 std::vector<std::uint8_t> windowed(const MapData& data, const std::vector<Rect>& bounds, const MapProjection& proj,
-                                   const MapFrame& frame, const MapStyle& style, int window, double reach, double simplify) {
+                                   const MapFrame& frame, const MapStyle& style, int window, double reach,
+                                   double simplify) {
     MapOptions o;
     o.simplify = simplify;
     std::vector<std::uint8_t> out(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0);
@@ -98,7 +99,8 @@ std::vector<std::uint8_t> windowed(const MapData& data, const std::vector<Rect>&
             if (simplify == 0) {
                 for (std::size_t i = 0; i < data.features.size(); ++i) {
                     const Rect& b = bounds[i];
-                    if (b.x1 >= tx - reach && b.x0 <= tx + w.width + reach && b.y1 >= ty - reach && b.y0 <= ty + w.height + reach)
+                    if (b.x1 >= tx - reach && b.x0 <= tx + w.width + reach && b.y1 >= ty - reach &&
+                        b.y0 <= ty + w.height + reach)
                         part.features.push_back(data.features[i]);
                 }
                 if (part.features.empty()) continue;
@@ -144,24 +146,35 @@ int run(int argc, char** argv) {
             if (i + 1 >= argc) throw std::runtime_error("missing value after " + a);
             return argv[++i];
         };
-        if (a == "--layer") layer = next();
-        else if (a == "--width") widths.push_back(std::atoi(next()));
-        else if (a == "--simplify") eps.push_back(std::atof(next()));
-        else if (a == "--window") window = std::atoi(next());
-        else if (a == "--stroke-width") stroke_width = std::atof(next());
-        else if (file.empty() && a[0] != '-') file = a;
-        else throw std::runtime_error("usage: map_accuracy FILE [--layer NAME] [--width W]... [--simplify E]... [--window T]");
+        if (a == "--layer")
+            layer = next();
+        else if (a == "--width")
+            widths.push_back(std::atoi(next()));
+        else if (a == "--simplify")
+            eps.push_back(std::atof(next()));
+        else if (a == "--window")
+            window = std::atoi(next());
+        else if (a == "--stroke-width")
+            stroke_width = std::atof(next());
+        else if (file.empty() && a[0] != '-')
+            file = a;
+        else
+            throw std::runtime_error(
+                "usage: map_accuracy FILE [--layer NAME] [--width W]... [--simplify E]... [--window T]");
     }
-    if (file.empty()) throw std::runtime_error("usage: map_accuracy FILE [--layer NAME] [--width W]... [--simplify E]...");
+    if (file.empty())
+        throw std::runtime_error("usage: map_accuracy FILE [--layer NAME] [--width W]... [--simplify E]...");
     if (widths.empty()) widths = {256, 4096};
     if (eps.empty()) eps = {kDefaultMapSimplify};
     const MapData data = read_map_file(file, layer);
     const MapProjection proj;
     std::printf("%s%s%s: %zu positions; reference: %s\n", file.c_str(), layer.empty() ? "" : " --layer ", layer.c_str(),
                 data.position_count(),
-                window > 0 ? ("the original drawn in windows of " + std::to_string(window) + " px").c_str() : "the original, whole image");
-    std::printf("| size | picture | simplify (px) | output: mean error (/255) | max | pixels differing |"
-                " simplification alone: mean | max |\n");
+                window > 0 ? ("the original drawn in windows of " + std::to_string(window) + " px").c_str()
+                           : "the original, whole image");
+    std::printf(
+        "| size | picture | simplify (px) | output: mean error (/255) | max | pixels differing |"
+        " simplification alone: mean | max |\n");
     std::printf("|---|---|---:|---:|---:|---:|---:|---:|\n");
     for (int w : widths) {
         MapOptions o;
@@ -185,8 +198,8 @@ int run(int argc, char** argv) {
                 const CoverageError out = compare(ref, alpha_of(pm));
                 CoverageError alone;
                 if (e > 0) alone = compare(ref, windowed(data, bounds, proj, frame, p.style, side, reach, e));
-                std::printf("| %d x %d | %s | %g | %.3f | %d | %zu | %.3f | %d |\n", w, w / 2, p.name, e, out.mean, out.max,
-                            out.differ, alone.mean, alone.max);
+                std::printf("| %d x %d | %s | %g | %.3f | %d | %zu | %.3f | %d |\n", w, w / 2, p.name, e, out.mean,
+                            out.max, out.differ, alone.mean, alone.max);
                 std::fflush(stdout);
             }
         }

@@ -183,7 +183,8 @@ void nodes_from_arcs(const MapData& data, BorderNodes& r) {
     for (std::uint32_t a : data.used_arcs) {
         const std::uint32_t first = a == 0 ? 0 : data.arc_ends[a - 1], last = data.arc_ends[a];
         if (first == last) continue;
-        for (Point p : {data.arc_points[first], data.arc_points[last - 1]}) ends.make_node(ends.find_or_add(p, hash_point(p)));
+        for (Point p : {data.arc_points[first], data.arc_points[last - 1]})
+            ends.make_node(ends.find_or_add(p, hash_point(p)));
     }
     std::vector<std::uint32_t> distinct;
     std::vector<std::uint64_t> hashes;
@@ -216,8 +217,10 @@ BorderNodes find_border_nodes(const MapData& data) {
     }
     r.feature_start.push_back(total);
     r.node.assign(total, 0);
-    if (!data.arc_ends.empty()) nodes_from_arcs(data, r);
-    else nodes_from_positions(data, r);
+    if (!data.arc_ends.empty())
+        nodes_from_arcs(data, r);
+    else
+        nodes_from_positions(data, r);
     return r;
 }
 

@@ -161,8 +161,8 @@ struct PathVisitor final : PieceVisitor {
     double point_radius = 3;
     // Strokes only: rings and lines cut to this rectangle around the image (clip_to_frame.hpp).
     std::optional<Rect> clip;
-    Path fill;   // polygons + point disks
-    Path lines;  // open polylines, to be stroked
+    Path fill;                           // polygons + point disks
+    Path lines;                          // open polylines, to be stroked
     std::vector<Point> mapped, clipped;  // a ring in pixel space
     void ring(const std::vector<Point>& pts) override {
         mapped.resize(pts.size());
@@ -512,9 +512,8 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
             while (end < order.size() && (end == begin || positions < kChunkPositions))
                 positions += positions_of(order[end++]);
             chunk.assign(end - begin, std::nullopt);
-            parallel::for_each_index(threads, end - begin, [&](int w, std::size_t i) {
-                make(w, order[begin + i], chunk[i]);
-            });
+            parallel::for_each_index(threads, end - begin,
+                                     [&](int w, std::size_t i) { make(w, order[begin + i], chunk[i]); });
             draw(chunk);
             begin = end;
         }

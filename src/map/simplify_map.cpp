@@ -19,7 +19,9 @@ bool less(Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 class LineSimplifier {
 public:
     LineSimplifier(const MapProjection& proj, const Affine& to_pixel, double tolerance)
-        : proj_(proj.clone()), scale_{to_pixel.a, to_pixel.b, to_pixel.c, to_pixel.d, 0, 0}, tolerance_(tolerance),
+        : proj_(proj.clone()),
+          scale_{to_pixel.a, to_pixel.b, to_pixel.c, to_pixel.d, 0, 0},
+          tolerance_(tolerance),
           max_degrees_(proj_.preserves_graticule_lines() ? INFINITY : kDensifyDegrees) {}
 
     // Appends to `out` the positions of the ring or line `pts` that stay (a ring closed again by
@@ -50,9 +52,12 @@ public:
             if (k > 0 && std::fabs(p.x - lonlat_[k - 1].x) > 180) crosses = true;
         }
         if (closed && m > 1 && std::fabs(lonlat_[0].x - lonlat_[m - 1].x) > 180) crosses = true;
-        if (m < 3) keep_.assign(m, 1);
-        else if (closed) simplify_ring();
-        else simplify_open();
+        if (m < 3)
+            keep_.assign(m, 1);
+        else if (closed)
+            simplify_ring();
+        else
+            simplify_open();
         for (std::size_t k = 0; k < m; ++k)
             if (keep_[k]) out.push_back(lonlat_[k]);
         if (closed && m > 0) out.push_back(lonlat_[0]);
@@ -155,7 +160,8 @@ Geometry simplify_geometry(const Geometry& g, std::span<const std::uint8_t> node
     const std::span<const Point> pts(g.points);
     for (std::uint32_t end : g.ring_ends) {
         crosses = ls.simplify(pts.subspan(start, end - start), node.subspan(start, end - start),
-                              g.kind == GeometryKind::Polygons, out.points, bounds) || crosses;
+                              g.kind == GeometryKind::Polygons, out.points, bounds) ||
+                  crosses;
         out.ring_ends.push_back(static_cast<std::uint32_t>(out.points.size()));
         start = end;
     }
@@ -180,7 +186,8 @@ SimplifiedMap simplify_map(const MapData& data, const BorderNodes& nodes, const 
         std::size_t base = nodes.feature_start[i];
         r.features[i].reserve(f.geometries.size());
         for (const Geometry& g : f.geometries) {
-            const std::span<const std::uint8_t> node = std::span<const std::uint8_t>(nodes.node).subspan(base, g.points.size());
+            const std::span<const std::uint8_t> node =
+                std::span<const std::uint8_t>(nodes.node).subspan(base, g.points.size());
             r.features[i].push_back(simplify_geometry(g, node, ls, bounds, crosses));
             base += g.points.size();
         }

@@ -84,14 +84,16 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
     mo.threads = 1;  // the worker threads take a metatile each
     // The border nodes do not depend on the zoom: found once. Each level's simplified copy is made
     // in the frame of the world at that zoom, which a metatile's frame only translates.
-    const map_detail::BorderNodes nodes = opts.simplify > 0 ? map_detail::find_border_nodes(data) : map_detail::BorderNodes{};
+    const map_detail::BorderNodes nodes =
+        opts.simplify > 0 ? map_detail::find_border_nodes(data) : map_detail::BorderNodes{};
     std::vector<std::unique_ptr<ZoomLevel>> levels;
     for (int z = opts.min_zoom; z <= opts.max_zoom; ++z) levels.push_back(std::make_unique<ZoomLevel>());
     for (std::size_t i = begin; i < end; ++i) levels[static_cast<std::size_t>(all[i].z - opts.min_zoom)]->left += 1;
     auto simplified = [&](int z) -> const map_detail::SimplifiedMap& {
         ZoomLevel& level = *levels[static_cast<std::size_t>(z - opts.min_zoom)];
         std::call_once(level.once, [&] {
-            level.map = map_detail::simplify_map(data, nodes, merc, zoom_transform(z, opts.tile_px, 0, 0), opts.simplify, 1);
+            level.map =
+                map_detail::simplify_map(data, nodes, merc, zoom_transform(z, opts.tile_px, 0, 0), opts.simplify, 1);
         });
         return level.map;
     };
@@ -138,8 +140,10 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
                 fr.height = H;
                 fr.to_pixel = zoom_transform(m.z, T, ox, oy);
                 Pixmap pm(W, H);
-                if (opts.simplify > 0) map_detail::render_simplified_map(data, simplified(m.z), merc, fr, style, mo, pm);
-                else render_map(data, merc, fr, style, mo, pm);
+                if (opts.simplify > 0)
+                    map_detail::render_simplified_map(data, simplified(m.z), merc, fr, style, mo, pm);
+                else
+                    render_map(data, merc, fr, style, mo, pm);
                 Pixmap tile(T, T);
                 for (int j = 0; j < ny; ++j)
                     for (int i = 0; i < nx; ++i) {

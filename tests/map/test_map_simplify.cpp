@@ -90,13 +90,17 @@ std::string two_neighbours(std::size_t n, double wiggle) {
     for (auto it = border.rbegin(); it != border.rend(); ++it) east.push_back(*it);
     east.push_back(east.front());
     return R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{"name":"west"},"geometry":)"
-           R"({"type":"Polygon","coordinates":)" + text(west) + R"(}},{"type":"Feature","properties":{"name":"east"},)"
-           R"("geometry":{"type":"Polygon","coordinates":)" + text(east) + "}}]}";
+           R"({"type":"Polygon","coordinates":)" +
+           text(west) +
+           R"(}},{"type":"Feature","properties":{"name":"east"},)"
+           R"("geometry":{"type":"Polygon","coordinates":)" +
+           text(east) + "}}]}";
 }
 
 }  // namespace
 
-TEST_CASE("Run simplifier: every dropped vertex within the tolerance, ends kept, both ways within it", "[map][simplify]") {
+TEST_CASE("Run simplifier: every dropped vertex within the tolerance, ends kept, both ways within it",
+          "[map][simplify]") {
     std::mt19937 rng(2024);
     std::uniform_real_distribution<double> tol_of(0.001, 2.0);
     for (int trial = 0; trial < 300; ++trial) {
@@ -163,11 +167,14 @@ TEST_CASE("Border nodes: where a shared border starts and ends, line ends, antim
             const Point p = g.points[i];
             const bool end = p.x == 0 && std::fabs(p.y) == 40;
             const bool on = p.x != 40 && p.x != -40 && !end;
-            if (end) CHECK(nodes.node[nodes.feature_start[f] + i] == 1);
-            else if (on) CHECK(nodes.node[nodes.feature_start[f] + i] == 0);
+            if (end)
+                CHECK(nodes.node[nodes.feature_start[f] + i] == 1);
+            else if (on)
+                CHECK(nodes.node[nodes.feature_start[f] + i] == 0);
         }
     }
-    const MapData l = read_geojson(R"({"type":"LineString","coordinates":[[170,0],[175,1],[179,2],[-179,3],[-175,4],[-170,5]]})");
+    const MapData l =
+        read_geojson(R"({"type":"LineString","coordinates":[[170,0],[175,1],[179,2],[-179,3],[-175,4],[-170,5]]})");
     const map_detail::BorderNodes ln = map_detail::find_border_nodes(l);
     CHECK(ln.node == std::vector<std::uint8_t>{1, 0, 1, 1, 0, 1});
 }
@@ -219,8 +226,8 @@ TEST_CASE("Map simplify: a dense border shared by two features keeps the same po
     for (int w : {64, 256, 4096}) {
         const Affine to_pixel{w / 360.0, 0, 0, -w / 360.0, w / 2.0, w / 4.0};
         for (const MapData* data : {&d, &topo}) {
-            const map_detail::SimplifiedMap sm =
-                map_detail::simplify_map(*data, map_detail::find_border_nodes(*data), MapProjection{}, to_pixel, 1.0 / 64, 2);
+            const map_detail::SimplifiedMap sm = map_detail::simplify_map(*data, map_detail::find_border_nodes(*data),
+                                                                          MapProjection{}, to_pixel, 1.0 / 64, 2);
             const std::vector<Point> a = on_border(first_ring(sm, 0)), b = on_border(first_ring(sm, 1));
             INFO("width " << w << (data == &d ? " GeoJSON" : " TopoJSON"));
             CHECK(a == b);
@@ -230,7 +237,8 @@ TEST_CASE("Map simplify: a dense border shared by two features keeps the same po
     }
 }
 
-TEST_CASE("Seamless: two features sharing a long dense border stay seamless when simplified", "[map][seamless][simplify]") {
+TEST_CASE("Seamless: two features sharing a long dense border stay seamless when simplified",
+          "[map][seamless][simplify]") {
     // 20,000 positions along 80 degrees: at 200 px about a thousand per pixel of border, which the
     // simplification reduces; the border runs at a fractional pixel position.
     const MapData d = read_geojson(two_neighbours(20000, 0.003));
@@ -245,7 +253,8 @@ TEST_CASE("Seamless: two features sharing a long dense border stay seamless when
         const Point top = fr.to_pixel.apply({0, 38}), bottom = fr.to_pixel.apply({0, -38});
         int gaps = 0;
         for (int y = static_cast<int>(top.y) + 1; y < static_cast<int>(bottom.y); ++y)
-            for (int x = static_cast<int>(top.x) - 3; x <= static_cast<int>(top.x) + 3; ++x) gaps += pm.pixel(x, y).a != 255;
+            for (int x = static_cast<int>(top.x) - 3; x <= static_cast<int>(top.x) + 3; ++x)
+                gaps += pm.pixel(x, y).a != 255;
         INFO("simplify " << simplify);
         CHECK(gaps == 0);
     }
@@ -289,7 +298,8 @@ TEST_CASE("Map simplify: the world's coverage within 0.2/255 on average and 8/25
     }
 }
 
-TEST_CASE("Tiles: one simplified copy per zoom draws what render_map draws for the metatile", "[map][simplify][tiles]") {
+TEST_CASE("Tiles: one simplified copy per zoom draws what render_map draws for the metatile",
+          "[map][simplify][tiles]") {
     const MapData world = test::load_world();
     MapStyle st;
     st.layers[0].stroke = Color::black();
