@@ -12,40 +12,7 @@
 #include "casteljau/casteljau_map.h"
 #include "casteljau/casteljau_svg.h"
 #include "casteljau/casteljau_text.h"
-
-static int failures = 0;
-
-#define CHECK(cond)                                                                  \
-    do {                                                                             \
-        if (!(cond)) {                                                               \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
-            ++failures;                                                              \
-        }                                                                            \
-    } while (0)
-
-#define CHECK_OK(call)                                                                                    \
-    do {                                                                                                  \
-        casteljau_status s_ = (call);                                                                     \
-        if (s_ != CASTELJAU_OK) {                                                                         \
-            fprintf(stderr, "%s:%d: %s failed: %s\n", __FILE__, __LINE__, #call, casteljau_last_error()); \
-            ++failures;                                                                                   \
-        }                                                                                                 \
-    } while (0)
-
-/* Expects `call` to fail with `status` and a last-error message containing `needle`. */
-#define CHECK_ERROR(call, status, needle)                                                                           \
-    do {                                                                                                            \
-        casteljau_status s_ = (call);                                                                               \
-        if (s_ != (status)) {                                                                                       \
-            fprintf(stderr, "%s:%d: %s gave %d, expected %d\n", __FILE__, __LINE__, #call, (int)s_, (int)(status)); \
-            ++failures;                                                                                             \
-        }                                                                                                           \
-        if (strstr(casteljau_last_error(), (needle)) == NULL || casteljau_last_error()[0] == '\0') {                \
-            fprintf(stderr, "%s:%d: message \"%s\" lacks \"%s\"\n", __FILE__, __LINE__, casteljau_last_error(),     \
-                    (needle));                                                                                      \
-            ++failures;                                                                                             \
-        }                                                                                                           \
-    } while (0)
+#include "capi_check.h"
 
 static char source[2048], scratch[2048];
 
