@@ -46,7 +46,9 @@ struct casteljau_canvas {
     std::unique_ptr<casteljau::Canvas> canvas;
 };
 
+// SvgOptions with the defaults of `casteljau svg` (system font fallback on).
 struct casteljau_svg_options {
+    casteljau_svg_options() { options.system_fallback = true; }
     casteljau::SvgOptions options;
 };
 struct casteljau_svg {
