@@ -441,7 +441,7 @@ private:
         static const char* const kVariations[] = {"wght=700", "wdth=50", "opsz=1e300", "wght"};
         casteljau_text_style* st = pick(text_styles_, r);
         std::string scratch;
-        switch (r.byte() % 10) {
+        switch (r.byte() % 11) {
             case 0:
                 keep(text_styles_, casteljau_text_style_create(), casteljau_text_style_destroy);
                 return CASTELJAU_OK;
@@ -453,6 +453,7 @@ private:
             case 6: return casteljau_text_style_set_script(st, r.choose(kScripts, 4, scratch));
             case 7: return casteljau_text_style_set_language(st, r.choose(kLanguages, 3, scratch));
             case 8: return casteljau_text_style_add_feature(st, r.choose(kFeatures, 5, scratch));
+            case 9: return casteljau_text_style_set_palette(st, r.small_int());
             default: return casteljau_text_style_add_variation(st, r.choose(kVariations, 4, scratch));
         }
     }

@@ -19,10 +19,11 @@
 //   - the SIMD instruction set of the raster kernels, chosen from the CPU on first use;
 //   - PROJ, SQLite and ICU, opened once on first use (projections that are not built in; MBTiles;
 //     line breaking of wrapped text) and kept open;
-//   - system font fallback (text.hpp, TextStyle::system_fonts): fontconfig's configuration, read
-//     when a text first needs a font its chain lacks, the sorted face lists of each query and the
-//     face chosen for each character cluster, kept behind a lock until the process ends; off with
-//     system_fonts = false.
+//   - system font fallback (text.hpp, TextStyle::system_fonts; SVG text with
+//     SvgOptions::system_fallback, shaping.hpp's SystemFontFallback): fontconfig's configuration,
+//     read when a text first needs a font its chain lacks, the sorted face lists of each query and
+//     the face chosen for each character cluster, kept behind a lock until the process ends; off
+//     with system_fonts = false (system_fallback = false).
 // Each Font owns its FreeType and HarfBuzz objects, and glyph masks are cached in GlyphCache
 // objects the caller owns (text.hpp).
 #pragma once

@@ -52,7 +52,10 @@ CASTELJAU_API casteljau_status casteljau_svg_options_set_resources(casteljau_svg
  * must exist when a document is read (CASTELJAU_ERROR_IO names the missing one). */
 CASTELJAU_API casteljau_status casteljau_svg_options_add_font_dir(casteljau_svg_options* options, const char* folder);
 CASTELJAU_API casteljau_status casteljau_svg_options_add_font_file(casteljau_svg_options* options, const char* file);
-/* 0: --skip-system-fonts (text uses the font folders and files alone); nonzero: the default. */
+/* 0: --no-system-fonts (text uses the font folders and files alone: characters they lack are not
+ * drawn or show a .notdef glyph); nonzero, the default: the system's fonts are matched by family
+ * name too, and characters no other font has come from them as in `casteljau text` (fontconfig's
+ * per-cluster fallback, after the folders and files given; SvgOptions::system_fallback). */
 CASTELJAU_API casteljau_status casteljau_svg_options_set_system_fonts(casteljau_svg_options* options, int use);
 CASTELJAU_API casteljau_status casteljau_svg_options_set_font_family(casteljau_svg_options* options,
                                                                      casteljau_font_generic generic,

@@ -49,7 +49,8 @@ typedef struct casteljau_text_line {
 } casteljau_text_line;
 
 /* Styles. A new style: 16 px per em, line height 1, no wrapping, START alignment, AUTO direction,
- * script detected, no language, no feature, no variation. NULL when out of memory. */
+ * script detected, no language, no feature, no variation, no system font fallback, palette 0.
+ * NULL when out of memory. */
 CASTELJAU_API casteljau_text_style* casteljau_text_style_create(void);
 CASTELJAU_API void casteljau_text_style_destroy(casteljau_text_style* style);
 CASTELJAU_API casteljau_status
@@ -73,6 +74,16 @@ CASTELJAU_API casteljau_status casteljau_text_style_add_feature(casteljau_text_s
  * malformed setting here; CASTELJAU_ERROR_FONT, naming the fonts' axes, when the layout is made
  * and no font has the axis. */
 CASTELJAU_API casteljau_status casteljau_text_style_add_variation(casteljau_text_style* style, const char* variation);
+/* Nonzero: a character cluster no font of the chain has comes from the system's fonts, found
+ * through fontconfig (the face fontconfig ranks first for the first font's family, the language,
+ * weight and slant, or the "emoji" family for emoji clusters), as `casteljau text` does by
+ * default. 0, the default here as in the C++ library (TextStyle::system_fonts): such clusters show
+ * the first font's .notdef glyph and the output depends on the given fonts alone (--no-system-fonts). */
+CASTELJAU_API casteljau_status casteljau_text_style_set_system_fonts(casteljau_text_style* style, int use);
+/* --palette: the CPAL palette colour glyphs (emoji, COLR fonts) are drawn in, 0 to 65535 (0, the
+ * default, is the font's first; one the font lacks means 0). Read when the layout is made: its draw
+ * and render_image calls use it. */
+CASTELJAU_API casteljau_status casteljau_text_style_set_palette(casteljau_text_style* style, int palette);
 
 /* Lays out UTF-8 `text` (invalid bytes show as U+FFFD) with the fallback chain fonts[0..count)
  * (at least one; --font, repeated) and `style` (NULL: a new style's defaults). Empty text gives

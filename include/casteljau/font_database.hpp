@@ -38,6 +38,7 @@ struct FontFaceInfo {
     FontSlant slant = FontSlant::Normal;
     double stretch = 100;  // CSS percentage: 50 (ultra-condensed) .. 200 (ultra-expanded)
     bool variable = false;
+    bool system = false;  // found through fontconfig (FontDatabaseOptions::system_fonts), not given
 };
 
 struct FontDatabaseOptions {
@@ -68,9 +69,10 @@ public:
     // Whether face `face` maps code point `c` to a glyph.
     bool covers(std::size_t face, char32_t c) const;
     // The first face (in database order, best matching weight/slant/stretch among the faces that
-    // cover `c`) that has `c`; nothing when no face has it.
+    // cover `c`) that has `c`; nothing when no face has it. `system_faces` false: only among the
+    // faces of the folders and files given (for callers that ask fontconfig's fallback next).
     std::optional<std::size_t> fallback(char32_t c, int weight = 400, FontSlant slant = FontSlant::Normal,
-                                        double stretch = 100) const;
+                                        double stretch = 100, bool system_faces = true) const;
 
     // An independent Font for face `face`; the file is read once per database and its bytes
     // shared. Throws Error(Io) or Error(Font) when the file cannot be read.

@@ -4,7 +4,7 @@
 //
 // The bidi algorithm is the subset text.hpp describes (levels 0 to 2, no explicit embeddings).
 // A TextShaper splits a paragraph into runs of one bidi level, one script and one font of its
-// fallback chain, and shapes each run with the whole paragraph as context (so Arabic joining and
+// fallback chain (then of the system's fonts, through a SystemFontFallback), and shapes each run with the whole paragraph as context (so Arabic joining and
 // kerning see across run edges), in the run's direction.
 //
 // Coordinates: ShapedGlyph advances and offsets are pixels at TextStyle::size, x right and y UP
@@ -12,13 +12,15 @@
 //
 // Thread-safety: the free functions may be called from any thread. A TextShaper belongs to one
 // thread at a time and uses its Fonts (one thread per Font at a time, font.hpp), which must
-// outlive it.
+// outlive it. A SystemFontFallback belongs to one thread at a time (with the shapers using it);
+// its process-wide caches are those text.hpp describes, guarded by a mutex.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -42,7 +44,7 @@ bool letter_spacing_allowed(char32_t c);
 
 struct ShapedGlyph {
     std::uint32_t glyph = 0;
-    std::uint16_t font = 0;     // index into the TextShaper's fonts
+    std::uint16_t font = 0;     // index into TextShaper::fonts()
     std::uint32_t cluster = 0;  // code point index in the paragraph
     double advance = 0;         // px
     double x_offset = 0;        // px, x right
@@ -57,13 +59,36 @@ struct ShapedRun {
     std::vector<ShapedGlyph> glyphs;  // visual order
 };
 
+// The system font fallback of layout_text (TextStyle::system_fonts) for TextShapers: a cluster
+// that no font of a shaper's chain has comes from the first face, in fontconfig's order for the
+// base font's family (the generic family "emoji" for clusters in emoji presentation), the
+// language and the base font's weight and slant, that has the whole cluster. One object serves any
+// number of shapers with that base and language; the Fonts it loads live as long as it does.
+class SystemFontFallback {
+public:
+    // `base`: the font whose family, weight and slant the fallback faces should match (read here
+    // only); `language`: a BCP 47 tag or "".
+    SystemFontFallback(const Font& base, std::string language);
+    ~SystemFontFallback();
+    SystemFontFallback(const SystemFontFallback&) = delete;
+    SystemFontFallback& operator=(const SystemFontFallback&) = delete;
+
+private:
+    friend class TextShaper;
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
 class TextShaper {
 public:
     // `fonts`: the fallback chain, first choice first (each character from the first font that has
     // it). Validates the style's script, language and features (Error(Parse)). `vertical`: shape
     // top to bottom (vertical metrics and the 'vert' feature) instead of by the bidi levels; glyphs
-    // then advance by y_advance.
-    TextShaper(std::span<const Font* const> fonts, const TextStyle& style, bool vertical = false);
+    // then advance by y_advance. `system`: where a cluster no font of the chain has finds a font
+    // (it must outlive the shaper); null: nowhere, the cluster shows the first font's .notdef
+    // (TextStyle::system_fonts is not read here).
+    TextShaper(std::span<const Font* const> fonts, const TextStyle& style, bool vertical = false,
+               SystemFontFallback* system = nullptr);
     ~TextShaper();
     TextShaper(const TextShaper&) = delete;
     TextShaper& operator=(const TextShaper&) = delete;
@@ -71,6 +96,9 @@ public:
     // Shapes `paragraph` (tabs already replaced) with its bidi levels into `runs` (logical order).
     void shape_paragraph(std::u32string_view paragraph, std::span<const std::uint8_t> levels,
                          std::vector<ShapedRun>& runs);
+    // The chain followed by the system fonts used so far, in the order first used:
+    // ShapedGlyph::font and ShapedRun::font index it.
+    const std::vector<const Font*>& fonts() const;
 
 private:
     class Impl;  // the HarfBuzz buffer, features, script and language

@@ -58,12 +58,21 @@ namespace casteljau {
 // `system_fonts` is false; or, when `font_database` is set, from that database alone (share one
 // between documents so that each font file is read once). The generic CSS families map to the
 // `*_family` names, and `font_family` ends every font-family list (the defaults are resvg's).
+// A character no face of the element's font-family list has comes from the database's other
+// faces: with `system_fallback` false (the default), from any of them, the best match of weight,
+// style and stretch; with it true, from the faces of the folders and files given (or of a given
+// database's non-system faces) first, then from the system's fonts the way `casteljau text` finds
+// them (per character cluster, in fontconfig's order for the first face's family, weight and
+// slant; TextStyle::system_fonts), whether or not `system_fonts` is set. The `svg` command turns
+// it on unless --no-system-fonts (or --skip-system-fonts) is given; off, the output depends on the
+// given fonts alone when `system_fonts` is false too.
 struct SvgOptions {
     std::string base_dir;
     std::string resource_root;
     int nesting = 0;  // SVG images nest at most Limits::svg_image_nesting deep
     std::vector<std::string> font_dirs, font_files;
     bool system_fonts = true;
+    bool system_fallback = false;
     std::string font_family = "Times New Roman";
     std::string serif_family = "Times New Roman";
     std::string sans_serif_family = "Arial";

@@ -29,6 +29,8 @@ _declare([
     ("casteljau_text_style_set_language", _i, [_vp, _c.c_char_p]),
     ("casteljau_text_style_add_feature", _i, [_vp, _c.c_char_p]),
     ("casteljau_text_style_add_variation", _i, [_vp, _c.c_char_p]),
+    ("casteljau_text_style_set_system_fonts", _i, [_vp, _i]),
+    ("casteljau_text_style_set_palette", _i, [_vp, _i]),
     ("casteljau_text_layout_create", _i, [_c.c_char_p, _P(_vp), _c.c_size_t, _vp, _P(_vp)]),
     ("casteljau_text_layout_destroy", None, [_vp]),
     ("casteljau_text_layout_size", _i, [_vp, _P(_d), _P(_d)]),
@@ -110,7 +112,8 @@ def _fonts(font, face) -> List[Font]:
 class _Style(_Handle):
     _destroy = _lib.casteljau_text_style_destroy
 
-    def __init__(self, size, width, align, line_height, direction, script, language, feature, variation):
+    def __init__(self, size, width, align, line_height, direction, script, language, feature, variation, system_fonts,
+                 palette):
         self._h = _lib.casteljau_text_style_create()
         if not self._h:
             raise MemoryError("casteljau: out of memory")
@@ -125,6 +128,8 @@ class _Style(_Handle):
             _check(_lib.casteljau_text_style_add_feature(self._h, _text(f)))
         for v in [variation] if isinstance(variation, str) else variation:
             _check(_lib.casteljau_text_style_add_variation(self._h, _text(v)))
+        _check(_lib.casteljau_text_style_set_system_fonts(self._h, 1 if system_fonts else 0))
+        _check(_lib.casteljau_text_style_set_palette(self._h, palette))
 
 
 class TextLayout(_Handle):
@@ -138,6 +143,10 @@ class TextLayout(_Handle):
     line_height: the line advance as a multiple of the first font's line spacing. direction:
     "auto", "ltr", "rtl". script (ISO 15924, "Arab"), language (BCP 47, "ar"). feature: HarfBuzz
     feature strings ("kern=0", "smcp"); variation: axis settings ("wght=700"), one or a list.
+    system_fonts: take a character cluster no font of the chain has from the system's fonts
+    (fontconfig), as `casteljau text` does unless --no-system-fonts; off by default, as in the C
+    and C++ libraries, so that the output depends on the given fonts alone. palette: the CPAL
+    palette colour glyphs are drawn in (--palette; 0, the font's first, by default).
     Layout space: pixels, x right, y down, (0, 0) the top-left corner of the text box."""
     _destroy = _lib.casteljau_text_layout_destroy
 
@@ -145,8 +154,10 @@ class TextLayout(_Handle):
                  face: Union[int, Sequence[int]] = (), size: float = 32, width: Optional[float] = None,
                  align: str = "start", line_height: float = 1.0, direction: str = "auto",
                  script: Optional[str] = None, language: Optional[str] = None,
-                 feature: Union[str, Sequence[str]] = (), variation: Union[str, Sequence[str]] = ()) -> None:
-        style = _Style(size, width, align, line_height, direction, script, language, feature, variation)
+                 feature: Union[str, Sequence[str]] = (), variation: Union[str, Sequence[str]] = (),
+                 system_fonts: bool = False, palette: int = 0) -> None:
+        style = _Style(size, width, align, line_height, direction, script, language, feature, variation, system_fonts,
+                       palette)
         fonts = _fonts(font, face)
         handles = (_vp * len(fonts))(*[f._h for f in fonts])
         self._h = _out(_lib.casteljau_text_layout_create, text.encode("utf-8"), handles, len(fonts), style._h)

@@ -46,7 +46,9 @@ struct casteljau_canvas {
     std::unique_ptr<casteljau::Canvas> canvas;
 };
 
+// SvgOptions with the defaults of `casteljau svg` (system font fallback on).
 struct casteljau_svg_options {
+    casteljau_svg_options() { options.system_fallback = true; }
     casteljau::SvgOptions options;
 };
 struct casteljau_svg {
@@ -75,6 +77,7 @@ struct casteljau_tile_options {
 struct casteljau_text_style {
     casteljau::TextStyle style;
     std::vector<casteljau::Variation> variations;
+    int palette = 0;  // TextDrawOptions::palette of the layouts made with this style
 };
 // A layout with the fonts it points at (copies of the caller's, variations applied) and the
 // UTF-8 text of each line.
@@ -82,6 +85,7 @@ struct casteljau_text_layout {
     std::vector<std::unique_ptr<casteljau::Font>> fonts;
     casteljau::TextLayout layout;
     std::vector<std::string> line_text;
+    int palette = 0;  // TextDrawOptions::palette for drawing it
 };
 
 namespace casteljau::capi {

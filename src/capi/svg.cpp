@@ -19,7 +19,7 @@ casteljau_status edit(casteljau_svg_options* options, F&& f) noexcept {
 // whether or not the document has text, as on the command line; the font database itself is built
 // by the reader when the first text needs it.
 SvgOptions options_of(const casteljau_svg_options* options) {
-    SvgOptions so = options ? options->options : SvgOptions{};
+    SvgOptions so = options ? options->options : casteljau_svg_options{}.options;
     FontDatabaseOptions fo;
     fo.font_dirs = so.font_dirs;
     fo.font_files = so.font_files;
@@ -82,7 +82,7 @@ casteljau_status casteljau_svg_options_add_font_file(casteljau_svg_options* opti
 }
 
 casteljau_status casteljau_svg_options_set_system_fonts(casteljau_svg_options* options, int use) {
-    return edit(options, [&](SvgOptions& o) { o.system_fonts = use != 0; });
+    return edit(options, [&](SvgOptions& o) { o.system_fonts = o.system_fallback = use != 0; });
 }
 
 casteljau_status casteljau_svg_options_set_font_family(casteljau_svg_options* options, casteljau_font_generic generic,

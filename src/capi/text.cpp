@@ -80,6 +80,7 @@ casteljau_text_layout make_layout(const char* text, const casteljau_font* const*
     std::vector<const Font*> chain;
     for (const auto& f : out.fonts) chain.push_back(f.get());
     out.layout = layout_text(text, chain, s.style);
+    out.palette = s.palette;
     for (const TextLine& line : out.layout.lines) {
         std::string utf8;
         const std::size_t end = std::min(line.text_end, out.layout.text.size());
@@ -87,6 +88,12 @@ casteljau_text_layout make_layout(const char* text, const casteljau_font* const*
         out.line_text.push_back(std::move(utf8));
     }
     return out;
+}
+
+TextDrawOptions draw_options(const casteljau_text_layout& layout) {
+    TextDrawOptions options;
+    options.palette = layout.palette;
+    return options;
 }
 
 }  // namespace
@@ -156,6 +163,18 @@ casteljau_status casteljau_text_style_add_variation(casteljau_text_style* style,
         style, [&](casteljau_text_style& s) { s.variations.push_back(parse_variation(need(variation, "variation"))); });
 }
 
+casteljau_status casteljau_text_style_set_system_fonts(casteljau_text_style* style, int use) {
+    return edit(style, [&](casteljau_text_style& s) { s.style.system_fonts = use != 0; });
+}
+
+casteljau_status casteljau_text_style_set_palette(casteljau_text_style* style, int palette) {
+    return edit(style, [&](casteljau_text_style& s) {
+        if (palette < 0 || palette > 65535)
+            throw Error(ErrorKind::InvalidArgument, "palette must be 0 to 65535, got " + std::to_string(palette));
+        s.palette = palette;
+    });
+}
+
 casteljau_status casteljau_text_layout_create(const char* text, const casteljau_font* const* fonts, size_t count,
                                               const casteljau_text_style* style, casteljau_text_layout** out) {
     if (out) *out = nullptr;
@@ -209,14 +228,15 @@ casteljau_status casteljau_text_layout_draw(casteljau_text_layout* layout, caste
         Canvas& c = *need(canvas, "canvas")->canvas;
         if (!std::isfinite(x) || !std::isfinite(y))
             throw Error(ErrorKind::InvalidArgument, "text origin is not finite");
-        draw_text(c, l, {x, y}, need(paint, "paint")->paint);
+        draw_text(c, l, {x, y}, need(paint, "paint")->paint, nullptr, draw_options(*layout));
     });
 }
 
 casteljau_status casteljau_text_layout_render_image(casteljau_text_layout* layout, const casteljau_paint* paint,
                                                     casteljau_color background, int padding, casteljau_image** out) {
     return create(out, [&] {
-        const TextLayout& l = need(layout, "layout")->layout;
+        const casteljau_text_layout& held = *need(layout, "layout");
+        const TextLayout& l = held.layout;
         const Paint& p = need(paint, "paint")->paint;
         check_range(padding, 0, limits::kMaxCanvasDimension, "padding");
         const Rect b = l.bounds();
@@ -226,7 +246,7 @@ casteljau_status casteljau_text_layout_render_image(casteljau_text_layout* layou
         Pixmap pm(static_cast<int>(w), static_cast<int>(h));
         pm.fill(casteljau::capi::color(background));
         Canvas canvas(pm);
-        draw_text(canvas, l, {padding - x0, padding - y0}, p);
+        draw_text(canvas, l, {padding - x0, padding - y0}, p, nullptr, draw_options(held));
         return pm;
     });
 }

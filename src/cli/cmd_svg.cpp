@@ -46,7 +46,10 @@ void register_svg(CLI::App& app) {
     cmd->add_option("--font-dir", o->svg.font_dirs,
                     "Folder of fonts for text (repeatable); the system's fonts are used too");
     cmd->add_option("--font-file", o->svg.font_files, "A font file for text (repeatable)");
-    cmd->add_flag("--skip-system-fonts", o->skip_system_fonts, "Do not use the system's fonts (fontconfig) for text");
+    cmd->add_flag("--no-system-fonts,--skip-system-fonts", o->skip_system_fonts,
+                  "Do not use the system's fonts (fontconfig) for text: neither by family name nor for characters the "
+                  "other fonts lack (which otherwise come from them as in the text command), so the output depends on "
+                  "--font-dir and --font-file alone");
     cmd->add_option("--font-family", o->svg.font_family, "Default font family")->capture_default_str();
     cmd->add_option("--serif-family", o->svg.serif_family, "Font family for 'serif'")->capture_default_str();
     cmd->add_option("--sans-serif-family", o->svg.sans_serif_family, "Font family for 'sans-serif'")
@@ -61,6 +64,7 @@ void register_svg(CLI::App& app) {
         // A file resolves relative <image> hrefs against its folder; standard input has none.
         SvgOptions so = o->svg;
         so.system_fonts = !o->skip_system_fonts;
+        so.system_fallback = !o->skip_system_fonts;
         so.resource_root = o->resources;
         // The font folders and files must exist whether or not the document has text; the font
         // database itself is built by the SVG reader when the first text needs it (scanning the

@@ -1925,7 +1925,7 @@ public:
                 db = std::make_shared<const FontDatabase>(fo);
                 options.font_database = db;  // nested SVG images share it
             }
-            font_set = std::make_unique<svg_text::FontSet>(db);
+            font_set = std::make_unique<svg_text::FontSet>(db, options.system_fallback);
         }
         return font_set.get();
     }

@@ -178,9 +178,16 @@ std::vector<const Font*> FontSet::chain(const FontSpec& spec, std::u32string_vie
     for (char32_t c : text) {
         if (c < 0x20 || c == 0x200b || c == 0x200c || c == 0x200d || (c >= 0xfe00 && c <= 0xfe0f)) continue;
         if (std::any_of(out.begin(), out.end(), [&](const Font* f) { return f->has_glyph(c); })) continue;
-        if (auto idx = db_->fallback(c, spec.weight, spec.slant, spec.stretch)) add(*idx);
+        if (auto idx = db_->fallback(c, spec.weight, spec.slant, spec.stretch, !system_fallback_)) add(*idx);
     }
     return out;
+}
+
+SystemFontFallback* FontSet::system(const Font& base) {
+    if (!system_fallback_) return nullptr;
+    std::unique_ptr<SystemFontFallback>& slot = system_[&base];
+    if (!slot) slot = std::make_unique<SystemFontFallback>(base, std::string());
+    return slot.get();
 }
 
 std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std::string>& warnings,
@@ -237,12 +244,13 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
             TextStyle ts;
             ts.size = span.font.size;
             ts.features = span.font.features;
+            SystemFontFallback* system = fonts.system(*chain[0]);
             std::unique_ptr<TextShaper> shaper;
             try {
-                shaper = std::make_unique<TextShaper>(std::span<const Font* const>(chain), ts, upright);
+                shaper = std::make_unique<TextShaper>(std::span<const Font* const>(chain), ts, upright, system);
             } catch (const Error&) {
                 ts.features.clear();
-                shaper = std::make_unique<TextShaper>(std::span<const Font* const>(chain), ts, upright);
+                shaper = std::make_unique<TextShaper>(std::span<const Font* const>(chain), ts, upright, system);
             }
             // Shaped with up to kContext neighbours of the same level on each side (from other
             // spans too), so that kerning and joining work across tspans; only the segment's own
@@ -257,6 +265,7 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                 ++we;
             const std::u32string_view window(text.data() + wb, we - wb);
             shaper->shape_paragraph(window, std::span<const std::uint8_t>(levels.data() + (wb - cb), we - wb), runs);
+            const std::vector<const Font*>& shaped_fonts = shaper->fonts();  // the chain, then system fonts
             for (const ShapedRun& run : runs) {
                 RunClusters rc;
                 rc.level = run.level;
@@ -276,16 +285,16 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
                     const auto next = std::upper_bound(starts.begin(), starts.end(), cl);
                     k.nch = std::min<std::size_t>(wb + (next == starts.end() ? run.end : *next), se) - k.ch;
                     k.span = span_of[sb];
-                    k.font = chain[run.glyphs[g].font];
+                    k.font = shaped_fonts[run.glyphs[g].font];
                     k.upright = upright;
                     double pen = 0;
                     for (; g < run.glyphs.size() && run.glyphs[g].cluster == cl; ++g) {
                         const auto& sg = run.glyphs[g];
                         if (upright) {  // top to bottom: HarfBuzz's pen moves down (y up)
-                            k.glyphs.push_back({chain[sg.font], sg.glyph, sg.x_offset, -(pen + sg.y_offset)});
+                            k.glyphs.push_back({shaped_fonts[sg.font], sg.glyph, sg.x_offset, -(pen + sg.y_offset)});
                             pen += sg.y_advance;
                         } else {
-                            k.glyphs.push_back({chain[sg.font], sg.glyph, pen + sg.x_offset, -sg.y_offset});
+                            k.glyphs.push_back({shaped_fonts[sg.font], sg.glyph, pen + sg.x_offset, -sg.y_offset});
                             pen += sg.advance;
                         }
                     }

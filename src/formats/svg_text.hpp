@@ -1,7 +1,8 @@
 // Internal (formats): SVG text layout. The SVG reader (svg.cpp) turns a <text> element into a
 // TextInput (characters after white-space processing, grouped into spans of one style, with the
 // per-character x/y/dx/dy/rotate values, text paths and textLength ranges); layout() shapes it
-// with casteljau's text engine (HarfBuzz through casteljau/shaping.hpp, fonts from a FontDatabase)
+// with casteljau's text engine (HarfBuzz through casteljau/shaping.hpp, fonts from a FontDatabase,
+// optionally the system fallback of casteljau text)
 // and returns glyph outlines and decoration lines in the text's user space, which the reader
 // paints like any shape.
 //
@@ -20,6 +21,7 @@
 #include "casteljau/font.hpp"
 #include "casteljau/font_database.hpp"
 #include "casteljau/path.hpp"
+#include "casteljau/shaping.hpp"
 #include "casteljau/text.hpp"
 
 namespace casteljau::svg_text {
@@ -92,19 +94,29 @@ struct Outline {
     Path path;
 };
 
-// The fonts of one document: faces from a FontDatabase, opened once each (per variation).
+// The fonts of one document: faces from a FontDatabase, opened once each (per variation), and,
+// with `system_fallback`, the system's fonts through fontconfig for characters none of them has.
 class FontSet {
 public:
-    explicit FontSet(std::shared_ptr<const FontDatabase> db) : db_(std::move(db)) {}
+    explicit FontSet(std::shared_ptr<const FontDatabase> db, bool system_fallback = false)
+        : db_(std::move(db)), system_fallback_(system_fallback) {}
     // Fonts for `spec` that together cover `text` as far as the database can: the faces of the
-    // listed families, then per-character fallback faces. Empty when the database has no fonts.
+    // listed families, then per-character fallback faces (with system fallback, only the faces
+    // of the folders and files given: fontconfig's fallback comes after them, see system()).
+    // Empty when the database has no fonts.
     std::vector<const Font*> chain(const FontSpec& spec, std::u32string_view text);
+    // The system fallback for chains whose first font is `base` (null without system fallback),
+    // the same object for every chain with that first font: the faces it loads are loaded once
+    // per document and live as long as this FontSet.
+    SystemFontFallback* system(const Font& base);
 
 private:
     const Font* face(std::size_t index, const FontSpec& spec);
     std::shared_ptr<const FontDatabase> db_;
+    bool system_fallback_ = false;
     std::map<std::pair<std::size_t, std::string>, std::unique_ptr<Font>> fonts_;
     std::vector<std::size_t> broken_;
+    std::map<const Font*, std::unique_ptr<SystemFontFallback>> system_;
 };
 
 // Lays out and outlines `in`. Warnings (missing fonts) go to `warnings`. `box`, when given,

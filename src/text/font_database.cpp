@@ -100,7 +100,7 @@ struct FontDatabase::Impl {
         FcObjectSetDestroy(os);
         FcPatternDestroy(pat);
         if (!set) return;
-        add_set(set);
+        add_set(set, true);
         FcFontSetDestroy(set);
     }
 
@@ -112,11 +112,12 @@ struct FontDatabase::Impl {
             int count = 0;
             FcFreeTypeQueryAll(reinterpret_cast<const FcChar8*>(f.c_str()), -1, nullptr, &count, set);
         }
-        add_set(set);
+        add_set(set, false);
         FcFontSetDestroy(set);
     }
 
-    void add_set(FcFontSet* set) {
+    // `system`: the faces come from the system's configuration (FontFaceInfo::system).
+    void add_set(FcFontSet* set, bool system) {
         std::map<std::pair<std::string, int>, std::size_t> seen;
         for (std::size_t i = 0; i < faces.size(); ++i) seen[{faces[i].path, faces[i].index}] = i;
         // fontconfig lists in no particular order: sort by file so that the database order (the
@@ -139,6 +140,7 @@ struct FontDatabase::Impl {
             info.path = file;
             info.index = index;
             info.variable = variable;
+            info.system = system;
             FcChar8* fam = nullptr;
             for (int k = 0; FcPatternGetString(p, FC_FAMILY, k, &fam) == FcResultMatch; ++k)
                 info.families.emplace_back(reinterpret_cast<char*>(fam));
@@ -255,10 +257,11 @@ bool FontDatabase::covers(std::size_t face, char32_t c) const {
     } catch (const Error&) { return false; }
 }
 
-std::optional<std::size_t> FontDatabase::fallback(char32_t c, int weight, FontSlant slant, double stretch) const {
+std::optional<std::size_t> FontDatabase::fallback(char32_t c, int weight, FontSlant slant, double stretch,
+                                                  bool system_faces) const {
     // Any family: the style matters most, then stretch and weight.
     return best_face(
-        impl_->faces, [&](std::size_t i) { return covers(i, c); },
+        impl_->faces, [&](std::size_t i) { return (system_faces || !impl_->faces[i].system) && covers(i, c); },
         [&](const FontFaceInfo& f) {
             return std::make_tuple(slant_rank(slant, f.slant), stretch_key(stretch, f.stretch),
                                    weight_key(weight, f.min_weight, f.max_weight));

@@ -5,6 +5,8 @@
 #include <hb-ft.h>
 
 #include <memory>
+#include <string>
+#include <utility>
 
 #include "casteljau/error.hpp"
 #include "text/font_fallback.hpp"
@@ -216,15 +218,28 @@ void Shaper::shape_paragraph(std::u32string_view para, std::span<const std::uint
 
 namespace casteljau {
 
+struct SystemFontFallback::Impl {
+    Impl(const Font& base, std::string language) : fallback(base, std::move(language)) {}
+    text_detail::SystemFallback fallback;
+};
+
+SystemFontFallback::SystemFontFallback(const Font& base, std::string language)
+    : impl_(std::make_unique<Impl>(base, std::move(language))) {}
+
+SystemFontFallback::~SystemFontFallback() = default;
+
 class TextShaper::Impl : public text_detail::Shaper {
 public:
     using Shaper::Shaper;
 };
 
-TextShaper::TextShaper(std::span<const Font* const> fonts, const TextStyle& style, bool vertical)
-    : impl_(std::make_unique<Impl>(fonts, style, vertical)) {}
+TextShaper::TextShaper(std::span<const Font* const> fonts, const TextStyle& style, bool vertical,
+                       SystemFontFallback* system)
+    : impl_(std::make_unique<Impl>(fonts, style, vertical, system ? &system->impl_->fallback : nullptr)) {}
 
 TextShaper::~TextShaper() = default;
+
+const std::vector<const Font*>& TextShaper::fonts() const { return impl_->fonts(); }
 
 void TextShaper::shape_paragraph(std::u32string_view paragraph, std::span<const std::uint8_t> levels,
                                  std::vector<ShapedRun>& runs) {

@@ -8,28 +8,7 @@
 #include <string.h>
 
 #include "casteljau/casteljau.h"
-
-static int failures = 0;
-
-#define CHECK(cond)                                                                  \
-    do {                                                                             \
-        if (!(cond)) {                                                               \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
-            ++failures;                                                              \
-        }                                                                            \
-    } while (0)
-
-/* Expects `call` to fail with `status` and a last-error message containing `needle`. */
-#define CHECK_ERROR(call, status, needle)                                                                       \
-    do {                                                                                                        \
-        casteljau_status s_ = (call);                                                                           \
-        CHECK(s_ == (status));                                                                                  \
-        if (strstr(casteljau_last_error(), (needle)) == NULL) {                                                 \
-            fprintf(stderr, "%s:%d: message \"%s\" lacks \"%s\"\n", __FILE__, __LINE__, casteljau_last_error(), \
-                    (needle));                                                                                  \
-            ++failures;                                                                                         \
-        }                                                                                                       \
-    } while (0)
+#include "capi_check.h"
 
 static const uint8_t* pixel(casteljau_image* im, int x, int y) {
     return casteljau_image_data(im) + casteljau_image_stride(im) * (size_t)y + 4 * (size_t)x;

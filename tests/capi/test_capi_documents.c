@@ -2,7 +2,8 @@
  * compiled as C99: every call made, its results sampled, and bad input (malformed SVG, GeoJSON with
  * a NaN, an unknown projection, a missing font, NULL handles, values out of range) answered with a
  * status and a message. Run under AddressSanitizer (the sanitizer build), it also shows that
- * nothing leaks. Usage: test_capi_documents SOURCE_DIR SCRATCH_DIR */
+ * nothing leaks. Text options are compared with `casteljau text`'s output when its path is given.
+ * Usage: test_capi_documents SOURCE_DIR SCRATCH_DIR [CASTELJAU_CLI] */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,42 +13,9 @@
 #include "casteljau/casteljau_map.h"
 #include "casteljau/casteljau_svg.h"
 #include "casteljau/casteljau_text.h"
+#include "capi_check.h"
 
-static int failures = 0;
-
-#define CHECK(cond)                                                                  \
-    do {                                                                             \
-        if (!(cond)) {                                                               \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
-            ++failures;                                                              \
-        }                                                                            \
-    } while (0)
-
-#define CHECK_OK(call)                                                                                    \
-    do {                                                                                                  \
-        casteljau_status s_ = (call);                                                                     \
-        if (s_ != CASTELJAU_OK) {                                                                         \
-            fprintf(stderr, "%s:%d: %s failed: %s\n", __FILE__, __LINE__, #call, casteljau_last_error()); \
-            ++failures;                                                                                   \
-        }                                                                                                 \
-    } while (0)
-
-/* Expects `call` to fail with `status` and a last-error message containing `needle`. */
-#define CHECK_ERROR(call, status, needle)                                                                           \
-    do {                                                                                                            \
-        casteljau_status s_ = (call);                                                                               \
-        if (s_ != (status)) {                                                                                       \
-            fprintf(stderr, "%s:%d: %s gave %d, expected %d\n", __FILE__, __LINE__, #call, (int)s_, (int)(status)); \
-            ++failures;                                                                                             \
-        }                                                                                                           \
-        if (strstr(casteljau_last_error(), (needle)) == NULL || casteljau_last_error()[0] == '\0') {                \
-            fprintf(stderr, "%s:%d: message \"%s\" lacks \"%s\"\n", __FILE__, __LINE__, casteljau_last_error(),     \
-                    (needle));                                                                                      \
-            ++failures;                                                                                             \
-        }                                                                                                           \
-    } while (0)
-
-static char source[2048], scratch[2048];
+static char source[2048], scratch[2048], cli[2048];
 
 static const char* in_source(const char* rel) {
     static char buf[4][4096];
@@ -519,6 +487,137 @@ static void check_text(void) {
     casteljau_font_destroy(dejavu);
 }
 
+/* Whether two files hold the same bytes. */
+static int same_file(const char* a, const char* b) {
+    FILE* fa = fopen(a, "rb");
+    FILE* fb = fopen(b, "rb");
+    int same = fa != NULL && fb != NULL;
+    while (same) {
+        const int ca = fgetc(fa), cb = fgetc(fb);
+        same = ca == cb;
+        if (ca == EOF) break;
+    }
+    if (fa) fclose(fa);
+    if (fb) fclose(fb);
+    return same;
+}
+
+/* Runs `casteljau text` (the CLI given as the third argument) with `args` appended; 0 when it
+ * succeeded. The arguments are quoted by the caller. */
+static int run_text_cli(const char* args) {
+    char command[8192];
+    snprintf(command, sizeof command, "'%s' text %s > /dev/null", cli, args);
+    return system(command);
+}
+
+/* Renders `text` in `font` at 40 px with `style` and writes it to scratch file `name`; CHECKs that
+ * it worked and returns whether it did. */
+static int write_text_png(const char* text, const casteljau_font* font, const casteljau_text_style* style,
+                          const char* name) {
+    const casteljau_color black = {0, 0, 0, 255}, white = {255, 255, 255, 255};
+    casteljau_text_layout* layout = NULL;
+    casteljau_paint* ink = NULL;
+    casteljau_image* image = NULL;
+    casteljau_status s = casteljau_paint_create_solid(black, &ink);
+    if (s == CASTELJAU_OK) s = casteljau_text_layout_create(text, &font, 1, style, &layout);
+    if (s == CASTELJAU_OK) s = casteljau_text_layout_render_image(layout, ink, white, 4, &image);
+    if (s == CASTELJAU_OK) s = casteljau_image_write_png(image, in_scratch(name));
+    if (s != CASTELJAU_OK) fprintf(stderr, "rendering \"%s\" to %s: %s\n", text, name, casteljau_last_error());
+    CHECK(s == CASTELJAU_OK);
+    casteljau_image_destroy(image);
+    casteljau_text_layout_destroy(layout);
+    casteljau_paint_destroy(ink);
+    return s == CASTELJAU_OK;
+}
+
+/* casteljau_text_style_set_system_fonts: "Kanji 日本" in DejaVu Sans (which lacks the two Han
+ * characters) as `casteljau text` draws it (fallback through fontconfig) and as it draws it with
+ * --no-system-fonts (.notdef boxes), byte for byte; skipped without Noto Sans CJK. */
+static void check_text_system_fonts(void) {
+    const char* cjk_font = "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc";
+    const char* text = "Kanji \xe6\x97\xa5\xe6\x9c\xac";
+    casteljau_text_style* style = casteljau_text_style_create();
+    casteljau_font* dejavu = NULL;
+    char args[8192];
+    FILE* probe = fopen(cjk_font, "rb");
+    CHECK(style != NULL);
+    if (probe == NULL || cli[0] == '\0') {
+        printf("C API documents: SKIP system font fallback: %s\n",
+               probe == NULL ? "no NotoSansCJK-Regular.ttc (Debian fonts-noto-cjk)" : "no CLI given");
+        if (probe) fclose(probe);
+        casteljau_text_style_destroy(style);
+        return;
+    }
+    fclose(probe);
+    CHECK_OK(casteljau_font_load(in_source("fonts/DejaVuSans.ttf"), &dejavu));
+    CHECK_OK(casteljau_text_style_set_size(style, 40));
+    if (write_text_png(text, dejavu, style, "capi-cjk-plain.png")) {
+        snprintf(args, sizeof args, "'%s' --font '%s' --size 40 --color black --no-system-fonts -o '%s'", text,
+                 in_source("fonts/DejaVuSans.ttf"), in_scratch("capi-cjk-plain-cli.png"));
+        CHECK(run_text_cli(args) == 0);
+        CHECK(same_file(in_scratch("capi-cjk-plain.png"), in_scratch("capi-cjk-plain-cli.png")));
+    }
+    CHECK_OK(casteljau_text_style_set_system_fonts(style, 1));
+    if (write_text_png(text, dejavu, style, "capi-cjk.png")) {
+        snprintf(args, sizeof args, "'%s' --font '%s' --size 40 --color black -o '%s'", text,
+                 in_source("fonts/DejaVuSans.ttf"), in_scratch("capi-cjk-cli.png"));
+        CHECK(run_text_cli(args) == 0);
+        CHECK(same_file(in_scratch("capi-cjk.png"), in_scratch("capi-cjk-cli.png")));
+        CHECK(!same_file(in_scratch("capi-cjk.png"), in_scratch("capi-cjk-plain.png")));
+    }
+    CHECK_OK(casteljau_text_style_set_system_fonts(style, 0));
+    CHECK_ERROR(casteljau_text_style_set_system_fonts(NULL, 1), CASTELJAU_ERROR_INVALID_ARGUMENT, "style is NULL");
+    casteljau_text_style_destroy(style);
+    casteljau_font_destroy(dejavu);
+}
+
+/* Counts the pixels of `image` near `r`, `g`, `b`. */
+static int count_colour(casteljau_image* image, int r, int g, int b) {
+    int x, y, n = 0;
+    for (y = 0; y < casteljau_image_height(image); ++y)
+        for (x = 0; x < casteljau_image_width(image); ++x) {
+            const uint8_t* p = casteljau_image_data(image) + casteljau_image_stride(image) * (size_t)y + 4 * (size_t)x;
+            n += abs(p[0] - r) < 8 && abs(p[1] - g) < 8 && abs(p[2] - b) < 8;
+        }
+    return n;
+}
+
+/* casteljau_text_style_set_palette: tests/data/colr_test.ttf's "F" is red in CPAL palette 0 and
+ * green (0, 128, 0) in palette 1, drawn as `casteljau text --palette N` draws it, byte for byte. */
+static void check_text_palette(void) {
+    casteljau_font* colr = NULL;
+    casteljau_text_style* style = casteljau_text_style_create();
+    casteljau_image* image = NULL;
+    char args[8192], name[64], cli_name[64];
+    int palette;
+    CHECK(style != NULL);
+    CHECK_OK(casteljau_font_load(in_source("tests/data/colr_test.ttf"), &colr));
+    CHECK_OK(casteljau_text_style_set_size(style, 40));
+    for (palette = 0; palette <= 1 && colr != NULL; ++palette) {
+        snprintf(name, sizeof name, "capi-palette%d.png", palette);
+        snprintf(cli_name, sizeof cli_name, "capi-palette%d-cli.png", palette);
+        CHECK_OK(casteljau_text_style_set_palette(style, palette));
+        if (!write_text_png("F", colr, style, name)) continue;
+        CHECK_OK(casteljau_image_read_png(in_scratch(name), &image));
+        if (image != NULL) {
+            CHECK(count_colour(image, palette ? 0 : 255, palette ? 128 : 0, 0) > 50);
+            CHECK(count_colour(image, palette ? 255 : 0, palette ? 0 : 128, 0) == 0);
+        }
+        casteljau_image_destroy(image);
+        image = NULL;
+        if (cli[0] == '\0') continue;
+        snprintf(args, sizeof args, "F --font '%s' --size 40 --color black --palette %d -o '%s'",
+                 in_source("tests/data/colr_test.ttf"), palette, in_scratch(cli_name));
+        CHECK(run_text_cli(args) == 0);
+        CHECK(same_file(in_scratch(name), in_scratch(cli_name)));
+    }
+    CHECK_ERROR(casteljau_text_style_set_palette(style, -1), CASTELJAU_ERROR_INVALID_ARGUMENT, "palette");
+    CHECK_ERROR(casteljau_text_style_set_palette(style, 65536), CASTELJAU_ERROR_INVALID_ARGUMENT, "palette");
+    CHECK_ERROR(casteljau_text_style_set_palette(NULL, 0), CASTELJAU_ERROR_INVALID_ARGUMENT, "style is NULL");
+    casteljau_text_style_destroy(style);
+    casteljau_font_destroy(colr);
+}
+
 static void check_core_additions(void) {
     casteljau_image* image = NULL;
     casteljau_image* back = NULL;
@@ -546,16 +645,19 @@ static void check_core_additions(void) {
 
 int main(int argc, char** argv) {
     if (argc < 3) {
-        fprintf(stderr, "usage: test_capi_documents SOURCE_DIR SCRATCH_DIR\n");
+        fprintf(stderr, "usage: test_capi_documents SOURCE_DIR SCRATCH_DIR [CASTELJAU_CLI]\n");
         return 2;
     }
     snprintf(source, sizeof source, "%s", argv[1]);
     snprintf(scratch, sizeof scratch, "%s", argv[2]);
+    snprintf(cli, sizeof cli, "%s", argc > 3 ? argv[3] : "");
     check_core_additions();
     check_svg();
     check_map();
     check_tiles();
     check_text();
+    check_text_system_fonts();
+    check_text_palette();
     if (failures)
         fprintf(stderr, "%d checks failed\n", failures);
     else

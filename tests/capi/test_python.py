@@ -185,6 +185,37 @@ def check_text():
         failures.append("TextLayout.draw drew nothing")
 
 
+def check_system_fonts():
+    """system_fonts=True takes "日本" from the system's fonts as `casteljau text` does; the default
+    (off) draws .notdef boxes as --no-system-fonts does."""
+    cjk_font = "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc"
+    if not os.path.exists(cjk_font):
+        print("test_python: SKIP system font fallback: no %s (Debian fonts-noto-cjk)" % cjk_font)
+        return
+    text = "Kanji \u65e5\u672c"
+    cli("text", text, "--font", FONT, "-o", out("cjk-cli.png"))
+    cli("text", text, "--font", FONT, "--no-system-fonts", "-o", out("cjk-plain-cli.png"))
+    cj.TextLayout(text, FONT, system_fonts=True).render().to_png(out("cjk.png"))
+    cj.TextLayout(text, FONT).render().to_png(out("cjk-plain.png"))
+    same_file("TextLayout with system fonts", out("cjk-cli.png"), out("cjk.png"))
+    same_file("TextLayout without system fonts", out("cjk-plain-cli.png"), out("cjk-plain.png"))
+    if open(out("cjk.png"), "rb").read() == open(out("cjk-plain.png"), "rb").read():
+        failures.append("TextLayout: system_fonts changes nothing for CJK text")
+
+
+def check_palette():
+    """palette=N draws a COLR glyph in CPAL palette N as --palette N does (tests/data/colr_test.ttf:
+    "F" is red in palette 0, green in palette 1)."""
+    colr = os.path.join(SRC, "tests", "data", "colr_test.ttf")
+    for palette in (0, 1):
+        cli("text", "F", "--font", colr, "--size", 40, "--palette", palette, "-o", out("palette%d-cli.png" % palette))
+        layout = cj.TextLayout("F", colr, size=40, palette=palette)
+        layout.render().to_png(out("palette%d.png" % palette))
+        same_file("TextLayout palette %d" % palette, out("palette%d-cli.png" % palette), out("palette%d.png" % palette))
+    if open(out("palette0.png"), "rb").read() == open(out("palette1.png"), "rb").read():
+        failures.append("TextLayout: palette 1 draws as palette 0")
+
+
 def check_errors():
     expect_error("malformed SVG", lambda: cj.render_svg(b"<svg xmlns='http://www.w3.org/2000/svg'"), 2)
     expect_error("SVG of zero width", lambda: cj.render_svg("<svg xmlns='http://www.w3.org/2000/svg' width='0'/>"), 3,
@@ -197,6 +228,7 @@ def check_errors():
     expect_error("unknown projection", lambda: cj.render_map(WORLD, 10, projection="+proj=nonsense"), 1, "nonsense")
     expect_error("missing font", lambda: cj.TextLayout("x", out("no-such-font.ttf")), 5, "no-such-font.ttf")
     expect_error("unknown variation axis", lambda: cj.TextLayout("x", FONT, variation="wght=700"), 6, "wght")
+    expect_error("negative palette", lambda: cj.TextLayout("x", FONT, palette=-1), 1, "palette")
     expect_error("bad path data", lambda: cj.Path.from_svg("M 1 2 L"), 2)
     expect_error("bad colour", lambda: cj.render_map(WORLD, 10, fill="notacolour"), 2, "notacolour")
 
@@ -204,6 +236,8 @@ def check_errors():
 check_svg()
 check_map()
 check_text()
+check_system_fonts()
+check_palette()
 check_errors()
 for f in failures:
     print("test_python: FAIL: " + f)

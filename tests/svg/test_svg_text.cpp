@@ -401,3 +401,30 @@ TEST_CASE("SVG text: the character budget counts every use copy of a text", "[sv
     const SvgDocument doc = SvgDocument::parse(svg, repo_options());
     CHECK(has_warning(doc, std::to_string(Limits{}.svg_text_chars) + " characters"));
 }
+
+TEST_CASE("SVG text: system fallback draws CJK the document's fonts lack, after them", "[svg_text]") {
+    const std::string cjk_font = "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc";
+    if (!std::filesystem::exists(cjk_font)) {
+        CASTELJAU_SKIP("no " + cjk_font + " (Debian fonts-noto-cjk)");
+        return;
+    }
+    // "A" from DejaVu Sans, then two Han characters none of the repository's fonts has.
+    const std::string svg =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='120' height='50'><text x='5' y='38' "
+        "font-family='DejaVu Sans' font-size='30'>A\xe6\x97\xa5\xe6\x9c\xac</text></svg>";
+    SvgOptions on = repo_options();
+    on.system_fallback = true;
+    const Pixmap without = SvgDocument::parse(svg, repo_options()).render();
+    const Pixmap with = SvgDocument::parse(svg, on).render();
+    // Off: .notdef boxes where the Han characters go; on: their glyphs, so the pixels differ there.
+    int differ = 0;
+    for (int y = 0; y < with.height(); ++y)
+        for (int x = 0; x < with.width(); ++x) {
+            const auto p = with.pixel(x, y), q = without.pixel(x, y);
+            const bool same = p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a;
+            differ += !same;
+            // The document's font still draws the "A" (about 20 px wide from x 5).
+            if (x < 24) CHECK(same);
+        }
+    CHECK(differ > 100);
+}
