@@ -128,7 +128,7 @@ struct MapOptions {
     bool exact_overlaps = true;
     // Strokes at most 2 px wide with round joins and caps: drawn from their segments as the union of
     // capsules (casteljau/round_stroke.hpp), whose cost grows with the pixels they cover, within that
-    // header's bound of the exact union (1/64 per horizontal border through a pixel; measured in
+    // header's bound of the exact union (1/128 per horizontal border through a pixel; measured in
     // BENCHMARKS.md). False: through their outlines, exact to rounding, at a cost that grows with
     // how often the outline folds inside a pixel (thousands of times on a small world map).
     bool sampled_strokes = true;

@@ -15,9 +15,9 @@
 // coverage of a pixel is exact in x and a midpoint rule in y. Its error is at most 1 / (2 lines)
 // times the total variation of the covered length along the pixel's height, which is at most the
 // horizontal extent of the union's boundary inside the pixel (see src/raster/round_stroke.cpp):
-// zero where the boundary is straight and crosses the bands without ending in them, 1/64 (4/255) for
-// one horizontal boundary across the pixel with the default 32 lines, 8/255 for both sides of a
-// horizontal line. The map stage's measured error is in BENCHMARKS.md.
+// zero where the boundary is straight and crosses the bands without ending in them, 1/128 (2/255)
+// for one horizontal boundary across the pixel with the default 64 lines, 4/255 for both sides of
+// a horizontal line. The map stage's measured error is in BENCHMARKS.md.
 //
 // Conventions: pixel space, x right, y down, pixel (i, j) is the square [i, i+1) x [j, j+1).
 // Coverage is rounded to 1/255 (half-way rounds up).
@@ -40,7 +40,7 @@ struct LineSegment {
     Point a, b;
 };
 
-inline constexpr int kRoundStrokeLines = 32;      // sample lines per pixel row by default
+inline constexpr int kRoundStrokeLines = 64;      // sample lines per pixel row by default
 inline constexpr int kMaxRoundStrokeLines = 256;  // the most that may be asked for
 
 // The coverage, inside `clip`, of the points within `radius` of any of `segments` (a zero-length

@@ -32,13 +32,41 @@ namespace {
 
 struct Capsule {
     double ax, ay, bx, by;  // the segment's ends
-    double ux, uy, len;     // unit direction and length (len 0: a disc)
     double y0, y1;          // vertical extent, the radius included
     double x0;              // left end of the horizontal extent, the radius included
+    // The band swept by the segment, on the line y = ay + dy, as x ranges:
+    //   between its sides:  ax + side_slope dy -/+ side_half  (side_half infinite: horizontal segment)
+    //   between its ends:   ax - end_slope dy + [end_lo, end_hi]
+    // and for a vertical segment x in ax -/+ r while dy lies in [end_lo, end_hi].
+    double side_slope = 0, side_half = INFINITY, end_slope = 0, end_lo = 0, end_hi = 0;
+    bool band = false, vertical = false;
 };
 
+Capsule make_capsule(const LineSegment& s, double r) {
+    Capsule k{
+        s.a.x, s.a.y, s.b.x, s.b.y, std::min(s.a.y, s.b.y) - r, std::max(s.a.y, s.b.y) + r, std::min(s.a.x, s.b.x) - r};
+    const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, len = std::hypot(dx, dy);
+    if (!(len > 0) || !std::isfinite(len)) return k;  // a disc
+    const double ux = dx / len, uy = dy / len;
+    k.band = true;
+    if (ux == 0) {
+        k.vertical = true;
+        k.end_lo = std::min(0.0, dy);
+        k.end_hi = std::max(0.0, dy);
+        return k;
+    }
+    if (uy != 0) {
+        k.side_slope = ux / uy;
+        k.side_half = r / std::abs(uy);
+    }
+    k.end_slope = uy / ux;
+    k.end_lo = std::min(0.0, len / ux);
+    k.end_hi = std::max(0.0, len / ux);
+    return k;
+}
+
 // The interval [lo, hi] of x where the line y = c lies within r of capsule k; false when the line
-// misses it.
+// misses it. The capsule is convex, so its section is the hull of its two end discs' and its band's.
 bool capsule_section(const Capsule& k, double r, double c, double& lo, double& hi) {
     lo = INFINITY;
     hi = -INFINITY;
@@ -51,22 +79,18 @@ bool capsule_section(const Capsule& k, double r, double c, double& lo, double& h
     };
     disc(k.ax, k.ay);
     disc(k.bx, k.by);
-    if (k.len > 0) {
-        // The band: |n . (p - a)| <= r and 0 <= u . (p - a) <= len, n = (-uy, ux), p = (x, c).
-        double l = -INFINITY, h = INFINITY;
-        auto bound = [&](double slope, double offset, double from, double to) {  // from <= slope x + offset <= to
-            if (slope == 0) {
-                if (offset < from || offset > to) l = INFINITY;
-                return;
-            }
-            double x0 = (from - offset) / slope, x1 = (to - offset) / slope;
-            if (x0 > x1) std::swap(x0, x1);
-            l = std::max(l, x0);
-            h = std::min(h, x1);
-        };
+    if (k.band) {
         const double dy = c - k.ay;
-        bound(-k.uy, k.uy * k.ax + k.ux * dy, -r, r);
-        bound(k.ux, -k.ux * k.ax + k.uy * dy, 0, k.len);
+        double l, h;
+        if (k.vertical) {
+            if (dy < k.end_lo || dy > k.end_hi) return lo < hi;
+            l = k.ax - r;
+            h = k.ax + r;
+        } else {
+            const double base = k.ax - k.end_slope * dy, mid = k.ax + k.side_slope * dy;
+            l = std::max(base + k.end_lo, mid - k.side_half);
+            h = std::min(base + k.end_hi, mid + k.side_half);
+        }
         if (l <= h) {
             lo = std::min(lo, l);
             hi = std::max(hi, h);
@@ -82,26 +106,9 @@ std::vector<Capsule> capsules_in(std::span<const LineSegment> segments, double r
     for (const LineSegment& s : segments) {
         if (!s.a.is_finite() || !s.b.is_finite())
             throw Error(ErrorKind::InvalidArgument, "round_stroke_mask: segment coordinates must be finite");
-        Capsule k{s.a.x,
-                  s.a.y,
-                  s.b.x,
-                  s.b.y,
-                  0,
-                  0,
-                  0,
-                  std::min(s.a.y, s.b.y) - r,
-                  std::max(s.a.y, s.b.y) + r,
-                  std::min(s.a.x, s.b.x) - r};
+        const Capsule k = make_capsule(s, r);
         if (k.y1 <= clip.y0 || k.y0 >= clip.y1) continue;
-        if (std::max(s.a.x, s.b.x) + r <= clip.x0 || std::min(s.a.x, s.b.x) - r >= clip.x1) continue;
-        const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-        k.len = std::hypot(dx, dy);
-        if (k.len > 0 && std::isfinite(k.len)) {
-            k.ux = dx / k.len;
-            k.uy = dy / k.len;
-        } else {
-            k.len = 0;
-        }
+        if (std::max(s.a.x, s.b.x) + r <= clip.x0 || k.x0 >= clip.x1) continue;
         caps.push_back(k);
     }
     std::sort(caps.begin(), caps.end(), [](const Capsule& p, const Capsule& q) { return p.y0 < q.y0; });

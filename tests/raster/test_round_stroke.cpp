@@ -108,7 +108,7 @@ TEST_CASE("round_stroke_mask: a horizontal line of 0.8 px at every phase stays w
         const Mask m = round_stroke_mask(segments_of(lines), 0.4, clip);
         const Error255 e = compare(m, reference(lines, 0.4, clip));
         INFO("y " << y);
-        CHECK(e.max <= 255.0 / kRoundStrokeLines);
+        CHECK(e.max <= 255.0 / kRoundStrokeLines + 0.5);  // both sides, and the rounding to 1/255
     }
 }
 
