@@ -3,20 +3,19 @@
 //
 // Usage: map_accuracy FILE [--layer NAME] [--width W]... [--simplify E]... [--window T] [--stroke-width S]
 //   The world (equirectangular, bbox -180,-90,180,90) onto W x W/2 pixels, as bench/mapnik_compare.py
-//   draws it, moved by (0.37, 0.29) px so that the -180 meridian, which many rings follow, does not lie
-//   on a pixel boundary: there a closed ring whose start is a corner followed by a collinear vertex
-//   on that boundary escapes the rasterizer's overlap check (both the original's and the simplified
-//   pictures err by up to 41/255, whatever the simplification). For each width, two pictures: the fill (opaque black, seamless) and the stroke (no fill,
-//   S px, round joins), each as coverage (the alpha channel on a transparent image).
+//   draws it. For each width, two pictures: the fill (opaque black, seamless) and the stroke (no
+//   fill, S px, round joins and caps), each as coverage (the alpha channel on a transparent image).
 //   Reference: the original geometry (simplify 0) drawn window by window, T x T pixels each (default
 //   64; 0: the whole image at once), every window drawing only the features whose bounds reach it,
 //   so that no fill runs out of the rasterizer's exact-work budget (past it dense cells are
-//   approximated, see casteljau/raster.hpp): the exact union within the flattening tolerance.
-//   Output: render_map of the whole image with simplify E, as `casteljau map` draws it.
+//   approximated, see casteljau/raster.hpp) and strokes go through their outlines
+//   (MapOptions::sampled_strokes off) flattened within 0.001 px: the exact union.
+//   Output: render_map of the whole image with simplify E, as `casteljau map` draws it (thin round
+//   strokes sampled, casteljau/round_stroke.hpp).
 // Prints per width, picture and E: mean and max of |output - reference| over all pixels, in 1/255 of
 // coverage, and how many pixels differ; then the same for the simplified geometry drawn window by
 // window like the reference (the simplification's own error, without what the whole-image fill
-// approximates past its work budget). The reference's own check: the whole-image render of the
+// approximates past its work budget or the sampled strokes' error). The reference's own check: the whole-image render of the
 // original against it (E = 0).
 #include <sys/resource.h>
 
@@ -88,6 +87,11 @@ std::vector<std::uint8_t> windowed(const MapData& data, const std::vector<Rect>&
                                    double simplify) {
     MapOptions o;
     o.simplify = simplify;
+    // Strokes through their outlines, round joins and caps within 0.001 px of their circles: at the
+    // default tolerance (0.015 px) the inscribed arcs of a coastline's thousands of joins per pixel
+    // would make the reference itself lose up to 0.3/255 on average at 256 px.
+    o.sampled_strokes = false;
+    o.tolerance = 0.001;
     std::vector<std::uint8_t> out(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0);
     for (int ty = 0; ty < frame.height; ty += window)
         for (int tx = 0; tx < frame.width; tx += window) {
@@ -182,7 +186,6 @@ int run(int argc, char** argv) {
         o.height = w / 2;
         o.bbox = Rect{-180, -90, 180, 90};
         MapFrame frame = fit_map(data, proj, o);
-        frame.to_pixel = Affine{1, 0, 0, 1, 0.37, 0.29} * frame.to_pixel;
         const std::vector<Rect> bounds = feature_bounds(data, proj, frame);
         for (const Picture& p : pictures(stroke_width)) {
             const double reach = stroke_width * 2 + 2;

@@ -34,7 +34,7 @@ STAGES = [
     ("geometry", ["core"], ["geometry.hpp", "vec.hpp"]),
     ("path", ["geometry"], ["path.hpp", "arc.hpp", "svg_path.hpp", "flatten.hpp"]),
     ("curves", ["path"], ["bezier.hpp", "spline.hpp", "nurbs.hpp", "surface.hpp"]),
-    ("raster", ["path"], ["raster.hpp"]),
+    ("raster", ["path"], ["raster.hpp", "round_stroke.hpp"]),
     ("stroke", ["path"], ["stroke.hpp"]),
     ("paint", ["geometry"], ["paint.hpp", "shader.hpp", "blend_mode.hpp"]),
     ("filter", ["paint"], ["filter.hpp"]),

@@ -50,6 +50,7 @@
 #include "casteljau/png.hpp"
 #include "casteljau/projection.hpp"
 #include "casteljau/raster.hpp"
+#include "casteljau/round_stroke.hpp"
 #include "casteljau/seamless.hpp"
 #include "casteljau/shader.hpp"
 #include "casteljau/shaping.hpp"

@@ -48,7 +48,8 @@ struct TileOptions {
     double tolerance = kDefaultTolerance;
     // See MapOptions::simplify: each zoom level is simplified once, for all of its metatiles.
     double simplify = kDefaultMapSimplify;
-    bool exact_overlaps = true;  // see MapOptions::exact_overlaps
+    bool exact_overlaps = true;   // see MapOptions::exact_overlaps
+    bool sampled_strokes = true;  // see MapOptions::sampled_strokes
 };
 
 struct TileStats {

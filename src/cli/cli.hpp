@@ -38,7 +38,7 @@ struct MapCliStyle {
     std::string fill_by, ramp, style_file, projection = "equirectangular", layer;
     double stroke_width = 1, point_radius = 3, opacity = 1, tolerance = kDefaultTolerance;
     double simplify = kDefaultMapSimplify;
-    bool separate = false, no_exact = false;
+    bool separate = false, no_exact = false, exact_strokes = false;
 };
 void add_map_style_options(CLI::App* cmd, MapCliStyle& o);
 MapStyle build_map_style(const MapCliStyle& o);

@@ -113,6 +113,9 @@ void add_map_style_options(CLI::App* cmd, MapCliStyle& o) {
     cmd->add_flag("--separate", o.separate, "Draw each fill on its own with source-over (seams between neighbours)");
     cmd->add_flag("--no-exact-overlaps", o.no_exact,
                   "Fills by plain accumulation (about 3x faster on dense data; exact for valid polygons)");
+    cmd->add_flag("--exact-strokes", o.exact_strokes,
+                  "Thin round strokes through their outlines, exact (default: the union of their segments' "
+                  "capsules, within 2/255 per horizontal border; faster on small maps)");
     cmd->add_option("--tolerance", o.tolerance, "Flattening tolerance in pixels")
         ->check(CLI::Range(1e-4, 10.0))
         ->capture_default_str();
@@ -187,6 +190,7 @@ void register_map(CLI::App& app) {
         mo.tolerance = o->style.tolerance;
         mo.simplify = o->style.simplify;
         mo.exact_overlaps = !o->style.no_exact;
+        mo.sampled_strokes = !o->style.exact_strokes;
         if (!o->bbox.empty()) mo.bbox = parse_bbox(o->bbox);
         const MapStyle style = build_map_style(o->style);
         const MapProjection proj = MapProjection::parse(o->style.projection);

@@ -130,6 +130,7 @@ void register_tiles(CLI::App& app) {
         to.tolerance = o->style.tolerance;
         to.simplify = o->style.simplify;
         to.exact_overlaps = !o->style.no_exact;
+        to.sampled_strokes = !o->style.exact_strokes;
         if (o->style.projection != "equirectangular" && o->style.projection != "mercator")
             throw UsageError("--projection: tiles are always Web Mercator");
         MapStyle style = build_map_style(o->style);

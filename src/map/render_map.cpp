@@ -14,6 +14,7 @@
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/map.hpp"
+#include "casteljau/round_stroke.hpp"
 #include "casteljau/seamless.hpp"
 #include "core/for_each_index.hpp"
 #include "map/clip_to_frame.hpp"
@@ -363,6 +364,33 @@ std::vector<IRect> bands_of(int width, int height) {
 
 bool overlaps(const Rect& r, const IRect& band) { return r.y1 >= band.y0 && r.y0 <= band.y1; }
 
+// Strokes at most this wide (pixels) with round joins and caps are drawn by round_stroke_mask,
+// whose cost grows with the pixels they cover; wider ones by their outline, whose cost grows with
+// its boundary while the capsules' would grow with their area.
+constexpr double kThinStrokeWidth = 2;
+
+bool thin_round(const StrokeStyle& ss) {
+    return ss.join == LineJoin::Round && ss.cap == LineCap::Round && ss.width <= kThinStrokeWidth;
+}
+
+// Appends the segments of `path` (pixel space; curves flattened within `tolerance`) to `out`: its
+// closed contours with their closing segments, and a contour of one point as nothing, as stroke()
+// draws them.
+void append_segments(const Path& path, double tolerance, Polyline& flat, std::vector<LineSegment>& out) {
+    if (path.empty()) return;
+    flat.clear();
+    flatten(path, Affine{}, tolerance, flat);
+    std::size_t begin = 0;
+    for (std::size_t c = 0; c < flat.contour_ends.size(); ++c) {
+        const std::size_t end = flat.contour_ends[c];
+        if (end - begin >= 2) {
+            for (std::size_t i = begin + 1; i < end; ++i) out.push_back({flat.points[i - 1], flat.points[i]});
+            if (flat.closed[c]) out.push_back({flat.points[end - 1], flat.points[begin]});
+        }
+        begin = end;
+    }
+}
+
 // One feature made ready to draw: its pixel-space fill (or stroke outline) and colour.
 struct Drawable {
     Path path;
@@ -601,6 +629,39 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
         const std::optional<Color> line_color = layer.stroke ? layer.stroke : layer.fill;
         if (!line_color || !(layer.stroke_width > 0)) continue;
         ss.width = layer.stroke_width;
+        if (opts.sampled_strokes && thin_round(ss)) {
+            // The union of every feature's capsules, drawn from the segments directly
+            // (round_stroke.hpp): no outline, so nothing folds, and a shared border drawn twice
+            // covers what it covers once.
+            std::vector<LineSegment> segments;
+            auto make_lines = [&](int w, std::size_t feature, std::optional<Drawable>& out) {
+                PathVisitor v;
+                v.clip = stroke_clip;
+                build(w, feature, v);
+                if (!layer.stroke) v.fill.clear();  // a fill colour strokes lines only
+                if (!v.lines.empty() || !v.fill.empty())
+                    out = Drawable{std::move(v.lines), *line_color, std::move(v.fill)};
+            };
+            Polyline flat;
+            chunked(order, make_lines, [&](std::vector<std::optional<Drawable>>& chunk) {
+                for (const auto& d : chunk) {
+                    if (!d) continue;
+                    append_segments(d->path, opts.tolerance, flat, segments);
+                    append_segments(d->rings, opts.tolerance, flat, segments);
+                }
+            });
+            if (segments.empty()) continue;
+            target_clear = false;
+            Paint paint = Paint::solid(*line_color);
+            paint.opacity = layer.opacity;
+            std::vector<Mask> masks(static_cast<std::size_t>(threads));
+            parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
+                Mask& mask = masks[static_cast<std::size_t>(w)];
+                round_stroke_mask(segments, 0.5 * ss.width, bands[b], mask);
+                canvases[static_cast<std::size_t>(w)]->fill_mask(mask, paint);
+            });
+            continue;
+        }
         StrokeStyle chain_style = ss;
         chain_style.cap = LineCap::Butt;  // chain ends lie on segments or joins drawn by another chain
         Path outline;

@@ -81,6 +81,7 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
     mo.tolerance = opts.tolerance;
     mo.simplify = opts.simplify;
     mo.exact_overlaps = opts.exact_overlaps;
+    mo.sampled_strokes = opts.sampled_strokes;
     mo.threads = 1;  // the worker threads take a metatile each
     // The border nodes do not depend on the zoom: found once. Each level's simplified copy is made
     // in the frame of the world at that zoom, which a metatile's frame only translates.

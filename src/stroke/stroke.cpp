@@ -15,10 +15,13 @@
 // Shortcut: the inner side may go end -> X -> start, X where the two inner offset lines meet,
 // instead of through the pivot. As chains, pivot route = shortcut route + boundary of the
 // quadrilateral Q = (X, end, vertex, start), so the shortcut subtracts 1 from the winding inside Q.
-// Q reaches h * max(tan(theta/2), sin(theta)) back along each segment (theta: the turn angle), so
-// when that is at most half of both segment lengths, Q lies inside both rectangles and the quads
-// of the two ends of one segment cannot overlap: every point keeps winding >= 1 where it had it
-// (a point inside k quads lies in >= k + 1 rectangles). Without the "half" a small closed polygon
+// Q reaches h * max(tan(theta/2), sin(theta)) back along each segment (theta: the turn angle). Each
+// segment has a length budget shared by its two ends: a shortcut is taken when its reach fits in
+// what the other end of both segments has left (the whole length when the other end took the
+// pivot route or is a cap; joins are decided in contour order, so the other end is either decided
+// or still has its whole budget). Then Q lies inside both rectangles and the quads of the two
+// ends of one segment cannot overlap: every point keeps winding >= 1 where it had it (a point
+// inside k quads lies in >= k + 1 rectangles). Without the shared budget a small closed polygon
 // under a wide pen loses its centre (tested). Simple strokes then come out as simple polygons,
 // whose signed area is the exact stroke area.
 // Round joins and caps are inscribed polygons of the circle, with a step angle chosen so that the
@@ -69,6 +72,8 @@ public:
         const std::size_t nseg = closed ? np : np - 1;
         dir_.resize(nseg);
         len_.resize(nseg);
+        start_used_.assign(nseg, 0.0);
+        end_used_.assign(nseg, 0.0);
         for (std::size_t i = 0; i < nseg; ++i) {
             const Vec v = q_[(i + 1) % np] - q_[i];
             len_[i] = v.length();
@@ -77,10 +82,7 @@ public:
         left_.clear();
         right_.clear();
         if (closed) {
-            for (std::size_t i = 0; i < nseg; ++i) {
-                const std::size_t prev = (i + nseg - 1) % nseg;
-                join(q_[i], dir_[prev], dir_[i], len_[prev], len_[i]);
-            }
+            for (std::size_t i = 0; i < nseg; ++i) join(q_[i], (i + nseg - 1) % nseg, i);
             // A convex contour whose inside lies entirely within h of its sides (a dot drawn as a
             // small stroked circle, a thin rounded rectangle) leaves no hole: its inner side would
             // only add pivots over area the outer side already covers, and cost exact cells.
@@ -102,7 +104,7 @@ public:
         const Vec d0 = dir_[0], dn = dir_[nseg - 1];
         left_.push_back(q_[0] + perp(d0) * h_);
         right_.push_back(q_[0] - perp(d0) * h_);
-        for (std::size_t i = 1; i < nseg; ++i) join(q_[i], dir_[i - 1], dir_[i], len_[i - 1], len_[i]);
+        for (std::size_t i = 1; i < nseg; ++i) join(q_[i], i - 1, i);
         const Point end = q_[np - 1];
         left_.push_back(end + perp(dn) * h_);
         right_.push_back(end - perp(dn) * h_);
@@ -212,8 +214,9 @@ private:
         return poly.empty();
     }
 
-    // Join at vertex v between the incoming direction d1 and the outgoing d2.
-    void join(Point v, Vec d1, Vec d2, double l1, double l2) {
+    // Join at vertex v between segment `in` (ending at v) and segment `out` (starting there).
+    void join(Point v, std::size_t in, std::size_t out) {
+        const Vec d1 = dir_[in], d2 = dir_[out];
         check_size(8);
         const double cr = d1.cross(d2), dt = d1.dot(d2);
         if (cr == 0 && dt > 0) {  // straight on
@@ -256,7 +259,9 @@ private:
         const double sn = std::abs(cr);
         if (1 + dt > 1e-9) {
             const double need = h_ * std::max(sn / (1 + dt), sn);
-            if (need <= 0.5 * std::min(l1, l2)) {
+            if (need <= len_[in] - start_used_[in] && need <= len_[out] - end_used_[out]) {
+                end_used_[in] = need;
+                start_used_[out] = need;
                 inner.push_back(v - (n1 + n2) * (h_ / (1 + dt)));
                 return;
             }
@@ -297,6 +302,8 @@ private:
     std::vector<Point> q_, left_, right_;
     std::vector<Vec> dir_;
     std::vector<double> len_;
+    // Per segment: how far back along it the inner shortcut at its start and at its end reach.
+    std::vector<double> start_used_, end_used_;
 };
 
 }  // namespace

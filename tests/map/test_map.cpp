@@ -2,14 +2,19 @@
 // once, styles; checked against the independent exact-area reference (tests/support/reference_area).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "casteljau/error.hpp"
 #include "casteljau/map.hpp"
 #include "casteljau/seamless.hpp"
+#include "casteljau/stroke.hpp"
 #include "casteljau/threads.hpp"
 #include "map_test_util.hpp"
 
@@ -646,4 +651,86 @@ TEST_CASE("render_map into a new pixmap equals render_map onto a drawn one, laye
         CHECK(differ == 0);
         CHECK(fresh.pixel(400, 160).a != 0);  // Chad
     }
+}
+
+TEST_CASE("Map strokes: thin round strokes are the exact union of every feature's stroke", "[map][stroke]") {
+    // Wiggly rings (many vertices per pixel, folding and reversing), a ring sharing their border
+    // and an open line, stroked 0.8 px with round joins and caps: render_map against the union of
+    // every ring's and line's own stroke outline, filled exactly (the rasterizer's nonzero rule).
+    std::mt19937 rng(53);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<Point> wiggle;
+    for (int i = 0; i < 400; ++i) {
+        const double t = 2 * kPi * i / 400;
+        wiggle.push_back({30 + 18 * std::cos(t) + 0.6 * u(rng), 20 + 12 * std::sin(t) + 0.6 * u(rng)});
+    }
+    auto coords = [](const std::vector<Point>& pts, bool close) {
+        std::string s = "[";
+        char buf[64];
+        for (std::size_t i = 0; i < pts.size() + (close ? 1 : 0); ++i) {
+            const Point& p = pts[i % pts.size()];
+            std::snprintf(buf, sizeof buf, "%s[%.6f,%.6f]", i ? "," : "", p.x, p.y);
+            s += buf;
+        }
+        s += "]";
+        return s;
+    };
+    const std::vector<Point> square{{48, 20}, {58, 20}, {58, 30}, {48, 30}};
+    const std::vector<Point> line{{5, 35}, {20, 36.3}, {20.2, 36.1}, {5.5, 35.2}, {40, 37.7}};
+    auto feature = [](const char* kind, const std::string& coordinates) {
+        std::string f = R"({"type":"Feature","properties":{},"geometry":{"type":")";
+        f += kind;
+        f += R"(","coordinates":)";
+        f += coordinates;
+        f += "}}";
+        return f;
+    };
+    std::string json = R"({"type":"FeatureCollection","features":[)";
+    json += feature("Polygon", "[" + coords(wiggle, true) + "]");
+    json += ",";
+    json += feature("Polygon", "[" + coords(square, true) + "]");
+    json += ",";
+    json += feature("LineString", coords(line, false));
+    json += "]}";
+    const MapData d = read_geojson(json);
+    MapStyle st;
+    st.layers[0].fill.reset();
+    st.layers[0].stroke = Color::rgba(0, 0, 0, 255);
+    st.layers[0].stroke_width = 0.8;
+    MapOptions o;
+    o.width = 64;
+    o.height = 44;
+    o.bbox = Rect{0, 0, 64, 44};
+    o.simplify = 0;
+    const Pixmap pm = render_map(d, MapProjection{}, st, o);
+    // The frame maps (x, y) to (x, 44 - y).
+    Path all;
+    auto add = [&](const std::vector<Point>& pts, bool closed) {
+        Path p;
+        p.move_to({pts[0].x, 44 - pts[0].y});
+        for (std::size_t i = 1; i < pts.size(); ++i) p.line_to({pts[i].x, 44 - pts[i].y});
+        if (closed) p.close();
+        StrokeStyle ss;
+        ss.width = 0.8;
+        ss.join = LineJoin::Round;
+        ss.cap = LineCap::Round;
+        all.append(stroke(p, ss, Affine{}, 1e-3));
+    };
+    add(wiggle, true);
+    add(square, true);
+    add(line, false);
+    Rasterizer r;
+    FillOptions fo;
+    const Mask truth = r.fill_mask(all, Affine{}, fo, IRect{0, 0, 64, 44});
+    REQUIRE(r.last_stats().dense_cells == 0);
+    double worst = 0, sum = 0;
+    for (int y = 0; y < 44; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const double e = std::abs(pm.pixel(x, y).a - truth.at(x, y));
+            worst = std::max(worst, e);
+            sum += e;
+        }
+    INFO("max " << worst << "/255, mean " << sum / (64 * 44) << "/255");
+    CHECK(worst <= 8);
+    CHECK(sum / (64 * 44) <= 0.2);
 }

@@ -485,6 +485,30 @@ TEST_CASE("stroke: small closed polygon under a wide pen has no hole", "[stroke]
     }
 }
 
+TEST_CASE("stroke: inner shortcuts within each segment's shared length keep the union", "[stroke]") {
+    // Small non-convex closed polygons and polylines under wide pens: inner shortcuts whose reach
+    // takes most of a segment at one end and the pivot route at the other, against the union of
+    // the pieces at sample points.
+    std::mt19937 rng(77);
+    std::uniform_real_distribution<double> u(0, 1);
+    int checked = 0;
+    for (int iter = 0; iter < 400; ++iter) {
+        std::vector<Point> pts;
+        const int n = 4 + iter % 5;
+        for (int i = 0; i < n; ++i) {
+            const double a = 2 * kPi * i / n, r = (i % 2 ? 2.0 : 5.0) * (0.7 + 0.6 * u(rng));
+            pts.push_back({r * std::cos(a), r * std::sin(a)});
+        }
+        const bool closed = iter % 3 != 0;
+        const StrokeStyle st = style(4 + 10 * u(rng), LineCap::Butt, iter % 2 ? LineJoin::Round : LineJoin::Bevel);
+        Path p;
+        p.add_polygon(pts, closed);
+        INFO("iteration " << iter << " width " << st.width);
+        checked += check_against_reference(stroke(p, st, {}, 0.05), pts, closed, st, 0.05, rng, 300);
+    }
+    CHECK(checked > 60000);
+}
+
 TEST_CASE("stroke: rasterized overlapping outline matches the supersampled reference region", "[stroke]") {
     // The whole pipeline: stroke -> nonzero fill with exact overlaps. The zig-zag's pieces overlap
     // heavily (inner joins through the pivots); coverage must still be the union's area per pixel.

@@ -1,0 +1,143 @@
+// round_stroke_mask against the exact-area reference: the union of round-joined, round-capped
+// strokes (stroke() at a fine tolerance, then the slab reference of tests/support) on random
+// polylines with short segments, sharp and reversing turns, repeated and overlapping copies,
+// widths 0.1 to 20 px; the bound of casteljau/round_stroke.hpp on horizontal boundaries; bad input.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "casteljau/error.hpp"
+#include "casteljau/round_stroke.hpp"
+#include "casteljau/stroke.hpp"
+
+#include "reference_area.hpp"
+
+using namespace casteljau;
+
+namespace {
+
+struct Error255 {
+    double max = 0, sum = 0;
+    std::size_t pixels = 0;
+};
+
+// The exact union of the round strokes of `lines` (width 2 r), as coverage in [0, 1].
+ref::CoverageGrid reference(const std::vector<std::vector<Point>>& lines, double r, const IRect& clip) {
+    Path p;
+    for (const auto& l : lines) {
+        p.move_to(l[0]);
+        for (std::size_t i = 1; i < l.size(); ++i) p.line_to(l[i]);
+    }
+    StrokeStyle st;
+    st.width = 2 * r;
+    st.join = LineJoin::Round;
+    st.cap = LineCap::Round;
+    // Arcs within 1e-4 px of the circle: the reference is the union to well under 1/255.
+    const Path outline = stroke(p, st, Affine{}, 1e-4);
+    return ref::slab_area(ref::fine_flatten(outline, Affine{}), FillRule::NonZero, clip);
+}
+
+Error255 compare(const Mask& m, const ref::CoverageGrid& truth) {
+    Error255 e;
+    for (int y = m.bounds.y0; y < m.bounds.y1; ++y)
+        for (int x = m.bounds.x0; x < m.bounds.x1; ++x) {
+            const double d = std::abs(m.at(x, y) - 255 * truth.at(x, y));
+            e.max = std::max(e.max, d);
+            e.sum += d;
+            ++e.pixels;
+        }
+    return e;
+}
+
+std::vector<LineSegment> segments_of(const std::vector<std::vector<Point>>& lines) {
+    std::vector<LineSegment> segs;
+    for (const auto& l : lines) {
+        if (l.size() == 1) segs.push_back({l[0], l[0]});
+        for (std::size_t i = 1; i < l.size(); ++i) segs.push_back({l[i - 1], l[i]});
+    }
+    return segs;
+}
+
+}  // namespace
+
+TEST_CASE("round_stroke_mask: random thin polylines against the exact union", "[raster][round_stroke]") {
+    std::mt19937 rng(41);
+    std::uniform_real_distribution<double> u(0, 1);
+    double worst = 0, mean_worst = 0;
+    for (int trial = 0; trial < 120; ++trial) {
+        const double width = trial < 100 ? 0.1 + 2.4 * u(rng) * u(rng) : 2 + 18 * u(rng);
+        const double r = width / 2;
+        std::vector<std::vector<Point>> lines(1 + trial % 3);
+        for (auto& l : lines) {
+            Point p{4 + 16 * u(rng), 4 + 16 * u(rng)};
+            double heading = 2 * kPi * u(rng);
+            const int n = 2 + static_cast<int>(u(rng) * 40);
+            l.push_back(p);
+            for (int i = 0; i < n; ++i) {
+                // Short steps (down to 0.01 px), sharp turns, and now and then a reversal.
+                const double turn = u(rng) < 0.15 ? kPi : (u(rng) - 0.5) * 2.6;
+                heading += turn;
+                const double step = u(rng) < 0.5 ? 0.01 + 0.3 * u(rng) : 0.3 + 3 * u(rng);
+                p = {std::clamp(p.x + step * std::cos(heading), 2.0, 22.0),
+                     std::clamp(p.y + step * std::sin(heading), 2.0, 22.0)};
+                l.push_back(p);
+            }
+        }
+        const IRect clip{-20, -20, 45, 45};
+        const Mask m = round_stroke_mask(segments_of(lines), r, clip);
+        const Error255 e = compare(m, reference(lines, r, clip));
+        INFO("trial " << trial << " width " << width << ": max " << e.max << "/255");
+        CHECK(e.max <= 8.0);
+        worst = std::max(worst, e.max);
+        mean_worst = std::max(mean_worst, e.sum / static_cast<double>(e.pixels));
+    }
+    WARN("round strokes: worst pixel " << worst << "/255, worst mean " << mean_worst << "/255");
+    CHECK(mean_worst <= 0.2);
+}
+
+TEST_CASE("round_stroke_mask: a horizontal line of 0.8 px at every phase stays within the bound",
+          "[raster][round_stroke]") {
+    // Both sides of the line run horizontally through one pixel row: 1/(2 lines) each at most.
+    for (int k = 0; k < 64; ++k) {
+        const double y = 5 + k / 64.0 + 0.003;
+        const std::vector<std::vector<Point>> lines{{{2.2, y}, {14.7, y}}};
+        const IRect clip{0, 0, 18, 10};
+        const Mask m = round_stroke_mask(segments_of(lines), 0.4, clip);
+        const Error255 e = compare(m, reference(lines, 0.4, clip));
+        INFO("y " << y);
+        CHECK(e.max <= 255.0 / kRoundStrokeLines + 0.5);  // both sides, and the rounding to 1/255
+    }
+}
+
+TEST_CASE("round_stroke_mask: a disc, repeated segments and a clip cutting the stroke", "[raster][round_stroke]") {
+    // A zero-length segment is a disc; ten copies of a segment cover what one covers.
+    const std::vector<LineSegment> disc{{{5.3, 5.6}, {5.3, 5.6}}};
+    const Mask d = round_stroke_mask(disc, 2.5, {0, 0, 11, 11});
+    double area = 0;
+    for (std::uint8_t v : d.data) area += v / 255.0;
+    CHECK(std::abs(area - kPi * 2.5 * 2.5) < 0.05);
+    const LineSegment s{{1.2, 3.3}, {9.7, 6.1}};
+    const Mask one = round_stroke_mask(std::vector<LineSegment>{s}, 0.6, {0, 0, 12, 10});
+    const Mask ten = round_stroke_mask(std::vector<LineSegment>(10, s), 0.6, {0, 0, 12, 10});
+    CHECK(one.data == ten.data);
+    // A clip that cuts the stroke gives the same pixels as the whole, inside it.
+    const Mask part = round_stroke_mask(std::vector<LineSegment>{s}, 0.6, {3, 2, 7, 5});
+    for (int y = 2; y < 5; ++y)
+        for (int x = 3; x < 7; ++x) CHECK(part.at(x, y) == one.at(x, y));
+}
+
+TEST_CASE("round_stroke_mask: bad input is an error", "[raster][round_stroke]") {
+    const std::vector<LineSegment> ok{{{1, 1}, {5, 5}}};
+    CHECK_THROWS_AS(round_stroke_mask(ok, 0, {0, 0, 8, 8}), Error);
+    CHECK_THROWS_AS(round_stroke_mask(ok, NAN, {0, 0, 8, 8}), Error);
+    CHECK_THROWS_AS(round_stroke_mask(ok, INFINITY, {0, 0, 8, 8}), Error);
+    CHECK_THROWS_AS(round_stroke_mask(ok, 1, {0, 0, 8, 8}, 0), Error);
+    CHECK_THROWS_AS(round_stroke_mask(ok, 1, {0, 0, 8, 8}, kMaxRoundStrokeLines + 1), Error);
+    const std::vector<LineSegment> bad{{{1, NAN}, {5, 5}}};
+    CHECK_THROWS_AS(round_stroke_mask(bad, 1, {0, 0, 8, 8}), Error);
+    CHECK_THROWS_AS(round_stroke_mask(ok, 1, {0, 0, limits::kMaxCanvasDimension + 1, 8}), Error);
+    CHECK(round_stroke_mask(ok, 1, {0, 0, 0, 0}).data.empty());
+}
