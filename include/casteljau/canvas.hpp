@@ -127,6 +127,8 @@ public:
     Rasterizer& rasterizer() { return raster_; }
 
 private:
+    IRect reach(const Path& path) const;
+
     struct State {
         Affine transform;
         IRect clip;

@@ -102,11 +102,26 @@ void Canvas::clip_rect(const Rect& r) {
     clip_path(p, FillRule::NonZero);
 }
 
+// The part of the current clip that `path` (under the current transform) can cover: its transformed
+// control bounds, which hold its curves, in whole pixels. The current clip itself when the bounds are
+// not finite (the rasterizer then refuses the path).
+IRect Canvas::reach(const Path& path) const {
+    const Rect b = transform_bounds(state_.transform, path.control_bounds());
+    const IRect& c = state_.clip;
+    if (!std::isfinite(b.x0) || !std::isfinite(b.y0) || !std::isfinite(b.x1) || !std::isfinite(b.y1)) return c;
+    auto to_int = [](double v, int lo, int hi) {
+        return static_cast<int>(std::clamp(v, static_cast<double>(lo), static_cast<double>(hi)));
+    };
+    IRect r{to_int(std::floor(b.x0), c.x0, c.x1), to_int(std::floor(b.y0), c.y0, c.y1),
+            to_int(std::ceil(b.x1), c.x0, c.x1), to_int(std::ceil(b.y1), c.y0, c.y1)};
+    return r;
+}
+
 void Canvas::clip_path(const Path& path, FillRule rule) {
     FillOptions opts = fill_options_;
     opts.rule = rule;
     Mask m;
-    if (!state_.clip.empty() && !path.empty()) m = raster_.fill_mask(path, state_.transform, opts, state_.clip);
+    if (!state_.clip.empty() && !path.empty()) m = raster_.fill_mask(path, state_.transform, opts, reach(path));
     if (m.bounds.empty()) {
         state_.clip = {state_.clip.x0, state_.clip.y0, state_.clip.x0, state_.clip.y0};
         state_.clip_mask.reset();

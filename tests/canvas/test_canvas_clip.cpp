@@ -124,3 +124,39 @@ TEST_CASE("clear fills the clip only, its anti-aliased edge blended by coverage"
     CHECK(std::abs(pm.pixel(4, 0).b - 128) <= 1);
     CHECK(pm.pixel(6, 0) == PremulPixel{0, 0, 255, 255});
 }
+
+TEST_CASE("clip_path: rotated clips reaching past the canvas, or wholly outside it", "[canvas][clip]") {
+    // The clip is rasterized only where its transformed bounds meet the current clip: the pixels
+    // must be those of the clip's coverage over the whole canvas times the shape's.
+    const int w = 40, h = 30;
+    Path shape;
+    shape.add_rect(Rect{-5, -5, 45, 35});
+    Path clip;
+    clip.add_ellipse({36.2, 4.7}, 14.3, 6.1);  // reaches past the top right corner
+    const Affine rot = Affine::translate(20, 15) * Affine::rotate(0.7) * Affine::translate(-20, -15);
+    Rasterizer r;
+    const Mask mc = r.fill_mask(clip, rot, FillOptions{}, IRect{0, 0, w, h});
+    Pixmap pm(w, h);
+    Canvas c(pm);
+    c.set_transform(rot);
+    c.clip_path(clip);
+    c.reset_transform();
+    c.fill_path(shape, Paint::solid(Color::white()));
+    int bad = 0, inked = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            bad += pm.pixel(x, y).a != mc.at(x, y);
+            inked += pm.pixel(x, y).a != 0;
+        }
+    CHECK(inked > 20);
+    CHECK(bad == 0);
+    // A clip wholly outside the canvas leaves nothing to draw.
+    Pixmap none(w, h);
+    Canvas d(none);
+    Path far;
+    far.add_circle({200, 200}, 5);
+    d.clip_path(far);
+    d.fill_path(shape, Paint::solid(Color::white()));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) CHECK(none.pixel(x, y).a == 0);
+}
