@@ -106,9 +106,9 @@ std::vector<Capsule> capsules_in(std::span<const LineSegment> segments, double r
     for (const LineSegment& s : segments) {
         if (!s.a.is_finite() || !s.b.is_finite())
             throw Error(ErrorKind::InvalidArgument, "round_stroke_mask: segment coordinates must be finite");
+        if (std::max(s.a.y, s.b.y) + r <= clip.y0 || std::min(s.a.y, s.b.y) - r >= clip.y1) continue;
+        if (std::max(s.a.x, s.b.x) + r <= clip.x0 || std::min(s.a.x, s.b.x) - r >= clip.x1) continue;
         const Capsule k = make_capsule(s, r);
-        if (k.y1 <= clip.y0 || k.y0 >= clip.y1) continue;
-        if (std::max(s.a.x, s.b.x) + r <= clip.x0 || k.x0 >= clip.x1) continue;
         caps.push_back(k);
     }
     std::sort(caps.begin(), caps.end(), [](const Capsule& p, const Capsule& q) { return p.y0 < q.y0; });
@@ -153,6 +153,26 @@ struct RowCoverage {
         to = -1;
     }
 };
+
+// Sorts a line's intervals by their left ends. They arrive nearly sorted (short capsules in order
+// of their left ends), so insertion costs little; long capsules crossing each other can undo that,
+// and past a few moves per interval a full sort takes over, so a line never costs the square of
+// its intervals.
+void sort_spans(std::vector<std::pair<double, double>>& spans) {
+    const std::size_t limit = 4 * spans.size() + 64;
+    std::size_t moves = 0;
+    for (std::size_t a = 1; a < spans.size(); ++a) {
+        const std::pair<double, double> v = spans[a];
+        std::size_t b = a;
+        for (; b > 0 && spans[b - 1].first > v.first; --b) spans[b] = spans[b - 1];
+        spans[b] = v;
+        moves += a - b;
+        if (moves > limit) {
+            std::sort(spans.begin(), spans.end());
+            return;
+        }
+    }
+}
 
 }  // namespace
 
@@ -208,12 +228,7 @@ void round_stroke_mask(std::span<const LineSegment> segments, double radius, con
                 double lo, hi;
                 if (c > k.y0 && c < k.y1 && capsule_section(k, radius, c, lo, hi)) spans.emplace_back(lo, hi);
             }
-            for (std::size_t a = 1; a < spans.size(); ++a) {  // insertion: nearly sorted already
-                const std::pair<double, double> v = spans[a];
-                std::size_t b = a;
-                for (; b > 0 && spans[b - 1].first > v.first; --b) spans[b] = spans[b - 1];
-                spans[b] = v;
-            }
+            sort_spans(spans);
             for (std::size_t a = 0; a < spans.size();) {
                 double lo = spans[a].first, hi = spans[a].second;
                 for (++a; a < spans.size() && spans[a].first <= hi; ++a) hi = std::max(hi, spans[a].second);

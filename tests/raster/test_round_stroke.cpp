@@ -141,3 +141,22 @@ TEST_CASE("round_stroke_mask: bad input is an error", "[raster][round_stroke]") 
     CHECK_THROWS_AS(round_stroke_mask(ok, 1, {0, 0, limits::kMaxCanvasDimension + 1, 8}), Error);
     CHECK(round_stroke_mask(ok, 1, {0, 0, 0, 0}).data.empty());
 }
+
+TEST_CASE("round_stroke_mask: long crossing segments give the same pixels in any order", "[raster][round_stroke]") {
+    // Hundreds of long segments crossing every which way: each line's intervals arrive far from
+    // sorted (the sort falls back from insertion), and the union must not depend on their order.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0, 64);
+    std::vector<LineSegment> segs;
+    for (int i = 0; i < 400; ++i) segs.push_back({{u(rng), u(rng)}, {u(rng), u(rng)}});
+    const Mask a = round_stroke_mask(segs, 0.3, {0, 0, 64, 64});
+    std::reverse(segs.begin(), segs.end());
+    const Mask b = round_stroke_mask(segs, 0.3, {0, 0, 64, 64});
+    std::shuffle(segs.begin(), segs.end(), rng);
+    const Mask c = round_stroke_mask(segs, 0.3, {0, 0, 64, 64});
+    CHECK(a.data == b.data);
+    CHECK(a.data == c.data);
+    std::size_t full = 0;
+    for (std::uint8_t v : a.data) full += v == 255;
+    CHECK(full > 500);
+}
