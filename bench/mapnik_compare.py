@@ -72,6 +72,14 @@ def best(rounds, cmd):
     return min(r[0] for r in results), max(r[1] for r in results), min(printed) if printed else None
 
 
+# Both Mapnik programs' style: the fill and the round-joined, round-capped stroke, in `s`.
+MAPNIK_STYLE = "; ".join([
+    "s = mapnik.Style()", "r = mapnik.Rule()",
+    "poly = mapnik.PolygonSymbolizer()", "poly.fill = mapnik.Color(%r)" % FILL, "r.symbols.append(poly)",
+    "line = mapnik.LineSymbolizer()", "line.stroke = mapnik.Color(%r)" % STROKE, "line.stroke_width = %r" % WIDTH,
+    "line.stroke_linejoin = mapnik.stroke_linejoin.ROUND_JOIN",
+    "line.stroke_linecap = mapnik.stroke_linecap.ROUND_CAP", "r.symbols.append(line)", "s.rules.append(r)"])
+
 # The Mapnik side runs in a fresh /usr/bin/python3 process per measurement (its whole-process time
 # is the point), from this program's text.
 MAPNIK_MAP = textwrap.dedent("""
@@ -79,18 +87,7 @@ MAPNIK_MAP = textwrap.dedent("""
     kind, path, width, out = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
     m = mapnik.Map(width, width // 2, "%(longlat)s")
     m.background = mapnik.Color("%(background)s")
-    s = mapnik.Style()
-    r = mapnik.Rule()
-    poly = mapnik.PolygonSymbolizer()
-    poly.fill = mapnik.Color("%(fill)s")
-    r.symbols.append(poly)
-    line = mapnik.LineSymbolizer()
-    line.stroke = mapnik.Color("%(stroke)s")
-    line.stroke_width = %(width)r
-    line.stroke_linejoin = mapnik.stroke_linejoin.ROUND_JOIN
-    line.stroke_linecap = mapnik.stroke_linecap.ROUND_CAP
-    r.symbols.append(line)
-    s.rules.append(r)
+    %(style)s
     m.append_style("countries", s)
     layer = mapnik.Layer("countries", "%(longlat)s")
     layer.datasource = mapnik.Datasource(type=kind, file=path)
@@ -104,24 +101,13 @@ MAPNIK_MAP = textwrap.dedent("""
     t = time.process_time() - t0
     open(out, "wb").write(png)
     print(t)
-""" % {"longlat": LONGLAT, "background": BACKGROUND, "fill": FILL, "stroke": STROKE, "width": WIDTH})
+""" % {"longlat": LONGLAT, "background": BACKGROUND, "style": MAPNIK_STYLE})
 
 MAPNIK_TILES = textwrap.dedent("""
     import os, sys, time, mapnik
     kind, path, outdir, z0, z1, tile, meta, buf = sys.argv[1], sys.argv[2], sys.argv[3], *map(int, sys.argv[4:9])
     half = %(half)r
-    s = mapnik.Style()
-    r = mapnik.Rule()
-    poly = mapnik.PolygonSymbolizer()
-    poly.fill = mapnik.Color("%(fill)s")
-    r.symbols.append(poly)
-    line = mapnik.LineSymbolizer()
-    line.stroke = mapnik.Color("%(stroke)s")
-    line.stroke_width = %(width)r
-    line.stroke_linejoin = mapnik.stroke_linejoin.ROUND_JOIN
-    line.stroke_linecap = mapnik.stroke_linecap.ROUND_CAP
-    r.symbols.append(line)
-    s.rules.append(r)
+    %(style)s
     layer = mapnik.Layer("countries", "%(longlat)s")
     layer.datasource = mapnik.Datasource(type=kind, file=path)
     layer.styles.append("countries")
@@ -149,8 +135,8 @@ MAPNIK_TILES = textwrap.dedent("""
                         open(os.path.join(d, "%%d.png" %% (y0 + j)), "wb").write(png)
                         tiles += 1
     print(time.process_time() - t0, tiles)
-""" % {"half": HALF, "longlat": LONGLAT, "mercator": MERCATOR, "background": BACKGROUND, "fill": FILL,
-       "stroke": STROKE, "width": WIDTH})
+""" % {"half": HALF, "longlat": LONGLAT, "mercator": MERCATOR, "background": BACKGROUND,
+       "style": MAPNIK_STYLE})
 
 
 def have_mapnik():

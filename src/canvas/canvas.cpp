@@ -49,6 +49,11 @@ private:
 
 bool is_integer(double v) { return std::isfinite(v) && v == std::floor(v); }
 
+// v clamped to [lo, hi], as an int.
+int to_int(double v, int lo, int hi) {
+    return static_cast<int>(std::clamp(v, static_cast<double>(lo), static_cast<double>(hi)));
+}
+
 }  // namespace
 
 Canvas::Canvas(Pixmap& target) : target_(&target) { state_.clip = {0, 0, target.width(), target.height()}; }
@@ -74,9 +79,6 @@ void Canvas::clip_rect(const Rect& r) {
         const Rect b = transform_bounds(m, r);
         if (is_integer(b.x0) && is_integer(b.y0) && is_integer(b.x1) && is_integer(b.y1)) {
             // Whole pixels: the rectangle alone (the mask, if any, is cut to it).
-            auto to_int = [](double v, int lo, int hi) {
-                return static_cast<int>(std::clamp(v, static_cast<double>(lo), static_cast<double>(hi)));
-            };
             const IRect c{to_int(b.x0, 0, width()), to_int(b.y0, 0, height()), to_int(b.x1, 0, width()),
                           to_int(b.y1, 0, height())};
             IRect n{std::max(state_.clip.x0, c.x0), std::max(state_.clip.y0, c.y0), std::min(state_.clip.x1, c.x1),
@@ -109,12 +111,8 @@ IRect Canvas::reach(const Path& path) const {
     const Rect b = transform_bounds(state_.transform, path.control_bounds());
     const IRect& c = state_.clip;
     if (!std::isfinite(b.x0) || !std::isfinite(b.y0) || !std::isfinite(b.x1) || !std::isfinite(b.y1)) return c;
-    auto to_int = [](double v, int lo, int hi) {
-        return static_cast<int>(std::clamp(v, static_cast<double>(lo), static_cast<double>(hi)));
-    };
-    IRect r{to_int(std::floor(b.x0), c.x0, c.x1), to_int(std::floor(b.y0), c.y0, c.y1),
-            to_int(std::ceil(b.x1), c.x0, c.x1), to_int(std::ceil(b.y1), c.y0, c.y1)};
-    return r;
+    return IRect{to_int(std::floor(b.x0), c.x0, c.x1), to_int(std::floor(b.y0), c.y0, c.y1),
+                 to_int(std::ceil(b.x1), c.x0, c.x1), to_int(std::ceil(b.y1), c.y0, c.y1)};
 }
 
 void Canvas::clip_path(const Path& path, FillRule rule) {

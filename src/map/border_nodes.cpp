@@ -5,31 +5,17 @@
 // so a pair compares as two integers.
 #include "map/border_nodes.hpp"
 
-#include <bit>
 #include <cmath>
 #include <limits>
 
 #include "casteljau/error.hpp"
+#include "map/point_hash.hpp"
 
 namespace casteljau::map_detail {
 
 namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-
-std::uint64_t mix(std::uint64_t h) {
-    h ^= h >> 33;
-    h *= 0xff51afd7ed558ccdull;
-    h ^= h >> 33;
-    h *= 0xc4ceb9fe1a85ec53ull;
-    h ^= h >> 33;
-    return h;
-}
-
-std::uint64_t hash_point(Point p) {
-    // + 0.0 turns -0.0 into +0.0, which compares equal to it.
-    return mix(std::bit_cast<std::uint64_t>(p.x + 0.0) ^ mix(std::bit_cast<std::uint64_t>(p.y + 0.0)));
-}
 
 // Open addressing with linear probing, the entries in the slots themselves (one cache miss per
 // lookup, which the callers prefetch ahead of time). Slot index = entry id.

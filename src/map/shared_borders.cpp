@@ -6,31 +6,20 @@
 // pts_[base + j] between pts_[base + j - 1] and pts_[base + j + 1] for 1 <= j <= n (j = n is the
 // first position). The two hash tables hold the index of a segment's first position or of a join's
 // vertex (plus one), compared by the positions themselves, so the answers are exact.
-#include <bit>
 #include <cstring>
 
 #include "casteljau/error.hpp"
 #include "casteljau/map.hpp"
+#include "map/point_hash.hpp"
 
 namespace casteljau {
 
 namespace {
 
+using map_detail::hash_point;
+using map_detail::mix;
+
 constexpr std::size_t kMaxPositions = std::size_t(1) << 31;
-
-std::uint64_t mix(std::uint64_t h) {
-    h ^= h >> 33;
-    h *= 0xff51afd7ed558ccdull;
-    h ^= h >> 33;
-    h *= 0xc4ceb9fe1a85ec53ull;
-    h ^= h >> 33;
-    return h;
-}
-
-std::uint64_t hash_point(Point p) {
-    // + 0.0 turns -0.0 into +0.0, which compares equal to it.
-    return mix(std::bit_cast<std::uint64_t>(p.x + 0.0) ^ mix(std::bit_cast<std::uint64_t>(p.y + 0.0)));
-}
 
 bool same(Point a, Point b) { return a.x == b.x && a.y == b.y; }
 
