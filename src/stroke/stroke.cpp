@@ -15,15 +15,17 @@
 // Shortcut: the inner side may go end -> X -> start, X where the two inner offset lines meet,
 // instead of through the pivot. As chains, pivot route = shortcut route + boundary of the
 // quadrilateral Q = (X, end, vertex, start), so the shortcut subtracts 1 from the winding inside Q.
-// Q reaches h * max(tan(theta/2), sin(theta)) back along each segment (theta: the turn angle). Each
-// segment has a length budget shared by its two ends: a shortcut is taken when its reach fits in
-// what the other end of both segments has left (the whole length when the other end took the
-// pivot route or is a cap; joins are decided in contour order, so the other end is either decided
-// or still has its whole budget). Then Q lies inside both rectangles and the quads of the two
-// ends of one segment cannot overlap: every point keeps winding >= 1 where it had it (a point
-// inside k quads lies in >= k + 1 rectangles). Without the shared budget a small closed polygon
-// under a wide pen loses its centre (tested). Simple strokes then come out as simple polygons,
-// whose signed area is the exact stroke area.
+// Q reaches h * max(tan(theta/2), sin(theta)) back along each segment (theta: the turn angle). A
+// shortcut is taken when that reach fits in the length of both segments: then Q lies inside both
+// rectangles, Q_j inside rect(j-1) and rect(j). A point inside the quads of k distinct joins then
+// lies in the rectangles of every segment next to those joins, and k vertices of a chain touch at
+// least k + 1 segments: its winding stays >= 1. A closed contour is a cycle, where all n vertices
+// touch only n segments, so a point inside every quad would lose its winding (a small closed
+// polygon under a wide pen would lose its centre, tested). There the two quads at the ends of the
+// first segment must not meet: their reaches along it are kept within its length together, and no
+// point lies in every quad. Smooth curves then take the shortcut wherever their radius of
+// curvature exceeds about h, and simple strokes come out as simple polygons, whose signed area is
+// the exact stroke area.
 // Round joins and caps are inscribed polygons of the circle, with a step angle chosen so that the
 // sagitta stays below the tolerance: r (1 - cos(phi/2)) <= tol, i.e. phi = 4 asin(sqrt(tol / 2r)).
 #include <algorithm>
@@ -72,8 +74,8 @@ public:
         const std::size_t nseg = closed ? np : np - 1;
         dir_.resize(nseg);
         len_.resize(nseg);
-        start_used_.assign(nseg, 0.0);
-        end_used_.assign(nseg, 0.0);
+        closed_ = closed;
+        first_reach_ = 0;
         for (std::size_t i = 0; i < nseg; ++i) {
             const Vec v = q_[(i + 1) % np] - q_[i];
             len_[i] = v.length();
@@ -259,9 +261,11 @@ private:
         const double sn = std::abs(cr);
         if (1 + dt > 1e-9) {
             const double need = h_ * std::max(sn / (1 + dt), sn);
-            if (need <= len_[in] - start_used_[in] && need <= len_[out] - end_used_[out]) {
-                end_used_[in] = need;
-                start_used_[out] = need;
+            // On a closed contour the joins at vertex 0 (out = 0) and vertex 1 (in = 0) share the
+            // first segment's length; they are decided in that order.
+            const double shared = closed_ && in == 0 ? first_reach_ : 0;
+            if (need <= len_[in] - shared && need <= len_[out]) {
+                if (closed_ && out == 0) first_reach_ = need;
                 inner.push_back(v - (n1 + n2) * (h_ / (1 + dt)));
                 return;
             }
@@ -302,8 +306,8 @@ private:
     std::vector<Point> q_, left_, right_;
     std::vector<Vec> dir_;
     std::vector<double> len_;
-    // Per segment: how far back along it the inner shortcut at its start and at its end reach.
-    std::vector<double> start_used_, end_used_;
+    bool closed_ = false;
+    double first_reach_ = 0;  // closed contour: how far the shortcut at vertex 0 reaches along segment 0
 };
 
 }  // namespace

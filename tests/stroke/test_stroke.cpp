@@ -485,6 +485,30 @@ TEST_CASE("stroke: small closed polygon under a wide pen has no hole", "[stroke]
     }
 }
 
+TEST_CASE("stroke: a small pentagram under a wide pen keeps its centre", "[stroke]") {
+    // A five-pointed star {5/2} turns the same way at every point (twice round in all), so it is
+    // not outlined as a convex contour. With edge 16 and a pen of radius 5, each inner shortcut's
+    // reach (5 tan 72 deg = 15.4) fits in its two edges, and the centre lies inside all five quads
+    // the shortcuts would cut out, as it lies inside all five edge rectangles (0.16 x 16 = 2.6
+    // from each edge line): five shortcuts would leave it with winding 0. The two joins at the
+    // ends of the first edge share its length, so one of them goes through its pivot.
+    const double edge = 16, radius = edge / (2 * std::sin(0.4 * kPi));
+    std::vector<Point> pts;
+    for (int k = 0; k < 5; ++k) {
+        const double a = 0.5 * kPi + k * 0.8 * kPi;
+        pts.push_back({radius * std::cos(a), radius * std::sin(a)});
+    }
+    Path p;
+    p.add_polygon(pts, true);
+    for (LineJoin j : {LineJoin::Miter, LineJoin::Bevel, LineJoin::Round}) {
+        const StrokeStyle st = style(10, LineCap::Butt, j);
+        const Path s = stroke(p, st);
+        CHECK(inside(s, {0, 0}));
+        std::mt19937 rng(5);
+        CHECK(check_against_reference(s, pts, true, st, 0.05, rng, 2000) > 1500);
+    }
+}
+
 TEST_CASE("stroke: inner shortcuts within each segment's shared length keep the union", "[stroke]") {
     // Small non-convex closed polygons and polylines under wide pens: inner shortcuts whose reach
     // takes most of a segment at one end and the pivot route at the other, against the union of
