@@ -33,8 +33,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
-#include "raster/row_vector-inl.h"   // the library's row-vector kernel, for every target
-#include "raster/simd_dispatch.hpp"  // the library's dispatch (no libhwy)
+#include "raster/row_vector-inl.h"  // the library's row-vector kernel, for every target
+#include "core/simd_dispatch.hpp"   // the library's dispatch (no libhwy)
 
 #include <algorithm>
 #include <cmath>

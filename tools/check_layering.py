@@ -59,6 +59,7 @@ INTERNAL_INTERFACES = {
     "core/for_each_index.hpp",
     "core/pixel_memory.hpp",
     "core/runtime_library.hpp",
+    "core/simd_dispatch.hpp",
     "path/flatten_internal.hpp",
     "curves/curve_util.hpp",
     "paint/pixel_math.hpp",

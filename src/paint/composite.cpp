@@ -11,26 +11,14 @@
 
 #include "casteljau/paint.hpp"
 #include "paint/pixel_math.hpp"
+#include "paint/solid_over.hpp"
 
 namespace casteljau {
 
 namespace {
 
-using pixel::div65025;
+using pixel::source_over;
 using pixel::unit_to_byte;
-
-// Source-over of premultiplied S x coverage c onto premultiplied D, in place:
-// out = S c / 255 + D (1 - Sa c / 255^2), rounded once. Both terms are kept over the common
-// denominator 255^2 = 65025; the numerator stays below 255 x 65025 < 2^24 and, 65025 being odd,
-// never ends in exactly one half, so rounding is never a tie.
-inline void source_over(std::uint8_t* d, const std::uint8_t* s, unsigned c) {
-    const unsigned keep = 65025u - s[3] * c;
-    const unsigned sc = 255u * c;
-    d[0] = div65025(s[0] * sc + d[0] * keep);
-    d[1] = div65025(s[1] * sc + d[1] * keep);
-    d[2] = div65025(s[2] * sc + d[2] * keep);
-    d[3] = div65025(s[3] * sc + d[3] * keep);
-}
 
 struct LinearTables {
     std::array<float, 256> to_linear{};
@@ -96,38 +84,7 @@ void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage,
     if (paint.linear_blend) return composite_linear(dst, length, coverage, color);
     const PremulPixel s = premultiply(color);
     const std::uint8_t solid[4] = {s.r, s.g, s.b, s.a};
-    // Eight pixels of the opaque colour, for runs of full coverage.
-    std::uint8_t solid8[32];
-    for (int k = 0; k < 8; ++k) std::memcpy(solid8 + 4 * k, solid, 4);
-    const bool opaque = s.a == 255;
-    constexpr std::uint64_t kNone = 0, kFull = ~std::uint64_t(0);
-    int i = 0;
-    while (i < length) {
-        // Coverage is mostly runs of 0 (outside the shape) and 255 (inside): eight at a time.
-        if (i + 8 <= length) {
-            std::uint64_t word;
-            std::memcpy(&word, coverage + i, 8);
-            if (word == kNone) {
-                i += 8;
-                continue;
-            }
-            if (word == kFull && opaque) {
-                std::memcpy(dst + 4 * static_cast<std::size_t>(i), solid8, 32);
-                i += 8;
-                continue;
-            }
-        }
-        const int end = std::min(length, i + 8);
-        for (; i < end; ++i) {
-            const unsigned c = coverage[i];
-            if (c == 0) continue;
-            std::uint8_t* d = dst + 4 * static_cast<std::size_t>(i);
-            if (c == 255 && opaque)
-                std::memcpy(d, solid, 4);
-            else
-                source_over(d, solid, c);
-        }
-    }
+    paint_simd::solid_over_span(dst, length, coverage, solid);
 }
 
 void composite_span_premul(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src) {

@@ -14,7 +14,7 @@
 #include <cstring>
 
 #include "raster/raster_internal.hpp"
-#include "raster/simd_dispatch.hpp"
+#include "core/simd_dispatch.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace casteljau::raster {

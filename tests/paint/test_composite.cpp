@@ -12,6 +12,9 @@
 #include <vector>
 
 #include "casteljau/canvas.hpp"
+#include "core/simd_dispatch.hpp"
+#include "paint/pixel_math.hpp"
+#include "paint/solid_over.hpp"
 
 using namespace casteljau;
 
@@ -279,4 +282,48 @@ TEST_CASE(
         }
     INFO(wrong << " of " << checked << " pixels differ");
     CHECK(wrong == 0);
+}
+
+TEST_CASE("solid source-over: the float quotient is floor(t / 65025) for every t below 2^24", "[composite]") {
+    long wrong = 0;
+    for (std::int32_t t = 0; t < (1 << 24); ++t) {
+        const auto q = static_cast<std::int32_t>(static_cast<float>(t) * paint_simd::kInv65025);
+        wrong += q != t / 65025;
+    }
+    CHECK(wrong == 0);
+}
+
+TEST_CASE("solid source-over: every instruction set gives the scalar formula for every coverage and destination",
+          "[composite]") {
+    // Pixel i of the span has coverage i mod 256 and destination channels (i / 256) mod 256 with
+    // alpha 255 - that: every (coverage, destination) pair once, in every lane position, and a
+    // tail shorter than a vector at the end.
+    constexpr int kLength = 65536 + 7;
+    std::vector<std::uint8_t> coverage(kLength), start(4 * std::size_t{kLength});
+    for (int i = 0; i < kLength; ++i) {
+        const auto v = static_cast<std::uint8_t>((i >> 8) & 255);
+        coverage[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(i & 255);
+        for (int k = 0; k < 3; ++k) start[4 * static_cast<std::size_t>(i) + static_cast<std::size_t>(k)] = v;
+        start[4 * static_cast<std::size_t>(i) + 3] = static_cast<std::uint8_t>(255 - v);
+    }
+    const std::uint8_t colours[][4] = {{0, 0, 0, 0},         {0, 0, 0, 255},     {255, 255, 255, 255}, {1, 2, 3, 4},
+                                       {127, 64, 0, 128},    {200, 10, 90, 200}, {254, 0, 253, 254},   {0, 255, 1, 255},
+                                       {100, 100, 100, 101}, {3, 250, 7, 251}};
+    for (std::int64_t target : simd::available_targets()) {
+        simd::restrict_targets(target);
+        long wrong = 0;
+        for (const auto& s : colours) {
+            std::vector<std::uint8_t> got = start, want = start;
+            paint_simd::solid_over_span(got.data(), kLength, coverage.data(), s);
+            for (int i = 0; i < kLength; ++i)
+                if (coverage[static_cast<std::size_t>(i)] != 0)
+                    pixel::source_over(want.data() + 4 * static_cast<std::size_t>(i), s,
+                                       coverage[static_cast<std::size_t>(i)]);
+            wrong += std::count_if(got.begin(), got.end(),
+                                   [&, k = std::size_t{0}](std::uint8_t g) mutable { return g != want[k++]; });
+        }
+        INFO(simd::target_name(target) << ": " << wrong << " channels differ");
+        CHECK(wrong == 0);
+    }
+    simd::restrict_targets(0);
 }

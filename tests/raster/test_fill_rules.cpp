@@ -10,7 +10,7 @@
 #include <string>
 
 #include "casteljau/stroke.hpp"
-#include "raster/simd_dispatch.hpp"
+#include "core/simd_dispatch.hpp"
 
 #include "accuracy_util.hpp"
 #include "glyph_outline.hpp"

@@ -4,7 +4,7 @@
 // must agree; and the engine must survive a sink that throws halfway. The row scan is SIMD with runtime dispatch: every instruction set this CPU and
 // the build support must give the same pixels.
 #include <catch2/catch.hpp>
-#include "raster/simd_dispatch.hpp"
+#include "core/simd_dispatch.hpp"
 
 #include <cmath>
 #include <random>

@@ -1,4 +1,4 @@
-// SIMD dispatch (src/raster/simd_dispatch.*): casteljau's own CPU detection against Highway's,
+// SIMD dispatch (src/core/simd_dispatch.*): casteljau's own CPU detection against Highway's,
 // target restriction for tests, and no libhwy in the command-line tool.
 #include <catch2/catch.hpp>
 
@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string>
 
-#include "raster/simd_dispatch.hpp"
+#include "core/simd_dispatch.hpp"
 
 using namespace casteljau;
 

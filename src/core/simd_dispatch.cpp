@@ -1,4 +1,4 @@
-// Raster stage, SIMD dispatch: CPU detection and the chosen Highway target (simd_dispatch.hpp).
+// SIMD dispatch: CPU detection and the chosen Highway target (simd_dispatch.hpp).
 //
 // Each target needs a group of CPU features, as Highway defines them, and the operating system's
 // support for the wider registers (XGETBV): SSSE3 = SSE, SSE2, SSE3, SSSE3; SSE4 = SSSE3 + SSE4.1,
@@ -6,7 +6,7 @@
 // AVX3 = AVX2 + AVX-512 F, VL, DQ, BW, CD with ZMM and opmask state enabled; AVX3_DL = AVX3 + VNNI,
 // VPCLMULQDQ, VBMI, VBMI2, VAES, VPOPCNTDQ, BITALG, GFNI. tests/raster/test_simd_dispatch.cpp checks the
 // result against Highway's own detection.
-#include "raster/simd_dispatch.hpp"
+#include "core/simd_dispatch.hpp"
 
 #if HWY_ARCH_X86
 #include <cpuid.h>

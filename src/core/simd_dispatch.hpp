@@ -1,4 +1,4 @@
-// Raster stage, SIMD dispatch: picks the Highway target (instruction set) the raster kernels run
+// SIMD dispatch: picks the Highway target (instruction set) the raster and paint kernels run
 // with, without Highway's runtime library.
 //
 // Highway's per-target code generation (foreach_target.h) and its dispatch tables are header-only;
