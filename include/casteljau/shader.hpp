@@ -92,6 +92,8 @@ private:
     ImageSampling sampling_ = ImageSampling::Bilinear;
     bool repeat_ = false;
     void sample_bicubic(double u, double v, float c[4]) const;
+    // Whether the gradient paints its last stop everywhere (a zero-length linear gradient, a zero end radius).
+    bool constant() const;
     void shade_image_row(const Affine& pixel_to_image, int x, int y, int length, double opacity,
                          std::uint8_t* out) const;
 };

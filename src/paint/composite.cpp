@@ -1,6 +1,6 @@
 // Paint stage, compositing: blend_span (any blend mode, float formula, include/casteljau/blend_mode.hpp)
-// and source-over of a solid Paint, weighted by 8-bit coverage, onto premultiplied
-// RGBA8 pixels. Each channel is the exact source-over value rounded once to the nearest 1/255
+// and source-over of a solid Paint or of premultiplied pixels (source_over_span.cpp), weighted by
+// 8-bit coverage, onto premultiplied RGBA8 pixels. Each channel is the exact source-over value rounded once to the nearest 1/255
 // (tests/paint/test_composite.cpp checks every coverage against that formula); runs of full coverage with
 // an opaque colour are plain stores. Optional linear-light blending converts
 // through lookup tables (sRGB -> linear float, linear 12-bit -> sRGB) and blends there.
@@ -11,7 +11,7 @@
 
 #include "casteljau/paint.hpp"
 #include "paint/pixel_math.hpp"
-#include "paint/solid_over.hpp"
+#include "paint/source_over_span.hpp"
 
 namespace casteljau {
 
@@ -84,7 +84,7 @@ void composite_span(std::uint8_t* dst, int length, const std::uint8_t* coverage,
     if (paint.linear_blend) return composite_linear(dst, length, coverage, color);
     const PremulPixel s = premultiply(color);
     const std::uint8_t solid[4] = {s.r, s.g, s.b, s.a};
-    paint_simd::solid_over_span(dst, length, coverage, solid);
+    paint_simd::source_over_span(dst, length, coverage, solid, 0);
 }
 
 void composite_span_premul(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src) {
@@ -94,43 +94,8 @@ void composite_span_premul(std::uint8_t* dst, int length, const std::uint8_t* co
 void blend_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src, BlendMode mode,
                 int src_stride) {
     const std::size_t step = src_stride == 0 ? 0 : 4;
-    if (mode == BlendMode::SourceOver) {
-        // One pixel at coverage c: nothing for c = 0 or a transparent source, a copy for an opaque
-        // source at full coverage, the formula otherwise.
-        auto over = [](std::uint8_t* d, const std::uint8_t* sp, unsigned c) {
-            if (c == 0 || sp[3] == 0) return;
-            if (c == 255 && sp[3] == 255)
-                std::memcpy(d, sp, 4);
-            else
-                source_over(d, sp, c);
-        };
-        if (!coverage && step == 4) {
-            // A whole layer (SeamlessCompositor, groups) is mostly runs of transparent pixels, which
-            // change nothing, and of opaque ones, which replace the destination: eight at a time.
-            // The alpha bytes of two pixels as a 64-bit mask, whatever the byte order.
-            constexpr std::uint8_t kAlphaBytes[8] = {0, 0, 0, 0xff, 0, 0, 0, 0xff};
-            std::uint64_t alpha_mask;
-            std::memcpy(&alpha_mask, kAlphaBytes, 8);
-            int i = 0;
-            for (; i + 8 <= length; i += 8) {
-                std::uint64_t w[4];
-                std::memcpy(w, src + 4 * static_cast<std::size_t>(i), 32);
-                std::uint8_t* d = dst + 4 * static_cast<std::size_t>(i);
-                if ((w[0] | w[1] | w[2] | w[3]) == 0) continue;
-                if ((w[0] & w[1] & w[2] & w[3] & alpha_mask) == alpha_mask) {
-                    std::memcpy(d, w, 32);
-                    continue;
-                }
-                const std::uint8_t* s8 = src + 4 * static_cast<std::size_t>(i);
-                for (int k = 0; k < 8; ++k) over(d + 4 * k, s8 + 4 * k, 255u);
-            }
-            dst += 4 * static_cast<std::size_t>(i);
-            src += 4 * static_cast<std::size_t>(i);
-            length -= i;
-        }
-        for (int i = 0; i < length; ++i, dst += 4, src += step) over(dst, src, coverage ? coverage[i] : 255u);
-        return;
-    }
+    if (mode == BlendMode::SourceOver)
+        return paint_simd::source_over_span(dst, length, coverage, src, static_cast<int>(step));
     if (mode == BlendMode::Destination) return;
     for (int i = 0; i < length; ++i, dst += 4, src += step) {
         const unsigned c = coverage ? coverage[i] : 255u;

@@ -43,8 +43,20 @@ void PaintPipeline::run(Pixmap& pm, int x, int y, int length, const std::uint8_t
         return blend_span(dst, length, coverage, premul_, mode_, 0);
     }
     if (scratch_.size() < 4 * static_cast<std::size_t>(length)) scratch_.resize(4 * static_cast<std::size_t>(length));
-    shader_->shade_row(inverse_, x, y, length, opacity_, scratch_.data());
-    blend_span(dst, length, coverage, scratch_.data(), mode_);
+    if (!coverage || mode_ != BlendMode::SourceOver) {
+        shader_->shade_row(inverse_, x, y, length, opacity_, scratch_.data());
+        return blend_span(dst, length, coverage, scratch_.data(), mode_);
+    }
+    // Source-over leaves pixels of zero coverage unchanged: only the runs between them are shaded
+    // (a star or an ellipse leaves much of its box empty).
+    for (int i = 0; i < length;) {
+        while (i < length && coverage[i] == 0) ++i;
+        const int from = i;
+        while (i < length && coverage[i] != 0) ++i;
+        if (i == from) break;
+        shader_->shade_row(inverse_, x + from, y, i - from, opacity_, scratch_.data());
+        blend_span(dst + 4 * static_cast<std::size_t>(from), i - from, coverage + from, scratch_.data(), mode_);
+    }
 }
 
 }  // namespace casteljau

@@ -14,7 +14,7 @@
 #include "casteljau/canvas.hpp"
 #include "core/simd_dispatch.hpp"
 #include "paint/pixel_math.hpp"
-#include "paint/solid_over.hpp"
+#include "paint/source_over_span.hpp"
 
 using namespace casteljau;
 
@@ -314,13 +314,45 @@ TEST_CASE("solid source-over: every instruction set gives the scalar formula for
         long wrong = 0;
         for (const auto& s : colours) {
             std::vector<std::uint8_t> got = start, want = start;
-            paint_simd::solid_over_span(got.data(), kLength, coverage.data(), s);
+            paint_simd::source_over_span(got.data(), kLength, coverage.data(), s, 0);
             for (int i = 0; i < kLength; ++i)
                 if (coverage[static_cast<std::size_t>(i)] != 0)
                     pixel::source_over(want.data() + 4 * static_cast<std::size_t>(i), s,
                                        coverage[static_cast<std::size_t>(i)]);
             wrong += std::count_if(got.begin(), got.end(),
                                    [&, k = std::size_t{0}](std::uint8_t g) mutable { return g != want[k++]; });
+        }
+        INFO(simd::target_name(target) << ": " << wrong << " channels differ");
+        CHECK(wrong == 0);
+    }
+    simd::restrict_targets(0);
+}
+
+TEST_CASE("source-over of per-pixel sources: every instruction set gives the scalar formula, with and without coverage",
+          "[composite]") {
+    // Sources cycle through alphas 0, 255 and values between (premultiplied: channels <= alpha),
+    // coverage through every value, runs of empty and full pixels included; null coverage is full.
+    constexpr int kLength = 4096 + 5;
+    std::vector<std::uint8_t> coverage(kLength), src(4 * std::size_t{kLength}), start(4 * std::size_t{kLength});
+    unsigned seed = 99;
+    auto next = [&] { return seed = seed * 1103515245u + 12345u, (seed >> 16) & 0x7fff; };
+    for (std::size_t i = 0; i < static_cast<std::size_t>(kLength); ++i) {
+        const unsigned kind = (i / 16) % 4;  // whole vectors of transparent or opaque sources too
+        const unsigned a = kind == 0 ? 0u : kind == 1 ? 255u : next() % 256;
+        for (std::size_t k = 0; k < 3; ++k) src[4 * i + k] = static_cast<std::uint8_t>(a == 0 ? 0 : next() % (a + 1));
+        src[4 * i + 3] = static_cast<std::uint8_t>(a);
+        coverage[i] = static_cast<std::uint8_t>((i / 32) % 3 == 0 ? 255 : i % 256);
+        for (std::size_t k = 0; k < 4; ++k) start[4 * i + k] = static_cast<std::uint8_t>(next() % 256);
+    }
+    for (std::int64_t target : simd::available_targets()) {
+        simd::restrict_targets(target);
+        long wrong = 0;
+        for (const std::uint8_t* cov : std::array<const std::uint8_t*, 2>{coverage.data(), nullptr}) {
+            std::vector<std::uint8_t> got = start, want = start;
+            paint_simd::source_over_span(got.data(), kLength, cov, src.data(), 4);
+            for (std::size_t i = 0; i < static_cast<std::size_t>(kLength); ++i)
+                pixel::source_over(want.data() + 4 * i, src.data() + 4 * i, cov ? cov[i] : 255u);
+            for (std::size_t k = 0; k < got.size(); ++k) wrong += got[k] != want[k];
         }
         INFO(simd::target_name(target) << ": " << wrong << " channels differ");
         CHECK(wrong == 0);
