@@ -6,8 +6,13 @@
 // (a short string in DejaVu Sans at 10 to 30 px). Items are generated from a fixed seed, so both
 // libraries draw the same geometry. Reported: the median of the rounds' thread CPU time per part
 // (bench/timer.hpp). `--quick`: 200 items per part and one round (the ctest smoke entry).
-// Usage: canvas_scene [--quick] [--rounds N] [--png PREFIX] (writes PREFIX-casteljau.png and
-// PREFIX-cairo.png of the whole scene to compare by eye).
+// `--accuracy`: each part is also drawn by casteljau at 0.001 px (curves, strokes and glyph masks
+// flattened that finely, exact overlaps: the exact reference of the other benchmarks), and both
+// libraries' images at their defaults are compared with it: mean and max |difference| per
+// channel, in 1/255, over the pixels any of the three images changed (Cairo's text is left out:
+// it places glyphs by its own hinted metrics, so its picture is a different layout).
+// Usage: canvas_scene [--quick] [--rounds N] [--accuracy] [--png PREFIX] (writes
+// PREFIX-casteljau.png and PREFIX-cairo.png of the whole scene to compare by eye).
 #include <cairo-ft.h>
 #include <cairo.h>
 #include <ft2build.h>
@@ -213,6 +218,50 @@ void draw_cairo(cairo_t* cr, Part part, const std::vector<Item>& items) {
     }
 }
 
+// Cairo's ARGB32 pixel (premultiplied, native-endian 32-bit words) as premultiplied RGBA bytes.
+void cairo_rgba(cairo_surface_t* surf, int x, int y, std::uint8_t out[4]) {
+    const unsigned char* row = cairo_image_surface_get_data(surf) + y * cairo_image_surface_get_stride(surf);
+    std::uint32_t v;
+    std::memcpy(&v, row + 4 * x, 4);
+    out[0] = static_cast<std::uint8_t>(v >> 16);
+    out[1] = static_cast<std::uint8_t>(v >> 8);
+    out[2] = static_cast<std::uint8_t>(v);
+    out[3] = static_cast<std::uint8_t>(v >> 24);
+}
+
+struct Diff {
+    double mean = 0;
+    int max = 0;
+};
+
+// Differences from `ref` of `ours` and of Cairo's surface, over the pixels any of them changed
+// from the white background.
+void compare(const Pixmap& ref, const Pixmap& ours, cairo_surface_t* surf, Diff& d_ours, Diff& d_cairo) {
+    cairo_surface_flush(surf);
+    double sum_o = 0, sum_c = 0;
+    long n = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const std::uint8_t* r = ref.row(y) + 4 * x;
+            const std::uint8_t* o = ours.row(y) + 4 * x;
+            std::uint8_t c[4];
+            cairo_rgba(surf, x, y, c);
+            bool touched = false;
+            for (int k = 0; k < 4; ++k) touched |= r[k] != 255 || o[k] != 255 || c[k] != 255;
+            if (!touched) continue;
+            ++n;
+            for (int k = 0; k < 4; ++k) {
+                const int eo = std::abs(int{o[k]} - int{r[k]}), ec = std::abs(int{c[k]} - int{r[k]});
+                sum_o += eo;
+                sum_c += ec;
+                d_ours.max = std::max(d_ours.max, eo);
+                d_cairo.max = std::max(d_cairo.max, ec);
+            }
+        }
+    d_ours.mean = n ? sum_o / (4.0 * static_cast<double>(n)) : 0;
+    d_cairo.mean = n ? sum_c / (4.0 * static_cast<double>(n)) : 0;
+}
+
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
@@ -223,16 +272,19 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
     int per_part = 2000, rounds = 5;
     std::string png_prefix;
+    bool accuracy = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--quick")) {
             per_part = 200;
             rounds = 1;
         } else if (!std::strcmp(argv[i], "--rounds") && i + 1 < argc)
             rounds = std::max(1, std::atoi(argv[++i]));
+        else if (!std::strcmp(argv[i], "--accuracy"))
+            accuracy = true;
         else if (!std::strcmp(argv[i], "--png") && i + 1 < argc)
             png_prefix = argv[++i];
         else {
-            std::fprintf(stderr, "usage: canvas_scene [--quick] [--rounds N] [--png PREFIX]\n");
+            std::fprintf(stderr, "usage: canvas_scene [--quick] [--rounds N] [--accuracy] [--png PREFIX]\n");
             return 2;
         }
     }
@@ -280,6 +332,39 @@ int main(int argc, char** argv) {
         std::printf("%-14s %12.1f %12.1f %8.2f\n", kPartNames[p], mc, mk, mc / mk);
     }
     std::printf("%-14s %12.1f %12.1f %8.2f\n", "all", total_c, total_k, total_c / total_k);
+    if (accuracy) {
+        std::printf("\nagainst casteljau at 0.001 px, mean / max |difference| per channel in 1/255\n");
+        std::printf("%-14s %14s %14s\n", "part", "casteljau", "Cairo");
+        Pixmap ref(kW, kH);
+        for (int p = 0; p < kParts; ++p) {
+            const auto& items = parts[static_cast<std::size_t>(p)];
+            ref.fill(Color::white());
+            {
+                Canvas canvas(ref);
+                canvas.fill_options().tolerance = 0.001;
+                GlyphCache fine(64u << 20, 0.001);
+                draw_casteljau(canvas, static_cast<Part>(p), items, font, fine);
+            }
+            pm.fill(Color::white());
+            {
+                Canvas canvas(pm);
+                GlyphCache cache;
+                draw_casteljau(canvas, static_cast<Part>(p), items, font, cache);
+            }
+            cairo_t* cr = cairo_create(surf);
+            cairo_set_source_rgb(cr, 1, 1, 1);
+            cairo_paint(cr);
+            cairo_set_font_face(cr, cface);
+            draw_cairo(cr, static_cast<Part>(p), items);
+            cairo_destroy(cr);
+            Diff dc, dk;
+            compare(ref, pm, surf, dc, dk);
+            if (p == Text)  // Cairo places glyphs by its own hinted metrics: not the same picture
+                std::printf("%-14s %8.3f / %-3d %14s\n", kPartNames[p], dc.mean, dc.max, "(other layout)");
+            else
+                std::printf("%-14s %8.3f / %-3d %8.3f / %-3d\n", kPartNames[p], dc.mean, dc.max, dk.mean, dk.max);
+        }
+    }
     if (!png_prefix.empty()) {
         pm.fill(Color::white());
         Canvas canvas(pm);
