@@ -1,6 +1,13 @@
-// `casteljau svg`: render an SVG file to PNG.
+// `casteljau svg`: render SVG files to PNG, one or many (into a folder, on several threads).
+#include <atomic>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
+#include <mutex>
+#include <set>
+#include <optional>
+#include <thread>
+#include <functional>
 
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
@@ -10,20 +17,86 @@
 
 namespace casteljau::cli {
 
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SvgOpts {
+    std::vector<std::string> inputs;
+    std::string output, background = "transparent", resources;
+    double zoom = 1;
+    int width = 0, height = 0;
+    double tolerance = kDefaultTolerance;
+    bool quiet = false;
+    SvgOptions svg;
+    bool skip_system_fonts = false;
+    int jobs = 1;
+};
+
+// Renders one document to one PNG file; warnings go to `warn`.
+void render_file(const SvgOpts& o, const SvgOptions& so, Color bg, const std::string& input, const std::string& output,
+                 const std::function<void(const std::string&)>& warn) {
+    const SvgDocument doc =
+        input == "-" ? SvgDocument::parse(read_text_input(input), so) : SvgDocument::load(input, so);
+    if (!o.quiet)
+        for (const std::string& w : doc.warnings()) warn(w);
+    // Output size as resvg and rsvg-convert choose it (svg.hpp): from the rounded intrinsic
+    // size; the document is then scaled to fill the output exactly.
+    std::pair<int, int> size;
+    if (o.width > 0 && o.height > 0)
+        size = {o.width, o.height};
+    else if (o.width > 0)
+        size = doc.output_size_for_width(o.width);
+    else if (o.height > 0)
+        size = doc.output_size_for_height(o.height);
+    else
+        size = doc.output_size_for_zoom(o.zoom);
+    check_canvas_size(size.first, size.second);
+    Pixmap pm(size.first, size.second);
+    pm.fill(bg);
+    Canvas canvas(pm);
+    canvas.fill_options().tolerance = o.tolerance;
+    doc.render(canvas, Affine::scale(size.first / doc.intrinsic_width(), size.second / doc.intrinsic_height()));
+    write_png(pm, output);
+}
+
+// Several inputs, or an existing folder as the output: each input's PNG goes into that folder
+// under the input's name with the extension .png. Checked before anything is drawn: no standard
+// input, no two inputs with one output name, the folder created when missing.
+std::vector<std::string> folder_outputs(const SvgOpts& o) {
+    if (fs::exists(o.output) && !fs::is_directory(o.output))
+        throw UsageError("-o: with several inputs the output must be a folder, and '" + o.output + "' is a file");
+    std::vector<std::string> outs;
+    std::set<std::string> seen;
+    for (const std::string& in : o.inputs) {
+        if (in == "-") throw UsageError("INPUT: standard input (-) cannot be one of several inputs");
+        const std::string name = fs::path(in).stem().string() + ".png";
+        if (!seen.insert(name).second)
+            throw UsageError("INPUT: two inputs would both be written to '" + name + "' in " + o.output);
+        outs.push_back((fs::path(o.output) / name).string());
+    }
+    std::error_code ec;
+    fs::create_directories(o.output, ec);
+    if (ec) throw Error(ErrorKind::Io, "cannot create the output folder '" + o.output + "': " + ec.message());
+    return outs;
+}
+
+}  // namespace
+
 void register_svg(CLI::App& app) {
-    struct Opts {
-        std::string input, output, background = "transparent", resources;
-        double zoom = 1;
-        int width = 0, height = 0;
-        double tolerance = kDefaultTolerance;
-        bool quiet = false;
-        SvgOptions svg;
-        bool skip_system_fonts = false;
-    };
-    auto o = std::make_shared<Opts>();
-    CLI::App* cmd = app.add_subcommand("svg", "Render an SVG file to PNG");
-    cmd->add_option("INPUT", o->input, "SVG file (- for standard input)")->required();
-    cmd->add_option("-o,--output", o->output, "Output PNG file")->required();
+    auto o = std::make_shared<SvgOpts>();
+    CLI::App* cmd = app.add_subcommand("svg", "Render SVG files to PNG");
+    cmd->add_option("INPUT", o->inputs,
+                    "SVG files (- for standard input); with several, -o names a folder that receives each as "
+                    "NAME.png")
+        ->required()
+        ->expected(1, -1);
+    cmd->add_option("-o,--output", o->output,
+                    "Output PNG file, or a folder (several inputs, or an existing folder): NAME.png for each input")
+        ->required();
+    cmd->add_option("-j,--jobs", o->jobs, "Files rendered at once, on that many threads (several inputs)")
+        ->check(CLI::Range(1, 256))
+        ->capture_default_str();
     auto* zoom = cmd->add_option("-z,--zoom,--scale", o->zoom, "Zoom factor applied to the document size")
                      ->check(CLI::Range(1e-3, 1e3))
                      ->capture_default_str();
@@ -73,28 +146,48 @@ void register_svg(CLI::App& app) {
         fo.font_dirs = so.font_dirs;
         fo.font_files = so.font_files;
         check_font_sources(fo);
-        const SvgDocument doc =
-            o->input == "-" ? SvgDocument::parse(read_text_input(o->input), so) : SvgDocument::load(o->input, so);
-        if (!o->quiet)
-            for (const std::string& w : doc.warnings()) std::cerr << "casteljau: warning: " << w << "\n";
-        // Output size as resvg and rsvg-convert choose it (svg.hpp): from the rounded intrinsic
-        // size; the document is then scaled to fill the output exactly.
-        std::pair<int, int> size;
-        if (o->width > 0 && o->height > 0)
-            size = {o->width, o->height};
-        else if (o->width > 0)
-            size = doc.output_size_for_width(o->width);
-        else if (o->height > 0)
-            size = doc.output_size_for_height(o->height);
-        else
-            size = doc.output_size_for_zoom(o->zoom);
-        check_canvas_size(size.first, size.second);
-        Pixmap pm(size.first, size.second);
-        pm.fill(bg);
-        Canvas canvas(pm);
-        canvas.fill_options().tolerance = o->tolerance;
-        doc.render(canvas, Affine::scale(size.first / doc.intrinsic_width(), size.second / doc.intrinsic_height()));
-        write_png(pm, o->output);
+        const bool folder = o->inputs.size() > 1 || fs::is_directory(o->output);
+        if (!folder) {
+            render_file(*o, so, bg, o->inputs[0], o->output,
+                        [](const std::string& w) { std::cerr << "casteljau: warning: " << w << "\n"; });
+            return;
+        }
+        // Every file is tried; one that fails gets its own error line and no output, and the
+        // command then exits as the first failure would have alone.
+        const std::vector<std::string> outs = folder_outputs(*o);
+        std::mutex lock;
+        std::atomic<std::size_t> next{0};
+        std::optional<ErrorKind> first_kind;
+        std::size_t failed = 0;
+        auto say = [&](const std::string& line) {
+            const std::lock_guard<std::mutex> g(lock);
+            std::cerr << line << "\n";
+        };
+        auto failure = [&](const std::string& in, const std::string& what, ErrorKind kind) {
+            const std::lock_guard<std::mutex> g(lock);
+            std::cerr << "casteljau: error: " << in << ": " << what << "\n";
+            if (!first_kind) first_kind = kind;
+            ++failed;
+        };
+        auto work = [&] {
+            for (std::size_t i; (i = next++) < o->inputs.size();) {
+                const std::string& in = o->inputs[i];
+                try {
+                    render_file(*o, so, bg, in, outs[i],
+                                [&](const std::string& w) { say("casteljau: warning: " + in + ": " + w); });
+                } catch (const Error& e) { failure(in, e.what(), e.kind()); } catch (const std::bad_alloc&) {
+                    failure(in, "out of memory", ErrorKind::Limit);
+                }
+            }
+        };
+        const std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(o->jobs), o->inputs.size());
+        std::vector<std::thread> pool;
+        for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+        work();
+        for (std::thread& t : pool) t.join();
+        if (failed > 0)
+            throw Error(*first_kind, std::to_string(failed) + " of " + std::to_string(o->inputs.size()) +
+                                         " files were not rendered (their errors are above)");
     });
 }
 

@@ -1,9 +1,11 @@
 // The path and svg commands end to end: output, exit statuses, messages, no partial files.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
+#include "casteljau/file_io.hpp"
 #include "casteljau/png.hpp"
 #include "cli_util.hpp"
 
@@ -167,6 +169,87 @@ TEST_CASE("svg: bad files exit 1 with one line and write nothing", "[cli][svg]")
     }
     CHECK(run_cli("svg " + shell_quote((in / "huge.svg").string())).status == 2);  // missing -o
     CHECK(dir_is_empty(outdir));
+}
+
+TEST_CASE("svg: several inputs go into a folder as NAME.png, on several threads, as each alone", "[cli][svg]") {
+    const fs::path d = scratch_dir("svg-many");
+    const char* colours[] = {"red", "lime", "blue", "#808080", "black"};
+    std::string inputs;
+    // Names and documents built with += (GCC 12 warns falsely on some chains of string +).
+    auto name_of = [](int i) {
+        std::string n = "f";
+        n += static_cast<char>('0' + i);
+        return n;
+    };
+    for (int i = 0; i < 5; ++i) {
+        const fs::path f = d / (name_of(i) + ".svg");
+        std::string doc = "<svg xmlns='http://www.w3.org/2000/svg' height='7' width='";
+        doc += static_cast<char>('5' + i);
+        doc += "'><circle cx='5' cy='3.5' r='3' fill='";
+        doc += colours[i];
+        doc += "'/></svg>";
+        write_text(f, doc);
+        inputs += " ";
+        inputs += shell_quote(f.string());
+    }
+    // The folder is created; --jobs 3 draws three files at once.
+    const CliResult r = run_cli("svg" + inputs + " -o " + shell_quote((d / "out").string()) + " --jobs 3");
+    REQUIRE(r.status == 0);
+    CHECK(r.err.empty());
+    for (int i = 0; i < 5; ++i) {
+        const std::string name = name_of(i);
+        const fs::path alone = d / (name + "-alone.png");
+        REQUIRE(run_cli("svg " + shell_quote((d / (name + ".svg")).string()) + " -o " + shell_quote(alone.string()))
+                    .status == 0);
+        INFO(name);
+        CHECK(read_file((d / "out" / (name + ".png")).string()) == read_file(alone.string()));
+    }
+    // One input and an existing folder: the same naming.
+    fs::create_directories(d / "one");
+    REQUIRE(
+        run_cli("svg " + shell_quote((d / "f0.svg").string()) + " -o " + shell_quote((d / "one").string())).status ==
+        0);
+    CHECK(fs::exists(d / "one" / "f0.png"));
+}
+
+TEST_CASE("svg: a bad file among several gets its own error line and no output; the rest are drawn", "[cli][svg]") {
+    const fs::path d = scratch_dir("svg-many-bad");
+    write_text(d / "good.svg", "<svg xmlns='http://www.w3.org/2000/svg' width='4' height='4'/>");
+    write_text(d / "broken.svg", "<svg xmlns='http://www.w3.org/2000/svg' width='4' height='4'><g");
+    write_text(d / "huge.svg", "<svg xmlns='http://www.w3.org/2000/svg' width='1e9' height='10'/>");
+    const CliResult r =
+        run_cli("svg " + shell_quote((d / "broken.svg").string()) + " " + shell_quote((d / "good.svg").string()) + " " +
+                shell_quote((d / "huge.svg").string()) + " -o " + shell_quote((d / "out").string()) + " -j 2");
+    CHECK(r.status == 1);
+    // One line per failed file, naming it, then the summary.
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 3);
+    CHECK(r.err.find("broken.svg: ") != std::string::npos);
+    CHECK(r.err.find("huge.svg: ") != std::string::npos);
+    CHECK(r.err.find("2 of 3 files were not rendered") != std::string::npos);
+    CHECK(fs::exists(d / "out" / "good.png"));
+    CHECK_FALSE(fs::exists(d / "out" / "broken.png"));
+    CHECK_FALSE(fs::exists(d / "out" / "huge.png"));
+}
+
+TEST_CASE("svg: several inputs that cannot go into one folder are refused before anything is drawn", "[cli][svg]") {
+    const fs::path d = scratch_dir("svg-many-usage");
+    const std::string doc = "<svg xmlns='http://www.w3.org/2000/svg' width='4' height='4'/>";
+    fs::create_directories(d / "x");
+    write_text(d / "a.svg", doc);
+    write_text(d / "x" / "a.svg", doc);
+    write_text(d / "file.png", "not a folder");
+    const std::string a = shell_quote((d / "a.svg").string()), xa = shell_quote((d / "x" / "a.svg").string());
+    const std::string out = shell_quote((d / "out").string());
+    for (const std::string& args : {"svg " + a + " " + xa + " -o " + out,  // both would be a.png
+                                    "svg " + a + " - -o " + out,           // standard input among several
+                                    "svg " + a + " " + xa + " -o " + shell_quote((d / "file.png").string()),
+                                    "svg " + a + " -o " + out + " --jobs 0"}) {  // no threads
+        INFO(args);
+        const CliResult r = run_cli(args, doc);
+        CHECK(r.status == 2);
+        check_one_line_error(r);
+    }
+    CHECK_FALSE(fs::exists(d / "out"));
 }
 
 TEST_CASE("path: --stroke draws the stroke outline over the fill", "[cli][stroke]") {
