@@ -34,44 +34,24 @@
 #include "formats/css.hpp"
 #include "formats/svg_filter.hpp"
 #include "formats/svg_text.hpp"
+#include "formats/svg/display_list.hpp"
+#include "formats/svg/values.hpp"
+#include "formats/svg/xml_input.hpp"
 
 namespace casteljau {
 
 namespace {
 
-struct PatternTile;
-
-struct Item {
-    // Bounds: a path never drawn that counts in bounding boxes (a hidden or fully transparent element).
-    enum Kind {
-        Fill,
-        Stroke,
-        BeginLayer,
-        EndLayer,
-        PushClip,
-        PopClip,
-        BeginClip,
-        BeginMask,
-        EndMask,
-        SvgImage,
-        BeginFilter,
-        EndFilter,
-        Bounds
-    } kind = Fill;
-    bool luminance = false;               // BeginMask: luminance (true) or alpha mask
-    BlendMode blend = BlendMode::Normal;  // BeginLayer: mix-blend-mode
-    Path path;                            // user space
-    Affine transform;                     // user space -> document pixel space
-    Color color;
-    std::shared_ptr<const Shader> shader;          // a gradient or image instead of `color`
-    std::shared_ptr<const SvgDocument> svg_image;  // SvgImage: drawn with `transform` as its base
-    std::shared_ptr<const PatternTile> pattern;    // a pattern instead of `color`: rendered per fill
-    FillRule rule = FillRule::NonZero;
-    double opacity = 1;  // fill/stroke: multiplies colour alpha; layer: group opacity
-    StrokeStyle stroke;  // Stroke items
-    std::shared_ptr<const std::vector<filter::FilterGraph>>
-        filters;  // EndFilter: applied in order, in the user space of `transform`
-};
+using Item = svg::DisplayItem;
+using svg::PatternTile;
+using svg::gunzip;
+using svg::normalise_namespaces;
+using svg::parse_length;
+using svg::parse_number;
+using svg::parse_opacity;
+using svg::parse_viewbox;
+using svg::trim;
+using svg::viewbox_transform;
 
 // The element a context-fill or context-stroke paint comes from (the shape a marker is drawn on,
 // or a use element): a paint server is resolved for its bounding box (the bounds of `path`) in its
@@ -98,13 +78,6 @@ struct PaintRef {
     }
 };
 
-// A pattern's tile: its content (items in the fill's user space), the tile rectangle in pattern
-// space, and the pattern space -> user space transform (patternTransform).
-struct PatternTile {
-    std::vector<Item> items;
-    Rect tile;
-    Affine transform;
-};
 
 // A path that counts in bounding boxes without being drawn.
 Item bounds_item(Path path, const Affine& transform) {
@@ -145,127 +118,6 @@ struct Style {
     double font_size = kDefaultFontSize;  // the element's computed font-size (em in filter functions)
 };
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-    return s;
-}
-
-// A length with an optional unit; percentages resolve against `percent_of`, em against
-// `font_size` and ex against half of it (as resvg: no x-height from the font). nullopt when invalid.
-std::optional<double> parse_length(std::string_view text, double percent_of, double font_size) {
-    text = trim(text);
-    if (text.empty()) return std::nullopt;
-    const char* b = text.data();
-    const char* e = text.data() + text.size();
-    if (*b == '+') ++b;
-    double v;
-    auto r = std::from_chars(b, e, v);
-    if (r.ec != std::errc() || !std::isfinite(v)) return std::nullopt;
-    const std::string_view unit(r.ptr, static_cast<std::size_t>(e - r.ptr));
-    if (unit.empty() || unit == "px") return v;
-    if (unit == "%") return v / 100.0 * percent_of;
-    if (unit == "pt") return v * 4.0 / 3.0;
-    if (unit == "pc") return v * 16.0;
-    if (unit == "mm") return v * 96.0 / 25.4;
-    if (unit == "cm") return v * 96.0 / 2.54;
-    if (unit == "in") return v * 96.0;
-    if (unit == "em") return v * font_size;
-    if (unit == "ex") return v * font_size / 2;
-    return std::nullopt;
-}
-
-// A length where no element's font size is known (em and ex relative to a 16 px font).
-std::optional<double> parse_length(std::string_view text, double percent_of) {
-    return parse_length(text, percent_of, 16.0);
-}
-
-std::optional<double> parse_number(std::string_view text) {
-    text = trim(text);
-    if (text.empty()) return std::nullopt;
-    const char* b = text.data();
-    const char* e = b + text.size();
-    if (*b == '+') ++b;
-    double v;
-    auto r = std::from_chars(b, e, v);
-    if (r.ec != std::errc() || r.ptr != e || !std::isfinite(v)) return std::nullopt;
-    return v;
-}
-
-// Opacity values: a number or a percentage, clamped to [0, 1].
-std::optional<double> parse_opacity(std::string_view text) {
-    text = trim(text);
-    if (!text.empty() && text.back() == '%') {
-        auto v = parse_number(text.substr(0, text.size() - 1));
-        if (!v) return std::nullopt;
-        return std::clamp(*v / 100.0, 0.0, 1.0);
-    }
-    auto v = parse_number(text);
-    if (!v) return std::nullopt;
-    return std::clamp(*v, 0.0, 1.0);
-}
-
-// A viewBox "x y w h" (commas or spaces); nullopt when absent or invalid (w or h not positive).
-std::optional<Rect> parse_viewbox(std::string_view text) {
-    if (trim(text).empty()) return std::nullopt;
-    std::string s(text);
-    for (char& c : s)
-        if (c == ',') c = ' ';
-    double n[4];
-    std::size_t pos = 0;
-    for (double& x : n) {
-        while (pos < s.size() && std::isspace(static_cast<unsigned char>(s[pos]))) ++pos;
-        if (pos < s.size() && s[pos] == '+') ++pos;
-        auto r = std::from_chars(s.data() + pos, s.data() + s.size(), x);
-        if (r.ec != std::errc() || !std::isfinite(x)) return std::nullopt;
-        pos = static_cast<std::size_t>(r.ptr - s.data());
-    }
-    if (!(n[2] > 0) || !(n[3] > 0)) return std::nullopt;
-    return Rect::from_xywh(n[0], n[1], n[2], n[3]);
-}
-
-// The viewBox -> viewport (0, 0, w, h) mapping under preserveAspectRatio
-// "[defer] <none | x{Min,Mid,Max}Y{Min,Mid,Max}> [meet | slice]" (default xMidYMid meet; an
-// invalid value is the default).
-Affine viewbox_transform(const Rect& vb, std::string_view par, double w, double h) {
-    std::vector<std::string_view> words;
-    for (std::string_view rest = trim(par); !rest.empty();) {
-        const std::size_t sp = rest.find_first_of(" \t\r\n");
-        words.push_back(rest.substr(0, sp));
-        rest = sp == std::string_view::npos ? std::string_view{} : trim(rest.substr(sp));
-    }
-    if (!words.empty() && words.front() == "defer") words.erase(words.begin());
-    std::string_view align = "xMidYMid";
-    bool slice = false;
-    if (!words.empty()) {
-        const std::string_view a = words[0];
-        const bool ok =
-            a == "none" || (a.size() == 8 && a[0] == 'x' && a[4] == 'Y' &&
-                            (a.substr(1, 3) == "Min" || a.substr(1, 3) == "Mid" || a.substr(1, 3) == "Max") &&
-                            (a.substr(5, 3) == "Min" || a.substr(5, 3) == "Mid" || a.substr(5, 3) == "Max"));
-        if (ok && words.size() <= 2 && (words.size() == 1 || words[1] == "meet" || words[1] == "slice")) {
-            align = a;
-            slice = words.size() == 2 && words[1] == "slice";
-        }
-    }
-    const double sx = w / vb.width(), sy = h / vb.height();
-    if (align == "none") return {sx, 0, 0, sy, -vb.x0 * sx, -vb.y0 * sy};
-    const double s = slice ? std::max(sx, sy) : std::min(sx, sy);
-    double tx = -vb.x0 * s, ty = -vb.y0 * s;
-    const double ex = w - vb.width() * s, ey = h - vb.height() * s;
-    const std::string_view xa = align.substr(1, 3), ya = align.substr(5, 3);
-    if (xa == "Mid")
-        tx += ex / 2;
-    else if (xa == "Max")
-        tx += ex;
-    if (ya == "Mid")
-        ty += ey / 2;
-    else if (ya == "Max")
-        ty += ey;
-    return {s, 0, 0, s, tx, ty};
-}
-
-void render_items(const std::vector<Item>& items, Canvas& canvas, const Affine& base);
 
 class Reader {
 public:
@@ -844,7 +696,7 @@ public:
             auto shared = std::make_shared<const std::vector<Item>>(std::move(captured));
             return [shared](Pixmap& pm, const Affine& m) {
                 Canvas c(pm);
-                render_items(*shared, c, m);
+                svg::draw(*shared, c, m);
             };
         };
         return env;
@@ -2523,78 +2375,9 @@ public:
     }
 };
 
-// Inflates gzip data (an .svgz), up to Limits::svgz_bytes. Throws Error(InvalidData) for
-// corrupt data, Error(Limit) past the limit.
-std::string gunzip(std::string_view data) {
-    z_stream z{};
-    if (inflateInit2(&z, 16 + MAX_WBITS) != Z_OK) throw Error(ErrorKind::InvalidData, "zlib initialisation failed");
-    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data.data()));
-    z.avail_in = static_cast<uInt>(std::min<std::size_t>(data.size(), UINT32_MAX));
-    std::string out;
-    const std::size_t max_bytes = current_limits().svgz_bytes;
-    char buf[65536];
-    int rc = Z_OK;
-    while (rc != Z_STREAM_END) {
-        z.next_out = reinterpret_cast<Bytef*>(buf);
-        z.avail_out = sizeof buf;
-        rc = inflate(&z, Z_NO_FLUSH);
-        if (rc != Z_OK && rc != Z_STREAM_END) {
-            inflateEnd(&z);
-            throw Error(ErrorKind::InvalidData, "corrupt gzip data (.svgz)");
-        }
-        out.append(buf, sizeof buf - z.avail_out);
-        if (out.size() > max_bytes) {
-            inflateEnd(&z);
-            throw Error(ErrorKind::Limit, "an .svgz inflates to more than " + std::to_string(max_bytes) + " bytes");
-        }
-        if (rc == Z_OK && z.avail_in == 0 && z.avail_out != 0) {
-            inflateEnd(&z);
-            throw Error(ErrorKind::InvalidData, "truncated gzip data (.svgz)");
-        }
-    }
-    inflateEnd(&z);
-    return out;
-}
-
-constexpr std::string_view kSvgNamespace = "http://www.w3.org/2000/svg";
-
-// Elements written with a prefix bound to the SVG namespace (<svg:svg xmlns:svg="...">) get their
-// local name, so the reader sees <svg>; elements of other namespaces keep their prefixed names and
-// are skipped as unknown. `prefixes` holds the prefixes bound to the SVG namespace in scope.
-void normalise_namespaces(pugi::xml_node node, std::vector<std::string> prefixes) {
-    std::vector<std::pair<pugi::xml_node, std::vector<std::string>>> stack;
-    stack.emplace_back(node, std::move(prefixes));
-    while (!stack.empty()) {
-        auto [n, scope] = std::move(stack.back());
-        stack.pop_back();
-        for (const pugi::xml_attribute& a : n.attributes()) {
-            const std::string_view name = a.name();
-            if (name.substr(0, 6) != "xmlns:") continue;
-            const std::string prefix(name.substr(6));
-            std::erase(scope, prefix);
-            if (a.value() == kSvgNamespace) scope.push_back(prefix);
-        }
-        const std::string_view name = n.name();
-        if (const std::size_t colon = name.find(':'); colon != std::string_view::npos) {
-            const std::string prefix(name.substr(0, colon));
-            if (std::find(scope.begin(), scope.end(), prefix) != scope.end())
-                n.set_name(std::string(name.substr(colon + 1)).c_str());
-        }
-        for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling())
-            if (c.type() == pugi::node_element) stack.emplace_back(c, scope);
-    }
-}
-
 }  // namespace
 
-struct SvgDocument::Impl {
-    pugi::xml_document doc;
-    int width = 0, height = 0;       // output size: the intrinsic size rounded, at least 1
-    double fwidth = 0, fheight = 0;  // intrinsic size, fractional
-    Affine view;                     // viewBox -> pixels
-    std::vector<Item> items;
-    std::vector<std::string> warnings;
-};
+struct SvgDocument::Impl : svg::ConvertedDocument {};
 
 SvgDocument::SvgDocument(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 SvgDocument::SvgDocument(SvgDocument&&) noexcept = default;
@@ -2620,27 +2403,30 @@ SvgDocument SvgDocument::load(const std::string& path, const SvgOptions& options
     return parse(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), o);
 }
 
-SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options) {
+namespace svg {
+
+ConvertedDocument convert_document(std::string_view input, const SvgOptions& options) {
     std::string inflated;
     if (input.size() >= 2 && static_cast<unsigned char>(input[0]) == 0x1f &&
         static_cast<unsigned char>(input[1]) == 0x8b)
         inflated = gunzip(input);
     const std::string_view text = inflated.empty() ? input : std::string_view(inflated);
-    auto impl = std::make_unique<Impl>();
+    ConvertedDocument out;
+    pugi::xml_document xml;
     if (trim(text).empty()) throw Error(ErrorKind::Parse, "SVG input is empty");
-    const pugi::xml_parse_result res = impl->doc.load_buffer(
+    const pugi::xml_parse_result res = xml.load_buffer(
         text.data(), text.size(), pugi::parse_default | pugi::parse_ws_pcdata);  // text needs the spaces between tspans
     if (!res)
         throw Error(ErrorKind::Parse, std::string("malformed SVG (XML) at byte ") + std::to_string(res.offset) + ": " +
                                           res.description());
-    normalise_namespaces(impl->doc.document_element(), {});
-    const pugi::xml_node root = impl->doc.document_element();
+    normalise_namespaces(xml.document_element(), {});
+    const pugi::xml_node root = xml.document_element();
     if (std::string_view(root.name()) != "svg")
         throw Error(ErrorKind::InvalidData, std::string("root element is <") + root.name() + ">, expected <svg>");
 
     const char* vb_text = root.attribute("viewBox").value();
     const std::optional<Rect> vb = parse_viewbox(vb_text);
-    if (!vb && *vb_text) impl->warnings.push_back(std::string("invalid viewBox '") + vb_text + "' ignored");
+    if (!vb && *vb_text) out.warnings.push_back(std::string("invalid viewBox '") + vb_text + "' ignored");
     auto root_length = [&](const char* name, double vb_size) -> std::optional<double> {
         const char* v = root.attribute(name).value();
         if (!*v) return std::nullopt;
@@ -2659,10 +2445,10 @@ SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options
     // the fractional size stays for the scale (render() fills the whole output).
     const double rw = std::max(1.0, std::round(*w)), rh = std::max(1.0, std::round(*h));
     check_canvas_size(rw, rh);
-    impl->width = static_cast<int>(rw);
-    impl->height = static_cast<int>(rh);
-    impl->fwidth = *w;
-    impl->fheight = *h;
+    out.width = static_cast<int>(rw);
+    out.height = static_cast<int>(rh);
+    out.fwidth = *w;
+    out.fheight = *h;
 
     // viewBox -> viewport with preserveAspectRatio.
     Affine view;
@@ -2672,7 +2458,7 @@ SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options
         vh = vb->height();
         view = viewbox_transform(*vb, root.attribute("preserveAspectRatio").value(), *w, *h);
     }
-    impl->view = view;
+    out.view = view;
 
     Reader reader;
     reader.options = options;
@@ -2681,121 +2467,21 @@ SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options
     // The root goes through the element path like any group: its transform, display, opacity,
     // clip-path, mask, filter and blending apply to the whole document.
     reader.element(root, Style(), view, vw, vh, 0);
-    impl->items = std::move(reader.items);
-    impl->warnings.insert(impl->warnings.end(), reader.warnings.begin(), reader.warnings.end());
+    out.items = std::move(reader.items);
+    out.warnings.insert(out.warnings.end(), reader.warnings.begin(), reader.warnings.end());
+    return out;
+}
+
+}  // namespace svg
+
+SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options) {
+    auto impl = std::make_unique<Impl>();
+    static_cast<svg::ConvertedDocument&>(*impl) = svg::convert_document(input, options);
     return SvgDocument(std::move(impl));
 }
 
-namespace {
 
-void render_items(const std::vector<Item>& items, Canvas& canvas, const Affine& base) {
-    // Layers: groups with opacity, clip paths or masks (BeginLayer .. EndLayer), and the content of
-    // clip paths and masks (BeginClip/BeginMask .. EndMask), which becomes a coverage mask that
-    // multiplies the layer it closes in.
-    struct Frame {
-        Pixmap pm;
-        Canvas canvas;
-        double opacity = 1;
-        bool luminance = false;
-        BlendMode blend = BlendMode::Normal;
-        Frame(int w, int h) : pm(w, h), canvas(pm) {}
-    };
-    std::vector<std::unique_ptr<Frame>> frames;
-    auto cur = [&]() -> Canvas& { return frames.empty() ? canvas : frames.back()->canvas; };
-    for (const Item& it : items) {
-        switch (it.kind) {
-            case Item::BeginLayer:
-            case Item::BeginClip:
-            case Item::BeginMask: {
-                frames.push_back(std::make_unique<Frame>(canvas.width(), canvas.height()));
-                frames.back()->canvas.fill_options() = canvas.fill_options();
-                frames.back()->opacity = it.opacity;
-                frames.back()->luminance = it.kind == Item::BeginMask && it.luminance;
-                frames.back()->blend = it.blend;
-                continue;
-            }
-            case Item::BeginFilter:
-                frames.push_back(std::make_unique<Frame>(canvas.width(), canvas.height()));
-                frames.back()->canvas.fill_options() = canvas.fill_options();
-                continue;
-            case Item::EndFilter: {
-                if (frames.empty()) continue;
-                std::unique_ptr<Frame> f = std::move(frames.back());
-                frames.pop_back();
-                Pixmap result = std::move(f->pm);
-                if (it.filters)
-                    for (const filter::FilterGraph& g : *it.filters)
-                        result = filter::apply_filter(g, base * it.transform, result);
-                cur().draw_layer(result, 1.0);
-                continue;
-            }
-            case Item::EndLayer: {
-                if (frames.empty()) continue;
-                std::unique_ptr<Frame> f = std::move(frames.back());
-                frames.pop_back();
-                cur().draw_layer(f->pm, f->opacity, f->blend);
-                continue;
-            }
-            case Item::EndMask: {
-                if (frames.size() < 2) continue;
-                std::unique_ptr<Frame> f = std::move(frames.back());
-                frames.pop_back();
-                apply_mask(frames.back()->pm, f->luminance ? mask_from_luminance(f->pm) : mask_from_alpha(f->pm));
-                continue;
-            }
-            case Item::PushClip: {
-                Canvas& c = cur();
-                c.save();
-                const Affine saved = c.transform();
-                c.set_transform(base * it.transform);
-                c.clip_rect(it.path.bounds());
-                c.set_transform(saved);
-                continue;
-            }
-            case Item::PopClip: cur().restore(); continue;
-            case Item::SvgImage:
-                if (it.svg_image) it.svg_image->render(cur(), base * it.transform);
-                continue;
-            case Item::Bounds: continue;
-            case Item::Fill:
-            case Item::Stroke: break;
-        }
-        Canvas& c = cur();
-        Paint paint = Paint::solid(it.color);
-        paint.shader = it.shader;
-        paint.opacity = it.opacity;
-        if (it.pattern) {
-            // The tile is drawn at the device resolution the fill needs, then repeated.
-            const PatternTile& pt = *it.pattern;
-            const Affine m = base * it.transform * pt.transform;
-            const double sx = std::hypot(m.a, m.b) * pt.tile.width(), sy = std::hypot(m.c, m.d) * pt.tile.height();
-            const int tw = static_cast<int>(std::clamp(std::ceil(sx), 1.0, 2048.0));
-            const int th = static_cast<int>(std::clamp(std::ceil(sy), 1.0, 2048.0));
-            auto tile = std::make_shared<Pixmap>(tw, th);
-            Canvas tc(*tile);
-            tc.fill_options() = c.fill_options();
-            render_items(pt.items, tc,
-                         Affine::scale(tw / pt.tile.width(), th / pt.tile.height()) *
-                             Affine::translate(-pt.tile.x0, -pt.tile.y0));
-            paint.shader = std::make_shared<const Shader>(
-                Shader::image(tile, true,
-                              pt.transform * Affine::translate(pt.tile.x0, pt.tile.y0) *
-                                  Affine::scale(pt.tile.width() / tw, pt.tile.height() / th),
-                              true));
-        }
-        const Affine saved = c.transform();
-        c.set_transform(base * it.transform);
-        if (it.kind == Item::Stroke)
-            c.stroke_path(it.path, it.stroke, paint);
-        else
-            c.fill_path(it.path, paint, it.rule);
-        c.set_transform(saved);
-    }
-}
-
-}  // namespace
-
-void SvgDocument::render(Canvas& canvas, const Affine& base) const { render_items(impl_->items, canvas, base); }
+void SvgDocument::render(Canvas& canvas, const Affine& base) const { svg::draw(impl_->items, canvas, base); }
 
 Pixmap SvgDocument::render() const { return render_size(impl_->width, impl_->height); }
 
