@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "formats/svg/text_properties.hpp"
-#include "formats/svg_text.hpp"
+#include "formats/svg/text_layout.hpp"
 
 namespace casteljau::svg {
 

@@ -32,7 +32,7 @@
 #include "casteljau/paint.hpp"
 #include "casteljau/stroke.hpp"
 #include "casteljau/svg.hpp"
-#include "formats/css.hpp"
+#include "formats/svg/css.hpp"
 #include "formats/svg/display_list.hpp"
 #include "formats/svg/values.hpp"
 
@@ -235,7 +235,7 @@ void emit_marker(Context& cx, const pugi::xml_node& marker, const Style& st,
 std::optional<std::vector<std::uint8_t>> image_bytes(Context& cx, std::string_view ref);
 void image(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& cm, Viewport vp, double opacity);
 
-// filters.cpp: the glue between an element and its filters (svg_filter.hpp builds the graphs).
+// filters.cpp: the glue between an element and its filters (filter_graphs.hpp builds the graphs).
 std::optional<std::vector<svg_filter::FilterRef>> filter_refs(Context& cx, const pugi::xml_node& n);
 svg_filter::SvgFilterEnv filter_env(Context& cx, const Style& st, Viewport vp, int depth);
 std::optional<std::vector<filter::FilterGraph>> build_filters(Context& cx,

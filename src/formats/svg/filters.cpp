@@ -1,5 +1,5 @@
 // Formats stage, SVG conversion: the glue between an element and its filters. Reads the `filter`
-// property and gives svg_filter.cpp, which builds the filter graphs, what only the conversion
+// property and gives filter_graphs.cpp, which builds the filter graphs, what only the conversion
 // knows: the cascade, ids, lengths and the content of feImage.
 #include "formats/svg/context.hpp"
 
@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "formats/svg_filter.hpp"
+#include "formats/svg/filter_graphs.hpp"
 
 namespace casteljau::svg {
 

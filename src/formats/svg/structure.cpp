@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "formats/svg_filter.hpp"
+#include "formats/svg/filter_graphs.hpp"
 
 namespace casteljau::svg {
 

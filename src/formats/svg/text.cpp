@@ -14,7 +14,7 @@
 #include "casteljau/flatten.hpp"
 #include "casteljau/text.hpp"
 #include "formats/svg/text_properties.hpp"
-#include "formats/svg_text.hpp"
+#include "formats/svg/text_layout.hpp"
 
 namespace casteljau::svg {
 
@@ -140,7 +140,7 @@ void text_element(Context& cx, const pugi::xml_node& node, TextCtx ctx, const St
                     try {
                         flatten(tp.path, Affine{}, 0.01, poly);
                     } catch (const Error&) {
-                        poly.clear();  // an unusable path: the text is not drawn (svg_text.cpp)
+                        poly.clear();  // an unusable path: the text is not drawn (text_layout.cpp)
                     }
                     double total = 0;
                     std::uint32_t s0 = 0;

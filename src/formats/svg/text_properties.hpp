@@ -1,5 +1,5 @@
 // Internal (formats): the text properties of SVG text elements and the input text conversion
-// builds for the layout (svg_text.hpp). text.cpp walks a text element and its tspan, tref, textPath
+// builds for the layout (text_layout.hpp). text.cpp walks a text element and its tspan, tref, textPath
 // and a children; text_properties.cpp reads the font and text properties each of them sets.
 // Thread-safety: plain functions and values.
 #pragma once
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "formats/svg/context.hpp"
-#include "formats/svg_text.hpp"
+#include "formats/svg/text_layout.hpp"
 
 namespace casteljau::svg {
 

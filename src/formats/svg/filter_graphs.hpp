@@ -1,7 +1,7 @@
 // Formats stage, internal: SVG filters. Reads a <filter> element (with its href chain) and its
 // primitives into a filter::FilterGraph for one filtered element, and the `filter` property
 // (url() references and the CSS filter functions) into a list of steps. The SVG reader
-// (svg.cpp) supplies what it alone knows through SvgFilterEnv: the cascade, ids, lengths and the
+// (filters.cpp) supplies what it alone knows through SvgFilterEnv: the cascade, ids, lengths and the
 // content of feImage.
 // Coordinates: the graph is in the filtered element's user space. Thread-safety: plain functions.
 #pragma once

@@ -1,4 +1,4 @@
-// Formats stage: SVG filters (src/formats/svg_filter.hpp). The <filter> element and its href
+// Formats stage: SVG filters (filter_graphs.hpp). The <filter> element and its href
 // chain give the region (filterUnits), the primitive units and the primitives; each primitive's
 // attributes become a filter::Primitive in the filtered element's user space. What the resvg
 // test suite shows for invalid input is followed: a filter that names nothing, has no
@@ -6,7 +6,7 @@
 // or negative size or an unusable primitive hides the element; an `in` naming no earlier result
 // reads the previous result (SourceGraphic for the first primitive); BackgroundImage,
 // BackgroundAlpha, FillPaint and StrokePaint read SourceGraphic.
-#include "formats/svg_filter.hpp"
+#include "formats/svg/filter_graphs.hpp"
 
 #include <algorithm>
 #include <cctype>

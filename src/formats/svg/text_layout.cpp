@@ -1,4 +1,4 @@
-// Formats stage, SVG text layout (src/formats/svg_text.hpp).
+// Formats stage, SVG text layout (text_layout.hpp).
 //
 // characters (per span: one style) --chunks (a new one at every absolute x or y, and at every
 // textPath)--> bidi levels per chunk --> per (span, level) segment: fonts (family list, then
@@ -6,7 +6,7 @@
 // positions: dx/dy, letter- and word-spacing, textLength --> text-anchor --> baselines and
 // baseline-shift --> rotate or placement along a text path --> glyph outlines and decoration lines
 // in user space.
-#include "formats/svg_text.hpp"
+#include "formats/svg/text_layout.hpp"
 
 #include <algorithm>
 #include <cmath>
