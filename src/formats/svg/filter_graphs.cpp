@@ -218,6 +218,103 @@ bool read_light(const pugi::xml_node& n, const Units& u, filter::Light& l) {
     return false;
 }
 
+// feColorMatrix: its type and values (an invalid list leaves the identity).
+void read_color_matrix(const pugi::xml_node& n, filter::Primitive& p) {
+    using P = filter::Primitive;
+    p.op = P::ColorMatrix;
+    p.matrix = identity_matrix();
+    const std::string_view type = trim(n.attribute("type").value());
+    const pugi::xml_attribute values = n.attribute("values");
+    auto v = numbers(values.value());
+    if (type == "saturate") {
+        if (values && v && v->size() == 1) p.matrix = saturate_matrix(std::max(0.0, (*v)[0]));
+    } else if (type == "hueRotate") {
+        if (values && v && v->size() == 1) p.matrix = hue_rotate_matrix((*v)[0]);
+    } else if (type == "luminanceToAlpha") {
+        p.matrix = luminance_to_alpha_matrix();
+    } else if (type.empty() || type == "matrix") {
+        if (v && v->size() == 20) std::copy(v->begin(), v->end(), p.matrix.begin());
+    }
+}
+
+// feComponentTransfer: one transfer function per feFuncR/G/B/A child.
+void read_component_transfer(const pugi::xml_node& n, filter::Primitive& p) {
+    using P = filter::Primitive;
+    p.op = P::ComponentTransfer;
+    for (const pugi::xml_node& f : n.children()) {
+        const std::string_view fn = f.name();
+        const int ch = fn == "feFuncR" ? 0 : fn == "feFuncG" ? 1 : fn == "feFuncB" ? 2 : fn == "feFuncA" ? 3 : -1;
+        if (ch < 0) continue;
+        filter::TransferFunction t;
+        const std::string_view type = trim(f.attribute("type").value());
+        if (type == "table" || type == "discrete") {
+            auto tv = numbers(f.attribute("tableValues").value());
+            if (tv && !tv->empty()) {
+                t.type = type == "table" ? filter::TransferFunction::Table : filter::TransferFunction::Discrete;
+                t.table = *tv;
+            }
+        } else if (type == "linear") {
+            t.type = filter::TransferFunction::Linear;
+            t.slope = number_attr(f, "slope", 1);
+            t.intercept = number_attr(f, "intercept", 0);
+        } else if (type == "gamma") {
+            t.type = filter::TransferFunction::Gamma;
+            t.amplitude = number_attr(f, "amplitude", 1);
+            t.exponent = number_attr(f, "exponent", 1);
+            t.offset = number_attr(f, "offset", 0);
+        }
+        p.funcs[static_cast<std::size_t>(ch)] = t;
+    }
+}
+
+// feConvolveMatrix: order, kernel, divisor, bias, target, edge mode; false when invalid.
+bool read_convolve_matrix(const pugi::xml_node& n, filter::Primitive& p) {
+    using P = filter::Primitive;
+    p.op = P::ConvolveMatrix;
+    auto order = n.attribute("order") ? number_pair(n, "order")
+                                      : std::optional<std::pair<double, double>>{std::pair{3.0, 3.0}};
+    if (!order || order->first < 1 || order->second < 1 || order->first != std::floor(order->first) ||
+        order->second != std::floor(order->second))
+        return false;
+    if (order->first > limits::kMaxConvolveOrder || order->second > limits::kMaxConvolveOrder)
+        throw Error(ErrorKind::Limit, "feConvolveMatrix order " +
+                                          std::to_string(static_cast<long long>(std::min(order->first, 1e18))) +
+                                          " x " +
+                                          std::to_string(static_cast<long long>(std::min(order->second, 1e18))) +
+                                          " exceeds the limit of " + std::to_string(limits::kMaxConvolveOrder) +
+                                          " x " + std::to_string(limits::kMaxConvolveOrder));
+    p.order_x = static_cast<int>(order->first);
+    p.order_y = static_cast<int>(order->second);
+    auto k = numbers(n.attribute("kernelMatrix").value());
+    if (!k || k->size() != static_cast<std::size_t>(p.order_x * p.order_y)) return false;
+    p.kernel = *k;
+    double sum = 0;
+    for (double v : p.kernel) sum += v;
+    p.divisor = sum == 0 ? 1 : sum;
+    if (n.attribute("divisor")) {
+        auto d = number(n.attribute("divisor").value());
+        if (!d || *d == 0) return false;
+        p.divisor = *d;
+    }
+    p.bias = number_attr(n, "bias", 0);
+    p.target_x = p.order_x / 2;
+    p.target_y = p.order_y / 2;
+    if (n.attribute("targetX")) {
+        auto t = number(n.attribute("targetX").value());
+        if (!t || *t < 0 || *t >= p.order_x || *t != std::floor(*t)) return false;
+        p.target_x = static_cast<int>(*t);
+    }
+    if (n.attribute("targetY")) {
+        auto t = number(n.attribute("targetY").value());
+        if (!t || *t < 0 || *t >= p.order_y || *t != std::floor(*t)) return false;
+        p.target_y = static_cast<int>(*t);
+    }
+    p.edge = edge_mode(n, filter::EdgeMode::Duplicate);
+    p.preserve_alpha = trim(n.attribute("preserveAlpha").value()) == "true";
+    return true;
+}
+
+// The filter primitive element `n` read into `p`; false when it is unknown or invalid.
 bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv& env, filter::Primitive& p) {
     using P = filter::Primitive;
     const std::string_view name = n.name();
@@ -267,46 +364,9 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
             p.color = flood_color(n, env, "flood-color", "flood-opacity", Color::black());
         }
     } else if (name == "feColorMatrix") {
-        p.op = P::ColorMatrix;
-        p.matrix = identity_matrix();
-        const std::string_view type = trim(n.attribute("type").value());
-        const pugi::xml_attribute values = n.attribute("values");
-        auto v = numbers(values.value());
-        if (type == "saturate") {
-            if (values && v && v->size() == 1) p.matrix = saturate_matrix(std::max(0.0, (*v)[0]));
-        } else if (type == "hueRotate") {
-            if (values && v && v->size() == 1) p.matrix = hue_rotate_matrix((*v)[0]);
-        } else if (type == "luminanceToAlpha") {
-            p.matrix = luminance_to_alpha_matrix();
-        } else if (type.empty() || type == "matrix") {
-            if (v && v->size() == 20) std::copy(v->begin(), v->end(), p.matrix.begin());
-        }
+        read_color_matrix(n, p);
     } else if (name == "feComponentTransfer") {
-        p.op = P::ComponentTransfer;
-        for (const pugi::xml_node& f : n.children()) {
-            const std::string_view fn = f.name();
-            const int ch = fn == "feFuncR" ? 0 : fn == "feFuncG" ? 1 : fn == "feFuncB" ? 2 : fn == "feFuncA" ? 3 : -1;
-            if (ch < 0) continue;
-            filter::TransferFunction t;
-            const std::string_view type = trim(f.attribute("type").value());
-            if (type == "table" || type == "discrete") {
-                auto tv = numbers(f.attribute("tableValues").value());
-                if (tv && !tv->empty()) {
-                    t.type = type == "table" ? filter::TransferFunction::Table : filter::TransferFunction::Discrete;
-                    t.table = *tv;
-                }
-            } else if (type == "linear") {
-                t.type = filter::TransferFunction::Linear;
-                t.slope = number_attr(f, "slope", 1);
-                t.intercept = number_attr(f, "intercept", 0);
-            } else if (type == "gamma") {
-                t.type = filter::TransferFunction::Gamma;
-                t.amplitude = number_attr(f, "amplitude", 1);
-                t.exponent = number_attr(f, "exponent", 1);
-                t.offset = number_attr(f, "offset", 0);
-            }
-            p.funcs[static_cast<std::size_t>(ch)] = t;
-        }
+        read_component_transfer(n, p);
     } else if (name == "feMorphology") {
         p.op = P::Morphology;
         p.dilate = trim(n.attribute("operator").value()) == "dilate";
@@ -317,47 +377,7 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
         p.rx = u.lx(r->first);
         p.ry = u.ly(r->second);
     } else if (name == "feConvolveMatrix") {
-        p.op = P::ConvolveMatrix;
-        auto order = n.attribute("order") ? number_pair(n, "order")
-                                          : std::optional<std::pair<double, double>>{std::pair{3.0, 3.0}};
-        if (!order || order->first < 1 || order->second < 1 || order->first != std::floor(order->first) ||
-            order->second != std::floor(order->second))
-            return false;
-        if (order->first > limits::kMaxConvolveOrder || order->second > limits::kMaxConvolveOrder)
-            throw Error(ErrorKind::Limit, "feConvolveMatrix order " +
-                                              std::to_string(static_cast<long long>(std::min(order->first, 1e18))) +
-                                              " x " +
-                                              std::to_string(static_cast<long long>(std::min(order->second, 1e18))) +
-                                              " exceeds the limit of " + std::to_string(limits::kMaxConvolveOrder) +
-                                              " x " + std::to_string(limits::kMaxConvolveOrder));
-        p.order_x = static_cast<int>(order->first);
-        p.order_y = static_cast<int>(order->second);
-        auto k = numbers(n.attribute("kernelMatrix").value());
-        if (!k || k->size() != static_cast<std::size_t>(p.order_x * p.order_y)) return false;
-        p.kernel = *k;
-        double sum = 0;
-        for (double v : p.kernel) sum += v;
-        p.divisor = sum == 0 ? 1 : sum;
-        if (n.attribute("divisor")) {
-            auto d = number(n.attribute("divisor").value());
-            if (!d || *d == 0) return false;
-            p.divisor = *d;
-        }
-        p.bias = number_attr(n, "bias", 0);
-        p.target_x = p.order_x / 2;
-        p.target_y = p.order_y / 2;
-        if (n.attribute("targetX")) {
-            auto t = number(n.attribute("targetX").value());
-            if (!t || *t < 0 || *t >= p.order_x || *t != std::floor(*t)) return false;
-            p.target_x = static_cast<int>(*t);
-        }
-        if (n.attribute("targetY")) {
-            auto t = number(n.attribute("targetY").value());
-            if (!t || *t < 0 || *t >= p.order_y || *t != std::floor(*t)) return false;
-            p.target_y = static_cast<int>(*t);
-        }
-        p.edge = edge_mode(n, filter::EdgeMode::Duplicate);
-        p.preserve_alpha = trim(n.attribute("preserveAlpha").value()) == "true";
+        if (!read_convolve_matrix(n, p)) return false;
     } else if (name == "feTile") {
         p.op = P::Tile;
     } else if (name == "feImage") {
