@@ -34,17 +34,13 @@
 #include "casteljau/svg.hpp"
 #include "formats/svg/css.hpp"
 #include "formats/svg/display_list.hpp"
+#include "formats/svg/filter_graphs.hpp"
 #include "formats/svg/values.hpp"
 
 namespace casteljau::svg_text {
 class FontSet;
 struct Outline;
 }  // namespace casteljau::svg_text
-
-namespace casteljau::svg_filter {
-struct SvgFilterEnv;
-struct FilterRef;
-}  // namespace casteljau::svg_filter
 
 namespace casteljau::svg {
 
@@ -236,6 +232,22 @@ std::optional<std::vector<std::uint8_t>> image_bytes(Context& cx, std::string_vi
 void image(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& cm, Viewport vp, double opacity);
 
 // filters.cpp: the glue between an element and its filters (filter_graphs.hpp builds the graphs).
+// An element's filters: the steps of its `filter` property (nullopt: not filtered) and the
+// <filter> elements they name.
+struct ElementFilters {
+    std::optional<std::vector<svg_filter::FilterRef>> refs;
+    std::vector<pugi::xml_node> nodes;
+};
+// The filters of `child` with its style `cst`: an invalid function or a recursive filter is
+// ignored (with a warning); nullopt when the element is not drawn (a lone url naming no filter).
+std::optional<ElementFilters> element_filters(Context& cx, const pugi::xml_node& child, const Style& cst, Viewport vp,
+                                              int depth);
+// Ends the filtered content that starts with the BeginFilter item at `filter_first`: the
+// EndFilter item with the graphs built for the content's bounding box in the user space of `cm`.
+// When an feImage draws the filtered element itself, the filter is ignored (BeginFilter removed).
+// False when a filter is invalid: the element is not drawn.
+bool finish_filters(Context& cx, const pugi::xml_node& child, const ElementFilters& filters, std::size_t filter_first,
+                    const Affine& cm, const Style& cst, Viewport vp, int depth);
 std::optional<std::vector<svg_filter::FilterRef>> filter_refs(Context& cx, const pugi::xml_node& n);
 svg_filter::SvgFilterEnv filter_env(Context& cx, const Style& st, Viewport vp, int depth);
 std::optional<std::vector<filter::FilterGraph>> build_filters(Context& cx,

@@ -103,4 +103,67 @@ std::optional<std::vector<filter::FilterGraph>> build_filters(Context& cx,
     return out;
 }
 
+std::optional<ElementFilters> element_filters(Context& cx, const pugi::xml_node& child, const Style& cst, Viewport vp,
+                                              int depth) {
+    ElementFilters out;
+    std::optional<std::vector<svg_filter::FilterRef>>& frefs = out.refs;
+    frefs = filter_refs(cx, child);
+    if (frefs) {
+        // An invalid filter function makes the whole property invalid (ignored); a url naming
+        // no filter hides the element when it stands alone and is skipped in a list (as resvg).
+        const svg_filter::SvgFilterEnv env = filter_env(cx, cst, vp, depth);
+        const bool bad_function = std::any_of(frefs->begin(), frefs->end(), [&](const svg_filter::FilterRef& r) {
+            return r.url.empty() && !svg_filter::build_function(r, std::nullopt, env);
+        });
+        if (bad_function) {
+            warn(cx, std::string("<") + child.name() + ">: invalid filter function; filter ignored");
+            frefs.reset();
+        }
+    }
+    if (frefs) {
+        std::vector<svg_filter::FilterRef> kept;
+        for (const svg_filter::FilterRef& r : *frefs) {
+            if (!r.url.empty()) {
+                const pugi::xml_node f = lookup(cx, r.url);
+                if (!f || std::string_view(f.name()) != "filter") {
+                    if (frefs->size() == 1) return std::nullopt;
+                    continue;
+                }
+                out.nodes.push_back(f);
+            }
+            kept.push_back(r);
+        }
+        *frefs = std::move(kept);
+    }
+    if (std::any_of(out.nodes.begin(), out.nodes.end(), [&](const pugi::xml_node& f) { return is_active(cx, f); })) {
+        // Drawn inside its own filter (through feImage): drawn without the filter.
+        warn(cx, std::string("<") + child.name() + ">: recursive filter ignored");
+        frefs.reset();
+        out.nodes.clear();
+    }
+    return out;
+}
+
+bool finish_filters(Context& cx, const pugi::xml_node& child, const ElementFilters& filters, std::size_t filter_first,
+                    const Affine& cm, const Style& cst, Viewport vp, int depth) {
+    cx.filtering.push_back(child);
+    const bool outer_self_reference = cx.filter_self_reference;
+    cx.filter_self_reference = false;
+    auto graphs = build_filters(cx, *filters.refs, items_bbox(cx, filter_first + 1, cm), cst, vp, depth);
+    cx.filtering.pop_back();
+    const bool self_reference = cx.filter_self_reference;
+    cx.filter_self_reference = outer_self_reference;
+    if (self_reference) {
+        warn(cx, std::string("<") + child.name() + ">: feImage references the filtered element; filter ignored");
+        cx.items.erase(cx.items.begin() + static_cast<std::ptrdiff_t>(filter_first));
+        return true;
+    }
+    if (!graphs) return false;
+    DisplayItem end = layer_item(DisplayItem::EndFilter, 1);
+    end.transform = cm;
+    end.filters = std::make_shared<const std::vector<filter::FilterGraph>>(std::move(*graphs));
+    cx.items.push_back(std::move(end));
+    return true;
+}
+
 }  // namespace casteljau::svg

@@ -198,43 +198,10 @@ void element(Context& cx, const pugi::xml_node& child, const Style& st, const Af
         if (k == "mix-blend-mode") parse_blend_mode(trim(v), blend);
         if (k == "isolation") isolate = trim(v) == "isolate";
     }
-    std::optional<std::vector<svg_filter::FilterRef>> frefs = filter_refs(cx, child);
-    std::vector<pugi::xml_node> filter_nodes;
-    if (frefs) {
-        // An invalid filter function makes the whole property invalid (ignored); a url naming
-        // no filter hides the element when it stands alone and is skipped in a list (as resvg).
-        const svg_filter::SvgFilterEnv env = filter_env(cx, cst, vp, depth);
-        const bool bad_function = std::any_of(frefs->begin(), frefs->end(), [&](const svg_filter::FilterRef& r) {
-            return r.url.empty() && !svg_filter::build_function(r, std::nullopt, env);
-        });
-        if (bad_function) {
-            warn(cx, std::string("<") + child.name() + ">: invalid filter function; filter ignored");
-            frefs.reset();
-        }
-    }
-    if (frefs) {
-        std::vector<svg_filter::FilterRef> kept;
-        for (const svg_filter::FilterRef& r : *frefs) {
-            if (!r.url.empty()) {
-                const pugi::xml_node f = lookup(cx, r.url);
-                if (!f || std::string_view(f.name()) != "filter") {
-                    if (frefs->size() == 1) return;
-                    continue;
-                }
-                filter_nodes.push_back(f);
-            }
-            kept.push_back(r);
-        }
-        *frefs = std::move(kept);
-    }
-    if (std::any_of(filter_nodes.begin(), filter_nodes.end(),
-                    [&](const pugi::xml_node& f) { return is_active(cx, f); })) {
-        // Drawn inside its own filter (through feImage): drawn without the filter.
-        warn(cx, std::string("<") + child.name() + ">: recursive filter ignored");
-        frefs.reset();
-        filter_nodes.clear();
-    }
-    const bool layered = opacity < 1 || clip || mask || blend != BlendMode::Normal || isolate || frefs;
+    const std::optional<ElementFilters> filters = element_filters(cx, child, cst, vp, depth);
+    if (!filters) return;
+    const bool filtered = filters->refs.has_value();
+    const bool layered = opacity < 1 || clip || mask || blend != BlendMode::Normal || isolate || filtered;
     const std::size_t first = cx.items.size();
     if (layered) {
         DisplayItem begin = layer_item(DisplayItem::BeginLayer, opacity);
@@ -242,32 +209,13 @@ void element(Context& cx, const pugi::xml_node& child, const Style& st, const Af
         cx.items.push_back(std::move(begin));
     }
     const std::size_t filter_first = cx.items.size();
-    if (frefs) cx.items.push_back(layer_item(DisplayItem::BeginFilter, 1));
-    cx.active_refs.insert(cx.active_refs.end(), filter_nodes.begin(), filter_nodes.end());
+    if (filtered) cx.items.push_back(layer_item(DisplayItem::BeginFilter, 1));
+    cx.active_refs.insert(cx.active_refs.end(), filters->nodes.begin(), filters->nodes.end());
     content(cx, child, cst, cm, vp, depth, layered ? 1.0 : opacity);
-    cx.active_refs.resize(cx.active_refs.size() - filter_nodes.size());
-    if (frefs) {
-        cx.filtering.push_back(child);
-        const bool outer_self_reference = cx.filter_self_reference;
-        cx.filter_self_reference = false;
-        auto graphs = build_filters(cx, *frefs, items_bbox(cx, filter_first + 1, cm), cst, vp, depth);
-        cx.filtering.pop_back();
-        const bool self_reference = cx.filter_self_reference;
-        cx.filter_self_reference = outer_self_reference;
-        if (self_reference) {
-            warn(cx, std::string("<") + child.name() + ">: feImage references the filtered element; filter ignored");
-            cx.items.erase(cx.items.begin() + static_cast<std::ptrdiff_t>(filter_first));
-            graphs.reset();
-        } else if (!graphs) {
-            cx.items.resize(first);
-            return;
-        }
-        if (graphs) {
-            DisplayItem end = layer_item(DisplayItem::EndFilter, 1);
-            end.transform = cm;
-            end.filters = std::make_shared<const std::vector<filter::FilterGraph>>(std::move(*graphs));
-            cx.items.push_back(std::move(end));
-        }
+    cx.active_refs.resize(cx.active_refs.size() - filters->nodes.size());
+    if (filtered && !finish_filters(cx, child, *filters, filter_first, cm, cst, vp, depth)) {
+        cx.items.resize(first);
+        return;
     }
     if (layered) {
         const std::optional<Rect> box = items_bbox(cx, first + 1, cm);
