@@ -73,7 +73,7 @@ void read_style_sheets(Context& cx, const pugi::xml_node& root) {
     }
     if (cx.sheet.truncated)
         warn(cx, "style sheets hold more than " + std::to_string(current_limits().css_rules) +
-             " rules; the rest are ignored");
+                     " rules; the rest are ignored");
 }
 
 double font_size_of(Context& cx, const pugi::xml_node& node) {

@@ -87,8 +87,8 @@ void clip_child(Context& cx, const pugi::xml_node& c, const Affine& m, FillRule 
         const pugi::xml_node target = *h == '#' ? lookup(cx, h + 1) : pugi::xml_node();
         if (!target || is_active(cx, target)) return;
         const std::string_view tn = target.name();
-        if (tn != "path" && tn != "rect" && tn != "circle" && tn != "ellipse" && tn != "polyline" &&
-            tn != "polygon" && tn != "text")
+        if (tn != "path" && tn != "rect" && tn != "circle" && tn != "ellipse" && tn != "polyline" && tn != "polygon" &&
+            tn != "text")
             return;  // only shapes may be used inside a clipPath
         cx.active_refs.push_back(target);
         const Affine at = Affine::translate(length_attr(cx, c, "x", vp.w), length_attr(cx, c, "y", vp.h));
@@ -158,10 +158,9 @@ void emit_mask(Context& cx, const pugi::xml_node& mask, const Affine& cm, const 
                 Rect::from_xywh(box->x0 + frac("x", -0.1) * box->width(), box->y0 + frac("y", -0.1) * box->height(),
                                 frac("width", 1.2) * box->width(), frac("height", 1.2) * box->height());
         } else {
-            region = Rect::from_xywh(length_attr(cx, mask, "x", vp.w, -0.1 * vp.w),
-                                     length_attr(cx, mask, "y", vp.h, -0.1 * vp.h),
-                                     length_attr(cx, mask, "width", vp.w, 1.2 * vp.w),
-                                     length_attr(cx, mask, "height", vp.h, 1.2 * vp.h));
+            region = Rect::from_xywh(
+                length_attr(cx, mask, "x", vp.w, -0.1 * vp.w), length_attr(cx, mask, "y", vp.h, -0.1 * vp.h),
+                length_attr(cx, mask, "width", vp.w, 1.2 * vp.w), length_attr(cx, mask, "height", vp.h, 1.2 * vp.h));
         }
         if (region.width() > 0 && region.height() > 0) {
             Affine content_m = cm;

@@ -31,25 +31,34 @@ struct PatternTile;
 
 struct DisplayItem {
     enum Kind {
-        Fill,        // fills `path` with `color` (or `shader`, or `pattern`) under `rule`, times `opacity`
-        Stroke,      // strokes `path` with `stroke`, painted like a Fill
-        BeginLayer,  // opens a transparent layer: a group with `opacity` < 1, a clip-path or mask, a
-                     // `mix-blend-mode` (`blend`) or isolation; EndLayer composites it back with
-                     // `opacity` and `blend`
+        // Fills `path` with `color` (or `shader`, or `pattern`) under `rule`, times `opacity`.
+        Fill,
+        // Strokes `path` with `stroke`, painted like a Fill.
+        Stroke,
+        // Opens a transparent layer: a group with `opacity` < 1, a clip-path or mask, a
+        // `mix-blend-mode` (`blend`) or isolation. EndLayer composites it back with its `opacity`
+        // and `blend`.
+        BeginLayer,
         EndLayer,
-        PushClip,    // clips what follows to the bounds of `path` (a viewport or image box) until PopClip
+        // Clips what follows, up to PopClip, to the bounds of `path` (a viewport or image box).
+        PushClip,
         PopClip,
-        BeginClip,   // the content of a clipPath, drawn into a mask layer up to EndMask; that mask's
-                     // alpha multiplies the enclosing layer (the one the clipped element is drawn in)
-        BeginMask,   // the content of a mask up to EndMask, which multiplies the enclosing layer by its
-                     // luminance (`luminance` true) or alpha
-        EndMask,     // closes a BeginClip or a BeginMask
-        SvgImage,    // an <image> of an SVG document (`svg_image`), drawn with `transform` as its base
-        BeginFilter, // opens a layer for a filtered element; EndFilter applies `filters` to it, in the
-                     // user space of EndFilter's `transform`, and draws the result
+        // The content of a clipPath, drawn into a mask layer up to EndMask; that mask's alpha
+        // multiplies the enclosing layer (the one the clipped element is drawn in).
+        BeginClip,
+        // The content of a mask up to EndMask, which multiplies the enclosing layer by its
+        // luminance (`luminance` true) or alpha.
+        BeginMask,
+        // Closes a BeginClip or a BeginMask.
+        EndMask,
+        // An <image> of an SVG document (`svg_image`), drawn with `transform` as its base.
+        SvgImage,
+        // Opens a layer for a filtered element; EndFilter applies `filters` to it, in the user space
+        // of EndFilter's `transform`, and draws the result.
+        BeginFilter,
         EndFilter,
-        Bounds       // a path never drawn that counts in bounding boxes (a hidden or fully transparent
-                     // element)
+        // A path never drawn that counts in bounding boxes (a hidden or fully transparent element).
+        Bounds
     } kind = Fill;
     bool luminance = false;               // BeginMask: luminance (true) or alpha mask
     BlendMode blend = BlendMode::Normal;  // BeginLayer: mix-blend-mode

@@ -53,7 +53,6 @@ SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options
     return SvgDocument(std::move(impl));
 }
 
-
 void SvgDocument::render(Canvas& canvas, const Affine& base) const { svg::draw(impl_->items, canvas, base); }
 
 Pixmap SvgDocument::render() const { return render_size(impl_->width, impl_->height); }

@@ -100,8 +100,8 @@ void draw(const DisplayList& items, Canvas& canvas, const Affine& base) {
             Canvas tc(*tile);
             tc.fill_options() = c.fill_options();
             draw(pt.items, tc,
-                         Affine::scale(tw / pt.tile.width(), th / pt.tile.height()) *
-                             Affine::translate(-pt.tile.x0, -pt.tile.y0));
+                 Affine::scale(tw / pt.tile.width(), th / pt.tile.height()) *
+                     Affine::translate(-pt.tile.x0, -pt.tile.y0));
             paint.shader = std::make_shared<const Shader>(
                 Shader::image(tile, true,
                               pt.transform * Affine::translate(pt.tile.x0, pt.tile.y0) *

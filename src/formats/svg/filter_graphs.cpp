@@ -271,18 +271,17 @@ void read_component_transfer(const pugi::xml_node& n, filter::Primitive& p) {
 bool read_convolve_matrix(const pugi::xml_node& n, filter::Primitive& p) {
     using P = filter::Primitive;
     p.op = P::ConvolveMatrix;
-    auto order = n.attribute("order") ? number_pair(n, "order")
-                                      : std::optional<std::pair<double, double>>{std::pair{3.0, 3.0}};
+    auto order =
+        n.attribute("order") ? number_pair(n, "order") : std::optional<std::pair<double, double>>{std::pair{3.0, 3.0}};
     if (!order || order->first < 1 || order->second < 1 || order->first != std::floor(order->first) ||
         order->second != std::floor(order->second))
         return false;
     if (order->first > limits::kMaxConvolveOrder || order->second > limits::kMaxConvolveOrder)
         throw Error(ErrorKind::Limit, "feConvolveMatrix order " +
-                                          std::to_string(static_cast<long long>(std::min(order->first, 1e18))) +
-                                          " x " +
+                                          std::to_string(static_cast<long long>(std::min(order->first, 1e18))) + " x " +
                                           std::to_string(static_cast<long long>(std::min(order->second, 1e18))) +
-                                          " exceeds the limit of " + std::to_string(limits::kMaxConvolveOrder) +
-                                          " x " + std::to_string(limits::kMaxConvolveOrder));
+                                          " exceeds the limit of " + std::to_string(limits::kMaxConvolveOrder) + " x " +
+                                          std::to_string(limits::kMaxConvolveOrder));
     p.order_x = static_cast<int>(order->first);
     p.order_y = static_cast<int>(order->second);
     auto k = numbers(n.attribute("kernelMatrix").value());

@@ -39,7 +39,7 @@ svg_filter::SvgFilterEnv filter_env(Context& cx, const Style& st, Viewport vp, i
     // feImage: the referenced element (drawn like a `use` in the filtered element's user
     // space) or the image, captured as items and drawn when the filter runs.
     env.image = [&cx, vp, depth](const pugi::xml_node& fe,
-                                      const Rect& sub) -> std::function<void(Pixmap&, const Affine&)> {
+                                 const Rect& sub) -> std::function<void(Pixmap&, const Affine&)> {
         DisplayList captured;
         std::swap(captured, cx.items);
         const char* h = href(fe);

@@ -101,17 +101,14 @@ void emit_markers(Context& cx, const Path& path, const Style& st, const Affine& 
             if (auto n = parse_number(o)) angle = *n * unit;
         }
         if (!context) context = std::make_shared<const ContextElement>(ContextElement{path, cm, vp});
-        emit_marker(cx, marker, st, context, cm * Affine::translate(v.p.x, v.p.y) * Affine::rotate(angle), vp,
-                    depth);
+        emit_marker(cx, marker, st, context, cm * Affine::translate(v.p.x, v.p.y) * Affine::rotate(angle), vp, depth);
     }
 }
 
 void emit_marker(Context& cx, const pugi::xml_node& marker, const Style& st,
-                 const std::shared_ptr<const ContextElement>& context, const Affine& at, Viewport vp,
-                 int depth) {
+                 const std::shared_ptr<const ContextElement>& context, const Affine& at, Viewport vp, int depth) {
     double scale = 1;
-    if (std::string_view(marker.attribute("markerUnits").value()) != "userSpaceOnUse")
-        scale = st.stroke_style.width;
+    if (std::string_view(marker.attribute("markerUnits").value()) != "userSpaceOnUse") scale = st.stroke_style.width;
     if (!(scale > 0)) return;
     const double mw = length_attr(cx, marker, "markerWidth", vp.w, 3);
     const double mh = length_attr(cx, marker, "markerHeight", vp.h, 3);

@@ -57,8 +57,7 @@ bool pattern(Context& cx, const pugi::xml_node& node, const Path& path, Viewport
                                num("width", 1) * b.width(), num("height", 1) * b.height());
     else
         tile = Rect::from_xywh(num("x", vp.w), num("y", vp.h), num("width", vp.w), num("height", vp.h));
-    if (!(tile.width() > 0) || !(tile.height() > 0) || !std::isfinite(tile.width()) ||
-        !std::isfinite(tile.height()))
+    if (!(tile.width() > 0) || !(tile.height() > 0) || !std::isfinite(tile.width()) || !std::isfinite(tile.height()))
         return false;
     Affine pt;
     if (const std::string_view t = attr("patternTransform"); !t.empty()) {

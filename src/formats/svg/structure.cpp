@@ -71,8 +71,7 @@ Affine with_origin(Context& cx, const pugi::xml_node& n, const Affine& t, Viewpo
         }
     }
     if (words.empty() || words.size() > 3) return t;
-    if (words.size() == 2 &&
-        (words[0] == "top" || words[0] == "bottom" || words[1] == "left" || words[1] == "right"))
+    if (words.size() == 2 && (words[0] == "top" || words[0] == "bottom" || words[1] == "left" || words[1] == "right"))
         std::swap(words[0], words[1]);
     auto axis = [&](const std::string& word, double size, bool horizontal) -> double {
         if (word == "center") return size / 2;

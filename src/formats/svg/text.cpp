@@ -206,7 +206,7 @@ std::vector<svg_text::Outline> text_outlines(Context& cx, const pugi::xml_node& 
     text_element(cx, node, ctx, st, Affine{}, vp, b, 1);
     if (b.truncated)
         warn(cx, "the document's text holds more than " + std::to_string(cx.limits.svg_text_chars) +
-             " characters; the rest is not drawn");
+                     " characters; the rest is not drawn");
     // A trailing collapsible space is removed.
     if (!b.in.spans.empty() && b.last_space && !b.last_preserved && !b.in.spans.back().text.empty() &&
         b.in.spans.back().text.back() == U' ') {
@@ -217,7 +217,7 @@ std::vector<svg_text::Outline> text_outlines(Context& cx, const pugi::xml_node& 
     for (const svg_text::Span& sp : b.in.spans) {
         if (!(sp.font.size <= limits::kMaxSvgFontSize)) {
             warn(cx, "font-size above " + std::to_string(static_cast<long long>(limits::kMaxSvgFontSize)) +
-                 "; text not drawn");
+                         "; text not drawn");
             return {};
         }
     }
@@ -237,8 +237,7 @@ std::vector<svg_text::Outline> text_outlines(Context& cx, const pugi::xml_node& 
             std::size_t i = r.begin;
             for (std::string_view w : split_list(v)) {
                 if (i >= r.end) break;
-                auto l =
-                    std::string_view(attr) == "rotate" ? parse_number(w) : text_length(w, r.font_size, percent_of);
+                auto l = std::string_view(attr) == "rotate" ? parse_number(w) : text_length(w, r.font_size, percent_of);
                 if (!l) return;
                 b.in.pos[i++].*field = *l;
                 last = *l;

@@ -328,8 +328,8 @@ bool shape_segment(ChunkShaping& c, FontSet& fonts, std::size_t sb, std::size_t 
 
 // The clusters of the chunk [cb, ce) in visual order: bidi levels, then one segment per span,
 // level and orientation shaped on its own. `warned_fonts`: a missing font was reported already.
-std::vector<Cluster> shape_chunk(const TextInput& in, const FlatText& t, FontSet& fonts, std::size_t cb,
-                                 std::size_t ce, std::vector<std::uint8_t>& levels, std::vector<ShapedRun>& runs,
+std::vector<Cluster> shape_chunk(const TextInput& in, const FlatText& t, FontSet& fonts, std::size_t cb, std::size_t ce,
+                                 std::vector<std::uint8_t>& levels, std::vector<ShapedRun>& runs,
                                  std::vector<std::string>& warnings, bool& warned_fonts) {
     const std::u32string& text = t.text;
     const std::u32string_view ctext(text.data() + cb, ce - cb);

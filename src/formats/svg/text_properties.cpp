@@ -246,8 +246,7 @@ void apply_text_props(Context& cx, const pugi::xml_node& node, TextCtx& ctx) {
             ctx.font.variations.clear();
             if (val != "normal")
                 for (const auto& [tag, value] : tag_value_list(val))
-                    if (auto n = parse_number(value); n && tag.size() <= 4)
-                        ctx.font.variations.push_back({tag, *n});
+                    if (auto n = parse_number(value); n && tag.size() <= 4) ctx.font.variations.push_back({tag, *n});
         } else if (k == "letter-spacing") {
             if (val == "normal")
                 ctx.letter_spacing = 0;
@@ -296,8 +295,7 @@ void apply_text_props(Context& cx, const pugi::xml_node& node, TextCtx& ctx) {
             ctx.direction = std::string(val);
         }
     }
-    if (const char* sp = node.attribute("xml:space").value(); *sp)
-        ctx.preserve = std::string_view(sp) == "preserve";
+    if (const char* sp = node.attribute("xml:space").value(); *sp) ctx.preserve = std::string_view(sp) == "preserve";
     ctx.font.features.clear();
     if (ctx.small_caps) ctx.font.features.push_back("smcp");
     if (ctx.no_kerning) ctx.font.features.push_back("kern=0");

@@ -45,7 +45,7 @@ void use(Context& cx, const pugi::xml_node& u, const Style& st, const Affine& m,
     const std::string_view tn = target.name();
     const bool instance = tn == "symbol" || tn == "svg";
     if (!cx.measuring_use && ((st.fill.kind == PaintRef::Server && !st.fill.context) ||
-                           (st.stroke.kind == PaintRef::Server && !st.stroke.context))) {
+                              (st.stroke.kind == PaintRef::Server && !st.stroke.context))) {
         // The use element is the context element of context-fill and context-stroke: a paint
         // server is resolved for its bounding box, in its user space (with x and y for an
         // element; the use's own for a symbol or svg). The box is that of the content, taken
