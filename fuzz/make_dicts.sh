@@ -26,7 +26,7 @@ header() { printf '# libFuzzer dictionary for %s, made by fuzz/make_dicts.sh fro
 {
   header fuzz_css "src/formats/svg/css.cpp and the SVG properties"
   # The property names: the SVG conversion's files, without the filter and text layout engines it calls.
-  words $(ls src/formats/svg/*.cpp | grep -v -e /filter_graphs.cpp -e /text_layout.cpp -e /transform.cpp)
+  words $(ls src/formats/svg/*.cpp | grep -v -e /filter_ -e /text_layout.cpp -e /text_fonts.cpp -e /transform.cpp)
   literal '{' '}' ';' ':' ',' '*' '>' '+' '~' '[' ']' '=' '~=' '|=' '^=' '$=' '*=' '.' '#' '/*' '*/' '@import' '@media' \
     ':first-child' '!important' 'url(' '"' "'"
 } > "$out/css.dict"
