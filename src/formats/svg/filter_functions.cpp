@@ -72,7 +72,8 @@ std::optional<filter::FilterGraph> build_function(const FilterRef& fn, const std
     // The region of a filter function: -10% .. 110% of the viewport in user space (as resvg
     // does), so that shadows and blurs are not cut at the element's bounding box.
     (void)bbox;
-    g.region = Rect::from_xywh(-0.1 * env.vw, -0.1 * env.vh, 1.2 * env.vw, 1.2 * env.vh);
+    g.region =
+        Rect::from_xywh(-0.1 * env.viewport.w, -0.1 * env.viewport.h, 1.2 * env.viewport.w, 1.2 * env.viewport.h);
     P p;
     p.linear_rgb = false;
     p.subregion = g.region;

@@ -358,7 +358,8 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
             if (!fr) fr = def_fraction;
             return (is_pos ? origin : 0) + *fr * size;
         }
-        const double vsize = (std::string_view(name) == "x" || std::string_view(name) == "width") ? env.vw : env.vh;
+        const double vsize =
+            (std::string_view(name) == "x" || std::string_view(name) == "width") ? env.viewport.w : env.viewport.h;
         std::optional<double> l = v ? env.length(v, vsize) : std::nullopt;
         if (!l) l = def_fraction * vsize;
         return l;
@@ -392,7 +393,7 @@ std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const s
                 if (!fr) return def;
                 return horizontal ? (is_pos ? u.x(*fr) : u.lx(*fr)) : (is_pos ? u.y(*fr) : u.ly(*fr));
             }
-            auto l = env.length(at.value(), horizontal ? env.vw : env.vh);
+            auto l = env.length(at.value(), horizontal ? env.viewport.w : env.viewport.h);
             return l ? *l : def;
         };
         const double sx = *sub("x", base.x0, true, true), sy = *sub("y", base.y0, false, true);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "casteljau/filter.hpp"
+#include "formats/svg/values.hpp"
 
 namespace casteljau::svg_filter {
 
@@ -29,7 +30,7 @@ struct SvgFilterEnv {
     // The content of an feImage (an image or a referenced element), drawn in the filtered element's
     // user space; empty when there is nothing to draw. `subregion` is the primitive's subregion.
     std::function<std::function<void(Pixmap&, const Affine&)>(const pugi::xml_node&, const Rect& subregion)> image;
-    double vw = 100, vh = 100;  // viewport, for userSpaceOnUse percentages
+    svg::Viewport viewport;  // for userSpaceOnUse percentages
     Color current_color = Color::black();
 };
 

@@ -33,8 +33,7 @@ svg_filter::SvgFilterEnv filter_env(Context& cx, const Style& st, Viewport vp, i
     env.lookup = [&cx](std::string_view id) { return lookup(cx, id); };
     env.length = [fs = st.font_size](std::string_view t, double pct) { return parse_length(t, pct, fs); };
     env.color = [](std::string_view t) { return parse_color(t); };
-    env.vw = vp.w;
-    env.vh = vp.h;
+    env.viewport = vp;
     env.current_color = st.color;
     // feImage: the referenced element (drawn like a `use` in the filtered element's user
     // space) or the image, captured as items and drawn when the filter runs.
