@@ -1,4 +1,4 @@
-// libFuzzer target: the CSS reader of SVG style sheets (src/formats/css.hpp). The input is split
+// libFuzzer target: the CSS reader of SVG style sheets (src/formats/svg/css.hpp). The input is split
 // at the first NUL byte: the part before is a style sheet, the part after is a style attribute's
 // declarations; every parsed selector is matched against the elements of a small fixed document.
 #include <pugixml.hpp>
@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "formats/css.hpp"
+#include "formats/svg/css.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view all(reinterpret_cast<const char*>(data), size);

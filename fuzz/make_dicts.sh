@@ -15,9 +15,8 @@ literal() { for w in "$@"; do w=${w//\\/\\\\}; printf '"%s"\n' "${w//\"/\\\"}"; 
 header() { printf '# libFuzzer dictionary for %s, made by fuzz/make_dicts.sh from %s\n' "$1" "$2"; }
 
 {
-  header fuzz_svg "src/formats/svg*.cpp, css.cpp and the colour names"
-  words src/formats/svg.cpp src/formats/svg_filter.cpp src/formats/svg_text.cpp src/formats/svg_transform.cpp \
-    src/formats/css.cpp src/paint/named_colors.cpp
+  header fuzz_svg "src/formats/svg/*.cpp and the colour names"
+  words src/formats/svg/*.cpp src/paint/named_colors.cpp
   literal '<svg' '</svg>' '<?xml' '<!DOCTYPE' '<![CDATA[' ']]>' '<!--' '-->' '/>' '="' 'xmlns="http://www.w3.org/2000/svg"' \
     'xmlns:xlink="http://www.w3.org/1999/xlink"' 'xlink:href="#' 'href="#' 'url(#' 'data:image/png;base64,' \
     'data:image/svg+xml;base64,' '&#x' '&amp;' '<!ENTITY' '%' 'px' 'em' 'ex' 'pt' 'mm' 'deg' 'rad' 'e-' '1e30' 'NaN' \
@@ -25,8 +24,9 @@ header() { printf '# libFuzzer dictionary for %s, made by fuzz/make_dicts.sh fro
 } > "$out/svg.dict"
 
 {
-  header fuzz_css "src/formats/css.cpp and the SVG properties"
-  words src/formats/css.cpp src/formats/svg.cpp
+  header fuzz_css "src/formats/svg/css.cpp and the SVG properties"
+  # The property names: the SVG conversion's files, without the filter and text layout engines it calls.
+  words $(ls src/formats/svg/*.cpp | grep -v -e /filter_ -e /text_layout.cpp -e /text_fonts.cpp -e /transform.cpp)
   literal '{' '}' ';' ':' ',' '*' '>' '+' '~' '[' ']' '=' '~=' '|=' '^=' '$=' '*=' '.' '#' '/*' '*/' '@import' '@media' \
     ':first-child' '!important' 'url(' '"' "'"
 } > "$out/css.dict"

@@ -10,17 +10,18 @@
 // servers linearGradient and radialGradient (units, gradientTransform, spreadMethod, href
 // inheritance, stops) and pattern (a tile drawn at device resolution, repeated) drawn through the
 // paint stage's Shader; context-fill/context-stroke in use and markers (paint servers resolved for
-// the context element's box and user space); <style> sheets (src/formats/css.hpp)
+// the context element's box and user space); <style> sheets (src/formats/svg/css.hpp)
 // with the cascade presentation attribute < sheet < style attribute and !important; clipPath and
 // mask (units, clip-rule, mask-type, nested), as exact-area coverage masks of layers; markers
 // (on every shape, SVG 2); the root svg's own opacity, display, clip-path, mask and filter;
 // group opacity, mix-blend-mode and isolation; <image> (PNG, JPEG, SVG; see SvgOptions).
 // Filters: the filter property (url() lists and the CSS filter functions) with every filter
 // primitive, evaluated by the filter stage (casteljau/filter.hpp) in device pixels after the
-// element is drawn into a layer, before its clip, mask and opacity (src/formats/svg_filter.cpp).
-// Text: text, tspan, tref, textPath and a inside text (src/formats/svg_text.hpp: fonts through
-// FontDatabase, shaping through casteljau's HarfBuzz engine, glyphs become ordinary filled and
-// stroked paths).
+// element is drawn into a layer, before its clip, mask and opacity
+// (src/formats/svg/filter_graphs.cpp).
+// Text: text, tspan, tref, textPath and a inside text (src/formats/svg/text_layout.hpp: fonts
+// through FontDatabase, shaping through casteljau's HarfBuzz engine, glyphs become ordinary
+// filled and stroked paths).
 // Cycles (use, gradient href, clip-path, mask, marker) are broken: the repeated reference is
 // skipped or the element is not drawn.
 // SVG coordinates: user units, y down, mapped to pixels by the viewBox transform. Lengths: em and

@@ -1,4 +1,4 @@
-// Internal (formats): SVG text layout. The SVG reader (svg.cpp) turns a <text> element into a
+// Internal (formats): SVG text layout. The SVG conversion (text.cpp) turns a <text> element into a
 // TextInput (characters after white-space processing, grouped into spans of one style, with the
 // per-character x/y/dx/dy/rotate values, text paths and textLength ranges); layout() shapes it
 // with casteljau's text engine (HarfBuzz through casteljau/shaping.hpp, fonts from a FontDatabase,

@@ -2,7 +2,7 @@
 // text: comments removed first, then rules are cut at braces (nested braces of at-rules skipped),
 // selectors parsed compound by compound; anything unreadable drops only its own selector or
 // declaration.
-#include "formats/css.hpp"
+#include "formats/svg/css.hpp"
 
 #include "casteljau/limits.hpp"
 

@@ -1,7 +1,7 @@
 // Formats stage, internal: SVG filters. Reads a <filter> element (with its href chain) and its
 // primitives into a filter::FilterGraph for one filtered element, and the `filter` property
 // (url() references and the CSS filter functions) into a list of steps. The SVG reader
-// (svg.cpp) supplies what it alone knows through SvgFilterEnv: the cascade, ids, lengths and the
+// (filters.cpp) supplies what it alone knows through SvgFilterEnv: the cascade, ids, lengths and the
 // content of feImage.
 // Coordinates: the graph is in the filtered element's user space. Thread-safety: plain functions.
 #pragma once
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "casteljau/filter.hpp"
+#include "formats/svg/values.hpp"
 
 namespace casteljau::svg_filter {
 
@@ -29,7 +30,7 @@ struct SvgFilterEnv {
     // The content of an feImage (an image or a referenced element), drawn in the filtered element's
     // user space; empty when there is nothing to draw. `subregion` is the primitive's subregion.
     std::function<std::function<void(Pixmap&, const Affine&)>(const pugi::xml_node&, const Rect& subregion)> image;
-    double vw = 100, vh = 100;  // viewport, for userSpaceOnUse percentages
+    svg::Viewport viewport;  // for userSpaceOnUse percentages
     Color current_color = Color::black();
 };
 

@@ -1,0 +1,97 @@
+// Formats stage, SVG conversion: a whole document, from its bytes to its display list. Reads the
+// XML (inflating .svgz), sizes the output from the root's width, height and viewBox, then converts
+// the root like any group with one Context (context.hpp).
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "casteljau/error.hpp"
+#include "casteljau/paint.hpp"
+#include "formats/svg/context.hpp"
+#include "formats/svg/display_list.hpp"
+#include "formats/svg/values.hpp"
+#include "formats/svg/xml_input.hpp"
+
+namespace casteljau::svg {
+
+namespace {
+
+// Parses `input` (gzip-compressed or not) into `xml`; returns its root <svg> element.
+pugi::xml_node read_xml(std::string_view input, pugi::xml_document& xml) {
+    std::string inflated;
+    if (input.size() >= 2 && static_cast<unsigned char>(input[0]) == 0x1f &&
+        static_cast<unsigned char>(input[1]) == 0x8b)
+        inflated = gunzip(input);
+    const std::string_view text = inflated.empty() ? input : std::string_view(inflated);
+    if (trim(text).empty()) throw Error(ErrorKind::Parse, "SVG input is empty");
+    const pugi::xml_parse_result res = xml.load_buffer(
+        text.data(), text.size(), pugi::parse_default | pugi::parse_ws_pcdata);  // text needs the spaces between tspans
+    if (!res)
+        throw Error(ErrorKind::Parse, std::string("malformed SVG (XML) at byte ") + std::to_string(res.offset) + ": " +
+                                          res.description());
+    normalise_namespaces(xml.document_element(), {});
+    const pugi::xml_node root = xml.document_element();
+    if (std::string_view(root.name()) != "svg")
+        throw Error(ErrorKind::InvalidData, std::string("root element is <") + root.name() + ">, expected <svg>");
+    return root;
+}
+
+// The document's size from the root's width, height and viewBox `vb` (out.width .. out.fheight).
+void size_document(const pugi::xml_node& root, const std::optional<Rect>& vb, ConvertedDocument& out) {
+    auto root_length = [&](const char* name, double vb_size) -> std::optional<double> {
+        const char* v = root.attribute(name).value();
+        if (!*v) return std::nullopt;
+        auto l = parse_length(v, vb_size);
+        if (!l) throw Error(ErrorKind::InvalidData, std::string("invalid <svg> ") + name + " '" + v + "'");
+        return l;
+    };
+    std::optional<double> w = root_length("width", vb ? vb->width() : 100);
+    std::optional<double> h = root_length("height", vb ? vb->height() : 100);
+    if (!w) w = vb ? vb->width() : 100.0;
+    if (!h) h = vb ? vb->height() : 100.0;
+    if (!(*w > 0) || !(*h > 0))
+        throw Error(ErrorKind::InvalidData,
+                    "SVG width and height must be positive, got " + std::to_string(*w) + " x " + std::to_string(*h));
+    // The output size is the intrinsic size rounded to whole pixels (at least 1), as resvg does;
+    // the fractional size stays for the scale (render() fills the whole output).
+    const double rw = std::max(1.0, std::round(*w)), rh = std::max(1.0, std::round(*h));
+    check_canvas_size(rw, rh);
+    out.width = static_cast<int>(rw);
+    out.height = static_cast<int>(rh);
+    out.fwidth = *w;
+    out.fheight = *h;
+}
+
+}  // namespace
+
+ConvertedDocument convert_document(std::string_view input, const SvgOptions& options) {
+    pugi::xml_document xml;
+    const pugi::xml_node root = read_xml(input, xml);
+    ConvertedDocument out;
+    const char* vb_text = root.attribute("viewBox").value();
+    const std::optional<Rect> vb = parse_viewbox(vb_text);
+    if (!vb && *vb_text) out.warnings.push_back(std::string("invalid viewBox '") + vb_text + "' ignored");
+    size_document(root, vb, out);
+
+    // viewBox -> viewport with preserveAspectRatio.
+    Viewport vp{out.fwidth, out.fheight};
+    if (vb) {
+        vp = {vb->width(), vb->height()};
+        out.view = viewbox_transform(*vb, root.attribute("preserveAspectRatio").value(), out.fwidth, out.fheight);
+    }
+
+    Context cx;
+    cx.options = options;
+    index_ids(cx, root);
+    read_style_sheets(cx, root);
+    // The root goes through the element path like any group: its transform, display, opacity,
+    // clip-path, mask, filter and blending apply to the whole document.
+    element(cx, root, Style(), out.view, vp, 0);
+    out.items = std::move(cx.items);
+    out.warnings.insert(out.warnings.end(), cx.warnings.begin(), cx.warnings.end());
+    return out;
+}
+
+}  // namespace casteljau::svg

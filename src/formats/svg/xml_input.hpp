@@ -1,0 +1,24 @@
+// Internal (formats): the XML input of the SVG reader before conversion: gzip-compressed input
+// (.svgz) inflated, and element names written with a prefix bound to the SVG namespace reduced
+// to their local names.
+// Thread-safety: plain functions.
+#pragma once
+
+#include <pugixml.hpp>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace casteljau::svg {
+
+// Inflates gzip data (an .svgz), up to Limits::svgz_bytes. Throws Error(InvalidData) for
+// corrupt data, Error(Limit) past the limit.
+std::string gunzip(std::string_view data);
+
+// Elements written with a prefix bound to the SVG namespace (<svg:svg xmlns:svg="...">) get their
+// local name, so the reader sees <svg>; elements of other namespaces keep their prefixed names and
+// are skipped as unknown. `prefixes` holds the prefixes bound to the SVG namespace in scope.
+void normalise_namespaces(pugi::xml_node node, std::vector<std::string> prefixes);
+
+}  // namespace casteljau::svg
