@@ -212,7 +212,7 @@ TEST_CASE("svg: several inputs go into a folder as NAME.png, on several threads,
     CHECK(fs::exists(d / "one" / "f0.png"));
 }
 
-TEST_CASE("svg: a bad file among several gets its own error line and no output; the rest are drawn", "[cli][svg]") {
+TEST_CASE("svg: a bad file among several gets its own error line and no output, and the rest are drawn", "[cli][svg]") {
     const fs::path d = scratch_dir("svg-many-bad");
     write_text(d / "good.svg", "<svg xmlns='http://www.w3.org/2000/svg' width='4' height='4'/>");
     write_text(d / "broken.svg", "<svg xmlns='http://www.w3.org/2000/svg' width='4' height='4'><g");
