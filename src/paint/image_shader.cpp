@@ -39,7 +39,7 @@ Shader Shader::image(std::shared_ptr<const Pixmap> image, ImageSampling sampling
     s.sampling_ = sampling;
     s.repeat_ = repeat;
     s.transform_ = transform;
-    s.stops_ = {{0, Color::transparent()}};
+    s.set_stops({{0, Color::transparent()}});
     return s;
 }
 

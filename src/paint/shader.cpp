@@ -36,29 +36,33 @@ double spread_t(double t, SpreadMethod m) {
     return t;
 }
 
-// The straight-alpha colour of the normalised stops at spread parameter u, as floats in [0, 1].
-[[gnu::always_inline]] inline void eval_stops(const std::vector<GradientStop>& stops, double u, float rgba[4]) {
-    auto put = [&](const Color& c) {
-        rgba[0] = c.r / 255.0f;
-        rgba[1] = c.g / 255.0f;
-        rgba[2] = c.b / 255.0f;
-        rgba[3] = c.a / 255.0f;
-    };
-    if (u <= stops.front().offset) return put(stops.front().color);
-    if (u >= stops.back().offset) return put(stops.back().color);
-    std::size_t i = 1;
-    while (i < stops.size() && stops[i].offset <= u) ++i;  // stops[i - 1].offset <= u < stops[i].offset
-    const GradientStop& s0 = stops[i - 1];
-    const GradientStop& s1 = stops[i];
-    const double span = s1.offset - s0.offset;
-    const float w = span > 0 ? static_cast<float>((u - s0.offset) / span) : 1.0f;
-    rgba[0] = (s0.color.r + (s1.color.r - s0.color.r) * w) / 255.0f;
-    rgba[1] = (s0.color.g + (s1.color.g - s0.color.g) * w) / 255.0f;
-    rgba[2] = (s0.color.b + (s1.color.b - s0.color.b) * w) / 255.0f;
-    rgba[3] = (s0.color.a + (s1.color.a - s0.color.a) * w) / 255.0f;
+}  // namespace
+
+void Shader::set_stops(std::vector<GradientStop> stops) {
+    stops_ = normalise(std::move(stops));
+    table_.resize(stops_.size());
+    for (std::size_t i = 0; i < stops_.size(); ++i) {
+        const Color& c = stops_[i].color;
+        const double span = i + 1 < stops_.size() ? stops_[i + 1].offset - stops_[i].offset : 0;
+        table_[i] = {stops_[i].offset, span > 0 ? 1 / span : 0, {float(c.r), float(c.g), float(c.b), float(c.a)}};
+    }
 }
 
-}  // namespace
+[[gnu::always_inline]] inline void Shader::interpolate(double u, float rgba[4]) const {
+    const StopEntry* e = table_.data();
+    const std::size_t n = table_.size();
+    auto put = [&](const float* c) {
+        for (int k = 0; k < 4; ++k) rgba[k] = c[k];
+    };
+    if (u <= e[0].offset) return put(e[0].rgba);
+    if (u >= e[n - 1].offset) return put(e[n - 1].rgba);
+    std::size_t i = 1;
+    while (e[i].offset <= u) ++i;  // e[i - 1].offset <= u < e[i].offset
+    const float* c0 = e[i - 1].rgba;
+    const float* c1 = e[i].rgba;
+    const float w = e[i - 1].inv_span > 0 ? static_cast<float>((u - e[i - 1].offset) * e[i - 1].inv_span) : 1.0f;
+    for (int k = 0; k < 4; ++k) rgba[k] = c0[k] + (c1[k] - c0[k]) * w;
+}
 
 Shader Shader::linear(Point p0, Point p1, std::vector<GradientStop> stops, SpreadMethod spread,
                       const Affine& transform) {
@@ -66,7 +70,7 @@ Shader Shader::linear(Point p0, Point p1, std::vector<GradientStop> stops, Sprea
     s.kind_ = Kind::Linear;
     s.p0_ = p0;
     s.p1_ = p1;
-    s.stops_ = normalise(std::move(stops));
+    s.set_stops(std::move(stops));
     s.spread_ = spread;
     s.transform_ = transform;
     return s;
@@ -80,7 +84,7 @@ Shader Shader::radial(Point center, double r, Point focal, double fr, std::vecto
     s.p1_ = center;
     s.r0_ = std::isfinite(fr) ? std::max(fr, 0.0) : 0.0;
     s.r1_ = std::isfinite(r) ? std::max(r, 0.0) : 0.0;
-    s.stops_ = normalise(std::move(stops));
+    s.set_stops(std::move(stops));
     s.spread_ = spread;
     s.transform_ = transform;
     return s;
@@ -139,56 +143,9 @@ bool Shader::parameter(Point p, double& t) const {
 bool Shader::constant() const { return (kind_ == Kind::Linear && p0_ == p1_) || (kind_ == Kind::Radial && r1_ == 0); }
 
 void Shader::color_at(double t, float rgba[4]) const {
-    eval_stops(stops_, constant() ? 1.0 : spread_t(t, spread_), rgba);
+    interpolate(constant() ? 1.0 : spread_t(t, spread_), rgba);
+    for (int k = 0; k < 4; ++k) rgba[k] *= 1.0f / 255.0f;
 }
-
-namespace {
-
-// The stops as the row loop reads them: offsets, 1 / (distance to the next offset) and the
-// colours as floats in [0, 255].
-struct RowStops {
-    static constexpr std::size_t kMax = 32;  // more stops take Shader::color_at per pixel
-    std::size_t n = 0;
-    double offset[kMax], inv_span[kMax];
-    float c[kMax][4];
-    explicit RowStops(const std::vector<GradientStop>& stops) : n(stops.size()) {
-        if (n > kMax) return;
-        for (std::size_t i = 0; i < n; ++i) {
-            const Color& k = stops[i].color;
-            offset[i] = stops[i].offset;
-            c[i][0] = k.r, c[i][1] = k.g, c[i][2] = k.b, c[i][3] = k.a;
-            const double span = i + 1 < n ? stops[i + 1].offset - offset[i] : 0;
-            inv_span[i] = span > 0 ? 1 / span : 0;
-        }
-    }
-    // The premultiplied pixel at spread parameter u, alpha scaled by `op`.
-    [[gnu::always_inline]] void put(double u, float op, std::uint8_t* o) const {
-        float r, g, b, a;
-        if (u <= offset[0]) {
-            r = c[0][0], g = c[0][1], b = c[0][2], a = c[0][3];
-        } else if (u >= offset[n - 1]) {
-            r = c[n - 1][0], g = c[n - 1][1], b = c[n - 1][2], a = c[n - 1][3];
-        } else {
-            std::size_t i = 1;
-            while (offset[i] <= u) ++i;  // offset[i - 1] <= u < offset[i]
-            const float* c0 = c[i - 1];
-            const float* c1 = c[i];
-            const float w = inv_span[i - 1] > 0 ? static_cast<float>((u - offset[i - 1]) * inv_span[i - 1]) : 1.0f;
-            r = c0[0] + (c1[0] - c0[0]) * w;
-            g = c0[1] + (c1[1] - c0[1]) * w;
-            b = c0[2] + (c1[2] - c0[2]) * w;
-            a = c0[3] + (c1[3] - c0[3]) * w;
-        }
-        const float alpha = a * op;               // in [0, 255]
-        const float k = alpha * (1.0f / 255.0f);  // premultiplies a channel in [0, 255]
-        o[0] = static_cast<std::uint8_t>(r * k + 0.5f);
-        o[1] = static_cast<std::uint8_t>(g * k + 0.5f);
-        o[2] = static_cast<std::uint8_t>(b * k + 0.5f);
-        o[3] = static_cast<std::uint8_t>(alpha + 0.5f);
-    }
-};
-
-}  // namespace
 
 // Every pixel's parameter is computed from its own position (the row's start plus x times the
 // step along the row), so a pixel's colour does not depend on which span it was shaded in.
@@ -196,17 +153,14 @@ void Shader::shade_row(const Affine& inv, int x, int y, int length, double opaci
     if (kind_ == Kind::Image) return shade_image_row(inv, x, y, length, opacity, out);
     const float op = static_cast<float>(std::clamp(opacity, 0.0, 1.0));
     const bool flat = constant();
-    const RowStops table(stops_);
+    // The premultiplied pixel at parameter t, its alpha scaled by the opacity.
     auto put = [&](double t, std::uint8_t* o) __attribute__((always_inline)) {
-        const double u = flat ? 1.0 : spread_t(t, spread_);
-        if (table.n <= RowStops::kMax) return table.put(u, op, o);
         float c[4];
-        eval_stops(stops_, u, c);
-        const float a = c[3] * op;
-        o[0] = static_cast<std::uint8_t>(c[0] * a * 255.0f + 0.5f);
-        o[1] = static_cast<std::uint8_t>(c[1] * a * 255.0f + 0.5f);
-        o[2] = static_cast<std::uint8_t>(c[2] * a * 255.0f + 0.5f);
-        o[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
+        interpolate(flat ? 1.0 : spread_t(t, spread_), c);
+        const float alpha = c[3] * op;            // in [0, 255]
+        const float k = alpha * (1.0f / 255.0f);  // premultiplies a channel in [0, 255]
+        for (int j = 0; j < 3; ++j) o[j] = static_cast<std::uint8_t>(c[j] * k + 0.5f);
+        o[3] = static_cast<std::uint8_t>(alpha + 0.5f);
     };
     const Point row = inv.apply({0.5, y + 0.5});  // the centre of the row's pixel 0
     const double dx = p1_.x - p0_.x, dy = p1_.y - p0_.y, len2 = dx * dx + dy * dy;
