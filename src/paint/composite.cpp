@@ -1,9 +1,9 @@
 // Paint stage, compositing: blend_span (any blend mode, float formula, include/casteljau/blend_mode.hpp)
-// and source-over of a solid Paint or of premultiplied pixels (source_over_span.cpp), weighted by
-// 8-bit coverage, onto premultiplied RGBA8 pixels. Each channel is the exact source-over value rounded once to the nearest 1/255
-// (tests/paint/test_composite.cpp checks every coverage against that formula); runs of full coverage with
-// an opaque colour are plain stores. Optional linear-light blending converts
-// through lookup tables (sRGB -> linear float, linear 12-bit -> sRGB) and blends there.
+// and source-over of a solid Paint or of premultiplied pixels, weighted by 8-bit coverage, onto
+// premultiplied RGBA8 pixels. Source-over is source_over_span.cpp's SIMD kernel: each channel the
+// exact value rounded once to the nearest 1/255 (tests/paint/test_composite.cpp checks every
+// coverage against that formula). Optional linear-light blending converts through lookup tables
+// (sRGB -> linear float, linear 12-bit -> sRGB) and blends there.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -17,7 +17,6 @@ namespace casteljau {
 
 namespace {
 
-using pixel::source_over;
 using pixel::unit_to_byte;
 
 struct LinearTables {
@@ -93,9 +92,8 @@ void composite_span_premul(std::uint8_t* dst, int length, const std::uint8_t* co
 
 void blend_span(std::uint8_t* dst, int length, const std::uint8_t* coverage, const std::uint8_t* src, BlendMode mode,
                 int src_stride) {
-    const std::size_t step = src_stride == 0 ? 0 : 4;
-    if (mode == BlendMode::SourceOver)
-        return paint_simd::source_over_span(dst, length, coverage, src, static_cast<int>(step));
+    const int step = src_stride == 0 ? 0 : 4;
+    if (mode == BlendMode::SourceOver) return paint_simd::source_over_span(dst, length, coverage, src, step);
     if (mode == BlendMode::Destination) return;
     for (int i = 0; i < length; ++i, dst += 4, src += step) {
         const unsigned c = coverage ? coverage[i] : 255u;

@@ -40,6 +40,7 @@ constexpr int kAlphaShift = std::endian::native == std::endian::little ? 24 : 0;
 // src_step 0: `src` is one pixel for the whole span; 4: one per pixel. coverage null: 255.
 void SourceOverImpl(std::uint8_t* HWY_RESTRICT dst, int length, const std::uint8_t* HWY_RESTRICT coverage,
                     const std::uint8_t* HWY_RESTRICT src, int src_step) {
+    const std::size_t step = static_cast<std::size_t>(src_step);
     int i = 0;
 #if HWY_TARGET != HWY_SCALAR
     const hn::ScalableTag<std::uint32_t> d;
@@ -51,7 +52,6 @@ void SourceOverImpl(std::uint8_t* HWY_RESTRICT dst, int length, const std::uint8
     const auto solid = hn::Set(d, word);
     const auto mask = hn::Set(d, 0xffu);
     const auto full = hn::Set(d, 255u);
-    const std::size_t step = static_cast<std::size_t>(src_step);
     for (; i + n <= length; i += n) {
         std::uint8_t* px = dst + 4 * static_cast<std::size_t>(i);
         const auto c = coverage ? hn::PromoteTo(d, hn::LoadU(dcov, coverage + i)) : full;
@@ -80,7 +80,7 @@ void SourceOverImpl(std::uint8_t* HWY_RESTRICT dst, int length, const std::uint8
     // of a pixel lane): the scalar formula.
     for (; i < length; ++i) {
         const unsigned c = coverage ? coverage[i] : 255u;
-        const std::uint8_t* sp = src + static_cast<std::size_t>(src_step) * static_cast<std::size_t>(i);
+        const std::uint8_t* sp = src + step * static_cast<std::size_t>(i);
         if (c == 0 || sp[3] == 0) continue;
         std::uint8_t* px = dst + 4 * static_cast<std::size_t>(i);
         if (c == 255 && sp[3] == 255)
