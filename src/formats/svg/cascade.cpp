@@ -114,12 +114,6 @@ pugi::xml_node lookup(const Context& cx, std::string_view id) {
     return it == cx.ids.end() ? pugi::xml_node() : it->second;
 }
 
-// `href` takes precedence over `xlink:href` (SVG 2).
-const char* href(const pugi::xml_node& n) {
-    if (const char* h = n.attribute("href").value(); *h) return h;
-    return n.attribute("xlink:href").value();
-}
-
 std::string own_property(Context& cx, const pugi::xml_node& n, const std::string& name) {
     std::string out;
     for (const auto& [k, v] : properties(cx, n))

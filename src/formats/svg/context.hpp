@@ -35,6 +35,7 @@
 #include "formats/svg/css.hpp"
 #include "formats/svg/display_list.hpp"
 #include "formats/svg/filter_graphs.hpp"
+#include "formats/svg/references.hpp"
 #include "formats/svg/values.hpp"
 
 namespace casteljau::svg_text {
@@ -171,7 +172,6 @@ void read_style_sheets(Context& cx, const pugi::xml_node& root);
 double font_size_of(Context& cx, const pugi::xml_node& node);
 void index_ids(Context& cx, const pugi::xml_node& root);
 pugi::xml_node lookup(const Context& cx, std::string_view id);
-const char* href(const pugi::xml_node& n);
 std::string own_property(Context& cx, const pugi::xml_node& n, const std::string& name);
 std::string inherited(Context& cx, pugi::xml_node n, const std::string& name);
 std::string own_overflow(Context& cx, const pugi::xml_node& n);

@@ -8,6 +8,7 @@
 // BackgroundAlpha, FillPaint and StrokePaint read SourceGraphic.
 #include "formats/svg/filter_graphs.hpp"
 #include "formats/svg/filter_values.hpp"
+#include "formats/svg/references.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -319,18 +320,7 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
 
 std::optional<filter::FilterGraph> build_filter(const pugi::xml_node& f, const std::optional<Rect>& bbox,
                                                 const SvgFilterEnv& env) {
-    std::vector<pugi::xml_node> chain{f};
-    while (chain.size() < 32) {
-        const pugi::xml_node& last = chain.back();
-        const char* h = last.attribute("href").value();
-        if (!*h) h = last.attribute("xlink:href").value();
-        if (*h != '#') break;
-        const pugi::xml_node next = env.lookup(h + 1);
-        if (!next || std::string_view(next.name()) != "filter" ||
-            std::find(chain.begin(), chain.end(), next) != chain.end())
-            break;
-        chain.push_back(next);
-    }
+    const std::vector<pugi::xml_node> chain = svg::href_chain(f, env.lookup, {"filter"});
     auto attr = [&](const char* name) -> const char* {
         for (const pugi::xml_node& n : chain)
             if (const pugi::xml_attribute a = n.attribute(name)) return a.value();

@@ -69,16 +69,8 @@ bool resolve_paint(Context& cx, const PaintRef& ref, const Path& path, Viewport 
 // A linearGradient or radialGradient with its href chain: attributes come from the first
 // element of the chain that has them, stops from the first that has any.
 bool gradient(Context& cx, const pugi::xml_node& node, const Path& path, Viewport vp, DisplayItem& it) {
-    std::vector<pugi::xml_node> chain{node};
-    while (chain.size() < 32) {
-        const char* h = href(chain.back());
-        if (*h != '#') break;
-        const pugi::xml_node next = lookup(cx, h + 1);
-        const std::string_view nk = next ? next.name() : "";
-        if (nk != "linearGradient" && nk != "radialGradient") break;
-        if (std::find(chain.begin(), chain.end(), next) != chain.end()) break;  // a cycle ends the chain
-        chain.push_back(next);
-    }
+    const std::vector<pugi::xml_node> chain =
+        href_chain(node, [&](std::string_view id) { return lookup(cx, id); }, {"linearGradient", "radialGradient"});
     const std::string_view kind = node.name();
     auto attr = [&](const char* name, bool same_kind_only) -> std::string_view {
         for (const pugi::xml_node& n : chain) {

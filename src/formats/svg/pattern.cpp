@@ -16,15 +16,8 @@ namespace casteljau::svg {
 // from the first with child elements): its tile content becomes a PatternTile that the
 // renderer draws at device resolution and repeats through an image shader.
 bool pattern(Context& cx, const pugi::xml_node& node, const Path& path, Viewport vp, DisplayItem& it) {
-    std::vector<pugi::xml_node> chain{node};
-    while (chain.size() < 32) {
-        const char* h = href(chain.back());
-        if (*h != '#') break;
-        const pugi::xml_node next = lookup(cx, h + 1);
-        if (!next || std::string_view(next.name()) != "pattern") break;
-        if (std::find(chain.begin(), chain.end(), next) != chain.end()) break;
-        chain.push_back(next);
-    }
+    const std::vector<pugi::xml_node> chain =
+        href_chain(node, [&](std::string_view id) { return lookup(cx, id); }, {"pattern"});
     auto attr = [&](const char* name) -> std::string_view {
         for (const pugi::xml_node& n : chain)
             if (const char* v = n.attribute(name).value(); *v) return v;

@@ -57,6 +57,21 @@ void apply_paint(Context& cx, const std::string& property, std::string_view valu
         warn(cx, "invalid " + property + " '" + std::string(value) + "'");
 }
 
+namespace {
+
+// A fill or stroke property: context-fill and context-stroke take the context element's paint.
+void apply_fill_or_stroke(Context& cx, const std::string& property, std::string_view value, const Style& st,
+                          PaintRef& paint) {
+    if (value == "context-fill")
+        paint = st.context_fill;
+    else if (value == "context-stroke")
+        paint = st.context_stroke;
+    else
+        apply_paint(cx, property, value, st.color, paint);
+}
+
+}  // namespace
+
 void apply_style(Context& cx, const pugi::xml_node& node, Style& st) {
     const double font_size = font_size_of(cx, node);
     st.font_size = font_size;
@@ -72,12 +87,7 @@ void apply_style(Context& cx, const pugi::xml_node& node, Style& st) {
     for (const auto& [k, v] : properties(cx, node)) {
         const std::string_view val = trim(v);
         if (k == "fill") {
-            if (val == "context-fill")
-                st.fill = st.context_fill;
-            else if (val == "context-stroke")
-                st.fill = st.context_stroke;
-            else
-                apply_paint(cx, k, val, st.color, st.fill);
+            apply_fill_or_stroke(cx, k, val, st, st.fill);
         } else if (k == "fill-rule") {
             if (val == "evenodd")
                 st.fill_rule = FillRule::EvenOdd;
@@ -86,12 +96,7 @@ void apply_style(Context& cx, const pugi::xml_node& node, Style& st) {
         } else if (k == "fill-opacity") {
             if (auto o = parse_opacity(val)) st.fill_opacity = *o;
         } else if (k == "stroke") {
-            if (val == "context-fill")
-                st.stroke = st.context_fill;
-            else if (val == "context-stroke")
-                st.stroke = st.context_stroke;
-            else
-                apply_paint(cx, k, val, st.color, st.stroke);
+            apply_fill_or_stroke(cx, k, val, st, st.stroke);
         } else if (k == "stroke-opacity") {
             if (auto o = parse_opacity(val)) st.stroke_opacity = *o;
         } else if (k == "stroke-width") {
