@@ -1,13 +1,11 @@
 // `casteljau svg`: render SVG files to PNG, one or many (into a folder, on several threads).
 #include <atomic>
-#include <cmath>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <mutex>
 #include <set>
-#include <optional>
 #include <thread>
-#include <functional>
 
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
@@ -157,7 +155,7 @@ void register_svg(CLI::App& app) {
         const std::vector<std::string> outs = folder_outputs(*o);
         std::mutex lock;
         std::atomic<std::size_t> next{0};
-        std::optional<ErrorKind> first_kind;
+        ErrorKind first_kind = ErrorKind::InvalidData;  // the first failure's, once `failed` > 0
         std::size_t failed = 0;
         auto say = [&](const std::string& line) {
             const std::lock_guard<std::mutex> g(lock);
@@ -166,8 +164,7 @@ void register_svg(CLI::App& app) {
         auto failure = [&](const std::string& in, const std::string& what, ErrorKind kind) {
             const std::lock_guard<std::mutex> g(lock);
             std::cerr << "casteljau: error: " << in << ": " << what << "\n";
-            if (!first_kind) first_kind = kind;
-            ++failed;
+            if (failed++ == 0) first_kind = kind;
         };
         auto work = [&] {
             for (std::size_t i; (i = next++) < o->inputs.size();) {
@@ -177,6 +174,8 @@ void register_svg(CLI::App& app) {
                                 [&](const std::string& w) { say("casteljau: warning: " + in + ": " + w); });
                 } catch (const Error& e) { failure(in, e.what(), e.kind()); } catch (const std::bad_alloc&) {
                     failure(in, "out of memory", ErrorKind::Limit);
+                } catch (const std::exception& e) {  // nothing may leave a worker thread
+                    failure(in, e.what(), ErrorKind::InvalidData);
                 }
             }
         };
@@ -186,8 +185,8 @@ void register_svg(CLI::App& app) {
         work();
         for (std::thread& t : pool) t.join();
         if (failed > 0)
-            throw Error(*first_kind, std::to_string(failed) + " of " + std::to_string(o->inputs.size()) +
-                                         " files were not rendered (their errors are above)");
+            throw Error(first_kind, std::to_string(failed) + " of " + std::to_string(o->inputs.size()) +
+                                        " files were not rendered (their errors are above)");
     });
 }
 
