@@ -19,6 +19,13 @@
 //   between the two segments; a right angle has ratio sqrt(2)); MiterClip (SVG 2 'miter-clip'): the
 //   miter cut by a line perpendicular to the join's bisector at distance miter_limit * width / 2 from
 //   the vertex; Round (circle arc); Bevel. miter_limit below 1 is treated as 1.
+// - Curves are stroked as the sweep of their normal: no join inside a curve, nor where two segments
+//   meet with the same tangent (the join style applies at corners only), and in a bend tighter than
+//   the pen the normals sweep past the centre of curvature and cover the far side, as SVG 2
+//   defines the stroke shape. Caps stand square to the curve's own direction at its end, taken
+//   from its control points; a control point within max(user-space tolerance, width / 40) of its end
+//   turns the curve over a length too short to show and is passed over (a straight line drawn
+//   as a cubic with a control point on its end strokes as the line).
 // - Closed contours (Path::close) join their end to their start and get no caps.
 // - Zero-length segments are skipped when directions are taken. A contour of zero length (move +
 //   close, or segments that all have length 0) draws a disk (Round cap) or a square oriented along

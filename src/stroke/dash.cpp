@@ -31,26 +31,53 @@ std::vector<double> effective_pattern(std::span<const double> dashes) {
 
 namespace {
 
+// A dash being built: its points and their smoothness.
+struct Run {
+    std::vector<Point> pts;
+    std::vector<std::uint8_t> smooth;
+
+    void push(Point p, std::uint8_t s) {
+        pts.push_back(p);
+        smooth.push_back(s);
+    }
+    void clear() {
+        pts.clear();
+        smooth.clear();
+    }
+    bool empty() const { return pts.empty(); }
+    void swap(Run& o) {
+        pts.swap(o.pts);
+        smooth.swap(o.smooth);
+    }
+};
+
 struct Dasher {
     std::span<const double> pattern;
-    Polyline& out;
+    FlatContours& out;
     std::vector<Point>& dirs;
-    std::vector<Point> cur;    // the dash being built
-    std::vector<Point> first;  // closed contours: the dash that started at the contour's start
+    Run cur;    // the dash being built
+    Run first;  // closed contours: the dash that started at the contour's start
     std::size_t events = 0;
     std::size_t max_dashes;
     std::size_t max_points;
 
-    void emit(std::span<const Point> pts, bool closed, Point dir) {
-        if (out.points.size() + pts.size() > max_points)
+    // A dash's ends are cut across a chord (no curve direction known there) unless they are the
+    // contour's own ends: `head` and `tail` are then the contour's.
+    void emit(const Run& r, bool closed, Point dir, Vec head = {0, 0}, Vec tail = {0, 0}) {
+        Polyline& o = out.poly;
+        if (o.points.size() + r.pts.size() > max_points)
             throw Error(ErrorKind::Limit, "stroke: dashed path has too many points");
-        out.points.insert(out.points.end(), pts.begin(), pts.end());
-        out.contour_ends.push_back(static_cast<std::uint32_t>(out.points.size()));
-        out.closed.push_back(closed);
+        o.points.insert(o.points.end(), r.pts.begin(), r.pts.end());
+        out.smooth.insert(out.smooth.end(), r.smooth.begin(), r.smooth.end());
+        o.contour_ends.push_back(static_cast<std::uint32_t>(o.points.size()));
+        o.closed.push_back(closed);
+        out.head.push_back(head);
+        out.tail.push_back(tail);
         dirs.push_back(dir);
     }
 
-    void contour(std::span<const Point> q, bool closed, double pos0) {
+    void contour(std::span<const Point> q, std::span<const std::uint8_t> sm, bool closed, double pos0, Vec head,
+                 Vec tail) {
         const std::size_t n = pattern.size();
         // Find the interval holding pos0 (pos0 in [0, total)); a zero-length "on" interval at
         // position 0 is kept so that (0, d) patterns put a dot at the start.
@@ -65,15 +92,17 @@ struct Dasher {
         const bool first_on = on && closed;
         bool crossed = false;  // an interval boundary was met on this contour
         bool holding_first = first_on;
+        bool at_start = on && !closed;  // the dash being built starts at the contour's start
 
         cur.clear();
         first.clear();
-        if (on) cur.push_back(q[0]);
+        if (on) cur.push(q[0], closed ? sm[0] : 0);
         Point dir{0, 0}, first_dir{0, 0};
 
         const std::size_t nseg = closed ? q.size() : q.size() - 1;
         for (std::size_t i = 0; i < nseg; ++i) {
-            const Point a = q[i], b = q[(i + 1) % q.size()];
+            const std::size_t j = (i + 1) % q.size();
+            const Point a = q[i], b = q[j];
             const double len = distance(a, b);
             if (!(len > 0)) continue;
             dir = (b - a) / len;
@@ -85,38 +114,43 @@ struct Dasher {
                 const Point p = lerp(a, b, t / len);
                 crossed = true;
                 if (on) {
-                    cur.push_back(p);
+                    cur.push(p, 0);
                     if (holding_first) {
                         first.swap(cur);
                         first_dir = dir;
                         holding_first = false;
                     } else {
-                        emit(cur, false, dir);
+                        emit(cur, false, dir, at_start ? head : Vec{0, 0});
                     }
+                    at_start = false;
                     cur.clear();
                 } else {
-                    cur.push_back(p);
+                    cur.push(p, 0);
                 }
                 di = (di + 1) % n;
                 rem = pattern[di];
                 on = !on;
             }
             rem -= len - t;
-            if (on) cur.push_back(b);
+            if (on) cur.push(b, j == 0 || (!closed && j + 1 == q.size()) ? 0 : sm[j]);
         }
 
         if (!crossed) {
             // The pattern never changed state on this contour.
-            if (on) emit(cur, closed, dir);
+            if (on) emit(cur, closed, dir, head, tail);
             return;
         }
         if (on) {
             if (first_on) {
                 // The last dash runs through the wrap-around point into the first one.
-                cur.insert(cur.end(), first.begin() + (first.empty() ? 0 : 1), first.end());
+                if (!first.empty()) {
+                    cur.smooth.back() = sm[0];
+                    cur.pts.insert(cur.pts.end(), first.pts.begin() + 1, first.pts.end());
+                    cur.smooth.insert(cur.smooth.end(), first.smooth.begin() + 1, first.smooth.end());
+                }
                 first.clear();
             }
-            emit(cur, false, dir);
+            emit(cur, false, dir, {0, 0}, closed ? Vec{0, 0} : tail);
         }
         if (!first.empty()) emit(first, false, first_dir);
     }
@@ -124,8 +158,9 @@ struct Dasher {
 
 }  // namespace
 
-void dash_polyline(const Polyline& in, std::span<const double> pattern, double offset, Polyline& out,
+void dash_polyline(const FlatContours& flat, std::span<const double> pattern, double offset, FlatContours& out,
                    std::vector<Point>& dirs) {
+    const Polyline& in = flat.poly;
     out.clear();
     dirs.clear();
     const double total = std::accumulate(pattern.begin(), pattern.end(), 0.0);
@@ -156,7 +191,9 @@ void dash_polyline(const Polyline& in, std::span<const double> pattern, double o
         const std::size_t end = in.contour_ends[c];
         // A lone move (one point, not closed) has nothing to dash.
         if (end - start > 1 || (end > start && in.closed[c]))
-            d.contour(std::span<const Point>(in.points.data() + start, end - start), in.closed[c], pos);
+            d.contour(std::span<const Point>(in.points.data() + start, end - start),
+                      std::span<const std::uint8_t>(flat.smooth.data() + start, end - start), in.closed[c], pos,
+                      flat.head[c], flat.tail[c]);
         start = end;
     }
 }

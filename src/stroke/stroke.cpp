@@ -26,6 +26,14 @@
 // point lies in every quad. Smooth curves then take the shortcut wherever their radius of
 // curvature exceeds about h, and simple strokes come out as simple polygons, whose signed area is
 // the exact stroke area.
+// Curves. The vertices the flattener puts inside a curve (and where two segments meet with the same
+// tangent) are no corners: the stroke of a curve is the sweep of its normal, which turns with the
+// curve. There the outer side always gets the circular sector the normal sweeps (a round join,
+// whatever the style), and the inner side the sector it sweeps there too, as one more piece where
+// the two rectangles leave part of it: in a bend tighter than half the pen's radius the normals
+// cross past the centre of curvature and cover a sector on the far side, which rectangles alone
+// would leave as a comb of slivers. Ends of curves take their caps square to the curve's own
+// direction, not to the last chord (start_end() and finish_end() below).
 // Round joins and caps are inscribed polygons of the circle, with a step angle chosen so that the
 // sagitta stays below the tolerance: r (1 - cos(phi/2)) <= tol, i.e. phi = 4 asin(sqrt(tol / 2r)).
 #include <algorithm>
@@ -56,15 +64,28 @@ public:
         step_ = std::min(step_, kPi / 2);
     }
 
-    void contour(std::span<const Point> pts, bool closed, Point dir_hint) {
+    void contour(std::span<const Point> pts, std::span<const std::uint8_t> smooth, bool closed, Point dir_hint,
+                 Vec head, Vec tail) {
         if (pts.empty()) return;
         if (pts.size() == 1 && !closed) return;  // a lone move draws nothing
         q_.clear();
+        smooth_.clear();
         q_.push_back(pts[0]);
-        for (std::size_t i = 1; i < pts.size(); ++i)
-            if (distance(pts[i], q_.back()) > eps_) q_.push_back(pts[i]);
+        smooth_.push_back(smooth[0]);
+        for (std::size_t i = 1; i < pts.size(); ++i) {
+            if (distance(pts[i], q_.back()) > eps_) {
+                q_.push_back(pts[i]);
+                smooth_.push_back(smooth[i]);
+            } else {
+                smooth_.back() &= smooth[i];  // a corner merged into a point keeps it a corner
+            }
+        }
         if (closed) {
-            while (q_.size() > 1 && distance(q_.back(), q_.front()) <= eps_) q_.pop_back();
+            while (q_.size() > 1 && distance(q_.back(), q_.front()) <= eps_) {
+                smooth_.front() &= smooth_.back();
+                q_.pop_back();
+                smooth_.pop_back();
+            }
         }
         if (q_.size() == 1) {
             dot(q_[0], dir_hint);
@@ -76,6 +97,7 @@ public:
         len_.resize(nseg);
         closed_ = closed;
         first_reach_ = 0;
+        last_reach_ = 0;
         for (std::size_t i = 0; i < nseg; ++i) {
             const Vec v = q_[(i + 1) % np] - q_[i];
             len_[i] = v.length();
@@ -104,17 +126,17 @@ public:
             return;
         }
         const Vec d0 = dir_[0], dn = dir_[nseg - 1];
-        left_.push_back(q_[0] + perp(d0) * h_);
-        right_.push_back(q_[0] - perp(d0) * h_);
+        Vec cap0;
+        first_reach_ = start_end(q_[0], d0, head, len_[0], cap0);
         for (std::size_t i = 1; i < nseg; ++i) join(q_[i], i - 1, i);
         const Point end = q_[np - 1];
-        left_.push_back(end + perp(dn) * h_);
-        right_.push_back(end - perp(dn) * h_);
+        const double room = len_[nseg - 1] - (nseg == 1 ? first_reach_ : last_reach_);
+        const Vec cap1 = finish_end(end, dn, tail, len_[nseg - 1], room);
         // End cap: from the left end point to the right end point.
-        cap(left_, end, dn);
+        cap(left_, end, cap1);
         // Right side backwards, then the start cap back to the first left point.
         left_.insert(left_.end(), right_.rbegin(), right_.rend());
-        cap(left_, q_[0], -d0);
+        cap(left_, q_[0], -cap0);
         emit(left_);
     }
 
@@ -216,15 +238,32 @@ private:
         return poly.empty();
     }
 
-    // Join at vertex v between segment `in` (ending at v) and segment `out` (starting there).
+    // Join at vertex q_[out] between segment `in` (ending there) and segment `out` (starting there).
     void join(Point v, std::size_t in, std::size_t out) {
-        const Vec d1 = dir_[in], d2 = dir_[out];
-        check_size(8);
+        // On a closed contour the joins at vertex 0 (out = 0) and vertex 1 (in = 0) share the first
+        // segment's length; they are decided in that order. On an open one the start's cut takes
+        // its share first.
+        const double shared = in == 0 ? first_reach_ : 0;
+        const double reach = turn(v, dir_[in], dir_[out], len_[in], len_[in] - shared, len_[out], smooth_[out] != 0);
+        last_reach_ = reach;
+        if (closed_ && out == 0) first_reach_ = reach;
+    }
+
+    // The pieces where a segment of direction d1 and length len1 meets one of direction d2 and
+    // length len2 at v: the join on the outer side (round where the path is `smooth`), and on the
+    // inner side the shortcut when its quadrilateral fits in `room1` (what is left of len1) and
+    // len2, else the pivot (and the swept wedge where smooth). Returns how far the shortcut reaches
+    // back along each segment, 0 when it is not taken. Non-empty `cut`: the points that replace v
+    // in the pivot route, cutting the region between them and v out of the stroke (an end of the
+    // path, see start_end()).
+    double turn(Point v, Vec d1, Vec d2, double len1, double room1, double len2, bool smooth,
+                std::span<const Point> cut = {}) {
+        check_size(16);
         const double cr = d1.cross(d2), dt = d1.dot(d2);
         if (cr == 0 && dt > 0) {  // straight on
             left_.push_back(v + perp(d1) * h_);
             right_.push_back(v - perp(d1) * h_);
-            return;
+            return 0;
         }
         // Turning towards the left (cr > 0) puts the outer side on the right.
         const bool outer_left = cr <= 0;
@@ -232,47 +271,170 @@ private:
         const Vec n1 = perp(d1) * s, n2 = perp(d2) * s;  // outer normals
         std::vector<Point>& outer = outer_left ? left_ : right_;
         std::vector<Point>& inner = outer_left ? right_ : left_;
+        const double sn = std::abs(cr), angle = std::atan2(sn, dt);
 
         outer.push_back(v + n1 * h_);
-        switch (st_.join) {
+        // Where the path is smooth there is no corner to join: the pen's normal turns with the curve.
+        switch (smooth ? LineJoin::Round : st_.join) {
             case LineJoin::Bevel: break;
-            case LineJoin::Round: arc(outer, v, n1, -s * std::atan2(std::abs(cr), dt)); break;
+            case LineJoin::Round: arc(outer, v, n1, -s * angle); break;
             case LineJoin::Miter:
-            case LineJoin::MiterClip: {
-                // miter length / width = 1 / cos(theta / 2) <= limit  <=>  (1 + cos theta) limit^2 >= 2.
-                if ((1 + dt) * miter_limit_ * miter_limit_ >= 2) {
-                    outer.push_back(v + (n1 + n2) * (h_ / (1 + dt)));
-                } else if (st_.join == LineJoin::MiterClip) {
-                    const Vec sum = n1 + n2;
-                    const double sl = sum.length();
-                    const Vec b = sl > 1e-12 ? sum / sl : d1;  // bisector; straight ahead at 180 degrees
-                    const double along = d1.dot(b);
-                    if (along > 0) {
-                        const double t = (miter_limit_ - n1.dot(b)) * h_ / along;
-                        outer.push_back(v + n1 * h_ + d1 * t);
-                        outer.push_back(v + n2 * h_ - d2 * t);
-                    }
-                }
-                break;
-            }
+            case LineJoin::MiterClip: miter(outer, v, d1, d2, n1, n2, dt); break;
         }
         outer.push_back(v + n2 * h_);
 
-        const double sn = std::abs(cr);
         if (1 + dt > 1e-9) {
             const double need = h_ * std::max(sn / (1 + dt), sn);
-            // On a closed contour the joins at vertex 0 (out = 0) and vertex 1 (in = 0) share the
-            // first segment's length; they are decided in that order.
-            const double shared = closed_ && in == 0 ? first_reach_ : 0;
-            if (need <= len_[in] - shared && need <= len_[out]) {
-                if (closed_ && out == 0) first_reach_ = need;
+            if (need <= room1 && need <= len2) {
                 inner.push_back(v - (n1 + n2) * (h_ / (1 + dt)));
-                return;
+                return need;
             }
         }
-        inner.push_back(v - n1 * h_);
-        inner.push_back(v);
-        inner.push_back(v - n2 * h_);
+        auto pivot = [&] {
+            inner.push_back(v - n1 * h_);
+            if (cut.empty())
+                inner.push_back(v);
+            else
+                inner.insert(inner.end(), cut.begin(), cut.end());
+            inner.push_back(v - n2 * h_);
+        };
+        pivot();
+        if (smooth && wedge_uncovered(len1, len2, angle)) {
+            // The wedge the turning normal sweeps on the inner side, where the two segments'
+            // rectangles leave part of it: one more piece, (v - n1 h) -> v -> (v - n2 h) -> arc back.
+            arc(inner, v, -n2, s * angle);
+            pivot();
+        }
+        return 0;
+    }
+
+    // The outer corner of a miter join (or, past the limit, of a clipped miter or a bevel).
+    void miter(std::vector<Point>& outer, Point v, Vec d1, Vec d2, Vec n1, Vec n2, double dt) const {
+        // miter length / width = 1 / cos(theta / 2) <= limit  <=>  (1 + cos theta) limit^2 >= 2.
+        if ((1 + dt) * miter_limit_ * miter_limit_ >= 2) {
+            outer.push_back(v + (n1 + n2) * (h_ / (1 + dt)));
+        } else if (st_.join == LineJoin::MiterClip) {
+            const Vec sum = n1 + n2;
+            const double sl = sum.length();
+            const Vec b = sl > 1e-12 ? sum / sl : d1;  // bisector; straight ahead at 180 degrees
+            const double along = d1.dot(b);
+            if (along > 0) {
+                const double t = (miter_limit_ - n1.dot(b)) * h_ / along;
+                outer.push_back(v + n1 * h_ + d1 * t);
+                outer.push_back(v + n2 * h_ - d2 * t);
+            }
+        }
+    }
+
+    // Whether the sector of radius h and angle `turn` that the normal sweeps on the inner side of a
+    // vertex reaches outside both segment rectangles: its arc point at angle psi from the incoming
+    // normal lies h sin(psi) behind the vertex along the incoming segment and h sin(turn - psi)
+    // ahead along the outgoing one, outside both when those exceed their lengths.
+    bool wedge_uncovered(double len_in, double len_out, double turn) const {
+        if (!(len_in < h_ && len_out < h_)) return false;
+        return std::asin(len_in / h_) + std::asin(len_out / h_) < turn;
+    }
+
+    // The ends of an open contour, where the path's own direction t (zero: the chord's) differs
+    // from its chord's d by an angle a. The cap stands square to t, across the line L through the
+    // end perpendicular to t. On the side the path turns away from, the chord's rectangle falls
+    // short of L: the sector the normal sweeps from d to t fills it. On the other side the
+    // rectangle reaches beyond L, into a wedge between L and the chord's own end line that is no
+    // part of the stroke, and is cut along L, when the curve's radius there is at least h. The
+    // radius is taken as r = len / (2 sin a): the circle through the chord's ends tangent to t.
+    // A tighter end has its centre of curvature C (on L, r from the end) inside the pen: the
+    // normals sweep past C and cover the wedge beyond it, so only the triangle between the end, C
+    // and the point r along the chord's end line is cut, and the end is otherwise joined like a
+    // smooth vertex to a segment of length zero along t. A cut must fit in what the chord has left
+    // (`room`, at most its length `len`); without room the end keeps the whole rectangle.
+    // Returns how far the cut reaches along the chord, and sets `cap` to the direction the cap
+    // stands on (pointing along the path).
+
+    // The start at v, the path leaving in direction t and its first chord in direction d.
+    double start_end(Point v, Vec d, Vec t, double len, Vec& cap) {
+        cap = t == Vec{0, 0} ? d : t;
+        left_.push_back(v + perp(cap) * h_);
+        right_.push_back(v - perp(cap) * h_);
+        const double cr = t.cross(d), dt = t.dot(d);
+        if (t == Vec{0, 0} || (cr == 0 && dt > 0)) return 0;
+        const double reach = h_ * std::abs(cr) / dt, r = len / (2 * std::abs(cr));
+        if (dt > 0 && 2 * reach <= len) {
+            const Side side = sides(t, d);
+            side.outer.pop_back();
+            side.inner.pop_back();
+            sweep(side.outer, v, side.n1, side.n2, cr, dt, side.s);
+            side.inner.push_back(v - side.n1 * h_);
+            side.inner.push_back(v - side.n2 * h_ + d * reach);
+            return reach;
+        }
+        const bool cut = dt > 0 && r < h_;
+        Point pts[2];
+        if (cut) {
+            const Side side = sides(t, d);
+            pts[0] = v - side.n1 * r;
+            pts[1] = cut_corner(v, -side.n2, pts[0], r, dt);
+        }
+        turn(v, t, d, 0, 0, len, true, cut ? std::span<const Point>(pts) : std::span<const Point>());
+        return cut ? len / 2 : 0;
+    }
+
+    // The end at v: the last chord arrives in direction d, the path in direction t.
+    Vec finish_end(Point v, Vec d, Vec t, double len, double room) {
+        const double cr = d.cross(t), dt = d.dot(t);
+        if (t == Vec{0, 0} || (cr == 0 && dt > 0)) {
+            left_.push_back(v + perp(d) * h_);
+            right_.push_back(v - perp(d) * h_);
+            return d;
+        }
+        const double reach = h_ * std::abs(cr) / dt, r = len / (2 * std::abs(cr));
+        if (dt > 0 && 2 * reach <= room) {
+            const Side side = sides(d, t);
+            sweep(side.outer, v, side.n1, side.n2, cr, dt, side.s);
+            side.inner.push_back(v - side.n1 * h_ - d * reach);
+            side.inner.push_back(v - side.n2 * h_);
+            return t;
+        }
+        const bool cut = dt > 0 && r < h_ && len / 2 <= room;
+        Point pts[2];
+        if (cut) {
+            const Side side = sides(d, t);
+            pts[1] = v - side.n2 * r;
+            pts[0] = cut_corner(v, -side.n1, pts[1], r, dt);
+        }
+        turn(v, d, t, len, room, 0, true, cut ? std::span<const Point>(pts) : std::span<const Point>());
+        left_.push_back(v + perp(t) * h_);
+        right_.push_back(v - perp(t) * h_);
+        return t;
+    }
+
+    // The corner of the cut at an end v opposite C: F = v + m 2 r cos(a) on the chord's end line
+    // (m: the chord's inner normal), or, when F lies beyond the chord's side (h from the chord),
+    // where the line from C to F crosses that side.
+    Point cut_corner(Point v, Vec m, Point c, double r, double cos_a) const {
+        const double f = 2 * r * cos_a;
+        if (f <= h_) return v + m * f;
+        const double lambda = h_ / (r * cos_a) - 1;  // C is r cos(a) from the chord, F twice that
+        return c + (v + m * f - c) * lambda;
+    }
+
+    // The outer and inner sides of a turn from direction d1 to d2, with their outer normals.
+    struct Side {
+        std::vector<Point>& outer;
+        std::vector<Point>& inner;
+        Vec n1, n2;
+        double s;
+    };
+    Side sides(Vec d1, Vec d2) {
+        const bool outer_left = d1.cross(d2) <= 0;
+        const double s = outer_left ? 1.0 : -1.0;
+        return {outer_left ? left_ : right_, outer_left ? right_ : left_, perp(d1) * s, perp(d2) * s, s};
+    }
+
+    // The sector the outer normal sweeps at v from n1 to n2.
+    void sweep(std::vector<Point>& outer, Point v, Vec n1, Vec n2, double cr, double dt, double s) {
+        outer.push_back(v + n1 * h_);
+        arc(outer, v, n1, -s * std::atan2(std::abs(cr), dt));
+        outer.push_back(v + n2 * h_);
     }
 
     // The outline grows by a contour's two sides before emit() sees them: a long contour of round
@@ -304,10 +466,14 @@ private:
     std::size_t total_ = 0;
     const std::size_t max_points_ = current_limits().path_points;
     std::vector<Point> q_, left_, right_;
+    std::vector<std::uint8_t> smooth_;  // per point of q_: the path is smooth there
     std::vector<Vec> dir_;
     std::vector<double> len_;
     bool closed_ = false;
-    double first_reach_ = 0;  // closed contour: how far the shortcut at vertex 0 reaches along segment 0
+    // How far the inner side is cut short along segment 0: by the shortcut at vertex 0 (closed
+    // contours) or by the start's cut (open ones); and along the outgoing segment of the last join.
+    double first_reach_ = 0;
+    double last_reach_ = 0;
 };
 
 }  // namespace
@@ -323,18 +489,23 @@ double user_tolerance(const Affine& m, double tolerance) {
     return std::isfinite(tol) && tol > 0 ? tol : tolerance;
 }
 
+double tangent_resolution(double width, double tol) { return std::max(tol, width / 40); }
+
 void check_finite(const Path& path) {
     if (!path.is_finite()) throw Error(ErrorKind::InvalidData, "stroke: path has a non-finite coordinate");
 }
 
-void stroke_polyline(const Polyline& poly, std::span<const Point> dirs, const StrokeStyle& style, double tol,
+void stroke_polyline(const FlatContours& flat, std::span<const Point> dirs, const StrokeStyle& style, double tol,
                      Path& out) {
     Outliner o(style, tol, out);
+    const Polyline& poly = flat.poly;
     std::size_t start = 0;
     for (std::size_t c = 0; c < poly.contour_count(); ++c) {
         const std::size_t end = poly.contour_ends[c];
         const Point hint = c < dirs.size() ? dirs[c] : Point{0, 0};
-        o.contour(std::span<const Point>(poly.points.data() + start, end - start), poly.closed[c], hint);
+        o.contour(std::span<const Point>(poly.points.data() + start, end - start),
+                  std::span<const std::uint8_t>(flat.smooth.data() + start, end - start), poly.closed[c], hint,
+                  flat.head[c], flat.tail[c]);
         start = end;
     }
 }
@@ -357,12 +528,12 @@ Path stroke(const Path& path, const StrokeStyle& style, const Affine& m, double 
     Path out;
     if (!(style.width > 0) || path.empty()) return out;
 
-    Polyline flat;
-    flatten(path, Affine{}, tol, flat);
+    FlatContours flat;
+    flatten_for_stroke(path, tol, tangent_resolution(style.width, tol), flat);
     if (pattern.empty()) {
         stroke_polyline(flat, {}, style, tol, out);
     } else {
-        Polyline dashed;
+        FlatContours dashed;
         std::vector<Point> dirs;
         dash_polyline(flat, pattern, style.dash_offset, dashed, dirs);
         stroke_polyline(dashed, dirs, style, tol, out);
@@ -377,13 +548,13 @@ Path dash(const Path& path, std::span<const double> dashes, double offset, const
     if (!std::isfinite(offset)) throw Error(ErrorKind::InvalidData, "stroke: dash offset must be finite");
     const std::vector<double> pattern = effective_pattern(dashes);
 
-    Polyline flat, dashed;
+    FlatContours flat, dashed;
     std::vector<Point> dirs;
-    flatten(path, Affine{}, tol, flat);
-    const Polyline* src = &flat;
+    flatten_for_stroke(path, tol, tol, flat);
+    const Polyline* src = &flat.poly;
     if (!pattern.empty()) {
         dash_polyline(flat, pattern, offset, dashed, dirs);
-        src = &dashed;
+        src = &dashed.poly;
     }
     Path out;
     std::size_t start = 0;

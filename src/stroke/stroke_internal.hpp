@@ -6,6 +6,7 @@
 // direction hint, used for the caps of zero-length dashes.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -14,6 +15,33 @@
 #include "casteljau/stroke.hpp"
 
 namespace casteljau::stroke_detail {
+
+// A flattened path with what the stroker needs to know about the curve behind it.
+//   smooth: per point, whether the path turns continuously there (a point inside a curve, or where
+//           two segments meet with the same tangent): no join belongs there, the stroke is the sweep
+//           of the pen's normal around the point (see stroke.cpp);
+//   head, tail: per contour, the path's own unit direction at its first and last point, or (0, 0)
+//           where the first or last chord's direction is the path's (lines, dash ends).
+struct FlatContours {
+    Polyline poly;
+    std::vector<std::uint8_t> smooth;
+    std::vector<Vec> head, tail;
+
+    void clear() {
+        poly.clear();
+        smooth.clear();
+        head.clear();
+        tail.clear();
+    }
+};
+
+// Flattens `path` (user space) at user tolerance `tol` into `out` (cleared first). A curve's
+// control points nearer than `near` to its ends do not set its directions there.
+void flatten_for_stroke(const Path& path, double tol, double near, FlatContours& out);
+
+// `near` for a pen of width `width` at user tolerance `tol`: the larger of the tolerance and 1/40
+// of the width.
+double tangent_resolution(double width, double tol);
 
 // The user-space tolerance for `tolerance` pixels under `m` (validates both).
 double user_tolerance(const Affine& m, double tolerance);
@@ -28,12 +56,14 @@ std::vector<double> effective_pattern(std::span<const double> dashes);
 // Dashes every contour of `in` with a non-empty effective `pattern` starting `offset` into it.
 // `dirs` receives one direction per output contour: the unit direction of the path where a
 // zero-length dash lies, or (0, 0) when not needed.
-void dash_polyline(const Polyline& in, std::span<const double> pattern, double offset, Polyline& out,
+// Points keep their smoothness; a dash keeps the contour's head or tail where it starts at the
+// contour's start or ends at its end.
+void dash_polyline(const FlatContours& in, std::span<const double> pattern, double offset, FlatContours& out,
                    std::vector<Point>& dirs);
 
 // Appends the stroke outline of every contour of `poly` to `out`. `dirs` (may be empty) gives
 // per-contour directions for zero-length contours. `tol` is the user-space tolerance for arcs.
-void stroke_polyline(const Polyline& poly, std::span<const Point> dirs, const StrokeStyle& style, double tol,
+void stroke_polyline(const FlatContours& flat, std::span<const Point> dirs, const StrokeStyle& style, double tol,
                      Path& out);
 
 }  // namespace casteljau::stroke_detail
