@@ -61,6 +61,9 @@ struct PaintRef {
     std::string id;        // Server: the referenced element's id
     Kind fallback = None;  // Server: what to paint when the reference is unusable
     Color fallback_color = Color::black();
+    // currentColor as the colour (or the fallback colour): it computes to the `color` of each
+    // element the paint is inherited by, so it follows a `color` set further down the tree.
+    bool current = false, fallback_current = false;
     std::shared_ptr<const ContextElement> context;  // Server: set when the paint is context-fill/-stroke
     static PaintRef solid(Color c) {
         PaintRef p;

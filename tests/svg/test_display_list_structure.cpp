@@ -1,0 +1,39 @@
+// What SVG documents convert to, without drawing them: the document structure (namespaces, DTD
+// entities, conditional processing on the root, the transform property, inherited currentColor,
+// the root's background). Each expected value is worked out by hand from the XML, SVG and CSS
+// specifications in the comments.
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "casteljau/geometry.hpp"
+#include "casteljau/paint.hpp"
+#include "formats/svg/display_list.hpp"
+
+using namespace casteljau;
+using svg::DisplayItem;
+
+namespace {
+
+const std::string kSvgOpen = "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'>";
+
+// The display list of `body` inside a 100 x 100 svg (no viewBox: user space is pixels).
+svg::DisplayList convert(const std::string& body) { return svg::convert(kSvgOpen + body + "</svg>"); }
+
+}  // namespace
+
+TEST_CASE("svg display list: an inherited currentColor takes the colour of the element painted",
+          "[svg][display_list]") {
+    // CSS Color 4: currentColor computes to itself and is inherited as the keyword, so fill and
+    // stroke set to currentColor on an outer group use the `color` of the rect, set in between.
+    const svg::DisplayList fill =
+        convert("<g fill='currentColor'><g color='green'><rect width='10' height='10'/></g></g>");
+    REQUIRE(fill.size() == 1);
+    CHECK(fill[0].color == Color::rgba(0, 128, 0));
+    const svg::DisplayList stroke =
+        convert("<g stroke='currentColor'><g color='#0000ff'><rect width='10' height='10' fill='none'/></g></g>");
+    REQUIRE(stroke.size() == 1);
+    CHECK(stroke[0].kind == DisplayItem::Stroke);
+    CHECK(stroke[0].color == Color::rgba(0, 0, 255));
+}
