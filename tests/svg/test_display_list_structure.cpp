@@ -37,3 +37,23 @@ TEST_CASE("svg display list: an inherited currentColor takes the colour of the e
     CHECK(stroke[0].kind == DisplayItem::Stroke);
     CHECK(stroke[0].color == Color::rgba(0, 0, 255));
 }
+
+TEST_CASE("svg display list: the transform property of CSS wins over the attribute", "[svg][display_list]") {
+    // SVG 2 makes transform a presentation attribute of the CSS transform property: a style sheet
+    // or a style attribute overrides it. transform-origin is 0 0 for SVG elements.
+    const svg::DisplayList sheet =
+        convert("<style>#r { transform: scale(2) }</style><rect id='r' width='10' height='10' transform='translate(5)'/>");
+    REQUIRE(sheet.size() == 1);
+    CHECK(sheet[0].transform == Affine{2, 0, 0, 2, 0, 0});
+    const svg::DisplayList inline_style = convert("<rect width='10' height='10' style='transform:translate(3, 4)'/>");
+    REQUIRE(inline_style.size() == 1);
+    CHECK(inline_style[0].transform == Affine{1, 0, 0, 1, 3, 4});
+}
+
+TEST_CASE("svg display list: an unparsable transform is ignored, the element is drawn", "[svg][display_list]") {
+    // An attribute value that does not parse is an error in the value: the attribute is treated as
+    // not specified (the identity), as browsers do.
+    const svg::DisplayList items = convert("<rect width='10' height='10' transform='qwe'/>");
+    REQUIRE(items.size() == 1);
+    CHECK(items[0].transform == Affine::identity());
+}

@@ -75,12 +75,7 @@ void clip_child(Context& cx, const pugi::xml_node& c, const Affine& m, FillRule 
         if (k == "clip-rule") rule = val == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
     }
     if (!visible) return;
-    Affine cm = m;
-    if (const char* t = c.attribute("transform").value(); *t) {
-        try {
-            cm = m * with_origin(cx, c, parse_svg_transform(t), vp);
-        } catch (const Error&) { return; }
-    }
+    const Affine cm = m * element_transform(cx, c, vp);
     const std::string_view name = c.name();
     if (name == "use") {
         const char* h = href(c);

@@ -197,6 +197,7 @@ void walk(Context& cx, const pugi::xml_node& node, const Style& st, const Affine
 bool known_element(std::string_view n);
 bool conditions_pass(const pugi::xml_node& n);
 Affine with_origin(Context& cx, const pugi::xml_node& n, const Affine& t, Viewport vp);
+Affine element_transform(Context& cx, const pugi::xml_node& n, Viewport vp);
 void viewport(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& m, double x, double y, double w,
               double h, int depth, bool is_symbol);
 std::optional<Rect> items_bbox(const Context& cx, std::size_t first, const Affine& m);
