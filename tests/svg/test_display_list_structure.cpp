@@ -57,3 +57,14 @@ TEST_CASE("svg display list: an unparsable transform is ignored, the element is 
     REQUIRE(items.size() == 1);
     CHECK(items[0].transform == Affine::identity());
 }
+
+TEST_CASE("svg display list: systemLanguage on the root svg can turn the document off", "[svg][display_list]") {
+    // Conditional processing applies to the root as to any element: with the user language
+    // English, a root for Russian only renders nothing.
+    CHECK(svg::convert("<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10' systemLanguage='ru-RU'>"
+                       "<rect width='10' height='10'/></svg>")
+              .empty());
+    CHECK(svg::convert("<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10' systemLanguage='en-US'>"
+                       "<rect width='10' height='10'/></svg>")
+              .size() == 1);
+}

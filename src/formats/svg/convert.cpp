@@ -86,9 +86,9 @@ ConvertedDocument convert_document(std::string_view input, const SvgOptions& opt
     cx.options = options;
     index_ids(cx, root);
     read_style_sheets(cx, root);
-    // The root goes through the element path like any group: its transform, display, opacity,
-    // clip-path, mask, filter and blending apply to the whole document.
-    element(cx, root, Style(), out.view, vp, 0);
+    // The root goes through the element path like any group: its conditional processing,
+    // transform, display, opacity, clip-path, mask, filter and blending apply to the whole document.
+    if (conditions_pass(root)) element(cx, root, Style(), out.view, vp, 0);
     out.items = std::move(cx.items);
     out.warnings.insert(out.warnings.end(), cx.warnings.begin(), cx.warnings.end());
     return out;
