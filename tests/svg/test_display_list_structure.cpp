@@ -21,6 +21,12 @@ const std::string kSvgOpen = "<svg xmlns='http://www.w3.org/2000/svg' width='100
 // The display list of `body` inside a 100 x 100 svg (no viewBox: user space is pixels).
 svg::DisplayList convert(const std::string& body) { return svg::convert(kSvgOpen + body + "</svg>"); }
 
+std::vector<DisplayItem::Kind> kinds(const svg::DisplayList& items) {
+    std::vector<DisplayItem::Kind> out;
+    for (const DisplayItem& it : items) out.push_back(it.kind);
+    return out;
+}
+
 }  // namespace
 
 TEST_CASE("svg display list: an inherited currentColor takes the colour of the element painted",
@@ -67,4 +73,16 @@ TEST_CASE("svg display list: systemLanguage on the root svg can turn the documen
     CHECK(svg::convert("<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10' systemLanguage='en-US'>"
                        "<rect width='10' height='10'/></svg>")
               .size() == 1);
+}
+
+TEST_CASE("svg display list: clip-rule is inherited into a clipPath from its parent", "[svg][display_list]") {
+    // clip-rule is an inherited property; a clipPath inside a group inherits the group's value
+    // like any element, so its path clips with even-odd.
+    const svg::DisplayList items = convert(
+        "<g clip-rule='evenodd'><clipPath id='c'><rect width='50' height='50'/></clipPath></g>"
+        "<rect width='100' height='100' clip-path='url(#c)'/>");
+    REQUIRE(kinds(items) == std::vector<DisplayItem::Kind>{DisplayItem::BeginLayer, DisplayItem::Fill,
+                                                           DisplayItem::BeginClip, DisplayItem::Fill,
+                                                           DisplayItem::EndMask, DisplayItem::EndLayer});
+    CHECK(items[3].rule == FillRule::EvenOdd);
 }

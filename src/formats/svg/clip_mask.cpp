@@ -42,9 +42,8 @@ void emit_clip(Context& cx, const pugi::xml_node& clip, const Affine& cm, const 
     if (inner && is_active(cx, inner)) inner = {};  // a reference back into the cycle is ignored (as resvg does)
     if (ok) {
         if (inner) cx.items.push_back(layer_item(DisplayItem::BeginLayer, 1));
-        FillRule rule = FillRule::NonZero;
-        for (const auto& [k, v] : properties(cx, clip))
-            if (k == "clip-rule") rule = trim(v) == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
+        // clip-rule is inherited: the clipPath's own value, or its ancestors'.
+        const FillRule rule = inherited(cx, clip, "clip-rule") == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
         for (const pugi::xml_node& c : clip.children())
             if (c.type() == pugi::node_element) clip_child(cx, c, m, rule, vp, depth + 1);
         if (inner) {
