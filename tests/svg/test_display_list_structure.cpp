@@ -4,6 +4,7 @@
 // specifications in the comments.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -85,4 +86,19 @@ TEST_CASE("svg display list: clip-rule is inherited into a clipPath from its par
                                                            DisplayItem::BeginClip, DisplayItem::Fill,
                                                            DisplayItem::EndMask, DisplayItem::EndLayer});
     CHECK(items[3].rule == FillRule::EvenOdd);
+}
+
+TEST_CASE("svg display list: a marker's orient in grad", "[svg][display_list]") {
+    // orient takes a CSS angle: 40grad is 40 * 360 / 400 = 36 degrees. The marker (user-space
+    // units, overflow visible, ref 0 0) maps its content by translate(vertex) * rotate(36deg).
+    const svg::DisplayList items = convert(
+        "<marker id='m' markerUnits='userSpaceOnUse' orient='40grad' overflow='visible'>"
+        "<rect width='1' height='1'/></marker><path d='M 10 10 L 20 10' fill='none' marker-start='url(#m)'/>");
+    REQUIRE(kinds(items) ==
+            std::vector<DisplayItem::Kind>{DisplayItem::BeginLayer, DisplayItem::Fill, DisplayItem::EndLayer});
+    const double r = 36 * 3.14159265358979323846 / 180;
+    CHECK(items[1].transform.a == Approx(std::cos(r)));
+    CHECK(items[1].transform.b == Approx(std::sin(r)));
+    CHECK(items[1].transform.e == Approx(10));
+    CHECK(items[1].transform.f == Approx(10));
 }

@@ -86,14 +86,15 @@ void emit_markers(Context& cx, const Path& path, const Style& st, const Affine& 
         } else if (!orient.empty()) {
             std::string_view o = orient;
             double unit = kPi / 180;
-            if (o.size() > 3 && o.substr(o.size() - 3) == "deg")
+            // "grad" before "rad": both end in "rad".
+            if (o.size() > 3 && o.substr(o.size() - 3) == "deg") {
                 o.remove_suffix(3);
-            else if (o.size() > 3 && o.substr(o.size() - 3) == "rad") {
-                o.remove_suffix(3);
-                unit = 1;
             } else if (o.size() > 4 && o.substr(o.size() - 4) == "grad") {
                 o.remove_suffix(4);
                 unit = kPi / 200;
+            } else if (o.size() > 3 && o.substr(o.size() - 3) == "rad") {
+                o.remove_suffix(3);
+                unit = 1;
             } else if (o.size() > 4 && o.substr(o.size() - 4) == "turn") {
                 o.remove_suffix(4);
                 unit = 2 * kPi;
