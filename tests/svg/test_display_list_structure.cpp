@@ -28,6 +28,13 @@ std::vector<DisplayItem::Kind> kinds(const svg::DisplayList& items) {
     return out;
 }
 
+// The bounds of item `it`'s path in document pixels (its transform is a translation here).
+Rect map_rect(const DisplayItem& it) {
+    const Rect b = it.path.bounds();
+    const Point p0 = it.transform.apply({b.x0, b.y0}), p1 = it.transform.apply({b.x1, b.y1});
+    return Rect{p0.x, p0.y, p1.x, p1.y};
+}
+
 }  // namespace
 
 TEST_CASE("svg display list: an inherited currentColor takes the colour of the element painted",
@@ -101,4 +108,19 @@ TEST_CASE("svg display list: a marker's orient in grad", "[svg][display_list]") 
     CHECK(items[1].transform.b == Approx(std::sin(r)));
     CHECK(items[1].transform.e == Approx(10));
     CHECK(items[1].transform.f == Approx(10));
+}
+
+TEST_CASE("svg display list: a marker's percentages are of the viewport it is drawn in",
+          "[svg][display_list]") {
+    // refX, refY, markerWidth and markerHeight in percent resolve against the viewport the marked
+    // shape is in (here 100 x 100): refX 5% = 5, refY 10% = 10, markerWidth 10% = 10 and
+    // markerHeight 20% = 20. The content is placed with the reference point on the vertex
+    // (20, 30), so the marker's clip rectangle (0, 0) 10 x 20 lands at (15, 20) .. (25, 40).
+    const svg::DisplayList items = convert(
+        "<marker id='m' markerUnits='userSpaceOnUse' refX='5%' refY='10%' markerWidth='10%' markerHeight='20%'>"
+        "<rect width='1' height='1'/></marker><path d='M 20 30 L 40 30' fill='none' marker-start='url(#m)'/>");
+    REQUIRE(kinds(items) == std::vector<DisplayItem::Kind>{DisplayItem::BeginLayer, DisplayItem::Fill,
+                                                           DisplayItem::BeginClip, DisplayItem::Fill,
+                                                           DisplayItem::EndMask, DisplayItem::EndLayer});
+    CHECK(map_rect(items[3]) == Rect{15, 20, 25, 40});
 }
