@@ -83,6 +83,18 @@ TEST_CASE("svg display list: systemLanguage on the root svg can turn the documen
               .size() == 1);
 }
 
+TEST_CASE("svg display list: elements outside the SVG namespace are not rendered", "[svg][display_list]") {
+    // Namespaces in XML: an unprefixed element is in the default namespace in scope; here the
+    // group redeclares it, so its unprefixed rect is not an SVG rect, while s:rect (s bound to
+    // the SVG namespace) is.
+    const svg::DisplayList items =
+        convert("<s:g xmlns='http://www.example.org/notsvg' xmlns:s='http://www.w3.org/2000/svg'>"
+                "<s:rect width='10' height='10' fill='green'/><rect width='20' height='20' fill='red'/></s:g>");
+    REQUIRE(items.size() == 1);
+    CHECK(items[0].color == Color::rgba(0, 128, 0));
+    CHECK(items[0].path.bounds() == Rect{0, 0, 10, 10});
+}
+
 TEST_CASE("svg display list: clip-rule is inherited into a clipPath from its parent", "[svg][display_list]") {
     // clip-rule is an inherited property; a clipPath inside a group inherits the group's value
     // like any element, so its path clips with even-odd.

@@ -17,8 +17,10 @@ namespace casteljau::svg {
 std::string gunzip(std::string_view data);
 
 // Elements written with a prefix bound to the SVG namespace (<svg:svg xmlns:svg="...">) get their
-// local name, so the reader sees <svg>; elements of other namespaces keep their prefixed names and
-// are skipped as unknown. `prefixes` holds the prefixes bound to the SVG namespace in scope.
+// local name, so the reader sees <svg>; elements of other namespaces (by prefix or by a default
+// namespace other than SVG's) get or keep a prefixed name and are skipped as unknown. Where no
+// default namespace is declared, unprefixed elements are taken as SVG. `prefixes` holds the
+// prefixes bound to the SVG namespace in scope.
 void normalise_namespaces(pugi::xml_node node, std::vector<std::string> prefixes);
 
 }  // namespace casteljau::svg
