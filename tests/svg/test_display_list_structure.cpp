@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "casteljau/error.hpp"
 #include "casteljau/geometry.hpp"
 #include "casteljau/paint.hpp"
 #include "formats/svg/display_list.hpp"
@@ -93,6 +94,36 @@ TEST_CASE("svg display list: elements outside the SVG namespace are not rendered
     REQUIRE(items.size() == 1);
     CHECK(items[0].color == Color::rgba(0, 128, 0));
     CHECK(items[0].path.bounds() == Rect{0, 0, 10, 10});
+}
+
+TEST_CASE("svg display list: internal DTD entities are expanded", "[svg][display_list]") {
+    // XML 1.0 section 4.4: an internal general entity is replaced by its text, in attribute values
+    // and in content, where its markup is parsed as elements.
+    const std::string doctype = "<!DOCTYPE svg [\n  <!ENTITY colour 'green'>\n"
+                                "  <!ENTITY two \"<rect width='1' height='1'/><rect x='5' width='1' height='&h;'/>\">\n"
+                                "  <!ENTITY h '2'>\n]>\n";
+    const svg::DisplayList items =
+        svg::convert(doctype + kSvgOpen + "<rect width='10' height='10' fill='&colour;'/><g>&two;</g></svg>");
+    REQUIRE(items.size() == 3);
+    CHECK(items[0].color == Color::rgba(0, 128, 0));
+    CHECK(items[1].path.bounds() == Rect{0, 0, 1, 1});
+    CHECK(items[2].path.bounds() == Rect{5, 0, 6, 2});  // &h; inside &two; expanded too
+}
+
+TEST_CASE("svg display list: entity expansion has limits against entity bombs", "[svg][display_list]") {
+    // Each level multiplies the text by ten: nine levels would be 10^9 copies. Nesting past a
+    // few levels (and expansions past the size cap) are refused with an error.
+    std::string dtd = "<!DOCTYPE svg [<!ENTITY a0 'lol'>";
+    for (int i = 1; i < 10; ++i) {
+        dtd += "<!ENTITY a" + std::to_string(i) + " '";
+        for (int k = 0; k < 10; ++k) dtd += "&a" + std::to_string(i - 1) + ";";
+        dtd += "'>";
+    }
+    dtd += "]>";
+    CHECK_THROWS_AS(svg::convert(dtd + kSvgOpen + "<text>&a9;</text></svg>"), Error);
+    // A self-referencing entity is refused too.
+    CHECK_THROWS_AS(svg::convert("<!DOCTYPE svg [<!ENTITY e 'x&e;'>]>" + kSvgOpen + "<text>&e;</text></svg>"),
+                    Error);
 }
 
 TEST_CASE("svg display list: clip-rule is inherited into a clipPath from its parent", "[svg][display_list]") {

@@ -24,7 +24,9 @@ pugi::xml_node read_xml(std::string_view input, pugi::xml_document& xml) {
     if (input.size() >= 2 && static_cast<unsigned char>(input[0]) == 0x1f &&
         static_cast<unsigned char>(input[1]) == 0x8b)
         inflated = gunzip(input);
-    const std::string_view text = inflated.empty() ? input : std::string_view(inflated);
+    std::string_view text = inflated.empty() ? input : std::string_view(inflated);
+    const std::string expanded = expand_entities(text);
+    if (!expanded.empty()) text = expanded;
     if (trim(text).empty()) throw Error(ErrorKind::Parse, "SVG input is empty");
     const pugi::xml_parse_result res = xml.load_buffer(
         text.data(), text.size(), pugi::parse_default | pugi::parse_ws_pcdata);  // text needs the spaces between tspans
