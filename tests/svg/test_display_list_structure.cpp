@@ -138,6 +138,19 @@ TEST_CASE("svg display list: clip-rule is inherited into a clipPath from its par
     CHECK(items[3].rule == FillRule::EvenOdd);
 }
 
+TEST_CASE("svg display list: the root's background-color fills the whole canvas first", "[svg][display_list]") {
+    // CSS backgrounds: the root element's background covers the whole canvas, under the content
+    // and outside the viewBox mapping: one fill of the output rectangle in pixels.
+    const svg::DisplayList items =
+        svg::convert("<svg xmlns='http://www.w3.org/2000/svg' width='40' height='20' viewBox='-10 -10 20 10' "
+                     "style='background-color: #0000ff80'><rect width='1' height='1'/></svg>");
+    REQUIRE(items.size() == 2);
+    CHECK(items[0].kind == DisplayItem::Fill);
+    CHECK(items[0].transform == Affine::identity());
+    CHECK(items[0].path.bounds() == Rect{0, 0, 40, 20});
+    CHECK(items[0].color == Color::rgba(0, 0, 255, 128));
+}
+
 TEST_CASE("svg display list: a marker's orient in grad", "[svg][display_list]") {
     // orient takes a CSS angle: 40grad is 40 * 360 / 400 = 36 degrees. The marker (user-space
     // units, overflow visible, ref 0 0) maps its content by translate(vertex) * rotate(36deg).

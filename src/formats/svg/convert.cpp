@@ -66,6 +66,28 @@ void size_document(const pugi::xml_node& root, const std::optional<Rect>& vb, Co
     out.fheight = *h;
 }
 
+// The root's background-color (CSS backgrounds: the root element's background covers the whole
+// canvas): a fill of the output rectangle under everything, in document pixels.
+void background(Context& cx, const pugi::xml_node& root, const ConvertedDocument& out) {
+    std::string value;
+    for (const auto& [k, v] : properties(cx, root))
+        if (k == "background-color") value = std::string(trim(v));
+    if (value.empty()) return;
+    Color c;
+    try {
+        c = parse_color(value);
+    } catch (const Error&) {
+        warn(cx, "invalid background-color '" + value + "' ignored");
+        return;
+    }
+    if (c.a == 0) return;
+    DisplayItem it;
+    it.kind = DisplayItem::Fill;
+    it.path.add_rect(Rect{0, 0, out.fwidth, out.fheight});
+    it.color = c;
+    cx.items.push_back(std::move(it));
+}
+
 }  // namespace
 
 ConvertedDocument convert_document(std::string_view input, const SvgOptions& options) {
@@ -88,6 +110,7 @@ ConvertedDocument convert_document(std::string_view input, const SvgOptions& opt
     cx.options = options;
     index_ids(cx, root);
     read_style_sheets(cx, root);
+    background(cx, root, out);
     // The root goes through the element path like any group: its conditional processing,
     // transform, display, opacity, clip-path, mask, filter and blending apply to the whole document.
     if (conditions_pass(root)) element(cx, root, Style(), out.view, vp, 0);
