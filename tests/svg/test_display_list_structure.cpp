@@ -151,6 +151,38 @@ TEST_CASE("svg display list: the root's background-color fills the whole canvas 
     CHECK(items[0].color == Color::rgba(0, 0, 255, 128));
 }
 
+TEST_CASE("svg display list: a mask that names itself in its content draws that content unmasked",
+          "[svg][display_list]") {
+    // A reference cycle is an error the specification leaves open; the reference back into the
+    // mask is dropped (taken as mask: none) and the rest drawn. The masked rect is drawn in a
+    // layer, then the mask region (-10% .. 120% of the box: -1, -1, 12 x 12) clips the mask's
+    // white rect, now without a mask of its own.
+    const svg::DisplayList items = convert(
+        "<mask id='m'><rect width='10' height='10' fill='white' mask='url(#m)'/></mask>"
+        "<rect width='10' height='10' fill='green' mask='url(#m)'/>");
+    REQUIRE(kinds(items) == std::vector<DisplayItem::Kind>{DisplayItem::BeginLayer, DisplayItem::Fill,
+                                                           DisplayItem::BeginMask, DisplayItem::PushClip,
+                                                           DisplayItem::Fill, DisplayItem::PopClip,
+                                                           DisplayItem::EndMask, DisplayItem::EndLayer});
+    CHECK(items[3].path.bounds() == Rect{-1, -1, 11, 11});
+    CHECK(items[4].color == Color::white());
+}
+
+TEST_CASE("svg display list: of two masks that mask each other, the later one loses its mask",
+          "[svg][display_list]") {
+    // Masks are scanned in document order: mask a names b, and b names a back, so b's reference
+    // is the one dropped. The rect masked by b gets b's content only (the 5 x 5 rect).
+    const svg::DisplayList items = convert(
+        "<mask id='a' mask='url(#b)'><rect width='10' height='10' fill='white'/></mask>"
+        "<mask id='b' mask='url(#a)'><rect width='5' height='5' fill='white'/></mask>"
+        "<rect width='10' height='10' mask='url(#b)'/>");
+    REQUIRE(kinds(items) == std::vector<DisplayItem::Kind>{DisplayItem::BeginLayer, DisplayItem::Fill,
+                                                           DisplayItem::BeginMask, DisplayItem::PushClip,
+                                                           DisplayItem::Fill, DisplayItem::PopClip,
+                                                           DisplayItem::EndMask, DisplayItem::EndLayer});
+    CHECK(items[4].path.bounds() == Rect{0, 0, 5, 5});
+}
+
 TEST_CASE("svg display list: a marker's orient in grad", "[svg][display_list]") {
     // orient takes a CSS angle: 40grad is 40 * 360 / 400 = 36 degrees. The marker (user-space
     // units, overflow visible, ref 0 0) maps its content by translate(vertex) * rotate(36deg).

@@ -181,6 +181,11 @@ std::string own_overflow(Context& cx, const pugi::xml_node& n);
 bool is_active(const Context& cx, const pugi::xml_node& n);
 pugi::xml_node reference(Context& cx, const pugi::xml_node& n, const char* property, std::string_view want,
                          bool& missing);
+void override_property(Context& cx, const pugi::xml_node& n, const std::string& name, const std::string& value);
+
+// recursive_links.cpp: references that lead back into a mask from its own content replaced by
+// none before conversion (the rest of the content is still drawn).
+void cut_recursive_links(Context& cx, const pugi::xml_node& root);
 
 // style.cpp: fill, stroke and the other painting properties of an element resolved into a Style.
 void apply_paint(Context& cx, const std::string& property, std::string_view value, Color current, PaintRef& paint);

@@ -111,6 +111,7 @@ ConvertedDocument convert_document(std::string_view input, const SvgOptions& opt
     index_ids(cx, root);
     read_style_sheets(cx, root);
     background(cx, root, out);
+    cut_recursive_links(cx, root);
     // The root goes through the element path like any group: its conditional processing,
     // transform, display, opacity, clip-path, mask, filter and blending apply to the whole document.
     if (conditions_pass(root)) element(cx, root, Style(), out.view, vp, 0);
