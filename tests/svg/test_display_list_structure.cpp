@@ -212,3 +212,16 @@ TEST_CASE("svg display list: a marker's percentages are of the viewport it is dr
                                                            DisplayItem::EndMask, DisplayItem::EndLayer});
     CHECK(map_rect(items[3]) == Rect{15, 20, 25, 40});
 }
+
+TEST_CASE("svg display list: a singular patternTransform is ignored like a singular gradientTransform",
+          "[svg][display_list]") {
+    // A patternTransform that cannot be inverted maps the whole tile onto a line: it is ignored
+    // (the identity), as a singular gradientTransform is, and the pattern is used untransformed.
+    const svg::DisplayList items = convert(
+        "<pattern id='p' patternUnits='userSpaceOnUse' width='10' height='10' patternTransform='matrix(0 0 0 0 0 0)'>"
+        "<rect width='5' height='5'/></pattern><rect width='20' height='20' fill='url(#p)'/>");
+    REQUIRE(items.size() == 1);
+    REQUIRE(items[0].pattern);
+    CHECK(items[0].pattern->transform == Affine::identity());
+    CHECK(items[0].pattern->tile == Rect{0, 0, 10, 10});
+}
