@@ -225,3 +225,24 @@ TEST_CASE("svg display list: a singular patternTransform is ignored like a singu
     CHECK(items[0].pattern->transform == Affine::identity());
     CHECK(items[0].pattern->tile == Rect{0, 0, 10, 10});
 }
+
+TEST_CASE("svg display list: a radial gradient with fr equal to r", "[svg][display_list]") {
+    // With fr = r around one centre there is no cone between the two circles; as Skia and resvg
+    // draw it (pad spread), the first stop's colour fills the circle and the last one the rest.
+    // In bounding-box units the circle is centred at (0.5, 0.5) with radius 0.5.
+    const svg::DisplayList items = convert(
+        "<radialGradient id='g' fr='0.5'><stop offset='0' stop-color='black'/>"
+        "<stop offset='1' stop-color='white'/></radialGradient><rect width='20' height='20' fill='url(#g)'/>");
+    REQUIRE(items.size() == 1);
+    REQUIRE(items[0].shader);
+    float c[4];
+    double t = -1;
+    REQUIRE(items[0].shader->parameter({0.5, 0.6}, t));  // inside the circle
+    items[0].shader->color_at(t, c);
+    CHECK(c[0] == Approx(0));
+    CHECK(c[3] == Approx(1));
+    REQUIRE(items[0].shader->parameter({0.02, 0.02}, t));  // a corner, outside it
+    items[0].shader->color_at(t, c);
+    CHECK(c[0] == Approx(1));
+    CHECK(c[3] == Approx(1));
+}
