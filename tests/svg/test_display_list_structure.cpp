@@ -1,7 +1,8 @@
 // What SVG documents convert to, without drawing them: the document structure (namespaces, DTD
 // entities, conditional processing on the root, the transform property, inherited currentColor,
-// the root's background). Each expected value is worked out by hand from the XML, SVG and CSS
-// specifications in the comments.
+// the root's background) and details of clips, masks, markers and paint servers. Each expected
+// value is worked out by hand from the XML, SVG and CSS specifications in the comments (or, for
+// the cases the specifications leave open, from the rule the comment states).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -56,8 +57,8 @@ TEST_CASE("svg display list: an inherited currentColor takes the colour of the e
 TEST_CASE("svg display list: the transform property of CSS wins over the attribute", "[svg][display_list]") {
     // SVG 2 makes transform a presentation attribute of the CSS transform property: a style sheet
     // or a style attribute overrides it. transform-origin is 0 0 for SVG elements.
-    const svg::DisplayList sheet =
-        convert("<style>#r { transform: scale(2) }</style><rect id='r' width='10' height='10' transform='translate(5)'/>");
+    const svg::DisplayList sheet = convert(
+        "<style>#r { transform: scale(2) }</style><rect id='r' width='10' height='10' transform='translate(5)'/>");
     REQUIRE(sheet.size() == 1);
     CHECK(sheet[0].transform == Affine{2, 0, 0, 2, 0, 0});
     const svg::DisplayList inline_style = convert("<rect width='10' height='10' style='transform:translate(3, 4)'/>");
@@ -88,9 +89,9 @@ TEST_CASE("svg display list: elements outside the SVG namespace are not rendered
     // Namespaces in XML: an unprefixed element is in the default namespace in scope; here the
     // group redeclares it, so its unprefixed rect is not an SVG rect, while s:rect (s bound to
     // the SVG namespace) is.
-    const svg::DisplayList items =
-        convert("<s:g xmlns='http://www.example.org/notsvg' xmlns:s='http://www.w3.org/2000/svg'>"
-                "<s:rect width='10' height='10' fill='green'/><rect width='20' height='20' fill='red'/></s:g>");
+    const svg::DisplayList items = convert(
+        "<s:g xmlns='http://www.example.org/notsvg' xmlns:s='http://www.w3.org/2000/svg'>"
+        "<s:rect width='10' height='10' fill='green'/><rect width='20' height='20' fill='red'/></s:g>");
     REQUIRE(items.size() == 1);
     CHECK(items[0].color == Color::rgba(0, 128, 0));
     CHECK(items[0].path.bounds() == Rect{0, 0, 10, 10});
@@ -99,9 +100,10 @@ TEST_CASE("svg display list: elements outside the SVG namespace are not rendered
 TEST_CASE("svg display list: internal DTD entities are expanded", "[svg][display_list]") {
     // XML 1.0 section 4.4: an internal general entity is replaced by its text, in attribute values
     // and in content, where its markup is parsed as elements.
-    const std::string doctype = "<!DOCTYPE svg [\n  <!ENTITY colour 'green'>\n"
-                                "  <!ENTITY two \"<rect width='1' height='1'/><rect x='5' width='1' height='&h;'/>\">\n"
-                                "  <!ENTITY h '2'>\n]>\n";
+    const std::string doctype =
+        "<!DOCTYPE svg [\n  <!ENTITY colour 'green'>\n"
+        "  <!ENTITY two \"<rect width='1' height='1'/><rect x='5' width='1' height='&h;'/>\">\n"
+        "  <!ENTITY h '2'>\n]>\n";
     const svg::DisplayList items =
         svg::convert(doctype + kSvgOpen + "<rect width='10' height='10' fill='&colour;'/><g>&two;</g></svg>");
     REQUIRE(items.size() == 3);
@@ -122,8 +124,7 @@ TEST_CASE("svg display list: entity expansion has limits against entity bombs", 
     dtd += "]>";
     CHECK_THROWS_AS(svg::convert(dtd + kSvgOpen + "<text>&a9;</text></svg>"), Error);
     // A self-referencing entity is refused too.
-    CHECK_THROWS_AS(svg::convert("<!DOCTYPE svg [<!ENTITY e 'x&e;'>]>" + kSvgOpen + "<text>&e;</text></svg>"),
-                    Error);
+    CHECK_THROWS_AS(svg::convert("<!DOCTYPE svg [<!ENTITY e 'x&e;'>]>" + kSvgOpen + "<text>&e;</text></svg>"), Error);
 }
 
 TEST_CASE("svg display list: clip-rule is inherited into a clipPath from its parent", "[svg][display_list]") {
@@ -141,9 +142,9 @@ TEST_CASE("svg display list: clip-rule is inherited into a clipPath from its par
 TEST_CASE("svg display list: the root's background-color fills the whole canvas first", "[svg][display_list]") {
     // CSS backgrounds: the root element's background covers the whole canvas, under the content
     // and outside the viewBox mapping: one fill of the output rectangle in pixels.
-    const svg::DisplayList items =
-        svg::convert("<svg xmlns='http://www.w3.org/2000/svg' width='40' height='20' viewBox='-10 -10 20 10' "
-                     "style='background-color: #0000ff80'><rect width='1' height='1'/></svg>");
+    const svg::DisplayList items = svg::convert(
+        "<svg xmlns='http://www.w3.org/2000/svg' width='40' height='20' viewBox='-10 -10 20 10' "
+        "style='background-color: #0000ff80'><rect width='1' height='1'/></svg>");
     REQUIRE(items.size() == 2);
     CHECK(items[0].kind == DisplayItem::Fill);
     CHECK(items[0].transform == Affine::identity());
@@ -168,8 +169,7 @@ TEST_CASE("svg display list: a mask that names itself in its content draws that 
     CHECK(items[4].color == Color::white());
 }
 
-TEST_CASE("svg display list: of two masks that mask each other, the later one loses its mask",
-          "[svg][display_list]") {
+TEST_CASE("svg display list: of two masks that mask each other, the later one loses its mask", "[svg][display_list]") {
     // Masks are scanned in document order: mask a names b, and b names a back, so b's reference
     // is the one dropped. The rect masked by b gets b's content only (the 5 x 5 rect).
     const svg::DisplayList items = convert(
@@ -198,8 +198,7 @@ TEST_CASE("svg display list: a marker's orient in grad", "[svg][display_list]") 
     CHECK(items[1].transform.f == Approx(10));
 }
 
-TEST_CASE("svg display list: a marker's percentages are of the viewport it is drawn in",
-          "[svg][display_list]") {
+TEST_CASE("svg display list: a marker's percentages are of the viewport it is drawn in", "[svg][display_list]") {
     // refX, refY, markerWidth and markerHeight in percent resolve against the viewport the marked
     // shape is in (here 100 x 100): refX 5% = 5, refY 10% = 10, markerWidth 10% = 10 and
     // markerHeight 20% = 20. The content is placed with the reference point on the vertex

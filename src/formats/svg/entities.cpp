@@ -33,8 +33,7 @@ bool is_name_char(char c) {
 // Parameter entities (%) and external entities (SYSTEM, PUBLIC) are left out.
 Entities read_declarations(std::string_view subset) {
     Entities out;
-    for (std::size_t pos = subset.find("<!ENTITY"); pos != std::string_view::npos;
-         pos = subset.find("<!ENTITY", pos)) {
+    for (std::size_t pos = subset.find("<!ENTITY"); pos != std::string_view::npos; pos = subset.find("<!ENTITY", pos)) {
         pos += 8;
         while (pos < subset.size() && is_space(subset[pos])) ++pos;
         if (pos >= subset.size() || subset[pos] == '%') continue;
@@ -55,8 +54,7 @@ Entities read_declarations(std::string_view subset) {
 
 // Appends the text of entity `name`'s value to `out` with the references to declared entities
 // in it expanded; `depth` counts the enclosing entities.
-void expand_value(const Entities& entities, const std::string& value, int depth, std::size_t cap,
-                  std::string& out) {
+void expand_value(const Entities& entities, const std::string& value, int depth, std::size_t cap, std::string& out) {
     if (depth > kMaxEntityDepth)
         throw Error(ErrorKind::Limit, "DTD entities nested deeper than " + std::to_string(kMaxEntityDepth) +
                                           " levels (a recursive entity or an entity bomb)");
@@ -75,8 +73,7 @@ void expand_value(const Entities& entities, const std::string& value, int depth,
         }
         out += value[i++];
         if (out.size() > cap)
-            throw Error(ErrorKind::Limit,
-                        "DTD entities expand the document past " + std::to_string(cap) + " bytes");
+            throw Error(ErrorKind::Limit, "DTD entities expand the document past " + std::to_string(cap) + " bytes");
     }
 }
 

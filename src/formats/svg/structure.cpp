@@ -105,9 +105,7 @@ Affine element_transform(Context& cx, const pugi::xml_node& n, Viewport vp) {
         if (k != "transform" || trim(v).empty()) continue;
         try {
             t = parse_svg_transform(v);
-        } catch (const Error& e) {
-            warn(cx, std::string("<") + n.name() + ">: " + e.what() + "; transform ignored");
-        }
+        } catch (const Error& e) { warn(cx, std::string("<") + n.name() + ">: " + e.what() + "; transform ignored"); }
     }
     return t ? with_origin(cx, n, *t, vp) : Affine::identity();
 }
