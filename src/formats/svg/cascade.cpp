@@ -137,6 +137,12 @@ std::string own_overflow(Context& cx, const pugi::xml_node& n) {
     return out;
 }
 
+// Sets property `name` of `n` to `value` over what the cascade gave it.
+void override_property(Context& cx, const pugi::xml_node& n, const std::string& name, const std::string& value) {
+    properties(cx, n);
+    cx.property_cache[n.internal_object()].emplace_back(name, value);
+}
+
 bool is_active(const Context& cx, const pugi::xml_node& n) {
     return std::find(cx.active_refs.begin(), cx.active_refs.end(), n) != cx.active_refs.end();
 }

@@ -42,9 +42,8 @@ void emit_clip(Context& cx, const pugi::xml_node& clip, const Affine& cm, const 
     if (inner && is_active(cx, inner)) inner = {};  // a reference back into the cycle is ignored (as resvg does)
     if (ok) {
         if (inner) cx.items.push_back(layer_item(DisplayItem::BeginLayer, 1));
-        FillRule rule = FillRule::NonZero;
-        for (const auto& [k, v] : properties(cx, clip))
-            if (k == "clip-rule") rule = trim(v) == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
+        // clip-rule is inherited: the clipPath's own value, or its ancestors'.
+        const FillRule rule = inherited(cx, clip, "clip-rule") == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
         for (const pugi::xml_node& c : clip.children())
             if (c.type() == pugi::node_element) clip_child(cx, c, m, rule, vp, depth + 1);
         if (inner) {
@@ -75,12 +74,7 @@ void clip_child(Context& cx, const pugi::xml_node& c, const Affine& m, FillRule 
         if (k == "clip-rule") rule = val == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
     }
     if (!visible) return;
-    Affine cm = m;
-    if (const char* t = c.attribute("transform").value(); *t) {
-        try {
-            cm = m * with_origin(cx, c, parse_svg_transform(t), vp);
-        } catch (const Error&) { return; }
-    }
+    const Affine cm = m * element_transform(cx, c, vp);
     const std::string_view name = c.name();
     if (name == "use") {
         const char* h = href(c);

@@ -61,6 +61,9 @@ struct PaintRef {
     std::string id;        // Server: the referenced element's id
     Kind fallback = None;  // Server: what to paint when the reference is unusable
     Color fallback_color = Color::black();
+    // currentColor as the colour (or the fallback colour): it computes to the `color` of each
+    // element the paint is inherited by, so it follows a `color` set further down the tree.
+    bool current = false, fallback_current = false;
     std::shared_ptr<const ContextElement> context;  // Server: set when the paint is context-fill/-stroke
     static PaintRef solid(Color c) {
         PaintRef p;
@@ -178,6 +181,11 @@ std::string own_overflow(Context& cx, const pugi::xml_node& n);
 bool is_active(const Context& cx, const pugi::xml_node& n);
 pugi::xml_node reference(Context& cx, const pugi::xml_node& n, const char* property, std::string_view want,
                          bool& missing);
+void override_property(Context& cx, const pugi::xml_node& n, const std::string& name, const std::string& value);
+
+// recursive_links.cpp: references that lead back into a mask from its own content replaced by
+// none before conversion (the rest of the content is still drawn).
+void cut_recursive_links(Context& cx, const pugi::xml_node& root);
 
 // style.cpp: fill, stroke and the other painting properties of an element resolved into a Style.
 void apply_paint(Context& cx, const std::string& property, std::string_view value, Color current, PaintRef& paint);
@@ -194,6 +202,7 @@ void walk(Context& cx, const pugi::xml_node& node, const Style& st, const Affine
 bool known_element(std::string_view n);
 bool conditions_pass(const pugi::xml_node& n);
 Affine with_origin(Context& cx, const pugi::xml_node& n, const Affine& t, Viewport vp);
+Affine element_transform(Context& cx, const pugi::xml_node& n, Viewport vp);
 void viewport(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& m, double x, double y, double w,
               double h, int depth, bool is_symbol);
 std::optional<Rect> items_bbox(const Context& cx, std::size_t first, const Affine& m);

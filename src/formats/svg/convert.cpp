@@ -24,7 +24,9 @@ pugi::xml_node read_xml(std::string_view input, pugi::xml_document& xml) {
     if (input.size() >= 2 && static_cast<unsigned char>(input[0]) == 0x1f &&
         static_cast<unsigned char>(input[1]) == 0x8b)
         inflated = gunzip(input);
-    const std::string_view text = inflated.empty() ? input : std::string_view(inflated);
+    std::string_view text = inflated.empty() ? input : std::string_view(inflated);
+    const std::string expanded = expand_entities(text);
+    if (!expanded.empty()) text = expanded;
     if (trim(text).empty()) throw Error(ErrorKind::Parse, "SVG input is empty");
     const pugi::xml_parse_result res = xml.load_buffer(
         text.data(), text.size(), pugi::parse_default | pugi::parse_ws_pcdata);  // text needs the spaces between tspans
@@ -64,6 +66,28 @@ void size_document(const pugi::xml_node& root, const std::optional<Rect>& vb, Co
     out.fheight = *h;
 }
 
+// The root's background-color (CSS backgrounds: the root element's background covers the whole
+// canvas): a fill of the output rectangle under everything, in document pixels.
+void background(Context& cx, const pugi::xml_node& root, const ConvertedDocument& out) {
+    std::string value;
+    for (const auto& [k, v] : properties(cx, root))
+        if (k == "background-color") value = std::string(trim(v));
+    if (value.empty()) return;
+    Color c;
+    try {
+        c = parse_color(value);
+    } catch (const Error&) {
+        warn(cx, "invalid background-color '" + value + "' ignored");
+        return;
+    }
+    if (c.a == 0) return;
+    DisplayItem it;
+    it.kind = DisplayItem::Fill;
+    it.path.add_rect(Rect{0, 0, out.fwidth, out.fheight});
+    it.color = c;
+    cx.items.push_back(std::move(it));
+}
+
 }  // namespace
 
 ConvertedDocument convert_document(std::string_view input, const SvgOptions& options) {
@@ -86,9 +110,11 @@ ConvertedDocument convert_document(std::string_view input, const SvgOptions& opt
     cx.options = options;
     index_ids(cx, root);
     read_style_sheets(cx, root);
-    // The root goes through the element path like any group: its transform, display, opacity,
-    // clip-path, mask, filter and blending apply to the whole document.
-    element(cx, root, Style(), out.view, vp, 0);
+    background(cx, root, out);
+    cut_recursive_links(cx, root);
+    // The root goes through the element path like any group: its conditional processing,
+    // transform, display, opacity, clip-path, mask, filter and blending apply to the whole document.
+    if (conditions_pass(root)) element(cx, root, Style(), out.view, vp, 0);
     out.items = std::move(cx.items);
     out.warnings.insert(out.warnings.end(), cx.warnings.begin(), cx.warnings.end());
     return out;

@@ -86,14 +86,15 @@ void emit_markers(Context& cx, const Path& path, const Style& st, const Affine& 
         } else if (!orient.empty()) {
             std::string_view o = orient;
             double unit = kPi / 180;
-            if (o.size() > 3 && o.substr(o.size() - 3) == "deg")
+            // "grad" before "rad": both end in "rad".
+            if (o.size() > 3 && o.substr(o.size() - 3) == "deg") {
                 o.remove_suffix(3);
-            else if (o.size() > 3 && o.substr(o.size() - 3) == "rad") {
-                o.remove_suffix(3);
-                unit = 1;
             } else if (o.size() > 4 && o.substr(o.size() - 4) == "grad") {
                 o.remove_suffix(4);
                 unit = kPi / 200;
+            } else if (o.size() > 3 && o.substr(o.size() - 3) == "rad") {
+                o.remove_suffix(3);
+                unit = 1;
             } else if (o.size() > 4 && o.substr(o.size() - 4) == "turn") {
                 o.remove_suffix(4);
                 unit = 2 * kPi;
@@ -119,8 +120,9 @@ void emit_marker(Context& cx, const pugi::xml_node& marker, const Style& st,
         vbt = viewbox_transform(*vb, marker.attribute("preserveAspectRatio").value(), mw, mh);
         inner_vp = {vb->width(), vb->height()};
     }
-    const Point ref =
-        vbt.apply({length_attr(cx, marker, "refX", inner_vp.w), length_attr(cx, marker, "refY", inner_vp.h)});
+    // Percentages of refX and refY, like those of markerWidth and markerHeight, are of the
+    // viewport the marked shape is in.
+    const Point ref = vbt.apply({length_attr(cx, marker, "refX", vp.w), length_attr(cx, marker, "refY", vp.h)});
     const Affine box = at * Affine::scale(scale) * Affine::translate(-ref.x, -ref.y);
     const Affine content_m = box * vbt;
     // overflow: hidden unless set (the user agent style of marker); `inherit` takes the

@@ -159,7 +159,14 @@ bool gradient(Context& cx, const pugi::xml_node& node, const Path& path, Viewpor
     double r = coord("r", diag, bbox_units ? 0.5 : diag / 2);
     if (r < 0) r = bbox_units ? 0.5 : diag / 2;
     const double fx = coord("fx", vp.w, center_x), fy = coord("fy", vp.h, center_y);
-    const double fr = std::max(0.0, coord("fr", diag, 0));
+    double fr = std::max(0.0, coord("fr", diag, 0));
+    if (r > 0 && std::fabs(fr - r) <= 1e-9 * r && fx == center_x && fy == center_y && spread == SpreadMethod::Pad) {
+        // Equal circles around one centre leave no cone between them; as Skia and resvg draw it,
+        // the first stop's colour fills the circle and the last one the rest (a hard stop at r).
+        const Color first = stops.front().color, last = stops.back().color;
+        stops = {{0, first}, {1, first}, {1, last}};
+        fr = 0;
+    }
     it.shader = std::make_shared<const Shader>(
         Shader::radial({center_x, center_y}, r, {fx, fy}, fr, std::move(stops), spread, units * gt));
     return true;

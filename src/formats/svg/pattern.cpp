@@ -56,7 +56,7 @@ bool pattern(Context& cx, const pugi::xml_node& node, const Path& path, Viewport
     if (const std::string_view t = attr("patternTransform"); !t.empty()) {
         try {
             pt = parse_svg_transform(t);
-            if (!pt.inverse()) return false;
+            if (!pt.inverse()) pt = Affine{};  // a singular patternTransform is ignored
             pt = with_origin(cx, node, pt, vp);
         } catch (const Error&) { warn(cx, "invalid patternTransform; ignored"); }
     }

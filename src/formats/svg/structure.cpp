@@ -96,6 +96,20 @@ Affine with_origin(Context& cx, const pugi::xml_node& n, const Affine& t, Viewpo
     return Affine::translate(ox, oy) * t * Affine::translate(-ox, -oy);
 }
 
+// The transform of `n`, with its transform-origin: the last value of the transform property
+// that parses (the CSS property of a style sheet or style attribute after the attribute); a
+// value that does not parse is ignored with a warning, as browsers ignore it.
+Affine element_transform(Context& cx, const pugi::xml_node& n, Viewport vp) {
+    std::optional<Affine> t;
+    for (const auto& [k, v] : properties(cx, n)) {
+        if (k != "transform" || trim(v).empty()) continue;
+        try {
+            t = parse_svg_transform(v);
+        } catch (const Error& e) { warn(cx, std::string("<") + n.name() + ">: " + e.what() + "; transform ignored"); }
+    }
+    return t ? with_origin(cx, n, *t, vp) : Affine::identity();
+}
+
 // A new viewport (nested svg, or a symbol or svg instanced by use) at x, y, w x h in the
 // user space of `m`, with its viewBox and preserveAspectRatio; clipped unless overflow is
 // visible or auto.
@@ -160,15 +174,7 @@ void element(Context& cx, const pugi::xml_node& child, const Style& st, const Af
     apply_style(cx, child, cst);
     for (const auto& [k, v] : properties(cx, child))
         if (k == "display" && trim(v) == "none") return;
-    Affine cm = m;
-    if (const char* t = child.attribute("transform").value(); *t) {
-        try {
-            cm = m * with_origin(cx, child, parse_svg_transform(t), vp);
-        } catch (const Error& e) {
-            warn(cx, std::string("<") + child.name() + ">: " + e.what() + "; element skipped");
-            return;
-        }
-    }
+    const Affine cm = m * element_transform(cx, child, vp);
     double opacity = 1;
     for (const auto& [k, v] : properties(cx, child))
         if (k == "opacity")

@@ -17,7 +17,7 @@ namespace casteljau::svg {
 // A fill or stroke value: none, currentColor, inherit (keeps the inherited paint), a colour,
 // or url(#id) with an optional fallback (none or a colour) after it.
 void apply_paint(Context& cx, const std::string& property, std::string_view value, Color current, PaintRef& paint) {
-    auto simple = [&](std::string_view v, PaintRef::Kind& kind, Color& color) -> bool {
+    auto simple = [&](std::string_view v, PaintRef::Kind& kind, Color& color, bool& is_current) -> bool {
         if (v == "none") {
             kind = PaintRef::None;
             return true;
@@ -25,6 +25,7 @@ void apply_paint(Context& cx, const std::string& property, std::string_view valu
         if (v == "currentColor") {
             kind = PaintRef::Solid;
             color = current;
+            is_current = true;
             return true;
         }
         try {
@@ -46,12 +47,13 @@ void apply_paint(Context& cx, const std::string& property, std::string_view valu
         p.kind = PaintRef::Server;
         p.id = ref.empty() || ref.front() != '#' ? std::string() : std::string(ref.substr(1));
         const std::string_view rest = trim(value.substr(close + 1));
-        if (!rest.empty() && !simple(rest, p.fallback, p.fallback_color)) p.fallback = PaintRef::None;
+        if (!rest.empty() && !simple(rest, p.fallback, p.fallback_color, p.fallback_current))
+            p.fallback = PaintRef::None;
         paint = p;
         return;
     }
     PaintRef p;
-    if (simple(value, p.kind, p.color))
+    if (simple(value, p.kind, p.color, p.current))
         paint = p;
     else
         warn(cx, "invalid " + property + " '" + std::string(value) + "'");
@@ -62,12 +64,13 @@ namespace {
 // A fill or stroke property: context-fill and context-stroke take the context element's paint.
 void apply_fill_or_stroke(Context& cx, const std::string& property, std::string_view value, const Style& st,
                           PaintRef& paint) {
-    if (value == "context-fill")
-        paint = st.context_fill;
-    else if (value == "context-stroke")
-        paint = st.context_stroke;
-    else
+    if (value == "context-fill" || value == "context-stroke") {
+        // The context element's paint as it used it: its currentColor is already resolved.
+        paint = value == "context-fill" ? st.context_fill : st.context_stroke;
+        paint.current = paint.fallback_current = false;
+    } else {
         apply_paint(cx, property, value, st.color, paint);
+    }
 }
 
 }  // namespace
@@ -83,6 +86,11 @@ void apply_style(Context& cx, const pugi::xml_node& node, Style& st) {
                 st.color = parse_color(trim(v));
             } catch (const Error&) { warn(cx, "invalid color '" + v + "'"); }
         }
+    }
+    // An inherited currentColor paint takes this element's colour.
+    for (PaintRef* p : {&st.fill, &st.stroke}) {
+        if (p->current) p->color = st.color;
+        if (p->fallback_current) p->fallback_color = st.color;
     }
     for (const auto& [k, v] : properties(cx, node)) {
         const std::string_view val = trim(v);

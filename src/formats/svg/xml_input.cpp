@@ -48,16 +48,24 @@ std::string gunzip(std::string_view data) {
 constexpr std::string_view kSvgNamespace = "http://www.w3.org/2000/svg";
 
 // Elements written with a prefix bound to the SVG namespace (<svg:svg xmlns:svg="...">) get their
-// local name, so the reader sees <svg>; elements of other namespaces keep their prefixed names and
-// are skipped as unknown. `prefixes` holds the prefixes bound to the SVG namespace in scope.
+// local name, so the reader sees <svg>; elements of other namespaces keep their prefixed names, and
+// unprefixed elements under a default namespace other than SVG's get the prefix "foreign:", so
+// they are skipped as unknown. Where no default namespace is declared, unprefixed elements are
+// taken as SVG. `prefixes` holds the prefixes bound to the SVG namespace in scope.
 void normalise_namespaces(pugi::xml_node node, std::vector<std::string> prefixes) {
-    std::vector<std::pair<pugi::xml_node, std::vector<std::string>>> stack;
-    stack.emplace_back(node, std::move(prefixes));
+    struct Scope {
+        pugi::xml_node node;
+        std::vector<std::string> prefixes;
+        bool default_is_svg = true;
+    };
+    std::vector<Scope> stack;
+    stack.push_back({node, std::move(prefixes)});
     while (!stack.empty()) {
-        auto [n, scope] = std::move(stack.back());
+        auto [n, scope, default_is_svg] = std::move(stack.back());
         stack.pop_back();
         for (const pugi::xml_attribute& a : n.attributes()) {
             const std::string_view name = a.name();
+            if (name == "xmlns") default_is_svg = a.value() == kSvgNamespace;
             if (name.substr(0, 6) != "xmlns:") continue;
             const std::string prefix(name.substr(6));
             std::erase(scope, prefix);
@@ -68,9 +76,11 @@ void normalise_namespaces(pugi::xml_node node, std::vector<std::string> prefixes
             const std::string prefix(name.substr(0, colon));
             if (std::find(scope.begin(), scope.end(), prefix) != scope.end())
                 n.set_name(std::string(name.substr(colon + 1)).c_str());
+        } else if (!default_is_svg) {
+            n.set_name(("foreign:" + std::string(name)).c_str());
         }
         for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling())
-            if (c.type() == pugi::node_element) stack.emplace_back(c, scope);
+            if (c.type() == pugi::node_element) stack.push_back({c, scope, default_is_svg});
     }
 }
 

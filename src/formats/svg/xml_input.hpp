@@ -1,6 +1,6 @@
 // Internal (formats): the XML input of the SVG reader before conversion: gzip-compressed input
-// (.svgz) inflated, and element names written with a prefix bound to the SVG namespace reduced
-// to their local names.
+// (.svgz) inflated, internal DTD entities expanded (entities.cpp), and element names written with
+// a prefix bound to the SVG namespace reduced to their local names.
 // Thread-safety: plain functions.
 #pragma once
 
@@ -17,8 +17,17 @@ namespace casteljau::svg {
 std::string gunzip(std::string_view data);
 
 // Elements written with a prefix bound to the SVG namespace (<svg:svg xmlns:svg="...">) get their
-// local name, so the reader sees <svg>; elements of other namespaces keep their prefixed names and
-// are skipped as unknown. `prefixes` holds the prefixes bound to the SVG namespace in scope.
+// local name, so the reader sees <svg>; elements of other namespaces (by prefix or by a default
+// namespace other than SVG's) get or keep a prefixed name and are skipped as unknown. Where no
+// default namespace is declared, unprefixed elements are taken as SVG. `prefixes` holds the
+// prefixes bound to the SVG namespace in scope.
 void normalise_namespaces(pugi::xml_node node, std::vector<std::string> prefixes);
+
+// The text of a document whose DOCTYPE declares internal general entities (<!ENTITY name
+// "value">) with the references to them replaced (XML 1.0 section 4.4): as markup in content, as
+// text in attribute values. Empty when the document declares none (nothing to replace). Throws
+// Error(Limit) for entities nested more than a few levels deep (recursive entities, entity bombs)
+// or a result past Limits::svgz_bytes.
+std::string expand_entities(std::string_view text);
 
 }  // namespace casteljau::svg
