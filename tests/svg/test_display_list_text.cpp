@@ -1,0 +1,96 @@
+// What SVG text converts to, without drawing it: the display list (src/formats/svg/
+// display_list.hpp) of small documents with text, drawn with the repository's fonts only. Each
+// expected value is worked out from the SVG and CSS specifications in the comments.
+#include <catch2/catch.hpp>
+
+#include <memory>
+#include <string>
+
+#include "casteljau/font_database.hpp"
+#include "casteljau/geometry.hpp"
+#include "casteljau/svg.hpp"
+#include "formats/svg/display_list.hpp"
+
+using namespace casteljau;
+using svg::DisplayItem;
+
+namespace {
+
+SvgOptions repo_fonts() {
+    FontDatabaseOptions o;
+    o.font_dirs = {CASTELJAU_TEST_FONT_DIR};
+    o.system_fonts = false;
+    SvgOptions s;
+    s.font_database = std::make_shared<const FontDatabase>(o);
+    s.font_family = "DejaVu Sans";
+    return s;
+}
+
+// The display list of `body` in a 200 x 200 svg, text drawn with DejaVu Sans.
+svg::DisplayList convert(const std::string& body) {
+    return svg::convert("<svg xmlns='http://www.w3.org/2000/svg' width='200' height='200'>" + body + "</svg>",
+                        repo_fonts());
+}
+
+// The fills and strokes of `items` (leaving out Bounds items).
+svg::DisplayList painted(const svg::DisplayList& items) {
+    svg::DisplayList out;
+    for (const DisplayItem& it : items)
+        if (it.kind == DisplayItem::Fill || it.kind == DisplayItem::Stroke) out.push_back(it);
+    return out;
+}
+
+// The union of the bounds of the painted items' paths in user space (all items here share the
+// text's user space).
+Rect ink_bounds(const svg::DisplayList& items) {
+    const svg::DisplayList p = painted(items);
+    Rect r = p.empty() ? Rect{} : p.front().path.bounds();
+    for (const DisplayItem& it : p) r = r.united(it.path.bounds());
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("svg text: comma-separated decoration keywords are an invalid value", "[svg][display_list][svg_text]") {
+    // CSS Text Decoration 3: text-decoration-line is `none | [underline || overline ||
+    // line-through || blink]`, keywords separated by white space. A comma makes the declaration
+    // invalid, so it is ignored and the text has no decoration at all.
+    const std::string text = "<text x='20' y='100' font-size='48'";
+    const svg::DisplayList plain = painted(convert(text + ">Text</text>"));
+    const svg::DisplayList comma = painted(convert(text + " text-decoration='underline,overline,line-through'>Text</text>"));
+    const svg::DisplayList spaced = painted(convert(text + " text-decoration='underline overline line-through'>Text</text>"));
+    REQUIRE_FALSE(plain.empty());
+    CHECK(comma.size() == plain.size());
+    CHECK(ink_bounds(comma) == ink_bounds(plain));
+    // The same keywords separated by spaces do decorate: the overline lies above the glyphs.
+    CHECK(ink_bounds(spaced).y0 < ink_bounds(plain).y0);
+}
+
+TEST_CASE("svg text: the font shorthand resets font-kerning to auto", "[svg][display_list][svg_text]") {
+    // CSS Fonts: the font shorthand first resets every font subproperty it does not set to its
+    // initial value, font-kerning (auto) among them, so an inherited font-kerning: none no longer
+    // applies and "AVA" is kerned exactly as text that never had it.
+    const std::string text = "<text x='20' y='100' style='font: 48px \"DejaVu Sans\"'>AVA</text>";
+    const svg::DisplayList kerned = convert(text);
+    const svg::DisplayList reset = convert("<g style='font-kerning: none; font-weight: bold'>" + text + "</g>");
+    const svg::DisplayList unkerned = convert(
+        "<g style='font-kerning: none'><text x='20' y='100' font-size='48' font-family='DejaVu Sans'>AVA</text></g>");
+    REQUIRE_FALSE(kerned.empty());
+    CHECK(ink_bounds(reset) == ink_bounds(kerned));
+    // Without the shorthand the inherited font-kerning: none keeps A and V apart.
+    CHECK(ink_bounds(unkerned).x1 > ink_bounds(kerned).x1);
+}
+
+TEST_CASE("svg text: alignment-baseline inherit and dominant-baseline no-change keep the parent's baseline",
+          "[svg][display_list][svg_text]") {
+    // alignment-baseline is not inherited, but the keyword inherit takes the parent's value
+    // (CSS Cascade): hanging from the group, as if the text said hanging itself.
+    const std::string text = "<text x='20' y='100' font-size='36'";
+    CHECK(ink_bounds(convert("<g alignment-baseline='hanging'>" + text + " alignment-baseline='inherit'>Text</text></g>")) ==
+          ink_bounds(convert(text + " alignment-baseline='hanging'>Text</text>")));
+    // SVG 1.1 dominant-baseline no-change: the dominant baseline stays the parent's (middle), so
+    // the tspan sits exactly as if it had no dominant-baseline of its own.
+    const std::string middle = text + " dominant-baseline='middle'>Some <tspan";
+    CHECK(ink_bounds(convert(middle + " dominant-baseline='no-change'>text</tspan></text>")) ==
+          ink_bounds(convert(middle + ">text</tspan></text>")));
+}
