@@ -81,6 +81,21 @@ TEST_CASE("svg text: the font shorthand resets font-kerning to auto", "[svg][dis
     CHECK(ink_bounds(unkerned).x1 > ink_bounds(kerned).x1);
 }
 
+TEST_CASE("svg text: textLength 0 squeezes the spacing until the text ends where it starts",
+          "[svg][display_list][svg_text]") {
+    // SVG 1.1 textLength: only a negative value is an error. With lengthAdjust spacing, the
+    // advance of the whole text becomes 0: the gap after each of the n - 1 first glyphs changes
+    // by -W / (n - 1) (W the natural width). "T" stays at x = 20; the last glyph, which starts
+    // at 20 + (W - w_t) - W, ends exactly at x = 20, where "t" anchored at its end would be.
+    // The glyphs between lie within these two (each starts W / 3 further left than it would).
+    const std::string text = "<text x='20' y='100' font-size='48'";
+    const Rect zero = ink_bounds(convert(text + " textLength='0'>Text</text>"));
+    const Rect first = ink_bounds(convert(text + ">T</text>"));
+    const Rect last = ink_bounds(convert(text + " text-anchor='end'>t</text>"));
+    CHECK(zero.x0 == Approx(last.x0));
+    CHECK(zero.x1 == Approx(first.x1));
+}
+
 TEST_CASE("svg text: alignment-baseline inherit and dominant-baseline no-change keep the parent's baseline",
           "[svg][display_list][svg_text]") {
     // alignment-baseline is not inherited, but the keyword inherit takes the parent's value

@@ -251,7 +251,8 @@ std::vector<svg_text::Outline> text_outlines(Context& cx, const pugi::xml_node& 
         list("dy", vp.h, &svg_text::CharPos::dy, false);
         list("rotate", 1, &svg_text::CharPos::rotate, true);
         if (const char* tl = r.node.attribute("textLength").value(); *tl && r.end > r.begin) {
-            if (auto l = text_length(tl, r.font_size, vp.w); l && *l > 0)
+            // Only a negative length is an error: 0 squeezes the text to no advance at all.
+            if (auto l = text_length(tl, r.font_size, vp.w); l && *l >= 0)
                 b.in.lengths.push_back(
                     {r.begin, r.end, *l,
                      std::string_view(r.node.attribute("lengthAdjust").value()) == "spacingAndGlyphs"});

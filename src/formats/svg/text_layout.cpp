@@ -295,7 +295,7 @@ void apply_text_lengths(const TextInput& in, std::vector<Cluster>& cl, bool vert
         std::vector<Cluster*> in_range;
         for (Cluster& g : cl)
             if (g.ch >= lr.begin && g.ch < lr.end) in_range.push_back(&g);
-        if (in_range.empty() || !(lr.length > 0)) continue;
+        if (in_range.empty() || !(lr.length >= 0)) continue;
         double lo = along(*in_range.front(), vert), hi = lo;
         for (Cluster* g : in_range) {
             lo = std::min(lo, along(*g, vert));
