@@ -96,6 +96,49 @@ TEST_CASE("svg text: textLength 0 squeezes the spacing until the text ends where
     CHECK(zero.x1 == Approx(first.x1));
 }
 
+TEST_CASE("svg text: text instanced by use inherits from the use element, not from its own parents",
+          "[svg][display_list][svg_text]") {
+    // SVG 2 use: the instance is a shadow tree whose host is the use element, so the text's
+    // inherited properties come from the use (font-size 48), not from the group around the
+    // original in defs (font-size 18). The glyph outlines are those of the same text drawn with
+    // font-size 48 at the use's origin (the use's x and y move the instance by its transform).
+    const svg::DisplayList used = convert(
+        "<g font-size='18'><defs><text id='t'>Text</text></defs></g>"
+        "<use href='#t' x='50' y='120' font-size='48'/>");
+    const svg::DisplayList direct = convert("<text font-size='48'>Text</text>");
+    REQUIRE(used.size() == direct.size());
+    REQUIRE_FALSE(used.empty());
+    for (std::size_t i = 0; i < used.size(); ++i) {
+        CHECK(used[i].path.bounds() == direct[i].path.bounds());
+        CHECK(used[i].transform == Affine::translate(50, 120));
+    }
+}
+
+TEST_CASE("svg text: transform-origin on a text path's path moves the text with the path",
+          "[svg][display_list][svg_text]") {
+    // CSS Transforms: transform-origin o wraps the transform T as translate(o) T translate(-o);
+    // "center" is the middle of the reference box, here the 200 x 200 viewport: (100, 100). A
+    // text path follows its path in the path's transformed coordinates, so both documents place
+    // the glyphs identically.
+    const std::string text =
+        "<text font-size='24'><textPath href='#p'>abcdefghijklm</textPath></text>";
+    const svg::DisplayList origin = convert(
+        "<path id='p' d='M 30 100 A 40 30 20 1 1 160 100' transform='rotate(90)' transform-origin='center'/>" + text);
+    const svg::DisplayList explicit_origin = convert(
+        "<path id='p' d='M 30 100 A 40 30 20 1 1 160 100' transform='translate(100 100) rotate(90) "
+        "translate(-100 -100)'/>" + text);
+    REQUIRE(origin.size() == explicit_origin.size());
+    REQUIRE(origin.size() >= 2);
+    // The path itself (item 0) and the text (the items after it) agree.
+    for (std::size_t i = 0; i < origin.size(); ++i) {
+        const Rect a = origin[i].path.bounds(), b = explicit_origin[i].path.bounds();
+        CHECK(a.x0 == Approx(b.x0).margin(1e-9));
+        CHECK(a.y0 == Approx(b.y0).margin(1e-9));
+        CHECK(a.x1 == Approx(b.x1).margin(1e-9));
+        CHECK(a.y1 == Approx(b.y1).margin(1e-9));
+    }
+}
+
 TEST_CASE("svg text: alignment-baseline inherit and dominant-baseline no-change keep the parent's baseline",
           "[svg][display_list][svg_text]") {
     // alignment-baseline is not inherited, but the keyword inherit takes the parent's value

@@ -125,7 +125,7 @@ void text_element(Context& cx, const pugi::xml_node& node, TextCtx ctx, const St
         Affine pt;
         if (const char* t = target.attribute("transform").value(); *t) {
             try {
-                pt = parse_svg_transform(t);
+                pt = with_origin(cx, target, parse_svg_transform(t), vp);
             } catch (const Error&) {}
         }
         (void)text_m;
@@ -187,6 +187,24 @@ void text_element(Context& cx, const pugi::xml_node& node, TextCtx ctx, const St
     b.ranges[range_index].end = b.chars;
 }
 
+// The ancestors `node` inherits from, innermost first: its parents, except that an element
+// instanced by a use being expanded has that use as its parent (the use hosts the instance).
+std::vector<pugi::xml_node> inheritance_ancestors(const Context& cx, const pugi::xml_node& node) {
+    std::vector<pugi::xml_node> anc;
+    std::size_t uses = cx.use_stack.size();
+    for (pugi::xml_node n = node;;) {
+        pugi::xml_node p = n.parent();
+        if (uses > 0) {
+            const char* h = href(cx.use_stack[uses - 1]);
+            if (*h == '#' && lookup(cx, h + 1) == n) p = cx.use_stack[--uses];
+        }
+        if (!p || p.type() != pugi::node_element) break;
+        anc.push_back(p);
+        n = p;
+    }
+    return anc;
+}
+
 }  // namespace
 
 // Lays out a text element: the outlines of its spans with their styles.
@@ -195,8 +213,7 @@ std::vector<svg_text::Outline> text_outlines(Context& cx, const pugi::xml_node& 
     TextCtx ctx;
     ctx.viewport_width = vp.w;
     // Inherited text properties from the ancestors, outermost first.
-    std::vector<pugi::xml_node> anc;
-    for (pugi::xml_node a = node.parent(); a && a.type() == pugi::node_element; a = a.parent()) anc.push_back(a);
+    const std::vector<pugi::xml_node> anc = inheritance_ancestors(cx, node);
     for (auto it = anc.rbegin(); it != anc.rend(); ++it) {
         apply_text_props(cx, *it, ctx);
         for (svg_text::Decoration& d : ctx.decorations) d.style = kTextElementStyle;
