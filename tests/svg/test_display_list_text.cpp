@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "casteljau/font.hpp"
 #include "casteljau/font_database.hpp"
 #include "casteljau/geometry.hpp"
 #include "casteljau/svg.hpp"
@@ -137,6 +138,42 @@ TEST_CASE("svg text: transform-origin on a text path's path moves the text with 
         CHECK(a.x1 == Approx(b.x1).margin(1e-9));
         CHECK(a.y1 == Approx(b.y1).margin(1e-9));
     }
+}
+
+TEST_CASE("svg text: the bounding box of text is its glyph cells, hidden text included",
+          "[svg][display_list][svg_text]") {
+    // SVG 2 (bounding box of text content): every glyph counts with its full cell, its advance
+    // by the font's ascender to descender. Text at x = 20 anchored at its end spans the cells
+    // [20 - W, 20] x [100 - ascender, 100 - descender] (W the advance of "Text"); anchored at its
+    // start, [20, 20 + W]. The box is a Bounds item before the fills, so it counts in its group's
+    // bounding box.
+    const FontMetrics m = Font::load(std::string(CASTELJAU_TEST_FONT_DIR) + "/DejaVuSans.ttf").metrics();
+    const double s = 48.0 / m.units_per_em;
+    const std::string text = "<text x='20' y='100' font-size='48'";
+    const svg::DisplayList end = convert(text + " text-anchor='end'>Text</text>");
+    const svg::DisplayList start = convert(text + ">Text</text>");
+    REQUIRE(end.size() == 2);
+    REQUIRE(start.size() == 2);
+    CHECK(end[0].kind == DisplayItem::Bounds);
+    CHECK(end[1].kind == DisplayItem::Fill);
+    const Rect cells = end[0].path.bounds();
+    CHECK(cells.x1 == Approx(20));
+    CHECK(cells.y0 == Approx(100 - m.ascender * s));
+    CHECK(cells.y1 == Approx(100 - m.descender * s));
+    CHECK(start[0].path.bounds().x0 == Approx(20));
+    CHECK(start[0].path.bounds().x1 == Approx(20 + cells.width()));
+    // visibility: hidden paints nothing, but the element keeps its geometry: only the Bounds
+    // item is left, the same box.
+    const svg::DisplayList hidden = convert(text + " visibility='hidden'>Text</text>");
+    REQUIRE(hidden.size() == 1);
+    CHECK(hidden[0].kind == DisplayItem::Bounds);
+    CHECK(hidden[0].path.bounds() == start[0].path.bounds());
+    // A hidden tspan: its glyphs are not filled but its cells stay in the text's box.
+    const svg::DisplayList part = convert(text + ">Te<tspan visibility='hidden'>xt</tspan></text>");
+    REQUIRE(part.size() == 2);
+    CHECK(part[0].path.bounds() == start[0].path.bounds());
+    CHECK(part[1].kind == DisplayItem::Fill);
+    CHECK(part[1].path.bounds().x1 < start[1].path.bounds().x1);
 }
 
 TEST_CASE("svg text: alignment-baseline inherit and dominant-baseline no-change keep the parent's baseline",

@@ -293,10 +293,12 @@ void text(Context& cx, const pugi::xml_node& node, const Style& st, const Affine
     std::vector<Style> styles;
     std::optional<Rect> cells;
     const std::vector<svg_text::Outline> outlines = text_outlines(cx, node, st, vp, styles, &cells);
-    // Paint servers in objectBoundingBox units use the whole text's box (its glyph cells).
     if (!cells || outlines.empty()) return;
+    // The text's bounding box is the union of its glyph cells (SVG 2), hidden spans included: it
+    // counts in its group's bounding box, and paint servers in objectBoundingBox units use it.
     Path box;
     box.add_rect(*cells);
+    cx.items.push_back(bounds_item(box, cm));
     for (svg_text::Outline::Layer layer :
          {svg_text::Outline::Under, svg_text::Outline::Glyphs, svg_text::Outline::Over}) {
         for (const svg_text::Outline& o : outlines) {
