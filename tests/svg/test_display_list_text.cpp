@@ -189,3 +189,20 @@ TEST_CASE("svg text: alignment-baseline inherit and dominant-baseline no-change 
     CHECK(ink_bounds(convert(middle + " dominant-baseline='no-change'>text</tspan></text>")) ==
           ink_bounds(convert(middle + ">text</tspan></text>")));
 }
+
+TEST_CASE("svg text: context-fill on text uses the context element's paint and box", "[svg][display_list][svg_text]") {
+    // SVG 2 context-fill: the fill of the context element (the use), resolved as for the context
+    // element, so an objectBoundingBox gradient spans the use's content box, for the text as for
+    // the rect beside it in the same user space: both get the same gradient transform.
+    const svg::DisplayList items = convert(
+        "<linearGradient id='lg'><stop offset='0' stop-color='white'/><stop offset='1' stop-color='green'/>"
+        "</linearGradient><defs><g id='g'><rect x='25' y='25' width='150' height='150' fill='context-fill'/>"
+        "<text x='100' y='100' font-size='64' fill='context-fill'>Text</text></g></defs>"
+        "<use href='#g' fill='url(#lg)'/>");
+    const svg::DisplayList fills = painted(items);
+    REQUIRE(fills.size() == 2);
+    REQUIRE(fills[0].shader);
+    REQUIRE(fills[1].shader);
+    CHECK(fills[1].transform == fills[0].transform);
+    CHECK(fills[1].shader->transform() == fills[0].shader->transform());
+}

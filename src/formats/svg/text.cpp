@@ -307,14 +307,14 @@ void text(Context& cx, const pugi::xml_node& node, const Style& st, const Affine
             if (!s.visible) continue;
             for (int part : s.paint_order) {
                 DisplayItem it;
-                if (part == 0 && resolve_paint(cx, s.fill, box, vp, it)) {
+                if (part == 0 && resolve_paint(cx, s.fill, box, cm, vp, it)) {
                     it.kind = DisplayItem::Fill;
                     it.path = o.path;
                     it.transform = cm;
                     it.rule = s.fill_rule;
                     it.opacity = s.fill_opacity * opacity;
                     cx.items.push_back(std::move(it));
-                } else if (part == 1 && s.stroke_style.width > 0 && resolve_paint(cx, s.stroke, box, vp, it)) {
+                } else if (part == 1 && s.stroke_style.width > 0 && resolve_paint(cx, s.stroke, box, cm, vp, it)) {
                     it.kind = DisplayItem::Stroke;
                     it.stroke = s.stroke_style;
                     it.path = o.path;
