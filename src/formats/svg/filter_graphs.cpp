@@ -104,7 +104,9 @@ bool read_light(const pugi::xml_node& n, const Units& u, filter::Light& l) {
             l.tx = u.x(number_attr(c, "pointsAtX", 0));
             l.ty = u.y(number_attr(c, "pointsAtY", 0));
             l.tz = u.lz(number_attr(c, "pointsAtZ", 0));
+            // A negative exponent is 1, as Chrome (which pins it to [1, 128]) and resvg do.
             l.specular_exponent = number_attr(c, "specularExponent", 1);
+            if (l.specular_exponent < 0) l.specular_exponent = 1;
             if (c.attribute("limitingConeAngle")) {
                 auto a = number(c.attribute("limitingConeAngle").value());
                 if (a) l.cone_angle = *a;
