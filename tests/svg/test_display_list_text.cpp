@@ -206,3 +206,20 @@ TEST_CASE("svg text: context-fill on text uses the context element's paint and b
     CHECK(fills[1].transform == fills[0].transform);
     CHECK(fills[1].shader->transform() == fills[0].shader->transform());
 }
+
+TEST_CASE("svg text: text-anchor counts a white space at the end of a chunk", "[svg][display_list][svg_text]") {
+    // SVG 2 text-anchor shifts a chunk by its total advance, white space included: the chunk
+    // "ab " (the space before the next chunk's tspan stays after white-space collapsing) anchored
+    // at its end on x = 100 puts "ab" where "ab" alone anchored at 100 - s would be, s the
+    // space's advance (DejaVu Sans, 48 user units).
+    const Font font = Font::load(std::string(CASTELJAU_TEST_FONT_DIR) + "/DejaVuSans.ttf");
+    const double s = font.glyph_metrics(font.glyph_index(U' ')).advance * 48 / font.units_per_em();
+    const svg::DisplayList chunks = painted(
+        convert("<text x='100' y='100' font-size='48' text-anchor='end'>ab <tspan x='100' y='150'>c</tspan></text>"));
+    const svg::DisplayList alone = painted(convert("<text x='" + std::to_string(100 - s) +
+                                                   "' y='100' font-size='48' text-anchor='end'>ab</text>"));
+    REQUIRE(chunks.size() == 2);  // "ab" (the text's style), "c" (the tspan's)
+    REQUIRE(alone.size() == 1);
+    CHECK(chunks[0].path.bounds().x0 == Approx(alone[0].path.bounds().x0).margin(1e-6));
+    CHECK(chunks[0].path.bounds().x1 == Approx(alone[0].path.bounds().x1).margin(1e-6));
+}
