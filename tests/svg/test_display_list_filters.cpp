@@ -62,10 +62,11 @@ TEST_CASE("svg filter conversion: a negative spot light exponent is 1", "[svg][d
     // Filter Effects 1 gives feSpotLight's specularExponent no meaning below 0 (the cone's
     // falloff is cos^e, which would grow away from the axis); Chrome pins the exponent to
     // [1, 128] and the resvg references take 1, so -10 is 1. Positive values stay as given.
-    filter::Primitive p =
-        first_primitive("<feDiffuseLighting><feSpotLight x='100' y='150' z='40' specularExponent='-10'/></feDiffuseLighting>");
+    filter::Primitive p = first_primitive(
+        "<feDiffuseLighting><feSpotLight x='100' y='150' z='40' specularExponent='-10'/></feDiffuseLighting>");
     CHECK(p.light.type == filter::Light::Spot);
     CHECK(p.light.specular_exponent == 1);
-    p = first_primitive("<feDiffuseLighting><feSpotLight x='100' y='150' z='40' specularExponent='25'/></feDiffuseLighting>");
+    p = first_primitive(
+        "<feDiffuseLighting><feSpotLight x='100' y='150' z='40' specularExponent='25'/></feDiffuseLighting>");
     CHECK(p.light.specular_exponent == 25);
 }

@@ -58,8 +58,10 @@ TEST_CASE("svg text: comma-separated decoration keywords are an invalid value", 
     // invalid, so it is ignored and the text has no decoration at all.
     const std::string text = "<text x='20' y='100' font-size='48'";
     const svg::DisplayList plain = painted(convert(text + ">Text</text>"));
-    const svg::DisplayList comma = painted(convert(text + " text-decoration='underline,overline,line-through'>Text</text>"));
-    const svg::DisplayList spaced = painted(convert(text + " text-decoration='underline overline line-through'>Text</text>"));
+    const svg::DisplayList comma =
+        painted(convert(text + " text-decoration='underline,overline,line-through'>Text</text>"));
+    const svg::DisplayList spaced =
+        painted(convert(text + " text-decoration='underline overline line-through'>Text</text>"));
     REQUIRE_FALSE(plain.empty());
     CHECK(comma.size() == plain.size());
     CHECK(ink_bounds(comma) == ink_bounds(plain));
@@ -121,13 +123,13 @@ TEST_CASE("svg text: transform-origin on a text path's path moves the text with 
     // "center" is the middle of the reference box, here the 200 x 200 viewport: (100, 100). A
     // text path follows its path in the path's transformed coordinates, so both documents place
     // the glyphs identically.
-    const std::string text =
-        "<text font-size='24'><textPath href='#p'>abcdefghijklm</textPath></text>";
+    const std::string text = "<text font-size='24'><textPath href='#p'>abcdefghijklm</textPath></text>";
     const svg::DisplayList origin = convert(
         "<path id='p' d='M 30 100 A 40 30 20 1 1 160 100' transform='rotate(90)' transform-origin='center'/>" + text);
     const svg::DisplayList explicit_origin = convert(
         "<path id='p' d='M 30 100 A 40 30 20 1 1 160 100' transform='translate(100 100) rotate(90) "
-        "translate(-100 -100)'/>" + text);
+        "translate(-100 -100)'/>" +
+        text);
     REQUIRE(origin.size() == explicit_origin.size());
     REQUIRE(origin.size() >= 2);
     // The path itself (item 0) and the text (the items after it) agree.
@@ -181,7 +183,8 @@ TEST_CASE("svg text: alignment-baseline inherit and dominant-baseline no-change 
     // alignment-baseline is not inherited, but the keyword inherit takes the parent's value
     // (CSS Cascade): hanging from the group, as if the text said hanging itself.
     const std::string text = "<text x='20' y='100' font-size='36'";
-    CHECK(ink_bounds(convert("<g alignment-baseline='hanging'>" + text + " alignment-baseline='inherit'>Text</text></g>")) ==
+    CHECK(ink_bounds(
+              convert("<g alignment-baseline='hanging'>" + text + " alignment-baseline='inherit'>Text</text></g>")) ==
           ink_bounds(convert(text + " alignment-baseline='hanging'>Text</text>")));
     // SVG 1.1 dominant-baseline no-change: the dominant baseline stays the parent's (middle), so
     // the tspan sits exactly as if it had no dominant-baseline of its own.
@@ -216,8 +219,8 @@ TEST_CASE("svg text: text-anchor counts a white space at the end of a chunk", "[
     const double s = font.glyph_metrics(font.glyph_index(U' ')).advance * 48 / font.units_per_em();
     const svg::DisplayList chunks = painted(
         convert("<text x='100' y='100' font-size='48' text-anchor='end'>ab <tspan x='100' y='150'>c</tspan></text>"));
-    const svg::DisplayList alone = painted(convert("<text x='" + std::to_string(100 - s) +
-                                                   "' y='100' font-size='48' text-anchor='end'>ab</text>"));
+    const svg::DisplayList alone = painted(
+        convert("<text x='" + std::to_string(100 - s) + "' y='100' font-size='48' text-anchor='end'>ab</text>"));
     REQUIRE(chunks.size() == 2);  // "ab" (the text's style), "c" (the tspan's)
     REQUIRE(alone.size() == 1);
     CHECK(chunks[0].path.bounds().x0 == Approx(alone[0].path.bounds().x0).margin(1e-6));
