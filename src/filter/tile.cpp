@@ -1,5 +1,6 @@
 // Filter stage: the primitives that move pixels without changing them: feOffset (a shift by whole
-// device pixels, rounded) and feTile (the input's subregion repeated over the plane).
+// device pixels, the nearest, halves toward zero) and feTile (the input's subregion repeated over
+// the plane).
 #include "filter/image.hpp"
 
 namespace casteljau::filter::detail {
@@ -7,7 +8,10 @@ namespace casteljau::filter::detail {
 Img offset(const Img& in, double dx, double dy) {
     Img out(in.w, in.h, in.linear);
     if (!std::isfinite(dx) || !std::isfinite(dy)) return out;
-    const double cx = std::clamp(std::round(dx), -1e9, 1e9), cy = std::clamp(std::round(dy), -1e9, 1e9);
+    // The nearest whole pixel, half a pixel toward zero (a shift of 7.5 pixels moves 7, as resvg
+    // does).
+    auto nearest = [](double d) { return std::clamp(d >= 0 ? std::ceil(d - 0.5) : std::floor(d + 0.5), -1e9, 1e9); };
+    const double cx = nearest(dx), cy = nearest(dy);
     const long long ox = static_cast<long long>(cx), oy = static_cast<long long>(cy);
     for (int y = 0; y < in.h; ++y) {
         const long long sy = y - oy;

@@ -104,7 +104,9 @@ bool read_light(const pugi::xml_node& n, const Units& u, filter::Light& l) {
             l.tx = u.x(number_attr(c, "pointsAtX", 0));
             l.ty = u.y(number_attr(c, "pointsAtY", 0));
             l.tz = u.lz(number_attr(c, "pointsAtZ", 0));
+            // A negative exponent is 1, as Chrome (which pins it to [1, 128]) and resvg do.
             l.specular_exponent = number_attr(c, "specularExponent", 1);
+            if (l.specular_exponent < 0) l.specular_exponent = 1;
             if (c.attribute("limitingConeAngle")) {
                 auto a = number(c.attribute("limitingConeAngle").value());
                 if (a) l.cone_angle = *a;
@@ -115,7 +117,8 @@ bool read_light(const pugi::xml_node& n, const Units& u, filter::Light& l) {
     return false;
 }
 
-// feColorMatrix: its type and values (an invalid list leaves the identity).
+// feColorMatrix: its type and values (an invalid list leaves the identity; an unknown type is
+// the initial value, matrix).
 void read_color_matrix(const pugi::xml_node& n, filter::Primitive& p) {
     using P = filter::Primitive;
     p.op = P::ColorMatrix;
@@ -129,7 +132,7 @@ void read_color_matrix(const pugi::xml_node& n, filter::Primitive& p) {
         if (values && v && v->size() == 1) p.matrix = hue_rotate_matrix((*v)[0]);
     } else if (type == "luminanceToAlpha") {
         p.matrix = luminance_to_alpha_matrix();
-    } else if (type.empty() || type == "matrix") {
+    } else {
         if (v && v->size() == 20) std::copy(v->begin(), v->end(), p.matrix.begin());
     }
 }
@@ -267,9 +270,11 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
         p.op = P::Morphology;
         p.dilate = trim(n.attribute("operator").value()) == "dilate";
         // A missing, malformed or negative radius, or zero on both axes, is 1 (as resvg does); zero
-        // on one axis leaves that axis alone.
+        // on one axis only is 1 on that axis (as Chrome and Safari do).
         auto r = number_pair(n, "radius");
         if (!r || r->first < 0 || r->second < 0 || (r->first == 0 && r->second == 0)) r = std::pair{1.0, 1.0};
+        if (r->first == 0) r->first = 1;
+        if (r->second == 0) r->second = 1;
         p.rx = u.lx(r->first);
         p.ry = u.ly(r->second);
     } else if (name == "feConvolveMatrix") {

@@ -125,7 +125,7 @@ void text_element(Context& cx, const pugi::xml_node& node, TextCtx ctx, const St
         Affine pt;
         if (const char* t = target.attribute("transform").value(); *t) {
             try {
-                pt = parse_svg_transform(t);
+                pt = with_origin(cx, target, parse_svg_transform(t), vp);
             } catch (const Error&) {}
         }
         (void)text_m;
@@ -187,6 +187,24 @@ void text_element(Context& cx, const pugi::xml_node& node, TextCtx ctx, const St
     b.ranges[range_index].end = b.chars;
 }
 
+// The ancestors `node` inherits from, innermost first: its parents, except that an element
+// instanced by a use being expanded has that use as its parent (the use hosts the instance).
+std::vector<pugi::xml_node> inheritance_ancestors(const Context& cx, const pugi::xml_node& node) {
+    std::vector<pugi::xml_node> anc;
+    std::size_t uses = cx.use_stack.size();
+    for (pugi::xml_node n = node;;) {
+        pugi::xml_node p = n.parent();
+        if (uses > 0) {
+            const char* h = href(cx.use_stack[uses - 1]);
+            if (*h == '#' && lookup(cx, h + 1) == n) p = cx.use_stack[--uses];
+        }
+        if (!p || p.type() != pugi::node_element) break;
+        anc.push_back(p);
+        n = p;
+    }
+    return anc;
+}
+
 }  // namespace
 
 // Lays out a text element: the outlines of its spans with their styles.
@@ -195,8 +213,7 @@ std::vector<svg_text::Outline> text_outlines(Context& cx, const pugi::xml_node& 
     TextCtx ctx;
     ctx.viewport_width = vp.w;
     // Inherited text properties from the ancestors, outermost first.
-    std::vector<pugi::xml_node> anc;
-    for (pugi::xml_node a = node.parent(); a && a.type() == pugi::node_element; a = a.parent()) anc.push_back(a);
+    const std::vector<pugi::xml_node> anc = inheritance_ancestors(cx, node);
     for (auto it = anc.rbegin(); it != anc.rend(); ++it) {
         apply_text_props(cx, *it, ctx);
         for (svg_text::Decoration& d : ctx.decorations) d.style = kTextElementStyle;
@@ -251,7 +268,8 @@ std::vector<svg_text::Outline> text_outlines(Context& cx, const pugi::xml_node& 
         list("dy", vp.h, &svg_text::CharPos::dy, false);
         list("rotate", 1, &svg_text::CharPos::rotate, true);
         if (const char* tl = r.node.attribute("textLength").value(); *tl && r.end > r.begin) {
-            if (auto l = text_length(tl, r.font_size, vp.w); l && *l > 0)
+            // Only a negative length is an error: 0 squeezes the text to no advance at all.
+            if (auto l = text_length(tl, r.font_size, vp.w); l && *l >= 0)
                 b.in.lengths.push_back(
                     {r.begin, r.end, *l,
                      std::string_view(r.node.attribute("lengthAdjust").value()) == "spacingAndGlyphs"});
@@ -275,10 +293,12 @@ void text(Context& cx, const pugi::xml_node& node, const Style& st, const Affine
     std::vector<Style> styles;
     std::optional<Rect> cells;
     const std::vector<svg_text::Outline> outlines = text_outlines(cx, node, st, vp, styles, &cells);
-    // Paint servers in objectBoundingBox units use the whole text's box (its glyph cells).
     if (!cells || outlines.empty()) return;
+    // The text's bounding box is the union of its glyph cells (SVG 2), hidden spans included: it
+    // counts in its group's bounding box, and paint servers in objectBoundingBox units use it.
     Path box;
     box.add_rect(*cells);
+    cx.items.push_back(bounds_item(box, cm));
     for (svg_text::Outline::Layer layer :
          {svg_text::Outline::Under, svg_text::Outline::Glyphs, svg_text::Outline::Over}) {
         for (const svg_text::Outline& o : outlines) {
@@ -287,14 +307,14 @@ void text(Context& cx, const pugi::xml_node& node, const Style& st, const Affine
             if (!s.visible) continue;
             for (int part : s.paint_order) {
                 DisplayItem it;
-                if (part == 0 && resolve_paint(cx, s.fill, box, vp, it)) {
+                if (part == 0 && resolve_paint(cx, s.fill, box, cm, vp, it)) {
                     it.kind = DisplayItem::Fill;
                     it.path = o.path;
                     it.transform = cm;
                     it.rule = s.fill_rule;
                     it.opacity = s.fill_opacity * opacity;
                     cx.items.push_back(std::move(it));
-                } else if (part == 1 && s.stroke_style.width > 0 && resolve_paint(cx, s.stroke, box, vp, it)) {
+                } else if (part == 1 && s.stroke_style.width > 0 && resolve_paint(cx, s.stroke, box, cm, vp, it)) {
                     it.kind = DisplayItem::Stroke;
                     it.stroke = s.stroke_style;
                     it.path = o.path;

@@ -295,7 +295,7 @@ void apply_text_lengths(const TextInput& in, std::vector<Cluster>& cl, bool vert
         std::vector<Cluster*> in_range;
         for (Cluster& g : cl)
             if (g.ch >= lr.begin && g.ch < lr.end) in_range.push_back(&g);
-        if (in_range.empty() || !(lr.length > 0)) continue;
+        if (in_range.empty() || !(lr.length >= 0)) continue;
         double lo = along(*in_range.front(), vert), hi = lo;
         for (Cluster* g : in_range) {
             lo = std::min(lo, along(*g, vert));
@@ -327,15 +327,13 @@ void apply_text_lengths(const TextInput& in, std::vector<Cluster>& cl, bool vert
     }
 }
 
-// text-anchor `a` (the chunk's first character's) on the chunk `cl`, which started at `start`.
-// As in resvg, start is the left end in right-to-left text too (CSS would take the right end).
-void apply_anchor(const std::u32string& text, Anchor a, std::vector<Cluster>& cl, bool vert, double start) {
+// text-anchor `a` (the chunk's first character's) on the chunk `cl`, which started at `start`:
+// the chunk's whole advance counts, white space at its end included (SVG 2). As in resvg, start
+// is the left end in right-to-left text too (CSS would take the right end).
+void apply_anchor(Anchor a, std::vector<Cluster>& cl, bool vert, double start) {
     if (cl.empty()) return;
-    // Trailing spaces do not count (resvg): "end " anchors like "end".
-    std::size_t last = cl.size();
-    while (last > 1 && cl[last - 1].nch == 1 && is_word_space(text[cl[last - 1].ch])) --last;
     double lo = along(cl.front(), vert), hi = lo;
-    for (std::size_t k = 0; k < last; ++k) {
+    for (std::size_t k = 0; k < cl.size(); ++k) {
         lo = std::min(lo, along(cl[k], vert));
         hi = std::max(hi, along(cl[k], vert) + cl[k].advance * cl[k].scale_x);
     }
@@ -398,7 +396,7 @@ void position_chunks(const TextInput& in, const FlatText& t, const std::vector<s
             pen_along += step;
         }
         apply_text_lengths(in, cl, vert, pen_along);
-        apply_anchor(t.text, first_span.anchor, cl, vert, start_x);
+        apply_anchor(first_span.anchor, cl, vert, start_x);
     }
 }
 

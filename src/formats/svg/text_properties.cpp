@@ -135,13 +135,14 @@ svg_text::Baseline baseline_kind(std::string_view v, svg_text::Baseline fallback
 
 // The `font` shorthand: [style] [variant] [weight] [stretch] size[/line-height] family-list.
 // An invalid value (no size, a size without a unit, no family) changes nothing; a valid one
-// resets the style, weight, stretch and variant it does not give.
+// resets the style, weight, stretch and variant it does not give, and font-kerning to auto.
 void apply_font_shorthand(const Context& cx, std::string_view v, TextCtx& ctx, double parent_size) {
     TextCtx t = ctx;
     t.font.slant = FontSlant::Normal;
     t.font.weight = 400;
     t.font.stretch = 100;
     t.small_caps = false;
+    t.no_kerning = false;
     std::size_t i = 0;
     while (i < v.size()) {
         while (i < v.size() && std::isspace(static_cast<unsigned char>(v[i]))) ++i;
@@ -195,6 +196,8 @@ void apply_font_shorthand(const Context& cx, std::string_view v, TextCtx& ctx, d
 // Applies the text properties `node` sets itself to `ctx` (inherited ones carry on to children).
 void apply_text_props(Context& cx, const pugi::xml_node& node, TextCtx& ctx) {
     const double parent_size = ctx.font.size;
+    // alignment-baseline is not inherited (only the keyword inherit takes the parent's value).
+    const svg_text::Baseline parent_alignment = ctx.baseline;
     ctx.baseline = ctx.dominant;
     for (const auto& [k, v] : properties(cx, node)) {
         const std::string_view val = trim(v);
@@ -208,7 +211,10 @@ void apply_text_props(Context& cx, const pugi::xml_node& node, TextCtx& ctx) {
     const double fs = ctx.font.size;
     for (const auto& [k, v] : properties(cx, node)) {
         const std::string_view val = trim(v);
-        if (val == "inherit") continue;
+        if (val == "inherit") {
+            if (k == "alignment-baseline") ctx.baseline = parent_alignment;
+            continue;
+        }
         if (k == "font-family")
             apply_font_family(cx, val, ctx);
         else if (k == "font-weight") {
@@ -265,7 +271,9 @@ void apply_text_props(Context& cx, const pugi::xml_node& node, TextCtx& ctx) {
             else if (val == "end")
                 ctx.anchor = svg_text::Anchor::End;
         } else if (k == "dominant-baseline") {
-            ctx.dominant = baseline_kind(val, svg_text::Baseline::Alphabetic);
+            // auto is alphabetic in horizontal text; SVG 1.1's no-change (and any value not
+            // understood) keeps the inherited baseline.
+            ctx.dominant = val == "auto" ? svg_text::Baseline::Alphabetic : baseline_kind(val, ctx.dominant);
             ctx.baseline = ctx.dominant;
         } else if (k == "alignment-baseline") {
             ctx.baseline = baseline_kind(val, ctx.dominant);
@@ -278,6 +286,8 @@ void apply_text_props(Context& cx, const pugi::xml_node& node, TextCtx& ctx) {
             else if (val != "baseline")
                 if (auto l = text_length(val, fs, fs)) ctx.baseline_shifts.push_back({0, *l});
         } else if (k == "text-decoration" || k == "text-decoration-line") {
+            // The keywords are separated by white space only: a comma makes the value invalid.
+            if (val.find(',') != std::string_view::npos) continue;
             for (std::string_view w : split_list(val)) {
                 svg_text::Decoration d;
                 d.style = ctx.style;
