@@ -59,6 +59,7 @@ public:
         : st_(st), h_(st.width / 2), out_(out), miter_limit_(std::max(1.0, st.miter_limit)) {
         // Drop points closer than this to their predecessor: their direction is noise.
         eps_ = tol * kMergeFactor;
+        tol_ = tol;
         const double ratio = std::min(1.0, tol / h_);
         step_ = std::max(4 * std::asin(std::sqrt(ratio / 2)), 2 * kPi / kMaxArcStepsPerTurn);
         step_ = std::min(step_, kPi / 2);
@@ -118,11 +119,14 @@ public:
                 } else {
                     emit(left_);
                 }
+                wedges_.clear();  // inside the outer side too
+                wedge_ends_.clear();
                 return;
             }
             emit(left_);
             std::reverse(right_.begin(), right_.end());
             emit(right_);
+            emit_wedges();
             return;
         }
         const Vec d0 = dir_[0], dn = dir_[nseg - 1];
@@ -138,6 +142,7 @@ public:
         left_.insert(left_.end(), right_.rbegin(), right_.rend());
         cap(left_, q_[0], -cap0);
         emit(left_);
+        emit_wedges();
     }
 
 private:
@@ -290,20 +295,18 @@ private:
                 return need;
             }
         }
-        auto pivot = [&] {
-            inner.push_back(v - n1 * h_);
-            if (cut.empty())
-                inner.push_back(v);
-            else
-                inner.insert(inner.end(), cut.begin(), cut.end());
-            inner.push_back(v - n2 * h_);
-        };
-        pivot();
-        if (smooth && wedge_uncovered(len1, len2, angle)) {
-            // The wedge the turning normal sweeps on the inner side, where the two segments'
-            // rectangles leave part of it: one more piece, (v - n1 h) -> v -> (v - n2 h) -> arc back.
-            arc(inner, v, -n2, s * angle);
-            pivot();
+        inner.push_back(v - n1 * h_);
+        if (cut.empty())
+            inner.push_back(v);
+        else
+            inner.insert(inner.end(), cut.begin(), cut.end());
+        inner.push_back(v - n2 * h_);
+        if (smooth) {
+            // The wedge the turning normal sweeps on the inner side; the part of it the two
+            // segments' rectangles leave is one more piece, a contour of its own.
+            double psi, rho;
+            if (wedge_gap(len1, len2, angle, psi, rho))
+                wedge_piece(v, -n1, s, angle, len1, len2, psi, rho, &inner == &right_);
         }
         return 0;
     }
@@ -327,12 +330,53 @@ private:
     }
 
     // Whether the sector of radius h and angle `turn` that the normal sweeps on the inner side of a
-    // vertex reaches outside both segment rectangles: its arc point at angle psi from the incoming
-    // normal lies h sin(psi) behind the vertex along the incoming segment and h sin(turn - psi)
-    // ahead along the outgoing one, outside both when those exceed their lengths.
-    bool wedge_uncovered(double len_in, double len_out, double turn) const {
+    // vertex reaches outside both segment rectangles by more than the tolerance. Its point at angle
+    // psi from the incoming normal and distance rho lies rho sin(psi) behind the vertex along the
+    // incoming segment and rho sin(turn - psi) ahead along the outgoing one, outside both when
+    // those exceed their lengths. The nearest such point is where both reach their lengths
+    // together, tan(psi) = len_in sin(turn) / (len_out + len_in cos(turn)), at distance rho: the
+    // part of the sector outside lies between that point and the arc.
+    bool wedge_gap(double len_in, double len_out, double turn, double& psi, double& rho) const {
         if (!(len_in < h_ && len_out < h_)) return false;
-        return std::asin(len_in / h_) + std::asin(len_out / h_) < turn;
+        psi = std::atan2(len_in * std::sin(turn), len_out + len_in * std::cos(turn));
+        const double a = len_in > 0 ? len_in / std::sin(psi) : 0;
+        const double b = len_out > 0 ? len_out / std::sin(turn - psi) : 0;
+        rho = std::max(a, b);
+        return h_ - rho > tol_;
+    }
+
+    // The part of the swept wedge at v outside both rectangles, as a contour: bounded by the
+    // incoming segment's start line (rho sin(psi) = len_in, meeting the arc at psi_a), the
+    // outgoing segment's end line (meeting it at psi_b) and the arc between. `m1`: the incoming
+    // inner normal; the wedge turns from it by `turn` in the direction -s. Oriented as the inner
+    // side's pieces: `reverse` when that side is emitted backwards.
+    void wedge_piece(Point v, Vec m1, double s, double turn, double len_in, double len_out, double psi, double rho,
+                     bool reverse) {
+        auto dir = [&](double a) {
+            const double c = std::cos(-s * a), n = std::sin(-s * a);
+            return Vec{m1.x * c - m1.y * n, m1.x * n + m1.y * c};
+        };
+        const double pa = std::asin(len_in / h_), pb = turn - std::asin(len_out / h_);
+        const std::size_t start = wedges_.size();
+        wedges_.push_back(v + dir(pb) * h_);
+        arc(wedges_, v, dir(pb), s * (pb - pa));
+        wedges_.push_back(v + dir(pa) * h_);
+        wedges_.push_back(v + dir(psi) * rho);
+        if (reverse) std::reverse(wedges_.begin() + static_cast<std::ptrdiff_t>(start), wedges_.end());
+        wedge_ends_.push_back(wedges_.size());
+    }
+
+    // Emits the wedge pieces gathered for the contour.
+    void emit_wedges() {
+        std::size_t start = 0;
+        for (std::size_t end : wedge_ends_) {
+            piece_.assign(wedges_.begin() + static_cast<std::ptrdiff_t>(start),
+                          wedges_.begin() + static_cast<std::ptrdiff_t>(end));
+            emit(piece_);
+            start = end;
+        }
+        wedges_.clear();
+        wedge_ends_.clear();
     }
 
     // The ends of an open contour, where the path's own direction t (zero: the chord's) differs
@@ -441,7 +485,7 @@ private:
     // joins at a fine step (a huge width against the tolerance) must fail as it passes the path
     // size limit, not after gigabytes of points.
     void check_size(std::size_t more) const {
-        if (total_ + left_.size() + right_.size() + more > max_points_)
+        if (total_ + left_.size() + right_.size() + wedges_.size() + more > max_points_)
             throw Error(ErrorKind::Limit, "stroke: outline exceeds the path size limit");
     }
 
@@ -462,11 +506,14 @@ private:
     Path& out_;
     double miter_limit_;
     double eps_ = 0;
+    double tol_ = 0;
     double step_ = kPi / 2;
     std::size_t total_ = 0;
     const std::size_t max_points_ = current_limits().path_points;
     std::vector<Point> q_, left_, right_;
-    std::vector<std::uint8_t> smooth_;  // per point of q_: the path is smooth there
+    std::vector<Point> wedges_, piece_;    // swept wedge pieces of the contour, one after another
+    std::vector<std::size_t> wedge_ends_;  // where each ends in wedges_
+    std::vector<std::uint8_t> smooth_;     // per point of q_: the path is smooth there
     std::vector<Vec> dir_;
     std::vector<double> len_;
     bool closed_ = false;
