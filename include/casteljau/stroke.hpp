@@ -38,9 +38,10 @@
 //   at every contour. On a closed contour the last and first dashes become one dash when the pattern
 //   is "on" where the contour wraps around, and a contour that is "on" throughout stays closed.
 //   Zero-length dashes are kept, so (0, d) with Round caps draws dots; Square caps of such dashes
-//   follow the path direction. Dash lengths are measured along the flattened path, whose chords are
-//   slightly shorter than the curve (on a circle of radius r flattened with user tolerance t, by a
-//   relative amount of at most t / 3r).
+//   follow the path direction. Dash lengths are measured along the curve: each chord of the
+//   flattening counts as the arc it stands for, from the turns of the path at its ends, which on a
+//   circle of radius r flattened with user tolerance t leaves a relative error of order (t / r)^2
+//   (chords alone fall short by up to t / 3r). Points inside a chord lie on the chord.
 // Errors: a non-finite point, transform or style value (width, miter_limit, dash values, offset)
 // throws Error(InvalidData); a tolerance that is not a positive finite number throws
 // Error(InvalidArgument); more than Limits::dashes dashes from one path or Limits::path_points

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <vector>
 
 #include "casteljau/raster.hpp"
 #include "casteljau/stroke.hpp"
@@ -116,5 +117,39 @@ TEST_CASE("stroke: where curves meet with one tangent the join style does not ma
         for (int y = 0; y < 130; ++y)
             for (int x = 0; x < 130; ++x) worst = std::max(worst, std::abs(round.at(x, y) - other.at(x, y)));
         CHECK(worst == 0);
+    }
+}
+
+TEST_CASE("stroke: dashes are measured along the curve, not its chords", "[stroke]") {
+    // A circle of radius 20 about the origin as four cubics, flattened coarsely (0.5): its chords
+    // are about 0.8 % shorter than the arcs they stand for. With dashes of an eighth of the
+    // circumference each, on and off, the dashes start at 0, 90, 180 and 270 degrees; measured
+    // along the chords they would drift by about 2 degrees by the last one. Points inside a chord
+    // lie on it, off the arc by up to 0.1 degree here. (The contour is closed
+    // and the pattern off where it wraps, so there are four dashes.)
+    const double r = 20, k = 0.5522847498 * r, quarter = 0.5 * kPi * r;
+    Path p;
+    p.move_to(r, 0);
+    p.cubic_to({r, k}, {k, r}, {0, r});
+    p.cubic_to({-k, r}, {-r, k}, {-r, 0});
+    p.cubic_to({-r, -k}, {-k, -r}, {0, -r});
+    p.cubic_to({k, -r}, {r, -k}, {r, 0});
+    p.close();
+    const std::vector<double> pattern = {quarter / 2, quarter / 2};
+    const Path d = dash(p, pattern, 0, {}, 0.5);
+    std::vector<double> starts;
+    for (std::size_t i = 0, pi = 0; i < d.verbs().size(); ++i) {
+        if (d.verbs()[i] == Verb::Move) {
+            const double a = std::atan2(d.points()[pi].y, d.points()[pi].x) * 180 / kPi;
+            starts.push_back(a < -1 ? a + 360 : a);
+        }
+        if (d.verbs()[i] != Verb::Close) ++pi;
+    }
+    REQUIRE(starts.size() == 4);
+    std::sort(starts.begin(), starts.end());
+    for (std::size_t i = 0; i < 4; ++i) {
+        const double expected = 90.0 * static_cast<double>(i);
+        INFO("dash " << i << " starts at " << starts[i] << " degrees");
+        CHECK(std::abs(starts[i] - expected) < 0.25);
     }
 }
