@@ -533,7 +533,7 @@ void decorate_cluster(const Span& sp, const Cluster& g, const Affine& t, Outline
 // The glyph outlines and decoration lines of every positioned cluster, and the text's box (the
 // union of the clusters' cells) when `box` is given.
 void outline_chunks(const TextInput& in, const std::vector<std::vector<Cluster>>& chunks, std::vector<Outline>& out,
-                    std::optional<Rect>* box) {
+                    std::optional<Rect>* box, const FontSet& fonts, std::vector<ColorGlyph>* color) {
     OutlineSink sink(out);
     std::vector<std::unique_ptr<PathWalker>> walkers(in.paths.size());
     Path glyph;
@@ -556,6 +556,13 @@ void outline_chunks(const TextInput& in, const std::vector<std::vector<Cluster>>
             }
             for (const Glyph& gl : g.glyphs) {
                 const double s = size / gl.font->units_per_em();
+                if (color && is_color_glyph(*gl.font, gl.id)) {
+                    if (std::shared_ptr<const Font> f = fonts.shared(gl.font)) {
+                        color->push_back(
+                            {sp.style, std::move(f), gl.id, size, t * Affine::translate(gl.x_off, gl.y_off)});
+                        continue;
+                    }
+                }
                 try {
                     gl.font->glyph_path(gl.id, glyph);
                 } catch (const Error&) { continue; }
@@ -572,7 +579,7 @@ void outline_chunks(const TextInput& in, const std::vector<std::vector<Cluster>>
 }  // namespace
 
 std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std::string>& warnings,
-                            std::optional<Rect>* box) {
+                            std::optional<Rect>* box, std::vector<ColorGlyph>* color) {
     const FlatText t = flat_text(in);
     std::vector<Outline> out;
     if (t.text.empty()) return out;
@@ -584,7 +591,7 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
     for (std::size_t c = 0; c + 1 < starts.size(); ++c)
         chunks.push_back(shape_chunk(in, t, fonts, starts[c], starts[c + 1], levels, runs, warnings, warned_fonts));
     position_chunks(in, t, starts, chunks);
-    outline_chunks(in, chunks, out, box);
+    outline_chunks(in, chunks, out, box, fonts, color);
     return out;
 }
 
