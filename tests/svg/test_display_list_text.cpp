@@ -278,3 +278,35 @@ TEST_CASE("svg text: an underline of vertical text runs down the line beside it"
     CHECK(line.y0 == Approx(20));
     CHECK(line.y1 == Approx(20 + length));
 }
+
+TEST_CASE("svg text: an upright glyph of vertical text on a path turns across the path",
+          "[svg][display_list][svg_text]") {
+    // On a path, vertical text follows the path as horizontal text does, as resvg lays it out
+    // (the specifications say little about it). An upright cluster is then turned 90 degrees
+    // counterclockwise about the middle of its advance w, its em box centred on the path: on the
+    // path y = 100 starting at x = 0, the emoji's middle is at (w/2, 100) and its origin at
+    // (w/2 + (a + d)/2, 100 + w/2), its advance pointing up.
+    FontDatabaseOptions o;
+    o.font_files = {std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/emoji_cbdt_test.ttf"};
+    o.system_fonts = false;
+    SvgOptions options;
+    options.font_database = std::make_shared<const FontDatabase>(o);
+    const Font font = Font::load(o.font_files[0]);
+    const double k = 50.0 / font.units_per_em();
+    const double w = font.glyph_metrics(font.glyph_index(0x1F600)).advance * k;
+    const double mid = (font.metrics().ascender + font.metrics().descender) / 2 * k;
+    const svg::DisplayList items = svg::convert(
+        "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='200'><path id='p' d='M 0 100 L 200 100'/>"
+        "<text font-size='50' font-family='Noto Color Emoji' writing-mode='tb'><textPath href='#p'>&#x1F600;"
+        "</textPath></text></svg>",
+        options);
+    std::vector<Affine> placed;
+    for (const DisplayItem& it : items)
+        if (it.kind == DisplayItem::ColorGlyph) placed.push_back(it.transform);
+    REQUIRE(placed.size() == 1);
+    const Point origin = placed[0].apply({0, 0}), advance = placed[0].apply({1, 0});
+    CHECK(origin.x == Approx(w / 2 + mid));
+    CHECK(origin.y == Approx(100 + w / 2));
+    CHECK(advance.x - origin.x == Approx(0).margin(1e-9));
+    CHECK(advance.y - origin.y == Approx(-1));
+}

@@ -43,6 +43,11 @@ bool is_upright(char32_t c);
 // baseline shift (px, positive up in the horizontal frame).
 Affine vertical_cluster_transform(const TextInput& in, const Cluster& g, double shift);
 
+// Vertical text on a path, as resvg lays it out: the clusters follow the path as horizontal
+// text does, each cluster's em box centred on the path, upright clusters turned 90 degrees
+// counterclockwise about the middle of their advance. What follows the placement on the path.
+Affine vertical_on_path(const TextInput& in, const Cluster& g);
+
 // The frames of the decoration lines of vertical text, as resvg draws them (the specifications
 // leave them open): a line runs on in the frame of the first cluster of its span and of the
 // run of clusters that no dx, dy or rotate moves; that frame is moved like the first cluster's

@@ -461,6 +461,7 @@ std::optional<Affine> cluster_transform(const TextInput& in, const Cluster& g,
         if (!w->at(g.x + half, p, angle)) return std::nullopt;  // off the path: not drawn
         t = Affine::translate(p.x, p.y) * Affine::rotate(angle) * Affine::translate(-half, by);
         if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
+        if (in.vertical) t = t * vertical_on_path(in, g);
     } else if (in.vertical) {
         t = vertical_cluster_transform(in, g, shift);
     } else {

@@ -68,6 +68,13 @@ Affine vertical_cluster_transform(const TextInput& in, const Cluster& g, double 
            Affine::translate(-half, mid);
 }
 
+Affine vertical_on_path(const TextInput& in, const Cluster& g) {
+    const double mid = vertical_mid(in, g);
+    if (!g.upright) return Affine::translate(0, mid);
+    const double half = g.advance / 2;
+    return Affine::translate(half, 0) * Affine::rotate_degrees(-90) * Affine::translate(-half, mid);
+}
+
 // A run goes on in the frame its first cluster set.
 Affine VerticalDecorationFrames::frame(const TextInput& in, const Cluster& g, double shift) {
     const CharPos none;
