@@ -200,6 +200,11 @@ struct TextDrawOptions {
 void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Paint& paint, GlyphCache* cache = nullptr,
                const TextDrawOptions& options = {});
 
+// Whether glyph `glyph` of `font` is a colour glyph (COLR v0 layers, a COLR v1 paint graph, a
+// CBDT/CBLC or sbix bitmap), which draw_text draws in its palette's colours instead of filling
+// its outline. False for every glyph of a font without colour tables.
+bool is_color_glyph(const Font& font, std::uint32_t glyph);
+
 // Lays out `utf8` in one font with default style at `size` px and draws it with the box's top-left
 // corner at `origin`. Returns the layout.
 TextLayout draw_text(Canvas& canvas, std::string_view utf8, const Font& font, double size, Point origin,

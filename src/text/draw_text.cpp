@@ -36,6 +36,8 @@ bool is_color(const Font& font, std::uint32_t glyph) {
 
 }  // namespace
 
+bool is_color_glyph(const Font& font, std::uint32_t glyph) { return is_color(font, glyph); }
+
 void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Paint& paint, GlyphCache* cache,
                const TextDrawOptions& options) {
     if (options.subpixel_steps < 1 || options.subpixel_steps > 64 || options.subpixel_steps_y < 1 ||

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "casteljau/font.hpp"
 #include "casteljau/font_database.hpp"
@@ -225,4 +226,87 @@ TEST_CASE("svg text: text-anchor counts a white space at the end of a chunk", "[
     REQUIRE(alone.size() == 1);
     CHECK(chunks[0].path.bounds().x0 == Approx(alone[0].path.bounds().x0).margin(1e-6));
     CHECK(chunks[0].path.bounds().x1 == Approx(alone[0].path.bounds().x1).margin(1e-6));
+}
+
+TEST_CASE("svg text: an upright glyph in vertical text is centred on the line", "[svg][display_list][svg_text]") {
+    // Vertical text as resvg lays it out: shaped horizontally, the line turned 90 degrees
+    // clockwise about the start (x, y). An upright cluster (U+1F600 has vertical orientation U,
+    // UAX #50) turns back about the middle of its advance w, which becomes its vertical step;
+    // the middle of its ascender-to-descender box, (a + d) / 2 above its baseline, lands on the
+    // line. So the k-th cluster's origin is (x - w/2, y + k w + w/2 + (a + d)/2). The emoji are
+    // colour glyphs: their items carry the origin directly.
+    FontDatabaseOptions o;
+    o.font_files = {std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/emoji_cbdt_test.ttf"};
+    o.system_fonts = false;
+    SvgOptions options;
+    options.font_database = std::make_shared<const FontDatabase>(o);
+    const Font font = Font::load(o.font_files[0]);
+    const double k = 50.0 / font.units_per_em();
+    const double w = font.glyph_metrics(font.glyph_index(0x1F600)).advance * k;
+    const double mid = (font.metrics().ascender + font.metrics().descender) / 2 * k;
+    const svg::DisplayList items = svg::convert(
+        "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='200'><text x='100' y='20' font-size='50' "
+        "font-family='Noto Color Emoji' writing-mode='tb'>&#x1F600;&#x1F600;</text></svg>",
+        options);
+    std::vector<Point> origins;
+    for (const DisplayItem& it : items)
+        if (it.kind == DisplayItem::ColorGlyph) origins.push_back(it.transform.apply({0, 0}));
+    REQUIRE(origins.size() == 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+        CHECK(origins[i].x == Approx(100 - w / 2));
+        CHECK(origins[i].y == Approx(20 + static_cast<double>(i) * w + w / 2 + mid));
+    }
+}
+
+TEST_CASE("svg text: an underline of vertical text runs down the line beside it", "[svg][display_list][svg_text]") {
+    // Vertical text turns the horizontal frame 90 degrees clockwise about (x, y) = (100, 20);
+    // a sideways cluster's baseline is moved by (a + d) / 2 so that its em box is centred on the
+    // line, and, as resvg draws it, the underline sits half the line height (a - d) / 2 below
+    // that baseline in the turned frame. Below in that frame is left in user space: the line's
+    // centre is at x = 100 - (a + d) / 2 - (a - d) / 2 = 100 - a, and it runs from y = 20 over
+    // the advance of "ll" (DejaVu Sans, 40 user units).
+    const Font font = Font::load(std::string(CASTELJAU_TEST_FONT_DIR) + "/DejaVuSans.ttf");
+    const double k = 40.0 / font.units_per_em();
+    const double a = font.metrics().ascender * k, thick = font.metrics().underline_thickness * k;
+    const double length = 2 * font.glyph_metrics(font.glyph_index(U'l')).advance * k;
+    const svg::DisplayList fills =
+        painted(convert("<text x='100' y='20' font-size='40' writing-mode='tb' text-decoration='underline'>ll</text>"));
+    REQUIRE(fills.size() == 2);  // the underline (drawn under the glyphs), then the glyphs
+    const Rect line = fills[0].path.bounds();
+    CHECK(line.x0 == Approx(100 - a - thick / 2));
+    CHECK(line.x1 == Approx(100 - a + thick / 2));
+    CHECK(line.y0 == Approx(20));
+    CHECK(line.y1 == Approx(20 + length));
+}
+
+TEST_CASE("svg text: an upright glyph of vertical text on a path turns across the path",
+          "[svg][display_list][svg_text]") {
+    // On a path, vertical text follows the path as horizontal text does, as resvg lays it out
+    // (the specifications say little about it). An upright cluster is then turned 90 degrees
+    // counterclockwise about the middle of its advance w, its em box centred on the path: on the
+    // path y = 100 starting at x = 0, the emoji's middle is at (w/2, 100) and its origin at
+    // (w/2 + (a + d)/2, 100 + w/2), its advance pointing up.
+    FontDatabaseOptions o;
+    o.font_files = {std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/emoji_cbdt_test.ttf"};
+    o.system_fonts = false;
+    SvgOptions options;
+    options.font_database = std::make_shared<const FontDatabase>(o);
+    const Font font = Font::load(o.font_files[0]);
+    const double k = 50.0 / font.units_per_em();
+    const double w = font.glyph_metrics(font.glyph_index(0x1F600)).advance * k;
+    const double mid = (font.metrics().ascender + font.metrics().descender) / 2 * k;
+    const svg::DisplayList items = svg::convert(
+        "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='200'><path id='p' d='M 0 100 L 200 100'/>"
+        "<text font-size='50' font-family='Noto Color Emoji' writing-mode='tb'><textPath href='#p'>&#x1F600;"
+        "</textPath></text></svg>",
+        options);
+    std::vector<Affine> placed;
+    for (const DisplayItem& it : items)
+        if (it.kind == DisplayItem::ColorGlyph) placed.push_back(it.transform);
+    REQUIRE(placed.size() == 1);
+    const Point origin = placed[0].apply({0, 0}), advance = placed[0].apply({1, 0});
+    CHECK(origin.x == Approx(w / 2 + mid));
+    CHECK(origin.y == Approx(100 + w / 2));
+    CHECK(advance.x - origin.x == Approx(0).margin(1e-9));
+    CHECK(advance.y - origin.y == Approx(-1));
 }

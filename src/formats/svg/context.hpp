@@ -41,6 +41,7 @@
 namespace casteljau::svg_text {
 class FontSet;
 struct Outline;
+struct ColorGlyph;
 }  // namespace casteljau::svg_text
 
 namespace casteljau::svg {
@@ -268,6 +269,7 @@ std::optional<std::vector<filter::FilterGraph>> build_filters(Context& cx,
 // (text_properties.hpp: the text properties and the layout input).
 void text(Context& cx, const pugi::xml_node& node, const Style& st, const Affine& cm, Viewport vp, double opacity);
 std::vector<svg_text::Outline> text_outlines(Context& cx, const pugi::xml_node& node, const Style& st, Viewport vp,
-                                             std::vector<Style>& styles, std::optional<Rect>* box = nullptr);
+                                             std::vector<Style>& styles, std::optional<Rect>* box = nullptr,
+                                             std::vector<svg_text::ColorGlyph>* color = nullptr);
 
 }  // namespace casteljau::svg

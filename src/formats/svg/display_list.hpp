@@ -11,6 +11,7 @@
 // Thread-safety: plain values; a converted list may be drawn from several threads at once.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -19,6 +20,7 @@
 #include "casteljau/blend_mode.hpp"
 #include "casteljau/canvas.hpp"
 #include "casteljau/filter.hpp"
+#include "casteljau/font.hpp"
 #include "casteljau/geometry.hpp"
 #include "casteljau/path.hpp"
 #include "casteljau/shader.hpp"
@@ -58,7 +60,11 @@ struct DisplayItem {
         BeginFilter,
         EndFilter,
         // A path never drawn that counts in bounding boxes (a hidden or fully transparent element).
-        Bounds
+        Bounds,
+        // Colour glyph `glyph` of `font` at `glyph_size` px per em, its origin at the origin of
+        // the space `transform` maps (y down), in its palette's colours; `color` stands for the
+        // text colour entry and `opacity` multiplies it all.
+        ColorGlyph
     } kind = Fill;
     bool luminance = false;               // BeginMask: luminance (true) or alpha mask
     BlendMode blend = BlendMode::Normal;  // BeginLayer: mix-blend-mode
@@ -69,8 +75,11 @@ struct DisplayItem {
     std::shared_ptr<const SvgDocument> svg_image;  // SvgImage: drawn with `transform` as its base
     std::shared_ptr<const PatternTile> pattern;    // a pattern instead of `color`: rendered per fill
     FillRule rule = FillRule::NonZero;
-    double opacity = 1;  // fill/stroke: multiplies colour alpha; layer: group opacity
-    StrokeStyle stroke;  // Stroke items
+    double opacity = 1;                // fill/stroke: multiplies colour alpha; layer: group opacity
+    StrokeStyle stroke;                // Stroke items
+    std::shared_ptr<const Font> font;  // ColorGlyph
+    std::uint32_t glyph = 0;           // ColorGlyph: glyph id
+    double glyph_size = 0;             // ColorGlyph: px per em
     std::shared_ptr<const std::vector<filter::FilterGraph>>
         filters;  // EndFilter: applied in order, in the user space of `transform`
 };

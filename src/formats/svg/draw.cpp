@@ -9,9 +9,31 @@
 #include "casteljau/canvas.hpp"
 #include "casteljau/filter.hpp"
 #include "casteljau/shader.hpp"
+#include "casteljau/text.hpp"
 #include "formats/svg/display_list.hpp"
 
 namespace casteljau::svg {
+
+namespace {
+
+// A colour glyph through the text stage, which draws it in its palette's colours.
+void draw_color_glyph(const DisplayItem& it, Canvas& c, const Affine& base) {
+    if (!it.font) return;
+    TextLayout one;
+    one.fonts = {it.font.get()};
+    one.size = it.glyph_size;
+    one.glyphs.push_back({it.glyph, 0, 0, Point{0, 0}});
+    Paint paint = Paint::solid(it.color);
+    paint.opacity = it.opacity;
+    const Affine saved = c.transform();
+    c.set_transform(base * it.transform);
+    TextDrawOptions options;
+    options.force_outlines = true;  // colour glyphs are drawn the same way either way
+    draw_text(c, one, Point{0, 0}, paint, nullptr, options);
+    c.set_transform(saved);
+}
+
+}  // namespace
 
 void draw(const DisplayList& items, Canvas& canvas, const Affine& base) {
     // Layers: groups with opacity, clip paths or masks (BeginLayer .. EndLayer), and the content of
@@ -82,6 +104,7 @@ void draw(const DisplayList& items, Canvas& canvas, const Affine& base) {
                 if (it.svg_image) it.svg_image->render(cur(), base * it.transform);
                 continue;
             case DisplayItem::Bounds: continue;
+            case DisplayItem::ColorGlyph: draw_color_glyph(it, cur(), base); continue;
             case DisplayItem::Fill:
             case DisplayItem::Stroke: break;
         }

@@ -209,7 +209,8 @@ std::vector<pugi::xml_node> inheritance_ancestors(const Context& cx, const pugi:
 
 // Lays out a text element: the outlines of its spans with their styles.
 std::vector<svg_text::Outline> text_outlines(Context& cx, const pugi::xml_node& node, const Style& st, Viewport vp,
-                                             std::vector<Style>& styles, std::optional<Rect>* box) {
+                                             std::vector<Style>& styles, std::optional<Rect>* box,
+                                             std::vector<svg_text::ColorGlyph>* color) {
     TextCtx ctx;
     ctx.viewport_width = vp.w;
     // Inherited text properties from the ancestors, outermost first.
@@ -286,14 +287,38 @@ std::vector<svg_text::Outline> text_outlines(Context& cx, const pugi::xml_node& 
     if (wm.empty()) wm = inherited(cx, node, "writing-mode");
     b.in.vertical = wm == "tb" || wm == "tb-rl" || wm == "vertical-rl" || wm == "vertical-lr";
     styles = std::move(b.styles);
-    return svg_text::layout(b.in, *text_fonts(cx), cx.warnings, box);
+    return svg_text::layout(b.in, *text_fonts(cx), cx.warnings, box, color);
 }
+
+namespace {
+
+// Colour glyphs in their palette's colours; the span's solid fill colour stands for the text
+// colour entry, and the fill and element opacities multiply them.
+void color_glyphs(Context& cx, const std::vector<svg_text::ColorGlyph>& glyphs, const std::vector<Style>& styles,
+                  const Affine& cm, double opacity) {
+    for (const svg_text::ColorGlyph& g : glyphs) {
+        const Style& s = styles[g.style];
+        if (!s.visible) continue;
+        DisplayItem it;
+        it.kind = DisplayItem::ColorGlyph;
+        it.font = g.font;
+        it.glyph = g.glyph;
+        it.glyph_size = g.size;
+        it.transform = cm * g.transform;
+        it.color = s.fill.kind == PaintRef::Solid ? s.fill.color : Color::black();
+        it.opacity = s.fill_opacity * opacity;
+        cx.items.push_back(std::move(it));
+    }
+}
+
+}  // namespace
 
 void text(Context& cx, const pugi::xml_node& node, const Style& st, const Affine& cm, Viewport vp, double opacity) {
     std::vector<Style> styles;
     std::optional<Rect> cells;
-    const std::vector<svg_text::Outline> outlines = text_outlines(cx, node, st, vp, styles, &cells);
-    if (!cells || outlines.empty()) return;
+    std::vector<svg_text::ColorGlyph> colored;
+    const std::vector<svg_text::Outline> outlines = text_outlines(cx, node, st, vp, styles, &cells, &colored);
+    if (!cells || (outlines.empty() && colored.empty())) return;
     // The text's bounding box is the union of its glyph cells (SVG 2), hidden spans included: it
     // counts in its group's bounding box, and paint servers in objectBoundingBox units use it.
     Path box;
@@ -324,6 +349,7 @@ void text(Context& cx, const pugi::xml_node& node, const Style& st, const Affine
                 }
             }
         }
+        if (layer == svg_text::Outline::Glyphs) color_glyphs(cx, colored, styles, cm, opacity);
     }
 }
 

@@ -32,7 +32,7 @@ const Font* FontSet::face(std::size_t index, const FontSpec& spec) {
     auto& slot = fonts_[{index, key}];
     if (slot) return slot.get();
     try {
-        auto font = std::make_unique<Font>(db_->open(index));
+        auto font = std::make_shared<Font>(db_->open(index));
         if (font->is_variable()) {
             // The weight and width the style asks for, then font-variation-settings over them.
             std::vector<Variation> vars;
@@ -77,6 +77,12 @@ std::vector<const Font*> FontSet::chain(const FontSpec& spec, std::u32string_vie
         if (auto idx = db_->fallback(c, spec.weight, spec.slant, spec.stretch, !system_fallback_)) add(*idx);
     }
     return out;
+}
+
+std::shared_ptr<const Font> FontSet::shared(const Font* font) const {
+    for (const auto& [key, f] : fonts_)
+        if (f.get() == font) return f;
+    return nullptr;
 }
 
 SystemFontFallback* FontSet::system(const Font& base) {

@@ -16,36 +16,11 @@
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/shaping.hpp"
+#include "formats/svg/text_clusters.hpp"
 
 namespace casteljau::svg_text {
 
 namespace {
-
-struct Glyph {
-    const Font* font = nullptr;
-    std::uint32_t id = 0;
-    double x_off = 0, y_off = 0;  // px from the cluster origin, y down
-};
-
-struct Cluster {
-    std::size_t ch = 0, nch = 1;  // characters (global indices)
-    std::size_t span = 0;
-    std::vector<Glyph> glyphs;
-    double advance = 0;
-    double x = 0, y = 0;         // origin on the baseline (before baseline offsets)
-    double step = 0;             // distance to the next cluster's origin (advance + spacing)
-    double scale_x = 1;          // lengthAdjust="spacingAndGlyphs"
-    bool upright = false;        // vertical text: drawn upright (else turned 90 degrees clockwise)
-    const Font* font = nullptr;  // metrics for baselines and decorations
-};
-
-// Characters set upright in vertical text (CJK, kana, hangul, full-width forms, emoji); others
-// are turned sideways (Unicode's vertical orientation U and Tu, approximately).
-bool is_upright(char32_t c) {
-    return (c >= 0x1100 && c <= 0x11ff) || (c >= 0x2e80 && c <= 0xa4cf) || (c >= 0xac00 && c <= 0xd7af) ||
-           (c >= 0xf900 && c <= 0xfaff) || (c >= 0xfe30 && c <= 0xfe4f) || (c >= 0xff00 && c <= 0xffef) ||
-           (c >= 0x1f000 && c <= 0x1faff) || (c >= 0x20000 && c <= 0x3ffff);
-}
 
 bool is_word_space(char32_t c) {
     return c == U' ' || c == 0xa0 || c == 0x1361 || c == 0x10100 || c == 0x10101 || c == 0x3000;
@@ -187,15 +162,10 @@ RunClusters run_clusters(const ShapedRun& run, const std::vector<const Font*>& s
         double pen = 0;
         for (; g < run.glyphs.size() && run.glyphs[g].cluster == cl; ++g) {
             const auto& sg = run.glyphs[g];
-            if (upright) {  // top to bottom: HarfBuzz's pen moves down (y up)
-                k.glyphs.push_back({shaped_fonts[sg.font], sg.glyph, sg.x_offset, -(pen + sg.y_offset)});
-                pen += sg.y_advance;
-            } else {
-                k.glyphs.push_back({shaped_fonts[sg.font], sg.glyph, pen + sg.x_offset, -sg.y_offset});
-                pen += sg.advance;
-            }
+            k.glyphs.push_back({shaped_fonts[sg.font], sg.glyph, pen + sg.x_offset, -sg.y_offset});
+            pen += sg.advance;
         }
-        k.advance = upright ? -pen : pen;
+        k.advance = pen;
         rc.clusters.push_back(std::move(k));
     }
     return rc;
@@ -228,10 +198,10 @@ bool shape_segment(ChunkShaping& c, FontSet& fonts, std::size_t sb, std::size_t 
     SystemFontFallback* system = fonts.system(*chain[0]);
     std::unique_ptr<TextShaper> shaper;
     try {
-        shaper = std::make_unique<TextShaper>(std::span<const Font* const>(chain), ts, upright, system);
+        shaper = std::make_unique<TextShaper>(std::span<const Font* const>(chain), ts, false, system);
     } catch (const Error&) {
         ts.features.clear();
-        shaper = std::make_unique<TextShaper>(std::span<const Font* const>(chain), ts, upright, system);
+        shaper = std::make_unique<TextShaper>(std::span<const Font* const>(chain), ts, false, system);
     }
     // Shaped with up to kContext neighbours of the same level on each side (from other
     // spans too), so that kerning and joining work across tspans; only the segment's own
@@ -249,6 +219,7 @@ bool shape_segment(ChunkShaping& c, FontSet& fonts, std::size_t sb, std::size_t 
     const std::vector<const Font*>& shaped_fonts = shaper->fonts();  // the chain, then system fonts
     for (const ShapedRun& run : c.runs) {
         RunClusters rc = run_clusters(run, shaped_fonts, wb, sb, se, c.t.span_of[sb], upright);
+        for (Cluster& k : rc.clusters) k.primary = chain[0];
         if (!rc.clusters.empty()) c.all_runs.push_back(std::move(rc));
     }
     return true;
@@ -490,16 +461,9 @@ std::optional<Affine> cluster_transform(const TextInput& in, const Cluster& g,
         if (!w->at(g.x + half, p, angle)) return std::nullopt;  // off the path: not drawn
         t = Affine::translate(p.x, p.y) * Affine::rotate(angle) * Affine::translate(-half, by);
         if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
+        if (in.vertical) t = t * vertical_on_path(in, g);
     } else if (in.vertical) {
-        // Upright glyphs carry HarfBuzz's vertical offsets (centred on the line); sideways
-        // ones turn clockwise about the pen with their em box centred on the line.
-        t = Affine::translate(g.x, g.y);
-        if (!g.upright && g.font) {
-            const FontMetrics& m = g.font->metrics();
-            t = t * Affine::rotate_degrees(90) *
-                Affine::translate(0, (m.ascender + m.descender) / 2 * size / m.units_per_em - shift);
-        }
-        if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
+        t = vertical_cluster_transform(in, g, shift);
     } else {
         t = Affine::translate(g.x, by);
         if (g.ch < in.pos.size() && in.pos[g.ch].rotate) t = t * Affine::rotate_degrees(*in.pos[g.ch].rotate);
@@ -508,14 +472,24 @@ std::optional<Affine> cluster_transform(const TextInput& in, const Cluster& g,
 }
 
 // The decoration lines of cluster `g` of span `sp`, placed by `t`, centred on the font's offset
-// for each line (resvg and browsers).
-void decorate_cluster(const Span& sp, const Cluster& g, const Affine& t, OutlineSink& sink) {
+// for each line (resvg and browsers); `vertical`: `t` is the frame of vertical text's line.
+void decorate_cluster(const Span& sp, const Cluster& g, const Affine& t, bool vertical, OutlineSink& sink) {
     if (sp.decorations.empty() || !g.font) return;
-    const FontMetrics& m = g.font->metrics();
+    const FontMetrics& m = (vertical && g.primary ? g.primary : g.font)->metrics();
     const double s = sp.font.size / m.units_per_em;
     const double w = g.step / g.scale_x;
     for (const Decoration& d : sp.decorations) {
         double centre = 0, thick = 0;
+        if (vertical) {
+            // Along the line's frame, as resvg draws them (the specifications leave the
+            // offsets open): underline and overline half the line height of the span's first
+            // font to each side.
+            thick = m.underline_thickness > 0 ? m.underline_thickness : m.units_per_em / 14.0;
+            const double half = (m.ascender - m.descender) / 2;
+            centre = d.kind == Decoration::Underline ? -half : d.kind == Decoration::Overline ? half : 0;
+            sink.decorate(d, t, (-centre - thick / 2) * s, thick * s, w);
+            continue;
+        }
         if (d.kind == Decoration::Underline) {
             thick = m.underline_thickness > 0 ? m.underline_thickness : m.units_per_em / 14.0;
             centre = m.underline_position;
@@ -533,11 +507,13 @@ void decorate_cluster(const Span& sp, const Cluster& g, const Affine& t, Outline
 // The glyph outlines and decoration lines of every positioned cluster, and the text's box (the
 // union of the clusters' cells) when `box` is given.
 void outline_chunks(const TextInput& in, const std::vector<std::vector<Cluster>>& chunks, std::vector<Outline>& out,
-                    std::optional<Rect>* box) {
+                    std::optional<Rect>* box, const FontSet& fonts, std::vector<ColorGlyph>* color) {
     OutlineSink sink(out);
     std::vector<std::unique_ptr<PathWalker>> walkers(in.paths.size());
+    VerticalDecorationFrames frames;
     Path glyph;
     for (const std::vector<Cluster>& cl : chunks) {
+        frames.next_chunk();
         for (const Cluster& g : cl) {
             const Span& sp = in.spans[g.span];
             const double size = sp.font.size;
@@ -556,6 +532,13 @@ void outline_chunks(const TextInput& in, const std::vector<std::vector<Cluster>>
             }
             for (const Glyph& gl : g.glyphs) {
                 const double s = size / gl.font->units_per_em();
+                if (color && is_color_glyph(*gl.font, gl.id)) {
+                    if (std::shared_ptr<const Font> f = fonts.shared(gl.font)) {
+                        color->push_back(
+                            {sp.style, std::move(f), gl.id, size, t * Affine::translate(gl.x_off, gl.y_off)});
+                        continue;
+                    }
+                }
                 try {
                     gl.font->glyph_path(gl.id, glyph);
                 } catch (const Error&) { continue; }
@@ -563,7 +546,10 @@ void outline_chunks(const TextInput& in, const std::vector<std::vector<Cluster>>
                 sink.outline_for(Outline::Glyphs, sp.style)
                     .append(glyph, t * Affine::translate(gl.x_off, gl.y_off) * Affine::scale(s, -s));
             }
-            decorate_cluster(sp, g, t, sink);
+            if (in.vertical && sp.path < 0)
+                decorate_cluster(sp, g, frames.frame(in, g, baseline_shift(sp, g)), true, sink);
+            else
+                decorate_cluster(sp, g, t, false, sink);
         }
         sink.flush_decorations();
     }
@@ -572,7 +558,7 @@ void outline_chunks(const TextInput& in, const std::vector<std::vector<Cluster>>
 }  // namespace
 
 std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std::string>& warnings,
-                            std::optional<Rect>* box) {
+                            std::optional<Rect>* box, std::vector<ColorGlyph>* color) {
     const FlatText t = flat_text(in);
     std::vector<Outline> out;
     if (t.text.empty()) return out;
@@ -584,7 +570,7 @@ std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std
     for (std::size_t c = 0; c + 1 < starts.size(); ++c)
         chunks.push_back(shape_chunk(in, t, fonts, starts[c], starts[c + 1], levels, runs, warnings, warned_fonts));
     position_chunks(in, t, starts, chunks);
-    outline_chunks(in, chunks, out, box);
+    outline_chunks(in, chunks, out, box, fonts, color);
     return out;
 }
 

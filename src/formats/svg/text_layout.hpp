@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -94,6 +95,17 @@ struct Outline {
     Path path;
 };
 
+// A colour glyph (COLR layers or paint graph, CBDT or sbix bitmap), drawn in its own colours
+// rather than filled and stroked: `transform` maps its origin-relative layout space (y down,
+// px of `size` per em) to the text's user space.
+struct ColorGlyph {
+    std::size_t style = 0;
+    std::shared_ptr<const Font> font;
+    std::uint32_t glyph = 0;
+    double size = 0;
+    Affine transform;
+};
+
 // The fonts of one document: faces from a FontDatabase, opened once each (per variation), and,
 // with `system_fallback`, the system's fonts through fontconfig for characters none of them has.
 class FontSet {
@@ -109,12 +121,15 @@ public:
     // the same object for every chain with that first font: the faces it loads are loaded once
     // per document and live as long as this FontSet.
     SystemFontFallback* system(const Font& base);
+    // `font` as a shared pointer when it is one of this set's faces (null for a system fallback
+    // face), so that what is drawn later can keep it alive.
+    std::shared_ptr<const Font> shared(const Font* font) const;
 
 private:
     const Font* face(std::size_t index, const FontSpec& spec);
     std::shared_ptr<const FontDatabase> db_;
     bool system_fallback_ = false;
-    std::map<std::pair<std::size_t, std::string>, std::unique_ptr<Font>> fonts_;
+    std::map<std::pair<std::size_t, std::string>, std::shared_ptr<Font>> fonts_;
     std::vector<std::size_t> broken_;
     std::map<const Font*, std::unique_ptr<SystemFontFallback>> system_;
 };
@@ -122,7 +137,9 @@ private:
 // Lays out and outlines `in`. Warnings (missing fonts) go to `warnings`. `box`, when given,
 // receives the union of the glyph cells (advance by ascender to descender): the text's bounding
 // box for objectBoundingBox units, as resvg and browsers take it (not the ink's).
+// Colour glyphs go to `color` when it is given (their outlines, if any, are then left out), else
+// their outlines are filled like any glyph's.
 std::vector<Outline> layout(const TextInput& in, FontSet& fonts, std::vector<std::string>& warnings,
-                            std::optional<Rect>* box = nullptr);
+                            std::optional<Rect>* box = nullptr, std::vector<ColorGlyph>* color = nullptr);
 
 }  // namespace casteljau::svg_text
