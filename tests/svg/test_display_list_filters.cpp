@@ -70,3 +70,15 @@ TEST_CASE("svg filter conversion: a negative spot light exponent is 1", "[svg][d
         "<feDiffuseLighting><feSpotLight x='100' y='150' z='40' specularExponent='25'/></feDiffuseLighting>");
     CHECK(p.light.specular_exponent == 25);
 }
+
+TEST_CASE("svg filter conversion: a kernel whose values sum to zero has divisor 1", "[svg][display_list][filter]") {
+    // Filter Effects 1: the default divisor is the sum of the kernel's values, and 1 when that sum
+    // is zero. Eight times 0.1 and -0.8 sum to zero, although adding their nearest doubles leaves
+    // about -1e-16, which as a divisor would multiply every result by -9e15.
+    filter::Primitive p = first_primitive("<feConvolveMatrix kernelMatrix='0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 -0.8'/>");
+    CHECK(p.op == filter::Primitive::ConvolveMatrix);
+    CHECK(p.divisor == 1);
+    // A sum that is not zero stays the divisor.
+    p = first_primitive("<feConvolveMatrix kernelMatrix='0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 -0.7'/>");
+    CHECK(p.divisor == Approx(0.1));
+}

@@ -187,9 +187,14 @@ bool read_convolve_matrix(const pugi::xml_node& n, filter::Primitive& p) {
     auto k = numbers(n.attribute("kernelMatrix").value());
     if (!k || k->size() != static_cast<std::size_t>(p.order_x * p.order_y)) return false;
     p.kernel = *k;
-    double sum = 0;
-    for (double v : p.kernel) sum += v;
-    p.divisor = sum == 0 ? 1 : sum;
+    // The default divisor is the kernel's sum, 1 when that is zero. The values come from decimal
+    // text, so a sum within the rounding of its terms (0.1 x 8 - 0.8 leaves -1e-16) is zero.
+    double sum = 0, magnitude = 0;
+    for (double v : p.kernel) {
+        sum += v;
+        magnitude += std::abs(v);
+    }
+    p.divisor = std::abs(sum) <= 1e-9 * magnitude ? 1 : sum;
     if (n.attribute("divisor")) {
         auto d = number(n.attribute("divisor").value());
         if (!d || *d == 0) return false;
