@@ -383,14 +383,16 @@ private:
     // from its chord's d by an angle a. The cap stands square to t, across the line L through the
     // end perpendicular to t. On the side the path turns away from, the chord's rectangle falls
     // short of L: the sector the normal sweeps from d to t fills it. On the other side the
-    // rectangle reaches beyond L, into a wedge between L and the chord's own end line that is no
+    // rectangle reaches beyond L, into a wedge between L and the chord's own end line L0 that is no
     // part of the stroke, and is cut along L, when the curve's radius there is at least h. The
-    // radius is taken as r = len / (2 sin a): the circle through the chord's ends tangent to t.
-    // A tighter end has its centre of curvature C (on L, r from the end) inside the pen: the
-    // normals sweep past C and cover the wedge beyond it, so only the triangle between the end, C
-    // and the point r along the chord's end line is cut, and the end is otherwise joined like a
-    // smooth vertex to a segment of length zero along t. A cut must fit in what the chord has left
-    // (`room`, at most its length `len`); without room the end keeps the whole rectangle.
+    // radius is taken as r = len / (2 sin a): the circle through the chord's ends tangent to t,
+    // whose centre C lies on L, r from the end, and projects onto the chord's middle. A tighter
+    // end has C inside the pen: the chord's normals turn about C and, past it, sweep a cone of
+    // angle 2a beyond L. The wedge minus that cone is the triangle between the end, C and the
+    // point F at 2 r cos(a) along L0 (isosceles), cut off where F lies beyond the chord's side;
+    // that triangle is cut, and the end is otherwise joined like a smooth vertex to a segment of
+    // length zero along t. A cut must fit in what the chord has left (`room`, at most its length
+    // `len`); without room the end keeps the whole rectangle.
     // Returns how far the cut reaches along the chord, and sets `cap` to the direction the cap
     // stands on (pointing along the path).
 
