@@ -40,38 +40,6 @@ double flatness_bound_conic(Point p0, Point p1, Point p2, double w) {
     return w / (1 + w) * (p1 - m).length();
 }
 
-namespace {
-
-// Collects the flattened contours into a Polyline.
-struct PolylineSink {
-    Polyline& out;
-    std::size_t max_points = current_limits().flattened_segments;
-    bool open = false;
-    bool closed_flag = false;
-
-    void begin(Point p) {
-        end();
-        open = true;
-        point(p);
-    }
-    void point(Point p) {
-        if (out.points.size() >= max_points)
-            throw Error(ErrorKind::Limit, "path too complex: more than " + std::to_string(max_points) +
-                                              " line segments after flattening");
-        out.points.push_back(p);
-    }
-    void mark_closed() { closed_flag = true; }
-    void end() {
-        if (!open) return;
-        out.contour_ends.push_back(static_cast<std::uint32_t>(out.points.size()));
-        out.closed.push_back(closed_flag);
-        open = false;
-        closed_flag = false;
-    }
-};
-
-}  // namespace
-
 Rect check_flatten_input(const Path& path, const Affine& m, double tolerance) {
     if (!m.is_finite()) throw Error(ErrorKind::InvalidData, "transform has a non-finite entry");
     if (!(tolerance > 0) || !std::isfinite(tolerance))
@@ -111,7 +79,7 @@ void flatten_culled(const Path& path, const Affine& m, double tolerance, const R
     out.clear();
     check_flatten_input(path, m, tolerance);
     out.points.reserve(path.points().size() * 2);
-    PolylineSink sink{out};
+    flatten_detail::PolylineSink sink{out};
     flatten_into(path, m, tolerance, cull, sink, mode == FlattenMode::AreaBalanced);
 }
 

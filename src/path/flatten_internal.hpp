@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "casteljau/error.hpp"
 #include "casteljau/flatten.hpp"
@@ -28,6 +29,34 @@ inline double bound2_conic(Point p0, Point p1, Point p2, double w) {
 
 // Midpoint written so that it cannot overflow for finite inputs.
 inline Point mid(Point a, Point b) { return {a.x * 0.5 + b.x * 0.5, a.y * 0.5 + b.y * 0.5}; }
+
+// Collects the flattened contours into a Polyline, within Limits::flattened_segments points.
+struct PolylineSink {
+    Polyline& out;
+    std::size_t max_points = current_limits().flattened_segments;
+    bool open = false;
+    bool closed_flag = false;
+
+    void begin(Point p) {
+        end();
+        open = true;
+        point(p);
+    }
+    void point(Point p) {
+        if (out.points.size() >= max_points)
+            throw Error(ErrorKind::Limit, "path too complex: more than " + std::to_string(max_points) +
+                                              " line segments after flattening");
+        out.points.push_back(p);
+    }
+    void mark_closed() { closed_flag = true; }
+    void end() {
+        if (!open) return;
+        out.contour_ends.push_back(static_cast<std::uint32_t>(out.points.size()));
+        out.closed.push_back(closed_flag);
+        open = false;
+        closed_flag = false;
+    }
+};
 
 template <class Sink>
 struct Flattener {

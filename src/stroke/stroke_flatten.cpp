@@ -10,7 +10,6 @@
 // drawn as a curve" with a control point a hair from its end): the stroke then follows the chords,
 // as every renderer that strokes flattened curves does.
 #include <cmath>
-#include <string>
 
 #include "path/flatten_internal.hpp"
 #include "stroke/stroke_internal.hpp"
@@ -18,32 +17,21 @@
 namespace casteljau::stroke_detail {
 namespace {
 
+// The flattener's points into a Polyline, each with a smoothness flag (0 until the visitor knows).
 struct SmoothSink {
-    FlatContours& out;
-    std::size_t max_points = current_limits().flattened_segments;
-    bool open = false;
-    bool closed_flag = false;
+    flatten_detail::PolylineSink poly;
+    std::vector<std::uint8_t>& smooth;
 
     void begin(Point p) {
-        end();
-        open = true;
-        point(p);
+        poly.begin(p);
+        smooth.push_back(0);
     }
     void point(Point p) {
-        if (out.poly.points.size() >= max_points)
-            throw Error(ErrorKind::Limit, "path too complex: more than " + std::to_string(max_points) +
-                                              " line segments after flattening");
-        out.poly.points.push_back(p);
-        out.smooth.push_back(0);
+        poly.point(p);
+        smooth.push_back(0);
     }
-    void mark_closed() { closed_flag = true; }
-    void end() {
-        if (!open) return;
-        out.poly.contour_ends.push_back(static_cast<std::uint32_t>(out.poly.points.size()));
-        out.poly.closed.push_back(closed_flag);
-        open = false;
-        closed_flag = false;
-    }
+    void mark_closed() { poly.mark_closed(); }
+    void end() { poly.end(); }
 };
 
 // The unit vector of the first of `vs` longer than `near`, or (0, 0).
@@ -61,13 +49,13 @@ bool same_direction(Vec a, Vec b) { return a.dot(b) > 0 && std::abs(a.cross(b)) 
 class StrokeFlattener {
 public:
     StrokeFlattener(double tol, double near, FlatContours& out)
-        : near_(near), sink_{out}, f_{identity_, tol * tol, nullptr, sink_} {}
+        : near_(near), sink_{{out.poly}, out.smooth}, out_(out), f_{identity_, tol * tol, nullptr, sink_} {}
 
     void move(Point p) {
         finish();
         f_.move(p);
         open_ = true;
-        first_ = sink_.out.poly.points.size() - 1;
+        first_ = out_.poly.points.size() - 1;
         head_ = tail_ = {0, 0};
     }
     void line(Point a, Point b) {
@@ -90,13 +78,13 @@ public:
         if (!(last == start)) segment(start - last, start - last);
         f_.close(last, start);
         // The contour's start is where its last segment meets its first.
-        if (has_head_ && same_direction(tail_, head_)) sink_.out.smooth[first_] = 1;
+        if (has_head_ && same_direction(tail_, head_)) out_.smooth[first_] = 1;
     }
     void finish() {
         if (!open_) return;
         f_.finish_contour();
-        sink_.out.head.push_back(head_);
-        sink_.out.tail.push_back(tail_);
+        out_.head.push_back(head_);
+        out_.tail.push_back(tail_);
         open_ = false;
         has_head_ = false;
     }
@@ -110,7 +98,7 @@ private:
             head_ = u;
             has_head_ = true;
         } else if (same_direction(tail_, u)) {
-            sink_.out.smooth.back() = 1;
+            out_.smooth.back() = 1;
         }
         tail_ = w;
     }
@@ -118,15 +106,16 @@ private:
     template <class Flatten>
     void curve(Vec in, Vec out, Flatten&& flatten) {
         segment(in, out);
-        const std::size_t before = sink_.out.poly.points.size();
+        const std::size_t before = out_.poly.points.size();
         flatten();
         // Every point but the curve's end lies inside the curve.
-        for (std::size_t i = before; i + 1 < sink_.out.poly.points.size(); ++i) sink_.out.smooth[i] = 1;
+        for (std::size_t i = before; i + 1 < out_.poly.points.size(); ++i) out_.smooth[i] = 1;
     }
 
     double near_;
     Affine identity_{};
     SmoothSink sink_;
+    FlatContours& out_;
     flatten_detail::Flattener<SmoothSink> f_;
     bool open_ = false, has_head_ = false;
     std::size_t first_ = 0;
