@@ -109,9 +109,21 @@ struct Affine {
     std::optional<Affine> inverse() const;
     // Largest factor by which the transform stretches any vector (the matrix 2-norm).
     double max_scale() const;
+    // Smallest factor by which it stretches any vector (the smaller singular value; 0 when singular).
+    double min_scale() const;
     bool operator==(const Affine&) const = default;
 };
 
 Rect transform_bounds(const Affine& m, const Rect& r);
+
+// A segment swept by a disc: the points within `radius` of the segment from a to b (a disc when
+// a == b).
+struct Capsule {
+    Point a, b;
+    double radius = 0;
+
+    // Whether p lies in the capsule, its boundary included.
+    bool contains(Point p) const;
+};
 
 }  // namespace casteljau

@@ -40,6 +40,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "casteljau/flatten.hpp"
@@ -107,6 +108,14 @@ struct FillOptions {
     // the per-cell overlap check; Unknown lets fill() decide (see the top of this header). Only
     // read when exact_overlaps is on.
     Topology topology = Topology::Unknown;
+    // Capsules (pixel space) that the caller knows lie wholly inside the shape, such as the ones
+    // stroke_outline() gives with a stroke's outline. With the nonzero rule, a pixel that the
+    // overlap check would recompute exactly and that lies wholly inside one of them is full: the
+    // exact computation, which would find the same, is skipped. A capsule that does not lie inside
+    // the shape gives wrong pixels. Ignored under the even-odd rule. The span must outlive the
+    // fill. Cost: a sweep over the capsules that can hold a pixel, with a work budget of a few
+    // tests per capsule and per recomputed pixel.
+    std::span<const Capsule> inside;
 };
 
 // Receives coverage one row at a time, rows in increasing y. `coverage[i]` belongs to pixel
@@ -135,6 +144,9 @@ struct RasterStats {
     // fill had already spent twice its exact-work budget: only shapes that pile thousands of
     // crossing pieces into hundreds of pixels get there, and this bounds their time.
     std::size_t accumulated_cells = 0;
+    // Of the cells the overlap check marked, those found full inside FillOptions::inside (not
+    // counted in exact_cells).
+    std::size_t inside_cells = 0;
     double exact_work = 0;                  // piece visits the exact cells cost (bounded by the fill's size)
     std::size_t strips = 0;                 // dense buffers run: 1, or the bands of a large shape
     Topology topology = Topology::Unknown;  // the verdict the fill used (Unknown: exact_overlaps off)

@@ -177,7 +177,9 @@ void Canvas::stroke_path(const Path& path, const StrokeStyle& style, const Paint
     if (state_.clip.empty() || path.empty()) return;
     FillOptions opts = options;
     opts.rule = FillRule::NonZero;
-    fill_path(stroke(path, style, state_.transform, options.tolerance), paint, opts);
+    const StrokeOutline s = stroke_outline(path, style, state_.transform, options.tolerance);
+    opts.inside = s.inside;
+    fill_path(s.outline, paint, opts);
 }
 
 void Canvas::fill_mask(const Mask& mask, const Paint& paint) { fill_mask(mask, 0, 0, paint); }

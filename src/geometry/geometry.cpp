@@ -64,6 +64,22 @@ double Affine::max_scale() const {
     return std::sqrt(0.5 * (s1 + disc));
 }
 
+double Affine::min_scale() const {
+    // Smaller singular value of [a c; b d]: |det| / max_scale, which stays accurate when the two
+    // singular values are far apart.
+    const double top = max_scale();
+    return top > 0 ? std::abs(a * d - b * c) / top : 0.0;
+}
+
+bool Capsule::contains(Point p) const {
+    const Vec ab = b - a, ap = p - a;
+    const double len2 = ab.x * ab.x + ab.y * ab.y;
+    double t = len2 > 0 ? (ap.x * ab.x + ap.y * ab.y) / len2 : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    const double dx = ap.x - t * ab.x, dy = ap.y - t * ab.y;
+    return dx * dx + dy * dy <= radius * radius;
+}
+
 Rect transform_bounds(const Affine& m, const Rect& r) {
     const Point p[4] = {m.apply({r.x0, r.y0}), m.apply({r.x1, r.y0}), m.apply({r.x0, r.y1}), m.apply({r.x1, r.y1})};
     Rect out{p[0].x, p[0].y, p[0].x, p[0].y};

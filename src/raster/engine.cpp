@@ -401,7 +401,8 @@ void Engine::classify() {
     exact_at_.push_back(static_cast<std::uint32_t>(exact_ids_.size()));
 }
 
-void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats) {
+void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats,
+                    std::span<const Capsule> inside) {
     stats.segments = count_;
     stats.strips = 1;
     if (track_) {
@@ -431,6 +432,8 @@ void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
     scratch_.budget = kExactWorkBase + kExactWorkPerSegment * static_cast<double>(count_);
     scratch_.work = 0;
     scratch_.dense_cells = 0;
+    const bool hinted = rule == FillRule::NonZero && !inside.empty() && !exact_.empty();
+    if (hinted) inside_.reset(inside, ox, oy, w_, h_, exact_.size());
     for (std::size_t ei = 0; ei < exact_.size(); ++ei) {
         const std::size_t cell = exact_[ei];
         const int r = static_cast<int>(cell / stride_);
@@ -443,6 +446,12 @@ void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
         const double* acc_row = acc_.data() + row_base;
         for (; pos <= col; ++pos) prefix += acc_row[pos];
         if (col >= w_) continue;
+        if (hinted && inside_.covers(col, r)) {
+            patches_.push_back({exact_[ei], 255});
+            ++stats.inside_cells;
+            --stats.exact_cells;
+            continue;
+        }
         if (scratch_.work >= kExactWorkCeiling * scratch_.budget) {
             patches_.push_back({exact_[ei], coverage_u8(prefix, rule)});
             ++stats.accumulated_cells;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "raster/inside_cells.hpp"
 #include "raster/raster_internal.hpp"
 
 namespace casteljau::raster {
@@ -55,8 +56,10 @@ public:
     inline void push(double x0, double y0, double x1, double y1);
     // The current contour is complete (its closing edge was pushed).
     void contour_end();
-    // Resolves the marked cells and hands the rows to the sink, at pixel offset (ox, oy).
-    void finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats);
+    // Resolves the marked cells and hands the rows to the sink, at pixel offset (ox, oy). Marked
+    // cells wholly inside one of `inside` (pixel space) are full under the nonzero rule.
+    void finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats,
+                std::span<const Capsule> inside = {});
     // Frees the per-edge and per-visit lists that hold room for more than `records` entries (the
     // dense buffers stay: a strip bounds them). Between shapes only.
     void trim(std::size_t records);
@@ -131,6 +134,7 @@ private:
     std::vector<std::pair<std::uint32_t, std::uint8_t>> patches_;
     std::vector<ExactScratch::Piece> pa_, pb_;
     ExactScratch scratch_;
+    InsideCells inside_;
     // Walk state.
     static constexpr std::uint32_t kNoCell = 0xffffffffu;
     std::uint32_t cur_cell_ = kNoCell;

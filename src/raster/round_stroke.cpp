@@ -30,7 +30,7 @@
 namespace casteljau {
 namespace {
 
-struct Capsule {
+struct SweptSegment {
     double ax, ay, bx, by;  // the segment's ends
     double y0, y1;          // vertical extent, the radius included
     double x0;              // left end of the horizontal extent, the radius included
@@ -42,8 +42,8 @@ struct Capsule {
     bool band = false, vertical = false;
 };
 
-Capsule make_capsule(const LineSegment& s, double r) {
-    Capsule k{
+SweptSegment make_capsule(const LineSegment& s, double r) {
+    SweptSegment k{
         s.a.x, s.a.y, s.b.x, s.b.y, std::min(s.a.y, s.b.y) - r, std::max(s.a.y, s.b.y) + r, std::min(s.a.x, s.b.x) - r};
     const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, len = std::hypot(dx, dy);
     if (!(len > 0) || !std::isfinite(len)) return k;  // a disc
@@ -67,7 +67,7 @@ Capsule make_capsule(const LineSegment& s, double r) {
 
 // The interval [lo, hi] of x where the line y = c lies within r of capsule k; false when the line
 // misses it. The capsule is convex, so its section is the hull of its two end discs' and its band's.
-bool capsule_section(const Capsule& k, double r, double c, double& lo, double& hi) {
+bool capsule_section(const SweptSegment& k, double r, double c, double& lo, double& hi) {
     lo = INFINITY;
     hi = -INFINITY;
     auto disc = [&](double px, double py) {
@@ -100,18 +100,18 @@ bool capsule_section(const Capsule& k, double r, double c, double& lo, double& h
 }
 
 // The capsules that can reach `clip`, sorted by the top of their extent.
-std::vector<Capsule> capsules_in(std::span<const LineSegment> segments, double r, const IRect& clip) {
-    std::vector<Capsule> caps;
+std::vector<SweptSegment> capsules_in(std::span<const LineSegment> segments, double r, const IRect& clip) {
+    std::vector<SweptSegment> caps;
     caps.reserve(segments.size());
     for (const LineSegment& s : segments) {
         if (!s.a.is_finite() || !s.b.is_finite())
             throw Error(ErrorKind::InvalidArgument, "round_stroke_mask: segment coordinates must be finite");
         if (std::max(s.a.y, s.b.y) + r <= clip.y0 || std::min(s.a.y, s.b.y) - r >= clip.y1) continue;
         if (std::max(s.a.x, s.b.x) + r <= clip.x0 || std::min(s.a.x, s.b.x) - r >= clip.x1) continue;
-        const Capsule k = make_capsule(s, r);
+        const SweptSegment k = make_capsule(s, r);
         caps.push_back(k);
     }
-    std::sort(caps.begin(), caps.end(), [](const Capsule& p, const Capsule& q) { return p.y0 < q.y0; });
+    std::sort(caps.begin(), caps.end(), [](const SweptSegment& p, const SweptSegment& q) { return p.y0 < q.y0; });
     return caps;
 }
 
@@ -195,7 +195,7 @@ void round_stroke_mask(std::span<const LineSegment> segments, double radius, con
     if (clip.width() > limits::kMaxCanvasDimension || clip.height() > limits::kMaxCanvasDimension)
         throw Error(ErrorKind::Limit, "round_stroke_mask: the clip exceeds " +
                                           std::to_string(limits::kMaxCanvasDimension) + " pixels per side");
-    const std::vector<Capsule> caps = capsules_in(segments, radius, clip);
+    const std::vector<SweptSegment> caps = capsules_in(segments, radius, clip);
     mask.bounds = clip;
     const int w = clip.width();
     mask.data.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(clip.height()), 0);
@@ -224,7 +224,7 @@ void round_stroke_mask(std::span<const LineSegment> segments, double radius, con
             const double c = j + (s + 0.5) * step;
             spans.clear();
             for (std::uint32_t i : active) {
-                const Capsule& k = caps[i];
+                const SweptSegment& k = caps[i];
                 double lo, hi;
                 if (c > k.y0 && c < k.y1 && capsule_section(k, radius, c, lo, hi)) spans.emplace_back(lo, hi);
             }

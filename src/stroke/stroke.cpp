@@ -63,6 +63,7 @@ public:
         const double ratio = std::min(1.0, tol / h_);
         step_ = std::max(4 * std::asin(std::sqrt(ratio / 2)), 2 * kPi / kMaxArcStepsPerTurn);
         step_ = std::min(step_, kPi / 2);
+        sin_step_ = std::sin(step_);
     }
 
     void contour(std::span<const Point> pts, std::span<const std::uint8_t> smooth, bool closed, Point dir_hint,
@@ -276,13 +277,19 @@ private:
         const Vec n1 = perp(d1) * s, n2 = perp(d2) * s;  // outer normals
         std::vector<Point>& outer = outer_left ? left_ : right_;
         std::vector<Point>& inner = outer_left ? right_ : left_;
-        const double sn = std::abs(cr), angle = std::atan2(sn, dt);
+        const double sn = std::abs(cr);
+        // The turn's angle. A forward turn of at most one arc step (sin below sin(step)) draws no
+        // arc points, so most smooth vertices of a finely flattened curve skip the atan2.
+        const bool within_step = dt > 0 && sn <= sin_step_;
+        const double angle = within_step && !(smooth && len1 < h_ && len2 < h_) ? 0.0 : std::atan2(sn, dt);
 
         outer.push_back(v + n1 * h_);
         // Where the path is smooth there is no corner to join: the pen's normal turns with the curve.
         switch (smooth ? LineJoin::Round : st_.join) {
             case LineJoin::Bevel: break;
-            case LineJoin::Round: arc(outer, v, n1, -s * angle); break;
+            case LineJoin::Round:
+                if (!within_step) arc(outer, v, n1, -s * angle);
+                break;
             case LineJoin::Miter:
             case LineJoin::MiterClip: miter(outer, v, d1, d2, n1, n2, dt); break;
         }
@@ -510,6 +517,7 @@ private:
     double eps_ = 0;
     double tol_ = 0;
     double step_ = kPi / 2;
+    double sin_step_ = 1;
     std::size_t total_ = 0;
     const std::size_t max_points_ = current_limits().path_points;
     std::vector<Point> q_, left_, right_;
@@ -567,7 +575,11 @@ double stroke_merge_distance(const Affine& m, double tolerance) {
     return stroke_detail::user_tolerance(m, tolerance) * stroke_detail::kMergeFactor;
 }
 
-Path stroke(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance) {
+namespace {
+
+// stroke() and stroke_outline(): the outline, and the capsules inside it when `inside` is given.
+Path stroke_with(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance,
+                 std::vector<Capsule>* inside) {
     using namespace stroke_detail;
     const double tol = user_tolerance(m, tolerance);
     check_finite(path);
@@ -581,13 +593,27 @@ Path stroke(const Path& path, const StrokeStyle& style, const Affine& m, double 
     flatten_for_stroke(path, tol, tangent_resolution(style.width, tol), flat);
     if (pattern.empty()) {
         stroke_polyline(flat, {}, style, tol, out);
+        if (inside) interior_capsules(flat, style, tol, m, *inside);
     } else {
         FlatContours dashed;
         std::vector<Point> dirs;
         dash_polyline(flat, pattern, style.dash_offset, dashed, dirs);
         stroke_polyline(dashed, dirs, style, tol, out);
+        if (inside) interior_capsules(dashed, style, tol, m, *inside);
     }
     return out;
+}
+
+}  // namespace
+
+Path stroke(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance) {
+    return stroke_with(path, style, m, tolerance, nullptr);
+}
+
+StrokeOutline stroke_outline(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance) {
+    StrokeOutline o;
+    o.outline = stroke_with(path, style, m, tolerance, &o.inside);
+    return o;
 }
 
 Path dash(const Path& path, std::span<const double> dashes, double offset, const Affine& m, double tolerance) {

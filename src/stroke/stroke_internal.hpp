@@ -66,4 +66,9 @@ void dash_polyline(const FlatContours& in, std::span<const double> pattern, doub
 void stroke_polyline(const FlatContours& flat, std::span<const Point> dirs, const StrokeStyle& style, double tol,
                      Path& out);
 
+// Appends to `out` the pixel-space capsules (under `m`) that lie wholly inside the outline
+// stroke_polyline(flat, ..., style, tol) draws: see stroke_outline() in casteljau/stroke.hpp.
+void interior_capsules(const FlatContours& flat, const StrokeStyle& style, double tol, const Affine& m,
+                       std::vector<Capsule>& out);
+
 }  // namespace casteljau::stroke_detail

@@ -1,0 +1,120 @@
+// stroke_outline()'s interior capsules: they lie inside the outline, so filling with them as the
+// rasterizer's FillOptions::inside gives the same pixels while skipping exact cells.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "casteljau/raster.hpp"
+#include "casteljau/stroke.hpp"
+
+using namespace casteljau;
+
+namespace {
+
+// A random path of lines, quadratics and cubics in a 100 x 100 box, sometimes closed.
+Path random_path(std::mt19937& rng) {
+    std::uniform_real_distribution<double> u(0, 1);
+    auto pt = [&] { return Point{100 * u(rng), 100 * u(rng)}; };
+    Path p;
+    p.move_to(pt());
+    const int n = 1 + static_cast<int>(rng() % 6);
+    for (int j = 0; j < n; ++j) {
+        switch (rng() % 3) {
+            case 0: p.line_to(pt()); break;
+            case 1: p.quad_to(pt(), pt()); break;
+            default: p.cubic_to(pt(), pt(), pt());
+        }
+    }
+    if (rng() % 3 == 0) p.close();
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("stroke_outline: interior capsules leave every pixel of random strokes unchanged", "[stroke][interior]") {
+    std::mt19937 rng(20261128);
+    std::uniform_real_distribution<double> u(0, 1);
+    Rasterizer raster;
+    std::size_t inside = 0, exact = 0;
+    for (int i = 0; i < 400; ++i) {
+        const Path path = random_path(rng);
+        StrokeStyle st;
+        st.width = 0.3 + 24 * u(rng) * u(rng);
+        st.join = rng() % 4 ? LineJoin::Round : LineJoin::Miter;
+        st.cap = static_cast<LineCap>(rng() % 3);
+        if (rng() % 4 == 0) st.dashes = {2 + 20 * u(rng), 1 + 10 * u(rng)};
+        Affine m;
+        if (rng() % 3 == 0) m = Affine::rotate(6 * u(rng)) * Affine{1 + u(rng), 0.3 * u(rng), 0, 0.5 + u(rng), 0, 0};
+        const double tol = rng() % 2 ? 0.015 : 0.25;
+        const StrokeOutline s = stroke_outline(path, st, m, tol);
+        REQUIRE(s.outline == stroke(path, st, m, tol));
+        FillOptions plain;
+        plain.tolerance = tol;
+        FillOptions hinted = plain;
+        hinted.inside = s.inside;
+        const Mask a = raster.fill_mask(s.outline, m, plain);
+        exact += raster.last_stats().exact_cells;
+        const Mask b = raster.fill_mask(s.outline, m, hinted);
+        inside += raster.last_stats().inside_cells;
+        INFO("case " << i << ": width " << st.width << ", join " << int(st.join) << ", cap " << int(st.cap));
+        REQUIRE(a.bounds == b.bounds);
+        REQUIRE(a.data == b.data);
+    }
+    // The capsules took a good share of the exact work (about 15 % of the cells here).
+    CHECK(inside * 10 > exact);
+}
+
+TEST_CASE("stroke_outline: the capsules of an open polyline keep clear of its ends", "[stroke][interior]") {
+    Path p;
+    p.move_to(0, 0);
+    p.line_to(100, 0);
+    p.line_to(100, 100);
+    p.line_to(0, 100);
+    StrokeStyle st;
+    st.width = 10;
+    st.join = LineJoin::Round;
+    // The first and last segments end at the open ends; the middle one lies 100 behind both ends'
+    // lines. Radius: h - 3 x tolerance.
+    const StrokeOutline s = stroke_outline(p, st, Affine{}, 0.05);
+    REQUIRE(s.inside.size() == 1);
+    CHECK(s.inside[0].a == Point{100, 0});
+    CHECK(s.inside[0].b == Point{100, 100});
+    CHECK(s.inside[0].radius == Approx(4.85));
+    // Under a scale of 2 the pixel-space capsule doubles.
+    const StrokeOutline s2 = stroke_outline(p, st, Affine::scale(2), 0.05);
+    REQUIRE(s2.inside.size() == 1);
+    CHECK(s2.inside[0].b == Point{200, 200});
+    CHECK(s2.inside[0].radius == Approx(2 * (5 - 3 * 0.025)));
+    // Miter joins may leave a corner's outside short of the pen: no capsules.
+    st.join = LineJoin::Miter;
+    CHECK(stroke_outline(p, st, Affine{}, 0.05).inside.empty());
+    // Closed, every segment keeps one.
+    st.join = LineJoin::Round;
+    p.close();
+    CHECK(stroke_outline(p, st, Affine{}, 0.05).inside.size() == 4);
+}
+
+TEST_CASE("stroke_outline: no capsules for pens too thin to hold a pixel or contours of no length",
+          "[stroke][interior]") {
+    Path p;
+    p.move_to(0, 0);
+    p.line_to(100, 0);
+    p.line_to(100, 100);
+    p.line_to(0, 100);
+    p.close();
+    StrokeStyle st;
+    st.join = LineJoin::Round;
+    st.width = 1.4;  // radius 0.7 - 3 tol: under sqrt(1/2)
+    CHECK(stroke_outline(p, st, Affine{}, 0.01).inside.empty());
+    st.width = 1.6;
+    CHECK(stroke_outline(p, st, Affine{}, 0.01).inside.size() == 4);
+    CHECK(stroke_outline(p, st, Affine::scale(0.5), 0.01).inside.empty());
+    // A closed contour of zero length draws nothing with butt caps: no capsule may claim it.
+    Path dot;
+    dot.move_to(50, 50);
+    dot.line_to(50, 50);
+    dot.close();
+    st.width = 20;
+    CHECK(stroke_outline(dot, st, Affine{}, 0.05).inside.empty());
+}
