@@ -102,7 +102,7 @@ public:
         last_reach_ = 0;
         for (std::size_t i = 0; i < nseg; ++i) {
             const Vec v = q_[(i + 1) % np] - q_[i];
-            len_[i] = v.length();
+            len_[i] = std::sqrt(v.dot(v));  // points are apart by more than eps_: no underflow
             dir_[i] = v / len_[i];
         }
         left_.clear();
@@ -502,8 +502,15 @@ private:
         if (pts.size() < 2) return;
         total_ += pts.size() + 1;
         if (total_ > max_points_) throw Error(ErrorKind::Limit, "stroke: outline exceeds the path size limit");
-        for (const Point& p : pts)
-            if (!p.is_finite()) throw Error(ErrorKind::Limit, "stroke: outline coordinates overflow");
+        bool repeats = false;
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            if (!pts[i].is_finite()) throw Error(ErrorKind::Limit, "stroke: outline coordinates overflow");
+            repeats = repeats || (i > 0 && pts[i] == pts[i - 1]);
+        }
+        if (!repeats) {  // the common case, in one piece
+            out_.add_polygon(pts, true);
+            return;
+        }
         out_.move_to(pts[0]);
         for (std::size_t i = 1; i < pts.size(); ++i)
             if (!(pts[i] == pts[i - 1])) out_.line_to(pts[i]);
