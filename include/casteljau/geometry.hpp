@@ -126,4 +126,24 @@ struct Capsule {
     bool contains(Point p) const;
 };
 
+// The points p with (p - at) . out <= 0: the side of the line through `at` that `out` points away
+// from.
+struct HalfPlane {
+    Point at;
+    Vec out;
+    bool contains(Point p) const { return (p - at).dot(out) <= 0; }
+};
+
+// A capsule less what lies beyond up to two lines: the points of `capsule` in every one of
+// cuts[0 .. cut_count). Convex, as both its parts are.
+struct CutCapsule {
+    Capsule capsule;
+    HalfPlane cuts[2] = {};
+    int cut_count = 0;
+
+    CutCapsule() = default;
+    CutCapsule(const Capsule& c) : capsule(c) {}  // NOLINT: a capsule is a cut capsule with no cut
+    bool contains(Point p) const;
+};
+
 }  // namespace casteljau

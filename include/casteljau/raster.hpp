@@ -108,14 +108,14 @@ struct FillOptions {
     // the per-cell overlap check; Unknown lets fill() decide (see the top of this header). Only
     // read when exact_overlaps is on.
     Topology topology = Topology::Unknown;
-    // Capsules (pixel space) that the caller knows lie wholly inside the shape, such as the ones
-    // stroke_outline() gives with a stroke's outline. With the nonzero rule, a pixel that the
+    // Capsules, possibly cut by lines (pixel space), that the caller knows lie wholly inside the
+    // shape, such as the ones stroke_outline() gives with a stroke's outline. With the nonzero rule, a pixel that the
     // overlap check would recompute exactly and that lies wholly inside one of them is full: the
     // exact computation, which would find the same, is skipped. A capsule that does not lie inside
     // the shape gives wrong pixels. Ignored under the even-odd rule. The span must outlive the
     // fill. Cost: a sweep over the capsules that can hold a pixel, with a work budget of a few
     // tests per capsule and per recomputed pixel.
-    std::span<const Capsule> inside;
+    std::span<const CutCapsule> inside;
 };
 
 // Receives coverage one row at a time, rows in increasing y. `coverage[i]` belongs to pixel

@@ -84,18 +84,17 @@ Path stroke(const Path& path, const StrokeStyle& style, const Affine& m = {}, do
 // their exact computation where the outline's pieces pile up (round joins, tight bends, the
 // pivots of inner joins) and the stroke covers the pixel anyway.
 // Which capsules: with round joins, one per segment of the flattened (and dashed) centre line,
-// radius (width / 2 - 3 x user tolerance) x m.min_scale(), on contours at least `width` long,
-// except segments near an open end: a segment keeps its capsule when it lies at least 2 x width
-// from the end, or when the capsule lies wholly behind the line through the end square to the
-// path's direction there (an end where the path turns sharply within its first chord allows
-// only the former). The stroke holds every point within width / 2 of its centre line except
-// beyond or near its open ends (caps, and the cuts of tight ends) and, with other joins, outside
-// corners; the margin covers the flattening of round joins and the swept wedges left out when
-// shallower than the tolerance. Other joins give no capsules for contours with a corner.
-// Capsules that cannot hold a pixel (radius under sqrt(1/2) pixel) are left out.
+// radius (width / 2 - 3 x user tolerance) x m.min_scale(), on contours at least `width` long.
+// Near an open end (closer than 2 x width) a capsule that does not lie wholly behind the line
+// through the end square to the path's direction there is cut by that line, or dropped where the
+// path turns sharply within its first chord. The stroke holds every point within width / 2 of its
+// centre line except beyond or near its open ends (caps, and the cuts of tight ends) and, with
+// other joins, outside corners; the margin covers the flattening of round joins and the swept
+// wedges left out when shallower than the tolerance. Other joins give no capsules for contours
+// with a corner. Capsules that cannot hold a pixel (radius under sqrt(1/2) pixel) are left out.
 struct StrokeOutline {
     Path outline;
-    std::vector<Capsule> inside;
+    std::vector<CutCapsule> inside;
 };
 StrokeOutline stroke_outline(const Path& path, const StrokeStyle& style, const Affine& m = {}, double tolerance = 0.05);
 

@@ -80,6 +80,12 @@ bool Capsule::contains(Point p) const {
     return dx * dx + dy * dy <= radius * radius;
 }
 
+bool CutCapsule::contains(Point p) const {
+    for (int k = 0; k < cut_count; ++k)
+        if (!cuts[k].contains(p)) return false;
+    return capsule.contains(p);
+}
+
 Rect transform_bounds(const Affine& m, const Rect& r) {
     const Point p[4] = {m.apply({r.x0, r.y0}), m.apply({r.x1, r.y0}), m.apply({r.x0, r.y1}), m.apply({r.x1, r.y1})};
     Rect out{p[0].x, p[0].y, p[0].x, p[0].y};

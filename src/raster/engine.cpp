@@ -402,7 +402,7 @@ void Engine::classify() {
 }
 
 void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats,
-                    std::span<const Capsule> inside) {
+                    std::span<const CutCapsule> inside) {
     stats.segments = count_;
     stats.strips = 1;
     if (track_) {

@@ -59,7 +59,7 @@ public:
     // Resolves the marked cells and hands the rows to the sink, at pixel offset (ox, oy). Marked
     // cells wholly inside one of `inside` (pixel space) are full under the nonzero rule.
     void finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats,
-                std::span<const Capsule> inside = {});
+                std::span<const CutCapsule> inside = {});
     // Frees the per-edge and per-visit lists that hold room for more than `records` entries (the
     // dense buffers stay: a strip bounds them). Between shapes only.
     void trim(std::size_t records);

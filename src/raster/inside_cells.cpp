@@ -6,19 +6,26 @@
 
 namespace casteljau::raster {
 
-void InsideCells::reset(std::span<const Capsule> capsules, int ox, int oy, int w, int h, std::size_t queries) {
+void InsideCells::reset(std::span<const CutCapsule> capsules, int ox, int oy, int w, int h, std::size_t queries) {
     items_.clear();
     order_.clear();
     active_.clear();
     next_row_ = 0;
     constexpr double kHalfDiagonal = 0.70710678118654757;  // a disc must be this wide to hold a cell
-    for (const Capsule& c : capsules) {
+    const Point origin(ox, oy);
+    for (const CutCapsule& cc : capsules) {
+        const Capsule& c = cc.capsule;
         if (!(c.radius >= kHalfDiagonal) || !std::isfinite(c.radius) || !c.a.is_finite() || !c.b.is_finite()) continue;
-        Item it{{c.a - Point(ox, oy), c.b - Point(ox, oy), c.radius}, 0, 0, 0, 0};
-        it.top = std::min(it.cap.a.y, it.cap.b.y) - c.radius;
-        it.bottom = std::max(it.cap.a.y, it.cap.b.y) + c.radius;
-        it.left = std::min(it.cap.a.x, it.cap.b.x) - c.radius;
-        it.right = std::max(it.cap.a.x, it.cap.b.x) + c.radius;
+        if (cc.cut_count < 0 || cc.cut_count > 2) continue;
+        Item it{cc, 0, 0, 0, 0};
+        it.cap.capsule.a = c.a - origin;
+        it.cap.capsule.b = c.b - origin;
+        for (int k = 0; k < cc.cut_count; ++k) it.cap.cuts[k].at = cc.cuts[k].at - origin;
+        const Capsule& t = it.cap.capsule;
+        it.top = std::min(t.a.y, t.b.y) - c.radius;
+        it.bottom = std::max(t.a.y, t.b.y) + c.radius;
+        it.left = std::min(t.a.x, t.b.x) - c.radius;
+        it.right = std::max(t.a.x, t.b.x) + c.radius;
         // The first row whose cells can lie inside: the box must reach from the row's top to its
         // bottom, within the engine's rows.
         const double first = std::max(0.0, std::ceil(it.top));
@@ -53,7 +60,7 @@ bool InsideCells::covers(int col, int row) {
         --budget_;
         const Item& it = items_[i];
         if (it.left > x0 || it.right < x1) continue;
-        const Capsule& c = it.cap;
+        const CutCapsule& c = it.cap;
         if (c.contains({x0, y0}) && c.contains({x1, y0}) && c.contains({x0, y1}) && c.contains({x1, y1})) return true;
     }
     return false;

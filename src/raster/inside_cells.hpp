@@ -1,10 +1,10 @@
 // Raster stage, internal: which cells lie wholly inside capsules the caller knows are inside the
 // shape (FillOptions::inside), asked cell after cell in increasing rows by Engine::finish.
 //
-// The capsules that can hold a unit square (radius at least sqrt(1/2)) and reach the engine's box
-// are kept in cell coordinates, bucketed by the first row their boxes span whole. A sweep down the
+// The capsules (possibly cut by lines) that can hold a unit square (radius at least sqrt(1/2)) and
+// reach the engine's box are kept in cell coordinates, bucketed by the first row their boxes span whole. A sweep down the
 // rows keeps the ones whose box spans the current row; a cell is inside when one of them holds all four corners
-// (a capsule is convex). Each query costs the active capsules it tests, and the tests of one fill
+// (a cut capsule is convex). Each query costs the active capsules it tests, and the tests of one fill
 // stop at a budget of kTestsPerItem per capsule and per query: past it every cell gets "no",
 // which only sends it to the exact computation.
 #pragma once
@@ -21,7 +21,7 @@ class InsideCells {
 public:
     // Takes the capsules (pixel space) that can hold a cell of the box of w x h cells whose
     // top-left cell is pixel (ox, oy). `queries` bounds the number of covers() calls to come.
-    void reset(std::span<const Capsule> capsules, int ox, int oy, int w, int h, std::size_t queries);
+    void reset(std::span<const CutCapsule> capsules, int ox, int oy, int w, int h, std::size_t queries);
     bool empty() const { return items_.empty(); }
     // Whether cell (col, row) lies wholly inside one of the capsules; rows may not decrease
     // between calls.
@@ -29,7 +29,7 @@ public:
 
 private:
     struct Item {
-        Capsule cap;                      // cell coordinates
+        CutCapsule cap;                   // cell coordinates
         double top, bottom, left, right;  // top: the first row whose cells may lie inside
     };
     static constexpr std::size_t kTestsPerItem = 8;

@@ -586,7 +586,7 @@ namespace {
 
 // stroke() and stroke_outline(): the outline, and the capsules inside it when `inside` is given.
 Path stroke_with(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance,
-                 std::vector<Capsule>* inside) {
+                 std::vector<CutCapsule>* inside) {
     using namespace stroke_detail;
     const double tol = user_tolerance(m, tolerance);
     check_finite(path);

@@ -8,13 +8,15 @@
 //     through the offset lines' intersection where the rectangles' union is that corner).
 //   - q at a vertex: p lies in the vertex's normal cone, on the outer side of the turn, which a
 //     round join (or, at a smooth vertex, the always-round sweep) fills up to h.
-//   - q at an open end E, or p where the end changes the stroke: excluded. What the end draws
-//     differs from the ideal only beyond the line through E square to the path's direction there
-//     (caps, the chord's rectangle cut along that line) and, at a tight end (the path turning by
-//     a right angle or more within its first chord, or on a radius under h), in a triangle within
-//     2h of E. So a segment keeps its capsule when the capsule lies wholly behind that line
-//     (not at a tight end), or when the segment is at least 4h from E: then every p is more than
-//     4h - r > 2h from E, and farther from E than from s, so q is not E.
+//   - q at an open end E, or p where the end changes the stroke. What the end draws differs from
+//     the ideal only beyond the line L through E square to the path's direction there (caps, the
+//     chord's rectangle cut along L; behind L the sweep from the chord's direction to the path's
+//     covers what lies within h of E) and, at a tight end (the path turning by a right angle or
+//     more within its first chord, or on a radius under h), in a triangle within 2h of E. So a
+//     segment keeps its whole capsule when it is at least 4h from E (every p is then more than
+//     4h - r > 2h from E, and nearer s than E, so q is not E) or when the capsule lies wholly
+//     behind L; else, at an end that is not tight, its capsule is cut by L (moved back by the
+//     tolerance); at a tight end it is dropped.
 // The outline is short of this ideal by the flattening of round arcs (chords within the
 // tolerance) and the swept wedges it leaves out when they reach less than the tolerance: radius
 // h - 3 tol keeps clear of both. Under m the capsule's image holds the capsule of radius
@@ -35,16 +37,21 @@ double distance_squared_to_segment(Point p, Point a, Point b) {
     return d.dot(d);
 }
 
-// What an open end allows: a segment keeps its capsule when the segment is at least `away` (4h)
-// from the end, or, unless the end is tight (`out` zero), when the capsule lies wholly behind the
-// line through the end square to `out` (the path's outward unit direction there), by `behind`.
+// What an open end does to a segment's capsule: nothing when the segment lies at least `away` (4h)
+// from the end or the capsule lies wholly behind the line through the end square to `out` (the
+// path's outward unit direction there) by `behind`; else, unless the end is tight (`out` zero),
+// the capsule is cut by that line moved `margin` behind; at a tight end it is dropped.
 struct OpenEnd {
     Point at;
     Vec out;
-    bool allows(Point a, Point b, double behind, double away) const {
-        if (out != Vec{0, 0} && std::max((a - at).dot(out), (b - at).dot(out)) <= -behind) return true;
-        return distance_squared_to_segment(at, a, b) >= away * away;
+    enum Effect { Keep, Cut, Drop };
+    Effect effect(Point a, Point b, double behind, double away) const {
+        const bool has_line = out != Vec{0, 0};
+        if (has_line && std::max((a - at).dot(out), (b - at).dot(out)) <= -behind) return Keep;
+        if (distance_squared_to_segment(at, a, b) >= away * away) return Keep;
+        return has_line ? Cut : Drop;
     }
+    HalfPlane line(double margin) const { return {at - out * margin, out}; }
 };
 
 // The end at `e`, whose first chord goes to `q` (the first point apart from it), the path leaving
@@ -68,7 +75,7 @@ OpenEnd open_end(Point e, Point q, Vec t, double h, double tol) {
 }  // namespace
 
 void interior_capsules(const FlatContours& flat, const StrokeStyle& style, double tol, const Affine& m,
-                       std::vector<Capsule>& out) {
+                       std::vector<CutCapsule>& out) {
     const double h = style.width / 2, r = h - 3 * tol, scale = m.min_scale();
     constexpr double kHalfDiagonal = 0.70710678118654757;  // a capsule thinner than this holds no pixel
     if (!(r > 0) || !(r * scale >= kHalfDiagonal) || !std::isfinite(r * scale)) return;
@@ -103,8 +110,21 @@ void interior_capsules(const FlatContours& flat, const StrokeStyle& style, doubl
         const std::size_t segs = closed ? pts.size() : pts.size() - 1;
         for (std::size_t i = 0; i < segs; ++i) {
             const Point a = pts[i], b = pts[(i + 1) % pts.size()];
-            if (!closed && !(ends[0].allows(a, b, r + tol, 4 * h) && ends[1].allows(a, b, r + tol, 4 * h))) continue;
-            out.push_back({m.apply(a), m.apply(b), r * scale});
+            CutCapsule cc(Capsule{m.apply(a), m.apply(b), r * scale});
+            bool keep = true;
+            for (int k = 0; k < (closed ? 0 : 2) && keep; ++k) {
+                const OpenEnd::Effect e = ends[k].effect(a, b, r + tol, 4 * h);
+                keep = e != OpenEnd::Drop;
+                if (e == OpenEnd::Cut) {
+                    // The cut in pixel space: the line's image, `out` turned into its normal there.
+                    const HalfPlane hp = ends[k].line(tol);
+                    const Vec along = m.apply_vector(Vec{-hp.out.y, hp.out.x});
+                    Vec n{along.y, -along.x};
+                    if (n.dot(m.apply_vector(hp.out)) < 0) n = -n;
+                    cc.cuts[cc.cut_count++] = {m.apply(hp.at), n};
+                }
+            }
+            if (keep) out.push_back(cc);
         }
     }
 }

@@ -69,6 +69,6 @@ void stroke_polyline(const FlatContours& flat, std::span<const Point> dirs, cons
 // Appends to `out` the pixel-space capsules (under `m`) that lie wholly inside the outline
 // stroke_polyline(flat, ..., style, tol) draws: see stroke_outline() in casteljau/stroke.hpp.
 void interior_capsules(const FlatContours& flat, const StrokeStyle& style, double tol, const Affine& m,
-                       std::vector<Capsule>& out);
+                       std::vector<CutCapsule>& out);
 
 }  // namespace casteljau::stroke_detail

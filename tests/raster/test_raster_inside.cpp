@@ -28,7 +28,7 @@ TEST_CASE("FillOptions::inside: cells inside a true capsule are full, pixels unc
     REQUIRE(exact > 0);
     REQUIRE(r.last_stats().inside_cells == 0);
     // Inside the third square, through two crossings of the first two squares' sides.
-    const Capsule caps[] = {{{20.6, 30.3}, {30.3, 20.6}, 3}};
+    const CutCapsule caps[] = {Capsule{{20.6, 30.3}, {30.3, 20.6}, 3}};
     FillOptions fo;
     fo.inside = caps;
     const Mask hinted = r.fill_mask(p, Affine{}, fo);
@@ -45,7 +45,7 @@ TEST_CASE("FillOptions::inside: trusted as given, ignored under even-odd and whe
     p.add_rect(Rect{0.5, 0.5, 40.5, 40.5});
     p.add_rect(Rect{10.5, 10.5, 30.5, 30.5});
     p.append(p);
-    const Capsule across[] = {{{3.5, 20}, {37.5, 20}, 3}};
+    const CutCapsule across[] = {Capsule{{3.5, 20}, {37.5, 20}, 3}};
     FillOptions fo;
     fo.inside = across;
     fo.rule = FillRule::EvenOdd;
@@ -63,7 +63,7 @@ TEST_CASE("FillOptions::inside: trusted as given, ignored under even-odd and whe
     CHECK(r.last_stats().inside_cells > 0);
     CHECK(nz_hinted.data == nz_plain.data);
     // A capsule under sqrt(1/2) px holds no pixel and is not used.
-    const Capsule thin[] = {{{3.5, 20}, {37.5, 20}, 0.7}};
+    const CutCapsule thin[] = {Capsule{{3.5, 20}, {37.5, 20}, 0.7}};
     fo.inside = thin;
     (void)r.fill_mask(p, Affine{}, fo);
     CHECK(r.last_stats().inside_cells == 0);
@@ -76,7 +76,7 @@ TEST_CASE("FillOptions::inside: a capsule that is not inside is believed", "[ras
     p.add_rect(Rect{0.5, 0.5, 20.5, 20.5});
     p.add_rect(Rect{0.5, 0.5, 20.5, 20.5});  // stacked: every boundary cell is recomputed
     const Mask plain = r.fill_mask(p, Affine{}, FillOptions{});
-    const Capsule wrong[] = {{{0.5, 10}, {0.5, 10}, 3}};  // half of it lies outside the square
+    const CutCapsule wrong[] = {Capsule{{0.5, 10}, {0.5, 10}, 3}};  // half of it lies outside the square
     FillOptions fo;
     fo.inside = wrong;
     const Mask hinted = r.fill_mask(p, Affine{}, fo);

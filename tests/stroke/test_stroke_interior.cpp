@@ -46,6 +46,7 @@ TEST_CASE("stroke_outline: interior capsules leave every pixel of random strokes
         if (rng() % 4 == 0) st.dashes = {2 + 20 * u(rng), 1 + 10 * u(rng)};
         Affine m;
         if (rng() % 3 == 0) m = Affine::rotate(6 * u(rng)) * Affine{1 + u(rng), 0.3 * u(rng), 0, 0.5 + u(rng), 0, 0};
+        if (rng() % 4 == 0) m = Affine::translate(200, 0) * Affine::scale(-1, 1) * m;  // a mirror
         const double tol = rng() % 2 ? 0.015 : 0.25;
         const StrokeOutline s = stroke_outline(path, st, m, tol);
         REQUIRE(s.outline == stroke(path, st, m, tol));
@@ -65,7 +66,7 @@ TEST_CASE("stroke_outline: interior capsules leave every pixel of random strokes
     CHECK(inside * 10 > exact);
 }
 
-TEST_CASE("stroke_outline: the capsules of an open polyline keep clear of its ends", "[stroke][interior]") {
+TEST_CASE("stroke_outline: the capsules of an open polyline are cut at its ends", "[stroke][interior]") {
     Path p;
     p.move_to(0, 0);
     p.line_to(100, 0);
@@ -74,18 +75,32 @@ TEST_CASE("stroke_outline: the capsules of an open polyline keep clear of its en
     StrokeStyle st;
     st.width = 10;
     st.join = LineJoin::Round;
-    // The first and last segments end at the open ends; the middle one lies 100 behind both ends'
-    // lines. Radius: h - 3 x tolerance.
+    // Radius: h - 3 x tolerance.
     const StrokeOutline s = stroke_outline(p, st, Affine{}, 0.05);
-    REQUIRE(s.inside.size() == 1);
-    CHECK(s.inside[0].a == Point{100, 0});
-    CHECK(s.inside[0].b == Point{100, 100});
-    CHECK(s.inside[0].radius == Approx(4.85));
-    // Under a scale of 2 the pixel-space capsule doubles.
-    const StrokeOutline s2 = stroke_outline(p, st, Affine::scale(2), 0.05);
-    REQUIRE(s2.inside.size() == 1);
-    CHECK(s2.inside[0].b == Point{200, 200});
-    CHECK(s2.inside[0].radius == Approx(2 * (5 - 3 * 0.025)));
+    REQUIRE(s.inside.size() == 3);
+    // The first segment's capsule is cut by the start's line x = 0, moved back by the tolerance.
+    CHECK(s.inside[0].capsule.a == Point{0, 0});
+    CHECK(s.inside[0].capsule.radius == Approx(4.85));
+    REQUIRE(s.inside[0].cut_count == 1);
+    CHECK(s.inside[0].cuts[0].at.x == Approx(0.05));
+    CHECK(s.inside[0].cuts[0].out.x < 0);
+    CHECK(s.inside[0].contains({0.06, 4.8}));
+    CHECK_FALSE(s.inside[0].contains({0.04, 0}));
+    // The middle one lies 100 behind both ends' lines: whole.
+    CHECK(s.inside[1].capsule.a == Point{100, 0});
+    CHECK(s.inside[1].capsule.b == Point{100, 100});
+    CHECK(s.inside[1].cut_count == 0);
+    // The last one is cut by the end's line x = 0 as well.
+    REQUIRE(s.inside[2].cut_count == 1);
+    CHECK(s.inside[2].cuts[0].at == Point{0.05, 100});
+    // Under a scale of 2 (x) and 3 (y) the pixel-space capsule and cuts follow.
+    const StrokeOutline s2 = stroke_outline(p, st, Affine::scale(2, 3), 0.05);
+    REQUIRE(s2.inside.size() == 3);
+    CHECK(s2.inside[1].capsule.b == Point{200, 300});
+    CHECK(s2.inside[1].capsule.radius == Approx(2 * (5 - 3 * 0.05 / 3)));
+    CHECK(s2.inside[0].cuts[0].at.x == Approx(2 * 0.05 / 3));
+    CHECK(s2.inside[0].cuts[0].out.x < 0);
+    CHECK(s2.inside[0].cuts[0].out.y == Approx(0).margin(1e-12));
     // Miter joins may leave a corner's outside short of the pen: no capsules.
     st.join = LineJoin::Miter;
     CHECK(stroke_outline(p, st, Affine{}, 0.05).inside.empty());
