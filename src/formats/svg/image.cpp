@@ -120,7 +120,7 @@ void image(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& 
         for (const auto& [k, val] : properties(cx, n))
             if (k == name) v = trim(val);
         if (v.empty() || v == "auto") return std::nullopt;
-        return parse_length(v, percent_of);
+        return parse_length(v, percent_of, kUnknownFontSize, cx.options.dpi);
     };
     std::optional<double> w = size_attr("width", vp.w), h = size_attr("height", vp.h);
     if (!w && !h) {

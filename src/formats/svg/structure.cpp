@@ -77,7 +77,7 @@ Affine with_origin(Context& cx, const pugi::xml_node& n, const Affine& t, Viewpo
         if (word == "center") return size / 2;
         if (horizontal ? word == "left" : word == "top") return 0;
         if (horizontal ? word == "right" : word == "bottom") return size;
-        auto l = parse_length(word, size);
+        auto l = parse_length(word, size, kUnknownFontSize, cx.options.dpi);
         return l ? *l : size / 2;
     };
     double ox, oy;
