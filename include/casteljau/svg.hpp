@@ -73,6 +73,18 @@ namespace casteljau {
 // its root width and height included, so it decides the document's pixel size (width="1in" is
 // 300 pixels at 300 dpi); px and unitless lengths do not change. kMinDpi to kMaxDpi, else parsing
 // throws Error(InvalidArgument). SVG images inside the document are read at the same resolution.
+//
+// `export_id`: when not empty, only the element with that id (a leading '#' is ignored) and its
+// content are drawn, where they are in the whole document: its ancestors' transforms, viewports,
+// inherited properties and group effects (opacity, clip-path, mask, filter) still apply, as if
+// every other element were removed; the root's background-color is not drawn. What it references
+// (gradients, patterns, clips, masks, markers, filters, use targets) still resolves through the
+// whole document, and the document keeps its size: nothing is cropped. A part of a text (tspan,
+// textPath) draws its whole text element. An element the document does not draw draws nothing;
+// one the walk of the tree never reaches (inside defs, a clipPath, a mask, a pattern, a marker, a
+// symbol, a display:none group) with a warning. An id that names no element makes parsing throw
+// Error(InvalidData, "no element with id 'ID'") (load() adds " in PATH"). SVG images inside the
+// document are drawn whole.
 struct SvgOptions {
     static constexpr double kMinDpi = 1, kMaxDpi = 10000;
     std::string base_dir;
@@ -89,6 +101,7 @@ struct SvgOptions {
     std::string monospace_family = "Courier New";
     std::shared_ptr<const FontDatabase> font_database;
     double dpi = 96;
+    std::string export_id;
 };
 
 class SvgDocument {

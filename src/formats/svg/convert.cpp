@@ -91,7 +91,7 @@ void background(Context& cx, const pugi::xml_node& root, const ConvertedDocument
 
 }  // namespace
 
-ConvertedDocument convert_document(std::string_view input, const SvgOptions& options) {
+ConvertedDocument convert_document(std::string_view input, const SvgOptions& options, std::string_view source) {
     if (!(options.dpi >= SvgOptions::kMinDpi && options.dpi <= SvgOptions::kMaxDpi))
         throw Error(ErrorKind::InvalidArgument, "SVG dpi must be between 1 and 10000");
     pugi::xml_document xml;
@@ -112,12 +112,14 @@ ConvertedDocument convert_document(std::string_view input, const SvgOptions& opt
     Context cx;
     cx.options = options;
     index_ids(cx, root);
+    find_export_target(cx, root, source);
     read_style_sheets(cx, root);
-    background(cx, root, out);
+    if (cx.export_path.empty()) background(cx, root, out);  // the root's own painting: not of an exported element
     cut_recursive_links(cx, root);
     // The root goes through the element path like any group: its conditional processing,
     // transform, display, opacity, clip-path, mask, filter and blending apply to the whole document.
     if (conditions_pass(root)) element(cx, root, Style(), out.view, vp, 0);
+    warn_export_not_reached(cx);
     out.items = std::move(cx.items);
     out.warnings.insert(out.warnings.end(), cx.warnings.begin(), cx.warnings.end());
     return out;

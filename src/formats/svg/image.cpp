@@ -99,6 +99,7 @@ void image(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& 
             }
             SvgOptions inner = cx.options;
             inner.nesting++;
+            inner.export_id.clear();  // an image is drawn whole
             svg = std::make_shared<const SvgDocument>(SvgDocument::parse(
                 std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()), inner));
             // Its warnings are this document's too (a skipped image deep in a chain, a bad

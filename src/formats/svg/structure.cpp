@@ -23,7 +23,10 @@ void walk(Context& cx, const pugi::xml_node& node, const Style& st, const Affine
     for (const pugi::xml_node& child : node.children()) {
         if (child.type() != pugi::node_element) continue;
         if (!conditions_pass(child)) continue;
-        element(cx, child, st, m, vp, depth);
+        if (cx.export_path.empty())
+            element(cx, child, st, m, vp, depth);
+        else
+            export_child(cx, node, child, st, m, vp, depth);  // only the way to the exported element
         if (is_switch && known_element(child.name())) break;  // a switch draws its first passing child only
     }
 }
