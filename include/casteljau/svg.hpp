@@ -1,6 +1,6 @@
 // casteljau/svg.hpp: an SVG reader that draws onto a Canvas.
 //
-// Supported: the root size (px, physical units at 96 dpi, percentages), viewBox and every
+// Supported: the root size (px, physical units at SvgOptions::dpi, percentages), viewBox and every
 // preserveAspectRatio form; a root with a prefix bound to the SVG namespace (<svg:svg>); .svgz;
 // shapes (path, rect, circle, ellipse, line, polyline, polygon); fill and stroke with their
 // properties (rules, opacity, width, caps, joins, miter limit, dashes), paint-order, visibility,
@@ -25,7 +25,8 @@
 // Cycles (use, gradient href, clip-path, mask, marker) are broken: the repeated reference is
 // skipped or the element is not drawn.
 // SVG coordinates: user units, y down, mapped to pixels by the viewBox transform. Lengths: em and
-// ex are of the element's computed font-size (12 where none is set, ex = em / 2); percentages of
+// ex are of the element's computed font-size (12 where none is set, ex = em / 2); in, cm, mm, pt
+// and pc are SvgOptions::dpi pixels per inch (96, CSS's, by default); percentages of
 // stroke-width and dashes are of the nearest viewport's diagonal sqrt((w^2 + h^2) / 2).
 // Limits (casteljau/limits.hpp, read once per document): Limits::nesting_depth, svg_elements
 // (elements drawn or expanded, every copy a <use> makes counted: past it, a "use bomb", the
@@ -67,7 +68,25 @@ namespace casteljau {
 // slant; TextStyle::system_fonts), whether or not `system_fonts` is set. The `svg` command turns
 // it on unless --no-system-fonts (or --skip-system-fonts) is given; off, the output depends on the
 // given fonts alone when `system_fonts` is false too.
+//
+// `dpi`: pixels per inch of the physical units (in, cm, mm, pt, pc) everywhere in the document,
+// its root width and height included, so it decides the document's pixel size (width="1in" is
+// 300 pixels at 300 dpi); px and unitless lengths do not change. kMinDpi to kMaxDpi, else parsing
+// throws Error(InvalidArgument). SVG images inside the document are read at the same resolution.
+//
+// `export_id`: when not empty, only the element with that id (a leading '#' is ignored) and its
+// content are drawn, where they are in the whole document: its ancestors' transforms, viewports,
+// inherited properties and group effects (opacity, clip-path, mask, filter) still apply, as if
+// every other element were removed; the root's background-color is not drawn. What it references
+// (gradients, patterns, clips, masks, markers, filters, use targets) still resolves through the
+// whole document, and the document keeps its size: nothing is cropped. A part of a text (tspan,
+// textPath) draws its whole text element. An element the document does not draw draws nothing;
+// one the walk of the tree never reaches (inside defs, a clipPath, a mask, a pattern, a marker, a
+// symbol, a display:none group) with a warning. An id that names no element makes parsing throw
+// Error(InvalidData, "no element with id 'ID'") (load() adds " in PATH"). SVG images inside the
+// document are drawn whole.
 struct SvgOptions {
+    static constexpr double kMinDpi = 1, kMaxDpi = 10000;
     std::string base_dir;
     std::string resource_root;
     int nesting = 0;  // SVG images nest at most Limits::svg_image_nesting deep
@@ -81,6 +100,8 @@ struct SvgOptions {
     std::string fantasy_family = "Impact";
     std::string monospace_family = "Courier New";
     std::shared_ptr<const FontDatabase> font_database;
+    double dpi = 96;
+    std::string export_id;
 };
 
 class SvgDocument {
@@ -99,8 +120,9 @@ public:
     SvgDocument& operator=(SvgDocument&&) noexcept;
     ~SvgDocument();
 
-    // Output size in pixels: the root's width and height (96 dpi) rounded to the nearest whole
-    // pixel, at least 1 (resvg's rule). The fractional intrinsic size is kept for scaling.
+    // Output size in pixels: the root's width and height (at SvgOptions::dpi) rounded to the
+    // nearest whole pixel, at least 1 (resvg's rule). The fractional intrinsic size is kept for
+    // scaling.
     int width() const;
     int height() const;
     double intrinsic_width() const;

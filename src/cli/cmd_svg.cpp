@@ -107,6 +107,16 @@ void register_svg(CLI::App& app) {
         ->check(CLI::Range(1, limits::kMaxCanvasDimension))
         ->excludes(zoom);
     (void)width;
+    cmd->add_option("-d,--dpi", o->svg.dpi,
+                    "Pixels per inch of the physical units (in, cm, mm, pt, pc), the document's width and height "
+                    "included: it decides the document's size in pixels, which --zoom, --width and --height then scale")
+        ->check(CLI::Range(SvgOptions::kMinDpi, SvgOptions::kMaxDpi))
+        ->capture_default_str();
+    cmd->add_option("-i,--export-id", o->svg.export_id,
+                    "Draw only the element with this id (#ID works too) in its place in the document: its ancestors' "
+                    "transforms, inherited styles and group effects apply, what it references (gradients, clips, use "
+                    "targets) still resolves, and the output keeps the document's size (rsvg-convert 2.54 instead "
+                    "crops the output to the element). An id no element has is an error");
     cmd->add_option("-b,--background", o->background, "Background colour (CSS syntax)")->capture_default_str();
     cmd->add_option("--tolerance", o->tolerance, "Flattening tolerance in pixels")
         ->check(CLI::Range(1e-4, 10.0))

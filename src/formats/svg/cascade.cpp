@@ -85,7 +85,7 @@ double font_size_of(Context& cx, const pugi::xml_node& node) {
     for (const auto& [k, v] : properties(cx, node)) {
         const std::string_view val = trim(v);
         if (k == "font-size") {
-            if (auto s = font_size(val, parent)) size = *s;
+            if (auto s = font_size(val, parent, cx.options.dpi)) size = *s;
         } else if (k == "font") {
             TextCtx t;
             t.font.size = size;

@@ -144,7 +144,7 @@ void emit_mask(Context& cx, const pugi::xml_node& mask, const Affine& cm, const 
         auto frac = [&](const char* name, double fallback) {
             const char* v = mask.attribute(name).value();
             if (!*v) return fallback;
-            auto l = parse_length(v, 1.0);
+            auto l = parse_length(v, 1.0, kUnknownFontSize, cx.options.dpi);
             return l ? *l : fallback;
         };
         if (bbox_units) {

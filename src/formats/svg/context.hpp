@@ -131,6 +131,12 @@ struct Context {
     bool filter_self_reference = false;
     int paint_depth = 0;  // patterns inside pattern content
 
+    // SvgOptions::export_id (export.cpp): the element drawn alone and its ancestors, the element
+    // first (empty: the whole document is drawn, or the element's own content is being drawn),
+    // and whether the walk reached the element.
+    std::vector<pugi::xml_node> export_path;
+    bool export_reached = false;
+
     // Text (text.cpp): the fonts, opened when the first text is laid out, and the characters of
     // all text laid out so far (use copies too).
     std::shared_ptr<svg_text::FontSet> font_set;
@@ -210,6 +216,13 @@ std::optional<Rect> items_bbox(const Context& cx, std::size_t first, const Affin
 void element(Context& cx, const pugi::xml_node& child, const Style& st, const Affine& m, Viewport vp, int depth);
 void content(Context& cx, const pugi::xml_node& child, const Style& cst, const Affine& cm, Viewport vp, int depth,
              double opacity);
+
+// export.cpp: SvgOptions::export_id: the element drawn alone, and the walk restricted to the
+// elements on the way to it from the root.
+void find_export_target(Context& cx, const pugi::xml_node& root, std::string_view source);
+void export_child(Context& cx, const pugi::xml_node& parent, const pugi::xml_node& child, const Style& st,
+                  const Affine& m, Viewport vp, int depth);
+void warn_export_not_reached(Context& cx);
 
 // use.cpp: the use element: instancing an element, a symbol or an svg, with reference-cycle checks
 // and the context element of context-fill and context-stroke.

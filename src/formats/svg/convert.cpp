@@ -40,12 +40,13 @@ pugi::xml_node read_xml(std::string_view input, pugi::xml_document& xml) {
     return root;
 }
 
-// The document's size from the root's width, height and viewBox `vb` (out.width .. out.fheight).
-void size_document(const pugi::xml_node& root, const std::optional<Rect>& vb, ConvertedDocument& out) {
+// The document's size from the root's width, height and viewBox `vb` (out.width .. out.fheight),
+// physical units at `dpi`.
+void size_document(const pugi::xml_node& root, const std::optional<Rect>& vb, double dpi, ConvertedDocument& out) {
     auto root_length = [&](const char* name, double vb_size) -> std::optional<double> {
         const char* v = root.attribute(name).value();
         if (!*v) return std::nullopt;
-        auto l = parse_length(v, vb_size);
+        auto l = parse_length(v, vb_size, kUnknownFontSize, dpi);
         if (!l) throw Error(ErrorKind::InvalidData, std::string("invalid <svg> ") + name + " '" + v + "'");
         return l;
     };
@@ -90,14 +91,16 @@ void background(Context& cx, const pugi::xml_node& root, const ConvertedDocument
 
 }  // namespace
 
-ConvertedDocument convert_document(std::string_view input, const SvgOptions& options) {
+ConvertedDocument convert_document(std::string_view input, const SvgOptions& options, std::string_view source) {
+    if (!(options.dpi >= SvgOptions::kMinDpi && options.dpi <= SvgOptions::kMaxDpi))
+        throw Error(ErrorKind::InvalidArgument, "SVG dpi must be between 1 and 10000");
     pugi::xml_document xml;
     const pugi::xml_node root = read_xml(input, xml);
     ConvertedDocument out;
     const char* vb_text = root.attribute("viewBox").value();
     const std::optional<Rect> vb = parse_viewbox(vb_text);
     if (!vb && *vb_text) out.warnings.push_back(std::string("invalid viewBox '") + vb_text + "' ignored");
-    size_document(root, vb, out);
+    size_document(root, vb, options.dpi, out);
 
     // viewBox -> viewport with preserveAspectRatio.
     Viewport vp{out.fwidth, out.fheight};
@@ -109,12 +112,14 @@ ConvertedDocument convert_document(std::string_view input, const SvgOptions& opt
     Context cx;
     cx.options = options;
     index_ids(cx, root);
+    find_export_target(cx, root, source);
     read_style_sheets(cx, root);
-    background(cx, root, out);
+    if (cx.export_path.empty()) background(cx, root, out);  // the root's own painting: not of an exported element
     cut_recursive_links(cx, root);
     // The root goes through the element path like any group: its conditional processing,
     // transform, display, opacity, clip-path, mask, filter and blending apply to the whole document.
     if (conditions_pass(root)) element(cx, root, Style(), out.view, vp, 0);
+    warn_export_not_reached(cx);
     out.items = std::move(cx.items);
     out.warnings.insert(out.warnings.end(), cx.warnings.begin(), cx.warnings.end());
     return out;

@@ -104,8 +104,9 @@ struct ConvertedDocument {
 };
 
 // Reads an SVG document (gzip-compressed or not) and converts it. Throws Error as
-// SvgDocument::parse does.
-ConvertedDocument convert_document(std::string_view input, const SvgOptions& options);
+// SvgDocument::parse does; `source` (a path, or empty) names the input in the message about a
+// missing SvgOptions::export_id.
+ConvertedDocument convert_document(std::string_view input, const SvgOptions& options, std::string_view source = {});
 
 // The display list of a document, without drawing it.
 inline DisplayList convert(std::string_view input, const SvgOptions& options = {}) {

@@ -44,7 +44,10 @@ SvgDocument SvgDocument::load(const std::string& path, const SvgOptions& options
     SvgOptions o = options;
     std::error_code ec;
     o.base_dir = std::filesystem::absolute(std::filesystem::path(path), ec).parent_path().string();
-    return parse(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), o);
+    auto impl = std::make_unique<Impl>();
+    static_cast<svg::ConvertedDocument&>(*impl) =
+        svg::convert_document(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), o, path);
+    return SvgDocument(std::move(impl));
 }
 
 SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options) {

@@ -31,7 +31,9 @@ svg_filter::SvgFilterEnv filter_env(Context& cx, const Style& st, Viewport vp, i
     env.property = [&cx](const pugi::xml_node& n, const std::string& k) { return own_property(cx, n, k); };
     env.inherited = [&cx](const pugi::xml_node& n, const std::string& k) { return inherited(cx, n, k); };
     env.lookup = [&cx](std::string_view id) { return lookup(cx, id); };
-    env.length = [fs = st.font_size](std::string_view t, double pct) { return parse_length(t, pct, fs); };
+    env.length = [fs = st.font_size, dpi = cx.options.dpi](std::string_view t, double pct) {
+        return parse_length(t, pct, fs, dpi);
+    };
     env.color = [](std::string_view t) { return parse_color(t); };
     env.viewport = vp;
     env.current_color = st.color;

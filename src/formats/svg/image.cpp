@@ -99,6 +99,7 @@ void image(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& 
             }
             SvgOptions inner = cx.options;
             inner.nesting++;
+            inner.export_id.clear();  // an image is drawn whole
             svg = std::make_shared<const SvgDocument>(SvgDocument::parse(
                 std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()), inner));
             // Its warnings are this document's too (a skipped image deep in a chain, a bad
@@ -120,7 +121,7 @@ void image(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& 
         for (const auto& [k, val] : properties(cx, n))
             if (k == name) v = trim(val);
         if (v.empty() || v == "auto") return std::nullopt;
-        return parse_length(v, percent_of);
+        return parse_length(v, percent_of, kUnknownFontSize, cx.options.dpi);
     };
     std::optional<double> w = size_attr("width", vp.w), h = size_attr("height", vp.h);
     if (!w && !h) {

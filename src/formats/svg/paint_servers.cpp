@@ -138,7 +138,7 @@ bool gradient(Context& cx, const pugi::xml_node& node, const Path& path, Viewpor
     auto coord = [&](const char* name, double percent_of, double fallback) {
         const std::string_view v = attr(name, true);
         if (v.empty()) return fallback;
-        auto l = parse_length(v, bbox_units ? 1.0 : percent_of);
+        auto l = parse_length(v, bbox_units ? 1.0 : percent_of, kUnknownFontSize, cx.options.dpi);
         return l ? *l : fallback;
     };
     Affine units;

@@ -41,7 +41,7 @@ bool pattern(Context& cx, const pugi::xml_node& node, const Path& path, Viewport
     auto num = [&](const char* name, double percent_of) -> double {
         const std::string_view v = attr(name);
         if (v.empty()) return 0;
-        auto l = parse_length(v, units_bbox ? 1.0 : percent_of);
+        auto l = parse_length(v, units_bbox ? 1.0 : percent_of, kUnknownFontSize, cx.options.dpi);
         return l ? *l : 0;
     };
     Rect tile;

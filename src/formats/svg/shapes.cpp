@@ -17,7 +17,7 @@ namespace casteljau::svg {
 double length_attr(Context& cx, const pugi::xml_node& n, const char* name, double percent_of, double fallback) {
     const char* v = n.attribute(name).value();
     if (!*v) return fallback;
-    auto l = parse_length(v, percent_of, font_size_of(cx, n));
+    auto l = parse_length(v, percent_of, font_size_of(cx, n), cx.options.dpi);
     if (!l) {
         warn(cx, std::string("invalid ") + name + " '" + v + "' on <" + n.name() + ">");
         return fallback;

@@ -23,7 +23,10 @@ void walk(Context& cx, const pugi::xml_node& node, const Style& st, const Affine
     for (const pugi::xml_node& child : node.children()) {
         if (child.type() != pugi::node_element) continue;
         if (!conditions_pass(child)) continue;
-        element(cx, child, st, m, vp, depth);
+        if (cx.export_path.empty())
+            element(cx, child, st, m, vp, depth);
+        else
+            export_child(cx, node, child, st, m, vp, depth);  // only the way to the exported element
         if (is_switch && known_element(child.name())) break;  // a switch draws its first passing child only
     }
 }
@@ -77,7 +80,7 @@ Affine with_origin(Context& cx, const pugi::xml_node& n, const Affine& t, Viewpo
         if (word == "center") return size / 2;
         if (horizontal ? word == "left" : word == "top") return 0;
         if (horizontal ? word == "right" : word == "bottom") return size;
-        auto l = parse_length(word, size);
+        auto l = parse_length(word, size, kUnknownFontSize, cx.options.dpi);
         return l ? *l : size / 2;
     };
     double ox, oy;

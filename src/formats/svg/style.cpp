@@ -108,7 +108,7 @@ void apply_style(Context& cx, const pugi::xml_node& node, Style& st) {
         } else if (k == "stroke-opacity") {
             if (auto o = parse_opacity(val)) st.stroke_opacity = *o;
         } else if (k == "stroke-width") {
-            if (auto l = parse_length(val, diag, font_size)) {
+            if (auto l = parse_length(val, diag, font_size, cx.options.dpi)) {
                 if (*l >= 0) st.stroke_style.width = *l;
             }
         } else if (k == "stroke-linecap") {
@@ -130,7 +130,8 @@ void apply_style(Context& cx, const pugi::xml_node& node, Style& st) {
                     if (pos >= list.size()) break;
                     std::size_t end = list.find(' ', pos);
                     if (end == std::string::npos) end = list.size();
-                    auto l = parse_length(std::string_view(list).substr(pos, end - pos), diag, font_size);
+                    const std::string_view item = std::string_view(list).substr(pos, end - pos);
+                    auto l = parse_length(item, diag, font_size, cx.options.dpi);
                     if (!l || *l < 0) {
                         ok = false;
                         break;
@@ -178,7 +179,7 @@ void apply_style(Context& cx, const pugi::xml_node& node, Style& st) {
             else if (val == "hidden" || val == "collapse")
                 st.visible = false;
         } else if (k == "stroke-dashoffset") {
-            if (auto l = parse_length(val, diag, font_size)) st.stroke_style.dash_offset = *l;
+            if (auto l = parse_length(val, diag, font_size, cx.options.dpi)) st.stroke_style.dash_offset = *l;
         }
     }
 }

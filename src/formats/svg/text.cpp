@@ -152,7 +152,7 @@ void text_element(Context& cx, const pugi::xml_node& node, TextCtx ctx, const St
                     }
                     tp.start_offset = *pct / 100 * total;
                 }
-            } else if (auto l = text_length(sv, ctx.font.size, vp.w)) {
+            } else if (auto l = text_length(sv, ctx.font.size, vp.w, cx.options.dpi)) {
                 tp.start_offset = *l;
             }
         }
@@ -255,7 +255,8 @@ std::vector<svg_text::Outline> text_outlines(Context& cx, const pugi::xml_node& 
             std::size_t i = r.begin;
             for (std::string_view w : split_list(v)) {
                 if (i >= r.end) break;
-                auto l = std::string_view(attr) == "rotate" ? parse_number(w) : text_length(w, r.font_size, percent_of);
+                auto l = std::string_view(attr) == "rotate" ? parse_number(w)
+                                                            : text_length(w, r.font_size, percent_of, cx.options.dpi);
                 if (!l) return;
                 b.in.pos[i++].*field = *l;
                 last = *l;
@@ -270,7 +271,7 @@ std::vector<svg_text::Outline> text_outlines(Context& cx, const pugi::xml_node& 
         list("rotate", 1, &svg_text::CharPos::rotate, true);
         if (const char* tl = r.node.attribute("textLength").value(); *tl && r.end > r.begin) {
             // Only a negative length is an error: 0 squeezes the text to no advance at all.
-            if (auto l = text_length(tl, r.font_size, vp.w); l && *l >= 0)
+            if (auto l = text_length(tl, r.font_size, vp.w, cx.options.dpi); l && *l >= 0)
                 b.in.lengths.push_back(
                     {r.begin, r.end, *l,
                      std::string_view(r.node.attribute("lengthAdjust").value()) == "spacingAndGlyphs"});

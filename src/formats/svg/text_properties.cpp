@@ -27,8 +27,9 @@ std::vector<std::string_view> split_list(std::string_view v) {
     return out;
 }
 
-// A length for text properties: em and ex relative to `font_size`, percentages of `percent_of`.
-std::optional<double> text_length(std::string_view v, double font_size, double percent_of) {
+// A length for text properties: em and ex relative to `font_size`, percentages of `percent_of`,
+// physical units at `dpi` pixels per inch.
+std::optional<double> text_length(std::string_view v, double font_size, double percent_of, double dpi) {
     v = trim(v);
     if (v.size() > 2 && v.substr(v.size() - 2) == "em") {
         auto n = parse_number(v.substr(0, v.size() - 2));
@@ -38,7 +39,7 @@ std::optional<double> text_length(std::string_view v, double font_size, double p
         auto n = parse_number(v.substr(0, v.size() - 2));
         return n ? std::optional<double>(*n * font_size / 2) : std::nullopt;
     }
-    return parse_length(v, percent_of);
+    return parse_length(v, percent_of, kUnknownFontSize, dpi);
 }
 
 std::string generic_family(const Context& cx, std::string_view f) {
@@ -107,7 +108,7 @@ std::optional<double> font_stretch(std::string_view v) {
     return std::nullopt;
 }
 
-std::optional<double> font_size(std::string_view v, double parent) {
+std::optional<double> font_size(std::string_view v, double parent, double dpi) {
     static const std::pair<std::string_view, int> names[] = {{"xx-small", -3}, {"x-small", -2}, {"small", -1},
                                                              {"medium", 0},    {"large", 1},    {"x-large", 2},
                                                              {"xx-large", 3},  {"xxx-large", 4}};
@@ -115,7 +116,7 @@ std::optional<double> font_size(std::string_view v, double parent) {
         if (v == k) return 12.0 * std::pow(1.2, e);
     if (v == "larger") return parent * 1.2;
     if (v == "smaller") return parent / 1.2;
-    auto l = text_length(v, parent, parent);
+    auto l = text_length(v, parent, parent, dpi);
     if (l && *l >= 0) return l;
     return std::nullopt;
 }
@@ -172,7 +173,7 @@ void apply_font_shorthand(const Context& cx, std::string_view v, TextCtx& ctx, d
                 std::size_t ne = n;
                 while (ne < v.size() && !std::isspace(static_cast<unsigned char>(v[ne]))) ++ne;
                 const std::string_view next = v.substr(n, ne - n).substr(0, v.substr(n, ne - n).find('/'));
-                if (fw && !next.empty() && font_size(next, parent_size) && !parse_number(next)) {
+                if (fw && !next.empty() && font_size(next, parent_size, cx.options.dpi) && !parse_number(next)) {
                     t.font.weight = *fw;
                     i = e;
                     continue;
@@ -180,7 +181,7 @@ void apply_font_shorthand(const Context& cx, std::string_view v, TextCtx& ctx, d
                 return;
             }
             if (bare_number && *parse_number(size) != 0) return;
-            auto fsz = font_size(size, parent_size);
+            auto fsz = font_size(size, parent_size, cx.options.dpi);
             if (!fsz) return;
             const std::string_view family = trim(v.substr(e));
             if (family.empty()) return;
@@ -205,7 +206,7 @@ void apply_text_props(Context& cx, const pugi::xml_node& node, TextCtx& ctx) {
         if (k == "font")
             apply_font_shorthand(cx, val, ctx, parent_size);
         else if (k == "font-size") {
-            if (auto s = font_size(val, parent_size)) ctx.font.size = *s;
+            if (auto s = font_size(val, parent_size, cx.options.dpi)) ctx.font.size = *s;
         }
     }
     const double fs = ctx.font.size;
@@ -237,7 +238,7 @@ void apply_text_props(Context& cx, const pugi::xml_node& node, TextCtx& ctx) {
             // SVG 1.1: "auto" or a length; 0 turns kerning off, other lengths are not supported.
             if (val == "auto")
                 ctx.no_kerning = false;
-            else if (auto l = parse_length(val, 1); l && *l == 0)
+            else if (auto l = parse_length(val, 1, kUnknownFontSize, cx.options.dpi); l && *l == 0)
                 ctx.no_kerning = true;
         } else if (k == "font-feature-settings") {
             ctx.feature_settings.clear();
@@ -256,12 +257,12 @@ void apply_text_props(Context& cx, const pugi::xml_node& node, TextCtx& ctx) {
         } else if (k == "letter-spacing") {
             if (val == "normal")
                 ctx.letter_spacing = 0;
-            else if (auto l = text_length(val, fs, ctx.viewport_width))
+            else if (auto l = text_length(val, fs, ctx.viewport_width, cx.options.dpi))
                 ctx.letter_spacing = *l;
         } else if (k == "word-spacing") {
             if (val == "normal")
                 ctx.word_spacing = 0;
-            else if (auto l = text_length(val, fs, ctx.viewport_width))
+            else if (auto l = text_length(val, fs, ctx.viewport_width, cx.options.dpi))
                 ctx.word_spacing = *l;
         } else if (k == "text-anchor") {
             if (val == "start")
@@ -284,7 +285,7 @@ void apply_text_props(Context& cx, const pugi::xml_node& node, TextCtx& ctx) {
             else if (val == "super")
                 ctx.baseline_shifts.push_back({2, 0});
             else if (val != "baseline")
-                if (auto l = text_length(val, fs, fs)) ctx.baseline_shifts.push_back({0, *l});
+                if (auto l = text_length(val, fs, fs, cx.options.dpi)) ctx.baseline_shifts.push_back({0, *l});
         } else if (k == "text-decoration" || k == "text-decoration-line") {
             // The keywords are separated by white space only: a comma makes the value invalid.
             if (val.find(',') != std::string_view::npos) continue;

@@ -60,8 +60,9 @@ struct TextBuild {
 // text_properties.cpp
 // The words of a list separated by white space or commas.
 std::vector<std::string_view> split_list(std::string_view v);
-// A length for text properties: em and ex relative to `font_size`, percentages of `percent_of`.
-std::optional<double> text_length(std::string_view v, double font_size, double percent_of);
+// A length for text properties: em and ex relative to `font_size`, percentages of `percent_of`,
+// physical units at `dpi` pixels per inch.
+std::optional<double> text_length(std::string_view v, double font_size, double percent_of, double dpi);
 // A font family name, a generic family (serif, sans-serif, ...) replaced by the options' choice.
 std::string generic_family(const Context& cx, std::string_view f);
 void apply_font_family(const Context& cx, std::string_view v, TextCtx& ctx);
@@ -70,7 +71,8 @@ void apply_font_family(const Context& cx, std::string_view v, TextCtx& ctx);
 std::vector<std::pair<std::string, std::string>> tag_value_list(std::string_view v);
 std::optional<int> font_weight(std::string_view v, int parent);
 std::optional<double> font_stretch(std::string_view v);
-std::optional<double> font_size(std::string_view v, double parent);
+// A font-size value: keywords, lengths (physical units at `dpi`), percentages of `parent`.
+std::optional<double> font_size(std::string_view v, double parent, double dpi);
 svg_text::Baseline baseline_kind(std::string_view v, svg_text::Baseline fallback);
 // The `font` shorthand: [style] [variant] [weight] [stretch] size[/line-height] family-list.
 void apply_font_shorthand(const Context& cx, std::string_view v, TextCtx& ctx, double parent_size);

@@ -16,8 +16,9 @@ std::string_view trim(std::string_view s) {
 }
 
 // A length with an optional unit; percentages resolve against `percent_of`, em against
-// `font_size` and ex against half of it (as resvg: no x-height from the font). nullopt when invalid.
-std::optional<double> parse_length(std::string_view text, double percent_of, double font_size) {
+// `font_size` and ex against half of it (as resvg: no x-height from the font), the physical units
+// against `dpi`. nullopt when invalid.
+std::optional<double> parse_length(std::string_view text, double percent_of, double font_size, double dpi) {
     text = trim(text);
     if (text.empty()) return std::nullopt;
     const char* b = text.data();
@@ -29,19 +30,17 @@ std::optional<double> parse_length(std::string_view text, double percent_of, dou
     const std::string_view unit(r.ptr, static_cast<std::size_t>(e - r.ptr));
     if (unit.empty() || unit == "px") return v;
     if (unit == "%") return v / 100.0 * percent_of;
-    if (unit == "pt") return v * 4.0 / 3.0;
-    if (unit == "pc") return v * 16.0;
-    if (unit == "mm") return v * 96.0 / 25.4;
-    if (unit == "cm") return v * 96.0 / 2.54;
-    if (unit == "in") return v * 96.0;
+    // CSS pixels scaled by dpi / 96: exactly 1 at the default resolution, so the CSS values
+    // come out bit for bit as they always have.
+    const double css = dpi / 96.0;
+    if (unit == "pt") return v * 4.0 / 3.0 * css;
+    if (unit == "pc") return v * 16.0 * css;
+    if (unit == "mm") return v * 96.0 / 25.4 * css;
+    if (unit == "cm") return v * 96.0 / 2.54 * css;
+    if (unit == "in") return v * 96.0 * css;
     if (unit == "em") return v * font_size;
     if (unit == "ex") return v * font_size / 2;
     return std::nullopt;
-}
-
-// A length where no element's font size is known (em and ex relative to a 16 px font).
-std::optional<double> parse_length(std::string_view text, double percent_of) {
-    return parse_length(text, percent_of, 16.0);
 }
 
 std::optional<double> parse_number(std::string_view text) {

@@ -24,11 +24,12 @@ struct Viewport {
 std::string_view trim(std::string_view s);
 
 // A length with an optional unit; percentages resolve against `percent_of`, em against
-// `font_size` and ex against half of it (as resvg: no x-height from the font). nullopt when invalid.
-std::optional<double> parse_length(std::string_view text, double percent_of, double font_size);
+// `font_size` and ex against half of it (as resvg: no x-height from the font), the physical units
+// (in, cm, mm, pt, pc) against `dpi` pixels per inch (SvgOptions::dpi). nullopt when invalid.
+std::optional<double> parse_length(std::string_view text, double percent_of, double font_size, double dpi);
 
-// A length where no element's font size is known (em and ex relative to a 16 px font).
-std::optional<double> parse_length(std::string_view text, double percent_of);
+// The font size em and ex are relative to where no element's font size is known.
+constexpr double kUnknownFontSize = 16;
 
 // A plain number (a leading '+' allowed, nothing after it); nullopt when invalid or not finite.
 std::optional<double> parse_number(std::string_view text);
