@@ -74,8 +74,10 @@ public:
         smooth_.clear();
         q_.push_back(pts[0]);
         smooth_.push_back(smooth[0]);
+        const double eps2 = eps_ * eps_;
+        auto apart = [&](Point a, Point b) { return (a - b).dot(a - b) > eps2; };
         for (std::size_t i = 1; i < pts.size(); ++i) {
-            if (distance(pts[i], q_.back()) > eps_) {
+            if (apart(pts[i], q_.back())) {
                 q_.push_back(pts[i]);
                 smooth_.push_back(smooth[i]);
             } else {
@@ -83,7 +85,7 @@ public:
             }
         }
         if (closed) {
-            while (q_.size() > 1 && distance(q_.back(), q_.front()) <= eps_) {
+            while (q_.size() > 1 && !apart(q_.back(), q_.front())) {
                 smooth_.front() &= smooth_.back();
                 q_.pop_back();
                 smooth_.pop_back();
@@ -281,7 +283,8 @@ private:
         // The turn's angle. A forward turn of at most one arc step (sin below sin(step)) draws no
         // arc points, so most smooth vertices of a finely flattened curve skip the atan2.
         const bool within_step = dt > 0 && sn <= sin_step_;
-        const double angle = within_step && !(smooth && len1 < h_ && len2 < h_) ? 0.0 : std::atan2(sn, dt);
+        const bool wedge_possible = smooth && len1 < h_ && len2 < h_ && h_ - std::max(len1, len2) > tol_;
+        const double angle = within_step && !wedge_possible ? 0.0 : std::atan2(sn, dt);
 
         outer.push_back(v + n1 * h_);
         // Where the path is smooth there is no corner to join: the pen's normal turns with the curve.
@@ -344,7 +347,9 @@ private:
     // together, tan(psi) = len_in sin(turn) / (len_out + len_in cos(turn)), at distance rho: the
     // part of the sector outside lies between that point and the arc.
     bool wedge_gap(double len_in, double len_out, double turn, double& psi, double& rho) const {
-        if (!(len_in < h_ && len_out < h_)) return false;
+        // rho is at least the longer segment's length, so a segment within the tolerance of h
+        // settles it without the trigonometry.
+        if (!(len_in < h_ && len_out < h_) || !(h_ - std::max(len_in, len_out) > tol_)) return false;
         psi = std::atan2(len_in * std::sin(turn), len_out + len_in * std::cos(turn));
         const double a = len_in > 0 ? len_in / std::sin(psi) : 0;
         const double b = len_out > 0 ? len_out / std::sin(turn - psi) : 0;
