@@ -151,6 +151,11 @@ Path& Path::add_polygon(std::span<const Point> pts, bool close_it) {
 Path& Path::append(const Path& other) { return append(other, Affine{}); }
 
 Path& Path::append(const Path& other, const Affine& m) {
+    // Appending a path to itself reads what the appending grows (and may move): a copy first.
+    if (&other == this) {
+        const Path copy = other;
+        return append(copy, m);
+    }
     if (append_whole(other, m)) return *this;
     struct V {
         Path& p;

@@ -320,6 +320,23 @@ TEST_CASE("fill: a rasterizer made after one destroyed mid-fill renders as a fre
     }
 }
 
+TEST_CASE("Path: appending a path to itself appends a copy of it", "[flatten][path]") {
+    // The appended path is the one growing: reading it while its arrays grow reads freed memory
+    // (the sanitizer build catches that).
+    Path p;
+    p.add_rect(Rect{0.5, 0.5, 40.5, 40.5});
+    p.quad_to({60, 10}, {50, 50});
+    p.conic_to({70, 70}, {20, 60}, 0.7);
+    for (const Affine& m : {Affine{}, Affine::translate(5, -3)}) {
+        Path self = p, expected = p;
+        const Path copy = p;
+        expected.append(copy, m);
+        self.append(self, m);
+        CHECK(self == expected);
+        CHECK(self.points().size() == 2 * p.points().size());
+    }
+}
+
 TEST_CASE("Path: append equals adding the other path's segments one by one", "[flatten][path]") {
     // The reference: other's verbs replayed through the builder, read off its arrays (moves
     // collapse, a segment after a close opens a contour at the close's point). Other's first verb
