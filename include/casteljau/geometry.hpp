@@ -116,6 +116,9 @@ struct Affine {
 
 Rect transform_bounds(const Affine& m, const Rect& r);
 
+// The squared distance from p to the segment from a to b (to a when a == b).
+double distance_squared_to_segment(Point p, Point a, Point b);
+
 // A segment swept by a disc: the points within `radius` of the segment from a to b (a disc when
 // a == b).
 struct Capsule {

@@ -71,14 +71,16 @@ double Affine::min_scale() const {
     return top > 0 ? std::abs(a * d - b * c) / top : 0.0;
 }
 
-bool Capsule::contains(Point p) const {
+double distance_squared_to_segment(Point p, Point a, Point b) {
+    // The foot of the perpendicular, clamped to the segment's ends.
     const Vec ab = b - a, ap = p - a;
-    const double len2 = ab.x * ab.x + ab.y * ab.y;
-    double t = len2 > 0 ? (ap.x * ab.x + ap.y * ab.y) / len2 : 0.0;
-    t = std::clamp(t, 0.0, 1.0);
-    const double dx = ap.x - t * ab.x, dy = ap.y - t * ab.y;
-    return dx * dx + dy * dy <= radius * radius;
+    const double len2 = ab.dot(ab);
+    const double t = len2 > 0 ? std::clamp(ap.dot(ab) / len2, 0.0, 1.0) : 0.0;
+    const Vec d = ap - ab * t;
+    return d.dot(d);
 }
+
+bool Capsule::contains(Point p) const { return distance_squared_to_segment(p, a, b) <= radius * radius; }
 
 bool CutCapsule::contains(Point p) const {
     for (int k = 0; k < cut_count; ++k)

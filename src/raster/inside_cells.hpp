@@ -22,7 +22,6 @@ public:
     // Takes the capsules (pixel space) that can hold a cell of the box of w x h cells whose
     // top-left cell is pixel (ox, oy). `queries` bounds the number of covers() calls to come.
     void reset(std::span<const CutCapsule> capsules, int ox, int oy, int w, int h, std::size_t queries);
-    bool empty() const { return items_.empty(); }
     // Whether cell (col, row) lies wholly inside one of the capsules; rows may not decrease
     // between calls.
     bool covers(int col, int row);

@@ -29,14 +29,6 @@
 namespace casteljau::stroke_detail {
 namespace {
 
-double distance_squared_to_segment(Point p, Point a, Point b) {
-    const Vec ab = b - a, ap = p - a;
-    const double len2 = ab.dot(ab);
-    const double t = len2 > 0 ? std::clamp(ap.dot(ab) / len2, 0.0, 1.0) : 0.0;
-    const Vec d = ap - ab * t;
-    return d.dot(d);
-}
-
 // What an open end does to a segment's capsule: nothing when the segment lies at least `away` (4h)
 // from the end or the capsule lies wholly behind the line through the end square to `out` (the
 // path's outward unit direction there) by `behind`; else, unless the end is tight (`out` zero),

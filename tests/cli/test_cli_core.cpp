@@ -14,10 +14,6 @@ using namespace casteljau::test;
 namespace fs = std::filesystem;
 
 namespace {
-void write_text(const fs::path& p, const std::string& s) {
-    std::ofstream f(p, std::ios::binary);
-    f << s;
-}
 // One line, starting with the tool's prefix.
 void check_one_line_error(const CliResult& r) {
     INFO("stderr: " << r.err);

@@ -14,10 +14,6 @@ using namespace casteljau::test;
 namespace fs = std::filesystem;
 
 namespace {
-void write_text(const fs::path& p, const std::string& s) {
-    std::ofstream f(p, std::ios::binary);
-    f << s;
-}
 // `casteljau svg IN ARGS -o OUT`.
 CliResult svg(const fs::path& in, const std::string& args, const fs::path& out) {
     return run_cli("svg " + shell_quote(in.string()) + " " + args + " -o " + shell_quote(out.string()));

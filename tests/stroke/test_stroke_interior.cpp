@@ -30,6 +30,16 @@ Path random_path(std::mt19937& rng) {
     return p;
 }
 
+// Three sides of the square [0, 100]^2, open at the left: (0, 0) -> (100, 0) -> (100, 100) -> (0, 100).
+Path open_square() {
+    Path p;
+    p.move_to(0, 0);
+    p.line_to(100, 0);
+    p.line_to(100, 100);
+    p.line_to(0, 100);
+    return p;
+}
+
 }  // namespace
 
 TEST_CASE("stroke_outline: interior capsules leave every pixel of random strokes unchanged", "[stroke][interior]") {
@@ -67,11 +77,7 @@ TEST_CASE("stroke_outline: interior capsules leave every pixel of random strokes
 }
 
 TEST_CASE("stroke_outline: the capsules of an open polyline are cut at its ends", "[stroke][interior]") {
-    Path p;
-    p.move_to(0, 0);
-    p.line_to(100, 0);
-    p.line_to(100, 100);
-    p.line_to(0, 100);
+    Path p = open_square();
     StrokeStyle st;
     st.width = 10;
     st.join = LineJoin::Round;
@@ -112,11 +118,7 @@ TEST_CASE("stroke_outline: the capsules of an open polyline are cut at its ends"
 
 TEST_CASE("stroke_outline: no capsules for pens too thin to hold a pixel or contours of no length",
           "[stroke][interior]") {
-    Path p;
-    p.move_to(0, 0);
-    p.line_to(100, 0);
-    p.line_to(100, 100);
-    p.line_to(0, 100);
+    Path p = open_square();
     p.close();
     StrokeStyle st;
     st.join = LineJoin::Round;

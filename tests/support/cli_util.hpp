@@ -68,4 +68,10 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
 
 inline bool dir_is_empty(const std::filesystem::path& d) { return std::filesystem::is_empty(d); }
 
+// Writes `s` to `p` as it is (an input file for the CLI).
+inline void write_text(const std::filesystem::path& p, const std::string& s) {
+    std::ofstream f(p, std::ios::binary);
+    f << s;
+}
+
 }  // namespace casteljau::test

@@ -34,6 +34,23 @@ svg::DisplayList convert(const std::string& body) {
                         repo_fonts());
 }
 
+// The test emoji font (tests/data/emoji_cbdt_test.ttf, family "Noto Color Emoji") alone, with
+// U+1F600's advance and the middle of the ascender-to-descender box at 50 user units.
+struct EmojiAt50 {
+    SvgOptions options;
+    double advance = 0, mid = 0;
+    EmojiAt50() {
+        FontDatabaseOptions o;
+        o.font_files = {std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/emoji_cbdt_test.ttf"};
+        o.system_fonts = false;
+        options.font_database = std::make_shared<const FontDatabase>(o);
+        const Font font = Font::load(o.font_files[0]);
+        const double k = 50.0 / font.units_per_em();
+        advance = font.glyph_metrics(font.glyph_index(0x1F600)).advance * k;
+        mid = (font.metrics().ascender + font.metrics().descender) / 2 * k;
+    }
+};
+
 // The fills and strokes of `items` (leaving out Bounds items).
 svg::DisplayList painted(const svg::DisplayList& items) {
     svg::DisplayList out;
@@ -235,15 +252,9 @@ TEST_CASE("svg text: an upright glyph in vertical text is centred on the line", 
     // the middle of its ascender-to-descender box, (a + d) / 2 above its baseline, lands on the
     // line. So the k-th cluster's origin is (x - w/2, y + k w + w/2 + (a + d)/2). The emoji are
     // colour glyphs: their items carry the origin directly.
-    FontDatabaseOptions o;
-    o.font_files = {std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/emoji_cbdt_test.ttf"};
-    o.system_fonts = false;
-    SvgOptions options;
-    options.font_database = std::make_shared<const FontDatabase>(o);
-    const Font font = Font::load(o.font_files[0]);
-    const double k = 50.0 / font.units_per_em();
-    const double w = font.glyph_metrics(font.glyph_index(0x1F600)).advance * k;
-    const double mid = (font.metrics().ascender + font.metrics().descender) / 2 * k;
+    const EmojiAt50 e;
+    const SvgOptions& options = e.options;
+    const double w = e.advance, mid = e.mid;
     const svg::DisplayList items = svg::convert(
         "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='200'><text x='100' y='20' font-size='50' "
         "font-family='Noto Color Emoji' writing-mode='tb'>&#x1F600;&#x1F600;</text></svg>",
@@ -286,15 +297,9 @@ TEST_CASE("svg text: an upright glyph of vertical text on a path turns across th
     // counterclockwise about the middle of its advance w, its em box centred on the path: on the
     // path y = 100 starting at x = 0, the emoji's middle is at (w/2, 100) and its origin at
     // (w/2 + (a + d)/2, 100 + w/2), its advance pointing up.
-    FontDatabaseOptions o;
-    o.font_files = {std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/emoji_cbdt_test.ttf"};
-    o.system_fonts = false;
-    SvgOptions options;
-    options.font_database = std::make_shared<const FontDatabase>(o);
-    const Font font = Font::load(o.font_files[0]);
-    const double k = 50.0 / font.units_per_em();
-    const double w = font.glyph_metrics(font.glyph_index(0x1F600)).advance * k;
-    const double mid = (font.metrics().ascender + font.metrics().descender) / 2 * k;
+    const EmojiAt50 e;
+    const SvgOptions& options = e.options;
+    const double w = e.advance, mid = e.mid;
     const svg::DisplayList items = svg::convert(
         "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='200'><path id='p' d='M 0 100 L 200 100'/>"
         "<text font-size='50' font-family='Noto Color Emoji' writing-mode='tb'><textPath href='#p'>&#x1F600;"
