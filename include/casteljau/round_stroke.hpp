@@ -22,8 +22,10 @@
 // Conventions: pixel space, x right, y down, pixel (i, j) is the square [i, i+1) x [j, j+1).
 // Coverage is rounded to 1/255 (half-way rounds up).
 // Cost: each capsule costs the sample lines it spans (its height plus the width, times
-// lines_per_pixel) and each line a sort of the intervals on it (nearly sorted: insertion);
-// memory: the mask and one row of accumulators.
+// lines_per_pixel), computed several lines at a time with SIMD; each interval costs a comparison
+// with the last one on its line (they arrive nearly in order; a line whose intervals do not is
+// sorted once). Memory: the mask, 32 bytes per segment reaching the clip and one row of
+// accumulators.
 // Thread-safety: a pure function of its arguments; calls may run concurrently.
 #pragma once
 

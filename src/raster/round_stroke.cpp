@@ -2,12 +2,13 @@
 // include/casteljau/round_stroke.hpp).
 //
 // Rows are swept top to bottom with an active list of the capsules whose vertical extent meets the
-// row. On each sample line y = c every active capsule it crosses gives one interval (a capsule is
-// convex, so the hull of the intervals of its two end discs and of its band is its whole section),
-// the intervals are sorted and merged, and each merged interval adds its exact length inside every
-// pixel it crosses, weighted by the line's share of the row: partial pixels at its two ends directly,
-// the whole pixels between through a difference array. One prefix sum per row turns them into
-// coverage.
+// row, in order of their left ends. Each active capsule gives one interval on every sample line
+// y = c of the row it crosses (a capsule is convex, so the hull of the intervals of its two end discs
+// and of its band is its whole section; capsule_section.hpp computes a run of lines at once), and
+// each line keeps the union of its intervals as they arrive (LineUnion). Each interval of the union
+// then adds its exact length inside every pixel it crosses, weighted by the line's share of the
+// row: partial pixels at its two ends directly, the whole pixels between through a difference
+// array. One prefix sum per row turns them into coverage.
 //
 // Error: on a band of height h the midpoint rule misses the integral of the covered length L(y) by
 // at most h/2 times the total variation of L over the band (the half above the midpoint and the
@@ -26,24 +27,15 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
+#include "raster/capsule_section.hpp"
 
 namespace casteljau {
 namespace {
 
-struct SweptSegment {
-    double ax, ay, bx, by;  // the segment's ends
-    double y0, y1;          // vertical extent, the radius included
-    double x0;              // left end of the horizontal extent, the radius included
-    // The band swept by the segment, on the line y = ay + dy, as x ranges:
-    //   between its sides:  ax + side_slope dy -/+ side_half  (side_half infinite: horizontal segment)
-    //   between its ends:   ax - end_slope dy + [end_lo, end_hi]
-    // and for a vertical segment x in ax -/+ r while dy lies in [end_lo, end_hi].
-    double side_slope = 0, side_half = INFINITY, end_slope = 0, end_lo = 0, end_hi = 0;
-    bool band = false, vertical = false;
-};
+using raster::SweptCapsule;
 
-SweptSegment make_capsule(const LineSegment& s, double r) {
-    SweptSegment k{
+SweptCapsule make_capsule(const LineSegment& s, double r) {
+    SweptCapsule k{
         s.a.x, s.a.y, s.b.x, s.b.y, std::min(s.a.y, s.b.y) - r, std::max(s.a.y, s.b.y) + r, std::min(s.a.x, s.b.x) - r};
     const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, len = std::hypot(dx, dy);
     if (!(len > 0) || !std::isfinite(len)) return k;  // a disc
@@ -65,54 +57,29 @@ SweptSegment make_capsule(const LineSegment& s, double r) {
     return k;
 }
 
-// The interval [lo, hi] of x where the line y = c lies within r of capsule k; false when the line
-// misses it. The capsule is convex, so its section is the hull of its two end discs' and its band's.
-bool capsule_section(const SweptSegment& k, double r, double c, double& lo, double& hi) {
-    lo = INFINITY;
-    hi = -INFINITY;
-    auto disc = [&](double px, double py) {
-        const double d = c - py, s = r * r - d * d;
-        if (s < 0) return;
-        const double w = std::sqrt(s);
-        lo = std::min(lo, px - w);
-        hi = std::max(hi, px + w);
-    };
-    disc(k.ax, k.ay);
-    disc(k.bx, k.by);
-    if (k.band) {
-        const double dy = c - k.ay;
-        double l, h;
-        if (k.vertical) {
-            if (dy < k.end_lo || dy > k.end_hi) return lo < hi;
-            l = k.ax - r;
-            h = k.ax + r;
-        } else {
-            const double base = k.ax - k.end_slope * dy, mid = k.ax + k.side_slope * dy;
-            l = std::max(base + k.end_lo, mid - k.side_half);
-            h = std::min(base + k.end_hi, mid + k.side_half);
-        }
-        if (l <= h) {
-            lo = std::min(lo, l);
-            hi = std::max(hi, h);
-        }
-    }
-    return lo < hi;
-}
+// A segment that can reach the clip: its extent, the radius included, and its index. The sweep
+// keeps these small records and builds a capsule's section form only for the rows it crosses.
+struct Extent {
+    double y0, y1, x0;
+    std::uint32_t segment;
+};
 
-// The capsules that can reach `clip`, sorted by the top of their extent.
-std::vector<SweptSegment> capsules_in(std::span<const LineSegment> segments, double r, const IRect& clip) {
-    std::vector<SweptSegment> caps;
-    caps.reserve(segments.size());
-    for (const LineSegment& s : segments) {
+// The segments that can reach `clip`, sorted by the top of their extent.
+std::vector<Extent> extents_in(std::span<const LineSegment> segments, double r, const IRect& clip) {
+    if (segments.size() > UINT32_MAX) throw Error(ErrorKind::Limit, "round_stroke_mask: more than 2^32 - 1 segments");
+    std::vector<Extent> out;
+    out.reserve(segments.size());  // pages are touched only as records are written
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        const LineSegment& s = segments[i];
         if (!s.a.is_finite() || !s.b.is_finite())
             throw Error(ErrorKind::InvalidArgument, "round_stroke_mask: segment coordinates must be finite");
-        if (std::max(s.a.y, s.b.y) + r <= clip.y0 || std::min(s.a.y, s.b.y) - r >= clip.y1) continue;
-        if (std::max(s.a.x, s.b.x) + r <= clip.x0 || std::min(s.a.x, s.b.x) - r >= clip.x1) continue;
-        const SweptSegment k = make_capsule(s, r);
-        caps.push_back(k);
+        const double y0 = std::min(s.a.y, s.b.y) - r, y1 = std::max(s.a.y, s.b.y) + r;
+        const double x0 = std::min(s.a.x, s.b.x) - r;
+        if (y1 <= clip.y0 || y0 >= clip.y1 || std::max(s.a.x, s.b.x) + r <= clip.x0 || x0 >= clip.x1) continue;
+        out.push_back({y0, y1, x0, static_cast<std::uint32_t>(i)});
     }
-    std::sort(caps.begin(), caps.end(), [](const SweptSegment& p, const SweptSegment& q) { return p.y0 < q.y0; });
-    return caps;
+    std::sort(out.begin(), out.end(), [](const Extent& p, const Extent& q) { return p.y0 < q.y0; });
+    return out;
 }
 
 // One row's accumulators: partial pixels (`part`) and whole pixels as a difference array (`whole`),
@@ -154,25 +121,49 @@ struct RowCoverage {
     }
 };
 
-// Sorts a line's intervals by their left ends. They arrive nearly sorted (short capsules in order
-// of their left ends), so insertion costs little; long capsules crossing each other can undo that,
-// and past a few moves per interval a full sort takes over, so a line never costs the square of
+// The union of the intervals on one sample line, built as they arrive. They arrive nearly in order
+// of their left ends (short capsules in order of theirs), so most either extend the last interval
+// or start a new one to its right; the others are kept as they come and the list is sorted and
+// merged once at the end (long capsules crossing each other), so a line never costs the square of
 // its intervals.
-void sort_spans(std::vector<std::pair<double, double>>& spans) {
-    const std::size_t limit = 4 * spans.size() + 64;
-    std::size_t moves = 0;
-    for (std::size_t a = 1; a < spans.size(); ++a) {
-        const std::pair<double, double> v = spans[a];
-        std::size_t b = a;
-        for (; b > 0 && spans[b - 1].first > v.first; --b) spans[b] = spans[b - 1];
-        spans[b] = v;
-        moves += a - b;
-        if (moves > limit) {
-            std::sort(spans.begin(), spans.end());
-            return;
-        }
+class LineUnion {
+public:
+    void clear() {
+        spans_.clear();
+        sorted_ = true;
     }
-}
+
+    void add(double lo, double hi) {
+        if (!spans_.empty()) {
+            auto& last = spans_.back();
+            if (lo >= last.first && lo <= last.second) {
+                last.second = std::max(last.second, hi);
+                return;
+            }
+            if (lo < last.first) sorted_ = false;
+        }
+        spans_.emplace_back(lo, hi);
+    }
+
+    // The disjoint intervals of the union, in order; intervals that touch are one.
+    const std::vector<std::pair<double, double>>& merged() {
+        if (sorted_) return spans_;
+        std::sort(spans_.begin(), spans_.end());
+        std::size_t out = 0;
+        for (std::size_t a = 0; a < spans_.size(); ++out) {
+            double lo = spans_[a].first, hi = spans_[a].second;
+            for (++a; a < spans_.size() && spans_[a].first <= hi; ++a) hi = std::max(hi, spans_[a].second);
+            spans_[out] = {lo, hi};
+        }
+        spans_.resize(out);
+        sorted_ = true;
+        return spans_;
+    }
+
+private:
+    std::vector<std::pair<double, double>> spans_;
+    bool sorted_ = true;
+};
 
 }  // namespace
 
@@ -195,14 +186,18 @@ void round_stroke_mask(std::span<const LineSegment> segments, double radius, con
     if (clip.width() > limits::kMaxCanvasDimension || clip.height() > limits::kMaxCanvasDimension)
         throw Error(ErrorKind::Limit, "round_stroke_mask: the clip exceeds " +
                                           std::to_string(limits::kMaxCanvasDimension) + " pixels per side");
-    const std::vector<SweptSegment> caps = capsules_in(segments, radius, clip);
+    const std::vector<Extent> caps = extents_in(segments, radius, clip);
     mask.bounds = clip;
     const int w = clip.width();
     mask.data.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(clip.height()), 0);
     if (caps.empty()) return;
     RowCoverage row(w);
     std::vector<std::uint32_t> active;
-    std::vector<std::pair<double, double>> spans;
+    // The intervals of each sample line of the row, filled capsule by capsule in the active list's
+    // order, and one capsule's sections on the row's lines.
+    std::vector<LineUnion> lines(static_cast<std::size_t>(lines_per_pixel));
+    static_assert(raster::kMaxSectionLines >= kMaxRoundStrokeLines);
+    std::vector<double> lo(raster::kMaxSectionLines + raster::kSectionPadding), hi(lo.size());
     std::size_t next = 0;
     const double step = 1.0 / lines_per_pixel, x0 = clip.x0, x1 = clip.x1;
     for (int j = clip.y0; j < clip.y1; ++j) {
@@ -220,23 +215,27 @@ void round_stroke_mask(std::span<const LineSegment> segments, double radius, con
             if (next == caps.size()) break;
             continue;
         }
-        for (int s = 0; s < lines_per_pixel; ++s) {
-            const double c = j + (s + 0.5) * step;
-            spans.clear();
-            for (std::uint32_t i : active) {
-                const SweptSegment& k = caps[i];
-                double lo, hi;
-                if (c > k.y0 && c < k.y1 && capsule_section(k, radius, c, lo, hi)) spans.emplace_back(lo, hi);
-            }
-            sort_spans(spans);
-            for (std::size_t a = 0; a < spans.size();) {
-                double lo = spans[a].first, hi = spans[a].second;
-                for (++a; a < spans.size() && spans[a].first <= hi; ++a) hi = std::max(hi, spans[a].second);
-                lo = std::max(lo, x0);
-                hi = std::min(hi, x1);
-                if (hi > lo) row.add(lo - x0, hi - x0, step);
-            }
+        for (LineUnion& line : lines) line.clear();
+        for (std::uint32_t i : active) {
+            const Extent& e = caps[i];
+            // The lines whose centres may lie inside (y0, y1), with a line to spare on each side;
+            // the sections decide exactly.
+            const int s0 = std::max(0, static_cast<int>(std::floor((e.y0 - j) * lines_per_pixel)) - 1);
+            const int s1 = std::min(lines_per_pixel - 1, static_cast<int>(std::ceil((e.y1 - j) * lines_per_pixel)));
+            if (s1 < s0) continue;
+            const SweptCapsule k = make_capsule(segments[e.segment], radius);
+            raster::capsule_sections(k, radius, j, step, s0, s1 - s0 + 1, lo.data(), hi.data());
+            for (int s = s0; s <= s1; ++s)
+                if (lo[static_cast<std::size_t>(s - s0)] < hi[static_cast<std::size_t>(s - s0)])
+                    lines[static_cast<std::size_t>(s)].add(lo[static_cast<std::size_t>(s - s0)],
+                                                           hi[static_cast<std::size_t>(s - s0)]);
         }
+        for (LineUnion& line : lines)
+            for (auto [l, h] : line.merged()) {
+                l = std::max(l, x0);
+                h = std::min(h, x1);
+                if (h > l) row.add(l - x0, h - x0, step);
+            }
         row.emit(mask.data.data() + static_cast<std::size_t>(j - clip.y0) * static_cast<std::size_t>(w), w);
     }
 }

@@ -1,0 +1,84 @@
+// Raster stage: sections of a capsule on a run of sample lines (capsule_section.hpp), one line per
+// SIMD lane. A capsule is convex, so its section is the hull of the sections of its two end discs
+// and of the band between them: each is computed for every lane and kept where the line meets it.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "raster/capsule_section.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "core/simd_dispatch.hpp"
+#include "raster/capsule_section.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace casteljau::raster {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Widens [lo, hi] by the section of the disc of radius r (r2 = r * r) at (px, py) on lines c.
+template <class D, class V>
+HWY_INLINE void AddDisc(D d, V c, double px, double py, V r2, V& lo, V& hi) {
+    const auto dy = hn::Sub(c, hn::Set(d, py));
+    const auto s = hn::Sub(r2, hn::Mul(dy, dy));
+    const auto hit = hn::Ge(s, hn::Zero(d));
+    const auto w = hn::Sqrt(hn::Max(s, hn::Zero(d)));
+    const auto x = hn::Set(d, px);
+    lo = hn::IfThenElse(hit, hn::Min(lo, hn::Sub(x, w)), lo);
+    hi = hn::IfThenElse(hit, hn::Max(hi, hn::Add(x, w)), hi);
+}
+
+// Widens [lo, hi] by the section of the capsule's band on lines c.
+template <class D, class V>
+HWY_INLINE void AddBand(D d, V c, const SweptCapsule& k, double r, V& lo, V& hi) {
+    const auto dy = hn::Sub(c, hn::Set(d, k.ay));
+    const auto ax = hn::Set(d, k.ax);
+    if (k.vertical) {
+        const auto hit = hn::And(hn::Ge(dy, hn::Set(d, k.end_lo)), hn::Le(dy, hn::Set(d, k.end_hi)));
+        lo = hn::IfThenElse(hit, hn::Min(lo, hn::Set(d, k.ax - r)), lo);
+        hi = hn::IfThenElse(hit, hn::Max(hi, hn::Set(d, k.ax + r)), hi);
+        return;
+    }
+    const auto base = hn::Sub(ax, hn::Mul(hn::Set(d, k.end_slope), dy));
+    const auto mid = hn::Add(ax, hn::Mul(hn::Set(d, k.side_slope), dy));
+    const auto half = hn::Set(d, k.side_half);
+    const auto l = hn::Max(hn::Add(base, hn::Set(d, k.end_lo)), hn::Sub(mid, half));
+    const auto h = hn::Min(hn::Add(base, hn::Set(d, k.end_hi)), hn::Add(mid, half));
+    const auto hit = hn::Le(l, h);
+    lo = hn::IfThenElse(hit, hn::Min(lo, l), lo);
+    hi = hn::IfThenElse(hit, hn::Max(hi, h), hi);
+}
+
+void CapsuleSectionsImpl(const SweptCapsule& k, double r, int row, double step, int s0, int n,
+                         double* HWY_RESTRICT lo_out, double* HWY_RESTRICT hi_out) {
+    const hn::ScalableTag<double> d;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    const auto r2 = hn::Set(d, r * r), y0 = hn::Set(d, k.y0), y1 = hn::Set(d, k.y1);
+    const auto inf = hn::Set(d, INFINITY), neg_inf = hn::Set(d, -INFINITY);
+    for (int i = 0; i < n; i += lanes) {
+        const auto s = hn::Iota(d, static_cast<double>(s0 + i));
+        const auto c =
+            hn::Add(hn::Set(d, static_cast<double>(row)), hn::Mul(hn::Add(s, hn::Set(d, 0.5)), hn::Set(d, step)));
+        auto lo = inf, hi = neg_inf;
+        AddDisc(d, c, k.ax, k.ay, r2, lo, hi);
+        AddDisc(d, c, k.bx, k.by, r2, lo, hi);
+        if (k.band) AddBand(d, c, k, r, lo, hi);
+        const auto inside = hn::And(hn::Gt(c, y0), hn::Lt(c, y1));
+        hn::StoreU(hn::IfThenElse(inside, lo, inf), d, lo_out + i);
+        hn::StoreU(hn::IfThenElse(inside, hi, neg_inf), d, hi_out + i);
+    }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace casteljau::raster
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace casteljau::raster {
+
+CASTELJAU_SIMD_EXPORT(CapsuleSectionsImpl);
+
+void capsule_sections(const SweptCapsule& k, double r, int row, double step, int s0, int n, double* lo, double* hi) {
+    CASTELJAU_SIMD_DISPATCH(CapsuleSectionsImpl)(k, r, row, step, s0, n, lo, hi);
+}
+
+}  // namespace casteljau::raster
+#endif

@@ -1,0 +1,38 @@
+// Internal: where a capsule (a segment swept by a disc) crosses horizontal sample lines, for
+// round_stroke.cpp. The sections of one capsule on a run of lines are computed together, with
+// Highway's runtime dispatch (core/simd_dispatch.hpp), one line per lane.
+//
+// Conventions: pixel space, y down. Line s of row j is y = j + (s + 0.5) * step.
+// Thread-safety: pure functions.
+#pragma once
+
+#include <cmath>
+
+namespace casteljau::raster {
+
+// A segment and its disc radius, in the form the sections are computed from.
+struct SweptCapsule {
+    double ax, ay, bx, by;  // the segment's ends
+    double y0, y1;          // vertical extent, the radius included
+    double x0;              // left end of the horizontal extent, the radius included
+    // The band swept by the segment, on the line y = ay + dy, as x ranges:
+    //   between its sides:  ax + side_slope dy -/+ side_half  (side_half infinite: horizontal segment)
+    //   between its ends:   ax - end_slope dy + [end_lo, end_hi]
+    // and for a vertical segment x in ax -/+ r while dy lies in [end_lo, end_hi].
+    double side_slope = 0, side_half = INFINITY, end_slope = 0, end_lo = 0, end_hi = 0;
+    bool band = false, vertical = false;
+};
+
+// Lines per call at most, and the room lo and hi need beyond the lines asked for (whole vectors
+// are stored).
+inline constexpr int kMaxSectionLines = 256;
+inline constexpr int kSectionPadding = 64;
+
+// For lines s0 .. s0 + n - 1 of row `row` (n <= kMaxSectionLines): lo[i] < hi[i] is the interval
+// of x where line s0 + i lies within r of the capsule, and lo[i] >= hi[i] where the line misses it
+// or does not lie strictly inside (y0, y1). lo and hi hold n + kSectionPadding values. The values
+// are those of the scalar formula (the same operations in the same order, no fused multiply-add),
+// whatever the target.
+void capsule_sections(const SweptCapsule& k, double r, int row, double step, int s0, int n, double* lo, double* hi);
+
+}  // namespace casteljau::raster
