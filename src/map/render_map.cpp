@@ -19,6 +19,7 @@
 #include "core/for_each_index.hpp"
 #include "map/clip_to_frame.hpp"
 #include "map/simplify_map.hpp"
+#include "map/unique_segments.hpp"
 
 namespace casteljau {
 
@@ -631,8 +632,8 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
         ss.width = layer.stroke_width;
         if (opts.sampled_strokes && thin_round(ss)) {
             // The union of every feature's capsules, drawn from the segments directly
-            // (round_stroke.hpp): no outline, so nothing folds, and a shared border drawn twice
-            // covers what it covers once.
+            // (round_stroke.hpp): no outline, so nothing folds. The union does not depend on
+            // repeats, so a shared border's second copy is dropped before the sweep.
             std::vector<LineSegment> segments;
             auto make_lines = [&](int w, std::size_t feature, std::optional<Drawable>& out) {
                 PathVisitor v;
@@ -651,6 +652,7 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
                 }
             });
             if (segments.empty()) continue;
+            map_detail::drop_repeated_segments(segments);
             target_clear = false;
             Paint paint = Paint::solid(*line_color);
             paint.opacity = layer.opacity;

@@ -4,14 +4,17 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <vector>
 
 #include "casteljau/error.hpp"
 #include "casteljau/map.hpp"
 #include "casteljau/raster.hpp"
+#include "casteljau/round_stroke.hpp"
 #include "casteljau/stroke.hpp"
 #include "map_test_util.hpp"
+#include "map/unique_segments.hpp"
 
 using namespace casteljau;
 
@@ -189,4 +192,26 @@ TEST_CASE("SharedBorders: the Natural Earth world, each border stroked once, sam
         CHECK(kept < total * 85 / 100);
         CHECK(kept > total / 2);
     }
+}
+
+TEST_CASE("drop_repeated_segments keeps one copy of each segment, either way round", "[map][shared]") {
+    const LineSegment a{{1, 2}, {3, 4}}, b{{3, 4}, {5, 0}}, c{{0.0, 1}, {2, 2}}, dot{{7, 7}, {7, 7}};
+    std::vector<LineSegment> segs{a, b, {a.b, a.a}, c, {{2, 2}, {-0.0, 1}}, dot, dot, b, {{3, 4}, {5, 1e-300}}};
+    map_detail::drop_repeated_segments(segs);
+    REQUIRE(segs.size() == 5);
+    CHECK(segs[0].a == a.a);
+    CHECK(segs[1].b == b.b);
+    CHECK(segs[2].a == c.a);
+    CHECK(segs[3].a == dot.a);
+    CHECK(segs[4].b.y == 1e-300);  // differs from b by one bit: kept
+    // Many segments, each drawn three times in shuffled directions: one of each stays, and the
+    // round strokes of both lists are the same pixels.
+    std::vector<LineSegment> many, once;
+    for (int i = 0; i < 2000; ++i) once.push_back({{0.37 * i, 5 + std::sin(i)}, {0.37 * i + 0.4, 5 + std::cos(i)}});
+    for (int k = 0; k < 3; ++k)
+        for (const LineSegment& s : once) many.push_back(k == 1 ? LineSegment{s.b, s.a} : s);
+    map_detail::drop_repeated_segments(many);
+    CHECK(many.size() == once.size());
+    const IRect clip{0, 0, 740, 12};
+    CHECK(round_stroke_mask(many, 0.4, clip).data == round_stroke_mask(once, 0.4, clip).data);
 }
