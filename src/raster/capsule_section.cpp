@@ -47,12 +47,14 @@ HWY_INLINE void AddBand(D d, V c, const SweptCapsule& k, double r, V& lo, V& hi)
     hi = hn::IfThenElse(hit, hn::Max(hi, h), hi);
 }
 
-void CapsuleSectionsImpl(const SweptCapsule& k, double r, int row, double step, int s0, int n,
-                         double* HWY_RESTRICT lo_out, double* HWY_RESTRICT hi_out) {
+int CapsuleSectionsImpl(const SweptCapsule& k, double r, int row, double step, int s0, int n,
+                        double* HWY_RESTRICT lo_out, double* HWY_RESTRICT hi_out, double* HWY_RESTRICT open_lo,
+                        double* HWY_RESTRICT open_hi, const double* HWY_RESTRICT closed_hi) {
     const hn::ScalableTag<double> d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const auto r2 = hn::Set(d, r * r), y0 = hn::Set(d, k.y0), y1 = hn::Set(d, k.y1);
     const auto inf = hn::Set(d, INFINITY), neg_inf = hn::Set(d, -INFINITY);
+    std::size_t left_lines = 0;
     for (int i = 0; i < n; i += lanes) {
         const auto s = hn::Iota(d, static_cast<double>(s0 + i));
         const auto c =
@@ -61,10 +63,24 @@ void CapsuleSectionsImpl(const SweptCapsule& k, double r, int row, double step, 
         AddDisc(d, c, k.ax, k.ay, r2, lo, hi);
         AddDisc(d, c, k.bx, k.by, r2, lo, hi);
         if (k.band) AddBand(d, c, k, r, lo, hi);
-        const auto inside = hn::And(hn::Gt(c, y0), hn::Lt(c, y1));
-        hn::StoreU(hn::IfThenElse(inside, lo, inf), d, lo_out + i);
-        hn::StoreU(hn::IfThenElse(inside, hi, neg_inf), d, hi_out + i);
+        const auto hit = hn::And(hn::And(hn::Gt(c, y0), hn::Lt(c, y1)),
+                                 hn::And(hn::Lt(lo, hi), hn::FirstN(d, static_cast<std::size_t>(n - i))));
+        // Fold into the open intervals: take where there is none, merge where the section meets it
+        // and stays right of the closed ones.
+        auto olo = hn::LoadU(d, open_lo + i), ohi = hn::LoadU(d, open_hi + i);
+        const auto take = hn::And(hit, hn::Gt(olo, ohi));
+        const auto meets = hn::And(hn::Le(lo, ohi), hn::Ge(hi, olo));
+        const auto merge = hn::And(hit, hn::And(meets, hn::Gt(lo, hn::LoadU(d, closed_hi + i))));
+        olo = hn::IfThenElse(take, lo, hn::IfThenElse(merge, hn::Min(olo, lo), olo));
+        ohi = hn::IfThenElse(take, hi, hn::IfThenElse(merge, hn::Max(ohi, hi), ohi));
+        hn::StoreU(olo, d, open_lo + i);
+        hn::StoreU(ohi, d, open_hi + i);
+        const auto left = hn::AndNot(hn::Or(take, merge), hit);
+        hn::StoreU(hn::IfThenElse(left, lo, inf), d, lo_out + i);
+        hn::StoreU(hn::IfThenElse(left, hi, neg_inf), d, hi_out + i);
+        left_lines += hn::CountTrue(d, left);
     }
+    return static_cast<int>(left_lines);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -76,8 +92,9 @@ namespace casteljau::raster {
 
 CASTELJAU_SIMD_EXPORT(CapsuleSectionsImpl);
 
-void capsule_sections(const SweptCapsule& k, double r, int row, double step, int s0, int n, double* lo, double* hi) {
-    CASTELJAU_SIMD_DISPATCH(CapsuleSectionsImpl)(k, r, row, step, s0, n, lo, hi);
+int capsule_sections(const SweptCapsule& k, double r, int row, double step, int s0, int n, double* lo, double* hi,
+                     double* open_lo, double* open_hi, const double* closed_hi) {
+    return CASTELJAU_SIMD_DISPATCH(CapsuleSectionsImpl)(k, r, row, step, s0, n, lo, hi, open_lo, open_hi, closed_hi);
 }
 
 }  // namespace casteljau::raster

@@ -28,11 +28,18 @@ struct SweptCapsule {
 inline constexpr int kMaxSectionLines = 256;
 inline constexpr int kSectionPadding = 64;
 
-// For lines s0 .. s0 + n - 1 of row `row` (n <= kMaxSectionLines): lo[i] < hi[i] is the interval
-// of x where line s0 + i lies within r of the capsule, and lo[i] >= hi[i] where the line misses it
-// or does not lie strictly inside (y0, y1). lo and hi hold n + kSectionPadding values. The values
-// are those of the scalar formula (the same operations in the same order, no fused multiply-add),
-// whatever the target.
-void capsule_sections(const SweptCapsule& k, double r, int row, double step, int s0, int n, double* lo, double* hi);
+// For lines s0 .. s0 + n - 1 of row `row` (n <= kMaxSectionLines), the interval of x where the
+// line lies within r of the capsule, folded into the line's union where that is simple. A line's
+// union is kept as its open interval open_lo[i] <= open_hi[i] (the rightmost; open_lo = +infinity
+// and open_hi = -infinity: none yet) and, left of it, closed intervals ending at most at
+// closed_hi[i] (-infinity: none). A line with no open interval takes the section as it; a section
+// meeting the open interval and starting right of closed_hi merges with it. What is left,
+// lo[i] < hi[i], is for the caller: a section right of the open interval, or reaching closed ones;
+// lo[i] >= hi[i] where nothing is left (folded, or the line misses the capsule or does not lie
+// strictly inside (y0, y1)). lo, hi, open_lo, open_hi and closed_hi hold n + kSectionPadding values
+// from line s0's. The values are those of the scalar formula (the same operations in the same
+// order, no fused multiply-add), whatever the target. Returns how many lines have something left.
+int capsule_sections(const SweptCapsule& k, double r, int row, double step, int s0, int n, double* lo, double* hi,
+                     double* open_lo, double* open_hi, const double* closed_hi);
 
 }  // namespace casteljau::raster

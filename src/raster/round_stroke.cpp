@@ -64,21 +64,28 @@ struct Extent {
     std::uint32_t segment;
 };
 
-// The segments that can reach `clip`, sorted by the top of their extent.
+// The segments that can reach `clip`, in order of the pixel row where their extent begins (a
+// counting sort: two passes over the segments, no comparisons).
 std::vector<Extent> extents_in(std::span<const LineSegment> segments, double r, const IRect& clip) {
     if (segments.size() > UINT32_MAX) throw Error(ErrorKind::Limit, "round_stroke_mask: more than 2^32 - 1 segments");
-    std::vector<Extent> out;
-    out.reserve(segments.size());  // pages are touched only as records are written
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-        const LineSegment& s = segments[i];
-        if (!s.a.is_finite() || !s.b.is_finite())
-            throw Error(ErrorKind::InvalidArgument, "round_stroke_mask: segment coordinates must be finite");
-        const double y0 = std::min(s.a.y, s.b.y) - r, y1 = std::max(s.a.y, s.b.y) + r;
-        const double x0 = std::min(s.a.x, s.b.x) - r;
-        if (y1 <= clip.y0 || y0 >= clip.y1 || std::max(s.a.x, s.b.x) + r <= clip.x0 || x0 >= clip.x1) continue;
-        out.push_back({y0, y1, x0, static_cast<std::uint32_t>(i)});
-    }
-    std::sort(out.begin(), out.end(), [](const Extent& p, const Extent& q) { return p.y0 < q.y0; });
+    // Calls each(first row, extent) for every segment reaching the clip, rows relative to clip.y0.
+    auto for_each = [&](auto&& each) {
+        for (std::size_t i = 0; i < segments.size(); ++i) {
+            const LineSegment& s = segments[i];
+            if (!s.a.is_finite() || !s.b.is_finite())
+                throw Error(ErrorKind::InvalidArgument, "round_stroke_mask: segment coordinates must be finite");
+            const double y0 = std::min(s.a.y, s.b.y) - r, y1 = std::max(s.a.y, s.b.y) + r;
+            const double x0 = std::min(s.a.x, s.b.x) - r;
+            if (y1 <= clip.y0 || y0 >= clip.y1 || std::max(s.a.x, s.b.x) + r <= clip.x0 || x0 >= clip.x1) continue;
+            const double row = std::clamp(std::floor(y0), double(clip.y0), double(clip.y1 - 1)) - clip.y0;
+            each(static_cast<std::size_t>(row), Extent{y0, y1, x0, static_cast<std::uint32_t>(i)});
+        }
+    };
+    std::vector<std::size_t> start(static_cast<std::size_t>(clip.height()) + 1, 0);
+    for_each([&](std::size_t row, const Extent&) { ++start[row + 1]; });
+    for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+    std::vector<Extent> out(start.back());
+    for_each([&](std::size_t row, const Extent& e) { out[start[row]++] = e; });
     return out;
 }
 
@@ -122,46 +129,56 @@ struct RowCoverage {
 };
 
 // The union of the intervals on one sample line, built as they arrive. They arrive nearly in order
-// of their left ends (short capsules in order of theirs), so most either extend the last interval
-// or start a new one to its right; the others are kept as they come and the list is sorted and
-// merged once at the end (long capsules crossing each other), so a line never costs the square of
-// its intervals.
+// of their left ends (capsules in order of theirs), so most meet the line's open interval (the
+// rightmost so far) and merge with it, which capsule_sections does; one right of it closes it (kept
+// here) and opens another; one between the last closed interval and the open one is kept in its
+// place. Only one reaching back over closed intervals (long capsules crossing each other) is kept
+// as it comes, and then the line is sorted and merged once at the end, so a line never costs the
+// square of its intervals.
 class LineUnion {
 public:
     void clear() {
-        spans_.clear();
+        closed_.clear();
         sorted_ = true;
     }
 
-    void add(double lo, double hi) {
-        if (!spans_.empty()) {
-            auto& last = spans_.back();
-            if (lo >= last.first && lo <= last.second) {
-                last.second = std::max(last.second, hi);
-                return;
+    // Interval [lo, hi], which capsule_sections did not fold into the open interval [open_lo,
+    // open_hi]; closed_hi: where the closed intervals end.
+    void add(double lo, double hi, double& open_lo, double& open_hi, double& closed_hi) {
+        if (lo > open_hi) {
+            if (open_lo <= open_hi) {
+                closed_.emplace_back(open_lo, open_hi);
+                closed_hi = open_hi;
             }
-            if (lo < last.first) sorted_ = false;
+            open_lo = lo;
+            open_hi = hi;
+        } else {
+            closed_.emplace_back(lo, hi);
+            if (hi < open_lo && lo > closed_hi)
+                closed_hi = hi;
+            else
+                sorted_ = false;
         }
-        spans_.emplace_back(lo, hi);
     }
 
-    // The disjoint intervals of the union, in order; intervals that touch are one.
-    const std::vector<std::pair<double, double>>& merged() {
-        if (sorted_) return spans_;
-        std::sort(spans_.begin(), spans_.end());
+    // The disjoint intervals of the union with the open one, in order; intervals that touch are one.
+    const std::vector<std::pair<double, double>>& merged(double open_lo, double open_hi) {
+        if (open_lo <= open_hi) closed_.emplace_back(open_lo, open_hi);
+        if (sorted_) return closed_;
+        std::sort(closed_.begin(), closed_.end());
         std::size_t out = 0;
-        for (std::size_t a = 0; a < spans_.size(); ++out) {
-            double lo = spans_[a].first, hi = spans_[a].second;
-            for (++a; a < spans_.size() && spans_[a].first <= hi; ++a) hi = std::max(hi, spans_[a].second);
-            spans_[out] = {lo, hi};
+        for (std::size_t a = 0; a < closed_.size(); ++out) {
+            double lo = closed_[a].first, hi = closed_[a].second;
+            for (++a; a < closed_.size() && closed_[a].first <= hi; ++a) hi = std::max(hi, closed_[a].second);
+            closed_[out] = {lo, hi};
         }
-        spans_.resize(out);
+        closed_.resize(out);
         sorted_ = true;
-        return spans_;
+        return closed_;
     }
 
 private:
-    std::vector<std::pair<double, double>> spans_;
+    std::vector<std::pair<double, double>> closed_;
     bool sorted_ = true;
 };
 
@@ -198,6 +215,8 @@ void round_stroke_mask(std::span<const LineSegment> segments, double radius, con
     std::vector<LineUnion> lines(static_cast<std::size_t>(lines_per_pixel));
     static_assert(raster::kMaxSectionLines >= kMaxRoundStrokeLines);
     std::vector<double> lo(raster::kMaxSectionLines + raster::kSectionPadding), hi(lo.size());
+    // Each line's open interval and the end of its closed ones (LineUnion).
+    std::vector<double> open_lo(lo.size()), open_hi(lo.size()), closed_hi(lo.size());
     std::size_t next = 0;
     const double step = 1.0 / lines_per_pixel, x0 = clip.x0, x1 = clip.x1;
     for (int j = clip.y0; j < clip.y1; ++j) {
@@ -216,6 +235,9 @@ void round_stroke_mask(std::span<const LineSegment> segments, double radius, con
             continue;
         }
         for (LineUnion& line : lines) line.clear();
+        std::fill(open_lo.begin(), open_lo.end(), INFINITY);
+        std::fill(open_hi.begin(), open_hi.end(), -INFINITY);
+        std::fill(closed_hi.begin(), closed_hi.end(), -INFINITY);
         for (std::uint32_t i : active) {
             const Extent& e = caps[i];
             // The lines whose centres may lie inside (y0, y1), with a line to spare on each side;
@@ -224,18 +246,24 @@ void round_stroke_mask(std::span<const LineSegment> segments, double radius, con
             const int s1 = std::min(lines_per_pixel - 1, static_cast<int>(std::ceil((e.y1 - j) * lines_per_pixel)));
             if (s1 < s0) continue;
             const SweptCapsule k = make_capsule(segments[e.segment], radius);
-            raster::capsule_sections(k, radius, j, step, s0, s1 - s0 + 1, lo.data(), hi.data());
-            for (int s = s0; s <= s1; ++s)
-                if (lo[static_cast<std::size_t>(s - s0)] < hi[static_cast<std::size_t>(s - s0)])
-                    lines[static_cast<std::size_t>(s)].add(lo[static_cast<std::size_t>(s - s0)],
-                                                           hi[static_cast<std::size_t>(s - s0)]);
+            int left = raster::capsule_sections(k, radius, j, step, s0, s1 - s0 + 1, lo.data(), hi.data(),
+                                                open_lo.data() + s0, open_hi.data() + s0, closed_hi.data() + s0);
+            for (int s = s0; left > 0; ++s) {
+                const std::size_t t = static_cast<std::size_t>(s - s0), u = static_cast<std::size_t>(s);
+                if (lo[t] < hi[t]) {
+                    lines[u].add(lo[t], hi[t], open_lo[u], open_hi[u], closed_hi[u]);
+                    --left;
+                }
+            }
         }
-        for (LineUnion& line : lines)
-            for (auto [l, h] : line.merged()) {
+        for (int s = 0; s < lines_per_pixel; ++s) {
+            const std::size_t u = static_cast<std::size_t>(s);
+            for (auto [l, h] : lines[u].merged(open_lo[u], open_hi[u])) {
                 l = std::max(l, x0);
                 h = std::min(h, x1);
                 if (h > l) row.add(l - x0, h - x0, step);
             }
+        }
         row.emit(mask.data.data() + static_cast<std::size_t>(j - clip.y0) * static_cast<std::size_t>(w), w);
     }
 }
