@@ -145,19 +145,26 @@ public:
     // Interval [lo, hi], which capsule_sections did not fold into the open interval [open_lo,
     // open_hi]; closed_hi: where the closed intervals end.
     void add(double lo, double hi, double& open_lo, double& open_hi, double& closed_hi) {
-        if (lo > open_hi) {
+        if (lo > open_hi) {  // right of the open interval: close it, open this one
             if (open_lo <= open_hi) {
                 closed_.emplace_back(open_lo, open_hi);
                 closed_hi = open_hi;
             }
             open_lo = lo;
             open_hi = hi;
-        } else {
+        } else if (!sorted_) {
             closed_.emplace_back(lo, hi);
-            if (hi < open_lo && lo > closed_hi)
-                closed_hi = hi;
-            else
-                sorted_ = false;
+        } else if (hi >= open_lo) {  // meets the open interval and reaches closed ones: merge them
+            open_lo = std::min(open_lo, lo);
+            open_hi = std::max(open_hi, hi);
+            while (!closed_.empty() && closed_.back().second >= open_lo) {
+                open_lo = std::min(open_lo, closed_.back().first);
+                closed_.pop_back();
+            }
+            closed_hi = closed_.empty() ? -INFINITY : closed_.back().second;
+        } else {
+            insert_closed(lo, hi);
+            closed_hi = closed_.back().second;
         }
     }
 
@@ -178,6 +185,28 @@ public:
     }
 
 private:
+    // [lo, hi] among the closed intervals, merged with those it meets, when its place is a few
+    // intervals from the end; else kept as it comes, for the sort at the end.
+    void insert_closed(double lo, double hi) {
+        constexpr std::size_t kMaxSteps = 8;
+        std::size_t k = closed_.size();
+        while (k > 0 && closed_[k - 1].first > hi && closed_.size() - k < kMaxSteps) --k;
+        if (k > 0 && closed_[k - 1].first > hi) {
+            closed_.emplace_back(lo, hi);
+            sorted_ = false;
+            return;
+        }
+        std::size_t end = k;  // closed_[k, end) meet [lo, hi]
+        while (k > 0 && closed_[k - 1].second >= lo) --k;
+        if (k == end) {
+            closed_.insert(closed_.begin() + static_cast<std::ptrdiff_t>(k), {lo, hi});
+            return;
+        }
+        closed_[k] = {std::min(lo, closed_[k].first), std::max(hi, closed_[end - 1].second)};
+        closed_.erase(closed_.begin() + static_cast<std::ptrdiff_t>(k) + 1,
+                      closed_.begin() + static_cast<std::ptrdiff_t>(end));
+    }
+
     std::vector<std::pair<double, double>> closed_;
     bool sorted_ = true;
 };
