@@ -37,7 +37,7 @@ using raster::SweptCapsule;
 SweptCapsule make_capsule(const LineSegment& s, double r) {
     SweptCapsule k{
         s.a.x, s.a.y, s.b.x, s.b.y, std::min(s.a.y, s.b.y) - r, std::max(s.a.y, s.b.y) + r, std::min(s.a.x, s.b.x) - r};
-    const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, len = std::hypot(dx, dy);
+    const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, len = std::sqrt(dx * dx + dy * dy);
     if (!(len > 0) || !std::isfinite(len)) return k;  // a disc
     const double ux = dx / len, uy = dy / len;
     k.band = true;
