@@ -86,13 +86,11 @@ private:
     Point p0_, p1_;           // linear: start, end; radial: p0_ focal centre, p1_ end centre
     double r0_ = 0, r1_ = 0;  // radial: focal and end radii
     std::vector<GradientStop> stops_;
-    // The stops as shading reads them, built with stops_ (set_stops): the offset, 1 / (distance to
-    // the next offset; 0 for the last stop or a zero distance) and the colour, floats in [0, 255].
-    struct StopEntry {
-        double offset, inv_span;
-        float rgba[4];
-    };
-    std::vector<StopEntry> table_;
+    // The stops as shading reads them, built with stops_ (set_stops): per stop the offset, 1 /
+    // (distance to the next offset; 0 for the last stop or a zero distance) and the colour, four
+    // floats in [0, 255].
+    std::vector<double> offsets_, inv_spans_;
+    std::vector<float> rgba_;
     void set_stops(std::vector<GradientStop> stops);
     // The straight-alpha colour at spread parameter u, channels in [0, 255].
     void interpolate(double u, float rgba[4]) const;

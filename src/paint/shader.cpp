@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "casteljau/error.hpp"
+#include "paint/gradient_span.hpp"
 
 namespace casteljau {
 
@@ -40,27 +41,32 @@ double spread_t(double t, SpreadMethod m) {
 
 void Shader::set_stops(std::vector<GradientStop> stops) {
     stops_ = normalise(std::move(stops));
-    table_.resize(stops_.size());
-    for (std::size_t i = 0; i < stops_.size(); ++i) {
+    const std::size_t n = stops_.size();
+    offsets_.resize(n);
+    inv_spans_.resize(n);
+    rgba_.resize(4 * n);
+    for (std::size_t i = 0; i < n; ++i) {
         const Color& c = stops_[i].color;
-        const double span = i + 1 < stops_.size() ? stops_[i + 1].offset - stops_[i].offset : 0;
-        table_[i] = {stops_[i].offset, span > 0 ? 1 / span : 0, {float(c.r), float(c.g), float(c.b), float(c.a)}};
+        const double span = i + 1 < n ? stops_[i + 1].offset - stops_[i].offset : 0;
+        offsets_[i] = stops_[i].offset;
+        inv_spans_[i] = span > 0 ? 1 / span : 0;
+        const float channels[4] = {float(c.r), float(c.g), float(c.b), float(c.a)};
+        std::copy(channels, channels + 4, rgba_.begin() + static_cast<std::ptrdiff_t>(4 * i));
     }
 }
 
-[[gnu::always_inline]] inline void Shader::interpolate(double u, float rgba[4]) const {
-    const StopEntry* e = table_.data();
-    const std::size_t n = table_.size();
-    auto put = [&](const float* c) {
-        for (int k = 0; k < 4; ++k) rgba[k] = c[k];
+void Shader::interpolate(double u, float rgba[4]) const {
+    const std::size_t n = offsets_.size();
+    auto put = [&](std::size_t stop) {
+        for (int k = 0; k < 4; ++k) rgba[k] = rgba_[4 * stop + static_cast<std::size_t>(k)];
     };
-    if (u <= e[0].offset) return put(e[0].rgba);
-    if (u >= e[n - 1].offset) return put(e[n - 1].rgba);
+    if (u <= offsets_[0]) return put(0);
+    if (u >= offsets_[n - 1]) return put(n - 1);
     std::size_t i = 1;
-    while (e[i].offset <= u) ++i;  // e[i - 1].offset <= u < e[i].offset
-    const float* c0 = e[i - 1].rgba;
-    const float* c1 = e[i].rgba;
-    const float w = e[i - 1].inv_span > 0 ? static_cast<float>((u - e[i - 1].offset) * e[i - 1].inv_span) : 1.0f;
+    while (offsets_[i] <= u) ++i;  // offsets_[i - 1] <= u < offsets_[i]
+    const float* c0 = rgba_.data() + 4 * (i - 1);
+    const float* c1 = rgba_.data() + 4 * i;
+    const float w = inv_spans_[i - 1] > 0 ? static_cast<float>((u - offsets_[i - 1]) * inv_spans_[i - 1]) : 1.0f;
     for (int k = 0; k < 4; ++k) rgba[k] = c0[k] + (c1[k] - c0[k]) * w;
 }
 
@@ -152,33 +158,28 @@ void Shader::color_at(double t, float rgba[4]) const {
 void Shader::shade_row(const Affine& inv, int x, int y, int length, double opacity, std::uint8_t* out) const {
     if (kind_ == Kind::Image) return shade_image_row(inv, x, y, length, opacity, out);
     const float op = static_cast<float>(std::clamp(opacity, 0.0, 1.0));
-    const bool flat = constant();
-    // The premultiplied pixel at parameter t, its alpha scaled by the opacity.
-    auto put = [&](double t, std::uint8_t* o) __attribute__((always_inline)) {
-        float c[4];
-        interpolate(flat ? 1.0 : spread_t(t, spread_), c);
-        const float alpha = c[3] * op;            // in [0, 255]
-        const float k = alpha * (1.0f / 255.0f);  // premultiplies a channel in [0, 255]
-        for (int j = 0; j < 3; ++j) o[j] = static_cast<std::uint8_t>(c[j] * k + 0.5f);
-        o[3] = static_cast<std::uint8_t>(alpha + 0.5f);
-    };
+    const paint_simd::GradientTable table{offsets_.data(), inv_spans_.data(), rgba_.data(), offsets_.size()};
     const Point row = inv.apply({0.5, y + 0.5});  // the centre of the row's pixel 0
     const double dx = p1_.x - p0_.x, dy = p1_.y - p0_.y, len2 = dx * dx + dy * dy;
-    if (kind_ == Kind::Linear && len2 > 0) {
-        // The parameter is affine along the row: t(X) = t(0) + X dt, no division per pixel.
-        const double t0 = ((row.x - p0_.x) * dx + (row.y - p0_.y) * dy) / len2;
-        const double dt = (inv.a * dx + inv.b * dy) / len2;
-        for (int i = 0; i < length; ++i, out += 4) put(t0 + (x + i) * dt, out);
-        return;
-    }
-    for (int i = 0; i < length; ++i, out += 4) {
-        const double X = x + i;
-        double t;
-        if (!parameter({row.x + X * inv.a, row.y + X * inv.b}, t)) {
-            out[0] = out[1] = out[2] = out[3] = 0;
-            continue;
+    const bool linear = kind_ == Kind::Linear && len2 > 0;
+    // The parameter is affine along a row of a linear gradient: t(X) = t(0) + X dt, no division
+    // per pixel. Radial gradients solve their equation per pixel; NaN marks no circle.
+    const double t0 = linear ? ((row.x - p0_.x) * dx + (row.y - p0_.y) * dy) / len2 : 0;
+    const double dt = linear ? (inv.a * dx + inv.b * dy) / len2 : 0;
+    constexpr int kChunk = 256;
+    double ts[kChunk + paint_simd::kGradientPadding] = {};
+    for (int from = 0; from < length; from += kChunk) {
+        const int n = std::min(kChunk, length - from);
+        for (int i = 0; i < n; ++i) {
+            const double X = x + from + i;
+            double t;
+            if (linear)
+                t = t0 + X * dt;
+            else if (!parameter({row.x + X * inv.a, row.y + X * inv.b}, t))
+                t = NAN;
+            ts[i] = t;
         }
-        put(t, out);
+        paint_simd::gradient_colors(ts, n, table, spread_, constant(), op, out + 4 * static_cast<std::size_t>(from));
     }
 }
 
