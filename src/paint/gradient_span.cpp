@@ -7,6 +7,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/simd_dispatch.hpp"
 #include "paint/gradient_span.hpp"
@@ -87,6 +88,45 @@ void GradientColorsImpl(const double* HWY_RESTRICT t, int n, const GradientTable
     }
 }
 
+// Shader::parameter for the radial case, one pixel per lane: the same operations in the same
+// order; which root applies is decided per lane, the degenerate equation (a close to 0) per row.
+void RadialParametersImpl(const RadialGradient& g, Point origin, Point step, double x0, int n, double* HWY_RESTRICT t) {
+    const hn::ScalableTag<double> d;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    const double cdx = g.centre.x - g.focal.x, cdy = g.centre.y - g.focal.y, dr = g.r1 - g.r0;
+    const double a = cdx * cdx + cdy * cdy - dr * dr;
+    const double scale = cdx * cdx + cdy * cdy + dr * dr + g.r0 * g.r0 + 1e-300;
+    const bool linear = std::fabs(a) <= 1e-9 * scale;
+    const auto vcdx = hn::Set(d, cdx), vcdy = hn::Set(d, cdy), vr0 = hn::Set(d, g.r0), vdr = hn::Set(d, dr);
+    const auto r0dr = hn::Set(d, g.r0 * dr), r0sq = hn::Set(d, g.r0 * g.r0), va = hn::Set(d, a);
+    const auto zero = hn::Zero(d), nan = hn::Set(d, NAN);
+    for (int i = 0; i < n; i += lanes) {
+        const auto X = hn::Iota(d, x0 + i);
+        const auto px = hn::Add(hn::Set(d, origin.x), hn::Mul(X, hn::Set(d, step.x)));
+        const auto py = hn::Add(hn::Set(d, origin.y), hn::Mul(X, hn::Set(d, step.y)));
+        const auto pdx = hn::Sub(px, hn::Set(d, g.focal.x)), pdy = hn::Sub(py, hn::Set(d, g.focal.y));
+        const auto b = hn::Add(hn::Add(hn::Mul(pdx, vcdx), hn::Mul(pdy, vcdy)), r0dr);
+        const auto k = hn::Sub(hn::Add(hn::Mul(pdx, pdx), hn::Mul(pdy, pdy)), r0sq);
+        auto radius_ok = [&](hn::Vec<decltype(d)> u) { return hn::Ge(hn::Add(vr0, hn::Mul(u, vdr)), zero); };
+        hn::Vec<decltype(d)> out;
+        if (linear) {
+            // Concentric circles of one radius: inside them takes the first stop.
+            const auto flat = hn::Eq(b, zero);
+            const auto u = hn::Div(k, hn::Mul(hn::Set(d, 2.0), b));
+            out =
+                hn::IfThenElse(flat, hn::IfThenElse(hn::Le(k, zero), zero, nan), hn::IfThenElse(radius_ok(u), u, nan));
+        } else {
+            const auto disc = hn::Sub(hn::Mul(b, b), hn::Mul(va, k));
+            const auto sq = hn::Sqrt(hn::Max(disc, zero));
+            const auto t1 = hn::Div(hn::Add(b, sq), va), t2 = hn::Div(hn::Sub(b, sq), va);
+            const auto hi = hn::Max(t1, t2), lo = hn::Min(t1, t2);
+            out = hn::IfThenElse(radius_ok(hi), hi, hn::IfThenElse(radius_ok(lo), lo, nan));
+            out = hn::IfThenElse(hn::Lt(disc, zero), nan, out);
+        }
+        hn::StoreU(out, d, t + i);
+    }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace casteljau::paint_simd
 HWY_AFTER_NAMESPACE();
@@ -95,6 +135,11 @@ HWY_AFTER_NAMESPACE();
 namespace casteljau::paint_simd {
 
 CASTELJAU_SIMD_EXPORT(GradientColorsImpl);
+CASTELJAU_SIMD_EXPORT(RadialParametersImpl);
+
+void radial_parameters(const RadialGradient& g, Point origin, Point step, double x0, int n, double* t) {
+    CASTELJAU_SIMD_DISPATCH(RadialParametersImpl)(g, origin, step, x0, n, t);
+}
 
 void gradient_colors(const double* t, int n, const GradientTable& table, SpreadMethod spread, bool constant,
                      float opacity, std::uint8_t* out) {

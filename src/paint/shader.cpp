@@ -170,14 +170,19 @@ void Shader::shade_row(const Affine& inv, int x, int y, int length, double opaci
     double ts[kChunk + paint_simd::kGradientPadding] = {};
     for (int from = 0; from < length; from += kChunk) {
         const int n = std::min(kChunk, length - from);
-        for (int i = 0; i < n; ++i) {
-            const double X = x + from + i;
-            double t;
-            if (linear)
-                t = t0 + X * dt;
-            else if (!parameter({row.x + X * inv.a, row.y + X * inv.b}, t))
-                t = NAN;
-            ts[i] = t;
+        if (kind_ == Kind::Radial && r1_ != 0) {
+            const paint_simd::RadialGradient g{p0_, p1_, r0_, r1_};
+            paint_simd::radial_parameters(g, row, {inv.a, inv.b}, x + from, n, ts);
+        } else {
+            for (int i = 0; i < n; ++i) {
+                const double X = x + from + i;
+                double t;
+                if (linear)
+                    t = t0 + X * dt;
+                else if (!parameter({row.x + X * inv.a, row.y + X * inv.b}, t))
+                    t = NAN;
+                ts[i] = t;
+            }
         }
         paint_simd::gradient_colors(ts, n, table, spread_, constant(), op, out + 4 * static_cast<std::size_t>(from));
     }
