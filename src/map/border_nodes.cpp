@@ -5,6 +5,7 @@
 // so a pair compares as two integers.
 #include "map/border_nodes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -18,11 +19,30 @@ namespace {
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
 // Open addressing with linear probing, the entries in the slots themselves (one cache miss per
-// lookup, which the callers prefetch ahead of time). Slot index = entry id.
+// lookup, which the callers prefetch ahead of time). Slot index = entry id, so a table that grows
+// gives its entries new ids (make_room).
 class PositionTable {
 public:
-    explicit PositionTable(std::size_t positions) : slots_(positions + positions / 3 + 64) {
-        if (slots_.size() >= kNone) throw Error(ErrorKind::Limit, "border nodes: too many positions");
+    // Room for `positions` entries.
+    explicit PositionTable(std::size_t positions) : slots_(slots_for(positions)) {}
+
+    // Makes room for `more` new entries. When the table has to grow, its entries move: the result
+    // maps every old id to its new one (callers renumber the ids they hold); otherwise it is empty.
+    std::vector<std::uint32_t> make_room(std::size_t more) {
+        if (4 * (used_ + more) <= 3 * slots_.size()) return {};
+        std::vector<Slot> old(slots_for(2 * (used_ + more)));
+        old.swap(slots_);
+        std::vector<std::uint32_t> moved(old.size(), kNone);
+        for (std::size_t s = 0; s < old.size(); ++s)
+            if (old[s].used) moved[s] = place(hash_point(old[s].p));
+        for (std::size_t s = 0; s < old.size(); ++s) {
+            if (!old[s].used) continue;
+            Slot& x = slots_[moved[s]];
+            x = old[s];
+            if (x.a != kNone) x.a = moved[x.a];
+            if (x.b != kNone) x.b = moved[x.b];
+        }
+        return moved;
     }
 
     std::size_t home(std::uint64_t hash) const {
@@ -31,12 +51,13 @@ public:
     void prefetch(std::uint64_t hash) const { __builtin_prefetch(&slots_[home(hash)]); }
     void prefetch_entry(std::uint32_t e) const { __builtin_prefetch(&slots_[e]); }
 
-    // The entry of position p (hash h), added when it is new.
+    // The entry of position p (hash h), added when it is new (make_room first).
     std::uint32_t find_or_add(Point p, std::uint64_t h) {
         for (std::size_t s = home(h);; s = s + 1 == slots_.size() ? 0 : s + 1) {
             Slot& x = slots_[s];
             if (!x.used) {
                 x = Slot{p, kNone, kNone, 1, 0};
+                ++used_;
                 return static_cast<std::uint32_t>(s);
             }
             if (x.p == p) return static_cast<std::uint32_t>(s);
@@ -73,7 +94,23 @@ private:
         std::uint32_t a = kNone, b = kNone;  // the first pair of neighbours, a <= b (kNone: not seen yet)
         std::uint8_t used = 0, node = 0;
     };
+
+    static std::size_t slots_for(std::size_t entries) {
+        const std::size_t n = entries + entries / 3 + 64;
+        if (n >= kNone) throw Error(ErrorKind::Limit, "border nodes: too many positions");
+        return n;
+    }
+
+    // The free slot a new position of hash h takes (one the table does not hold).
+    std::uint32_t place(std::uint64_t h) {
+        std::size_t s = home(h);
+        while (slots_[s].used) s = s + 1 == slots_.size() ? 0 : s + 1;
+        slots_[s].used = 1;
+        return static_cast<std::uint32_t>(s);
+    }
+
     std::vector<Slot> slots_;
+    std::size_t used_ = 0;
 };
 
 constexpr std::size_t kAhead = 8;  // lookups prefetched ahead
@@ -149,10 +186,16 @@ void for_each_line(const MapData& data, Each&& each) {
 // Any data: the table of every position and its neighbours.
 void nodes_from_positions(const MapData& data, BorderNodes& r) {
     const std::size_t total = r.node.size();
-    PositionTable table(total);
+    // The table grows with the distinct positions: data that repeats its positions (neighbours'
+    // borders, repeated features) needs far fewer entries than it has positions.
+    PositionTable table(std::min<std::size_t>(total, 1 << 16));
     std::vector<std::uint32_t> ids(total, kNone), distinct, ring;
     std::vector<std::uint64_t> hashes;
     for_each_line(data, [&](std::span<const Point> pts, bool closed, std::size_t base) {
+        const std::vector<std::uint32_t> moved = table.make_room(pts.size());
+        if (!moved.empty())
+            for (std::size_t i = 0; i < base; ++i)
+                if (ids[i] != kNone) ids[i] = moved[ids[i]];
         add_line(pts, closed, base, table, ids, distinct, hashes, ring);
     });
     for (std::size_t i = 0; i < total; ++i) {

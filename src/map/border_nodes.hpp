@@ -21,8 +21,8 @@
 // Consecutive repeats of a position (and a ring's closing repeat of its first) are skipped: they
 // carry no step. distinct_positions() is the one place that decides which positions count.
 //
-// Memory while finding: about 50 bytes per position (TopoJSON: per arc end); the result keeps one
-// byte per position.
+// Memory while finding: 4 bytes per position and about 43 bytes per distinct position (the table
+// grows with them; TopoJSON: per arc end); the result keeps one byte per position.
 // Thread-safety: free functions.
 #pragma once
 
