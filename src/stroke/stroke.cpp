@@ -283,7 +283,12 @@ private:
         // The turn's angle. A forward turn of at most one arc step (sin below sin(step)) draws no
         // arc points, so most smooth vertices of a finely flattened curve skip the atan2.
         const bool within_step = dt > 0 && sn <= sin_step_;
-        const bool wedge_possible = smooth && len1 < h_ && len2 < h_ && h_ - std::max(len1, len2) > tol_;
+        // A swept wedge needs short segments (wedge_gap) and, for a turn under a right angle, a
+        // sine of at least max(len) / (h - tol): its nearest point lies at least the longer
+        // segment's length over sin(turn) from v (the factor 0.999 keeps rounding on the safe side).
+        const double longer = std::max(len1, len2);
+        const bool wedge_possible =
+            smooth && len1 < h_ && len2 < h_ && h_ - longer > tol_ && (dt <= 0 || sn * (h_ - tol_) >= 0.999 * longer);
         const double angle = within_step && !wedge_possible ? 0.0 : std::atan2(sn, dt);
 
         outer.push_back(v + n1 * h_);
@@ -311,7 +316,7 @@ private:
         else
             inner.insert(inner.end(), cut.begin(), cut.end());
         inner.push_back(v - n2 * h_);
-        if (smooth) {
+        if (wedge_possible) {
             // The wedge the turning normal sweeps on the inner side; the part of it the two
             // segments' rectangles leave is one more piece, a contour of its own.
             double psi, rho;
