@@ -31,27 +31,32 @@ std::vector<double> effective_pattern(std::span<const double> dashes) {
 
 namespace {
 
-// How much longer than chord i of q the curve it stands for is. A chord between two smooth points
+// The turn at every vertex of q, between segments v - 1 and v, for arc_factor: -1 where it is not
+// known (not smooth, an open end, or past 1 radian).
+void vertex_turns(std::span<const Point> q, std::span<const std::uint8_t> sm, bool closed, std::vector<double>& out) {
+    const std::size_t n = q.size();
+    out.assign(n, -1.0);
+    auto seg = [&](std::size_t k) { return q[(k + 1) % n] - q[k]; };
+    for (std::size_t v = 0; v < n; ++v) {
+        if (!sm[v] || (!closed && (v == 0 || v + 1 >= n))) continue;
+        const Vec u = seg((v + n - 1) % n), w = seg(v);
+        const double a = std::atan2(std::abs(u.cross(w)), u.dot(w));
+        if (std::isfinite(a) && a <= 1) out[v] = a;
+    }
+}
+
+// How much longer than chord i of q the curve it stands for is (turns: vertex_turns of q). A chord between two smooth points
 // spans an arc whose tangent turns by about the mean of the turns at its ends (on a circle, exactly
 // the turn at each vertex), and an arc of angle phi is (phi / 2) / sin(phi / 2) times its chord:
 // measured so, dashes keep their places along the curve to second order in the chords' turn
 // instead of drifting by the chords' shortfall (a third of tolerance / radius). A chord with one
 // smooth end takes that end's turn, one with none is a line. Turns past 1 radian say nothing of
 // an arc and are not used.
-double arc_factor(std::span<const Point> q, std::span<const std::uint8_t> sm, bool closed, std::size_t i) {
-    const std::size_t n = q.size();
-    auto seg = [&](std::size_t k) { return q[(k + 1) % n] - q[k]; };
-    auto turn = [&](std::size_t v, bool& known) {  // at vertex v, between segments v - 1 and v
-        known = false;
-        if (!sm[v] || (!closed && (v == 0 || v + 1 >= n))) return 0.0;
-        const Vec u = seg((v + n - 1) % n), w = seg(v);
-        const double a = std::atan2(std::abs(u.cross(w)), u.dot(w));
-        known = std::isfinite(a) && a <= 1;
-        return known ? a : 0.0;
-    };
-    bool ks, ke;
-    const double ts = turn(i, ks), te = turn((i + 1) % n, ke);
-    const double phi = ks && ke ? 0.5 * (ts + te) : ts + te;
+double arc_factor(std::span<const double> turns, std::size_t i) {
+    const std::size_t n = turns.size();
+    const double ts = turns[i], te = turns[(i + 1) % n];
+    const bool ks = ts >= 0, ke = te >= 0;
+    const double phi = ks && ke ? 0.5 * (ts + te) : (ks ? ts : 0.0) + (ke ? te : 0.0);
     if (!(phi > 1e-4)) return 1;
     return 0.5 * phi / std::sin(0.5 * phi);
 }
@@ -80,8 +85,9 @@ struct Dasher {
     std::span<const double> pattern;
     FlatContours& out;
     std::vector<Point>& dirs;
-    Run cur;    // the dash being built
-    Run first;  // closed contours: the dash that started at the contour's start
+    Run cur;                    // the dash being built
+    Run first;                  // closed contours: the dash that started at the contour's start
+    std::vector<double> turns;  // the contour's vertex_turns
     std::size_t events = 0;
     std::size_t max_dashes;
     std::size_t max_points;
@@ -124,6 +130,7 @@ struct Dasher {
         if (on) cur.push(q[0], closed ? sm[0] : 0);
         Point dir{0, 0}, first_dir{0, 0};
 
+        vertex_turns(q, sm, closed, turns);
         const std::size_t nseg = closed ? q.size() : q.size() - 1;
         for (std::size_t i = 0; i < nseg; ++i) {
             const std::size_t j = (i + 1) % q.size();
@@ -131,7 +138,7 @@ struct Dasher {
             const double chord = distance(a, b);
             if (!(chord > 0)) continue;
             dir = (b - a) / chord;
-            const double len = chord * arc_factor(q, sm, closed, i);
+            const double len = chord * arc_factor(turns, i);
             double t = 0;
             while (rem < len - t) {
                 if (++events > 2 * max_dashes)
@@ -211,7 +218,7 @@ void dash_polyline(const FlatContours& flat, std::span<const double> pattern, do
         throw Error(ErrorKind::Limit,
                     "stroke: dash pattern too fine for the path (more than " + std::to_string(max_dashes) + " dashes)");
 
-    Dasher d{pattern, out, dirs, {}, {}, 0, max_dashes, lim.flattened_segments};
+    Dasher d{pattern, out, dirs, {}, {}, {}, 0, max_dashes, lim.flattened_segments};
     start = 0;
     for (std::size_t c = 0; c < in.contour_count(); ++c) {
         const std::size_t end = in.contour_ends[c];
