@@ -171,7 +171,11 @@ void register_svg(CLI::App& app) {
             const std::lock_guard<std::mutex> g(lock);
             std::cerr << line << "\n";
         };
-        auto failure = [&](const std::string& in, const std::string& what, ErrorKind kind) {
+        // The line starts with the file's name, so a message that ends by naming it (the library
+        // adds " in PATH" where a caller may not know which file failed) loses that ending.
+        auto failure = [&](const std::string& in, std::string what, ErrorKind kind) {
+            const std::string named = " in " + in;
+            if (what.size() > named.size() && what.ends_with(named)) what.resize(what.size() - named.size());
             const std::lock_guard<std::mutex> g(lock);
             std::cerr << "casteljau: error: " << in << ": " << what << "\n";
             if (failed++ == 0) first_kind = kind;

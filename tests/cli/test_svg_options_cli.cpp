@@ -64,6 +64,22 @@ TEST_CASE("svg --export-id: an id no element has exits 1 with one line and write
     CHECK(dir_is_empty(out));
 }
 
+TEST_CASE("svg --export-id: with several inputs each error line names its file once", "[cli][svg]") {
+    const fs::path d = scratch_dir("svg-export-missing-batch");
+    write_text(d / "a.svg", kTwoSquares);
+    write_text(d / "b.svg", kTwoSquares);
+    const fs::path out = d / "out";
+    fs::create_directories(out);
+    const CliResult r =
+        run_cli("svg " + shell_quote((d / "a.svg").string()) + " " + shell_quote((d / "b.svg").string()) +
+                " --jobs 1 --export-id nope -o " + shell_quote(out.string()));
+    CHECK(r.status == 1);
+    CHECK(r.err == "casteljau: error: " + (d / "a.svg").string() + ": no element with id 'nope'\n" +
+                       "casteljau: error: " + (d / "b.svg").string() + ": no element with id 'nope'\n" +
+                       "casteljau: error: 2 of 2 files were not rendered (their errors are above)\n");
+    CHECK(dir_is_empty(out));
+}
+
 TEST_CASE("svg --dpi: inches become that many pixels, with --zoom and --width on top", "[cli][svg]") {
     const fs::path d = scratch_dir("svg-dpi");
     // 1in x 0.5in, a rect of 0.5in x 0.25in in its top left corner.
