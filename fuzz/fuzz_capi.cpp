@@ -215,15 +215,18 @@ private:
         static const char* const kFiles[] = {CASTELJAU_FONT_DIR "/DejaVuSans.ttf",
                                              CASTELJAU_FONT_DIR "/LinLibertine_R.otf", "/nonexistent.ttf"};
         static const char* const kFamilies[] = {"DejaVu Sans", "Linux Libertine", "serif", ""};
+        static const char* const kIds[] = {"#a", "badge", "", "nope"};
         std::string scratch;
         casteljau_svg_options* o = options_for_svg(r);
-        switch (r.byte() % 5) {
+        switch (r.byte() % 7) {
             case 0: return casteljau_svg_options_set_resources(o, r.choose(kFolders, 3, scratch));
             case 1: return casteljau_svg_options_add_font_dir(o, r.choose(kFolders, 3, scratch));
             case 2: return casteljau_svg_options_add_font_file(o, r.choose(kFiles, 3, scratch));
             case 3:
                 return casteljau_svg_options_set_font_family(o, as_enum<casteljau_font_generic>(r.small_int()),
                                                              r.choose(kFamilies, 4, scratch));
+            case 4: return casteljau_svg_options_set_dpi(o, r.number());
+            case 5: return casteljau_svg_options_set_export_id(o, r.choose(kIds, 4, scratch));
             default: return casteljau_svg_options_set_system_fonts(nullptr, 0);
         }
     }

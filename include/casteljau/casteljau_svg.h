@@ -61,6 +61,15 @@ CASTELJAU_API casteljau_status casteljau_svg_options_set_font_family(casteljau_s
                                                                      casteljau_font_generic generic,
                                                                      const char* family);
 
+/* --dpi: pixels per inch of the physical units (in, cm, mm, pt, pc), the root's size included
+ * (SvgOptions::dpi; default 96). CASTELJAU_ERROR_INVALID_ARGUMENT outside 1 to 10000. */
+CASTELJAU_API casteljau_status casteljau_svg_options_set_dpi(casteljau_svg_options* options, double dpi);
+/* --export-id: draw only the element with this id (a leading '#' is ignored) and its content,
+ * where it lies in the whole document, on the document's canvas (SvgOptions::export_id). Reading
+ * a document without such an element is CASTELJAU_ERROR_INVALID_DATA. NULL or "": the whole
+ * document. */
+CASTELJAU_API casteljau_status casteljau_svg_options_set_export_id(casteljau_svg_options* options, const char* id);
+
 /* Reads a document from a file (.svg or .svgz), or from `size` bytes of memory (SVG text or
  * gzip-compressed SVG text); `options` NULL: the defaults. CASTELJAU_ERROR_PARSE for malformed
  * XML, CASTELJAU_ERROR_INVALID_DATA for an unusable root (a width or height of zero or below),

@@ -18,6 +18,8 @@ _declare([
     ("casteljau_svg_options_add_font_file", _c.c_int, [_vp, _c.c_char_p]),
     ("casteljau_svg_options_set_system_fonts", _c.c_int, [_vp, _c.c_int]),
     ("casteljau_svg_options_set_font_family", _c.c_int, [_vp, _c.c_int, _c.c_char_p]),
+    ("casteljau_svg_options_set_dpi", _c.c_int, [_vp, _d]),
+    ("casteljau_svg_options_set_export_id", _c.c_int, [_vp, _c.c_char_p]),
     ("casteljau_svg_load", _c.c_int, [_c.c_char_p, _vp, _P(_vp)]),
     ("casteljau_svg_parse", _c.c_int, [_c.c_char_p, _c.c_size_t, _vp, _P(_vp)]),
     ("casteljau_svg_destroy", None, [_vp]),
@@ -39,7 +41,7 @@ SvgSource = Union[bytes, bytearray, memoryview, PathLike]
 class _Options(_Handle):
     _destroy = _lib.casteljau_svg_options_destroy
 
-    def __init__(self, resources, font_dir, font_file, skip_system_fonts, families):
+    def __init__(self, resources, font_dir, font_file, skip_system_fonts, families, dpi, export_id):
         self._h = _lib.casteljau_svg_options_create()
         if not self._h:
             raise MemoryError("casteljau: out of memory")
@@ -53,6 +55,10 @@ class _Options(_Handle):
         for i, name in enumerate(_FAMILIES):
             if families.get(name) is not None:
                 _check(_lib.casteljau_svg_options_set_font_family(self._h, i, _text(families[name])))
+        if dpi is not None:
+            _check(_lib.casteljau_svg_options_set_dpi(self._h, float(dpi)))
+        if export_id is not None:
+            _check(_lib.casteljau_svg_options_set_export_id(self._h, _text(export_id)))
 
 
 def _many(value) -> Iterable:
@@ -78,8 +84,11 @@ class SvgDocument(_Handle):
     files of fonts for text (one or a list; --font-dir, --font-file). skip_system_fonts: do not use
     the system's fonts (--skip-system-fonts). font_family, serif_family, sans_serif_family,
     cursive_family, fantasy_family, monospace_family: the family names of the generic CSS families
-    (--font-family, ...). Raises Error for a missing file or font folder, malformed XML (status 2)
-    or an unusable root (status 3)."""
+    (--font-family, ...). dpi: pixels per inch of the physical units, the root's size included
+    (--dpi; 96 by default, 1 to 10000). export_id: draw only the element with this id (a leading
+    '#' is ignored) where it lies in the document, on the document's canvas (--export-id). Raises
+    Error for a missing file or font folder, malformed XML (status 2), an unusable root or an
+    export_id no element has (status 3), a dpi out of range (status 1)."""
     _destroy = _lib.casteljau_svg_destroy
 
     def __init__(self, source: SvgSource, *, resources: Optional[PathLike] = None,
@@ -87,10 +96,11 @@ class SvgDocument(_Handle):
                  font_file: Union[PathLike, Sequence[PathLike], None] = None,
                  skip_system_fonts: bool = False, font_family: Optional[str] = None, serif_family: Optional[str] = None,
                  sans_serif_family: Optional[str] = None, cursive_family: Optional[str] = None,
-                 fantasy_family: Optional[str] = None, monospace_family: Optional[str] = None) -> None:
+                 fantasy_family: Optional[str] = None, monospace_family: Optional[str] = None,
+                 dpi: Optional[float] = None, export_id: Optional[str] = None) -> None:
         families = dict(font_family=font_family, serif_family=serif_family, sans_serif_family=sans_serif_family,
                         cursive_family=cursive_family, fantasy_family=fantasy_family, monospace_family=monospace_family)
-        options = _Options(resources, font_dir, font_file, skip_system_fonts, families)
+        options = _Options(resources, font_dir, font_file, skip_system_fonts, families, dpi, export_id)
         if isinstance(source, (bytes, bytearray, memoryview)) or _is_markup(source):
             data = source.encode("utf-8") if isinstance(source, str) else bytes(source)
             self._h = _out(_lib.casteljau_svg_parse, data, len(data), options._h)
@@ -146,7 +156,7 @@ def render_svg(source: SvgSource, width: Optional[int] = None, height: Optional[
                tolerance: Optional[float] = None, **options) -> Image:
     """Renders an SVG file, its bytes or its text to a new Image: `casteljau svg` with -w, --height,
     -z, -b and --tolerance. The other keywords are SvgDocument's (resources, font_dir, font_file,
-    skip_system_fonts, font_family, ...). The image has .to_png() and a numpy view
+    skip_system_fonts, font_family, ..., dpi, export_id). The image has .to_png() and a numpy view
     (numpy.asarray(image): height x width x 4, premultiplied RGBA8)."""
     return SvgDocument(source, **options).render_image(width, height, zoom, background, tolerance)
 

@@ -93,6 +93,18 @@ casteljau_status casteljau_svg_options_set_font_family(casteljau_svg_options* op
     });
 }
 
+casteljau_status casteljau_svg_options_set_dpi(casteljau_svg_options* options, double dpi) {
+    return edit(options, [&](SvgOptions& o) {
+        if (!(dpi >= SvgOptions::kMinDpi && dpi <= SvgOptions::kMaxDpi))
+            throw Error(ErrorKind::InvalidArgument, "dpi must be a number from 1 to 10000");
+        o.dpi = dpi;
+    });
+}
+
+casteljau_status casteljau_svg_options_set_export_id(casteljau_svg_options* options, const char* id) {
+    return edit(options, [&](SvgOptions& o) { o.export_id = casteljau::capi::text_or_empty(id); });
+}
+
 casteljau_status casteljau_svg_load(const char* path, const casteljau_svg_options* options, casteljau_svg** out) {
     return create(out, [&] {
         need(path, "path");

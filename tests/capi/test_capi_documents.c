@@ -139,6 +139,47 @@ static void check_svg(void) {
     casteljau_svg_options_destroy(NULL);
 }
 
+/* --dpi and --export-id: a 1in x 0.5in document at 192 dpi is 192 x 96 pixels; exporting its
+ * blue square draws that square alone, where it lies; an id no element has is invalid data. */
+static void check_svg_dpi_export(void) {
+    casteljau_svg_options* options = casteljau_svg_options_create();
+    casteljau_svg *doc = NULL, *bad = (casteljau_svg*)1;
+    casteljau_image* image = NULL;
+    double w = 0, h = 0;
+    const casteljau_color clear = {0, 0, 0, 0};
+    const char* svg_text =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='1in' height='0.5in'>"
+        "<rect id='red' width='0.5in' height='0.5in' fill='#ff0000'/>"
+        "<rect id='blue' x='0.5in' width='0.5in' height='0.5in' fill='#0000ff'/></svg>";
+    CHECK(options != NULL);
+    CHECK_OK(casteljau_svg_options_set_dpi(options, 192));
+    CHECK_OK(casteljau_svg_options_set_export_id(options, "#blue"));
+    CHECK_OK(casteljau_svg_parse((const uint8_t*)svg_text, strlen(svg_text), options, &doc));
+    CHECK_OK(casteljau_svg_intrinsic_size(doc, &w, &h));
+    CHECK(w == 192 && h == 96);
+    CHECK_OK(casteljau_svg_render_image(doc, 0, 0, 0, clear, &image));
+    CHECK(casteljau_image_width(image) == 192 && casteljau_image_height(image) == 96);
+    CHECK(pixel(image, 40, 40)[3] == 0);
+    CHECK(pixel(image, 140, 40)[2] == 255 && pixel(image, 140, 40)[3] == 255);
+    casteljau_image_destroy(image);
+    casteljau_svg_destroy(doc);
+
+    CHECK_OK(casteljau_svg_options_set_export_id(options, "nope"));
+    CHECK_ERROR(casteljau_svg_parse((const uint8_t*)svg_text, strlen(svg_text), options, &bad),
+                CASTELJAU_ERROR_INVALID_DATA, "no element with id 'nope'");
+    CHECK(bad == NULL);
+    CHECK_OK(casteljau_svg_options_set_export_id(options, NULL));
+    CHECK_ERROR(casteljau_svg_options_set_dpi(options, 0.5), CASTELJAU_ERROR_INVALID_ARGUMENT, "dpi");
+    CHECK_ERROR(casteljau_svg_options_set_dpi(options, NAN), CASTELJAU_ERROR_INVALID_ARGUMENT, "dpi");
+    CHECK_ERROR(casteljau_svg_options_set_dpi(options, 20000), CASTELJAU_ERROR_INVALID_ARGUMENT, "dpi");
+    CHECK_ERROR(casteljau_svg_options_set_export_id(NULL, "a"), CASTELJAU_ERROR_INVALID_ARGUMENT, "options is NULL");
+    CHECK_OK(casteljau_svg_parse((const uint8_t*)svg_text, strlen(svg_text), options, &doc));
+    CHECK_OK(casteljau_svg_intrinsic_size(doc, &w, &h));
+    CHECK(w == 192 && h == 96); /* the dpi of the rejected calls did not replace 192 */
+    casteljau_svg_destroy(doc);
+    casteljau_svg_options_destroy(options);
+}
+
 static void check_map(void) {
     const char* geojson =
         "{\"type\": \"FeatureCollection\", \"features\": ["
@@ -653,6 +694,7 @@ int main(int argc, char** argv) {
     snprintf(cli, sizeof cli, "%s", argc > 3 ? argv[3] : "");
     check_core_additions();
     check_svg();
+    check_svg_dpi_export();
     check_map();
     check_tiles();
     check_text();

@@ -91,6 +91,20 @@ def check_svg():
     doc = cj.SvgDocument(text_svg, font_dir=FONTS, skip_system_fonts=True)
     if np.asarray(doc.render_image()).max() == 0:
         failures.append("SVG text with font_dir drew nothing")
+    # dpi and export_id, as the CLI's --dpi and --export-id draw them.
+    squares = out("squares.svg")
+    with open(squares, "w") as f:
+        f.write("<svg xmlns='http://www.w3.org/2000/svg' width='1in' height='0.5in'>"
+                "<rect id='red' width='0.5in' height='0.5in' fill='#ff0000'/>"
+                "<rect id='blue' x='0.5in' width='0.5in' height='0.5in' fill='#0000ff'/></svg>")
+    cli("svg", squares, "-o", out("squares-cli.png"), "--dpi", 192, "--export-id", "blue")
+    cj.svg_to_png(squares, out("squares.png"), dpi=192, export_id="blue")
+    same_file("svg_to_png dpi=192 export_id=blue", out("squares-cli.png"), out("squares.png"))
+    a = np.asarray(cj.render_svg(squares, dpi=192, export_id="#blue"))
+    if a.shape != (96, 192, 4) or a[40, 40, 3] != 0 or tuple(a[40, 140]) != (0, 0, 255, 255):
+        failures.append("render_svg(dpi=192, export_id=#blue): shape %s, pixels %s %s" % (a.shape, a[40, 40], a[40, 140]))
+    expect_error("export_id no element has", lambda: cj.SvgDocument(squares, export_id="nope"), 3, "nope")
+    expect_error("dpi out of range", lambda: cj.SvgDocument(squares, dpi=0.5), 1, "dpi")
 
 
 def check_map():
