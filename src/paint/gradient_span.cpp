@@ -88,8 +88,9 @@ void GradientColorsImpl(const double* HWY_RESTRICT t, int n, const GradientTable
     }
 }
 
-// Shader::parameter for the radial case, one pixel per lane: the same operations in the same
-// order; which root applies is decided per lane, the degenerate equation (a close to 0) per row.
+// The conical equation a t^2 - 2 b t + k = 0, a = |c - f|^2 - dr^2, b = (p - f).(c - f) + r0 dr,
+// k = |p - f|^2 - r0^2, one pixel per lane: which root applies is decided per lane, the degenerate
+// equation (a close to 0: a linear one) per row.
 void RadialParametersImpl(const RadialGradient& g, Point origin, Point step, double x0, int n, double* HWY_RESTRICT t) {
     const hn::ScalableTag<double> d;
     const int lanes = static_cast<int>(hn::Lanes(d));

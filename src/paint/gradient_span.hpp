@@ -32,15 +32,16 @@ inline constexpr int kGradientPadding = 64;
 void gradient_colors(const double* t, int n, const GradientTable& table, SpreadMethod spread, bool constant,
                      float opacity, std::uint8_t* out);
 
-// A radial gradient's equation (Shader::parameter): focal circle (focal, r0), end circle (centre,
-// r1), r1 > 0.
+// A two-point conical (radial) gradient: focal circle (focal, r0), end circle (centre, r1), r1 > 0.
 struct RadialGradient {
     Point focal, centre;
     double r0, r1;
 };
 
-// The parameters of the points origin + (x0 + i) step, i in [0, n) (x0 a whole number):
-// Shader::parameter's value, NaN where it has none. t holds n + kGradientPadding values.
+// The gradient parameter t of the points p = origin + (x0 + i) step, i in [0, n) (x0 a whole
+// number): the largest root of |p - c(t)| = r(t), c(t) = focal + t (centre - focal),
+// r(t) = r0 + t (r1 - r0), whose radius is not negative; NaN where there is none. Shader::parameter
+// and Shader::shade_row both use it. t holds n + kGradientPadding values.
 void radial_parameters(const RadialGradient& g, Point origin, Point step, double x0, int n, double* t);
 
 }  // namespace casteljau::paint_simd

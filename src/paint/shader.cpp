@@ -112,38 +112,11 @@ bool Shader::parameter(Point p, double& t) const {
         t = 1;  // a zero end radius paints the last stop everywhere (SVG)
         return true;
     }
-    // |p - c(t)| = r(t) with c(t) = f + t (c - f), r(t) = r0 + t (r1 - r0):
-    // a t^2 - 2 b t + k = 0, a = |c - f|^2 - dr^2, b = (p - f).(c - f) + r0 dr, k = |p - f|^2 - r0^2.
-    const double cdx = p1_.x - p0_.x, cdy = p1_.y - p0_.y, dr = r1_ - r0_;
-    const double pdx = p.x - p0_.x, pdy = p.y - p0_.y;
-    const double a = cdx * cdx + cdy * cdy - dr * dr;
-    const double b = pdx * cdx + pdy * cdy + r0_ * dr;
-    const double k = pdx * pdx + pdy * pdy - r0_ * r0_;
-    auto radius_ok = [&](double u) { return r0_ + u * dr >= 0; };
-    const double scale = cdx * cdx + cdy * cdy + dr * dr + r0_ * r0_ + 1e-300;
-    if (std::fabs(a) <= 1e-9 * scale) {
-        if (b == 0) {
-            // Concentric circles of one radius: inside them takes the first stop.
-            t = 0;
-            return k <= 0;
-        }
-        t = k / (2 * b);
-        return radius_ok(t);
-    }
-    const double disc = b * b - a * k;
-    if (disc < 0) return false;
-    const double sq = std::sqrt(disc);
-    const double t1 = (b + sq) / a, t2 = (b - sq) / a;
-    const double hi = std::max(t1, t2), lo = std::min(t1, t2);
-    if (radius_ok(hi)) {
-        t = hi;
-        return true;
-    }
-    if (radius_ok(lo)) {
-        t = lo;
-        return true;
-    }
-    return false;
+    // The conical equation of paint_simd::radial_parameters, for this one point.
+    double out[1 + paint_simd::kGradientPadding];
+    paint_simd::radial_parameters({p0_, p1_, r0_, r1_}, p, {0, 0}, 0, 1, out);
+    t = out[0];
+    return !std::isnan(t);
 }
 
 bool Shader::constant() const { return (kind_ == Kind::Linear && p0_ == p1_) || (kind_ == Kind::Radial && r1_ == 0); }
@@ -168,21 +141,15 @@ void Shader::shade_row(const Affine& inv, int x, int y, int length, double opaci
     const double dt = linear ? (inv.a * dx + inv.b * dy) / len2 : 0;
     constexpr int kChunk = 256;
     double ts[kChunk + paint_simd::kGradientPadding] = {};
+    const bool radial = kind_ == Kind::Radial && r1_ != 0;
     for (int from = 0; from < length; from += kChunk) {
         const int n = std::min(kChunk, length - from);
-        if (kind_ == Kind::Radial && r1_ != 0) {
-            const paint_simd::RadialGradient g{p0_, p1_, r0_, r1_};
-            paint_simd::radial_parameters(g, row, {inv.a, inv.b}, x + from, n, ts);
+        if (radial) {
+            paint_simd::radial_parameters({p0_, p1_, r0_, r1_}, row, {inv.a, inv.b}, x + from, n, ts);
+        } else if (linear) {
+            for (int i = 0; i < n; ++i) ts[i] = t0 + (x + from + i) * dt;
         } else {
-            for (int i = 0; i < n; ++i) {
-                const double X = x + from + i;
-                double t;
-                if (linear)
-                    t = t0 + X * dt;
-                else if (!parameter({row.x + X * inv.a, row.y + X * inv.b}, t))
-                    t = NAN;
-                ts[i] = t;
-            }
+            std::fill(ts, ts + n, 1.0);  // a zero-length linear gradient or a zero end radius
         }
         paint_simd::gradient_colors(ts, n, table, spread_, constant(), op, out + 4 * static_cast<std::size_t>(from));
     }

@@ -14,7 +14,6 @@ namespace casteljau::raster {
 struct SweptCapsule {
     double ax, ay, bx, by;  // the segment's ends
     double y0, y1;          // vertical extent, the radius included
-    double x0;              // left end of the horizontal extent, the radius included
     // The band swept by the segment, on the line y = ay + dy, as x ranges:
     //   between its sides:  ax + side_slope dy -/+ side_half  (side_half infinite: horizontal segment)
     //   between its ends:   ax - end_slope dy + [end_lo, end_hi]

@@ -35,8 +35,7 @@ namespace {
 using raster::SweptCapsule;
 
 SweptCapsule make_capsule(const LineSegment& s, double r) {
-    SweptCapsule k{
-        s.a.x, s.a.y, s.b.x, s.b.y, std::min(s.a.y, s.b.y) - r, std::max(s.a.y, s.b.y) + r, std::min(s.a.x, s.b.x) - r};
+    SweptCapsule k{s.a.x, s.a.y, s.b.x, s.b.y, std::min(s.a.y, s.b.y) - r, std::max(s.a.y, s.b.y) + r};
     const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, len = std::sqrt(dx * dx + dy * dy);
     if (!(len > 0) || !std::isfinite(len)) return k;  // a disc
     const double ux = dx / len, uy = dy / len;
@@ -211,6 +210,62 @@ private:
     bool sorted_ = true;
 };
 
+// The sample lines of one pixel row: each line's union (LineUnion) with its open interval and the
+// end of its closed ones kept in arrays, as capsule_sections reads and folds them.
+class RowLines {
+public:
+    RowLines(int lines, double r) : r_(r), step_(1.0 / lines), lines_(static_cast<std::size_t>(lines)) {
+        static_assert(raster::kMaxSectionLines >= kMaxRoundStrokeLines);
+        for (std::vector<double>* v : {&lo_, &hi_, &open_lo_, &open_hi_, &closed_hi_})
+            v->resize(raster::kMaxSectionLines + raster::kSectionPadding);
+    }
+
+    void start(int row) {
+        row_ = row;
+        for (LineUnion& line : lines_) line.clear();
+        std::fill(open_lo_.begin(), open_lo_.end(), INFINITY);
+        std::fill(open_hi_.begin(), open_hi_.end(), -INFINITY);
+        std::fill(closed_hi_.begin(), closed_hi_.end(), -INFINITY);
+    }
+
+    // Adds the sections of the capsule of `segment` (vertical extent [y0, y1]) to the row's lines.
+    void add(const LineSegment& segment, double y0, double y1) {
+        const int n = static_cast<int>(lines_.size());
+        // The lines whose centres may lie inside (y0, y1), with a line to spare on each side; the
+        // sections decide exactly.
+        const int s0 = std::max(0, static_cast<int>(std::floor((y0 - row_) * n)) - 1);
+        const int s1 = std::min(n - 1, static_cast<int>(std::ceil((y1 - row_) * n)));
+        if (s1 < s0) return;
+        int left =
+            raster::capsule_sections(make_capsule(segment, r_), r_, row_, step_, s0, s1 - s0 + 1, lo_.data(),
+                                     hi_.data(), open_lo_.data() + s0, open_hi_.data() + s0, closed_hi_.data() + s0);
+        for (int s = s0; left > 0; ++s) {
+            const std::size_t t = static_cast<std::size_t>(s - s0), u = static_cast<std::size_t>(s);
+            if (lo_[t] < hi_[t]) {
+                lines_[u].add(lo_[t], hi_[t], open_lo_[u], open_hi_[u], closed_hi_[u]);
+                --left;
+            }
+        }
+    }
+
+    // Adds every line's union, clipped to [x0, x1], to `row` (local x from x0).
+    void accumulate(double x0, double x1, RowCoverage& row) {
+        for (std::size_t u = 0; u < lines_.size(); ++u)
+            for (auto [l, h] : lines_[u].merged(open_lo_[u], open_hi_[u])) {
+                l = std::max(l, x0);
+                h = std::min(h, x1);
+                if (h > l) row.add(l - x0, h - x0, step_);
+            }
+    }
+
+private:
+    double r_, step_;
+    int row_ = 0;
+    std::vector<LineUnion> lines_;
+    std::vector<double> lo_, hi_;                        // one capsule's sections, from its first line
+    std::vector<double> open_lo_, open_hi_, closed_hi_;  // per line (LineUnion)
+};
+
 }  // namespace
 
 Mask round_stroke_mask(std::span<const LineSegment> segments, double radius, const IRect& clip, int lines_per_pixel) {
@@ -238,16 +293,9 @@ void round_stroke_mask(std::span<const LineSegment> segments, double radius, con
     mask.data.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(clip.height()), 0);
     if (caps.empty()) return;
     RowCoverage row(w);
+    RowLines lines(lines_per_pixel, radius);
     std::vector<std::uint32_t> active;
-    // The intervals of each sample line of the row, filled capsule by capsule in the active list's
-    // order, and one capsule's sections on the row's lines.
-    std::vector<LineUnion> lines(static_cast<std::size_t>(lines_per_pixel));
-    static_assert(raster::kMaxSectionLines >= kMaxRoundStrokeLines);
-    std::vector<double> lo(raster::kMaxSectionLines + raster::kSectionPadding), hi(lo.size());
-    // Each line's open interval and the end of its closed ones (LineUnion).
-    std::vector<double> open_lo(lo.size()), open_hi(lo.size()), closed_hi(lo.size());
     std::size_t next = 0;
-    const double step = 1.0 / lines_per_pixel, x0 = clip.x0, x1 = clip.x1;
     for (int j = clip.y0; j < clip.y1; ++j) {
         std::erase_if(active, [&](std::uint32_t i) { return caps[i].y1 <= j; });
         // The active list stays in order of the capsules' left ends, so that each line's intervals
@@ -263,36 +311,9 @@ void round_stroke_mask(std::span<const LineSegment> segments, double radius, con
             if (next == caps.size()) break;
             continue;
         }
-        for (LineUnion& line : lines) line.clear();
-        std::fill(open_lo.begin(), open_lo.end(), INFINITY);
-        std::fill(open_hi.begin(), open_hi.end(), -INFINITY);
-        std::fill(closed_hi.begin(), closed_hi.end(), -INFINITY);
-        for (std::uint32_t i : active) {
-            const Extent& e = caps[i];
-            // The lines whose centres may lie inside (y0, y1), with a line to spare on each side;
-            // the sections decide exactly.
-            const int s0 = std::max(0, static_cast<int>(std::floor((e.y0 - j) * lines_per_pixel)) - 1);
-            const int s1 = std::min(lines_per_pixel - 1, static_cast<int>(std::ceil((e.y1 - j) * lines_per_pixel)));
-            if (s1 < s0) continue;
-            const SweptCapsule k = make_capsule(segments[e.segment], radius);
-            int left = raster::capsule_sections(k, radius, j, step, s0, s1 - s0 + 1, lo.data(), hi.data(),
-                                                open_lo.data() + s0, open_hi.data() + s0, closed_hi.data() + s0);
-            for (int s = s0; left > 0; ++s) {
-                const std::size_t t = static_cast<std::size_t>(s - s0), u = static_cast<std::size_t>(s);
-                if (lo[t] < hi[t]) {
-                    lines[u].add(lo[t], hi[t], open_lo[u], open_hi[u], closed_hi[u]);
-                    --left;
-                }
-            }
-        }
-        for (int s = 0; s < lines_per_pixel; ++s) {
-            const std::size_t u = static_cast<std::size_t>(s);
-            for (auto [l, h] : lines[u].merged(open_lo[u], open_hi[u])) {
-                l = std::max(l, x0);
-                h = std::min(h, x1);
-                if (h > l) row.add(l - x0, h - x0, step);
-            }
-        }
+        lines.start(j);
+        for (std::uint32_t i : active) lines.add(segments[caps[i].segment], caps[i].y0, caps[i].y1);
+        lines.accumulate(clip.x0, clip.x1, row);
         row.emit(mask.data.data() + static_cast<std::size_t>(j - clip.y0) * static_cast<std::size_t>(w), w);
     }
 }

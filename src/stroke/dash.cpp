@@ -45,9 +45,10 @@ void vertex_turns(std::span<const Point> q, std::span<const std::uint8_t> sm, bo
     }
 }
 
-// How much longer than chord i of q the curve it stands for is (turns: vertex_turns of q). A chord between two smooth points
-// spans an arc whose tangent turns by about the mean of the turns at its ends (on a circle, exactly
-// the turn at each vertex), and an arc of angle phi is (phi / 2) / sin(phi / 2) times its chord:
+// How much longer than chord i of q the curve it stands for is (turns: vertex_turns of q). A chord
+// between two smooth points spans an arc whose tangent turns by about the mean of the turns at its
+// ends (on a circle, exactly the turn at each vertex), and an arc of angle phi is
+// (phi / 2) / sin(phi / 2) times its chord:
 // measured so, dashes keep their places along the curve to second order in the chords' turn
 // instead of drifting by the chords' shortfall (a third of tolerance / radius). A chord with one
 // smooth end takes that end's turn, one with none is a line. Turns past 1 radian say nothing of
