@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -24,6 +25,7 @@
 #include "casteljau/paint.hpp"
 #include "casteljau/path.hpp"
 #include "casteljau/raster.hpp"
+#include "casteljau/round_stroke.hpp"
 #include "casteljau/shader.hpp"
 #include "casteljau/stroke.hpp"
 
@@ -108,6 +110,10 @@ public:
     // is to a shader's coordinates) with `paint`, the mask moved by (dx, dy) pixels.
     void fill_mask(const Mask& mask, const Paint& paint);
     void fill_mask(const Mask& mask, long long dx, long long dy, const Paint& paint);
+    // Composites the union of the round strokes of radius `radius` around `segments` (pixel space:
+    // the transform applies to a shader's coordinates only, as for masks) with `paint`: the rows of
+    // round_stroke_spans() go straight to the pixels, only near the strokes.
+    void fill_round_stroke(std::span<const LineSegment> segments, double radius, const Paint& paint);
 
     // Draws `image` (premultiplied, its pixel space [0, w] x [0, h]) mapped by `m` and then by the
     // current transform, sampled at pixel centres. The image is only read during the call.

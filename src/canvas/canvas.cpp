@@ -203,6 +203,14 @@ void Canvas::fill_mask(const Mask& mask, long long dx, long long dy, const Paint
     }
 }
 
+void Canvas::fill_round_stroke(std::span<const LineSegment> segments, double radius, const Paint& paint) {
+    if (state_.clip.empty() || segments.empty()) return;
+    PaintPipeline pipe(paint, state_.transform, state_.opacity, state_.blend, scratch_);
+    if (pipe.paints_nothing()) return;
+    PipelineSink sink(layer_or_target(), pipe, state_.clip_mask.get(), coverage_);
+    round_stroke_spans(segments, radius, state_.clip, sink);
+}
+
 void Canvas::draw_image(const Pixmap& image, const Affine& m, ImageSampling sampling, double opacity) {
     if (image.width() < 1 || image.height() < 1) throw Error(ErrorKind::InvalidArgument, "draw_image: empty image");
     // The shader only reads the image during this call: share it without owning it.

@@ -656,11 +656,13 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
             target_clear = false;
             Paint paint = Paint::solid(*line_color);
             paint.opacity = layer.opacity;
-            std::vector<Mask> masks(static_cast<std::size_t>(threads));
             parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
-                Mask& mask = masks[static_cast<std::size_t>(w)];
-                round_stroke_mask(segments, 0.5 * ss.width, bands[b], mask);
-                canvases[static_cast<std::size_t>(w)]->fill_mask(mask, paint);
+                Canvas& canvas = *canvases[static_cast<std::size_t>(w)];
+                canvas.save();
+                canvas.clip_rect(
+                    Rect{double(bands[b].x0), double(bands[b].y0), double(bands[b].x1), double(bands[b].y1)});
+                canvas.fill_round_stroke(segments, 0.5 * ss.width, paint);
+                canvas.restore();
             });
             continue;
         }

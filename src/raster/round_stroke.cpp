@@ -88,43 +88,77 @@ std::vector<Extent> extents_in(std::span<const LineSegment> segments, double r, 
     return out;
 }
 
-// One row's accumulators: partial pixels (`part`) and whole pixels as a difference array (`whole`),
-// local x, and the range of pixels touched.
-struct RowCoverage {
-    std::vector<double> part, whole;
-    int from, to = -1;
-
+// One row's accumulators, local x, as cells: an interval end at x = i + f (pixel i, 0 <= f < 1)
+// that starts coverage (sign +1) or ends it (-1) adds the sign to cell i's `cover` and sign times f
+// to its `area`, so that the covered length in pixel i is the sum of `cover` over cells 0..i minus
+// `area` of cell i; times the lines' common weight, its coverage. One cell per end: two updates per
+// interval. A map's row is mostly empty, so emit() visits only the blocks of 64 pixels that an
+// interval reached (from its first pixel to its last): between them the running sum of `cover` is
+// zero (whole numbers, summed exactly) and the pixels stay 0.
+class RowCoverage {
+public:
     explicit RowCoverage(int w)
-        : part(static_cast<std::size_t>(w) + 2), whole(static_cast<std::size_t>(w) + 2), from(w + 1) {}
+        : cells_(static_cast<std::size_t>(w) + 2),
+          touched_(static_cast<std::size_t>((w + 2) / kBlock / 64 + 1), 0),
+          out_(static_cast<std::size_t>(w)),
+          from_(w + 1) {}
 
-    // Adds `weight` times the length of [lo, hi] (local x, within [0, w]) inside every pixel.
-    void add(double lo, double hi, double weight) {
+    // Adds the length of [lo, hi] (local x, within [0, w]) inside every pixel.
+    void add(double lo, double hi) {
         const int i0 = static_cast<int>(lo), i1 = static_cast<int>(hi);
-        if (i0 == i1) {
-            part[static_cast<std::size_t>(i0)] += (hi - lo) * weight;
-        } else {
-            part[static_cast<std::size_t>(i0)] += (i0 + 1 - lo) * weight;
-            part[static_cast<std::size_t>(i1)] += (hi - i1) * weight;
-            whole[static_cast<std::size_t>(i0) + 1] += weight;
-            whole[static_cast<std::size_t>(i1)] -= weight;
-        }
-        from = std::min(from, i0);
-        to = std::max(to, i1);
+        Cell& a = cells_[static_cast<std::size_t>(i0)];
+        a.cover += 1;
+        a.area += lo - i0;
+        Cell& b = cells_[static_cast<std::size_t>(i1)];
+        b.cover -= 1;
+        b.area -= hi - i1;
+        for (int k = i0 / kBlock; k <= i1 / kBlock; ++k)
+            touched_[static_cast<std::size_t>(k / 64)] |= std::uint64_t{1} << (k % 64);
+        from_ = std::min(from_, i0);
+        to_ = std::max(to_, i1);
     }
 
-    // Writes the touched pixels (of w) as 8-bit coverage into `out` and clears the accumulators.
-    void emit(std::uint8_t* out, int w) {
+    // Hands `sink` row y's touched pixels (of w, from x0), each covered length times `weight` as
+    // 8-bit coverage, one run of touched blocks at a time, and clears the accumulators.
+    void emit(double weight, int y, int x0, int w, SpanSink& sink) {
         double run = 0;
-        for (int i = from; i <= to; ++i) {
-            const std::size_t k = static_cast<std::size_t>(i);
-            run += whole[k];
-            const double v = std::clamp(part[k] + run, 0.0, 1.0);
-            if (i < w) out[k] = static_cast<std::uint8_t>(v * 255 + 0.5);
-            part[k] = whole[k] = 0;
+        int start = -1, end = -1;  // the run being written: pixels [start, end)
+        const int last_pixel = std::min(to_, w - 1);
+        for (int k = from_ / kBlock; k <= to_ / kBlock; ++k) {
+            std::uint64_t& word = touched_[static_cast<std::size_t>(k / 64)];
+            const std::uint64_t bit = std::uint64_t{1} << (k % 64);
+            if (!(word & bit)) continue;
+            word &= ~bit;
+            const int first = std::max(from_, k * kBlock), last = std::min(last_pixel, k * kBlock + kBlock - 1);
+            if (first > last) continue;  // only cell w: ends at the right edge, which no pixel reads
+            if (start >= 0 && first != end) {
+                sink.row(y, x0 + start, end - start, out_.data() + start);
+                start = -1;
+            }
+            if (start < 0) start = first;
+            for (int i = first; i <= last; ++i) {
+                Cell& c = cells_[static_cast<std::size_t>(i)];
+                run += c.cover;
+                const double v = std::clamp((run - c.area) * weight, 0.0, 1.0);
+                out_[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v * 255 + 0.5);
+                c = Cell{};
+            }
+            end = last + 1;
         }
-        from = w + 1;
-        to = -1;
+        if (start >= 0) sink.row(y, x0 + start, end - start, out_.data() + start);
+        from_ = w + 1;
+        to_ = -1;
     }
+
+private:
+    static constexpr int kBlock = 64;
+    struct Cell {
+        double cover = 0, area = 0;
+    };
+    std::vector<Cell> cells_;
+    std::vector<std::uint64_t> touched_;  // one bit per block
+    std::vector<std::uint8_t> out_;       // the row's coverage, valid in the runs handed out
+    int from_, to_ = -1;
 };
 
 // The union of the intervals on one sample line, built as they arrive. They arrive nearly in order
@@ -254,7 +288,7 @@ public:
             for (auto [l, h] : lines_[u].merged(open_lo_[u], open_hi_[u])) {
                 l = std::max(l, x0);
                 h = std::min(h, x1);
-                if (h > l) row.add(l - x0, h - x0, step_);
+                if (h > l) row.add(l - x0, h - x0);
             }
     }
 
@@ -264,6 +298,32 @@ private:
     std::vector<LineUnion> lines_;
     std::vector<double> lo_, hi_;                        // one capsule's sections, from its first line
     std::vector<double> open_lo_, open_hi_, closed_hi_;  // per line (LineUnion)
+};
+
+// Throws for arguments round_stroke_spans() does not take (see casteljau/round_stroke.hpp).
+void check_round_stroke(double radius, const IRect& clip, int lines_per_pixel) {
+    if (!(radius > 0) || !std::isfinite(radius))
+        throw Error(ErrorKind::InvalidArgument, "round_stroke_mask: the radius must be finite and > 0");
+    if (lines_per_pixel < 1 || lines_per_pixel > kMaxRoundStrokeLines)
+        throw Error(ErrorKind::InvalidArgument,
+                    "round_stroke_mask: lines_per_pixel must be in [1, " + std::to_string(kMaxRoundStrokeLines) + "]");
+    if (!clip.empty() && (clip.width() > limits::kMaxCanvasDimension || clip.height() > limits::kMaxCanvasDimension))
+        throw Error(ErrorKind::Limit, "round_stroke_mask: the clip exceeds " +
+                                          std::to_string(limits::kMaxCanvasDimension) + " pixels per side");
+}
+
+// Copies rows into a mask whose bytes start at 0.
+class MaskRows final : public SpanSink {
+public:
+    explicit MaskRows(Mask& mask) : mask_(mask) {}
+    void row(int y, int x, int length, const std::uint8_t* coverage) override {
+        const IRect& b = mask_.bounds;
+        std::copy(coverage, coverage + length,
+                  mask_.data.begin() + static_cast<std::ptrdiff_t>(y - b.y0) * b.width() + (x - b.x0));
+    }
+
+private:
+    Mask& mask_;
 };
 
 }  // namespace
@@ -276,22 +336,23 @@ Mask round_stroke_mask(std::span<const LineSegment> segments, double radius, con
 
 void round_stroke_mask(std::span<const LineSegment> segments, double radius, const IRect& clip, Mask& mask,
                        int lines_per_pixel) {
-    if (!(radius > 0) || !std::isfinite(radius))
-        throw Error(ErrorKind::InvalidArgument, "round_stroke_mask: the radius must be finite and > 0");
-    if (lines_per_pixel < 1 || lines_per_pixel > kMaxRoundStrokeLines)
-        throw Error(ErrorKind::InvalidArgument,
-                    "round_stroke_mask: lines_per_pixel must be in [1, " + std::to_string(kMaxRoundStrokeLines) + "]");
     mask.bounds = {};
     mask.data.clear();
+    check_round_stroke(radius, clip, lines_per_pixel);
     if (clip.empty()) return;
-    if (clip.width() > limits::kMaxCanvasDimension || clip.height() > limits::kMaxCanvasDimension)
-        throw Error(ErrorKind::Limit, "round_stroke_mask: the clip exceeds " +
-                                          std::to_string(limits::kMaxCanvasDimension) + " pixels per side");
-    const std::vector<Extent> caps = extents_in(segments, radius, clip);
     mask.bounds = clip;
-    const int w = clip.width();
-    mask.data.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(clip.height()), 0);
+    mask.data.assign(static_cast<std::size_t>(clip.width()) * static_cast<std::size_t>(clip.height()), 0);
+    MaskRows rows(mask);
+    round_stroke_spans(segments, radius, clip, rows, lines_per_pixel);
+}
+
+void round_stroke_spans(std::span<const LineSegment> segments, double radius, const IRect& clip, SpanSink& sink,
+                        int lines_per_pixel) {
+    check_round_stroke(radius, clip, lines_per_pixel);
+    if (clip.empty()) return;
+    const std::vector<Extent> caps = extents_in(segments, radius, clip);
     if (caps.empty()) return;
+    const int w = clip.width();
     RowCoverage row(w);
     RowLines lines(lines_per_pixel, radius);
     std::vector<std::uint32_t> active;
@@ -314,7 +375,7 @@ void round_stroke_mask(std::span<const LineSegment> segments, double radius, con
         lines.start(j);
         for (std::uint32_t i : active) lines.add(segments[caps[i].segment], caps[i].y0, caps[i].y1);
         lines.accumulate(clip.x0, clip.x1, row);
-        row.emit(mask.data.data() + static_cast<std::size_t>(j - clip.y0) * static_cast<std::size_t>(w), w);
+        row.emit(1.0 / lines_per_pixel, j, clip.x0, w, sink);
     }
 }
 

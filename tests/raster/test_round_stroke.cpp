@@ -130,6 +130,43 @@ TEST_CASE("round_stroke_mask: a disc, repeated segments and a clip cutting the s
         for (int x = 3; x < 7; ++x) CHECK(part.at(x, y) == one.at(x, y));
 }
 
+TEST_CASE("round_stroke_spans: strokes far apart on a wide row, one reaching the right edge",
+          "[raster][round_stroke]") {
+    // Rows are handed out in runs of touched 64-pixel blocks: clusters with empty blocks between
+    // them, a stroke across a block boundary and one ending past the clip's right edge must all
+    // come out as the exact union, every run inside the clip, rows in order.
+    const std::vector<std::vector<Point>> lines{{{3.3, 2.2}, {9.1, 7.6}},     {{60.2, 4.1}, {70.7, 5.3}},
+                                                {{190.5, 3.4}, {191.2, 8.8}}, {{250.3, 1.6}, {300.0, 6.2}},
+                                                {{127.6, 9.5}, {128.4, 9.5}}, {{40.0, 6.5}, {40.0, 6.5}}};
+    const IRect clip{0, 0, 263, 12};
+    struct Collect final : SpanSink {
+        Mask mask;
+        int last_y = -1, last_end = 0;
+        bool ordered = true, inside = true;
+        void row(int y, int x, int length, const std::uint8_t* coverage) override {
+            ordered = ordered && (y > last_y || (y == last_y && x > last_end));
+            inside = inside && length > 0 && x >= mask.bounds.x0 && x + length <= mask.bounds.x1 &&
+                     y >= mask.bounds.y0 && y < mask.bounds.y1;
+            if (!inside) return;
+            last_y = y;
+            last_end = x + length;
+            std::copy(coverage, coverage + length,
+                      mask.data.begin() + (y - mask.bounds.y0) * mask.bounds.width() + (x - mask.bounds.x0));
+        }
+    } sink;
+    sink.mask.bounds = clip;
+    sink.mask.data.assign(static_cast<std::size_t>(clip.width() * clip.height()), 0);
+    round_stroke_spans(segments_of(lines), 0.7, clip, sink);
+    CHECK(sink.ordered);
+    CHECK(sink.inside);
+    const Error255 e = compare(sink.mask, reference(lines, 0.7, clip));
+    CHECK(e.max <= 8.0);
+    CHECK(e.sum / static_cast<double>(e.pixels) <= 0.2);
+    std::size_t touched = 0;
+    for (std::uint8_t v : sink.mask.data) touched += v != 0;
+    CHECK(touched > 100);
+}
+
 TEST_CASE("round_stroke_mask: bad input is an error", "[raster][round_stroke]") {
     const std::vector<LineSegment> ok{{{1, 1}, {5, 5}}};
     CHECK_THROWS_AS(round_stroke_mask(ok, 0, {0, 0, 8, 8}), Error);
