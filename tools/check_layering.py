@@ -57,6 +57,7 @@ PUBLIC_ONLY = {"cli"}
 # header under src/<stage>/ is private to its stage.
 INTERNAL_INTERFACES = {
     "core/for_each_index.hpp",
+    "core/large_buffer.hpp",
     "core/pixel_memory.hpp",
     "core/runtime_library.hpp",
     "core/simd_dispatch.hpp",

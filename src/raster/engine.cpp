@@ -99,8 +99,8 @@ bool ends_alternate(double ta0, double ta1, double tb0, double tb1) {
 // Grows a buffer that is all zero between shapes to at least n zeros. A reallocation copies
 // nothing (the old contents are zeros), and only the new tail is written (a large map grows these
 // buffers feature after feature, band after band).
-template <class T>
-void grow_zeroed(std::vector<T>& v, std::size_t n) {
+template <class V>
+void grow_zeroed(V& v, std::size_t n) {
     if (v.size() >= n) return;
     if (v.capacity() < n) {
         const std::size_t cap = std::max(n, 2 * v.capacity());

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "core/large_buffer.hpp"
 #include "raster/inside_cells.hpp"
 #include "raster/raster_internal.hpp"
 
@@ -102,14 +103,14 @@ private:
     // measured 5 % slower at 12 px, equal at 48 and 96 px).
     bool vec_ = false;
     static constexpr int kRowVectorMax = 8;
-    int vstride_ = 0;          // floats per row of facc_ (w rounded up to whole vectors)
-    std::vector<float> facc_;  // per pixel: the integral of the winding number, all zero between shapes
+    int vstride_ = 0;                    // floats per row of facc_ (w rounded up to whole vectors)
+    platform::LargeVector<float> facc_;  // per pixel: the integral of the winding number, all zero between shapes
     std::vector<RowPiece> pieces_;
-    std::vector<int> row_from_;       // per row: first column a piece touches (INT_MAX: none)
-    bool dirty_ = false;              // buffers may hold data from an interrupted shape
-    std::vector<double> acc_;         // cover/area, (w + 2) x h, all zero between shapes
-    std::vector<std::int32_t> head_;  // per cell: last visit + 1 (0: none), all zero between shapes
-    std::vector<std::uint8_t> cand_;  // per cell: listed in cands_ (1) or not, all zero between shapes
+    std::vector<int> row_from_;                 // per row: first column a piece touches (INT_MAX: none)
+    bool dirty_ = false;                        // buffers may hold data from an interrupted shape
+    platform::LargeVector<double> acc_;         // cover/area, (w + 2) x h, all zero between shapes
+    platform::LargeVector<std::int32_t> head_;  // per cell: last visit + 1 (0: none), all zero between shapes
+    platform::LargeVector<std::uint8_t> cand_;  // per cell: listed in cands_ (1) or not, all zero between shapes
     // Touched cells, per row, in blocks of kBlock cells: bit b of the row's words is block b. The
     // scan only sums touched blocks; between them the coverage is constant.
     static constexpr int kBlockShift = kScanBlockShift;
