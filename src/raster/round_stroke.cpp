@@ -263,16 +263,15 @@ public:
     }
 
     // Adds the sections of the capsule of `segment` (vertical extent [y0, y1]) to the row's lines.
-    void add(const LineSegment& segment, double y0, double y1) {
+    void add(const raster::SweptCapsule& capsule, double y0, double y1) {
         const int n = static_cast<int>(lines_.size());
         // The lines whose centres may lie inside (y0, y1), with a line to spare on each side; the
         // sections decide exactly.
         const int s0 = std::max(0, static_cast<int>(std::floor((y0 - row_) * n)) - 1);
         const int s1 = std::min(n - 1, static_cast<int>(std::ceil((y1 - row_) * n)));
         if (s1 < s0) return;
-        int left =
-            raster::capsule_sections(make_capsule(segment, r_), r_, row_, step_, s0, s1 - s0 + 1, lo_.data(),
-                                     hi_.data(), open_lo_.data() + s0, open_hi_.data() + s0, closed_hi_.data() + s0);
+        int left = raster::capsule_sections(capsule, r_, row_, step_, s0, s1 - s0 + 1, lo_.data(), hi_.data(),
+                                            open_lo_.data() + s0, open_hi_.data() + s0, closed_hi_.data() + s0);
         for (int s = s0; left > 0; ++s) {
             const std::size_t t = static_cast<std::size_t>(s - s0), u = static_cast<std::size_t>(s);
             if (lo_[t] < hi_[t]) {
@@ -355,16 +354,38 @@ void round_stroke_spans(std::span<const LineSegment> segments, double radius, co
     const int w = clip.width();
     RowCoverage row(w);
     RowLines lines(lines_per_pixel, radius);
-    std::vector<std::uint32_t> active;
+    // The active capsules, each built once when its first row comes and kept in a slot of `built`
+    // until its last row has gone.
+    struct Active {
+        std::uint32_t cap, slot;
+    };
+    std::vector<Active> active;
+    std::vector<SweptCapsule> built;
+    std::vector<std::uint32_t> free_slots;
     std::size_t next = 0;
     for (int j = clip.y0; j < clip.y1; ++j) {
-        std::erase_if(active, [&](std::uint32_t i) { return caps[i].y1 <= j; });
+        std::erase_if(active, [&](const Active& a) {
+            if (caps[a.cap].y1 > j) return false;
+            free_slots.push_back(a.slot);
+            return true;
+        });
         // The active list stays in order of the capsules' left ends, so that each line's intervals
         // arrive nearly sorted.
         const std::size_t kept = active.size();
-        for (; next < caps.size() && caps[next].y0 < j + 1; ++next) active.push_back(static_cast<std::uint32_t>(next));
+        for (; next < caps.size() && caps[next].y0 < j + 1; ++next) {
+            std::uint32_t slot;
+            if (free_slots.empty()) {
+                slot = static_cast<std::uint32_t>(built.size());
+                built.emplace_back();
+            } else {
+                slot = free_slots.back();
+                free_slots.pop_back();
+            }
+            built[slot] = make_capsule(segments[caps[next].segment], radius);
+            active.push_back({static_cast<std::uint32_t>(next), slot});
+        }
         if (active.size() > kept) {
-            auto left = [&](std::uint32_t a, std::uint32_t b) { return caps[a].x0 < caps[b].x0; };
+            auto left = [&](const Active& a, const Active& b) { return caps[a.cap].x0 < caps[b.cap].x0; };
             std::sort(active.begin() + static_cast<std::ptrdiff_t>(kept), active.end(), left);
             std::inplace_merge(active.begin(), active.begin() + static_cast<std::ptrdiff_t>(kept), active.end(), left);
         }
@@ -373,7 +394,7 @@ void round_stroke_spans(std::span<const LineSegment> segments, double radius, co
             continue;
         }
         lines.start(j);
-        for (std::uint32_t i : active) lines.add(segments[caps[i].segment], caps[i].y0, caps[i].y1);
+        for (const Active& a : active) lines.add(built[a.slot], caps[a.cap].y0, caps[a.cap].y1);
         lines.accumulate(clip.x0, clip.x1, row);
         row.emit(1.0 / lines_per_pixel, j, clip.x0, w, sink);
     }
