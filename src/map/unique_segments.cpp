@@ -30,14 +30,19 @@ void drop_repeated_segments(std::vector<LineSegment>& segments) {
     if (n >= kEmpty / 2) throw Error(ErrorKind::Limit, "map strokes: too many segments");
     const std::size_t size = std::bit_ceil(2 * n);
     const std::size_t mask = size - 1;
-    std::vector<std::uint32_t> slots(size, kEmpty);
+    // A slot holds a kept segment's index and the upper half of its hash: a probe reads the
+    // segment itself only when the halves agree, nearly always a repeat.
+    std::vector<std::uint64_t> slots(size, kEmpty);
     std::size_t kept = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const auto [a, b] = canonical(segments[i]);
-        std::size_t s = static_cast<std::size_t>(mix(hash_point(a) ^ (hash_point(b) >> 1))) & mask;
+        const std::uint64_t h = mix(hash_point(a) ^ (hash_point(b) >> 1));
+        const std::uint64_t tag = h >> 32 << 32;
+        std::size_t s = static_cast<std::size_t>(h) & mask;
         bool repeat = false;
         for (; slots[s] != kEmpty; s = (s + 1) & mask) {
-            const auto [c, d] = canonical(segments[slots[s]]);
+            if ((slots[s] >> 32 << 32) != tag) continue;
+            const auto [c, d] = canonical(segments[static_cast<std::uint32_t>(slots[s])]);
             if (c == a && d == b) {
                 repeat = true;
                 break;
@@ -45,7 +50,7 @@ void drop_repeated_segments(std::vector<LineSegment>& segments) {
         }
         if (repeat) continue;
         segments[kept] = segments[i];
-        slots[s] = static_cast<std::uint32_t>(kept);
+        slots[s] = tag | kept;
         ++kept;
     }
     segments.resize(kept);
