@@ -18,8 +18,9 @@
 // zero where the boundary is straight and crosses the bands without ending in them, 1/64 (4/255)
 // for one horizontal boundary across the pixel with the default 32 lines, 8/255 for both sides of
 // a horizontal line. 32 lines: on the world maps of BENCHMARKS.md at 4096 and 256 px wide, a 0.8 px
-// stroke is within 0.15/255 of the exact union on average and 8/255 in any pixel, at half the
-// cost of 64 lines (16 lines reach 15/255). The map stage's measured error is in BENCHMARKS.md.
+// stroke is within 0.15/255 of the exact union on average and 8/255 in any pixel (10/255 on
+// Natural Earth at 1024 px), at half the cost of 64 lines (16 lines reach 15/255). The map
+// stage's measured error is in BENCHMARKS.md.
 //
 // Conventions: pixel space, x right, y down, pixel (i, j) is the square [i, i+1) x [j, j+1).
 // Coverage is rounded to 1/255 (half-way rounds up).
