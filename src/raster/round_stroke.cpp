@@ -6,9 +6,10 @@
 // y = c of the row it crosses (a capsule is convex, so the hull of the intervals of its two end discs
 // and of its band is its whole section; capsule_section.hpp computes a run of lines at once), and
 // each line keeps the union of its intervals as they arrive (LineUnion). Each interval of the union
-// then adds its exact length inside every pixel it crosses, weighted by the line's share of the
-// row: partial pixels at its two ends directly, the whole pixels between through a difference
-// array. One prefix sum per row turns them into coverage.
+// then adds its exact length inside every pixel it crosses (RowCoverage: one cell update per end),
+// and one running sum per row, times the lines' common weight, turns the cells into coverage,
+// handed to a SpanSink in runs of the blocks the intervals reached. A capsule's section form is
+// built once, when its first row comes.
 //
 // Error: on a band of height h the midpoint rule misses the integral of the covered length L(y) by
 // at most h/2 times the total variation of L over the band (the half above the midpoint and the
