@@ -100,7 +100,6 @@ void interior_capsules(const FlatContours& flat, const StrokeStyle& style, doubl
             ends[1] = open_end(pts.back(), pts[j], -flat.tail[c], h, tol);
         }
         const std::size_t segs = closed ? pts.size() : pts.size() - 1;
-        out.reserve(out.size() + segs);
         for (std::size_t i = 0; i < segs; ++i) {
             const Point a = pts[i], b = pts[(i + 1) % pts.size()];
             CutCapsule cc(Capsule{m.apply(a), m.apply(b), r * scale});
