@@ -1,4 +1,4 @@
-// Map stage: dropping repeated segments (unique_segments.hpp) with one open-addressing table of
+// Map stage: dropping repeated segments (unique_segments.hpp) with open-addressing tables of
 // segment indices, probed linearly from a hash of the segment's ends taken in a canonical order.
 #include "map/unique_segments.hpp"
 
@@ -15,6 +15,20 @@ namespace casteljau::map_detail {
 namespace {
 
 constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint64_t kEmptySlot = std::numeric_limits<std::uint64_t>::max();
+
+// Repeats have equal hashes, so the segments can be split into parts by the hash's top bits and
+// each part searched on its own, in a table small enough to stay in the first-level cache (about
+// kPartSegments segments, 16 KB): one table for all would miss the cache at nearly every probe
+// once it outgrows it (a world map at 1024 px has 300,000 segments).
+constexpr std::size_t kPartSegments = 1024;
+constexpr int kMaxPartBits = 16;
+
+int part_bits(std::size_t n) {
+    int bits = 0;
+    while (bits < kMaxPartBits && (n >> bits) > 2 * kPartSegments) ++bits;
+    return bits;
+}
 
 // The ends in a canonical order (the lesser first, x then y), so both directions compare equal.
 std::pair<Point, Point> canonical(const LineSegment& s) {
@@ -28,31 +42,50 @@ void drop_repeated_segments(std::vector<LineSegment>& segments) {
     const std::size_t n = segments.size();
     if (n < 2) return;
     if (n >= kEmpty / 2) throw Error(ErrorKind::Limit, "map strokes: too many segments");
-    const std::size_t size = std::bit_ceil(2 * n);
-    const std::size_t mask = size - 1;
-    // A slot holds a kept segment's index and the upper half of its hash: a probe reads the
-    // segment itself only when the halves agree, nearly always a repeat.
-    std::vector<std::uint64_t> slots(size, kEmpty);
-    std::size_t kept = 0;
+    std::vector<std::uint64_t> hash(n);
     for (std::size_t i = 0; i < n; ++i) {
         const auto [a, b] = canonical(segments[i]);
-        const std::uint64_t h = mix(hash_point(a) ^ (hash_point(b) >> 1));
-        const std::uint64_t tag = h >> 32 << 32;
-        std::size_t s = static_cast<std::size_t>(h) & mask;
-        bool repeat = false;
-        for (; slots[s] != kEmpty; s = (s + 1) & mask) {
-            if ((slots[s] >> 32 << 32) != tag) continue;
-            const auto [c, d] = canonical(segments[static_cast<std::uint32_t>(slots[s])]);
-            if (c == a && d == b) {
-                repeat = true;
-                break;
-            }
-        }
-        if (repeat) continue;
-        segments[kept] = segments[i];
-        slots[s] = tag | kept;
-        ++kept;
+        hash[i] = mix(hash_point(a) ^ (hash_point(b) >> 1));
     }
+    // The segments' indices grouped by their parts, in order within each.
+    const int bits = part_bits(n);
+    auto part = [bits](std::uint64_t h) {
+        return bits == 0 ? std::size_t{0} : static_cast<std::size_t>(h >> (64 - bits));
+    };
+    std::vector<std::uint32_t> end(std::size_t{1} << bits, 0), order(n);
+    for (std::uint64_t h : hash) ++end[part(h)];
+    std::uint32_t sum = 0;
+    for (std::uint32_t& e : end) {
+        sum += e;
+        e = sum - e;  // the part's start, moved to its end by the pass below
+    }
+    for (std::size_t i = 0; i < n; ++i) order[end[part(hash[i])]++] = static_cast<std::uint32_t>(i);
+    // Each part's table: a slot holds a kept segment's index and 32 further bits of its hash, so a
+    // probe reads the segment itself only when those agree, nearly always a repeat.
+    std::vector<std::uint8_t> repeat(n, 0);
+    std::vector<std::uint64_t> slots;
+    std::size_t begin = 0;
+    for (const std::uint32_t stop : end) {
+        const std::size_t mask = std::bit_ceil(2 * (stop - begin)) - 1;
+        slots.assign(mask + 1, kEmptySlot);
+        for (std::size_t k = begin; k < stop; ++k) {
+            const std::uint32_t i = order[k];
+            const std::uint64_t tag = (hash[i] >> 24) << 32;
+            std::size_t s = static_cast<std::size_t>(hash[i]) & mask;
+            for (; slots[s] != kEmptySlot; s = (s + 1) & mask) {
+                if ((slots[s] >> 32 << 32) != tag) continue;
+                if (canonical(segments[static_cast<std::uint32_t>(slots[s])]) == canonical(segments[i])) {
+                    repeat[i] = 1;
+                    break;
+                }
+            }
+            if (!repeat[i]) slots[s] = tag | i;
+        }
+        begin = stop;
+    }
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!repeat[i]) segments[kept++] = segments[i];
     segments.resize(kept);
 }
 
