@@ -656,6 +656,12 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
             target_clear = false;
             Paint paint = Paint::solid(*line_color);
             paint.opacity = layer.opacity;
+            // Each sweep reads every segment once to find those it needs: one thread sweeps the
+            // whole image at once, several take a band each.
+            if (threads == 1) {
+                canvases[0]->fill_round_stroke(segments, 0.5 * ss.width, paint);
+                continue;
+            }
             parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
                 Canvas& canvas = *canvases[static_cast<std::size_t>(w)];
                 canvas.save();
