@@ -316,7 +316,12 @@ bool looks_like_lines(std::string_view text) {
 
 MapData from_text(std::string_view text, std::string_view topojson_object) {
     if (looks_like_lines(text)) return read_geojson_lines(text);
-    if (const auto elements = collection_elements(text)) {
+    // A FeatureCollection's features are read in parallel after a validating scan of the whole
+    // text; a document that names a TopoJSON object, or may be a Topology, skips that scan and goes
+    // through the DOM, which reads any document (a GeoJSON that merely contains the word is read
+    // the same, only without the parallel path).
+    const bool maybe_topology = !topojson_object.empty() || text.find("\"Topology\"") != std::string_view::npos;
+    if (const auto elements = maybe_topology ? std::nullopt : collection_elements(text)) {
         if (!topojson_object.empty())
             throw Error(ErrorKind::InvalidArgument, "--layer selects a TopoJSON object, but the input is GeoJSON");
         return geojson_document(text, elements, "map data");

@@ -190,6 +190,28 @@ TEST_CASE("read_map_data refuses a TopoJSON layer name for GeoJSON", "[geojson][
     } catch (const Error& e) { CHECK(e.kind() == ErrorKind::InvalidArgument); }
 }
 
+TEST_CASE("read_map_data reads a FeatureCollection alike on either path", "[geojson]") {
+    // The word Topology in a property sends the collection through the DOM instead of the
+    // parallel reader: the same features and positions come out.
+    const std::string collection = R"({"type":"FeatureCollection","features":[
+        {"type":"Feature","properties":{"name":"NAME"},"geometry":{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,3],[0,0]]]}},
+        {"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":[[1,1],[2,2.5]]}}]})";
+    std::string named = collection;
+    named.replace(named.find("\"NAME\""), 6, "\"Topology\"");
+    const MapData a = read_map_data(collection), b = read_map_data(named);
+    REQUIRE(a.features.size() == 2);
+    REQUIRE(b.features.size() == 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+        REQUIRE(a.features[i].geometries.size() == 1);
+        REQUIRE(b.features[i].geometries.size() == 1);
+        CHECK(a.features[i].geometries[0].points == b.features[i].geometries[0].points);
+        CHECK(a.features[i].geometries[0].ring_ends == b.features[i].geometries[0].ring_ends);
+    }
+    CHECK(b.features[0].properties.size() == a.features[0].properties.size());
+    // A layer name refuses a collection too.
+    CHECK_THROWS_AS(read_map_data(collection, "countries"), Error);
+}
+
 TEST_CASE("read_map_file reads in place like read_map_data and reports errors", "[geojson]") {
     const std::string world = std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/maps/countries-110m.json";
     const auto bytes = read_file(world);
