@@ -113,8 +113,11 @@ public:
         Cell& b = cells_[static_cast<std::size_t>(i1)];
         b.cover -= 1;
         b.area -= hi - i1;
-        for (int k = i0 / kBlock; k <= i1 / kBlock; ++k)
-            touched_[static_cast<std::size_t>(k / 64)] |= std::uint64_t{1} << (k % 64);
+        // Both ends are >= 0: unsigned shifts, without the signed division's rounding fix.
+        const unsigned k0 = static_cast<unsigned>(i0) / unsigned{kBlock},
+                       k1 = static_cast<unsigned>(i1) / unsigned{kBlock};
+        touched_[k0 / 64] |= std::uint64_t{1} << (k0 % 64);
+        for (unsigned k = k0 + 1; k <= k1; ++k) touched_[k / 64] |= std::uint64_t{1} << (k % 64);
         from_ = std::min(from_, i0);
         to_ = std::max(to_, i1);
     }
