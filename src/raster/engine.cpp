@@ -20,13 +20,13 @@
 //     (checked pairwise, up to 16 edges) no two of its edges meet except consecutive ones at their
 //     vertex. (The run through a contour's start vertex arrives in two parts, the contour's first
 //     and last edges; they are merged when the contour closes.)
-//   - A cell with two to six such runs that do not meet: every region between them touches the
-//     cell's boundary, so the windings in the cell are those met going around the boundary,
-//     changing by -1 where a run enters and +1 where one leaves. When they take two values at most
-//     (for two runs: entries and exits alternate, as in a stem with one edge up and one down),
-//     accumulation is exact. Common cases are decided in closed form (two single edges: which side
-//     of each other they lie on) or from where the runs enter and leave (runs whose edges meet
-//     nowhere), without clipping every piece.
+//   - A cell with two to six such runs that do not meet inside the closed cell: every region
+//     between them touches the cell's boundary, so the windings in the cell are those met going
+//     around the boundary, changing by -1 where a run enters and +1 where one leaves. When they
+//     take two values at most (for two runs: entries and exits alternate, as in a stem with one
+//     edge up and one down), accumulation is exact. Common cases are decided in closed form (two
+//     single edges: which side of each other they lie on) or from where the runs enter and leave
+//     (runs whose edges meet nowhere), without clipping every piece.
 //   - Every other cell with visits (crossings, stacked copies, more than six runs, loops) is
 //     recomputed exactly from its edges (exact_cell.cpp) with the accumulated integral.
 // Only positive-length pieces inside the open cell count as visits: an edge along a cell's
@@ -321,8 +321,8 @@ bool Engine::simple_run(const Visit& v) const {
     return true;
 }
 
-// Three or more simple runs in one cell. When no two meet, each region between them touches the
-// cell's boundary, so the windings in the cell are those met going around the boundary, where
+// Three or more simple runs in one cell. When no two meet inside the closed cell, each region
+// between them touches the cell's boundary, so the windings in the cell are those met going around the boundary, where
 // they change by -1 at every entry and +1 at every exit: accumulation is exact when they take
 // two values at most.
 bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) const {
@@ -345,13 +345,24 @@ bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) co
         ends[2 * k + 1] = {boundary_param(bx - col, by - row), 1};
         if (ends[2 * k].t < 0 || ends[2 * k + 1].t < 0) return false;
     }
+    // Only the runs' parts inside the closed cell must not meet: consecutive runs of a contour that
+    // leaves the cell and comes back one vertex later meet at that vertex, outside.
+    ExactScratch::Piece pieces[kMaxRuns][kMaxRunEdges];
+    int inside[kMaxRuns];
+    for (int k = 0; k < n; ++k) {
+        inside[k] = 0;
+        for (int i = 0; i < counts[k]; ++i) {
+            double ax, ay, bx, by;
+            if (cell_portion(segs_[ids[k][i]], col, row, ax, ay, bx, by)) pieces[k][inside[k]++] = {ax, ay, bx, by};
+        }
+    }
     for (int a = 0; a < n; ++a)
         for (int b = a + 1; b < n; ++b)
-            for (int i = 0; i < counts[a]; ++i)
-                for (int j = 0; j < counts[b]; ++j) {
-                    const Edge& p = segs_[ids[a][i]];
-                    const Edge& q = segs_[ids[b][j]];
-                    if (segments_meet(p.x0, p.y0, p.x1, p.y1, q.x0, q.y0, q.x1, q.y1)) return false;
+            for (int i = 0; i < inside[a]; ++i)
+                for (int j = 0; j < inside[b]; ++j) {
+                    const ExactScratch::Piece& p = pieces[a][i];
+                    const ExactScratch::Piece& q = pieces[b][j];
+                    if (segments_meet(p.ax, p.ay, p.bx, p.by, q.ax, q.ay, q.bx, q.by)) return false;
                 }
     for (int k = 1; k < 2 * n; ++k)  // insertion sort (at most 2 * kMaxRuns ends)
         for (int j = k; j > 0 && ends[j].t < ends[j - 1].t; --j) std::swap(ends[j], ends[j - 1]);
