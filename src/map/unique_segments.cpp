@@ -52,14 +52,19 @@ void drop_repeated_segments(std::vector<LineSegment>& segments) {
     auto part = [bits](std::uint64_t h) {
         return bits == 0 ? std::size_t{0} : static_cast<std::size_t>(h >> (64 - bits));
     };
-    std::vector<std::uint32_t> end(std::size_t{1} << bits, 0), order(n);
+    std::vector<std::uint32_t> end(std::size_t{1} << bits, 0);
+    struct Entry {
+        std::uint64_t hash;
+        std::uint32_t index;
+    };
+    std::vector<Entry> order(n);  // hashes beside indices: each part is then read in sequence
     for (std::uint64_t h : hash) ++end[part(h)];
     std::uint32_t sum = 0;
     for (std::uint32_t& e : end) {
         sum += e;
         e = sum - e;  // the part's start, moved to its end by the pass below
     }
-    for (std::size_t i = 0; i < n; ++i) order[end[part(hash[i])]++] = static_cast<std::uint32_t>(i);
+    for (std::size_t i = 0; i < n; ++i) order[end[part(hash[i])]++] = {hash[i], static_cast<std::uint32_t>(i)};
     // Each part's table: a slot holds a kept segment's index and 32 further bits of its hash, so a
     // probe reads the segment itself only when those agree, nearly always a repeat.
     std::vector<std::uint8_t> repeat(n, 0);
@@ -69,9 +74,9 @@ void drop_repeated_segments(std::vector<LineSegment>& segments) {
         const std::size_t mask = std::bit_ceil(2 * (stop - begin)) - 1;
         slots.assign(mask + 1, kEmptySlot);
         for (std::size_t k = begin; k < stop; ++k) {
-            const std::uint32_t i = order[k];
-            const std::uint64_t tag = (hash[i] >> 24) << 32;
-            std::size_t s = static_cast<std::size_t>(hash[i]) & mask;
+            const auto [h, i] = order[k];
+            const std::uint64_t tag = (h >> 24) << 32;
+            std::size_t s = static_cast<std::size_t>(h) & mask;
             for (; slots[s] != kEmptySlot; s = (s + 1) & mask) {
                 if ((slots[s] >> 32 << 32) != tag) continue;
                 if (canonical(segments[static_cast<std::uint32_t>(slots[s])]) == canonical(segments[i])) {

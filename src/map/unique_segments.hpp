@@ -6,7 +6,7 @@
 // repeats can go before the capsules are swept: a quarter of a world map's segments at 4096 px.
 //
 // Segments compare by their exact end positions, in either direction (-0.0 equals +0.0).
-// Memory: 13 bytes per segment and a table of 16 KB, for the call's duration.
+// Memory: 25 bytes per segment and a table of 16 KB, for the call's duration.
 // Thread-safety: a free function.
 #pragma once
 
