@@ -88,10 +88,11 @@ private:
             run(first, first + m);
             return;
         }
-        // Runs from each node to the next, round the ring.
+        // Runs from each node to the next, round the ring (k counts on past m, i wraps).
         const std::size_t stop = first + m;
-        for (std::size_t k = first + 1, from = first; k <= stop; ++k)
-            if (locked_[k % m]) {
+        for (std::size_t k = first + 1, i = first + 1 == m ? 0 : first + 1, from = first; k <= stop;
+             ++k, i = i + 1 == m ? 0 : i + 1)
+            if (locked_[i]) {
                 run(from, k);
                 from = k;
             }
@@ -111,21 +112,29 @@ private:
     void run(std::size_t first, std::size_t last) {
         const std::size_t m = lonlat_.size();
         const std::size_t n = last - first + 1;
-        auto at = [&](std::size_t i, bool reversed) { return (reversed ? last - i : first + i) % m; };
-        if (unprojected_[first % m] || unprojected_[last % m]) {
-            for (std::size_t i = first; i <= last; ++i) keep_[i % m] = 1;
+        const std::size_t f = first % m, l = last % m;
+        // The ring positions of the run in order (reversed: from its last), stepping round the ring.
+        auto for_each_position = [&](bool reversed, auto&& each) {
+            std::size_t k = reversed ? l : f;
+            for (std::size_t i = 0; i < n; ++i) {
+                each(i, k);
+                k = reversed ? (k == 0 ? m - 1 : k - 1) : (k + 1 == m ? 0 : k + 1);
+            }
+        };
+        if (unprojected_[f] || unprojected_[l]) {
+            for_each_position(false, [&](std::size_t, std::size_t k) { keep_[k] = 1; });
             return;
         }
-        const Point a = lonlat_[first % m], b = lonlat_[last % m];
+        const Point a = lonlat_[f], b = lonlat_[l];
         bool reversed = less(b, a);
-        if (a == b && n > 2) reversed = less(lonlat_[at(n - 2, false)], lonlat_[at(1, false)]);
+        if (a == b && n > 2) reversed = less(lonlat_[(first + n - 2) % m], lonlat_[(first + 1) % m]);
         run_pixel_.resize(n);
         run_lonlat_.resize(n);
         run_keep_.assign(n, 0);
-        for (std::size_t i = 0; i < n; ++i) {
-            run_pixel_[i] = pixel_[at(i, reversed)];
-            run_lonlat_[i] = lonlat_[at(i, reversed)];
-        }
+        for_each_position(reversed, [&](std::size_t i, std::size_t k) {
+            run_pixel_[i] = pixel_[k];
+            run_lonlat_[i] = lonlat_[k];
+        });
         // A step of more than 180 degrees of longitude would be read as crossing the antimeridian;
         // a projection that bends lon/lat steps draws a step longer than kDensifyDegrees as a curve.
         auto too_long = [&](std::size_t i, std::size_t j) {
@@ -133,8 +142,7 @@ private:
             return dx > 180 || dx > max_degrees_ || std::fabs(run_lonlat_[j].y - run_lonlat_[i].y) > max_degrees_;
         };
         runs_.simplify(run_pixel_, tolerance_, run_keep_, too_long);
-        for (std::size_t i = 0; i < n; ++i)
-            if (run_keep_[i]) keep_[at(i, reversed)] = 1;
+        for_each_position(reversed, [&](std::size_t i, std::size_t k) { keep_[k] |= run_keep_[i]; });
     }
 
     MapProjection proj_;
