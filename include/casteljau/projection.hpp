@@ -47,9 +47,15 @@ public:
 
     // Projects one position (degrees). Returns false when the projection cannot map it (PROJ
     // reports an error or a non-finite result).
-    bool project(Point lonlat, Point& out) const;
+    bool project(Point lonlat, Point& out) const {
+        if (kind_ != Kind::Equirectangular) return project_other(lonlat, out);
+        out = lonlat;  // the identity, inline: maps project every position, often three times
+        return true;
+    }
 
 private:
+    bool project_other(Point lonlat, Point& out) const;
+
     Kind kind_ = Kind::Equirectangular;
     std::string spec_ = "equirectangular";
     struct ProjState;

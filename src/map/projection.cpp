@@ -82,7 +82,7 @@ MapProjection MapProjection::parse(std::string_view spec) {
 
 MapProjection MapProjection::clone() const { return parse(spec_); }
 
-bool MapProjection::project(Point ll, Point& out) const {
+bool MapProjection::project_other(Point ll, Point& out) const {
     switch (kind_) {
         case Kind::Equirectangular: out = ll; return true;
         case Kind::WebMercator: {
