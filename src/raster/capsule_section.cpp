@@ -60,7 +60,7 @@ int CapsuleSectionsImpl(const SweptCapsule& k, double r, int row, double step, i
         const auto c =
             hn::Add(hn::Set(d, static_cast<double>(row)), hn::Mul(hn::Add(s, hn::Set(d, 0.5)), hn::Set(d, step)));
         auto lo = inf, hi = neg_inf;
-        AddDisc(d, c, k.ax, k.ay, r2, lo, hi);
+        if (k.start_disc) AddDisc(d, c, k.ax, k.ay, r2, lo, hi);
         AddDisc(d, c, k.bx, k.by, r2, lo, hi);
         if (k.band) AddBand(d, c, k, r, lo, hi);
         const auto hit = hn::And(hn::And(hn::Gt(c, y0), hn::Lt(c, y1)),

@@ -20,6 +20,10 @@ struct SweptCapsule {
     // and for a vertical segment x in ax -/+ r while dy lies in [end_lo, end_hi].
     double side_slope = 0, side_half = INFINITY, end_slope = 0, end_lo = 0, end_hi = 0;
     bool band = false, vertical = false;
+    // False when another capsule of the same sweep holds the disc at (ax, ay) (the previous segment
+    // of a polyline ends there): the section is then that of the band and the disc at (bx, by),
+    // still convex (the capsule cut by the perpendicular at a), and the union is the same.
+    bool start_disc = true;
 };
 
 // Lines per call at most, and the room lo and hi need beyond the lines asked for (whole vectors

@@ -385,7 +385,11 @@ void round_stroke_spans(std::span<const LineSegment> segments, double radius, co
                 slot = free_slots.back();
                 free_slots.pop_back();
             }
-            built[slot] = make_capsule(segments[caps[next].segment], radius);
+            const std::uint32_t i = caps[next].segment;
+            built[slot] = make_capsule(segments[i], radius);
+            // A polyline's segments come one after another: the previous one, a capsule of this
+            // sweep too, already holds the disc where this one starts.
+            built[slot].start_disc = !(i > 0 && segments[i - 1].b == segments[i].a && built[slot].band);
             active.push_back({static_cast<std::uint32_t>(next), slot});
         }
         if (active.size() > kept) {
