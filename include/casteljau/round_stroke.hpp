@@ -27,7 +27,7 @@
 // Cost: each capsule costs the sample lines it spans (its height plus the width, times
 // lines_per_pixel), computed several lines at a time with SIMD; each interval costs a comparison
 // with the last one on its line (they arrive nearly in order; a line whose intervals do not is
-// sorted once); each row costs the 64-pixel blocks its intervals reach. Memory: 32 bytes per
+// sorted once); each row costs the 16-pixel blocks its intervals reach. Memory: 32 bytes per
 // segment reaching the clip and one row of accumulators, plus the mask for round_stroke_mask().
 // Thread-safety: a pure function of its arguments; calls may run concurrently.
 #pragma once

@@ -21,6 +21,7 @@
 #include "casteljau/round_stroke.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -93,9 +94,9 @@ std::vector<Extent> extents_in(std::span<const LineSegment> segments, double r, 
 // that starts coverage (sign +1) or ends it (-1) adds the sign to cell i's `cover` and sign times f
 // to its `area`, so that the covered length in pixel i is the sum of `cover` over cells 0..i minus
 // `area` of cell i; times the lines' common weight, its coverage. One cell per end: two updates per
-// interval. A map's row is mostly empty, so emit() visits only the blocks of 64 pixels that an
-// interval reached (from its first pixel to its last): between them the running sum of `cover` is
-// zero (whole numbers, summed exactly) and the pixels stay 0.
+// interval. A map's row is mostly empty, so emit() visits only the blocks of kBlock pixels that an
+// interval reached (from its first pixel to its last), found by scanning a bit per block: between
+// them the running sum of `cover` is zero (whole numbers, summed exactly) and the pixels stay 0.
 class RowCoverage {
 public:
     explicit RowCoverage(int w)
@@ -128,26 +129,26 @@ public:
         double run = 0;
         int start = -1, end = -1;  // the run being written: pixels [start, end)
         const int last_pixel = std::min(to_, w - 1);
-        for (int k = from_ / kBlock; k <= to_ / kBlock; ++k) {
-            std::uint64_t& word = touched_[static_cast<std::size_t>(k / 64)];
-            const std::uint64_t bit = std::uint64_t{1} << (k % 64);
-            if (!(word & bit)) continue;
-            word &= ~bit;
-            const int first = std::max(from_, k * kBlock), last = std::min(last_pixel, k * kBlock + kBlock - 1);
-            if (first > last) continue;  // only cell w: ends at the right edge, which no pixel reads
-            if (start >= 0 && first != end) {
-                sink.row(y, x0 + start, end - start, out_.data() + start);
-                start = -1;
+        for (int word_index = from_ / kBlock / 64; word_index <= to_ / kBlock / 64; ++word_index) {
+            std::uint64_t word = std::exchange(touched_[static_cast<std::size_t>(word_index)], 0);
+            for (; word != 0; word &= word - 1) {  // the touched blocks in order
+                const int k = word_index * 64 + std::countr_zero(word);
+                const int first = std::max(from_, k * kBlock), last = std::min(last_pixel, k * kBlock + kBlock - 1);
+                if (first > last) continue;  // only cell w: ends at the right edge, which no pixel reads
+                if (start >= 0 && first != end) {
+                    sink.row(y, x0 + start, end - start, out_.data() + start);
+                    start = -1;
+                }
+                if (start < 0) start = first;
+                for (int i = first; i <= last; ++i) {
+                    Cell& c = cells_[static_cast<std::size_t>(i)];
+                    run += c.cover;
+                    const double v = std::clamp((run - c.area) * weight, 0.0, 1.0);
+                    out_[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v * 255 + 0.5);
+                    c = Cell{};
+                }
+                end = last + 1;
             }
-            if (start < 0) start = first;
-            for (int i = first; i <= last; ++i) {
-                Cell& c = cells_[static_cast<std::size_t>(i)];
-                run += c.cover;
-                const double v = std::clamp((run - c.area) * weight, 0.0, 1.0);
-                out_[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v * 255 + 0.5);
-                c = Cell{};
-            }
-            end = last + 1;
         }
         if (start >= 0) sink.row(y, x0 + start, end - start, out_.data() + start);
         from_ = w + 1;
@@ -155,7 +156,7 @@ public:
     }
 
 private:
-    static constexpr int kBlock = 64;
+    static constexpr int kBlock = 16;
     struct Cell {
         double cover = 0, area = 0;
     };
