@@ -62,9 +62,12 @@ std::vector<std::string> configuration_paths(FcConfig* config) {
     for (const std::string& dir : strings_of(FcConfigGetFontDirs(config))) paths.push_back(dir);
     const char* home = std::getenv("HOME");
     const char* xdg = std::getenv("XDG_CONFIG_HOME");
-    const std::string config_home = xdg && *xdg ? std::string(xdg) : home && *home ? std::string(home) + "/.config" : "";
+    const std::string config_home = xdg && *xdg     ? std::string(xdg)
+                                    : home && *home ? std::string(home) + "/.config"
+                                                    : "";
     if (!config_home.empty())
-        for (const char* p : {"/fontconfig", "/fontconfig/fonts.conf", "/fontconfig/conf.d"}) paths.push_back(config_home + p);
+        for (const char* p : {"/fontconfig", "/fontconfig/fonts.conf", "/fontconfig/conf.d"})
+            paths.push_back(config_home + p);
     if (home && *home)
         for (const char* p : {"/.fonts.conf", "/.fonts.conf.d"}) paths.push_back(std::string(home) + p);
     return paths;
@@ -85,6 +88,14 @@ struct PersistentAnswers {
         path = fallback_cache_path();
         if (auto d = load_fallback_cache(path)) data = std::move(*d);
         for (std::size_t i = 0; i < data.faces.size(); ++i) face_numbers.emplace(data.faces[i], static_cast<int>(i));
+    }
+
+    // Called with the stamp of the configuration fontconfig has just read: answers read from a
+    // file whose stamp differs from it (something changed between the two) are dropped.
+    void check_against(const std::vector<std::pair<std::string, std::string>>& stamp) {
+        if (data.stamp.empty() || data.stamp == stamp) return;
+        data = FallbackCacheData{};
+        face_numbers.clear();
     }
 
     // The answer for `key`: null when there is none, else the face (null pair when "no face").
@@ -153,7 +164,10 @@ struct Catalog {
         if (!started) {
             started = true;
             config = FcInitLoadConfigAndFonts();
-            if (config) stamp = make_stamp(configuration_paths(config));
+            if (config) {
+                stamp = make_stamp(configuration_paths(config));
+                persistent.check_against(stamp);
+            }
         }
         return config != nullptr;
     }
