@@ -175,8 +175,8 @@ void draw_scaled_bitmap(Canvas& canvas, const StrikeBitmap& bm, double k, double
     auto image = std::make_shared<Pixmap>(w, h);
     for (int d = 0; d < h; ++d) {
         const std::size_t b = wy.begin[static_cast<std::size_t>(d)], e = wy.begin[static_cast<std::size_t>(d) + 1];
-        const float* first_row =
-            rows.data() + static_cast<std::size_t>(wy.first[static_cast<std::size_t>(d)]) * static_cast<std::size_t>(w) * 4;
+        const float* first_row = rows.data() + static_cast<std::size_t>(wy.first[static_cast<std::size_t>(d)]) *
+                                                   static_cast<std::size_t>(w) * 4;
         std::uint8_t* out = image->row(d);
         for (int px = 0; px < w; ++px) {
             float acc[4] = {0, 0, 0, 0};

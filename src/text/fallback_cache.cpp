@@ -29,10 +29,9 @@ constexpr std::string_view kHeader = "casteljau fallback cache 1";
 constexpr const char* kFileName = "fallback-1.cache";
 
 // The environment variables that decide fontconfig's configuration and default language.
-constexpr const char* kEnvironment[] = {"FONTCONFIG_FILE", "FONTCONFIG_PATH", "FONTCONFIG_SYSROOT",
-                                        "FC_LANG",         "LC_ALL",          "LC_CTYPE",
-                                        "LANG",            "HOME",            "XDG_CONFIG_HOME",
-                                        "XDG_DATA_HOME"};
+constexpr const char* kEnvironment[] = {
+    "FONTCONFIG_FILE", "FONTCONFIG_PATH", "FONTCONFIG_SYSROOT", "FC_LANG", "LC_ALL", "LC_CTYPE", "LANG", "HOME",
+    "XDG_CONFIG_HOME", "XDG_DATA_HOME"};
 
 bool needs_escape(unsigned char c) { return c <= 0x20 || c == 0x7f || c == '%'; }
 

@@ -40,8 +40,8 @@ constexpr std::size_t kMaxCacheKeyLength = 4096;  // code points of one key
 struct FallbackCacheData {
     // (name, value): "env NAME" -> "=VALUE" or "-" (unset); "path P" -> "MTIME SIZE" or "-".
     std::vector<std::pair<std::string, std::string>> stamp;
-    std::vector<std::pair<std::string, int>> faces;        // font file, face index
-    std::unordered_map<std::u32string, int> answers;       // key -> index in faces, -1: no face
+    std::vector<std::pair<std::string, int>> faces;   // font file, face index
+    std::unordered_map<std::u32string, int> answers;  // key -> index in faces, -1: no face
 };
 
 // The file's text for `data`, or nullopt when it cannot be written (a name holding a code point

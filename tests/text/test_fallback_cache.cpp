@@ -120,16 +120,16 @@ TEST_CASE("Fallback cache: the file reads back what was written, and only that",
         return !parse_fallback_cache(t);
     };
     CHECK(refused("casteljau fallback cache 1", "casteljau fallback cache 2"));
-    CHECK(refused("My%20Fonts", "My Fonts"));                // an unescaped space
-    CHECK(refused("%25", "%2g"));                            // a bad escape
-    CHECK(refused("%25", "%41"));                            // an escape of a plain byte
-    CHECK(refused("f 3 ", "f 03 "));                         // a leading zero
-    CHECK(refused("a 1 ", "a 2 "));                          // a face that is not there
-    CHECK(refused("a -1 ", "a -2 "));                        //
-    CHECK(refused("10ffff", "110000"));                      // beyond Unicode
-    CHECK(refused("1f44b", "1F44B"));                        // upper-case code points
-    CHECK(refused("f 0 /fonts/Emoji.ttf\n", ""));            // answers naming faces not listed
-    CHECK(refused("s env%20LANG =C.UTF-8\n", "x y z\n"));    // an unknown record
+    CHECK(refused("My%20Fonts", "My Fonts"));                         // an unescaped space
+    CHECK(refused("%25", "%2g"));                                     // a bad escape
+    CHECK(refused("%25", "%41"));                                     // an escape of a plain byte
+    CHECK(refused("f 3 ", "f 03 "));                                  // a leading zero
+    CHECK(refused("a 1 ", "a 2 "));                                   // a face that is not there
+    CHECK(refused("a -1 ", "a -2 "));                                 //
+    CHECK(refused("10ffff", "110000"));                               // beyond Unicode
+    CHECK(refused("1f44b", "1F44B"));                                 // upper-case code points
+    CHECK(refused("f 0 /fonts/Emoji.ttf\n", ""));                     // answers naming faces not listed
+    CHECK(refused("s env%20LANG =C.UTF-8\n", "x y z\n"));             // an unknown record
     CHECK(!parse_fallback_cache(text->substr(0, text->size() - 1)));  // no final newline
     CHECK(!parse_fallback_cache(""));
     CHECK(!parse_fallback_cache(*text + "s late stamp\n"));  // records out of order
