@@ -1,6 +1,7 @@
 // Encode stage: PNG through zlib for the default row filters, as libpng writes it
 // (src/formats/png_direct.hpp).
 #include "formats/png_direct.hpp"
+#include "formats/png_paeth.hpp"
 
 #include <zlib.h>
 
@@ -94,33 +95,6 @@ void convert_row(const std::uint8_t* p, int width, int colour_type, std::uint8_t
     }
 }
 
-// libpng's measure of a filtered row: the sum of its bytes read as signed magnitudes, min(v, 256 - v).
-// In 32 bits: a row is under 2^24 bytes (PNG limits rows to 2^31 bits).
-std::size_t magnitude_sum(const std::uint8_t* row, std::size_t n) {
-    std::uint32_t sum = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint8_t v = row[i], minus = static_cast<std::uint8_t>(-v);
-        sum += v < minus ? v : minus;
-    }
-    return sum;
-}
-
-// The Paeth filter of `row` over `prev` (zeros above the first row) into `out`. The differences
-// fit 16 bits, in which the compiler vectorizes the loop twice as wide as in int.
-void paeth_row(const std::uint8_t* row, const std::uint8_t* prev, std::size_t n, std::size_t bpp, std::uint8_t* out) {
-    using i16 = std::int16_t;
-    for (std::size_t i = 0; i < bpp && i < n; ++i) out[i] = static_cast<std::uint8_t>(row[i] - prev[i]);
-    for (std::size_t i = bpp; i < n; ++i) {
-        const i16 a = row[i - bpp], b = prev[i], c = prev[i - bpp];
-        const i16 p = static_cast<i16>(b - c), q = static_cast<i16>(a - c), s = static_cast<i16>(p + q);
-        const i16 pa = p < 0 ? static_cast<i16>(-p) : p;
-        const i16 pb = q < 0 ? static_cast<i16>(-q) : q;
-        const i16 pc = s < 0 ? static_cast<i16>(-s) : s;
-        const i16 pred = (pa <= pb && pa <= pc) ? a : (pb <= pc) ? b : c;
-        out[i] = static_cast<std::uint8_t>(row[i] - pred);
-    }
-}
-
 // The zlib stream of the filtered rows, with libpng's parameters.
 class Deflater {
 public:
@@ -204,9 +178,8 @@ std::vector<std::uint8_t> encode_png_direct(const Pixmap& pixmap, int colour_typ
         convert_row(pixmap.row(y), w, colour_type, row.data() + 1);
         const std::uint8_t* chosen = row.data();
         if (paeth) {
-            paeth_row(row.data() + 1, prev.data() + 1, row_bytes, channels, filtered.data() + 1);
-            if (magnitude_sum(filtered.data() + 1, row_bytes) < magnitude_sum(row.data() + 1, row_bytes))
-                chosen = filtered.data();
+            const RowSums sums = paeth_row(row.data() + 1, prev.data() + 1, row_bytes, channels, filtered.data() + 1);
+            if (sums.paeth < sums.none) chosen = filtered.data();
         }
         z.add(chosen, row_bytes + 1, Z_NO_FLUSH);
         row.swap(prev);

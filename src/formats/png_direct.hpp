@@ -3,7 +3,7 @@
 //
 // encode_png (png.cpp) hands libpng every row and lets it choose each row's filter; for the filter
 // sets casteljau uses by default (none, or a per-row choice of none and Paeth) that choice is a
-// sum over the row that this file computes in loops the compiler vectorizes, then feeds the chosen
+// sum over the row that png_paeth.cpp computes with SIMD; this file then feeds the chosen
 // rows to zlib with the parameters libpng would pick (level, window size for small images,
 // strategy) and lays the stream out in chunks as libpng does (IHDR, gAMA, sRGB, cHRM, IDAT chunks
 // of 8 KiB, IEND). The tests compare its output with libpng's byte for byte.

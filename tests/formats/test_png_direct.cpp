@@ -1,16 +1,20 @@
 // The PNG encoder of the default filters (src/formats/png_direct.cpp) against libpng: the same
 // bytes for every colour type, for images small enough that libpng shrinks the zlib window, one
-// pixel wide or high (no Paeth), at every zlib level, and for the golden pictures.
+// pixel wide or high (no Paeth), at every zlib level, on every SIMD target the Paeth filter is
+// compiled for (src/formats/png_paeth.cpp), and for the golden pictures.
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "casteljau/png.hpp"
+#include "core/simd_dispatch.hpp"
 #include "formats/png_direct.hpp"
+#include "formats/png_paeth.hpp"
 
 using namespace casteljau;
 
@@ -60,6 +64,47 @@ TEST_CASE("encode_png_direct writes libpng's bytes for the default filters", "[p
         same_as_libpng(picture(40, 30, 4, rng), level);
         same_as_libpng(picture(200, 120, 3, rng), level);
     }
+}
+
+TEST_CASE("The Paeth filter and its sums are the scalar formula's on every SIMD target", "[png]") {
+    // Every (a, b, c) of bytes once: a the byte to the left, b above, c above-left; rows of
+    // 1 to 4 bytes per pixel, with tails shorter than a vector.
+    std::vector<std::uint8_t> row, prev;
+    for (int a = 0; a < 256; ++a)
+        for (int b = 0; b < 256; ++b)
+            for (int c = 0; c < 256; c += 3) {
+                row.insert(row.end(), {static_cast<std::uint8_t>(a), static_cast<std::uint8_t>(b ^ c)});
+                prev.insert(prev.end(), {static_cast<std::uint8_t>(c), static_cast<std::uint8_t>(b)});
+            }
+    auto scalar = [&](std::size_t n, std::size_t bpp, std::vector<std::uint8_t>& out) {
+        png_detail::RowSums s;
+        for (std::size_t i = 0; i < n; ++i) {
+            const int x = row[i], a = i >= bpp ? row[i - bpp] : 0, b = prev[i], c = i >= bpp ? prev[i - bpp] : 0;
+            const int p = b - c, q = a - c;
+            const int pa = std::abs(p), pb = std::abs(q), pc = std::abs(p + q);
+            const int pred = (pa <= pb && pa <= pc) ? a : (pb <= pc) ? b : c;
+            out[i] = static_cast<std::uint8_t>(x - pred);
+            s.none += row[i] < 128 ? row[i] : 256 - row[i];
+            s.paeth += out[i] < 128 ? out[i] : 256 - out[i];
+        }
+        return s;
+    };
+    for (const std::int64_t t : simd::available_targets()) {
+        simd::restrict_targets(t);
+        for (const std::size_t bpp : {1, 2, 3, 4})
+            for (const std::size_t n : {row.size(), row.size() - 37, std::size_t{5}, std::size_t{0}}) {
+                std::vector<std::uint8_t> want(n), got(n);
+                const png_detail::RowSums w = scalar(n, bpp, want);
+                const png_detail::RowSums g = png_detail::paeth_row(row.data(), prev.data(), n, bpp, got.data());
+                INFO(simd::target_name(t) << ", " << bpp << " bytes per pixel, " << n << " bytes");
+                CHECK(got == want);
+                CHECK(g.none == w.none);
+                CHECK(g.paeth == w.paeth);
+            }
+        std::mt19937 rng(11);
+        same_as_libpng(picture(300, 40, 3, rng), 4);
+    }
+    simd::restrict_targets(0);
 }
 
 TEST_CASE("encode_png_direct writes libpng's bytes for the golden pictures", "[png]") {
