@@ -32,6 +32,8 @@ case "$name" in
     done ;;
 esac
 mkdir -p "$build/artifacts"
+# Targets that lay out text keep no system fallback answers on disk: the user's cache is left alone.
+export CASTELJAU_CACHE_DIR=
 dict=()
 [ -f "$root/fuzz/dict/$name.dict" ] && dict=(-dict="$root/fuzz/dict/$name.dict")
 "$build/fuzz/$target" "${dict[@]}" -max_total_time="$seconds" -max_len=131072 -timeout="${CASTELJAU_FUZZ_TIMEOUT:-10}" -rss_limit_mb=2048 \

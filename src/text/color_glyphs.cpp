@@ -111,15 +111,17 @@ const StrikeBitmap* cached_bitmap(Font::Impl& fi, std::uint32_t glyph, FT_Int st
 
 // Weights of the source pixels under destination pixels [d0, d0 + n) of an axis on which source
 // pixel i covers [origin + i k, origin + (i + 1) k): for each destination pixel, the first source
-// pixel and the overlaps (in destination pixels) with it and the following ones.
+// pixel and the overlaps (in destination pixels) with it and the following ones, which are
+// weights[begin[d]] to weights[begin[d + 1]] (exclusive).
 struct AxisWeights {
     std::vector<int> first;
-    std::vector<std::vector<float>> weights;
+    std::vector<std::size_t> begin;
+    std::vector<float> weights;
 };
 AxisWeights axis_weights(int d0, int n, double origin, double k, int src_count) {
     AxisWeights w;
     w.first.resize(static_cast<std::size_t>(n));
-    w.weights.resize(static_cast<std::size_t>(n));
+    w.begin.resize(static_cast<std::size_t>(n) + 1);
     for (int d = 0; d < n; ++d) {
         const double lo = d0 + d, hi = lo + 1;
         // Clamped as doubles: a malformed strike can make the quotients far beyond int.
@@ -127,16 +129,26 @@ AxisWeights axis_weights(int d0, int n, double origin, double k, int src_count) 
         const int i0 = static_cast<int>(std::clamp(std::floor((lo - origin) / k), 0.0, count));
         const int i1 = static_cast<int>(std::clamp(std::ceil((hi - origin) / k), 0.0, count));
         w.first[static_cast<std::size_t>(d)] = i0;
+        w.begin[static_cast<std::size_t>(d)] = w.weights.size();
         for (int i = i0; i < std::min(i1, src_count); ++i) {
             const double a = std::max(lo, origin + i * k), b = std::min(hi, origin + (i + 1) * k);
-            w.weights[static_cast<std::size_t>(d)].push_back(static_cast<float>(std::max(0.0, b - a)));
+            w.weights.push_back(static_cast<float>(std::max(0.0, b - a)));
         }
     }
+    w.begin[static_cast<std::size_t>(n)] = w.weights.size();
     return w;
 }
 
+// std::round for 0 <= x < 2^31, inline: x - trunc(x) is exact there.
+float round_non_negative(float x) {
+    const float t = static_cast<float>(static_cast<std::int32_t>(x));
+    return x - t >= 0.5f ? t + 1.0f : t;
+}
+
 // Draws a strike bitmap scaled by `k` (device pixels per strike pixel) with its top-left corner at
-// device point (x, y), averaging the strike's pixels over each device pixel.
+// device point (x, y), averaging the strike's pixels over each device pixel. The four channels of
+// a pixel are summed in local accumulators (the compiler keeps them in one vector register), in the
+// same order as one channel at a time.
 void draw_scaled_bitmap(Canvas& canvas, const StrikeBitmap& bm, double k, double x, double y, double opacity) {
     // Scales and positions a malformed font can produce that no image could show.
     if (!(k >= 1e-4 && k <= 1e4) || !(std::abs(x) < 1e8 && std::abs(y) < 1e8)) return;
@@ -146,35 +158,37 @@ void draw_scaled_bitmap(Canvas& canvas, const StrikeBitmap& bm, double k, double
     if (w <= 0 || h <= 0 || w > 16384 || h > 16384) return;
     const AxisWeights wx = axis_weights(dx0, w, x, k, bm.width), wy = axis_weights(dy0, h, y, k, bm.height);
     // Horizontal pass into floats (one row per strike row), then vertical into the pixmap.
-    std::vector<float> rows(static_cast<std::size_t>(bm.height) * static_cast<std::size_t>(w) * 4, 0.0f);
+    std::vector<float> rows(static_cast<std::size_t>(bm.height) * static_cast<std::size_t>(w) * 4);
     for (int sy = 0; sy < bm.height; ++sy) {
         const std::uint8_t* src =
             bm.rgba.data() + static_cast<std::size_t>(sy) * static_cast<std::size_t>(bm.width) * 4;
         float* dst = rows.data() + static_cast<std::size_t>(sy) * static_cast<std::size_t>(w) * 4;
         for (int d = 0; d < w; ++d) {
-            const auto& ws = wx.weights[static_cast<std::size_t>(d)];
-            const int i0 = wx.first[static_cast<std::size_t>(d)];
-            for (std::size_t j = 0; j < ws.size(); ++j)
-                for (int c = 0; c < 4; ++c) dst[4 * d + c] += ws[j] * src[4 * (i0 + static_cast<int>(j)) + c];
+            const std::size_t b = wx.begin[static_cast<std::size_t>(d)], e = wx.begin[static_cast<std::size_t>(d) + 1];
+            const std::uint8_t* s = src + 4 * static_cast<std::size_t>(wx.first[static_cast<std::size_t>(d)]);
+            float acc[4] = {0, 0, 0, 0};
+            for (std::size_t j = b; j < e; ++j, s += 4)
+                for (int c = 0; c < 4; ++c) acc[c] += wx.weights[j] * static_cast<float>(s[c]);
+            for (int c = 0; c < 4; ++c) dst[4 * d + c] = acc[c];
         }
     }
     auto image = std::make_shared<Pixmap>(w, h);
     for (int d = 0; d < h; ++d) {
-        const auto& ws = wy.weights[static_cast<std::size_t>(d)];
-        const int i0 = wy.first[static_cast<std::size_t>(d)];
+        const std::size_t b = wy.begin[static_cast<std::size_t>(d)], e = wy.begin[static_cast<std::size_t>(d) + 1];
+        const float* first_row = rows.data() + static_cast<std::size_t>(wy.first[static_cast<std::size_t>(d)]) *
+                                                   static_cast<std::size_t>(w) * 4;
         std::uint8_t* out = image->row(d);
         for (int px = 0; px < w; ++px) {
             float acc[4] = {0, 0, 0, 0};
-            for (std::size_t j = 0; j < ws.size(); ++j) {
-                const float* r = rows.data() + (static_cast<std::size_t>(i0) + j) * static_cast<std::size_t>(w) * 4 +
-                                 static_cast<std::size_t>(px) * 4;
-                for (int c = 0; c < 4; ++c) acc[c] += ws[j] * r[c];
-            }
-            // Overlaps are in device pixels: a fully covered device pixel sums to 1.
-            const float a = std::clamp(std::round(acc[3]), 0.0f, 255.0f);
+            const float* r = first_row + static_cast<std::size_t>(px) * 4;
+            for (std::size_t j = b; j < e; ++j, r += static_cast<std::size_t>(w) * 4)
+                for (int c = 0; c < 4; ++c) acc[c] += wy.weights[j] * r[c];
+            // Overlaps are in device pixels: a fully covered device pixel sums to 1, so every sum is
+            // at most 255 and at least 0.
+            const float a = std::clamp(round_non_negative(acc[3]), 0.0f, 255.0f);
             out[4 * px + 3] = static_cast<std::uint8_t>(a);
             for (int c = 0; c < 3; ++c)
-                out[4 * px + c] = static_cast<std::uint8_t>(std::clamp(std::round(acc[c]), 0.0f, a));
+                out[4 * px + c] = static_cast<std::uint8_t>(std::clamp(round_non_negative(acc[c]), 0.0f, a));
         }
     }
     canvas.save();

@@ -1,5 +1,6 @@
 // Text stage, system font fallback: fontconfig's sorted list of faces per query, the first face
-// covering a cluster, and the process-wide caches of both (src/text/font_fallback.hpp).
+// covering a cluster, the process-wide caches of both, and the answers kept across processes
+// (src/text/font_fallback.hpp, src/text/fallback_cache.hpp).
 #include "text/font_fallback.hpp"
 
 #include <ft2build.h>
@@ -16,6 +17,7 @@
 #include <utility>
 
 #include "casteljau/error.hpp"
+#include "text/fallback_cache.hpp"
 #include "text/font_impl.hpp"
 
 namespace casteljau::text_detail {
@@ -38,15 +40,119 @@ struct SortedList {
     std::vector<Candidate> faces;
 };
 
-// The process-wide state: fontconfig's configuration (read once, when fallback is first needed),
-// one sorted list per query, the memo of answers and the faces that failed to load.
+// The strings of a fontconfig string list.
+std::vector<std::string> strings_of(FcStrList* list) {
+    std::vector<std::string> out;
+    if (!list) return out;
+    while (FcChar8* s = FcStrListNext(list)) out.emplace_back(reinterpret_cast<const char*>(s));
+    FcStrListDone(list);
+    return out;
+}
+
+// What the answers of `config` depend on: its configuration files and their folders, its
+// configuration and font folders, and the user configuration files it would read if they existed.
+std::vector<std::string> configuration_paths(FcConfig* config) {
+    std::vector<std::string> paths;
+    for (const std::string& file : strings_of(FcConfigGetConfigFiles(config))) {
+        paths.push_back(file);
+        const std::size_t slash = file.find_last_of('/');
+        if (slash != std::string::npos && slash > 0) paths.push_back(file.substr(0, slash));
+    }
+    for (const std::string& dir : strings_of(FcConfigGetConfigDirs(config))) paths.push_back(dir);
+    for (const std::string& dir : strings_of(FcConfigGetFontDirs(config))) paths.push_back(dir);
+    const char* home = std::getenv("HOME");
+    const char* xdg = std::getenv("XDG_CONFIG_HOME");
+    const std::string config_home = xdg && *xdg     ? std::string(xdg)
+                                    : home && *home ? std::string(home) + "/.config"
+                                                    : "";
+    if (!config_home.empty())
+        for (const char* p : {"/fontconfig", "/fontconfig/fonts.conf", "/fontconfig/conf.d"})
+            paths.push_back(config_home + p);
+    if (home && *home)
+        for (const char* p : {"/.fonts.conf", "/.fonts.conf.d"}) paths.push_back(std::string(home) + p);
+    return paths;
+}
+
+// The answers kept across processes: read when fallback is first needed, written by the layouts
+// that added to them.
+struct PersistentAnswers {
+    bool read = false;
+    bool dirty = false;
+    std::string path;
+    FallbackCacheData data;
+    std::map<std::pair<std::string, int>, int> face_numbers;  // (file, index) -> index in data.faces
+
+    void load() {
+        if (read) return;
+        read = true;
+        path = fallback_cache_path();
+        if (auto d = load_fallback_cache(path)) data = std::move(*d);
+        for (std::size_t i = 0; i < data.faces.size(); ++i) face_numbers.emplace(data.faces[i], static_cast<int>(i));
+    }
+
+    // Called with the stamp of the configuration fontconfig has just read: answers read from a
+    // file whose stamp differs from it (something changed between the two) are dropped.
+    void check_against(const std::vector<std::pair<std::string, std::string>>& stamp) {
+        if (data.stamp.empty() || data.stamp == stamp) return;
+        data = FallbackCacheData{};
+        face_numbers.clear();
+    }
+
+    // The answer for `key`: null when there is none, else the face (null pair when "no face").
+    const std::pair<std::string, int>* find(const std::u32string& key, bool& none) const {
+        none = false;
+        const auto it = data.answers.find(key);
+        if (it == data.answers.end()) return nullptr;
+        if (it->second < 0) {
+            none = true;
+            return nullptr;
+        }
+        return &data.faces[static_cast<std::size_t>(it->second)];
+    }
+
+    // Records the answer for `key` (`file` empty: no face).
+    void remember(const std::u32string& key, const std::string& file, int index) {
+        if (path.empty() || key.size() > kMaxCacheKeyLength) return;
+        int face = -1;
+        if (!file.empty()) {
+            auto [it, added] = face_numbers.emplace(std::pair(file, index), static_cast<int>(data.faces.size()));
+            if (added) {
+                if (data.faces.size() >= kMaxCacheFaces) {
+                    face_numbers.erase(it);
+                    return;
+                }
+                data.faces.emplace_back(file, index);
+            }
+            face = it->second;
+        }
+        if (data.answers.size() >= kMaxCacheAnswers) data.answers.clear();
+        auto [it, added] = data.answers.emplace(key, face);
+        if (!added && it->second == face) return;
+        it->second = face;
+        dirty = true;
+    }
+
+    // Writes the answers with the stamp of the configuration that made them.
+    void write(std::vector<std::pair<std::string, std::string>> stamp) {
+        if (!dirty) return;
+        dirty = false;
+        data.stamp = std::move(stamp);
+        store_fallback_cache(path, data);
+    }
+};
+
+// The process-wide state: fontconfig's configuration (read once, when an answer is not kept from
+// an earlier process), one sorted list per query, the memo of answers, the faces that failed to
+// load, and the answers kept across processes.
 struct Catalog {
     std::mutex mutex;
     bool started = false;
     FcConfig* config = nullptr;
+    std::vector<std::pair<std::string, std::string>> stamp;  // made as fontconfig started
     std::map<std::string, SortedList> sorted;
     std::unordered_map<std::u32string, int> memo;    // query key + cluster -> face of the list, -1: none
     std::set<std::pair<std::string, int>> unusable;  // faces casteljau cannot load
+    PersistentAnswers persistent;
 
     ~Catalog() {
         for (auto& [key, list] : sorted)
@@ -58,6 +164,10 @@ struct Catalog {
         if (!started) {
             started = true;
             config = FcInitLoadConfigAndFonts();
+            if (config) {
+                stamp = make_stamp(configuration_paths(config));
+                persistent.check_against(stamp);
+            }
         }
         return config != nullptr;
     }
@@ -147,6 +257,10 @@ bool covers(const Candidate& c, std::u32string_view needed) {
                        [&](char32_t ch) { return FcCharSetHasChar(c.charset, static_cast<FcChar32>(ch)); });
 }
 
+bool maps_all(const Font& font, std::u32string_view needed) {
+    return std::all_of(needed.begin(), needed.end(), [&](char32_t ch) { return font.has_glyph(ch); });
+}
+
 }  // namespace
 
 bool is_fallback_ignorable(char32_t c) {
@@ -167,7 +281,13 @@ SystemFallback::SystemFallback(const Font& base, std::string language)
       weight_(base_weight(base)),
       italic_((base.impl().face->style_flags & FT_STYLE_FLAG_ITALIC) != 0) {}
 
-SystemFallback::~SystemFallback() = default;
+SystemFallback::~SystemFallback() {
+    Catalog& cat = catalog();
+    try {
+        std::lock_guard<std::mutex> lock(cat.mutex);
+        if (cat.config) cat.persistent.write(cat.stamp);
+    } catch (...) {}  // the answers are found again by the next process
+}
 
 const Font* SystemFallback::find(std::u32string_view cluster) {
     std::u32string needed;
@@ -178,13 +298,22 @@ const Font* SystemFallback::find(std::u32string_view cluster) {
     const std::string& family = emoji ? std::string("emoji") : family_;
     const std::string key = family + '\n' + language_ + '\n' + std::to_string(weight_) + (italic_ ? "i" : "r");
 
-    Catalog& cat = catalog();
-    std::lock_guard<std::mutex> lock(cat.mutex);
-    if (!cat.start()) return nullptr;
-    const SortedList& list = cat.list_for(key, family, language_, weight_, italic_);
-    std::u32string memo_key(key.begin(), key.end());
+    std::u32string memo_key;
+    for (const unsigned char c : key) memo_key.push_back(c);
     memo_key += U'\0';
     memo_key += needed;
+
+    Catalog& cat = catalog();
+    std::lock_guard<std::mutex> lock(cat.mutex);
+    cat.persistent.load();
+    bool none = false;
+    if (const auto* face = cat.persistent.find(memo_key, none)) {
+        if (const Font* f = font_for(face->first, face->second, &needed)) return f;
+    } else if (none) {
+        return nullptr;
+    }
+    if (!cat.start()) return nullptr;
+    const SortedList& list = cat.list_for(key, family, language_, weight_, italic_);
     const auto memo = cat.memo.find(memo_key);
     std::size_t i = memo != cat.memo.end() ? static_cast<std::size_t>(memo->second) : 0;
     // The first face that covers the cluster and loads (a face that fails to load is skipped from
@@ -193,6 +322,7 @@ const Font* SystemFallback::find(std::u32string_view cluster) {
         const Candidate& c = list.faces[i];
         if (cat.unusable.count({c.file, c.index}) || !covers(c, needed)) continue;
         if (const Font* f = font_for(c.file, c.index)) {
+            cat.persistent.remember(memo_key, c.file, c.index);
             if (memo == cat.memo.end()) {
                 if (cat.memo.size() >= kMaxMemoEntries) cat.memo.clear();
                 cat.memo.emplace(std::move(memo_key), static_cast<int>(i));
@@ -201,6 +331,7 @@ const Font* SystemFallback::find(std::u32string_view cluster) {
         }
         cat.unusable.insert({c.file, c.index});
     }
+    cat.persistent.remember(memo_key, std::string(), 0);
     if (memo == cat.memo.end()) {
         if (cat.memo.size() >= kMaxMemoEntries) cat.memo.clear();
         cat.memo.emplace(std::move(memo_key), static_cast<int>(list.faces.size()));
@@ -208,12 +339,14 @@ const Font* SystemFallback::find(std::u32string_view cluster) {
     return nullptr;
 }
 
-const Font* SystemFallback::font_for(const std::string& file, int index) {
+const Font* SystemFallback::font_for(const std::string& file, int index, const std::u32string* must_map) {
     for (std::size_t k = 0; k < font_ids_.size(); ++k)
-        if (font_ids_[k].first == file && font_ids_[k].second == index) return fonts_[k].get();
+        if (font_ids_[k].first == file && font_ids_[k].second == index)
+            return !must_map || maps_all(*fonts_[k], *must_map) ? fonts_[k].get() : nullptr;
     std::shared_ptr<Font> font;
     try {
         font = std::make_shared<Font>(Font::load(file, index));
+        if (must_map && !maps_all(*font, *must_map)) return nullptr;
         for (const VariationAxis& a : font->axes())
             if (a.tag == "wght") font->set_variations(std::vector<Variation>{{"wght", static_cast<double>(weight_)}});
     } catch (const Error&) { return nullptr; }

@@ -5,7 +5,9 @@
 // presentation), a language (the style's, else none), the base font's weight and slant. fontconfig
 // sorts every installed face for it once per process; a cluster then takes the first face of that
 // list whose character set holds all its code points (default-ignorable ones excepted), and the
-// answer is remembered per (query, cluster). Both caches are process-wide and guarded by a mutex;
+// answer is remembered per (query, cluster), also on disk for later processes
+// (src/text/fallback_cache.hpp): fontconfig is started only for a cluster with no answer there
+// (or whose face no longer loads or maps it). The caches are process-wide and guarded by a mutex;
 // each layout loads its own Fonts of the faces it uses (a Font serves one thread at a time; the
 // files are mapped, so a face costs its tables' parsing, not a copy).
 #pragma once
@@ -44,8 +46,9 @@ public:
     const std::vector<std::shared_ptr<Font>>& fonts() const { return fonts_; }
 
 private:
-    // This layout's Font for a face (loaded on first use); null when it cannot be loaded.
-    const Font* font_for(const std::string& file, int index);
+    // This layout's Font for a face (loaded on first use); null when it cannot be loaded, or when
+    // `must_map` is given and the face lacks one of its code points (an answer kept on disk).
+    const Font* font_for(const std::string& file, int index, const std::u32string* must_map = nullptr);
 
     std::string family_, language_;
     int weight_ = 400;

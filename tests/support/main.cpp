@@ -3,14 +3,20 @@
 //   (for instance one split off a name containing ';') can never pass by running nothing.
 // - A run whose every selected test case skipped (CASTELJAU_SKIP, skip.hpp) exits with
 //   kSkipExitCode, so ctest reports it as skipped rather than passed.
+// - System font fallback keeps its answers in the run's scratch folder (CASTELJAU_CACHE_DIR,
+//   inherited by the programs the tests start; temp_dir.hpp), never in the user's cache, and every
+//   run starts with none.
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
+
+#include <stdlib.h>
 
 #include <iostream>
 #include <set>
 #include <string>
 
 #include "skip.hpp"
+#include "temp_dir.hpp"
 
 namespace {
 
@@ -44,6 +50,7 @@ int skipped_test_cases() { return static_cast<int>(g_skipped.size()); }
 }  // namespace casteljau::test
 
 int main(int argc, char* argv[]) {
+    ::setenv("CASTELJAU_CACHE_DIR", (casteljau::testing::process_temp_dir() / "fallback-cache").c_str(), 1);
     Catch::Session session;
     if (const int rc = session.applyCommandLine(argc, argv); rc != 0) return rc;
     Catch::ConfigData& config = session.configData();
