@@ -119,7 +119,11 @@ struct MapOptions {
     // Bound: the simplified rings and lines lie within `simplify` pixels of the original ones
     // (Hausdorff distance), with the projection's straight steps drawn as they are; every ring keeps
     // at least three distinct positions. A pixel's coverage moves by at most `simplify` times the
-    // length of border inside it, plus rounding. 0: draw every position.
+    // length of border inside it, plus rounding. 0: draw every position. Data holding at most a
+    // quarter of a position per pixel of their projected extent at the output's scale are drawn
+    // as they are whatever `simplify` says: the few positions an output that fine cannot resolve
+    // cost less to draw than to find (with a projection through PROJ, whose long steps the
+    // simplification bounds, the data are always simplified).
     double simplify = kDefaultMapSimplify;
     // Fills only: recompute pixels where a feature's own edges overlap (self-intersecting or
     // overlapping rings) exactly. Off: plain accumulation, about 3x faster on dense data (Natural

@@ -46,7 +46,8 @@ struct TileOptions {
     int shard = 0, shards = 1;       // render only share `shard` of `shards`
     bool seamless = true;
     double tolerance = kDefaultTolerance;
-    // See MapOptions::simplify: each zoom level is simplified once, for all of its metatiles.
+    // See MapOptions::simplify: each zoom level that needs it is simplified once, for all of its
+    // metatiles.
     double simplify = kDefaultMapSimplify;
     bool exact_overlaps = true;   // see MapOptions::exact_overlaps
     bool sampled_strokes = true;  // see MapOptions::sampled_strokes

@@ -120,7 +120,8 @@ void add_map_style_options(CLI::App* cmd, MapCliStyle& o) {
         ->check(CLI::Range(1e-4, 10.0))
         ->capture_default_str();
     cmd->add_option("--simplify", o.simplify,
-                    "Pixels the geometry may move when reduced to the output's resolution (0: every position)")
+                    "Pixels the geometry may move when reduced to the output's resolution (0: every position; "
+                    "sparse data are drawn as they are)")
         ->check(CLI::Range(0.0, 100.0))
         ->capture_default_str();
 }

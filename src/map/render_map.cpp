@@ -461,14 +461,18 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
     // The geometry at the image's resolution, unless the caller brings it (or asks for none), made
     // when the first layer draws something.
     std::optional<map_detail::SimplifiedMap> own;
+    // Sparse data are drawn as they are (map_detail::worth_simplifying), with their features'
+    // bounds for leaving out what cannot reach the image.
     auto simplify_once = [&] {
         if (simplified || !(opts.simplify > 0)) return;
-        own = map_detail::simplify_map(data, map_detail::find_border_nodes(data), proj, frame.to_pixel, opts.simplify,
-                                       threads);
+        own = map_detail::bounds_only(data, proj, threads);
+        if (map_detail::worth_simplifying(*own, proj, frame.to_pixel))
+            own = map_detail::simplify_map(data, map_detail::find_border_nodes(data), proj, frame.to_pixel,
+                                           opts.simplify, threads);
         simplified = &*own;
     };
     auto geometries = [&](std::size_t i) -> const std::vector<Geometry>& {
-        return simplified ? simplified->features[i] : data.features[i].geometries;
+        return simplified && !simplified->features.empty() ? simplified->features[i] : data.features[i].geometries;
     };
     // Features that cannot reach the image are not drawn (their bounds are known only with the
     // simplified copy; a projection that bends segments may draw outside its positions' bounds).

@@ -13,6 +13,11 @@ namespace casteljau::map_detail {
 
 namespace {
 
+Rect united(const Rect& a, const Rect& b) {
+    if (!(b.x0 <= b.x1) || !(b.y0 <= b.y1)) return a;
+    return Rect{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
 bool less(Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
 // One worker's projection and scratch buffers.
@@ -204,6 +209,54 @@ SimplifiedMap simplify_map(const MapData& data, const BorderNodes& nodes, const 
     for (const auto& f : r.features)
         for (const Geometry& g : f) r.positions += g.points.size();
     return r;
+}
+
+SimplifiedMap bounds_only(const MapData& data, const MapProjection& proj, int threads) {
+    SimplifiedMap r;
+    r.bounds.resize(data.features.size());
+    std::vector<Rect> extents(data.features.size());
+    std::vector<MapProjection> projections;
+    for (int w = 0; w < threads; ++w) projections.push_back(proj.clone());
+    parallel::for_each_index(threads, data.features.size(), [&](int w, std::size_t i) {
+        const MapProjection& p = projections[static_cast<std::size_t>(w)];
+        Rect bounds{INFINITY, INFINITY, -INFINITY, -INFINITY};
+        bool crosses = false;
+        for (const Geometry& g : data.features[i].geometries) {
+            std::uint32_t start = 0;
+            const std::span<const Point> pts(g.points);
+            // A step of more than 180 degrees of longitude is drawn across the antimeridian.
+            for (std::uint32_t end : g.ring_ends) {
+                if (g.kind == GeometryKind::Points) break;
+                const std::span<const Point> line = pts.subspan(start, end - start);
+                for (std::size_t k = 1; k < line.size(); ++k)
+                    if (std::fabs(line[k].x - line[k - 1].x) > 180) crosses = true;
+                if (g.kind == GeometryKind::Polygons && line.size() > 1 &&
+                    std::fabs(line.front().x - line.back().x) > 180)
+                    crosses = true;
+                start = end;
+            }
+            Point q;
+            for (Point pt : g.points)
+                if (p.project(pt, q))
+                    bounds = Rect{std::min(bounds.x0, q.x), std::min(bounds.y0, q.y), std::max(bounds.x1, q.x),
+                                  std::max(bounds.y1, q.y)};
+        }
+        extents[i] = bounds;
+        r.bounds[i] = crosses ? Rect{-INFINITY, -INFINITY, INFINITY, INFINITY} : bounds;
+    });
+    for (const Feature& f : data.features)
+        for (const Geometry& g : f.geometries) r.positions += g.points.size();
+    for (const Rect& e : extents) r.extent = united(r.extent, e);
+    return r;
+}
+
+bool worth_simplifying(const SimplifiedMap& b, const MapProjection& proj, const Affine& to_pixel) {
+    // A projection that bends lon/lat steps needs the simplifier's densifying bound: always.
+    if (!proj.preserves_graticule_lines()) return true;
+    if (!(b.extent.x0 <= b.extent.x1) || !(b.extent.y0 <= b.extent.y1)) return false;  // nothing projected
+    const double pixels = (b.extent.x1 - b.extent.x0) * (b.extent.y1 - b.extent.y0) *
+                          std::fabs(to_pixel.a * to_pixel.d - to_pixel.b * to_pixel.c);
+    return static_cast<double>(b.positions) > kSimplifyDensity * std::max(pixels, 1.0);
 }
 
 }  // namespace casteljau::map_detail

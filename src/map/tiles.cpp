@@ -53,6 +53,7 @@ void check_options(const TileOptions& o) {
 // it, and released when the last of them is done.
 struct ZoomLevel {
     std::once_flag once;
+    bool simplified = false;  // else the data are drawn as they are
     map_detail::SimplifiedMap map;
     std::atomic<std::size_t> left{0};  // metatiles of this level still to finish
 };
@@ -85,6 +86,10 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
     mo.threads = 1;  // the worker threads take a metatile each
     // The border nodes do not depend on the zoom: found once. Each level's simplified copy is made
     // in the frame of the world at that zoom, which a metatile's frame only translates.
+    // Sparse data are drawn as they are at the zooms where simplifying them would not pay
+    // (map_detail::worth_simplifying): one copy of the features' bounds serves those.
+    const map_detail::SimplifiedMap as_is =
+        opts.simplify > 0 ? map_detail::bounds_only(data, merc, 1) : map_detail::SimplifiedMap{};
     const map_detail::BorderNodes nodes =
         opts.simplify > 0 ? map_detail::find_border_nodes(data) : map_detail::BorderNodes{};
     std::vector<std::unique_ptr<ZoomLevel>> levels;
@@ -93,10 +98,12 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
     auto simplified = [&](int z) -> const map_detail::SimplifiedMap& {
         ZoomLevel& level = *levels[static_cast<std::size_t>(z - opts.min_zoom)];
         std::call_once(level.once, [&] {
-            level.map =
-                map_detail::simplify_map(data, nodes, merc, zoom_transform(z, opts.tile_px, 0, 0), opts.simplify, 1);
+            level.simplified = map_detail::worth_simplifying(as_is, merc, zoom_transform(z, opts.tile_px, 0, 0));
+            if (level.simplified)
+                level.map = map_detail::simplify_map(data, nodes, merc, zoom_transform(z, opts.tile_px, 0, 0),
+                                                     opts.simplify, 1);
         });
-        return level.map;
+        return level.simplified ? level.map : as_is;
     };
     auto finished = [&](int z) {
         ZoomLevel& level = *levels[static_cast<std::size_t>(z - opts.min_zoom)];

@@ -1,7 +1,7 @@
 // Geometry at the output's resolution (MapOptions::simplify): the run simplifier's bound on random
 // polylines, its degenerate inputs, border nodes, shared borders simplified identically in both
-// rings (GeoJSON and TopoJSON), seams, coverage against the original on the shipped world, and
-// tiles drawn from one simplified copy per zoom.
+// rings (GeoJSON and TopoJSON), seams, coverage against the original on the shipped world, sparse
+// data drawn as they are, and tiles drawn from one simplified copy per zoom.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -12,6 +12,7 @@
 #include <random>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "casteljau/error.hpp"
@@ -270,6 +271,7 @@ TEST_CASE("Map simplify: the world's coverage within 0.2/255 on average and 8/25
     // The original drawn with simplify 0 is the reference (the shipped world has few positions per
     // pixel, so no fill runs out of its exact-work budget). The frame is moved by a fraction of a
     // pixel so that the -180 meridian does not lie on a pixel boundary (see bench/map_accuracy.cpp).
+    // At 256 px the world is simplified; at 4096 px it is sparse and drawn as it is.
     const MapData world = test::load_world();
     for (int w : {256, 4096}) {
         MapOptions o = world_options(w, w / 2);
@@ -309,37 +311,73 @@ TEST_CASE("Tiles: one simplified copy per zoom draws what render_map draws for t
     MapStyle st;
     st.layers[0].stroke = Color::black();
     st.layers[0].stroke_width = 1.2;
-    TileOptions to;
-    to.min_zoom = 0;
-    to.max_zoom = 2;
-    to.metatile = 2;
-    to.buffer = 16;
-    to.threads = 2;
-    std::map<std::string, std::vector<std::uint8_t>> tiles;
-    render_tiles(world, st, to, [&](int z, int x, int y, const std::vector<std::uint8_t>& png) {
-        tiles[std::to_string(z) + "/" + std::to_string(x) + "/" + std::to_string(y)] = png;
-    });
-    CHECK(tiles.size() == 1 + 4 + 16);
-    // Zoom 2, metatile (2, 2): drawn alone through render_map, which simplifies in its own frame
-    // (the zoom's, translated), then cut.
-    const int T = to.tile_px, B = to.buffer;
-    const double half = std::numbers::pi * kWebMercatorRadius, s = 4.0 * T / (2 * half);
-    MapFrame fr;
-    fr.width = fr.height = 2 * T + 2 * B;
-    fr.to_pixel = Affine{s, 0, 0, -s, half * s - (2.0 * T - B), half * s - (2.0 * T - B)};
-    MapOptions mo;
-    mo.threads = 1;
-    Pixmap pm(fr.width, fr.height);
-    render_map(world, MapProjection::parse("mercator"), fr, st, mo, pm);
-    for (int j = 0; j < 2; ++j)
-        for (int i = 0; i < 2; ++i) {
-            Pixmap tile(T, T);
-            for (int r = 0; r < T; ++r) {
-                const std::uint8_t* src = pm.row(B + j * T + r) + static_cast<std::size_t>(B + i * T) * 4;
-                std::copy(src, src + static_cast<std::size_t>(T) * 4, tile.row(r));
+    const MapProjection merc = MapProjection::parse("mercator");
+    const double half = std::numbers::pi * kWebMercatorRadius;
+    const map_detail::SimplifiedMap as_is = map_detail::bounds_only(world, merc, 1);
+    // 256 px tiles at zoom 2: the 110m world is sparse there and drawn as it is; 64 px tiles at
+    // zoom 1: dense, simplified.
+    for (const auto& [tile_px, z] : {std::pair{256, 2}, std::pair{64, 1}}) {
+        INFO("tile " << tile_px << " px, zoom " << z);
+        const double s = static_cast<double>(tile_px << z) / (2 * half);
+        CHECK(map_detail::worth_simplifying(as_is, merc, Affine{s, 0, 0, -s, 0, 0}) == (tile_px == 64));
+        TileOptions to;
+        to.min_zoom = 0;
+        to.max_zoom = z;
+        to.tile_px = tile_px;
+        to.metatile = 2;
+        to.buffer = 16;
+        to.threads = 2;
+        std::map<std::string, std::vector<std::uint8_t>> tiles;
+        render_tiles(world, st, to, [&](int tz, int x, int y, const std::vector<std::uint8_t>& png) {
+            tiles[std::to_string(tz) + "/" + std::to_string(x) + "/" + std::to_string(y)] = png;
+        });
+        CHECK(tiles.size() == (z == 2 ? 1 + 4 + 16 : 1 + 4));
+        // One metatile of the last zoom drawn alone through render_map, which decides and
+        // simplifies in its own frame (the zoom's, translated), then cut.
+        const int T = tile_px, B = to.buffer, m0 = z == 2 ? 2 : 0;
+        MapFrame fr;
+        fr.width = fr.height = 2 * T + 2 * B;
+        fr.to_pixel = Affine{s, 0, 0, -s, half * s - (m0 * T - B), half * s - (m0 * T - B)};
+        MapOptions mo;
+        mo.threads = 1;
+        Pixmap pm(fr.width, fr.height);
+        render_map(world, merc, fr, st, mo, pm);
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i) {
+                Pixmap tile(T, T);
+                for (int r = 0; r < T; ++r) {
+                    const std::uint8_t* src = pm.row(B + j * T + r) + static_cast<std::size_t>(B + i * T) * 4;
+                    std::copy(src, src + static_cast<std::size_t>(T) * 4, tile.row(r));
+                }
+                const std::string key = std::to_string(z) + "/" + std::to_string(m0 + i) + "/" + std::to_string(m0 + j);
+                INFO(key);
+                CHECK(tiles.at(key) == encode_png(tile));
             }
-            const std::string key = "2/" + std::to_string(2 + i) + "/" + std::to_string(2 + j);
-            INFO(key);
-            CHECK(tiles.at(key) == encode_png(tile));
-        }
+    }
+}
+
+TEST_CASE("Map simplify: sparse data are drawn as they are, dense data simplified", "[map][simplify]") {
+    // The 110m world holds about 0.09 positions per pixel of its extent at 512 px, 1.4 at 128.
+    const MapData world = test::load_world();
+    MapStyle st;
+    st.layers[0].stroke = Color::black();
+    st.layers[0].stroke_width = 0.8;
+    for (int width : {512, 128}) {
+        INFO(width << " px");
+        MapOptions mo;
+        mo.width = width;
+        mo.height = width / 2;
+        mo.bbox = Rect{-180, -90, 180, 90};
+        mo.threads = 1;
+        const Pixmap simplified = render_map(world, MapProjection{}, st, mo);
+        mo.simplify = 0;
+        const Pixmap every = render_map(world, MapProjection{}, st, mo);
+        std::size_t differ = 0;
+        for (int y = 0; y < simplified.height(); ++y)
+            for (int x = 0; x < simplified.width(); ++x) differ += simplified.pixel(x, y).a != every.pixel(x, y).a;
+        if (width == 512)
+            CHECK(differ == 0);
+        else
+            CHECK(differ > 0);
+    }
 }
