@@ -36,6 +36,19 @@ inline const std::string kLibertine = font_path("LinLibertine_R.otf");
 inline const std::string kNotoArabic = font_path("NotoSansArabic-Regular.ttf");
 inline const std::string kInterVar = source_path("tests/data/Inter-roman.var.ttf");
 
+// System fonts the fallback tests use (Debian fonts-noto-color-emoji, fonts-noto-cjk) and a line
+// that needs both beside Latin and Greek.
+inline const std::string kNotoEmoji = "/usr/share/fonts/truetype/noto/NotoColorEmoji.ttf";
+inline const std::string kNotoCjk = "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc";
+inline const char* const kMixedLine =
+    "Hello \U0001F44B world \u2713 \u65E5\u672C\u8A9E \u0395\u03BB\u03BB\u03B7\u03BD\u03B9\u03BA\u03AC";
+
+// The whole file as text ("" when it cannot be read).
+inline std::string read_text(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+}
+
 inline std::vector<std::uint8_t> read_bytes(const std::string& path) {
     std::ifstream f(path, std::ios::binary);
     if (!f) throw std::runtime_error("test: cannot read " + path);

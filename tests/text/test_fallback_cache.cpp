@@ -28,23 +28,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* kMixed =
-    "Hello \U0001F44B world \u2713 \u65E5\u672C\u8A9E \u0395\u03BB\u03BB\u03B7\u03BD\u03B9\u03BA\u03AC";
-const std::string kNotoEmoji = "/usr/share/fonts/truetype/noto/NotoColorEmoji.ttf";
-const std::string kNotoCjk = "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc";
-
 fs::path scratch(const std::string& name) {
     const fs::path d = casteljau::testing::process_temp_dir() / "fallback_cache" / name;
     fs::remove_all(d);
     fs::create_directories(d);
     return d;
-}
-
-std::string slurp(const fs::path& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
 }
 
 void spit(const fs::path& p, const std::string& text) {
@@ -212,15 +200,15 @@ TEST_CASE("Fallback cache: where the file lives, and files that are ignored", "[
 }
 
 TEST_CASE("Fallback cache: casteljau text keeps its answers and draws the same bytes", "[text][fallback]") {
-    for (const std::string& f : {kNotoEmoji, kNotoCjk})
+    for (const std::string& f : {text_test::kNotoEmoji, text_test::kNotoCjk})
         if (!fs::exists(f)) CASTELJAU_SKIP("no " << f << " (Debian fonts-noto-color-emoji, fonts-noto-cjk)");
     const fs::path dir = scratch("cli");
     const fs::path cache = dir / "cache", file = cache / "fallback-1.cache";
     const std::string cli = "CASTELJAU_CACHE_DIR=" + quote(cache.string()) + " " + quote(CASTELJAU_CLI_PATH) +
-                            " text " + quote(kMixed) + " --size 30 --font " + quote(text_test::kDejaVu);
+                            " text " + quote(text_test::kMixedLine) + " --size 30 --font " + quote(text_test::kDejaVu);
     auto draw = [&](const std::string& name, const std::string& extra = "") {
         REQUIRE(run(cli + extra + " -o " + quote((dir / name).string())) == 0);
-        return slurp(dir / name);
+        return text_test::read_text(dir / name);
     };
 
     // --no-system-fonts neither reads nor writes the file.
@@ -229,11 +217,11 @@ TEST_CASE("Fallback cache: casteljau text keeps its answers and draws the same b
 
     const std::string first = draw("first.png");
     REQUIRE(fs::exists(file));
-    const std::string kept = slurp(file);
-    CHECK(kept.find(kNotoCjk) != std::string::npos);
-    CHECK(kept.find(kNotoEmoji) != std::string::npos);
-    CHECK(draw("second.png") == first);  // answered from the file
-    CHECK(slurp(file) == kept);          // which needed no new answer
+    const std::string kept = text_test::read_text(file);
+    CHECK(kept.find(text_test::kNotoCjk) != std::string::npos);
+    CHECK(kept.find(text_test::kNotoEmoji) != std::string::npos);
+    CHECK(draw("second.png") == first);         // answered from the file
+    CHECK(text_test::read_text(file) == kept);  // which needed no new answer
 
     // The answers are what the process used: with the Han characters answered "no face", they
     // are drawn as .notdef boxes.
@@ -242,7 +230,7 @@ TEST_CASE("Fallback cache: casteljau text keeps its answers and draws the same b
     int faces = 0, cjk = -1;
     while (std::getline(lines, line)) {
         if (line.rfind("f ", 0) == 0) {
-            if (line == "f 0 " + kNotoCjk) cjk = faces;
+            if (line == "f 0 " + text_test::kNotoCjk) cjk = faces;
             ++faces;
         }
         const std::string cjk_answer = "a " + std::to_string(cjk) + " ";
@@ -252,7 +240,7 @@ TEST_CASE("Fallback cache: casteljau text keeps its answers and draws the same b
     REQUIRE(cjk >= 0);
     spit(file, none);
     CHECK(draw("no_face.png") != first);
-    const std::string face0 = "f 0 " + kNotoCjk;
+    const std::string face0 = "f 0 " + text_test::kNotoCjk;
 
     // A face that no longer exists, or that lacks the characters, is looked for again through
     // fontconfig: the same bytes.
@@ -267,5 +255,5 @@ TEST_CASE("Fallback cache: casteljau text keeps its answers and draws the same b
     // A file that is not a cache is ignored, and replaced.
     spit(file, "not a cache\n");
     CHECK(draw("garbage.png") == first);
-    CHECK(slurp(file) == kept);
+    CHECK(text_test::read_text(file) == kept);
 }

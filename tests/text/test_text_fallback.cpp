@@ -9,7 +9,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,15 +23,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* kMixed =
-    "Hello \U0001F44B world \u2713 \u65E5\u672C\u8A9E \u0395\u03BB\u03BB\u03B7\u03BD\u03B9\u03BA\u03AC";
 const std::string kSystemDejaVu = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-const std::string kNotoEmoji = "/usr/share/fonts/truetype/noto/NotoColorEmoji.ttf";
-const std::string kNotoCjk = "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc";
 
 // The reason the fallback tests cannot run here, or "".
 std::string missing_fonts() {
-    for (const std::string& f : {kSystemDejaVu, kNotoEmoji, kNotoCjk})
+    for (const std::string& f : {kSystemDejaVu, text_test::kNotoEmoji, text_test::kNotoCjk})
         if (!fs::exists(f)) return "no " + f + " (Debian fonts-dejavu-core, fonts-noto-color-emoji, fonts-noto-cjk)";
     return "";
 }
@@ -52,13 +47,6 @@ fs::path temp_dir() {
 int run(const std::string& cmd) {
     const int raw = std::system(cmd.c_str());
     return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
-
-std::string slurp(const fs::path& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
 }
 
 std::string font_of(const TextLayout& layout, std::size_t glyph) {
@@ -110,7 +98,7 @@ TEST_CASE("Fallback: the mixed line has no .notdef glyph and takes emoji and CJK
     TextStyle st;
     st.size = 40;
     st.system_fonts = true;
-    const TextLayout layout = layout_text(kMixed, base, st);
+    const TextLayout layout = layout_text(text_test::kMixedLine, base, st);
     for (const PositionedGlyph& g : layout.glyphs) {
         INFO("cluster " << g.cluster << " U+" << std::hex << static_cast<unsigned>(layout.text[g.cluster]));
         CHECK(g.glyph != 0);
@@ -131,7 +119,7 @@ TEST_CASE("Fallback: the mixed line has no .notdef glyph and takes emoji and CJK
 
     // Without system fonts the same text shows .notdef boxes.
     st.system_fonts = false;
-    const TextLayout plain = layout_text(kMixed, base, st);
+    const TextLayout plain = layout_text(text_test::kMixedLine, base, st);
     CHECK(plain.system_fonts.empty());
     CHECK(plain.fonts.size() == 1);
     CHECK(std::any_of(plain.glyphs.begin(), plain.glyphs.end(), [](const PositionedGlyph& g) { return g.glyph == 0; }));
@@ -181,9 +169,9 @@ TEST_CASE("Fallback: each cluster's ink lies within 2 px of pango-view's", "[tex
     REQUIRE(run("pango-view --no-display --pixels --subpixel-positions --hinting=none --margin 10 --font 'DejaVu Sans "
                 "40px' "
                 "--text " +
-                quote(kMixed) + " -o " + quote(theirs.string()) + " >/dev/null 2>&1") == 0);
-    REQUIRE(run(quote(CASTELJAU_CLI_PATH) + " text " + quote(kMixed) + " --size 40 --padding 10 --font " +
-                quote(kSystemDejaVu) + " -o " + quote(ours.string())) == 0);
+                quote(text_test::kMixedLine) + " -o " + quote(theirs.string()) + " >/dev/null 2>&1") == 0);
+    REQUIRE(run(quote(CASTELJAU_CLI_PATH) + " text " + quote(text_test::kMixedLine) +
+                " --size 40 --padding 10 --font " + quote(kSystemDejaVu) + " -o " + quote(ours.string())) == 0);
     const std::vector<IRect> a = ink_groups(read_png(theirs.string())), b = ink_groups(read_png(ours.string()));
     // The clusters that do not touch: H e l l o, the emoji, w o r l d, the check mark, three
     // ideographs and the Greek letters.
@@ -209,12 +197,12 @@ TEST_CASE("casteljau text --no-system-fonts gives the same bytes whatever fonts 
         std::ofstream f(conf);
         f << "<?xml version=\"1.0\"?>\n<fontconfig></fontconfig>\n";
     }
-    const std::string cli = quote(CASTELJAU_CLI_PATH) + " text " + quote(kMixed) +
+    const std::string cli = quote(CASTELJAU_CLI_PATH) + " text " + quote(text_test::kMixedLine) +
                             " --size 30 --no-system-fonts --font " + quote(text_test::kDejaVu) + " -o ";
     REQUIRE(run(cli + quote(normal.string())) == 0);
     // A process whose fontconfig knows no fonts at all.
     REQUIRE(run("FONTCONFIG_FILE=" + quote(conf.string()) + " " + cli + quote(bare.string())) == 0);
-    const std::string x = slurp(normal), y = slurp(bare);
+    const std::string x = text_test::read_text(normal), y = text_test::read_text(bare);
     REQUIRE(!x.empty());
     CHECK(x == y);
 }
