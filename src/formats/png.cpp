@@ -8,8 +8,8 @@
 // samples with straight alpha in the smallest colour type that holds the pixels exactly (grey, grey
 // + alpha, RGB or RGBA), with the zlib level and row filter of PngEncodeOptions, and an sRGB chunk
 // (with the gAMA and cHRM that the PNG specification asks to accompany it). The default filters
-// (none, or none or Paeth per row) are written by png_direct.cpp, the same bytes in less time; the
-// others by libpng.
+// (none, or none or Paeth per row) are written by png_direct.cpp, the same rows deflated by
+// libdeflate in less time; the others by libpng.
 //
 // libpng reports errors with longjmp. Each function here that calls setjmp holds only trivially
 // destructible locals, and so do the callbacks libpng calls, so a longjmp never skips a C++

@@ -1,12 +1,14 @@
-// Encode stage: PNG through zlib for the default row filters, as libpng writes it
-// (src/formats/png_direct.hpp).
+// Encode stage: PNG for the default row filters, the rows libpng would write deflated by
+// libdeflate, or by zlib when the image is too large to hold filtered (src/formats/png_direct.hpp).
 #include "formats/png_direct.hpp"
 #include "formats/png_paeth.hpp"
 
+#include <libdeflate.h>
 #include <zlib.h>
 
 #include <algorithm>
 #include <cstring>
+#include <memory>
 #include <new>
 #include <string>
 
@@ -140,8 +142,8 @@ private:
 
 // libpng lowers the window size the zlib header announces to what a small image needs
 // (optimize_cmf), and recomputes the header's check bits.
-void optimize_window_field(std::vector<std::uint8_t>& s, std::size_t image_bytes) {
-    if (image_bytes > 16384 || s.size() < 2) return;
+void optimize_window_field(std::uint8_t* s, std::size_t size, std::size_t image_bytes) {
+    if (image_bytes > 16384 || size < 2) return;
     unsigned cmf = s[0];
     if ((cmf & 0x0f) != 8 || (cmf & 0xf0) > 0x70) return;
     unsigned info = cmf >> 4, half = 1u << (info + 7);
@@ -157,21 +159,12 @@ void optimize_window_field(std::vector<std::uint8_t>& s, std::size_t image_bytes
     s[1] = static_cast<std::uint8_t>(flg);
 }
 
-}  // namespace
-
-std::vector<std::uint8_t> encode_png_direct(const Pixmap& pixmap, int colour_type, int level, bool paeth) {
+// Hands each row, filter byte first, to `take(row, bytes)`: unfiltered, or Paeth-filtered when
+// that makes libpng's heuristic sum smaller.
+template <class Take>
+void filter_rows(const Pixmap& pixmap, int colour_type, std::size_t channels, bool paeth, Take&& take) {
     const int w = pixmap.width(), h = pixmap.height();
-    const std::size_t channels = (colour_type & 2 ? 3 : 1) + (colour_type & 4 ? 1 : 0);
     const std::size_t row_bytes = static_cast<std::size_t>(w) * channels;
-    // libpng drops the filters that need a row above or a pixel to the left when there is none.
-    paeth = paeth && w > 1 && h > 1;
-    const std::size_t image_bytes =
-        row_bytes < 32768 && h < 32768 ? (row_bytes + 1) * static_cast<std::size_t>(h) : 0xffffffffu;
-
-    std::vector<std::uint8_t> out;
-    out.reserve(4096);
-    put_header(out, w, h, colour_type);
-    Deflater z(level, image_bytes, paeth);
     // Each buffer holds the filter byte, then the row, then a byte convert_row may write.
     std::vector<std::uint8_t> row(row_bytes + 2, 0), prev(row_bytes + 2, 0), filtered(row_bytes + 1, 4);
     for (int y = 0; y < h; ++y) {
@@ -181,13 +174,81 @@ std::vector<std::uint8_t> encode_png_direct(const Pixmap& pixmap, int colour_typ
             const RowSums sums = paeth_row(row.data() + 1, prev.data() + 1, row_bytes, channels, filtered.data() + 1);
             if (sums.paeth < sums.none) chosen = filtered.data();
         }
-        z.add(chosen, row_bytes + 1, Z_NO_FLUSH);
+        take(chosen, row_bytes + 1);
         row.swap(prev);
     }
+}
+
+// One libdeflate compressor per thread and level: allocating one costs more than deflating a
+// small tile.
+libdeflate_compressor* compressor_for(int level) {
+    struct Owned {
+        libdeflate_compressor* c = nullptr;
+        ~Owned() { libdeflate_free_compressor(c); }
+    };
+    thread_local Owned cache[10];
+    Owned& slot = cache[level];
+    if (!slot.c) slot.c = libdeflate_alloc_compressor(level);
+    if (!slot.c) throw std::bad_alloc();
+    return slot.c;
+}
+
+// A zlib stream: the memory it was written into and how much of it is the stream.
+struct Stream {
+    std::unique_ptr<std::uint8_t[]> bytes;
+    std::size_t size = 0;
+};
+
+// The zlib stream of the filtered rows deflated in one piece by libdeflate, into a buffer left
+// uninitialised: the bound it needs is the size of the rows, of which the stream is a fraction.
+Stream deflate_whole(const Pixmap& pixmap, int colour_type, std::size_t channels, bool paeth, int level,
+                     std::size_t filtered_bytes) {
+    std::vector<std::uint8_t> rows;
+    rows.reserve(filtered_bytes);
+    filter_rows(pixmap, colour_type, channels, paeth,
+                [&](const std::uint8_t* r, std::size_t n) { rows.insert(rows.end(), r, r + n); });
+    libdeflate_compressor* c = compressor_for(level);
+    const std::size_t bound = libdeflate_zlib_compress_bound(c, rows.size());
+    Stream out{std::unique_ptr<std::uint8_t[]>(new std::uint8_t[bound]), 0};
+    out.size = libdeflate_zlib_compress(c, rows.data(), rows.size(), out.bytes.get(), bound);
+    if (out.size == 0)
+        throw Error(ErrorKind::InvalidData, "PNG encoding failed: libdeflate found no room for the stream");
+    return out;
+}
+
+// The zlib stream of the filtered rows through zlib, one row at a time, with libpng's parameters.
+Stream deflate_streaming(const Pixmap& pixmap, int colour_type, std::size_t channels, bool paeth, int level,
+                         std::size_t image_bytes) {
+    Deflater z(level, image_bytes, paeth);
+    filter_rows(pixmap, colour_type, channels, paeth,
+                [&](const std::uint8_t* r, std::size_t n) { z.add(r, n, Z_NO_FLUSH); });
     z.add(nullptr, 0, Z_FINISH);
-    optimize_window_field(z.stream, image_bytes);
-    for (std::size_t at = 0; at < z.stream.size(); at += kChunkData)
-        put_chunk(out, "IDAT", z.stream.data() + at, std::min(kChunkData, z.stream.size() - at));
+    Stream out{std::unique_ptr<std::uint8_t[]>(new std::uint8_t[z.stream.size()]), z.stream.size()};
+    std::copy(z.stream.begin(), z.stream.end(), out.bytes.get());
+    return out;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_png_direct(const Pixmap& pixmap, int colour_type, int level, bool paeth,
+                                            std::size_t whole_limit) {
+    const int w = pixmap.width(), h = pixmap.height();
+    const std::size_t channels = (colour_type & 2 ? 3 : 1) + (colour_type & 4 ? 1 : 0);
+    const std::size_t row_bytes = static_cast<std::size_t>(w) * channels;
+    // libpng drops the filters that need a row above or a pixel to the left when there is none.
+    paeth = paeth && w > 1 && h > 1;
+    const std::size_t filtered_bytes = (row_bytes + 1) * static_cast<std::size_t>(h);
+    const std::size_t image_bytes = row_bytes < 32768 && h < 32768 ? filtered_bytes : 0xffffffffu;
+
+    const Stream stream = filtered_bytes <= whole_limit
+                              ? deflate_whole(pixmap, colour_type, channels, paeth, level, filtered_bytes)
+                              : deflate_streaming(pixmap, colour_type, channels, paeth, level, image_bytes);
+    optimize_window_field(stream.bytes.get(), stream.size, image_bytes);
+    std::vector<std::uint8_t> out;
+    out.reserve(256 + stream.size + stream.size / kChunkData * 12);
+    put_header(out, w, h, colour_type);
+    for (std::size_t at = 0; at < stream.size; at += kChunkData)
+        put_chunk(out, "IDAT", stream.bytes.get() + at, std::min(kChunkData, stream.size - at));
     put_chunk(out, "IEND", nullptr, 0);
     return out;
 }

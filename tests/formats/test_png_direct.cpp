@@ -1,9 +1,13 @@
 // The PNG encoder of the default filters (src/formats/png_direct.cpp) against libpng: the same
-// bytes for every colour type, for images small enough that libpng shrinks the zlib window, one
-// pixel wide or high (no Paeth), at every zlib level, on every SIMD target the Paeth filter is
-// compiled for (src/formats/png_paeth.cpp), and for the golden pictures.
+// chunks and, once inflated, the same filtered rows (the streaming path: the same bytes) for every
+// colour type, for images small enough that libpng shrinks the zlib window, one pixel wide or high
+// (no Paeth), at every deflate level, on every SIMD target the Paeth filter is compiled for
+// (src/formats/png_paeth.cpp), and for the golden pictures.
+#include <zlib.h>
+
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -44,18 +48,74 @@ Pixmap picture(int w, int h, int kind, std::mt19937& rng) {
 // The colour type encode_png picks for `p` (byte 25 of the file: IHDR's colour type).
 int colour_type_of(const Pixmap& p) { return encode_png(p)[25]; }
 
+std::uint32_t read32(const std::uint8_t* b) {
+    return std::uint32_t{b[0]} << 24 | std::uint32_t{b[1]} << 16 | std::uint32_t{b[2]} << 8 | b[3];
+}
+
+// A PNG file taken apart: every chunk but IDAT as it is (type and data), and the IDAT data joined.
+struct Chunks {
+    std::vector<std::vector<std::uint8_t>> others;
+    std::vector<std::uint8_t> idat;
+    std::size_t largest_idat = 0;
+};
+
+Chunks chunks_of(const std::vector<std::uint8_t>& file) {
+    Chunks c;
+    for (std::size_t at = 8; at + 12 <= file.size();) {
+        const std::size_t n = read32(&file[at]);
+        const std::uint8_t* type = &file[at + 4];
+        if (std::string(type, type + 4) == "IDAT") {
+            c.idat.insert(c.idat.end(), type + 4, type + 4 + n);
+            c.largest_idat = std::max(c.largest_idat, n);
+        } else {
+            c.others.emplace_back(type, type + 4 + n + 4);  // type, data and CRC
+        }
+        at += 12 + n;
+    }
+    return c;
+}
+
+// The zlib stream `z` inflated (empty when it is not a complete, valid stream).
+std::vector<std::uint8_t> inflated(const std::vector<std::uint8_t>& z) {
+    std::vector<std::uint8_t> out(1 << 16);
+    z_stream s{};
+    if (inflateInit(&s) != Z_OK) return {};
+    s.next_in = const_cast<Bytef*>(z.data());
+    s.avail_in = static_cast<uInt>(z.size());
+    int ret = Z_OK;
+    while (ret == Z_OK) {
+        if (s.total_out == out.size()) out.resize(out.size() * 2);
+        s.next_out = out.data() + s.total_out;
+        s.avail_out = static_cast<uInt>(out.size() - s.total_out);
+        ret = inflate(&s, Z_NO_FLUSH);
+    }
+    out.resize(ret == Z_STREAM_END && s.avail_in == 0 ? s.total_out : 0);
+    inflateEnd(&s);
+    return out;
+}
+
 void same_as_libpng(const Pixmap& p, int level) {
     const int type = colour_type_of(p);
     for (const bool paeth : {false, true}) {
         INFO(p.width() << "x" << p.height() << ", colour type " << type << ", level " << level << ", Paeth " << paeth);
-        CHECK(png_detail::encode_png_direct(p, type, level, paeth) ==
-              png_detail::encode_png_libpng(p, type, level, paeth ? (kNone | kPaeth) : kNone));
+        const std::vector<std::uint8_t> libpng =
+            png_detail::encode_png_libpng(p, type, level, paeth ? (kNone | kPaeth) : kNone);
+        // Deflated in one piece by libdeflate: libpng's chunks and rows, another stream.
+        const Chunks whole = chunks_of(png_detail::encode_png_direct(p, type, level, paeth));
+        const Chunks want = chunks_of(libpng);
+        CHECK(whole.others == want.others);
+        CHECK(whole.largest_idat <= 8192);
+        const std::vector<std::uint8_t> rows = inflated(whole.idat);
+        CHECK(!rows.empty());
+        CHECK(rows == inflated(want.idat));
+        // Too large to hold filtered: zlib a row at a time, libpng's file byte for byte.
+        CHECK(png_detail::encode_png_direct(p, type, level, paeth, 0) == libpng);
     }
 }
 
 }  // namespace
 
-TEST_CASE("encode_png_direct writes libpng's bytes for the default filters", "[png]") {
+TEST_CASE("encode_png_direct writes libpng's rows for the default filters", "[png]") {
     std::mt19937 rng(7);
     const int sizes[][2] = {{1, 1}, {1, 7}, {7, 1}, {2, 2}, {3, 3}, {10, 10}, {50, 50}, {64, 63}, {100, 40}, {300, 90}};
     for (const auto& s : sizes)
@@ -107,7 +167,7 @@ TEST_CASE("The Paeth filter and its sums are the scalar formula's on every SIMD 
     simd::restrict_targets(0);
 }
 
-TEST_CASE("encode_png_direct writes libpng's bytes for the golden pictures", "[png]") {
+TEST_CASE("encode_png_direct writes libpng's rows for the golden pictures", "[png]") {
     int pictures = 0;
     for (const auto& e : std::filesystem::recursive_directory_iterator(std::string(CASTELJAU_SOURCE_DIR) + "/golden")) {
         if (e.path().extension() != ".png") continue;
