@@ -139,16 +139,21 @@ AxisWeights axis_weights(int d0, int n, double origin, double k, int src_count) 
     return w;
 }
 
-// std::round for 0 <= x < 2^31, inline: x - trunc(x) is exact there.
-float round_non_negative(float x) {
-    const float t = static_cast<float>(static_cast<std::int32_t>(x));
-    return x - t >= 0.5f ? t + 1.0f : t;
+// Four channels of a pixel as one value: GCC and Clang compile its arithmetic to vector
+// instructions of the baseline instruction set, each lane as the scalar float operation.
+using Float4 = float __attribute__((vector_size(16)));
+
+// A non-negative sum of at most 255.x rounded half up to a byte, at most `limit`: x + 0.5 is exact
+// below 256 and truncation cannot change above it, so this is std::round clamped.
+std::uint8_t round_sum(float x, int limit) {
+    const int r = static_cast<int>(x + 0.5f);
+    return static_cast<std::uint8_t>(r < limit ? r : limit);
 }
 
 // Draws a strike bitmap scaled by `k` (device pixels per strike pixel) with its top-left corner at
-// device point (x, y), averaging the strike's pixels over each device pixel. The four channels of
-// a pixel are summed in local accumulators (the compiler keeps them in one vector register), in the
-// same order as one channel at a time.
+// device point (x, y), averaging the strike's pixels over each device pixel: a horizontal pass into
+// one row of sums per strike row, then a vertical pass that adds whole weighted rows, the four
+// channels of a pixel at once, each sum taken in the order of its source pixels.
 void draw_scaled_bitmap(Canvas& canvas, const StrikeBitmap& bm, double k, double x, double y, double opacity) {
     // Scales and positions a malformed font can produce that no image could show.
     if (!(k >= 1e-4 && k <= 1e4) || !(std::abs(x) < 1e8 && std::abs(y) < 1e8)) return;
@@ -157,38 +162,38 @@ void draw_scaled_bitmap(Canvas& canvas, const StrikeBitmap& bm, double k, double
     const int w = dx1 - dx0, h = dy1 - dy0;
     if (w <= 0 || h <= 0 || w > 16384 || h > 16384) return;
     const AxisWeights wx = axis_weights(dx0, w, x, k, bm.width), wy = axis_weights(dy0, h, y, k, bm.height);
-    // Horizontal pass into floats (one row per strike row), then vertical into the pixmap.
-    std::vector<float> rows(static_cast<std::size_t>(bm.height) * static_cast<std::size_t>(w) * 4);
+    const std::size_t row_pixels = static_cast<std::size_t>(w), src_pixels = static_cast<std::size_t>(bm.width);
+    std::unique_ptr<Float4[]> rows(new Float4[static_cast<std::size_t>(bm.height) * row_pixels]);
+    std::unique_ptr<Float4[]> src(new Float4[src_pixels]), acc(new Float4[row_pixels]);
     for (int sy = 0; sy < bm.height; ++sy) {
-        const std::uint8_t* src =
-            bm.rgba.data() + static_cast<std::size_t>(sy) * static_cast<std::size_t>(bm.width) * 4;
-        float* dst = rows.data() + static_cast<std::size_t>(sy) * static_cast<std::size_t>(w) * 4;
-        for (int d = 0; d < w; ++d) {
-            const std::size_t b = wx.begin[static_cast<std::size_t>(d)], e = wx.begin[static_cast<std::size_t>(d) + 1];
-            const std::uint8_t* s = src + 4 * static_cast<std::size_t>(wx.first[static_cast<std::size_t>(d)]);
-            float acc[4] = {0, 0, 0, 0};
-            for (std::size_t j = b; j < e; ++j, s += 4)
-                for (int c = 0; c < 4; ++c) acc[c] += wx.weights[j] * static_cast<float>(s[c]);
-            for (int c = 0; c < 4; ++c) dst[4 * d + c] = acc[c];
+        const std::uint8_t* bytes = bm.rgba.data() + static_cast<std::size_t>(sy) * src_pixels * 4;
+        for (std::size_t i = 0; i < src_pixels; ++i, bytes += 4)
+            src[i] = Float4{static_cast<float>(bytes[0]), static_cast<float>(bytes[1]), static_cast<float>(bytes[2]),
+                            static_cast<float>(bytes[3])};
+        Float4* dst = rows.get() + static_cast<std::size_t>(sy) * row_pixels;
+        for (std::size_t d = 0; d < row_pixels; ++d) {
+            const Float4* s = src.get() + wx.first[d];
+            Float4 sum = {0, 0, 0, 0};
+            for (std::size_t j = wx.begin[d]; j < wx.begin[d + 1]; ++j, ++s) sum += wx.weights[j] * *s;
+            dst[d] = sum;
         }
     }
     auto image = std::make_shared<Pixmap>(w, h);
     for (int d = 0; d < h; ++d) {
         const std::size_t b = wy.begin[static_cast<std::size_t>(d)], e = wy.begin[static_cast<std::size_t>(d) + 1];
-        const float* first_row = rows.data() + static_cast<std::size_t>(wy.first[static_cast<std::size_t>(d)]) *
-                                                   static_cast<std::size_t>(w) * 4;
+        std::fill_n(acc.get(), row_pixels, Float4{0, 0, 0, 0});
+        const Float4* r = rows.get() + static_cast<std::size_t>(wy.first[static_cast<std::size_t>(d)]) * row_pixels;
+        for (std::size_t j = b; j < e; ++j, r += row_pixels) {
+            const float wj = wy.weights[j];
+            for (std::size_t i = 0; i < row_pixels; ++i) acc[i] += wj * r[i];
+        }
+        // Overlaps are in device pixels: a fully covered device pixel sums to 1, so every sum is
+        // at most 255.x and at least 0; colour is kept at most alpha (premultiplied).
         std::uint8_t* out = image->row(d);
-        for (int px = 0; px < w; ++px) {
-            float acc[4] = {0, 0, 0, 0};
-            const float* r = first_row + static_cast<std::size_t>(px) * 4;
-            for (std::size_t j = b; j < e; ++j, r += static_cast<std::size_t>(w) * 4)
-                for (int c = 0; c < 4; ++c) acc[c] += wy.weights[j] * r[c];
-            // Overlaps are in device pixels: a fully covered device pixel sums to 1, so every sum is
-            // at most 255 and at least 0.
-            const float a = std::clamp(round_non_negative(acc[3]), 0.0f, 255.0f);
-            out[4 * px + 3] = static_cast<std::uint8_t>(a);
-            for (int c = 0; c < 3; ++c)
-                out[4 * px + c] = static_cast<std::uint8_t>(std::clamp(round_non_negative(acc[c]), 0.0f, a));
+        for (std::size_t i = 0; i < row_pixels; ++i, out += 4) {
+            const std::uint8_t a = round_sum(acc[i][3], 255);
+            out[3] = a;
+            for (int c = 0; c < 3; ++c) out[c] = round_sum(acc[i][c], a);
         }
     }
     canvas.save();
