@@ -3,6 +3,7 @@
 // (Catmull-Rom, 4x4), on premultiplied values, then multiplied by the opacity.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "casteljau/error.hpp"
 #include "casteljau/shader.hpp"
@@ -21,6 +22,20 @@ void catmull_rom(float t, float w[4]) {
 }
 
 int wrap_or_clamp(int i, int n, bool repeat) { return repeat ? ((i % n) + n) % n : std::clamp(i, 0, n - 1); }
+
+// Nearest sampling at full opacity of a row along which the image coordinate y stays `p.y` and x
+// steps by `step` from `p.x`: one image row, each pixel copied as it is (what the general loop
+// computes: an integer sample times 1, plus 0.5, truncated), transparent outside the image.
+void shade_nearest_along_row(const Pixmap& im, Point p, double step, int length, std::uint8_t* out) {
+    const int w = im.width(), h = im.height();
+    const std::uint8_t* row = p.y >= 0 && p.y <= h ? im.row(std::min(static_cast<int>(p.y), h - 1)) : nullptr;
+    for (int i = 0; i < length; ++i, out += 4, p.x += step) {
+        if (row && p.x >= 0 && p.x <= w)
+            std::memcpy(out, row + 4 * static_cast<std::size_t>(std::min(static_cast<int>(p.x), w - 1)), 4);
+        else
+            std::memset(out, 0, 4);
+    }
+}
 
 }  // namespace
 
@@ -70,6 +85,10 @@ void Shader::shade_image_row(const Affine& inv, int x, int y, int length, double
     const int w = im.width(), h = im.height();
     const float op = static_cast<float>(std::clamp(std::isfinite(opacity) ? opacity : 0.0, 0.0, 1.0));
     Point p = inv.apply({x + 0.5, y + 0.5});
+    if (sampling_ == ImageSampling::Nearest && !repeat_ && inv.b == 0 && op == 1.0f) {
+        shade_nearest_along_row(im, p, inv.a, length, out);
+        return;
+    }
     for (int i = 0; i < length; ++i, out += 4, p.x += inv.a, p.y += inv.b) {
         Point q = p;
         if (repeat_) {
