@@ -31,12 +31,36 @@ void* allocate(std::size_t bytes, bool zeroed) noexcept {
         const std::size_t tail = (start + size + kHugePage) - (aligned + size);
         if (tail > 0) munmap(reinterpret_cast<void*>(aligned + size), tail);
         void* p = reinterpret_cast<void*>(aligned);
-        (void)madvise(p, size, MADV_HUGEPAGE);  // a hint: without huge pages the block still works
+        // A hint: without huge pages the block still works. A last part of less than half a huge
+        // page is left to small pages, whose faults cost less than zeroing the whole huge page.
+        const std::size_t tail_bytes = bytes % kHugePage;
+        (void)madvise(p, tail_bytes && tail_bytes < kHugePage / 2 ? size - kHugePage : size, MADV_HUGEPAGE);
         return p;
     }
 #endif
     if (bytes == 0) bytes = 1;
     return zeroed ? std::calloc(bytes, 1) : std::malloc(bytes);
+}
+
+void* allocate_sparse(std::size_t bytes) noexcept {
+#if defined(__linux__)
+    if (bytes >= kSparseBlock) {
+        void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        return p == MAP_FAILED ? nullptr : p;
+    }
+#endif
+    return std::malloc(bytes == 0 ? 1 : bytes);
+}
+
+void release_sparse(void* p, std::size_t bytes) noexcept {
+    if (!p) return;
+#if defined(__linux__)
+    if (bytes >= kSparseBlock) {
+        munmap(p, bytes);
+        return;
+    }
+#endif
+    std::free(p);
 }
 
 void release(void* p, std::size_t bytes) noexcept {

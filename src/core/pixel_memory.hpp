@@ -1,12 +1,19 @@
-// Core stage, internal: memory for pixel buffers, large ones on huge pages.
+// Core stage, internal: memory for pixel buffers, large ones on huge pages, and for buffers of
+// which only a part is written.
 //
 // Small blocks come from calloc. Blocks of kHugeBlock bytes and more (a 724 x 724 RGBA image) are
 // mapped directly, rounded up to whole 2 MiB pages, aligned to 2 MiB and marked MADV_HUGEPAGE on
 // Linux, so that the kernel backs them with 2 MiB pages where it can: a 4096 x 2048 image then
 // takes 16 page faults on first touch instead of 8,192, and is unmapped as fast. Faults are costly
-// (on a virtual machine a 4 KiB fault can cost more than zeroing its page), and a block of at
-// least one huge page wastes at most half of what it commits. Either way the memory reads as zero and
-// is committed page by page on first touch. release() must get the size allocate() got.
+// (on a virtual machine a 4 KiB fault can cost more than zeroing its page: about 0.55 against
+// 0.25 ms per 2 MiB here); a last part of less than half a huge page stays on small pages, so a
+// block commits at most a quarter more than it needs. Either way the memory reads as zero and is
+// committed page by page on first touch. release() must get the size allocate() got.
+//
+// allocate_sparse() is for a buffer sized for the worst case of which usually a small part is
+// written (a compressor's output): from kSparseBlock bytes it is mapped with small pages on Linux,
+// so only what is written is committed, and it is not carved from the heap, whose pages the
+// process's huge-page advice may commit 2 MiB at a time. release_sparse() must get its size.
 // Thread-safety: both functions may be called from any thread.
 #pragma once
 
@@ -15,10 +22,14 @@
 namespace casteljau::platform {
 
 inline constexpr std::size_t kHugeBlock = std::size_t(2) << 20;
+inline constexpr std::size_t kSparseBlock = std::size_t(256) << 10;
 
 // `bytes` of memory reading as zero (`zeroed`), or of any content (large blocks are zero anyway);
 // null when the memory is not available.
 void* allocate(std::size_t bytes, bool zeroed) noexcept;
 void release(void* p, std::size_t bytes) noexcept;
+// `bytes` of memory of any content, null when not available.
+void* allocate_sparse(std::size_t bytes) noexcept;
+void release_sparse(void* p, std::size_t bytes) noexcept;
 
 }  // namespace casteljau::platform

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "casteljau/error.hpp"
+#include "core/pixel_memory.hpp"
 
 namespace casteljau::png_detail {
 
@@ -195,12 +196,22 @@ libdeflate_compressor* compressor_for(int level) {
 
 // A zlib stream: the memory it was written into and how much of it is the stream.
 struct Stream {
-    std::unique_ptr<std::uint8_t[]> bytes;
+    struct Release {
+        std::size_t capacity = 0;
+        void operator()(std::uint8_t* p) const noexcept { platform::release_sparse(p, capacity); }
+    };
+    std::unique_ptr<std::uint8_t[], Release> bytes;
     std::size_t size = 0;
+
+    explicit Stream(std::size_t capacity)
+        : bytes(static_cast<std::uint8_t*>(platform::allocate_sparse(capacity)), Release{capacity}) {
+        if (!bytes) throw std::bad_alloc();
+    }
 };
 
-// The zlib stream of the filtered rows deflated in one piece by libdeflate, into a buffer left
-// uninitialised: the bound it needs is the size of the rows, of which the stream is a fraction.
+// The zlib stream of the filtered rows deflated in one piece by libdeflate, into a buffer of the
+// bound libdeflate needs (about the size of the rows) of which only the stream, usually a small
+// fraction, is touched (platform::allocate_sparse).
 Stream deflate_whole(const Pixmap& pixmap, int colour_type, std::size_t channels, bool paeth, int level,
                      std::size_t filtered_bytes) {
     std::vector<std::uint8_t> rows;
@@ -209,7 +220,7 @@ Stream deflate_whole(const Pixmap& pixmap, int colour_type, std::size_t channels
                 [&](const std::uint8_t* r, std::size_t n) { rows.insert(rows.end(), r, r + n); });
     libdeflate_compressor* c = compressor_for(level);
     const std::size_t bound = libdeflate_zlib_compress_bound(c, rows.size());
-    Stream out{std::unique_ptr<std::uint8_t[]>(new std::uint8_t[bound]), 0};
+    Stream out(bound);
     out.size = libdeflate_zlib_compress(c, rows.data(), rows.size(), out.bytes.get(), bound);
     if (out.size == 0)
         throw Error(ErrorKind::InvalidData, "PNG encoding failed: libdeflate found no room for the stream");
@@ -223,7 +234,8 @@ Stream deflate_streaming(const Pixmap& pixmap, int colour_type, std::size_t chan
     filter_rows(pixmap, colour_type, channels, paeth,
                 [&](const std::uint8_t* r, std::size_t n) { z.add(r, n, Z_NO_FLUSH); });
     z.add(nullptr, 0, Z_FINISH);
-    Stream out{std::unique_ptr<std::uint8_t[]>(new std::uint8_t[z.stream.size()]), z.stream.size()};
+    Stream out(z.stream.size());
+    out.size = z.stream.size();
     std::copy(z.stream.begin(), z.stream.end(), out.bytes.get());
     return out;
 }
