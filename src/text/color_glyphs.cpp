@@ -88,24 +88,52 @@ bool load_strike_bitmap(const Font::Impl& fi, std::uint32_t glyph, FT_Int strike
     return ok;
 }
 
-// Decoded bitmaps of a font, per (glyph, strike); emptied past kMaxCachedBitmaps.
-constexpr std::size_t kMaxCachedBitmaps = 256;
-using BitmapCache = std::unordered_map<std::uint64_t, StrikeBitmap>;
+// Four channels of a pixel as one value: GCC and Clang compile its arithmetic to vector
+// instructions of the baseline instruction set, each lane as the scalar float operation.
+using Float4 = float __attribute__((vector_size(16)));
+
+// The vertical half of scaling a strike bitmap (draw_scaled_bitmap): for each device row, the
+// weighted sum of the strike rows under it, one Float4 per strike pixel. It depends only on the
+// bitmap, the scale and where the bitmap's top lies within a device pixel (`phase`), which every
+// instance of a glyph on a line shares.
+struct VerticalPass {
+    std::uint64_t bitmap = 0;  // the (glyph, strike) key of BitmapCache
+    double k = 0, phase = -1;
+    int rows = 0;
+    std::vector<Float4> sums;  // rows x bitmap width
+};
+
+// Decoded bitmaps of a font, per (glyph, strike), emptied past kMaxCachedBitmaps, and the last
+// kKeptPasses vertical passes (about 120 KB each for an emoji at 48 px).
+constexpr std::size_t kMaxCachedBitmaps = 256, kKeptPasses = 8;
+struct BitmapCache {
+    std::unordered_map<std::uint64_t, StrikeBitmap> bitmaps;
+    VerticalPass passes[kKeptPasses];
+    std::size_t next_pass = 0;
+};
+
+BitmapCache& bitmap_cache(Font::Impl& fi) {
+    if (!fi.color_bitmap_cache) fi.color_bitmap_cache = std::make_shared<BitmapCache>();
+    return *static_cast<BitmapCache*>(fi.color_bitmap_cache.get());
+}
+
+std::uint64_t bitmap_key(std::uint32_t glyph, FT_Int strike) {
+    return static_cast<std::uint64_t>(glyph) << 16 | static_cast<std::uint16_t>(strike);
+}
 
 // The decoded bitmap of `glyph` at `strike`, or null; kept in the Font.
 const StrikeBitmap* cached_bitmap(Font::Impl& fi, std::uint32_t glyph, FT_Int strike) {
-    auto* cache = static_cast<BitmapCache*>(fi.color_bitmap_cache.get());
-    if (!cache) {
-        auto made = std::make_shared<BitmapCache>();
-        cache = made.get();
-        fi.color_bitmap_cache = std::move(made);
+    BitmapCache& cache = bitmap_cache(fi);
+    const std::uint64_t key = bitmap_key(glyph, strike);
+    if (auto it = cache.bitmaps.find(key); it != cache.bitmaps.end())
+        return it->second.rgba.empty() ? nullptr : &it->second;
+    if (cache.bitmaps.size() >= kMaxCachedBitmaps) {
+        cache.bitmaps.clear();
+        for (VerticalPass& p : cache.passes) p = VerticalPass{};
     }
-    const std::uint64_t key = static_cast<std::uint64_t>(glyph) << 16 | static_cast<std::uint16_t>(strike);
-    if (auto it = cache->find(key); it != cache->end()) return it->second.rgba.empty() ? nullptr : &it->second;
-    if (cache->size() >= kMaxCachedBitmaps) cache->clear();
     StrikeBitmap bm;
     if (!load_strike_bitmap(fi, glyph, strike, bm)) bm = StrikeBitmap{};
-    const StrikeBitmap& stored = cache->emplace(key, std::move(bm)).first->second;
+    const StrikeBitmap& stored = cache.bitmaps.emplace(key, std::move(bm)).first->second;
     return stored.rgba.empty() ? nullptr : &stored;
 }
 
@@ -139,10 +167,6 @@ AxisWeights axis_weights(int d0, int n, double origin, double k, int src_count) 
     return w;
 }
 
-// Four channels of a pixel as one value: GCC and Clang compile its arithmetic to vector
-// instructions of the baseline instruction set, each lane as the scalar float operation.
-using Float4 = float __attribute__((vector_size(16)));
-
 // A non-negative sum of at most 255.x rounded half up to a byte, at most `limit`: x + 0.5 is exact
 // below 256 and truncation cannot change above it, so this is std::round clamped.
 std::uint8_t round_sum(float x, int limit) {
@@ -150,50 +174,58 @@ std::uint8_t round_sum(float x, int limit) {
     return static_cast<std::uint8_t>(r < limit ? r : limit);
 }
 
-// Draws a strike bitmap scaled by `k` (device pixels per strike pixel) with its top-left corner at
-// device point (x, y), averaging the strike's pixels over each device pixel: a horizontal pass into
-// one row of sums per strike row, then a vertical pass that adds whole weighted rows, the four
-// channels of a pixel at once, each sum taken in the order of its source pixels.
-void draw_scaled_bitmap(Canvas& canvas, const StrikeBitmap& bm, double k, double x, double y, double opacity) {
+// The vertical pass of `bm` (key `key`) at scale `k` whose top lies `phase` into its first device
+// row of `rows`, from the cache or computed into its oldest entry.
+const VerticalPass& vertical_pass(BitmapCache& cache, std::uint64_t key, const StrikeBitmap& bm, double k, double phase,
+                                  int rows) {
+    for (const VerticalPass& p : cache.passes)
+        if (p.bitmap == key && p.k == k && p.phase == phase && p.rows == rows) return p;
+    VerticalPass& p = cache.passes[cache.next_pass];
+    cache.next_pass = (cache.next_pass + 1) % kKeptPasses;
+    p = VerticalPass{key, k, phase, rows, {}};
+    const std::size_t width = static_cast<std::size_t>(bm.width);
+    p.sums.assign(static_cast<std::size_t>(rows) * width, Float4{0, 0, 0, 0});
+    const AxisWeights wy = axis_weights(0, rows, phase, k, bm.height);
+    for (std::size_t d = 0; d < static_cast<std::size_t>(rows); ++d) {
+        Float4* acc = p.sums.data() + d * width;
+        const std::uint8_t* src = bm.rgba.data() + static_cast<std::size_t>(wy.first[d]) * width * 4;
+        for (std::size_t j = wy.begin[d]; j < wy.begin[d + 1]; ++j) {
+            const float wj = wy.weights[j];
+            for (std::size_t i = 0; i < width; ++i, src += 4)
+                acc[i] += wj * Float4{static_cast<float>(src[0]), static_cast<float>(src[1]),
+                                      static_cast<float>(src[2]), static_cast<float>(src[3])};
+        }
+    }
+    return p;
+}
+
+// Draws a strike bitmap (key `key` in `cache`) scaled by `k` (device pixels per strike pixel) with
+// its top-left corner at device point (x, y), averaging the strike's pixels over each device
+// pixel: the vertical pass (shared by the glyph's instances on a line), then a horizontal pass per
+// instance, the four channels of a pixel at once.
+void draw_scaled_bitmap(Canvas& canvas, BitmapCache& cache, std::uint64_t key, const StrikeBitmap& bm, double k,
+                        double x, double y, double opacity) {
     // Scales and positions a malformed font can produce that no image could show.
     if (!(k >= 1e-4 && k <= 1e4) || !(std::abs(x) < 1e8 && std::abs(y) < 1e8)) return;
     const int dx0 = static_cast<int>(std::floor(x)), dy0 = static_cast<int>(std::floor(y));
     const int dx1 = static_cast<int>(std::ceil(x + bm.width * k)), dy1 = static_cast<int>(std::ceil(y + bm.height * k));
     const int w = dx1 - dx0, h = dy1 - dy0;
     if (w <= 0 || h <= 0 || w > 16384 || h > 16384) return;
-    const AxisWeights wx = axis_weights(dx0, w, x, k, bm.width), wy = axis_weights(dy0, h, y, k, bm.height);
-    const std::size_t row_pixels = static_cast<std::size_t>(w), src_pixels = static_cast<std::size_t>(bm.width);
-    std::unique_ptr<Float4[]> rows(new Float4[static_cast<std::size_t>(bm.height) * row_pixels]);
-    std::unique_ptr<Float4[]> src(new Float4[src_pixels]), acc(new Float4[row_pixels]);
-    for (int sy = 0; sy < bm.height; ++sy) {
-        const std::uint8_t* bytes = bm.rgba.data() + static_cast<std::size_t>(sy) * src_pixels * 4;
-        for (std::size_t i = 0; i < src_pixels; ++i, bytes += 4)
-            src[i] = Float4{static_cast<float>(bytes[0]), static_cast<float>(bytes[1]), static_cast<float>(bytes[2]),
-                            static_cast<float>(bytes[3])};
-        Float4* dst = rows.get() + static_cast<std::size_t>(sy) * row_pixels;
-        for (std::size_t d = 0; d < row_pixels; ++d) {
-            const Float4* s = src.get() + wx.first[d];
-            Float4 sum = {0, 0, 0, 0};
-            for (std::size_t j = wx.begin[d]; j < wx.begin[d + 1]; ++j, ++s) sum += wx.weights[j] * *s;
-            dst[d] = sum;
-        }
-    }
+    const VerticalPass& v = vertical_pass(cache, key, bm, k, y - dy0, h);
+    const AxisWeights wx = axis_weights(0, w, x - dx0, k, bm.width);
     auto image = std::make_shared<Pixmap>(w, h);
     for (int d = 0; d < h; ++d) {
-        const std::size_t b = wy.begin[static_cast<std::size_t>(d)], e = wy.begin[static_cast<std::size_t>(d) + 1];
-        std::fill_n(acc.get(), row_pixels, Float4{0, 0, 0, 0});
-        const Float4* r = rows.get() + static_cast<std::size_t>(wy.first[static_cast<std::size_t>(d)]) * row_pixels;
-        for (std::size_t j = b; j < e; ++j, r += row_pixels) {
-            const float wj = wy.weights[j];
-            for (std::size_t i = 0; i < row_pixels; ++i) acc[i] += wj * r[i];
-        }
-        // Overlaps are in device pixels: a fully covered device pixel sums to 1, so every sum is
-        // at most 255.x and at least 0; colour is kept at most alpha (premultiplied).
+        const Float4* row = v.sums.data() + static_cast<std::size_t>(d) * static_cast<std::size_t>(bm.width);
         std::uint8_t* out = image->row(d);
-        for (std::size_t i = 0; i < row_pixels; ++i, out += 4) {
-            const std::uint8_t a = round_sum(acc[i][3], 255);
+        for (std::size_t px = 0; px < static_cast<std::size_t>(w); ++px, out += 4) {
+            const Float4* s = row + wx.first[px];
+            Float4 sum = {0, 0, 0, 0};
+            for (std::size_t j = wx.begin[px]; j < wx.begin[px + 1]; ++j, ++s) sum += wx.weights[j] * *s;
+            // Overlaps are in device pixels: a fully covered device pixel sums to 1, so every sum
+            // is at most 255.x and at least 0; colour is kept at most alpha (premultiplied).
+            const std::uint8_t a = round_sum(sum[3], 255);
             out[3] = a;
-            for (int c = 0; c < 3; ++c) out[c] = round_sum(acc[i][c], a);
+            for (int c = 0; c < 3; ++c) out[c] = round_sum(sum[c], a);
         }
     }
     canvas.save();
@@ -209,13 +241,15 @@ void draw_bitmap_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, do
     const double device_size =
         size *
         (axis_aligned ? to_device.a : std::sqrt(std::abs(to_device.a * to_device.d - to_device.b * to_device.c)));
-    const StrikeBitmap* found = cached_bitmap(fi, glyph, pick_strike(fi.face, device_size));
+    const FT_Int strike = pick_strike(fi.face, device_size);
+    const StrikeBitmap* found = cached_bitmap(fi, glyph, strike);
     if (!found) return;
     const StrikeBitmap& bm = *found;
     if (axis_aligned) {
         const Point o = to_device.apply(origin);
         const double k = device_size / bm.ppem;
-        draw_scaled_bitmap(canvas, bm, k, o.x + bm.left * k, o.y - bm.top * k, opacity);
+        draw_scaled_bitmap(canvas, bitmap_cache(fi), bitmap_key(glyph, strike), bm, k, o.x + bm.left * k,
+                           o.y - bm.top * k, opacity);
         return;
     }
     Pixmap image(bm.width, bm.height);

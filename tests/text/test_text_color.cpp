@@ -140,6 +140,46 @@ TEST_CASE("COLR glyphs give the layout their ink box", "[text][color]") {
     CHECK(layout.ink.y1 == Approx(90));
 }
 
+TEST_CASE("Bitmap emoji: the scaling kept for a glyph's next instances draws what a fresh font draws",
+          "[text][color]") {
+    // One font draws the waving hand and the next glyph at origins sharing and not sharing where
+    // the bitmap's top falls within a pixel, at two sizes; each picture must equal the one a
+    // font loaded for that drawing alone makes.
+    const std::string path = GENERATE(kCbdtFont, kSbixFont);
+    INFO(path);
+    const Font shared = Font::load(path);
+    const std::uint32_t hand = shared.glyph_index(0x1f44b);
+    REQUIRE(hand != 0);
+    struct Draw {
+        double size;
+        Point origin;
+        std::uint32_t glyph;
+    };
+    const std::uint32_t other = hand + 1 < shared.glyph_count() ? hand + 1 : hand - 1;
+    const Draw draws[] = {{40, {3.25, 2}, hand},  {40, {10.5, 2}, hand},   {40, {3.25, 2.5}, hand},
+                          {40, {7.75, 2}, other}, {40, {3.25, 2.5}, hand}, {31, {3.25, 2}, hand},
+                          {40, {3.25, 3}, hand},  {40, {1, 2.25}, hand}};
+    auto draw = [](const Font& font, const Draw& d) {
+        TextStyle st;
+        st.size = d.size;
+        TextLayout layout = layout_text("\U0001F44B", font, st);
+        REQUIRE(layout.glyphs.size() == 1);
+        layout.glyphs[0].glyph = d.glyph;
+        Pixmap pm(64, 64);
+        Canvas canvas(pm);
+        draw_text(canvas, layout, d.origin, Paint::solid(Color::black()));
+        return pm;
+    };
+    for (const Draw& d : draws) {
+        INFO("size " << d.size << ", origin " << d.origin.x << ", " << d.origin.y << ", glyph " << d.glyph);
+        const Pixmap kept = draw(shared, d), fresh = draw(Font::load(path), d);
+        bool same = true;
+        for (int y = 0; y < 64 && same; ++y)
+            for (int x = 0; x < 64 && same; ++x) same = kept.pixel(x, y) == fresh.pixel(x, y);
+        CHECK(same);
+    }
+}
+
 TEST_CASE("CBDT and sbix emoji: drawn in colour, the font's bitmap averaged over each pixel", "[text][color]") {
     const std::string path = GENERATE(kCbdtFont, kSbixFont);
     INFO(path);
