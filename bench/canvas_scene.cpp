@@ -6,7 +6,8 @@
 // (a short string in DejaVu Sans at 10 to 30 px). Items are generated from a fixed seed, so both
 // libraries draw the same geometry. Reported: the median of the rounds' thread CPU time per part
 // (bench/timer.hpp), casteljau on one thread as Cairo. `--quick`: 200 items per part and one round
-// (the ctest smoke entry).
+// (the ctest smoke entry). `--only PART` times one part (fills, strokes, gradients, "clipped fills",
+// text), to profile it.
 // `--accuracy`: each part is also drawn by casteljau at 0.001 px (curves, strokes and glyph masks
 // flattened that finely, exact overlaps: the exact reference of the other benchmarks), and both
 // libraries' images at their defaults are compared with it: mean and max |difference| per
@@ -273,7 +274,7 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
     int per_part = 2000, rounds = 5;
-    std::string png_prefix;
+    std::string png_prefix, only;
     bool accuracy = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--quick")) {
@@ -285,8 +286,11 @@ int main(int argc, char** argv) {
             accuracy = true;
         else if (!std::strcmp(argv[i], "--png") && i + 1 < argc)
             png_prefix = argv[++i];
+        else if (!std::strcmp(argv[i], "--only") && i + 1 < argc)
+            only = argv[++i];
         else {
-            std::fprintf(stderr, "usage: canvas_scene [--quick] [--rounds N] [--accuracy] [--png PREFIX]\n");
+            std::fprintf(stderr,
+                         "usage: canvas_scene [--quick] [--rounds N] [--accuracy] [--png PREFIX] [--only PART]\n");
             return 2;
         }
     }
@@ -312,6 +316,7 @@ int main(int argc, char** argv) {
     std::printf("%-14s %12s %12s %8s\n", "part", "casteljau", "Cairo", "ratio");
     double total_c = 0, total_k = 0;
     for (int p = 0; p < kParts; ++p) {
+        if (!only.empty() && only != kPartNames[p]) continue;
         std::vector<double> tc, tk;
         for (int r = 0; r < rounds; ++r) {
             pm.fill(Color::white());
