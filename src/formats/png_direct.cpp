@@ -194,7 +194,8 @@ libdeflate_compressor* compressor_for(int level) {
     return slot.c;
 }
 
-// A zlib stream: the memory it was written into and how much of it is the stream.
+// A zlib stream deflated in one piece: the memory it was written into and how much of it is the
+// stream.
 struct Stream {
     struct Release {
         std::size_t capacity = 0;
@@ -228,15 +229,25 @@ Stream deflate_whole(const Pixmap& pixmap, int colour_type, std::size_t channels
 }
 
 // The zlib stream of the filtered rows through zlib, one row at a time, with libpng's parameters.
-Stream deflate_streaming(const Pixmap& pixmap, int colour_type, std::size_t channels, bool paeth, int level,
-                         std::size_t image_bytes) {
+std::vector<std::uint8_t> deflate_streaming(const Pixmap& pixmap, int colour_type, std::size_t channels, bool paeth,
+                                            int level, std::size_t image_bytes) {
     Deflater z(level, image_bytes, paeth);
     filter_rows(pixmap, colour_type, channels, paeth,
                 [&](const std::uint8_t* r, std::size_t n) { z.add(r, n, Z_NO_FLUSH); });
     z.add(nullptr, 0, Z_FINISH);
-    Stream out(z.stream.size());
-    out.size = z.stream.size();
-    std::copy(z.stream.begin(), z.stream.end(), out.bytes.get());
+    return std::move(z.stream);
+}
+
+// The PNG file of `stream` (`size` bytes, window field lowered for small images as libpng does).
+std::vector<std::uint8_t> png_file(int w, int h, int colour_type, std::uint8_t* stream, std::size_t size,
+                                   std::size_t image_bytes) {
+    optimize_window_field(stream, size, image_bytes);
+    std::vector<std::uint8_t> out;
+    out.reserve(256 + size + size / kChunkData * 12);
+    put_header(out, w, h, colour_type);
+    for (std::size_t at = 0; at < size; at += kChunkData)
+        put_chunk(out, "IDAT", stream + at, std::min(kChunkData, size - at));
+    put_chunk(out, "IEND", nullptr, 0);
     return out;
 }
 
@@ -252,17 +263,12 @@ std::vector<std::uint8_t> encode_png_direct(const Pixmap& pixmap, int colour_typ
     const std::size_t filtered_bytes = (row_bytes + 1) * static_cast<std::size_t>(h);
     const std::size_t image_bytes = row_bytes < 32768 && h < 32768 ? filtered_bytes : 0xffffffffu;
 
-    const Stream stream = filtered_bytes <= whole_limit
-                              ? deflate_whole(pixmap, colour_type, channels, paeth, level, filtered_bytes)
-                              : deflate_streaming(pixmap, colour_type, channels, paeth, level, image_bytes);
-    optimize_window_field(stream.bytes.get(), stream.size, image_bytes);
-    std::vector<std::uint8_t> out;
-    out.reserve(256 + stream.size + stream.size / kChunkData * 12);
-    put_header(out, w, h, colour_type);
-    for (std::size_t at = 0; at < stream.size; at += kChunkData)
-        put_chunk(out, "IDAT", stream.bytes.get() + at, std::min(kChunkData, stream.size - at));
-    put_chunk(out, "IEND", nullptr, 0);
-    return out;
+    if (filtered_bytes <= whole_limit) {
+        const Stream s = deflate_whole(pixmap, colour_type, channels, paeth, level, filtered_bytes);
+        return png_file(w, h, colour_type, s.bytes.get(), s.size, image_bytes);
+    }
+    std::vector<std::uint8_t> s = deflate_streaming(pixmap, colour_type, channels, paeth, level, image_bytes);
+    return png_file(w, h, colour_type, s.data(), s.size(), image_bytes);
 }
 
 }  // namespace casteljau::png_detail

@@ -13,9 +13,18 @@ namespace casteljau::map_detail {
 
 namespace {
 
-Rect united(const Rect& a, const Rect& b) {
-    if (!(b.x0 <= b.x1) || !(b.y0 <= b.y1)) return a;
-    return Rect{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+// Widens `bounds` by `q` (inline: called once per projected position).
+void widen(Rect& bounds, Point q) {
+    bounds =
+        Rect{std::min(bounds.x0, q.x), std::min(bounds.y0, q.y), std::max(bounds.x1, q.x), std::max(bounds.y1, q.y)};
+}
+
+// Whether a step of the line (or ring, `closed`) spans more than 180 degrees of longitude: the
+// renderer draws such a step across the antimeridian.
+bool crosses_antimeridian(std::span<const Point> line, bool closed) {
+    for (std::size_t k = 1; k < line.size(); ++k)
+        if (std::fabs(line[k].x - line[k - 1].x) > 180) return true;
+    return closed && line.size() > 1 && std::fabs(line.front().x - line.back().x) > 180;
 }
 
 bool less(Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
@@ -41,22 +50,19 @@ public:
         locked_.assign(m, 0);
         unprojected_.assign(m, 0);
         keep_.assign(m, 0);
-        bool crosses = false;
         for (std::size_t k = 0; k < m; ++k) {
             const Point p = pts[distinct_[k]];
             lonlat_[k] = p;
             Point q;
             if (proj_.project(p, q)) {
                 pixel_[k] = scale_.apply(q);
-                bounds = Rect{std::min(bounds.x0, q.x), std::min(bounds.y0, q.y), std::max(bounds.x1, q.x),
-                              std::max(bounds.y1, q.y)};
+                widen(bounds, q);
             } else {
                 locked_[k] = unprojected_[k] = 1;  // dropped by the renderer: its runs are kept whole
             }
             locked_[k] |= node[distinct_[k]];
-            if (k > 0 && std::fabs(p.x - lonlat_[k - 1].x) > 180) crosses = true;
         }
-        if (closed && m > 1 && std::fabs(lonlat_[0].x - lonlat_[m - 1].x) > 180) crosses = true;
+        const bool crosses = crosses_antimeridian(lonlat_, closed);
         if (m < 3)
             keep_.assign(m, 1);
         else if (closed)
@@ -73,9 +79,7 @@ public:
     void bound_points(std::span<const Point> pts, Rect& bounds) const {
         Point q;
         for (Point p : pts)
-            if (proj_.project(p, q))
-                bounds = Rect{std::min(bounds.x0, q.x), std::min(bounds.y0, q.y), std::max(bounds.x1, q.x),
-                              std::max(bounds.y1, q.y)};
+            if (proj_.project(p, q)) widen(bounds, q);
     }
 
 private:
@@ -224,29 +228,22 @@ SimplifiedMap bounds_only(const MapData& data, const MapProjection& proj, int th
         for (const Geometry& g : data.features[i].geometries) {
             std::uint32_t start = 0;
             const std::span<const Point> pts(g.points);
-            // A step of more than 180 degrees of longitude is drawn across the antimeridian.
-            for (std::uint32_t end : g.ring_ends) {
-                if (g.kind == GeometryKind::Points) break;
-                const std::span<const Point> line = pts.subspan(start, end - start);
-                for (std::size_t k = 1; k < line.size(); ++k)
-                    if (std::fabs(line[k].x - line[k - 1].x) > 180) crosses = true;
-                if (g.kind == GeometryKind::Polygons && line.size() > 1 &&
-                    std::fabs(line.front().x - line.back().x) > 180)
-                    crosses = true;
-                start = end;
-            }
+            if (g.kind != GeometryKind::Points)
+                for (std::uint32_t end : g.ring_ends) {
+                    crosses = crosses ||
+                              crosses_antimeridian(pts.subspan(start, end - start), g.kind == GeometryKind::Polygons);
+                    start = end;
+                }
             Point q;
             for (Point pt : g.points)
-                if (p.project(pt, q))
-                    bounds = Rect{std::min(bounds.x0, q.x), std::min(bounds.y0, q.y), std::max(bounds.x1, q.x),
-                                  std::max(bounds.y1, q.y)};
+                if (p.project(pt, q)) widen(bounds, q);
         }
         extents[i] = bounds;
         r.bounds[i] = crosses ? Rect{-INFINITY, -INFINITY, INFINITY, INFINITY} : bounds;
     });
     for (const Feature& f : data.features)
         for (const Geometry& g : f.geometries) r.positions += g.points.size();
-    for (const Rect& e : extents) r.extent = united(r.extent, e);
+    for (const Rect& e : extents) r.extent = r.extent.united(e);
     return r;
 }
 

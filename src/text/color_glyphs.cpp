@@ -137,8 +137,8 @@ const StrikeBitmap* cached_bitmap(Font::Impl& fi, std::uint32_t glyph, FT_Int st
     return stored.rgba.empty() ? nullptr : &stored;
 }
 
-// Weights of the source pixels under destination pixels [d0, d0 + n) of an axis on which source
-// pixel i covers [origin + i k, origin + (i + 1) k): for each destination pixel, the first source
+// Weights of the source pixels under destination pixels [0, n) of an axis on which source pixel i
+// covers [origin + i k, origin + (i + 1) k): for each destination pixel, the first source
 // pixel and the overlaps (in destination pixels) with it and the following ones, which are
 // weights[begin[d]] to weights[begin[d + 1]] (exclusive).
 struct AxisWeights {
@@ -146,12 +146,12 @@ struct AxisWeights {
     std::vector<std::size_t> begin;
     std::vector<float> weights;
 };
-AxisWeights axis_weights(int d0, int n, double origin, double k, int src_count) {
+AxisWeights axis_weights(int n, double origin, double k, int src_count) {
     AxisWeights w;
     w.first.resize(static_cast<std::size_t>(n));
     w.begin.resize(static_cast<std::size_t>(n) + 1);
     for (int d = 0; d < n; ++d) {
-        const double lo = d0 + d, hi = lo + 1;
+        const double lo = d, hi = lo + 1;
         // Clamped as doubles: a malformed strike can make the quotients far beyond int.
         const double count = src_count;
         const int i0 = static_cast<int>(std::clamp(std::floor((lo - origin) / k), 0.0, count));
@@ -185,7 +185,7 @@ const VerticalPass& vertical_pass(BitmapCache& cache, std::uint64_t key, const S
     p = VerticalPass{key, k, phase, rows, {}};
     const std::size_t width = static_cast<std::size_t>(bm.width);
     p.sums.assign(static_cast<std::size_t>(rows) * width, Float4{0, 0, 0, 0});
-    const AxisWeights wy = axis_weights(0, rows, phase, k, bm.height);
+    const AxisWeights wy = axis_weights(rows, phase, k, bm.height);
     for (std::size_t d = 0; d < static_cast<std::size_t>(rows); ++d) {
         Float4* acc = p.sums.data() + d * width;
         const std::uint8_t* src = bm.rgba.data() + static_cast<std::size_t>(wy.first[d]) * width * 4;
@@ -212,11 +212,11 @@ void draw_scaled_bitmap(Canvas& canvas, BitmapCache& cache, std::uint64_t key, c
     const int w = dx1 - dx0, h = dy1 - dy0;
     if (w <= 0 || h <= 0 || w > 16384 || h > 16384) return;
     const VerticalPass& v = vertical_pass(cache, key, bm, k, y - dy0, h);
-    const AxisWeights wx = axis_weights(0, w, x - dx0, k, bm.width);
-    auto image = std::make_shared<Pixmap>(w, h);
+    const AxisWeights wx = axis_weights(w, x - dx0, k, bm.width);
+    Pixmap image(w, h);
     for (int d = 0; d < h; ++d) {
         const Float4* row = v.sums.data() + static_cast<std::size_t>(d) * static_cast<std::size_t>(bm.width);
-        std::uint8_t* out = image->row(d);
+        std::uint8_t* out = image.row(d);
         for (std::size_t px = 0; px < static_cast<std::size_t>(w); ++px, out += 4) {
             const Float4* s = row + wx.first[px];
             Float4 sum = {0, 0, 0, 0};
@@ -230,7 +230,7 @@ void draw_scaled_bitmap(Canvas& canvas, BitmapCache& cache, std::uint64_t key, c
     }
     canvas.save();
     canvas.reset_transform();
-    canvas.draw_image(*image, Affine::translate(dx0, dy0), ImageSampling::Nearest, opacity);
+    canvas.draw_image(image, Affine::translate(dx0, dy0), ImageSampling::Nearest, opacity);
     canvas.restore();
 }
 
