@@ -64,6 +64,9 @@ public:
         step_ = std::max(4 * std::asin(std::sqrt(ratio / 2)), 2 * kPi / kMaxArcStepsPerTurn);
         step_ = std::min(step_, kPi / 2);
         sin_step_ = std::sin(step_);
+        // 1 + cos(turn) >= 2 (h / (h + tol))^2  <=>  h / cos(turn / 2) - h <= tol.
+        const double c = h_ / (h_ + tol);
+        smooth_corner_min_ = 2 * c * c - 1;
     }
 
     void contour(std::span<const Point> pts, std::span<const std::uint8_t> smooth, bool closed, Point dir_hint,
@@ -291,17 +294,25 @@ private:
             smooth && len1 < h_ && len2 < h_ && h_ - longer > tol_ && (dt <= 0 || sn * (h_ - tol_) >= 0.999 * longer);
         const double angle = within_step && !wedge_possible ? 0.0 : std::atan2(sn, dt);
 
-        outer.push_back(v + n1 * h_);
-        // Where the path is smooth there is no corner to join: the pen's normal turns with the curve.
-        switch (smooth ? LineJoin::Round : st_.join) {
-            case LineJoin::Bevel: break;
-            case LineJoin::Round:
-                if (!within_step) arc(outer, v, n1, -s * angle);
-                break;
-            case LineJoin::Miter:
-            case LineJoin::MiterClip: miter(outer, v, d1, d2, n1, n2, dt); break;
+        if (smooth && dt > 0 && dt >= smooth_corner_min_) {
+            // A gentle turn inside a curve: the corner where the two offset lines meet lies within
+            // the tolerance of the circle the normal sweeps (h / cos(turn / 2) from v), so one
+            // point stands for the sector, as the chords stand for the curve.
+            outer.push_back(v + (n1 + n2) * (h_ / (1 + dt)));
+        } else {
+            outer.push_back(v + n1 * h_);
+            // Where the path is smooth there is no corner to join: the pen's normal turns with the
+            // curve.
+            switch (smooth ? LineJoin::Round : st_.join) {
+                case LineJoin::Bevel: break;
+                case LineJoin::Round:
+                    if (!within_step) arc(outer, v, n1, -s * angle);
+                    break;
+                case LineJoin::Miter:
+                case LineJoin::MiterClip: miter(outer, v, d1, d2, n1, n2, dt); break;
+            }
+            outer.push_back(v + n2 * h_);
         }
-        outer.push_back(v + n2 * h_);
 
         if (1 + dt > 1e-9) {
             const double need = h_ * std::max(sn / (1 + dt), sn);
@@ -535,6 +546,7 @@ private:
     double tol_ = 0;
     double step_ = kPi / 2;
     double sin_step_ = 1;
+    double smooth_corner_min_ = 1;  // cosine of the largest smooth turn drawn as one outer corner
     std::size_t total_ = 0;
     const std::size_t max_points_ = current_limits().path_points;
     std::vector<Point> q_, left_, right_;
