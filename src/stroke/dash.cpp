@@ -136,7 +136,7 @@ struct Dasher {
         for (std::size_t i = 0; i < nseg; ++i) {
             const std::size_t j = (i + 1) % q.size();
             const Point a = q[i], b = q[j];
-            const double chord = distance(a, b);
+            const double chord = length_of(b - a);
             if (!(chord > 0)) continue;
             dir = (b - a) / chord;
             const double len = chord * arc_factor(turns, i);
@@ -208,8 +208,8 @@ void dash_polyline(const FlatContours& flat, std::span<const double> pattern, do
     for (std::size_t c = 0; c < in.contour_count(); ++c) {
         const std::size_t end = in.contour_ends[c];
         double len = 0;
-        for (std::size_t i = start + 1; i < end; ++i) len += distance(in.points[i - 1], in.points[i]);
-        if (in.closed[c] && end > start) len += distance(in.points[end - 1], in.points[start]);
+        for (std::size_t i = start + 1; i < end; ++i) len += length_of(in.points[i] - in.points[i - 1]);
+        if (in.closed[c] && end > start) len += length_of(in.points[start] - in.points[end - 1]);
         periods += len / total + 1;
         start = end;
     }

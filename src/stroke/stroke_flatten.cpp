@@ -37,7 +37,7 @@ struct SmoothSink {
 // The unit vector of the first of `vs` longer than `near`, or (0, 0).
 Vec first_direction(double near, std::initializer_list<Vec> vs) {
     for (Vec v : vs) {
-        const double l = v.length();
+        const double l = length_of(v);
         if (l > near && std::isfinite(l)) return v / l;
     }
     return {0, 0};

@@ -54,7 +54,7 @@ struct OpenEnd {
 // A chord shorter than `tol` gives no reliable direction: tight too.
 OpenEnd open_end(Point e, Point q, Vec t, double h, double tol) {
     const Vec v = q - e;
-    const double len = v.length();
+    const double len = length_of(v);
     if (!(len >= tol)) return {e, {0, 0}};
     const Vec d = v / len;
     if (t == Vec{0, 0}) return {e, -d};
@@ -88,8 +88,8 @@ void interior_capsules(const FlatContours& flat, const StrokeStyle& style, doubl
             if (corner) continue;
         }
         double length = 0;
-        for (std::size_t i = 1; i < pts.size() && length < style.width; ++i) length += distance(pts[i - 1], pts[i]);
-        if (closed) length += distance(pts.back(), pts.front());
+        for (std::size_t i = 1; i < pts.size() && length < style.width; ++i) length += length_of(pts[i] - pts[i - 1]);
+        if (closed) length += length_of(pts.front() - pts.back());
         if (!(length >= style.width)) continue;
         OpenEnd ends[2];
         if (!closed) {

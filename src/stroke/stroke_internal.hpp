@@ -6,6 +6,7 @@
 // direction hint, used for the caps of zero-length dashes.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -15,6 +16,14 @@
 #include "casteljau/stroke.hpp"
 
 namespace casteljau::stroke_detail {
+
+// |v|: the square root of the sum of squares where that is exact enough (no overflow or
+// underflow), std::hypot's careful scaling otherwise. hypot is several times slower, and the
+// stroker takes a length for every segment it meets.
+inline double length_of(Vec v) {
+    const double s = v.x * v.x + v.y * v.y;
+    return s > 1e-280 && s < 1e280 ? std::sqrt(s) : std::hypot(v.x, v.y);
+}
 
 // A flattened path with what the stroker needs to know about the curve behind it.
 //   smooth: per point, whether the path turns continuously there (a point inside a curve, or where
