@@ -13,10 +13,9 @@
 //     chord's rectangle cut along L; behind L the sweep from the chord's direction to the path's
 //     covers what lies within h of E) and, at a tight end (the path turning by a right angle or
 //     more within its first chord, or on a radius under h), in a triangle within 2h of E. So a
-//     segment keeps its whole capsule when it is at least 4h from E (every p is then more than
-//     4h - r > 2h from E, and nearer s than E, so q is not E) or when the capsule lies wholly
-//     behind L; else, at an end that is not tight, its capsule is cut by L (moved back by the
-//     tolerance); at a tight end it is dropped.
+//     segment's capsule is cut where it could reach those places (OpenEnd below): by L, or by a
+//     line that keeps it out of the disc around E that holds them; at a tight end, capsules
+//     within 4h of E are dropped.
 // The outline is short of this ideal by the flattening of round arcs (chords within the
 // tolerance) and the swept wedges it leaves out when they reach less than the tolerance: radius
 // h - 3 tol keeps clear of both. Under m the capsule's image holds the capsule of radius
@@ -29,21 +28,45 @@
 namespace casteljau::stroke_detail {
 namespace {
 
-// What an open end does to a segment's capsule: nothing when the segment lies at least `away` (4h)
-// from the end or the capsule lies wholly behind the line through the end square to `out` (the
-// path's outward unit direction there) by `behind`; else, unless the end is tight (`out` zero),
-// the capsule is cut by that line moved `margin` behind; at a tight end it is dropped.
+// What an open end E does to a segment's capsule. At an end that is not tight, the outline differs
+// from the ideal only beyond the line L through E square to the path's direction `out` (pointing
+// out of the path), and only within `reach` of E: the cap (within h sqrt 2), the sector the normal
+// sweeps from the chord's direction to the path's, and the part of the first chord's rectangle cut
+// along L (within sqrt(h^2 + c^2) of E, c = h tan(a) the cut's reach along the chord, a the angle
+// between chord and path). A point p of a capsule (radius r < h) of a segment s whose nearest point
+// on the path is not E lies in a rectangle or a round sector the outline holds, so only p beyond L
+// and within `reach` of E can be missing. Two cuts exclude that region: L itself (moved back by the
+// tolerance), or, for a segment farther than `reach` from E, the line square to the direction from
+// E to the segment's nearest point at distance `reach` from E, which keeps the whole segment. The
+// capsule takes whichever keeps it deeper, and no cut at all when it lies wholly behind L or at
+// least `reach` + r from E. At a tight end (`out` zero) the outline may lack a triangle within 2h
+// of E, and the capsules of segments within 4h of E are dropped.
 struct OpenEnd {
     Point at;
     Vec out;
+    double reach = 0;
     enum Effect { Keep, Cut, Drop };
-    Effect effect(Point a, Point b, double behind, double away) const {
+    // The cut to apply (Cut), or none.
+    Effect effect(Point a, Point b, double r, double tol, double h, HalfPlane& cut) const {
         const bool has_line = out != Vec{0, 0};
-        if (has_line && std::max((a - at).dot(out), (b - at).dot(out)) <= -behind) return Keep;
-        if (distance_squared_to_segment(at, a, b) >= away * away) return Keep;
-        return has_line ? Cut : Drop;
+        const double behind_a = -(a - at).dot(out), behind_b = -(b - at).dot(out);
+        if (has_line && std::min(behind_a, behind_b) >= r + tol) return Keep;
+        const Vec ab = b - a;
+        const double len2 = ab.dot(ab);
+        const double t = len2 > 0 ? std::clamp((at - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+        const Vec to = a + ab * t - at;
+        const double dist = length_of(to);
+        if (!has_line) return dist >= 4 * h ? Keep : Drop;
+        if (dist >= reach + r) return Keep;
+        const double line_depth = std::min(behind_a, behind_b) - tol;
+        if (dist > reach && dist - reach > line_depth) {
+            const Vec u = to / dist;
+            cut = {at + u * reach, -u};
+        } else {
+            cut = {at - out * tol, out};
+        }
+        return Cut;
     }
-    HalfPlane line(double margin) const { return {at - out * margin, out}; }
 };
 
 // The end at `e`, whose first chord goes to `q` (the first point apart from it), the path leaving
@@ -57,11 +80,22 @@ OpenEnd open_end(Point e, Point q, Vec t, double h, double tol) {
     const double len = length_of(v);
     if (!(len >= tol)) return {e, {0, 0}};
     const Vec d = v / len;
-    if (t == Vec{0, 0}) return {e, -d};
+    // Caps reach h sqrt 2 from e (square), h (round); 2h bounds both with room to spare.
+    const double cap_reach = 2 * h + tol;
+    if (t == Vec{0, 0}) return {e, -d, cap_reach};
     const double cr = std::abs(t.cross(d)), dt = t.dot(d);
-    if (cr == 0 && dt > 0) return {e, -t};
+    if (cr == 0 && dt > 0) return {e, -t, cap_reach};
     if (dt <= 0 || len < 2 * cr * h) return {e, {0, 0}};
-    return {e, -t};
+    const double c = h * cr / dt;  // the reach of the rectangle's cut along the chord
+    return {e, -t, std::max(cap_reach, std::sqrt(h * h + c * c) + tol)};
+}
+
+// A half-plane of user space as a half-plane of pixel space under m.
+HalfPlane to_pixels(const HalfPlane& hp, const Affine& m) {
+    const Vec along = m.apply_vector(Vec{-hp.out.y, hp.out.x});
+    Vec n{along.y, -along.x};
+    if (n.dot(m.apply_vector(hp.out)) < 0) n = -n;
+    return {m.apply(hp.at), n};
 }
 
 }  // namespace
@@ -105,16 +139,10 @@ void interior_capsules(const FlatContours& flat, const StrokeStyle& style, doubl
             CutCapsule cc(Capsule{m.apply(a), m.apply(b), r * scale});
             bool keep = true;
             for (int k = 0; k < (closed ? 0 : 2) && keep; ++k) {
-                const OpenEnd::Effect e = ends[k].effect(a, b, r + tol, 4 * h);
+                HalfPlane cut;
+                const OpenEnd::Effect e = ends[k].effect(a, b, r, tol, h, cut);
                 keep = e != OpenEnd::Drop;
-                if (e == OpenEnd::Cut) {
-                    // The cut in pixel space: the line's image, `out` turned into its normal there.
-                    const HalfPlane hp = ends[k].line(tol);
-                    const Vec along = m.apply_vector(Vec{-hp.out.y, hp.out.x});
-                    Vec n{along.y, -along.x};
-                    if (n.dot(m.apply_vector(hp.out)) < 0) n = -n;
-                    cc.cuts[cc.cut_count++] = {m.apply(hp.at), n};
-                }
+                if (e == OpenEnd::Cut) cc.cuts[cc.cut_count++] = to_pixels(cut, m);
             }
             if (keep) out.push_back(cc);
         }

@@ -76,6 +76,46 @@ TEST_CASE("stroke_outline: interior capsules leave every pixel of random strokes
     CHECK(inside * 10 > exact);
 }
 
+TEST_CASE("stroke_outline: interior capsules of short crowded strokes leave every pixel unchanged",
+          "[stroke][interior]") {
+    // Short polylines and curves in a small box under wide pens: every part of the path lies near
+    // an end, where the capsules are cut or dropped.
+    std::mt19937 rng(20261129);
+    std::uniform_real_distribution<double> u(0, 1);
+    Rasterizer raster;
+    std::size_t inside = 0;
+    for (int i = 0; i < 600; ++i) {
+        auto pt = [&] { return Point{20 + 16 * u(rng), 20 + 16 * u(rng)}; };
+        Path path;
+        path.move_to(pt());
+        const int n = 2 + static_cast<int>(rng() % 7);
+        for (int j = 0; j < n; ++j) {
+            if (rng() % 3 == 0)
+                path.cubic_to(pt(), pt(), pt());
+            else
+                path.line_to(pt());
+        }
+        StrokeStyle st;
+        st.width = 1.5 + 14 * u(rng);
+        st.join = LineJoin::Round;
+        st.cap = static_cast<LineCap>(rng() % 3);
+        if (rng() % 4 == 0) st.dashes = {3 + 10 * u(rng), 1 + 4 * u(rng)};
+        const double tol = rng() % 2 ? 0.015 : 0.2;
+        const StrokeOutline s = stroke_outline(path, st, Affine{}, tol);
+        FillOptions plain;
+        plain.tolerance = tol;
+        FillOptions hinted = plain;
+        hinted.inside = s.inside;
+        const Mask a = raster.fill_mask(s.outline, Affine{}, plain);
+        const Mask b = raster.fill_mask(s.outline, Affine{}, hinted);
+        inside += raster.last_stats().inside_cells;
+        INFO("case " << i << ": width " << st.width << ", cap " << int(st.cap));
+        REQUIRE(a.bounds == b.bounds);
+        REQUIRE(a.data == b.data);
+    }
+    CHECK(inside > 1000);
+}
+
 TEST_CASE("stroke_outline: the capsules of an open polyline are cut at its ends", "[stroke][interior]") {
     Path p = open_square();
     StrokeStyle st;
@@ -114,6 +154,48 @@ TEST_CASE("stroke_outline: the capsules of an open polyline are cut at its ends"
     st.join = LineJoin::Round;
     p.close();
     CHECK(stroke_outline(p, st, Affine{}, 0.05).inside.size() == 4);
+}
+
+TEST_CASE("stroke_outline: a segment that comes back near an open end is cut only where the end may matter",
+          "[stroke][interior]") {
+    // Out along y = 0 from the start E = (0, 0), up, and back along y = c past E: what the start
+    // draws differs from the ideal only within 2h of E, beyond the line x = 0.
+    StrokeStyle st;
+    st.width = 8;  // h = 4, capsule radius r = 4 - 3 x 0.05 = 3.85
+    st.join = LineJoin::Round;
+    auto back_at = [&](double c) {
+        Path p;
+        p.move_to(0, 0);
+        p.line_to(40, 0);
+        p.line_to(40, c);
+        p.line_to(-30, c);
+        return stroke_outline(p, st, Affine{}, 0.05);
+    };
+    // 12 from E, at least 2h + r away: whole but for its own end's line x = -30.
+    const StrokeOutline far = back_at(12);
+    REQUIRE(far.inside.size() == 3);
+    CHECK(far.inside[2].cut_count == 1);
+    CHECK(far.inside[2].contains({-10, 12}));
+    CHECK(far.inside[2].contains({-10, 15.8}));
+    // 10 from E: cut by the line y = 2h + tol, square to the way from E to the segment, which
+    // keeps the whole segment (the line x = 0 would keep none of it beyond E).
+    const StrokeOutline near = back_at(10);
+    REQUIRE(near.inside.size() == 3);
+    REQUIRE(near.inside[2].cut_count == 2);
+    CHECK(near.inside[2].contains({-10, 10}));
+    CHECK(near.inside[2].contains({-10, 8.1}));
+    CHECK_FALSE(near.inside[2].contains({-10, 8}));
+    CHECK_FALSE(near.inside[2].contains({-10, 7}));
+    // Both give the pixels of the plain fill.
+    Rasterizer raster;
+    for (const StrokeOutline* s : {&far, &near}) {
+        FillOptions hinted;
+        hinted.inside = s->inside;
+        const Mask a = raster.fill_mask(s->outline, Affine{});
+        const Mask b = raster.fill_mask(s->outline, Affine{}, hinted);
+        REQUIRE(a.bounds == b.bounds);
+        CHECK(a.data == b.data);
+    }
 }
 
 TEST_CASE("stroke_outline: no capsules for pens too thin to hold a pixel or contours of no length",
