@@ -153,6 +153,7 @@ private:
     Rasterizer raster_;
     std::vector<std::uint8_t> scratch_;   // shader colours of one row
     std::vector<std::uint8_t> coverage_;  // coverage x clip of one row
+    StrokeOutline stroke_;                // the outline of the stroke being drawn
 };
 
 }  // namespace casteljau

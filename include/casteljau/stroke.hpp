@@ -97,6 +97,9 @@ struct StrokeOutline {
     std::vector<CutCapsule> inside;
 };
 StrokeOutline stroke_outline(const Path& path, const StrokeStyle& style, const Affine& m = {}, double tolerance = 0.05);
+// The same into `out`, whose lists keep their memory: for a caller that strokes many paths in turn
+// (a canvas). On an exception `out` holds no outline.
+void stroke_outline(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance, StrokeOutline& out);
 
 // The distance, in the path's units, under which stroke(path, style, m, tolerance) merges a
 // point into the one before it (their direction would be noise): 1/1000 of the user-space

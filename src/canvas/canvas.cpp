@@ -177,9 +177,17 @@ void Canvas::stroke_path(const Path& path, const StrokeStyle& style, const Paint
     if (state_.clip.empty() || path.empty()) return;
     FillOptions opts = options;
     opts.rule = FillRule::NonZero;
-    const StrokeOutline s = stroke_outline(path, style, state_.transform, options.tolerance);
-    opts.inside = s.inside;
-    fill_path(s.outline, paint, opts);
+    // The outline goes into a list the canvas keeps, unless it grew past kKeptStrokePoints.
+    constexpr std::size_t kKeptStrokePoints = std::size_t(1) << 18;
+    struct Release {
+        StrokeOutline& s;
+        ~Release() {
+            if (s.outline.points().size() > kKeptStrokePoints) s = StrokeOutline{};
+        }
+    } release{stroke_};
+    stroke_outline(path, style, state_.transform, options.tolerance, stroke_);
+    opts.inside = stroke_.inside;
+    fill_path(stroke_.outline, paint, opts);
 }
 
 void Canvas::fill_mask(const Mask& mask, const Paint& paint) { fill_mask(mask, 0, 0, paint); }

@@ -53,10 +53,33 @@ constexpr double kMaxArcStepsPerTurn = 65536;
 
 Vec perp(Vec d) { return {-d.y, d.x}; }  // "left" of d (counter-clockwise when y points up)
 
+// The outliner's working lists, kept from one stroke to the next by the thread that draws them.
+struct OutlineBuffers {
+    std::vector<Point> q, left, right, wedges, piece;
+    std::vector<std::size_t> wedge_ends;
+    std::vector<std::uint8_t> smooth;
+    std::vector<Vec> dir;
+    std::vector<double> len;
+};
+
 class Outliner {
 public:
-    Outliner(const StrokeStyle& st, double tol, Path& out)
-        : st_(st), h_(st.width / 2), out_(out), miter_limit_(std::max(1.0, st.miter_limit)) {
+    Outliner(const StrokeStyle& st, double tol, Path& out, OutlineBuffers& b)
+        : st_(st),
+          h_(st.width / 2),
+          out_(out),
+          miter_limit_(std::max(1.0, st.miter_limit)),
+          q_(b.q),
+          left_(b.left),
+          right_(b.right),
+          wedges_(b.wedges),
+          piece_(b.piece),
+          wedge_ends_(b.wedge_ends),
+          smooth_(b.smooth),
+          dir_(b.dir),
+          len_(b.len) {
+        wedges_.clear();
+        wedge_ends_.clear();
         // Drop points closer than this to their predecessor: their direction is noise.
         eps_ = tol * kMergeFactor;
         tol_ = tol;
@@ -549,12 +572,12 @@ private:
     double smooth_corner_min_ = 1;  // cosine of the largest smooth turn drawn as one outer corner
     std::size_t total_ = 0;
     const std::size_t max_points_ = current_limits().path_points;
-    std::vector<Point> q_, left_, right_;
-    std::vector<Point> wedges_, piece_;    // swept wedge pieces of the contour, one after another
-    std::vector<std::size_t> wedge_ends_;  // where each ends in wedges_
-    std::vector<std::uint8_t> smooth_;     // per point of q_: the path is smooth there
-    std::vector<Vec> dir_;
-    std::vector<double> len_;
+    std::vector<Point>&q_, &left_, &right_;
+    std::vector<Point>&wedges_, &piece_;    // swept wedge pieces of the contour, one after another
+    std::vector<std::size_t>& wedge_ends_;  // where each ends in wedges_
+    std::vector<std::uint8_t>& smooth_;     // per point of q_: the path is smooth there
+    std::vector<Vec>& dir_;
+    std::vector<double>& len_;
     bool closed_ = false;
     // How far the inner side is cut short along segment 0: by the shortcut at vertex 0 (closed
     // contours) or by the start's cut (open ones); and along the outgoing segment of the last join.
@@ -581,9 +604,49 @@ void check_finite(const Path& path) {
     if (!path.is_finite()) throw Error(ErrorKind::InvalidData, "stroke: path has a non-finite coordinate");
 }
 
+// What one thread's strokes work in: lists that keep their memory from one stroke to the next,
+// unless a stroke made them larger than kKeptPoints points.
+struct StrokeScratch {
+    FlatContours flat, dashed;
+    std::vector<Point> dirs;
+    OutlineBuffers outline;
+};
+constexpr std::size_t kKeptPoints = std::size_t(1) << 18;
+
+StrokeScratch& scratch() {
+    thread_local StrokeScratch s;
+    return s;
+}
+
+// Frees the scratch lists that grew past kKeptPoints.
+void trim(StrokeScratch& s) {
+    auto trim_one = [](auto& v) {
+        if (v.capacity() > kKeptPoints) std::remove_reference_t<decltype(v)>().swap(v);
+    };
+    for (FlatContours* f : {&s.flat, &s.dashed}) {
+        trim_one(f->poly.points);
+        trim_one(f->smooth);
+        trim_one(f->head);
+        trim_one(f->tail);
+        trim_one(f->poly.contour_ends);
+        trim_one(f->poly.closed);
+    }
+    trim_one(s.dirs);
+    OutlineBuffers& b = s.outline;
+    trim_one(b.q);
+    trim_one(b.left);
+    trim_one(b.right);
+    trim_one(b.wedges);
+    trim_one(b.piece);
+    trim_one(b.wedge_ends);
+    trim_one(b.smooth);
+    trim_one(b.dir);
+    trim_one(b.len);
+}
+
 void stroke_polyline(const FlatContours& flat, std::span<const Point> dirs, const StrokeStyle& style, double tol,
                      Path& out) {
-    Outliner o(style, tol, out);
+    Outliner o(style, tol, out, scratch().outline);
     const Polyline& poly = flat.poly;
     std::size_t start = 0;
     for (std::size_t c = 0; c < poly.contour_count(); ++c) {
@@ -606,43 +669,61 @@ double stroke_merge_distance(const Affine& m, double tolerance) {
 
 namespace {
 
-// stroke() and stroke_outline(): the outline, and the capsules inside it when `inside` is given.
-Path stroke_with(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance,
+// stroke() and stroke_outline(): the outline into `out` (cleared first), and the capsules inside it
+// into `inside` (cleared first) when it is given.
+void stroke_with(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance, Path& out,
                  std::vector<CutCapsule>* inside) {
     using namespace stroke_detail;
+    out.clear();
+    if (inside) inside->clear();
     const double tol = user_tolerance(m, tolerance);
     check_finite(path);
     if (!std::isfinite(style.width) || !std::isfinite(style.miter_limit) || !std::isfinite(style.dash_offset))
         throw Error(ErrorKind::InvalidData, "stroke: width, miter limit and dash offset must be finite");
     const std::vector<double> pattern = effective_pattern(style.dashes);
-    Path out;
-    if (!(style.width > 0) || path.empty()) return out;
+    if (!(style.width > 0) || path.empty()) return;
 
-    FlatContours flat;
+    StrokeScratch& sc = scratch();
+    struct Trim {
+        StrokeScratch& s;
+        ~Trim() { trim(s); }
+    } trim_after{sc};
+    FlatContours& flat = sc.flat;
     flatten_for_stroke(path, tol, tangent_resolution(style.width, tol), flat);
     if (pattern.empty()) {
         stroke_polyline(flat, {}, style, tol, out);
         if (inside) interior_capsules(flat, style, tol, m, *inside);
     } else {
-        FlatContours dashed;
-        std::vector<Point> dirs;
+        FlatContours& dashed = sc.dashed;
+        std::vector<Point>& dirs = sc.dirs;
         dash_polyline(flat, pattern, style.dash_offset, dashed, dirs);
         stroke_polyline(dashed, dirs, style, tol, out);
         if (inside) interior_capsules(dashed, style, tol, m, *inside);
     }
-    return out;
 }
 
 }  // namespace
 
 Path stroke(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance) {
-    return stroke_with(path, style, m, tolerance, nullptr);
+    Path out;
+    stroke_with(path, style, m, tolerance, out, nullptr);
+    return out;
 }
 
 StrokeOutline stroke_outline(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance) {
     StrokeOutline o;
-    o.outline = stroke_with(path, style, m, tolerance, &o.inside);
+    stroke_with(path, style, m, tolerance, o.outline, &o.inside);
     return o;
+}
+
+void stroke_outline(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance, StrokeOutline& out) {
+    try {
+        stroke_with(path, style, m, tolerance, out.outline, &out.inside);
+    } catch (...) {
+        out.outline.clear();
+        out.inside.clear();
+        throw;
+    }
 }
 
 Path dash(const Path& path, std::span<const double> dashes, double offset, const Affine& m, double tolerance) {

@@ -3,8 +3,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <random>
+#include <thread>
 
+#include "casteljau/error.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/raster.hpp"
 #include "casteljau/stroke.hpp"
 
@@ -216,4 +220,71 @@ TEST_CASE("stroke_outline: no capsules for pens too thin to hold a pixel or cont
     dot.close();
     st.width = 20;
     CHECK(stroke_outline(dot, st, Affine{}, 0.05).inside.empty());
+}
+
+TEST_CASE("stroke_outline into a kept outline gives what a fresh one gives, stroke after stroke",
+          "[stroke][interior]") {
+    std::mt19937 rng(77);
+    std::uniform_real_distribution<double> u(0, 1);
+    StrokeOutline kept;
+    for (int i = 0; i < 60; ++i) {
+        const Path path = random_path(rng);
+        StrokeStyle st;
+        st.width = 0.5 + 20 * u(rng);
+        st.join = rng() % 2 ? LineJoin::Round : LineJoin::Bevel;
+        if (rng() % 3 == 0) st.dashes = {4 + 10 * u(rng), 2 + 5 * u(rng)};
+        stroke_outline(path, st, Affine{}, 0.05, kept);
+        const StrokeOutline fresh = stroke_outline(path, st, Affine{}, 0.05);
+        REQUIRE(kept.outline == fresh.outline);
+        REQUIRE(kept.inside.size() == fresh.inside.size());
+        for (std::size_t k = 0; k < fresh.inside.size(); ++k) {
+            CHECK(kept.inside[k].capsule.a == fresh.inside[k].capsule.a);
+            CHECK(kept.inside[k].capsule.b == fresh.inside[k].capsule.b);
+            CHECK(kept.inside[k].cut_count == fresh.inside[k].cut_count);
+        }
+    }
+    // A stroke that fails, at once or halfway through its outline, leaves no outline behind.
+    Path bad;
+    bad.move_to(0, 0);
+    bad.line_to(std::numeric_limits<double>::infinity(), 1);
+    CHECK_THROWS_AS(stroke_outline(bad, StrokeStyle{}, Affine{}, 0.05, kept), Error);
+    CHECK(kept.outline.empty());
+    CHECK(kept.inside.empty());
+    Path two;  // two contours: the first is emitted before the second passes the limit
+    two.add_circle({50, 50}, 20);
+    two.add_circle({150, 50}, 20);
+    StrokeStyle round;
+    round.width = 10;
+    round.join = LineJoin::Round;
+    const std::size_t one = stroke(Path().add_circle({50, 50}, 20), round, Affine{}, 0.05).points().size();
+    Limits small = current_limits();
+    small.path_points = one + 20;
+    set_limits(small);
+    CHECK_THROWS_AS(stroke_outline(two, round, Affine{}, 0.05, kept), Error);
+    reset_limits();
+    CHECK(kept.outline.empty());
+    CHECK(kept.inside.empty());
+}
+
+TEST_CASE("stroke: two threads stroking at once get the outlines one thread gets", "[stroke][interior]") {
+    std::vector<Path> paths;
+    std::mt19937 rng(78);
+    for (int i = 0; i < 40; ++i) paths.push_back(random_path(rng));
+    StrokeStyle st;
+    st.width = 6;
+    st.join = LineJoin::Round;
+    st.dashes = {9, 4};
+    std::vector<Path> alone;
+    for (const Path& p : paths) alone.push_back(stroke(p, st, Affine{}, 0.02));
+    std::vector<Path> a(paths.size()), b(paths.size());
+    std::thread ta([&] {
+        for (std::size_t i = 0; i < paths.size(); ++i) a[i] = stroke(paths[i], st, Affine{}, 0.02);
+    });
+    std::thread tb([&] {
+        for (std::size_t i = paths.size(); i-- > 0;) b[i] = stroke(paths[i], st, Affine{}, 0.02);
+    });
+    ta.join();
+    tb.join();
+    CHECK(a == alone);
+    CHECK(b == alone);
 }
