@@ -29,7 +29,9 @@
 // Curves. The vertices the flattener puts inside a curve (and where two segments meet with the same
 // tangent) are no corners: the stroke of a curve is the sweep of its normal, which turns with the
 // curve. There the outer side always gets the circular sector the normal sweeps (a round join,
-// whatever the style), and the inner side the sector it sweeps there too, as one more piece where
+// whatever the style; at a turn gentle enough that the offset lines' corner lies within the
+// tolerance of that sector's arc, the corner stands for it, as the chords stand for the curve),
+// and the inner side the sector it sweeps there too, as one more piece where
 // the two rectangles leave part of it: in a bend tighter than half the pen's radius the normals
 // cross past the centre of curvature and cover a sector on the far side, which rectangles alone
 // would leave as a comb of slivers. Ends of curves take their caps square to the curve's own

@@ -7,7 +7,8 @@
 //     holds whole (inner joins either pivot through the vertex, keeping both rectangles, or go
 //     through the offset lines' intersection where the rectangles' union is that corner).
 //   - q at a vertex: p lies in the vertex's normal cone, on the outer side of the turn, which a
-//     round join (or, at a smooth vertex, the always-round sweep) fills up to h.
+//     round join (or, at a smooth vertex, the always-round sweep, or the offset lines' corner
+//     that stands for it and holds it) fills up to h.
 //   - q at an open end E, or p where the end changes the stroke. What the end draws differs from
 //     the ideal only beyond the line L through E square to the path's direction there (caps, the
 //     chord's rectangle cut along L; behind L the sweep from the chord's direction to the path's
