@@ -3,10 +3,15 @@
 // and huge entries, offsets), then the outline filled into a small mask. Invariants: bad input ends
 // in casteljau::Error; the outline of a finite path with a finite positive width is finite; the
 // fill with stroke_outline()'s interior capsules (FillOptions::inside) equals the fill without.
-// Outlines above 10,000 points are not filled: a 200-verb path stroked 33 px wide with round
+// Outlines above kFillPoints points are not filled: a 200-verb path stroked 33 px wide with round
 // joins at 0.05 px makes 674,549, whose fill is linear but 20 s under the sanitizers (0.4 s in
 // Release), and 25,631 points piled into the 128 x 128 mask took 9 s there (0.36 s in Release),
-// nearly all in exact cells; the rasterizer's cost on large paths is fuzz_raster's subject.
+// nearly all in exact cells; the rasterizer's cost on large paths is fuzz_raster's subject. For
+// the same reason the exact cells' work budget (Limits::exact_work) is lowered to 1e5 piece visits
+// plus the 2000 per segment: 6,799 points piled into 128 cells spent the default budget, 0.3 s per
+// fill in Release and 12 s under the sanitizers. Past that the cells are integrated on lines,
+// which fuzz_raster_diff checks; and the SharedBorders fills are skipped when the stroke's own
+// fill spent more than kSharedBordersWork.
 // SharedBorders (casteljau/map.hpp): the path's points made into closed rings, plus rings sharing
 // runs of their segments (a run of each ring closed on itself, each ring reversed), go through it;
 // stroking what it keeps with Butt caps must cover what stroking every ring covers, within 1/255
@@ -25,6 +30,9 @@
 using namespace casteljau;
 
 namespace {
+
+constexpr std::size_t kFillPoints = 4000;
+constexpr double kSharedBordersWork = 1e6;
 
 void shared_borders_check(const Path& path, const StrokeStyle& style, const Affine& m, Rasterizer& raster) {
     std::vector<Path> rings;
@@ -64,7 +72,7 @@ void shared_borders_check(const Path& path, const StrokeStyle& style, const Affi
         borders.add(r, chains, whole, stroke_merge_distance(m, 0.05));
         once.append(stroke(chains, butt, m, 0.05));
         once.append(stroke(whole, st, m, 0.05));
-        if (all.points().size() + once.points().size() > 10000)
+        if (all.points().size() + once.points().size() > kFillPoints)
             return;  // overlap-heavy fills cost seconds under the sanitizers
     }
     const IRect clip{0, 0, 128, 128};
@@ -85,6 +93,7 @@ void shared_borders_check(const Path& path, const StrokeStyle& style, const Affi
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     Limits l = current_limits();
     l.path_points = std::size_t(1) << 20;
+    l.exact_work = 100'000;
     set_limits(l);
     return 0;
 }
@@ -105,16 +114,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             for (const Point& p : outline.points()) finite_out = finite_out && std::isfinite(p.x) && std::isfinite(p.y);
             fuzz::require(finite_out, "a finite path stroked with a finite width gave a non-finite outline");
         }
-        if (outline.points().size() > 10000) return;
+        if (outline.points().size() > kFillPoints) return;
         Rasterizer raster;
         const IRect clip{0, 0, 128, 128};
         const Mask plain = raster.fill_mask(outline, m, FillOptions{}, clip);
+        const double work = raster.last_stats().exact_work;
         FillOptions hinted;
         hinted.inside = so.inside;
         const Mask with_inside = raster.fill_mask(outline, m, hinted, clip);
         fuzz::require(plain.bounds == with_inside.bounds && plain.data == with_inside.data,
                       "a pixel inside the stroke's interior capsules is not full");
-        if (!finite_in || !(st.width < 1e6)) return;
+        if (!finite_in || !(st.width < 1e6) || work > kSharedBordersWork) return;
         shared_borders_check(path, st, m, raster);
     });
     return 0;

@@ -2,6 +2,7 @@
 // seed corpus and the regression corpus (every input that ever failed) run under ctest with the
 // normal compiler, and under AddressSanitizer in the sanitizer build.
 // Usage: replay_TARGET FILE_OR_FOLDER...   (folders are read recursively; exit 0 when all ran)
+// The target's LLVMFuzzerInitialize, when it has one, runs first, as under libFuzzer.
 //
 // Like libFuzzer's -malloc_limit_mb and -rss_limit_mb, the replay bounds memory: one allocation
 // above 1 GiB (CASTELJAU_REPLAY_MALLOC_LIMIT_MB to change it) stops the replay with a message
@@ -23,6 +24,9 @@
 #include <vector>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
+// A target's set-up, run once before the inputs as libFuzzer runs it (limits the target lowers);
+// a weak reference, null for the targets that have none.
+extern "C" [[gnu::weak]] int LLVMFuzzerInitialize(int* argc, char*** argv);
 
 namespace {
 
@@ -101,6 +105,7 @@ void cap_memory() {
 
 int main(int argc, char** argv) {
     cap_memory();
+    if (LLVMFuzzerInitialize) LLVMFuzzerInitialize(&argc, &argv);
     namespace fs = std::filesystem;
     int files = 0, failures = 0;
     for (int i = 1; i < argc; ++i) {

@@ -303,6 +303,7 @@ typedef struct casteljau_limits {
     uint64_t canvas_save_depth;    /* casteljau_canvas_save nesting */
     uint64_t text_bytes;           /* UTF-8 bytes of one text drawn */
     uint64_t input_bytes;          /* one input file or stream read whole */
+    uint64_t exact_work;           /* piece visits of one fill's exact cells, besides 2000 per segment */
 } casteljau_limits;
 
 /* Fills the first `size` bytes of *out with the limits in force. INVALID_ARGUMENT for NULL or a

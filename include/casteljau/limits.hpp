@@ -90,6 +90,9 @@ struct Limits {
     std::size_t text_bytes = std::size_t(16) << 20;                       // UTF-8 bytes given to layout_text
     std::uint64_t input_bytes = std::uint64_t(1)
                                 << 30;  // one input file or stream read whole (read_file, read_map_file)
+    // Piece visits the exact cells of one fill may spend, besides 2000 per segment (raster.hpp,
+    // RasterStats::dense_cells): past it, such cells are integrated on lines instead.
+    std::uint64_t exact_work = 50'000'000;
 
     // The highest value each field accepts.
     static Limits ceilings() noexcept;

@@ -137,7 +137,8 @@ struct RasterStats {
     std::size_t segments = 0;     // line segments accumulated
     std::size_t exact_cells = 0;  // cells recomputed exactly
     // Of those, cells where the exact method would cost too much (thousands of pieces crossing in
-    // one pixel, or the fill's exact-work budget spent) and lines through the cell were integrated
+    // one pixel, or the fill's exact-work budget spent: Limits::exact_work piece visits plus 2000 per
+    // segment) and lines through the cell were integrated
     // instead: within 1/2048 of a pixel, 1/32 at worst. Real glyphs and maps have none.
     std::size_t dense_cells = 0;
     // Of those, cells left to plain accumulation (as exact_overlaps = false would give) because the

@@ -97,7 +97,8 @@ class _Limits(_c.Structure):  # casteljau_limits, field for field
                 ("map_positions", _c.c_uint64), ("dashes", _c.c_uint64), ("font_file_bytes", _c.c_uint64),
                 ("png_chunk_bytes", _c.c_uint64), ("png_ancillary_chunks", _c.c_uint32),
                 ("jpeg_working_memory", _c.c_uint64), ("canvas_save_depth", _c.c_uint64), ("text_bytes", _c.c_uint64),
-                ("input_bytes", _c.c_uint64)]
+                ("input_bytes", _c.c_uint64),
+                ("exact_work", _c.c_uint64)]
 
 
 def _declare(signatures):

@@ -38,6 +38,7 @@ void each_field(C& c, L& l, F&& f) {
     f(c.canvas_save_depth, l.canvas_save_depth);
     f(c.text_bytes, l.text_bytes);
     f(c.input_bytes, l.input_bytes);
+    f(c.exact_work, l.exact_work);
 }
 
 // A size the caller's struct may have: a whole number of leading fields (some prefix of the

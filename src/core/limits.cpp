@@ -33,6 +33,7 @@ void each_field(A& a, B& b, F&& f) {
     f(a.canvas_save_depth, b.canvas_save_depth, "canvas_save_depth");
     f(a.text_bytes, b.text_bytes, "text_bytes");
     f(a.input_bytes, b.input_bytes, "input_bytes");
+    f(a.exact_work, b.exact_work, "exact_work");
 }
 
 struct AtomicLimits {
@@ -52,6 +53,7 @@ struct AtomicLimits {
     std::atomic<std::size_t> canvas_save_depth;
     std::atomic<std::size_t> text_bytes;
     std::atomic<std::uint64_t> input_bytes;
+    std::atomic<std::uint64_t> exact_work;
 
     AtomicLimits() { store(Limits{}); }
     void store(const Limits& l) {
@@ -85,6 +87,7 @@ Limits Limits::ceilings() noexcept {
     c.canvas_save_depth = 65536;
     c.text_bytes = std::size_t(256) << 20;
     c.input_bytes = std::uint64_t(64) << 30;
+    c.exact_work = 5'000'000'000;
     return c;
 }
 

@@ -45,11 +45,10 @@ namespace casteljau::raster {
 
 namespace {
 
-// The exact cells of one fill share a work budget (exact_cell.cpp): enough for any real shape to be
-// exact everywhere (a glyph's or a map's exact cells use a small part of it), and growing with the
-// fill's size so that only shapes piling thousands of pieces into many pixels fall back to the
-// dense method.
-constexpr double kExactWorkBase = 5e7;
+// The exact cells of one fill share a work budget (exact_cell.cpp): Limits::exact_work (5e7 by
+// default: enough for any real shape to be exact everywhere, a glyph's or a map's exact cells use a
+// small part of it) plus an amount growing with the fill's size, so that only shapes piling
+// thousands of pieces into many pixels fall back to the dense method.
 constexpr double kExactWorkPerSegment = 2000;
 // Past this many times the budget, the remaining exact cells keep their accumulated coverage: the
 // dense method still costs a sort of the cell's pieces per line, and a singular transform can pass
@@ -155,7 +154,9 @@ void Engine::begin(int w, int h, bool track) {
     }
     segs_.clear();
     count_ = 0;
-    max_edges_ = current_limits().flattened_segments;
+    const Limits limits = current_limits();
+    max_edges_ = limits.flattened_segments;
+    exact_base_ = static_cast<double>(limits.exact_work);
     visits_.clear();
     cands_.clear();
     cur_cell_ = kNoCell;
@@ -440,7 +441,7 @@ void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
     std::size_t row_base = 0;
     double prefix = 0;
     int pos = 0;
-    scratch_.budget = kExactWorkBase + kExactWorkPerSegment * static_cast<double>(count_);
+    scratch_.budget = exact_base_ + kExactWorkPerSegment * static_cast<double>(count_);
     scratch_.work = 0;
     scratch_.dense_cells = 0;
     const bool hinted = rule == FillRule::NonZero && !inside.empty() && !exact_.empty();

@@ -120,6 +120,7 @@ private:
     AppendList<Edge> segs_;      // the edges (kept when tracking: exact cells need them)
     std::size_t count_ = 0;      // edges pushed
     std::size_t max_edges_ = 0;  // Limits::flattened_segments, read by begin()
+    double exact_base_ = 0;      // Limits::exact_work, read by begin()
     AppendList<Visit> visits_;
     std::vector<std::uint32_t> cands_;  // cells with two or more visits, or a non-simple one (each once)
     void add_cand(std::uint32_t cell) {

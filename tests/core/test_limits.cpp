@@ -104,6 +104,7 @@ TEST_CASE("limits: the defaults are the documented values, and reset restores th
     CHECK(d.canvas_save_depth == 1024);
     CHECK(d.text_bytes == (std::size_t(16) << 20));
     CHECK(d.input_bytes == (std::uint64_t(1) << 30));
+    CHECK(d.exact_work == 50'000'000);
     {
         ScopedLimits s([](Limits& l) { l.css_rules = 7; });
         CHECK(current_limits().css_rules == 7);

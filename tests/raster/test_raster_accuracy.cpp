@@ -14,6 +14,7 @@
 #include "glyph_outline.hpp"
 #include "../fuzz/stroke_case.hpp"
 #include "casteljau/file_io.hpp"
+#include "casteljau/limits.hpp"
 #include "casteljau/stroke.hpp"
 
 using namespace casteljau;
@@ -326,6 +327,28 @@ TEST_CASE("accuracy: thousands of pieces over many pixels stay within the fill's
         INFO(c.text());
         CHECK(c.max_err <= 255.0 / 32);
     }
+}
+
+TEST_CASE("accuracy: Limits::exact_work sets the base of the fill's exact-work budget", "[accuracy][limits]") {
+    // 150 pieces crossing in a few pixels: exact under the default budget; with a base of 1 the
+    // cells past the per-segment share are integrated on lines, within 1/32 of the exact area.
+    Rasterizer r;
+    std::mt19937 rng(13);
+    const Contour pile = random_polygon(rng, {2.05, 2.1, 4.9, 4.95}, 150);
+    const IRect clip{0, 0, 8, 8};
+    const ref::CoverageGrid exact = ref::slab_area({pile}, FillRule::NonZero, clip);
+    const Rendered plain = render(r, ref::to_path({pile}), Affine::identity(), FillOptions{}, clip);
+    CHECK(r.last_stats().dense_cells == 0);
+    CHECK(compare(plain, exact).max_err <= 1);
+    Limits low = current_limits();
+    low.exact_work = 1;
+    set_limits(low);
+    const Rendered lined = render(r, ref::to_path({pile}), Affine::identity(), FillOptions{}, clip);
+    const RasterStats st = r.last_stats();
+    reset_limits();
+    INFO("exact cells " << st.exact_cells << ", dense " << st.dense_cells << ", work " << st.exact_work);
+    CHECK(st.dense_cells > 0);
+    CHECK(compare(lined, exact).max_err <= 255.0 / 32);
 }
 
 TEST_CASE(
