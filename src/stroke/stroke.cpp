@@ -317,12 +317,13 @@ private:
         const double longer = std::max(len1, len2);
         const bool wedge_possible =
             smooth && len1 < h_ && len2 < h_ && h_ - longer > tol_ && (dt <= 0 || sn * (h_ - tol_) >= 0.999 * longer);
-        const double angle = within_step && !wedge_possible ? 0.0 : std::atan2(sn, dt);
+        // A gentle turn inside a curve: the corner where the two offset lines meet lies within the
+        // tolerance of the circle the normal sweeps (h / cos(turn / 2) from v), so one point stands
+        // for the sector, as the chords stand for the curve.
+        const bool corner = smooth && dt > 0 && dt >= smooth_corner_min_;
+        const double angle = (within_step || corner) && !wedge_possible ? 0.0 : std::atan2(sn, dt);
 
-        if (smooth && dt > 0 && dt >= smooth_corner_min_) {
-            // A gentle turn inside a curve: the corner where the two offset lines meet lies within
-            // the tolerance of the circle the normal sweeps (h / cos(turn / 2) from v), so one
-            // point stands for the sector, as the chords stand for the curve.
+        if (corner) {
             outer.push_back(v + (n1 + n2) * (h_ / (1 + dt)));
         } else {
             outer.push_back(v + n1 * h_);
