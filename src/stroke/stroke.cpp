@@ -608,7 +608,7 @@ void check_finite(const Path& path) {
 }
 
 // What one thread's strokes work in: lists that keep their memory from one stroke to the next,
-// unless a stroke made them larger than kKeptPoints points.
+// unless a stroke made them larger than kKeptPoints points (trim).
 struct StrokeScratch {
     FlatContours flat, dashed;
     std::vector<Point> dirs;
@@ -621,30 +621,17 @@ StrokeScratch& scratch() {
     return s;
 }
 
-// Frees the scratch lists that grew past kKeptPoints.
+// Frees the scratch lists once a stroke grew one of them past kKeptPoints. The others grow with
+// these: per point of the flattened path or its dashes, or per point of the outline's sides and
+// wedges.
 void trim(StrokeScratch& s) {
-    auto trim_one = [](auto& v) {
-        if (v.capacity() > kKeptPoints) std::remove_reference_t<decltype(v)>().swap(v);
-    };
-    for (FlatContours* f : {&s.flat, &s.dashed}) {
-        trim_one(f->poly.points);
-        trim_one(f->smooth);
-        trim_one(f->head);
-        trim_one(f->tail);
-        trim_one(f->poly.contour_ends);
-        trim_one(f->poly.closed);
-    }
-    trim_one(s.dirs);
-    OutlineBuffers& b = s.outline;
-    trim_one(b.q);
-    trim_one(b.left);
-    trim_one(b.right);
-    trim_one(b.wedges);
-    trim_one(b.piece);
-    trim_one(b.wedge_ends);
-    trim_one(b.smooth);
-    trim_one(b.dir);
-    trim_one(b.len);
+    const OutlineBuffers& b = s.outline;
+    for (const std::size_t c : {s.flat.poly.points.capacity(), s.dashed.poly.points.capacity(), b.left.capacity(),
+                                b.right.capacity(), b.wedges.capacity()})
+        if (c > kKeptPoints) {
+            s = StrokeScratch{};
+            return;
+        }
 }
 
 void stroke_polyline(const FlatContours& flat, std::span<const Point> dirs, const StrokeStyle& style, double tol,
