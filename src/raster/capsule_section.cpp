@@ -6,6 +6,9 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <cstdint>
+#include <cstring>
+
 #include "core/simd_dispatch.hpp"
 #include "raster/capsule_section.hpp"
 
@@ -47,14 +50,28 @@ HWY_INLINE void AddBand(D d, V c, const SweptCapsule& k, double r, V& lo, V& hi)
     hi = hn::IfThenElse(hit, hn::Max(hi, h), hi);
 }
 
+// The bits of `m` (lanes i .. i + lanes - 1 of a run) into words[i / 64]: lanes are a power of
+// two of at most 64 here, so one vector's bits stay in one word.
+template <class D, class M>
+HWY_INLINE void OrBits(D d, M m, int i, std::uint64_t* HWY_RESTRICT words) {
+    std::uint8_t bytes[8] = {};
+    hn::StoreMaskBits(d, m, bytes);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, bytes, sizeof bits);
+    words[i / 64] |= bits << (i % 64);
+}
+
 int CapsuleSectionsImpl(const SweptCapsule& k, double r, int row, double step, int s0, int n,
                         double* HWY_RESTRICT lo_out, double* HWY_RESTRICT hi_out, double* HWY_RESTRICT open_lo,
-                        double* HWY_RESTRICT open_hi, const double* HWY_RESTRICT closed_hi) {
+                        double* HWY_RESTRICT open_hi, double* HWY_RESTRICT closed_hi,
+                        std::uint64_t* HWY_RESTRICT left_bits, std::uint64_t* HWY_RESTRICT closed_bits) {
     const hn::ScalableTag<double> d;
     const int lanes = static_cast<int>(hn::Lanes(d));
+    static_assert(kMaxSectionLines % 64 == 0);
+    for (int w = 0; w < (n + 63) / 64; ++w) left_bits[w] = closed_bits[w] = 0;
     const auto r2 = hn::Set(d, r * r), y0 = hn::Set(d, k.y0), y1 = hn::Set(d, k.y1);
     const auto inf = hn::Set(d, INFINITY), neg_inf = hn::Set(d, -INFINITY);
-    std::size_t left_lines = 0;
+    std::size_t handed = 0;
     for (int i = 0; i < n; i += lanes) {
         const auto s = hn::Iota(d, static_cast<double>(s0 + i));
         const auto c =
@@ -66,21 +83,30 @@ int CapsuleSectionsImpl(const SweptCapsule& k, double r, int row, double step, i
         const auto hit = hn::And(hn::And(hn::Gt(c, y0), hn::Lt(c, y1)),
                                  hn::And(hn::Lt(lo, hi), hn::FirstN(d, static_cast<std::size_t>(n - i))));
         // Fold into the open intervals: take where there is none, merge where the section meets it
-        // and stays right of the closed ones.
+        // and stays right of the closed ones, advance where it lies right of it (the open interval
+        // is closed and handed out, the section opens).
         auto olo = hn::LoadU(d, open_lo + i), ohi = hn::LoadU(d, open_hi + i);
         const auto take = hn::And(hit, hn::Gt(olo, ohi));
         const auto meets = hn::And(hn::Le(lo, ohi), hn::Ge(hi, olo));
         const auto merge = hn::And(hit, hn::And(meets, hn::Gt(lo, hn::LoadU(d, closed_hi + i))));
-        olo = hn::IfThenElse(take, lo, hn::IfThenElse(merge, hn::Min(olo, lo), olo));
-        ohi = hn::IfThenElse(take, hi, hn::IfThenElse(merge, hn::Max(ohi, hi), ohi));
+        const auto advance = hn::AndNot(take, hn::And(hit, hn::Gt(lo, ohi)));
+        const auto left = hn::AndNot(hn::Or(hn::Or(take, merge), advance), hit);
+        hn::StoreU(hn::IfThenElse(advance, ohi, hn::LoadU(d, closed_hi + i)), d, closed_hi + i);
+        hn::StoreU(hn::IfThenElse(left, lo, olo), d, lo_out + i);
+        hn::StoreU(hn::IfThenElse(left, hi, ohi), d, hi_out + i);
+        const auto opens = hn::Or(take, advance);
+        olo = hn::IfThenElse(opens, lo, hn::IfThenElse(merge, hn::Min(olo, lo), olo));
+        ohi = hn::IfThenElse(opens, hi, hn::IfThenElse(merge, hn::Max(ohi, hi), ohi));
         hn::StoreU(olo, d, open_lo + i);
         hn::StoreU(ohi, d, open_hi + i);
-        const auto left = hn::AndNot(hn::Or(take, merge), hit);
-        hn::StoreU(hn::IfThenElse(left, lo, inf), d, lo_out + i);
-        hn::StoreU(hn::IfThenElse(left, hi, neg_inf), d, hi_out + i);
-        left_lines += hn::CountTrue(d, left);
+        const std::size_t count = hn::CountTrue(d, hn::Or(left, advance));
+        if (count != 0) {
+            OrBits(d, left, i, left_bits);
+            OrBits(d, advance, i, closed_bits);
+            handed += count;
+        }
     }
-    return static_cast<int>(left_lines);
+    return static_cast<int>(handed);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -93,8 +119,10 @@ namespace casteljau::raster {
 CASTELJAU_SIMD_EXPORT(CapsuleSectionsImpl);
 
 int capsule_sections(const SweptCapsule& k, double r, int row, double step, int s0, int n, double* lo, double* hi,
-                     double* open_lo, double* open_hi, const double* closed_hi) {
-    return CASTELJAU_SIMD_DISPATCH(CapsuleSectionsImpl)(k, r, row, step, s0, n, lo, hi, open_lo, open_hi, closed_hi);
+                     double* open_lo, double* open_hi, double* closed_hi, std::uint64_t* left_bits,
+                     std::uint64_t* closed_bits) {
+    return CASTELJAU_SIMD_DISPATCH(CapsuleSectionsImpl)(k, r, row, step, s0, n, lo, hi, open_lo, open_hi, closed_hi,
+                                                        left_bits, closed_bits);
 }
 
 }  // namespace casteljau::raster

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 
 namespace casteljau::raster {
 
@@ -35,14 +36,17 @@ inline constexpr int kSectionPadding = 64;
 // line lies within r of the capsule, folded into the line's union where that is simple. A line's
 // union is kept as its open interval open_lo[i] <= open_hi[i] (the rightmost; open_lo = +infinity
 // and open_hi = -infinity: none yet) and, left of it, closed intervals ending at most at
-// closed_hi[i] (-infinity: none). A line with no open interval takes the section as it; a section
-// meeting the open interval and starting right of closed_hi merges with it. What is left,
-// lo[i] < hi[i], is for the caller: a section right of the open interval, or reaching closed ones;
-// lo[i] >= hi[i] where nothing is left (folded, or the line misses the capsule or does not lie
-// strictly inside (y0, y1)). lo, hi, open_lo, open_hi and closed_hi hold n + kSectionPadding values
-// from line s0's. The values are those of the scalar formula (the same operations in the same
-// order, no fused multiply-add), whatever the target. Returns how many lines have something left.
+// closed_hi[i] (-infinity: none). A line with no open interval takes the section as its open one;
+// a section meeting the open interval and starting right of closed_hi merges with it; a section
+// right of the open interval closes it (closed_hi becomes its end; bit i of closed_bits is set and
+// lo[i], hi[i] hold the closed interval) and becomes the open one. Any other section is left for the
+// caller: bit i of left_bits is set and lo[i], hi[i] hold it. Lines the capsule misses (or does not
+// cross strictly inside (y0, y1)) change nothing and have neither bit. lo, hi, open_lo, open_hi and
+// closed_hi hold n + kSectionPadding values from line s0's; left_bits and closed_bits n / 64 words,
+// rounded up. The values are those of the scalar formula (the same operations in the same order,
+// no fused multiply-add), whatever the target. Returns how many lines have a bit set.
 int capsule_sections(const SweptCapsule& k, double r, int row, double step, int s0, int n, double* lo, double* hi,
-                     double* open_lo, double* open_hi, const double* closed_hi);
+                     double* open_lo, double* open_hi, double* closed_hi, std::uint64_t* left_bits,
+                     std::uint64_t* closed_bits);
 
 }  // namespace casteljau::raster

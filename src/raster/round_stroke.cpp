@@ -6,10 +6,11 @@
 // y = c of the row it crosses (a capsule is convex, so the hull of the intervals of its two end discs
 // and of its band is its whole section; capsule_section.hpp computes a run of lines at once), and
 // each line keeps the union of its intervals as they arrive (LineUnion). Each interval of the union
-// then adds its exact length inside every pixel it crosses (RowCoverage: one cell update per end),
-// and one running sum per row, times the lines' common weight, turns the cells into coverage,
-// handed to a SpanSink in runs of the blocks the intervals reached. A capsule's section form is
-// built once, when its first row comes.
+// adds its exact length inside every pixel it crosses (RowCoverage: one cell update per end) as
+// soon as no capsule still to come can reach it, or at the end of the row, and one running sum
+// per row, times the lines' common weight, turns the cells into coverage, handed to a SpanSink in
+// runs of the blocks the intervals reached. A capsule's section form is built once, when its first
+// row comes.
 //
 // Error: on a band of height h the midpoint rule misses the integral of the covered length L(y) by
 // at most h/2 times the total variation of L over the band (the half above the midpoint and the
@@ -168,9 +169,10 @@ private:
 
 // The union of the intervals on one sample line, built as they arrive. They arrive nearly in order
 // of their left ends (capsules in order of theirs), so most meet the line's open interval (the
-// rightmost so far) and merge with it, which capsule_sections does; one right of it closes it (kept
-// here) and opens another; one between the last closed interval and the open one is kept in its
-// place. Only one reaching back over closed intervals (long capsules crossing each other) is kept
+// rightmost so far) and merge with it, which capsule_sections does; one right of it closes it and
+// opens another (capsule_sections too), and the closed one goes to the row's coverage at once when
+// it ends left of the capsule's left end (no later capsule reaches it), else to the closed list;
+// one between the last closed interval and the open one is kept in its place. Only one reaching back over closed intervals (long capsules crossing each other) is kept
 // as it comes, and then the line is sorted and merged once at the end, so a line never costs the
 // square of its intervals.
 class LineUnion {
@@ -180,17 +182,22 @@ public:
         sorted_ = true;
     }
 
-    // Interval [lo, hi], which capsule_sections did not fold into the open interval [open_lo,
-    // open_hi]; closed_hi: where the closed intervals end.
+    // The open interval [lo, hi], closed by capsule_sections. No interval still to come starts left
+    // of `settled_below`: one ending left of it, with the closed ones in order (so none overlaps it),
+    // is final and goes to settle(lo, hi) instead of the closed list.
+    template <class Settle>
+    void close(double lo, double hi, double settled_below, const Settle& settle) {
+        if (sorted_ && hi < settled_below)
+            settle(lo, hi);
+        else
+            closed_.emplace_back(lo, hi);
+    }
+
+    // Interval [lo, hi], which capsule_sections left: it meets the open interval [open_lo, open_hi]
+    // or lies left of it, and reaches where the closed intervals end (closed_hi) or the line is
+    // no longer in order.
     void add(double lo, double hi, double& open_lo, double& open_hi, double& closed_hi) {
-        if (lo > open_hi) {  // right of the open interval: close it, open this one
-            if (open_lo <= open_hi) {
-                closed_.emplace_back(open_lo, open_hi);
-                closed_hi = open_hi;
-            }
-            open_lo = lo;
-            open_hi = hi;
-        } else if (!sorted_) {
+        if (!sorted_) {
             closed_.emplace_back(lo, hi);
         } else if (hi >= open_lo) {  // meets the open interval and reaches closed ones: merge them
             open_lo = std::min(open_lo, lo);
@@ -259,49 +266,70 @@ public:
             v->resize(raster::kMaxSectionLines + raster::kSectionPadding);
     }
 
-    void start(int row) {
+    // Starts pixel row `row`, whose intervals, clipped to [x0, x1], go to `coverage` (local x from x0).
+    void start(int row, double x0, double x1, RowCoverage& coverage) {
         row_ = row;
+        x0_ = x0;
+        x1_ = x1;
+        coverage_ = &coverage;
         for (LineUnion& line : lines_) line.clear();
         std::fill(open_lo_.begin(), open_lo_.end(), INFINITY);
         std::fill(open_hi_.begin(), open_hi_.end(), -INFINITY);
         std::fill(closed_hi_.begin(), closed_hi_.end(), -INFINITY);
     }
 
-    // Adds the sections of the capsule of `segment` (vertical extent [y0, y1]) to the row's lines.
-    void add(const raster::SweptCapsule& capsule, double y0, double y1) {
+    // Adds the sections of the capsule of `segment` (vertical extent [y0, y1], left end x0) to the
+    // row's lines; the capsules come in order of x0.
+    void add(const raster::SweptCapsule& capsule, double y0, double y1, double x0) {
         const int n = static_cast<int>(lines_.size());
         // The lines whose centres may lie inside (y0, y1), with a line to spare on each side; the
         // sections decide exactly.
         const int s0 = std::max(0, static_cast<int>(std::floor((y0 - row_) * n)) - 1);
         const int s1 = std::min(n - 1, static_cast<int>(std::ceil((y1 - row_) * n)));
         if (s1 < s0) return;
-        int left = raster::capsule_sections(capsule, r_, row_, step_, s0, s1 - s0 + 1, lo_.data(), hi_.data(),
-                                            open_lo_.data() + s0, open_hi_.data() + s0, closed_hi_.data() + s0);
-        for (int s = s0; left > 0; ++s) {
-            const std::size_t t = static_cast<std::size_t>(s - s0), u = static_cast<std::size_t>(s);
-            if (lo_[t] < hi_[t]) {
+        // A section may start left of x0 by the rounding of its square root: a margin far above it.
+        const double settled_below = x0 - 1e-9 * std::max(1.0, std::fabs(x0));
+        if (raster::capsule_sections(capsule, r_, row_, step_, s0, s1 - s0 + 1, lo_.data(), hi_.data(),
+                                     open_lo_.data() + s0, open_hi_.data() + s0, closed_hi_.data() + s0, left_bits_,
+                                     closed_bits_) == 0)
+            return;
+        // Each line has at most one of the two bits.
+        for (int word = 0; word <= (s1 - s0) / 64; ++word) {
+            for (std::uint64_t bits = closed_bits_[word]; bits != 0; bits &= bits - 1) {
+                const std::size_t t = static_cast<std::size_t>(word * 64 + std::countr_zero(bits));
+                lines_[t + static_cast<std::size_t>(s0)].close(lo_[t], hi_[t], settled_below,
+                                                               [this](double l, double h) { settle(l, h); });
+            }
+            for (std::uint64_t bits = left_bits_[word]; bits != 0; bits &= bits - 1) {
+                const std::size_t t = static_cast<std::size_t>(word * 64 + std::countr_zero(bits));
+                const std::size_t u = t + static_cast<std::size_t>(s0);
                 lines_[u].add(lo_[t], hi_[t], open_lo_[u], open_hi_[u], closed_hi_[u]);
-                --left;
             }
         }
     }
 
-    // Adds every line's union, clipped to [x0, x1], to `row` (local x from x0).
-    void accumulate(double x0, double x1, RowCoverage& row) {
+    // Adds what is left of every line's union to the row's coverage.
+    void accumulate() {
         for (std::size_t u = 0; u < lines_.size(); ++u)
-            for (auto [l, h] : lines_[u].merged(open_lo_[u], open_hi_[u])) {
-                l = std::max(l, x0);
-                h = std::min(h, x1);
-                if (h > l) row.add(l - x0, h - x0);
-            }
+            for (auto [l, h] : lines_[u].merged(open_lo_[u], open_hi_[u])) settle(l, h);
     }
 
 private:
+    // Adds the final interval [lo, hi] of one line, clipped, to the row's coverage.
+    void settle(double lo, double hi) {
+        lo = std::max(lo, x0_);
+        hi = std::min(hi, x1_);
+        if (hi > lo) coverage_->add(lo - x0_, hi - x0_);
+    }
+
     double r_, step_;
     int row_ = 0;
+    double x0_ = 0, x1_ = 0;
+    RowCoverage* coverage_ = nullptr;
     std::vector<LineUnion> lines_;
     std::vector<double> lo_, hi_;                        // one capsule's sections, from its first line
     std::vector<double> open_lo_, open_hi_, closed_hi_;  // per line (LineUnion)
+    std::uint64_t left_bits_[raster::kMaxSectionLines / 64], closed_bits_[raster::kMaxSectionLines / 64];
 };
 
 // Throws for arguments round_stroke_spans() does not take (see casteljau/round_stroke.hpp).
@@ -402,9 +430,9 @@ void round_stroke_spans(std::span<const LineSegment> segments, double radius, co
             if (next == caps.size()) break;
             continue;
         }
-        lines.start(j);
-        for (const Active& a : active) lines.add(built[a.slot], caps[a.cap].y0, caps[a.cap].y1);
-        lines.accumulate(clip.x0, clip.x1, row);
+        lines.start(j, clip.x0, clip.x1, row);
+        for (const Active& a : active) lines.add(built[a.slot], caps[a.cap].y0, caps[a.cap].y1, caps[a.cap].x0);
+        lines.accumulate();
         row.emit(1.0 / lines_per_pixel, j, clip.x0, w, sink);
     }
 }
