@@ -82,11 +82,17 @@ public:
     // Source-over of the layer onto the region of `dst` (which must contain the region); nothing
     // when the layer is `dst` itself (reset_into).
     void composite_onto(Pixmap& dst) const;
+    // The region of `dst` set to `background` (its pixels replaced), then the layer composited
+    // source-over onto it: the pixels of dst.fill_rows() followed by composite_onto(dst), with each
+    // row written while it is in cache. Not after reset_into() (Error(InvalidArgument)).
+    void composite_onto(Pixmap& dst, Color background) const;
     // Forgets every fill: the coverage and the layer (after reset_into, the fills' pixels in the
     // target go back to transparent).
     void clear();
 
 private:
+    // composite_onto(), with every row of the region set to `background` first when it is given.
+    void composite_rows(Pixmap& dst, const PremulPixel* background) const;
     IRect region_;
     std::vector<std::uint8_t> layer_;  // premultiplied RGBA8, when the layer is the compositor's own
     std::vector<std::uint8_t> cov_;

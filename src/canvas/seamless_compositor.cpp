@@ -162,6 +162,17 @@ struct SeamlessSink final : SpanSink {
     }
 };
 
+// Sets `length` pixels from `row` to p.
+void fill_span(std::uint8_t* row, int length, PremulPixel p) {
+    const std::size_t n = static_cast<std::size_t>(length);
+    if (p.r == p.g && p.g == p.b && p.b == p.a) {  // transparent, opaque black or white: one byte value
+        std::memset(row, p.r, 4 * n);
+        return;
+    }
+    const std::uint8_t px[4] = {p.r, p.g, p.b, p.a};
+    for (std::size_t i = 0; i < n; ++i) std::memcpy(row + 4 * i, px, 4);
+}
+
 }  // namespace
 
 void SeamlessCompositor::add(Rasterizer& raster, const Path& path, const FillOptions& opts, Color color,
@@ -189,15 +200,28 @@ void SeamlessCompositor::add(Rasterizer& raster, const Path& path, const FillOpt
 
 void SeamlessCompositor::composite_onto(Pixmap& dst) const {
     if (into_ == &dst) return;  // the layer is dst's own pixels
+    composite_rows(dst, nullptr);
+}
+
+void SeamlessCompositor::composite_onto(Pixmap& dst, Color background) const {
+    if (into_)
+        throw Error(ErrorKind::InvalidArgument,
+                    "SeamlessCompositor::composite_onto: a background needs a layer of its own (not reset_into)");
+    const PremulPixel b = premultiply(background);
+    composite_rows(dst, &b);
+}
+
+void SeamlessCompositor::composite_rows(Pixmap& dst, const PremulPixel* background) const {
     if (region_.x0 < 0 || region_.y0 < 0 || region_.x1 > dst.width() || region_.y1 > dst.height())
         throw Error(ErrorKind::InvalidArgument,
                     "SeamlessCompositor::composite_onto: the target does not contain the region");
     for (int y = region_.y0; y < region_.y1; ++y) {
         const std::size_t r = static_cast<std::size_t>(y - region_.y0);
+        std::uint8_t* const row = dst.row(y) + static_cast<std::size_t>(region_.x0) * 4;
+        if (background) fill_span(row, width(), *background);
         if (lo_[r] >= hi_[r]) continue;  // no fill touched the row: the layer is transparent there
         const std::size_t lo = static_cast<std::size_t>(lo_[r]);
-        composite_span_premul(dst.row(y) + (static_cast<std::size_t>(region_.x0) + lo) * 4, hi_[r] - lo_[r], nullptr,
-                              layer_origin() + r * layer_stride() + lo * 4);
+        composite_span_premul(row + lo * 4, hi_[r] - lo_[r], nullptr, layer_origin() + r * layer_stride() + lo * 4);
     }
 }
 

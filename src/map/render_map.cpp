@@ -510,11 +510,17 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
     // too), and never where nothing is drawn.
     // While nothing is drawn on it, such a pixmap takes a seamless layer's fills directly
     // (SeamlessCompositor::reset_into): the same pixels, without a layer.
+    // Any other background waits for the first drawing: a seamless fill's compositors set each
+    // row to it as they composite onto it, while the row is in cache (the same pixels as filling
+    // the image first); anything else paints it first (paint_background).
     bool target_clear = cleared && style.background.a == 0;
-    if (!target_clear)
+    std::vector<char> background_due(bands.size(), !target_clear);
+    auto paint_background = [&] {
         parallel::for_each_index(threads, bands.size(), [&](int, std::size_t b) {
-            target.fill_rows(bands[b].y0, bands[b].y1, style.background);
+            if (background_due[b]) target.fill_rows(bands[b].y0, bands[b].y1, style.background);
+            background_due[b] = 0;
         });
+    };
     std::optional<SeamlessCompositor> whole;  // the whole image
     std::vector<std::optional<SeamlessCompositor>> band_compositors(
         static_cast<std::size_t>(threads));  // one band per worker
@@ -578,7 +584,9 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
             o.topology = d.topology;
             return o;
         };
-        if (layer.fill && opts.seamless) {
+        const bool seamless = layer.fill && opts.seamless;
+        if (!seamless) paint_background();
+        if (seamless) {
             std::reverse(order.begin(), order.end());
             std::size_t positions = 0;
             for (std::size_t i : order) positions += positions_of(i);
@@ -603,11 +611,25 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
                         }
                         into->add(raster, d->path, fill_options(*d), d->color, layer.opacity, bands[b]);
                     }
-                    if (banded && into) into->composite_onto(target);
+                    if (banded && into) {
+                        if (background_due[b])
+                            into->composite_onto(target, style.background);
+                        else
+                            into->composite_onto(target);
+                        background_due[b] = 0;
+                    }
                 });
                 for (const auto& d : chunk) drew = drew || d.has_value();
             });
-            if (!banded && drew) whole->composite_onto(target);
+            if (!banded && drew) {
+                if (background_due[0]) {  // every band is due, or none
+                    whole->composite_onto(target, style.background);
+                    std::fill(background_due.begin(), background_due.end(), 0);
+                } else {
+                    whole->composite_onto(target);
+                }
+            }
+            paint_background();  // the bands no fill reached
             target_clear = target_clear && !drew;
             std::reverse(order.begin(), order.end());
         } else if (layer.fill) {
@@ -731,6 +753,7 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
         });
         flush();
     }
+    paint_background();
 }
 
 }  // namespace

@@ -607,6 +607,67 @@ TEST_CASE("Seamless: a compositor writing into a transparent target gives the pi
     CHECK_THROWS_AS(into.reset_into(got, IRect{0, 16, 65, 32}), Error);
 }
 
+TEST_CASE("Seamless: composite_onto with a background sets the region's rows to it, then composites",
+          "[map][seamless]") {
+    Rasterizer raster;
+    Path a, b;
+    a.add_rect(Rect{2.5, 3.25, 30.5, 20.75});
+    b.add_circle(Point{31, 15}, 9.3);
+    const IRect band{0, 8, 64, 30};  // rows 25 to 29: no fill
+    // White (one byte value), an opaque colour of distinct channels, a translucent one.
+    for (const Color background : {Color::white(), Color::rgba(248, 244, 240), Color::rgba(20, 40, 200, 100)}) {
+        SeamlessCompositor ac(band);
+        ac.add(raster, b, FillOptions{}, Color::rgba(0, 0, 255, 128), 0.7);
+        ac.add(raster, a, FillOptions{}, Color::rgba(255, 0, 0));
+        Pixmap want(64, 32), got(64, 32);
+        for (Pixmap* p : {&want, &got}) p->fill(Color::rgba(9, 90, 9));  // outside the band: left alone
+        want.fill_rows(band.y0, band.y1, background);
+        ac.composite_onto(want);
+        ac.composite_onto(got, background);
+        std::size_t differ = 0;
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 64; ++x) differ += !(got.pixel(x, y) == want.pixel(x, y));
+        CHECK(differ == 0);
+        CHECK(got.pixel(20, 10) == want.pixel(20, 10));
+        CHECK(got.pixel(20, 2) == PremulPixel{9, 90, 9, 255});
+        CHECK(got.pixel(60, 20) == premultiply(background));
+        CHECK(got.pixel(5, 28) == premultiply(background));
+    }
+    Pixmap target(64, 32);
+    SeamlessCompositor into(target, band);
+    CHECK_THROWS_AS(into.composite_onto(target, Color::white()), Error);
+}
+
+TEST_CASE("render_map with a background: every band, reached by a fill or not, is the layer over the background",
+          "[map][seamless]") {
+    // 700 rows: three bands of the renderer; the square reaches the last only.
+    const MapData d = read_map_data(R"({"type":"FeatureCollection","features":[
+      {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[10.5,1.025],[40,1],[40,4.05],[10,4],[10.5,1.025]]]}}]})");
+    MapOptions o;
+    o.width = 100;
+    o.height = 700;
+    o.bbox = Rect{0, 0, 100, 70};
+    o.threads = 1;
+    for (const Color background : {Color::white(), Color::rgba(248, 244, 240), Color::rgba(20, 40, 200, 100)}) {
+        MapStyle st;
+        st.layers[0].fill = Color::rgba(200, 30, 30, 220);
+        const Pixmap layer = render_map(d, MapProjection{}, st, o);  // transparent: the layer itself
+        st.background = background;
+        Pixmap got(100, 700);
+        got.fill(Color::rgba(255, 0, 0));
+        render_map(d, MapProjection{}, fit_map(d, MapProjection{}, o), st, o, got);
+        Pixmap want(100, 700);
+        want.fill(background);
+        for (int y = 0; y < 700; ++y) composite_span_premul(want.row(y), 100, nullptr, layer.row(y));
+        std::size_t differ = 0;
+        for (int y = 0; y < 700; ++y)
+            for (int x = 0; x < 100; ++x) differ += !(got.pixel(x, y) == want.pixel(x, y));
+        CHECK(differ == 0);
+        CHECK(got.pixel(50, 100) == premultiply(background));
+        CHECK(got.pixel(20, 675).r != premultiply(background).r);
+    }
+}
+
 TEST_CASE("render_map into a new pixmap equals render_map onto a drawn one, layers and strokes included",
           "[map][seamless]") {
     // A new pixmap with a transparent background takes the first seamless layer's fills directly
