@@ -207,7 +207,7 @@ def main():
             args.casteljau, subprocess.run(["/usr/bin/python3", "-c", "import mapnik; print(mapnik.mapnik_version())"],
                                            capture_output=True, text=True).stdout.strip(),
             args.rounds, os.cpu_count(), os.getloadavg()[0]))
-        print("| data | size | geometry | casteljau whole (s) | casteljau draw+enc (s) | Mapnik render+enc (s) | Mapnik whole (s) "
+        print("| data | size | geometry | casteljau whole (ms) | casteljau draw+enc (ms) | Mapnik render+enc (ms) | Mapnik whole (ms) "
               "| casteljau peak MB | fill error mean/max (/255) | stroke error mean/max (/255) |")
         print("|---|---|---|---:|---:|---:|---:|---:|---|---|")
         for name, path, layer, kind, mapnik_path in datasets:
@@ -222,8 +222,9 @@ def main():
                     t_whole, rss, _ = best(args.rounds, base + casteljau_style(simplify))
                     t_empty, _, _ = best(args.rounds, base + casteljau_style(simplify, draw=False))
                     err = lambda p: "%.3f / %d" % acc[(p, label)] if (p, label) in acc else "-"
-                    print("| %s | %d x %d | %s | %.2f | %.2f | %.2f | %.2f | %.0f | %s | %s |" % (
-                        name, w, w // 2, label, t_whole, t_whole - t_empty, t_mapnik, t_mapnik_whole, rss,
+                    print("| %s | %d x %d | %s | %.1f | %.1f | %.1f | %.1f | %.0f | %s | %s |" % (
+                        name, w, w // 2, label, 1e3 * t_whole, 1e3 * (t_whole - t_empty), 1e3 * t_mapnik,
+                        1e3 * t_mapnik_whole, rss,
                         err("fill"), err("stroke")))
                     sys.stdout.flush()
         if args.only in (None, "tiles"):
@@ -247,8 +248,8 @@ def tiles_rows(args, work, land):
         t_whole, rss, _ = run(cmd(True, "ct"))
         shutil.rmtree(os.path.join(work, "ce"), ignore_errors=True)
         t_empty, _, _ = run(cmd(False, "ce"))
-        print("| countries-land-10km | tiles z%s (%d tiles) | %s | %.2f | %.2f | %.2f | %.2f | %.0f | - | - |" % (
-            z, n_tiles, label, t_whole, t_whole - t_empty, t_mapnik, t_mapnik_whole, rss))
+        print("| countries-land-10km | tiles z%s (%d tiles) | %s | %.1f | %.1f | %.1f | %.1f | %.0f | - | - |" % (
+            z, n_tiles, label, 1e3 * t_whole, 1e3 * (t_whole - t_empty), 1e3 * t_mapnik, 1e3 * t_mapnik_whole, rss))
         sys.stdout.flush()
 
 
