@@ -1,8 +1,9 @@
 // libFuzzer target: casteljau's own text glue over FreeType, HarfBuzz, fontconfig and ICU
 // (src/text: font loading, variations, bidi, shaping, system font fallback, line breaking, line
-// layout, glyph outlines and masks, colour glyphs). The first byte picks a font: a shipped one
-// (TrueType, CFF, Arabic, variable), the colour test fonts (COLR v0/v1, CBDT, sbix), one of those
-// with bytes of its colour tables (COLR, CPAL, CBDT, CBLC, sbix) overwritten by the input, or, at
+// layout, glyph outlines and masks, colour glyphs, OpenType SVG glyphs through the SVG reader). The
+// first byte picks a font: a shipped one (TrueType, CFF, Arabic, variable), the colour test fonts
+// (COLR v0/v1, CBDT, sbix, SVG), one of those with bytes of its colour tables (COLR, CPAL, CBDT,
+// CBLC, sbix, SVG: its documents, compressed or not) overwritten by the input, or, at
 // 255, the rest of the input as a font file; then come the style (size, direction, alignment, wrap
 // width, features, script, language, variation settings, system fallback on or off) and the text,
 // which may be any bytes (invalid UTF-8 included), laid out against the fonts installed. FreeType's
@@ -18,6 +19,7 @@
 #include "casteljau/canvas.hpp"
 #include "casteljau/font.hpp"
 #include "casteljau/raster.hpp"
+#include "casteljau/svg.hpp"
 #include "casteljau/text.hpp"
 #include "harness.hpp"
 
@@ -25,11 +27,12 @@ using namespace casteljau;
 
 namespace {
 
-constexpr int kFontFiles = 7;
+constexpr int kFontFiles = 8;
 const char* const kFiles[kFontFiles] = {
     "/fonts/DejaVuSans.ttf",           "/fonts/LinLibertine_R.otf", "/fonts/NotoSansArabic-Regular.ttf",
     "/tests/data/Inter-roman.var.ttf", "/tests/data/colr_test.ttf", "/tests/data/emoji_cbdt_test.ttf",
-    "/tests/data/emoji_sbix_test.ttf"};
+    "/tests/data/emoji_sbix_test.ttf", "/tests/data/svg_test.ttf"};
+constexpr int kFirstColorFont = 4, kColorFonts = 4;
 
 Font* shipped(int which) {
     static std::unique_ptr<Font> fonts[kFontFiles];
@@ -62,7 +65,7 @@ std::vector<std::uint8_t> mutated_color_font(int which, fuzz::Bytes& in) {
         const std::size_t rec = 12 + 16 * i;
         const std::uint32_t tag = be32(font, rec), off = be32(font, rec + 8), len = be32(font, rec + 12);
         const bool color = tag == 0x434f4c52u /*COLR*/ || tag == 0x4350414cu /*CPAL*/ || tag == 0x43424454u /*CBDT*/ ||
-                           tag == 0x43424c43u /*CBLC*/ || tag == 0x73626978u /*sbix*/;
+                           tag == 0x43424c43u /*CBLC*/ || tag == 0x73626978u /*sbix*/ || tag == 0x53564720u /*SVG */;
         if (color && len > 0 && off + len <= font.size()) tables.emplace_back(off, len);
     }
     if (tables.empty()) return font;
@@ -138,6 +141,7 @@ extern "C" const char* __lsan_default_suppressions() { return "leak:libfontconfi
 // fontconfig is started by a system fallback layout before any input runs, so that the per-input
 // leak check sees only what the inputs allocate, not fontconfig's configuration and caches.
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    enable_svg_glyphs();
     TextStyle style;
     style.system_fonts = true;
     try {
@@ -161,7 +165,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (which >= 200 && which < 230) {
         // A colour font with patched colour tables.
         fuzz::run([&] {
-            Font font = Font::from_memory(mutated_color_font(4 + (which - 200) % 3, in));
+            Font font = Font::from_memory(mutated_color_font(kFirstColorFont + (which - 200) % kColorFonts, in));
             exercise(font, in);
         });
         return 0;

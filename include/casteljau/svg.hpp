@@ -154,4 +154,13 @@ private:
 // Parses an SVG transform list ("translate(10 20) rotate(45)"). Throws Error(Parse).
 Affine parse_svg_transform(std::string_view text);
 
+// Installs the SVG reader as the text stage's drawer of OpenType SVG glyphs (casteljau/text.hpp,
+// set_svg_glyph_drawer), so that draw_text draws fonts with an 'SVG ' table (Twitter Color Emoji
+// and others) in their colours. SvgDocument::parse and load call it, and so does the casteljau
+// command; a program drawing text without reading SVG calls it once before drawing. Each glyph
+// document is read with export_id "glyphN" and no system fonts; currentColor is black. Converted
+// glyph documents are cached per process (at most 512, by the font's document bytes and the glyph).
+// Thread-safety: call it before drawing text on several threads.
+void enable_svg_glyphs();
+
 }  // namespace casteljau

@@ -200,10 +200,28 @@ struct TextDrawOptions {
 void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Paint& paint, GlyphCache* cache = nullptr,
                const TextDrawOptions& options = {});
 
-// Whether glyph `glyph` of `font` is a colour glyph (COLR v0 layers, a COLR v1 paint graph, a
-// CBDT/CBLC or sbix bitmap), which draw_text draws in its palette's colours instead of filling
-// its outline. False for every glyph of a font without colour tables.
+// Whether glyph `glyph` of `font` is a colour glyph (an OpenType SVG document while an SVG glyph
+// drawer is set, COLR v0 layers, a COLR v1 paint graph, a CBDT/CBLC or sbix bitmap), which
+// draw_text draws in its own colours instead of filling its outline. False for every glyph of a
+// font without colour tables.
 bool is_color_glyph(const Font& font, std::uint32_t glyph);
+
+// OpenType SVG glyphs ('SVG ' table: Twitter Color Emoji, Twemoji Mozilla and other colour fonts)
+// are SVG documents, which the text stage does not read itself: the SVG reader sits above it
+// (casteljau/svg.hpp). draw_text hands them to the drawer set here, which enable_svg_glyphs()
+// (casteljau/svg.hpp) installs; SvgDocument and the casteljau command install it. With no drawer
+// set, such glyphs are drawn by their outlines (every SVG font has them), as before.
+// The drawer draws glyph `glyph` of `document` (the font's document for it, as stored: possibly
+// gzip-compressed, possibly holding other glyphs; the glyph is its element with id "glyphN") on
+// `canvas`, whose transform it leaves alone; `font_to_canvas` maps the document's user units
+// (font units, y down, the glyph origin at 0,0) to the canvas's pixels; `foreground` is the
+// text's colour. It returns false when it cannot draw the document (then the outline is filled).
+// Thread-safety: set the drawer before drawing text on several threads; it must be callable from
+// any thread.
+using SvgGlyphDrawer = bool (*)(Canvas& canvas, std::string_view document, std::uint32_t glyph,
+                                const Affine& font_to_canvas, Color foreground);
+void set_svg_glyph_drawer(SvgGlyphDrawer drawer);
+SvgGlyphDrawer svg_glyph_drawer();
 
 // Lays out `utf8` in one font with default style at `size` px and draws it with the box's top-left
 // corner at `origin`. Returns the layout.

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "capi/handles.hpp"
+#include "casteljau/svg.hpp"
 #include "casteljau/text.hpp"
 
 using namespace casteljau;
@@ -156,6 +157,7 @@ casteljau_status casteljau_canvas_draw_text(casteljau_canvas* canvas, const cast
                                             double size, double x, double y, const casteljau_paint* paint) {
     return with(canvas, [&](Canvas& c) {
         check_finite({x, y}, "text origin");
+        enable_svg_glyphs();
         draw_text(c, need(text, "text"), need(font, "font")->font, size, {x, y}, need(paint, "paint")->paint);
     });
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "capi/handles.hpp"
+#include "casteljau/svg.hpp"
 
 using namespace casteljau;
 using casteljau::capi::check_range;
@@ -79,6 +80,7 @@ casteljau_text_layout make_layout(const char* text, const casteljau_font* const*
     out.fonts = fonts_with(fonts, count, s.variations);
     std::vector<const Font*> chain;
     for (const auto& f : out.fonts) chain.push_back(f.get());
+    enable_svg_glyphs();  // colour glyphs of OpenType SVG fonts, measured in the layout too
     out.layout = layout_text(text, chain, s.style);
     out.palette = s.palette;
     for (const TextLine& line : out.layout.lines) {

@@ -20,6 +20,7 @@
 #include "casteljau/font.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/png.hpp"
+#include "casteljau/svg.hpp"
 #include "casteljau/text.hpp"
 #include "cli/cli.hpp"
 
@@ -228,6 +229,7 @@ void register_text(CLI::App& app) {
         std::vector<const Font*> chain;
         for (const Font& f : fonts) chain.push_back(&f);
 
+        enable_svg_glyphs();  // colour glyphs of OpenType SVG fonts, measured in the layout too
         const TextLayout layout = layout_text(text, chain, style);
         const Rect b = layout.bounds();
         const double x0 = std::floor(b.x0), y0 = std::floor(b.y0), x1 = std::ceil(b.x1), y1 = std::ceil(b.y1);

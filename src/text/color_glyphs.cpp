@@ -2,11 +2,16 @@
 // scaled by area averaging (src/text/color_glyphs.hpp). COLR paint graphs: colr_paint.cpp.
 #include "text/color_glyphs.hpp"
 
+#include "casteljau/text.hpp"
+
 #include <ft2build.h>
 #include FT_FREETYPE_H
 #include FT_COLOR_H
 
+#include <hb-ot.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <unordered_map>
@@ -14,9 +19,49 @@
 #include "casteljau/error.hpp"
 #include "text/font_impl.hpp"
 
+namespace casteljau {
+
+namespace {
+std::atomic<SvgGlyphDrawer> g_svg_glyph_drawer{nullptr};
+}  // namespace
+
+void set_svg_glyph_drawer(SvgGlyphDrawer drawer) { g_svg_glyph_drawer.store(drawer, std::memory_order_release); }
+SvgGlyphDrawer svg_glyph_drawer() { return g_svg_glyph_drawer.load(std::memory_order_acquire); }
+
+}  // namespace casteljau
+
 namespace casteljau::text_detail {
 
 namespace {
+
+// The SVG document of one glyph as the font's 'SVG ' table holds it (HarfBuzz finds it; empty
+// when the glyph has none), alive as long as this object.
+class SvgGlyphDocument {
+public:
+    SvgGlyphDocument(const Font::Impl& fi, std::uint32_t glyph)
+        : blob_(hb_ot_color_glyph_reference_svg(hb_font_get_face(fi.hb), glyph)) {}
+    ~SvgGlyphDocument() { hb_blob_destroy(blob_); }
+    SvgGlyphDocument(const SvgGlyphDocument&) = delete;
+    SvgGlyphDocument& operator=(const SvgGlyphDocument&) = delete;
+    std::string_view text() const {
+        unsigned length = 0;
+        const char* data = hb_blob_get_data(blob_, &length);
+        return data ? std::string_view(data, length) : std::string_view();
+    }
+
+private:
+    hb_blob_t* blob_;
+};
+
+// Bounds (font units, y up) of what an SVG glyph draws: see color_glyphs.hpp.
+Rect svg_glyph_bounds(const Font& font, std::uint32_t glyph) {
+    const GlyphMetrics g = font.glyph_metrics(glyph);
+    const FontMetrics& m = font.metrics();
+    Rect b{0, m.descender, std::max(g.advance, 0.0), m.ascender};
+    if (!g.bounds.empty()) b = b.united(g.bounds);
+    const double margin = 0.1 * font.units_per_em();
+    return {b.x0 - margin, b.y0 - margin, b.x1 + margin, b.y1 + margin};
+}
 
 // The strike to draw at `ppem` device pixels per em: the smallest at least as large, else the largest.
 FT_Int pick_strike(FT_Face face, double ppem) {
@@ -266,10 +311,16 @@ void draw_bitmap_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, do
 
 }  // namespace
 
+bool may_have_color_glyphs(const Font& font) {
+    const Font::Impl& fi = font.impl();
+    return fi.has_colr || fi.has_color_bitmaps || (fi.has_svg && svg_glyph_drawer());
+}
+
 ColorGlyphKind color_glyph_kind(const Font& font, std::uint32_t glyph) {
     const Font::Impl& fi = font.impl();
-    if (!fi.has_colr && !fi.has_color_bitmaps) return ColorGlyphKind::None;
+    if (!may_have_color_glyphs(font)) return ColorGlyphKind::None;
     if (glyph >= font.glyph_count()) return ColorGlyphKind::None;
+    if (fi.has_svg && svg_glyph_drawer() && SvgGlyphDocument(fi, glyph).text().size() > 0) return ColorGlyphKind::Svg;
     if (fi.has_colr) {
         if (has_colr_paint_graph(font, glyph)) return ColorGlyphKind::PaintGraph;
         FT_LayerIterator it{};
@@ -286,6 +337,7 @@ ColorGlyphKind color_glyph_kind(const Font& font, std::uint32_t glyph) {
 
 Rect color_glyph_bounds(const Font& font, std::uint32_t glyph) {
     const Font::Impl& fi = font.impl();
+    if (fi.has_svg && color_glyph_kind(font, glyph) == ColorGlyphKind::Svg) return svg_glyph_bounds(font, glyph);
     if (fi.has_colr) {
         const ColorGlyphKind kind = color_glyph_kind(font, glyph);
         if (kind == ColorGlyphKind::PaintGraph || kind == ColorGlyphKind::Layers) return colr_glyph_bounds(font, glyph);
@@ -312,20 +364,21 @@ std::vector<Color> font_palette(const Font& font, int palette) {
     return out;
 }
 
-void draw_color_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, double size, const Affine& to_device,
+bool draw_color_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, double size, const Affine& to_device,
                       Point origin, const Paint& paint, int palette) {
     const ColorGlyphKind kind = color_glyph_kind(font, glyph);
     const double opacity = std::clamp(paint.opacity, 0.0, 1.0);
     if (kind == ColorGlyphKind::Bitmap) {
         draw_bitmap_glyph(canvas, font, glyph, size, to_device, origin, opacity);
-        return;
+        return true;
     }
-    if (kind != ColorGlyphKind::PaintGraph && kind != ColorGlyphKind::Layers) return;
+    if (kind != ColorGlyphKind::PaintGraph && kind != ColorGlyphKind::Layers && kind != ColorGlyphKind::Svg)
+        return true;
     // The glyph's device bounds, drawn into a pixmap of that size and composited with the opacity.
     const double s = size / font.units_per_em();
     const Affine to_pixels = to_device * Affine{s, 0, 0, -s, origin.x, origin.y};
-    const Rect b = colr_glyph_bounds(font, glyph);
-    if (b.empty()) return;
+    const Rect b = kind == ColorGlyphKind::Svg ? svg_glyph_bounds(font, glyph) : colr_glyph_bounds(font, glyph);
+    if (b.empty()) return true;
     Rect device;
     bool first = true;
     for (Point p : {Point{b.x0, b.y0}, Point{b.x1, b.y0}, Point{b.x0, b.y1}, Point{b.x1, b.y1}}) {
@@ -341,19 +394,26 @@ void draw_color_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, dou
     const double y0 = std::max(std::floor(device.y0), static_cast<double>(clip.y0));
     const double x1 = std::min(std::ceil(device.x1), static_cast<double>(clip.x1));
     const double y1 = std::min(std::ceil(device.y1), static_cast<double>(clip.y1));
-    if (!(x1 > x0 && y1 > y0)) return;
+    if (!(x1 > x0 && y1 > y0)) return true;
     Pixmap layer(static_cast<int>(x1 - x0), static_cast<int>(y1 - y0));
     {
         Canvas sub(layer);
-        sub.set_transform(Affine::translate(-x0, -y0) * to_pixels);
         sub.fill_options() = canvas.fill_options();
-        Color fg = paint.color;
-        paint_colr_glyph(sub, font, glyph, font_palette(font, palette), fg);
+        if (kind == ColorGlyphKind::Svg) {
+            // The document's user units are font units with y down.
+            const Affine flip = Affine::translate(-x0, -y0) * to_pixels * Affine::scale(1, -1);
+            const SvgGlyphDocument doc(font.impl(), glyph);
+            if (!svg_glyph_drawer()(sub, doc.text(), glyph, flip, paint.color)) return false;
+        } else {
+            sub.set_transform(Affine::translate(-x0, -y0) * to_pixels);
+            paint_colr_glyph(sub, font, glyph, font_palette(font, palette), paint.color);
+        }
     }
     canvas.save();
     canvas.reset_transform();
     canvas.draw_image(layer, Affine::translate(x0, y0), ImageSampling::Nearest, opacity);
     canvas.restore();
+    return true;
 }
 
 }  // namespace casteljau::text_detail

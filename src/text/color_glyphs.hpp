@@ -1,5 +1,12 @@
-// Internal (text module): colour glyphs. Which glyphs of a font are coloured (COLR v1 paint
-// graphs, COLR v0 layers, CBDT/CBLC or sbix bitmaps), their bounds, and drawing one on a Canvas.
+// Internal (text module): colour glyphs. Which glyphs of a font are coloured (OpenType SVG
+// documents, COLR v1 paint graphs, COLR v0 layers, CBDT/CBLC or sbix bitmaps), their bounds, and
+// drawing one on a Canvas.
+//
+// SVG documents: drawn by the drawer of casteljau/text.hpp (set_svg_glyph_drawer) into a pixmap
+// the size of the glyph's device bounds, like COLR glyphs; the bounds are the outline's and the
+// line box's (ascender to descender over the advance) together, grown by a tenth of the em on
+// every side, since the document itself is not measured. They come first when a font has several
+// kinds, as in FreeType's FT_LOAD_COLOR.
 //
 // Bitmaps: the strike nearest above the device size (else the largest) is scaled to the device size
 // by area averaging (each device pixel takes the mean of the strike's pixels under it, weighted by
@@ -20,7 +27,11 @@
 
 namespace casteljau::text_detail {
 
-enum class ColorGlyphKind { None, Layers, PaintGraph, Bitmap };
+enum class ColorGlyphKind { None, Svg, Layers, PaintGraph, Bitmap };
+
+// Whether `font` has any colour table this module draws (an SVG table counts while an SVG glyph
+// drawer is set): without one, no glyph of it is a colour glyph.
+bool may_have_color_glyphs(const Font& font);
 
 // What kind of glyph `glyph` is; None for an ordinary outline glyph (and every glyph of a font with
 // no colour tables, cheaply).
@@ -33,8 +44,9 @@ Rect color_glyph_bounds(const Font& font, std::uint32_t glyph);
 std::vector<Color> font_palette(const Font& font, int palette);
 
 // Draws colour glyph `glyph` with its origin at `origin` (layout space of `to_device`, which maps
-// layout space to the canvas's pixels) at `size` px per em.
-void draw_color_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, double size, const Affine& to_device,
+// layout space to the canvas's pixels) at `size` px per em. Returns false when it drew nothing
+// because the glyph's SVG document could not be drawn (the caller fills the outline instead).
+bool draw_color_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, double size, const Affine& to_device,
                       Point origin, const Paint& paint, int palette);
 
 // COLR drawing (src/text/colr_paint.cpp): the glyph's paint graph (or v0 layers) on `canvas`, whose

@@ -29,9 +29,25 @@ constexpr double kMaxCachedOrigin = 1e8;
 // Whether a glyph is drawn in colour (COLR, CBDT, sbix) rather than as a coverage mask; a font
 // without colour tables answers at once.
 bool is_color(const Font& font, std::uint32_t glyph) {
-    const Font::Impl& fi = font.impl();
-    if (!fi.has_colr && !fi.has_color_bitmaps) return false;
+    if (!text_detail::may_have_color_glyphs(font)) return false;
     return text_detail::color_glyph_kind(font, glyph) != text_detail::ColorGlyphKind::None;
+}
+
+// Fills glyph g's outline (layout space of M, which maps it to the canvas's pixels).
+void fill_outline(Canvas& canvas, GlyphCache& gc, const Font& font, const PositionedGlyph& g, double size,
+                  const Affine& M, const Paint& paint, const FillOptions& fill) {
+    const Path& outline = gc.outline(font, g.glyph);
+    if (outline.empty()) return;
+    const double s = size / font.units_per_em();
+    canvas.save();
+    canvas.set_transform(M * Affine{s, 0, 0, -s, g.position.x, g.position.y});
+    try {
+        canvas.fill_path(outline, paint, fill);
+    } catch (...) {
+        canvas.restore();
+        throw;
+    }
+    canvas.restore();
 }
 
 }  // namespace
@@ -91,8 +107,14 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
         for (std::size_t i = 0; i < requests.size(); ++i) {
             if (color[i]) {
                 const PositionedGlyph& g = *color[i];
-                text_detail::draw_color_glyph(canvas, *layout.fonts[g.font], g.glyph, layout.size, M, g.position, paint,
-                                              options.palette);
+                const Font& font = *layout.fonts[g.font];
+                if (!text_detail::draw_color_glyph(canvas, font, g.glyph, layout.size, M, g.position, paint,
+                                                   options.palette)) {
+                    FillOptions fill = canvas.fill_options();
+                    fill.rule = FillRule::NonZero;
+                    fill.tolerance = options.tolerance;
+                    fill_outline(canvas, gc, font, g, layout.size, M, paint, fill);
+                }
                 continue;
             }
             const std::size_t mi = k++;
@@ -110,22 +132,10 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
     fill.tolerance = options.tolerance;
     for (const PositionedGlyph& g : layout.glyphs) {
         const Font& font = *layout.fonts[g.font];
-        if (is_color(font, g.glyph)) {
-            text_detail::draw_color_glyph(canvas, font, g.glyph, layout.size, M, g.position, paint, options.palette);
+        if (is_color(font, g.glyph) &&
+            text_detail::draw_color_glyph(canvas, font, g.glyph, layout.size, M, g.position, paint, options.palette))
             continue;
-        }
-        const Path& outline = gc.outline(font, g.glyph);
-        if (outline.empty()) continue;
-        const double s = layout.size / font.units_per_em();
-        canvas.save();
-        canvas.set_transform(M * Affine{s, 0, 0, -s, g.position.x, g.position.y});
-        try {
-            canvas.fill_path(outline, paint, fill);
-        } catch (...) {
-            canvas.restore();
-            throw;
-        }
-        canvas.restore();
+        fill_outline(canvas, gc, font, g, layout.size, M, paint, fill);
     }
 }
 

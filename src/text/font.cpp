@@ -410,6 +410,9 @@ Font Font::from_shared_bytes(std::shared_ptr<const std::uint8_t> bytes, std::siz
     impl->has_colr = FT_HAS_COLOR(face) &&
                      FT_Load_Sfnt_Table(face, FT_MAKE_TAG('C', 'O', 'L', 'R'), 0, nullptr, &colr_length) == 0 &&
                      colr_length > 0;
+    FT_ULong svg_length = 0;
+    impl->has_svg =
+        FT_Load_Sfnt_Table(face, FT_MAKE_TAG('S', 'V', 'G', ' '), 0, nullptr, &svg_length) == 0 && svg_length > 0;
     if (impl->bitmap_only) {
         // Colour bitmaps only: the largest strike (glyphs are scaled from it when drawn).
         FT_Int largest = 0;

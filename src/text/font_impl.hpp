@@ -32,6 +32,7 @@ struct Font::Impl {
     bool bitmap_only = false;
     bool has_colr = false;
     bool has_color_bitmaps = false;
+    bool has_svg = false;  // an 'SVG ' table (OpenType SVG glyph documents)
     // Decoded colour bitmaps, kept by src/text/color_glyphs.cpp (a Font serves one thread at a
     // time, so this needs no lock).
     std::shared_ptr<void> color_bitmap_cache;

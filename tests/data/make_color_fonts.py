@@ -8,6 +8,7 @@
 #                        CBDT/CBLC bitmaps (PNG, one strike of 109 ppem)
 #   emoji_sbix_test.ttf  the same three bitmaps in an sbix table (empty glyf outlines)
 #   colr_test.ttf        COLR v0/v1 and CPAL, described below.
+#   svg_test.ttf         an SVG table (OpenType SVG glyph documents), described below.
 # colr_test.ttf: units per em 1000, ascender 1000, descender 0. Outline glyphs: "square" (100..900 both ways) and
 # "inner" (300..700). Colour glyphs, mapped to letters:
 #   A  COLR v1: square filled with a linear gradient red -> blue from x 100 to 900, then inner with
@@ -19,6 +20,12 @@
 #   E  COLR v1: composite dest-out: square in blue with inner cut out
 #   F  COLR v1: square in palette entry 0 (red in palette 0, green in palette 1), clip box 100..500
 # Two palettes: 0 = red, blue, yellow, green; 1 = green, yellow, blue, red.
+# svg_test.ttf: units per em 1000, ascender 1000, descender 0; every letter has the outline "square"
+# (100..900 both ways, advance 1000) and an SVG document (user units: font units, y down):
+#   A  its own document: red rectangle x 100..900, y -900..-500 over a blue one, y -500..-100
+#   B  its own document, gzip-compressed: green rectangle x 200..600, y -700..-300
+#   C, D  one document for both: C the red rectangle x 100..500, D the blue one x 500..900 (y -900..-100)
+#   E  a malformed document (so the outline is drawn)
 import os
 import sys
 
@@ -52,6 +59,19 @@ def glyph(name, paint):
 
 def solid(index):
     return {"Format": ot.PaintFormat.PaintSolid, "PaletteIndex": index, "Alpha": 1.0}
+
+
+def square_em_tables(fb, names, glyphs, family):
+    """The outline, metrics and name tables of a test font of 1000 units per em, every glyph
+    advancing 1000, ascender 1000, descender 0."""
+    fb.setupGlyf(glyphs)
+    glyf = fb.font["glyf"]
+    # Left side bearings equal to the outlines' xMin, so that FreeType does not move them.
+    fb.setupHorizontalMetrics({n: (1000, getattr(glyf[n], "xMin", 0)) for n in names})
+    fb.setupHorizontalHeader(ascent=1000, descent=0)
+    fb.setupOS2(sTypoAscender=1000, sTypoDescender=0, sTypoLineGap=0, usWinAscent=1000, usWinDescent=0)
+    fb.setupNameTable({"familyName": family, "styleName": "Regular"})
+    fb.setupPost()
 
 
 def make_cbdt(out):
@@ -107,14 +127,7 @@ def make_colr(out):
     glyphs[".notdef"] = box(100, 0, 900, 800)
     glyphs["square"] = box(100, 100, 900, 900)
     glyphs["inner"] = box(300, 300, 700, 700)
-    fb.setupGlyf(glyphs)
-    glyf = fb.font["glyf"]
-    # Left side bearings equal to the outlines' xMin, so that FreeType does not move them.
-    fb.setupHorizontalMetrics({n: (1000, getattr(glyf[n], "xMin", 0)) for n in names})
-    fb.setupHorizontalHeader(ascent=1000, descent=0)
-    fb.setupOS2(sTypoAscender=1000, sTypoDescender=0, sTypoLineGap=0, usWinAscent=1000, usWinDescent=0)
-    fb.setupNameTable({"familyName": "Casteljau COLR Test", "styleName": "Regular"})
-    fb.setupPost()
+    square_em_tables(fb, names, glyphs, "Casteljau COLR Test")
     linear = {"Format": ot.PaintFormat.PaintLinearGradient, "ColorLine": stops((0, 0), (1, 1)),
               "x0": 100, "y0": 0, "x1": 900, "y1": 0, "x2": 100, "y2": 100}
     radial = {"Format": ot.PaintFormat.PaintRadialGradient, "ColorLine": stops((0, 2), (1, 3)),
@@ -147,11 +160,38 @@ def make_colr(out):
     fb.save(out)
 
 
+def make_svg(out):
+    from fontTools.ttLib import newTable
+    from fontTools.ttLib.tables.S_V_G_ import SVGDocument
+    names = [".notdef", "space", "A", "B", "C", "D", "E"]
+    fb = FontBuilder(1000, isTTF=True)
+    fb.setupGlyphOrder(names)
+    fb.setupCharacterMap({0x20: "space", 0x41: "A", 0x42: "B", 0x43: "C", 0x44: "D", 0x45: "E"})
+    glyphs = {n: box(100, 100, 900, 900) for n in names}
+    glyphs["space"] = empty()
+    square_em_tables(fb, names, glyphs, "Casteljau SVG Test")
+    ns = 'xmlns="http://www.w3.org/2000/svg"'
+    a = ('<svg %s><g id="glyph2"><rect x="100" y="-900" width="800" height="400" fill="#ff0000"/>'
+         '<rect x="100" y="-500" width="800" height="400" fill="#0000ff"/></g></svg>' % ns)
+    b = '<svg %s><rect id="glyph3" x="200" y="-700" width="400" height="400" fill="#00ff00"/></svg>' % ns
+    cd = ('<svg %s><rect id="glyph4" x="100" y="-900" width="400" height="800" fill="#ff0000"/>'
+          '<rect id="glyph5" x="500" y="-900" width="400" height="800" fill="#0000ff"/></svg>' % ns)
+    e = '<svg %s><g id="glyph6"><rect x="100" y="-900" width="800" height="800"' % ns
+    svg = newTable("SVG ")
+    svg.docList = [SVGDocument(a, 2, 2), SVGDocument(b, 3, 3, compressed=True), SVGDocument(cd, 4, 5),
+                   SVGDocument(e, 6, 6)]
+    fb.font["SVG "] = svg
+    fb.font.recalcTimestamp = False
+    fb.font["head"].created = fb.font["head"].modified = 0
+    fb.save(out)
+
+
 NOTO_EMOJI = "/usr/share/fonts/truetype/noto/NotoColorEmoji.ttf"
 EMOJI = [0x1F44B, 0x1F600, 0x2764]
 
 if __name__ == "__main__":
     folder = sys.argv[1] if len(sys.argv) > 1 else "."
     make_colr(os.path.join(folder, "colr_test.ttf"))
+    make_svg(os.path.join(folder, "svg_test.ttf"))
     make_cbdt(os.path.join(folder, "emoji_cbdt_test.ttf"))
     make_sbix(os.path.join(folder, "emoji_cbdt_test.ttf"), os.path.join(folder, "emoji_sbix_test.ttf"))

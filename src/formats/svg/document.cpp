@@ -40,6 +40,7 @@ SvgDocument SvgDocument::load(const std::string& path, const std::string& resour
 }
 
 SvgDocument SvgDocument::load(const std::string& path, const SvgOptions& options) {
+    enable_svg_glyphs();
     const std::vector<std::uint8_t> bytes = read_file(path);
     SvgOptions o = options;
     std::error_code ec;
@@ -51,6 +52,7 @@ SvgDocument SvgDocument::load(const std::string& path, const SvgOptions& options
 }
 
 SvgDocument SvgDocument::parse(std::string_view input, const SvgOptions& options) {
+    enable_svg_glyphs();
     auto impl = std::make_unique<Impl>();
     static_cast<svg::ConvertedDocument&>(*impl) = svg::convert_document(input, options);
     return SvgDocument(std::move(impl));

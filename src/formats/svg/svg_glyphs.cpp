@@ -1,0 +1,86 @@
+// Formats stage: OpenType SVG glyphs ('SVG ' table) drawn by the SVG reader, as the text stage's
+// SVG glyph drawer (casteljau/text.hpp, SvgGlyphDrawer; installed by enable_svg_glyphs()).
+//
+// A glyph's document is read with export_id "glyphN", so only the glyph's element is drawn when
+// the document holds several glyphs, and with no system fonts (glyph documents draw shapes). The
+// document has no viewport of its own here: its user units are font units with y down, mapped by
+// the transform the text stage gives, and nothing clips it but the pixmap the text stage draws
+// it into. currentColor is the document's own (black unless it sets `color`). A document that
+// cannot be read (malformed, no element for the glyph, beyond the SVG limits) is reported as not
+// drawable, and the text stage fills the glyph's outline instead.
+//
+// Converted documents are kept, by the address, size and bytes of the font's document and the
+// glyph, in a cache of kCachedGlyphs entries per process (emptied when full), so a glyph repeated
+// in a text, or drawn again, is converted once.
+// Thread-safety: the cache is locked; converted documents are immutable and drawn concurrently.
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <string_view>
+#include <tuple>
+
+#include "casteljau/error.hpp"
+#include "casteljau/svg.hpp"
+#include "casteljau/text.hpp"
+
+namespace casteljau {
+
+namespace {
+
+constexpr std::size_t kCachedGlyphs = 512;
+
+struct CachedGlyph {
+    std::string document;                      // the bytes, to tell apart documents at a reused address
+    std::shared_ptr<const SvgDocument> drawn;  // null: the document cannot be drawn
+};
+
+struct GlyphCacheState {
+    std::mutex mutex;
+    std::map<std::tuple<const char*, std::size_t, std::uint32_t>, CachedGlyph> entries;
+};
+
+GlyphCacheState& cache() {
+    static GlyphCacheState state;
+    return state;
+}
+
+// The converted document of `glyph`, or null when it cannot be drawn.
+std::shared_ptr<const SvgDocument> convert_glyph(std::string_view document, std::uint32_t glyph) {
+    GlyphCacheState& c = cache();
+    const auto key = std::make_tuple(document.data(), document.size(), glyph);
+    {
+        std::lock_guard<std::mutex> lock(c.mutex);
+        const auto it = c.entries.find(key);
+        if (it != c.entries.end() && it->second.document == document) return it->second.drawn;
+    }
+    SvgOptions options;
+    options.export_id = "glyph" + std::to_string(glyph);
+    options.system_fonts = false;
+    std::shared_ptr<const SvgDocument> drawn;
+    try {
+        drawn = std::make_shared<const SvgDocument>(SvgDocument::parse(document, options));
+    } catch (const Error&) { drawn = nullptr; }
+    std::lock_guard<std::mutex> lock(c.mutex);
+    if (c.entries.size() >= kCachedGlyphs) c.entries.clear();
+    c.entries[key] = CachedGlyph{std::string(document), drawn};
+    return drawn;
+}
+
+bool draw_svg_glyph(Canvas& canvas, std::string_view document, std::uint32_t glyph, const Affine& font_to_canvas,
+                    Color /*foreground: glyph documents keep their own colours*/) {
+    const std::shared_ptr<const SvgDocument> drawn = convert_glyph(document, glyph);
+    if (!drawn) return false;
+    drawn->render(canvas, font_to_canvas);
+    return true;
+}
+
+}  // namespace
+
+void enable_svg_glyphs() {
+    if (svg_glyph_drawer() != &draw_svg_glyph) set_svg_glyph_drawer(&draw_svg_glyph);
+}
+
+}  // namespace casteljau
