@@ -1,5 +1,5 @@
-// libFuzzer target: image decoding (PNG through libpng, JPEG through libjpeg-turbo, and the
-// format sniffing in front of them). Invariants: bad bytes end in casteljau::Error; a decoded
+// libFuzzer target: image decoding (PNG through libpng, JPEG through libjpeg-turbo, GIF through
+// giflib, WebP through libwebp, and the format sniffing in front of them). Invariants: bad bytes end in casteljau::Error; a decoded
 // image has a size within the canvas limits and exactly width x height pixels.
 #include <span>
 
@@ -25,5 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::run([&] { check(decode_image(bytes)); });
     fuzz::run([&] { check(decode_png(bytes)); });
     fuzz::run([&] { check(decode_jpeg(bytes)); });
+    fuzz::run([&] { check(decode_gif(bytes)); });
+    fuzz::run([&] { check(decode_webp(bytes)); });
     return 0;
 }

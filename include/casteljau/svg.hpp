@@ -14,7 +14,7 @@
 // with the cascade presentation attribute < sheet < style attribute and !important; clipPath and
 // mask (units, clip-rule, mask-type, nested), as exact-area coverage masks of layers; markers
 // (on every shape, SVG 2); the root svg's own opacity, display, clip-path, mask and filter;
-// group opacity, mix-blend-mode and isolation; <image> (PNG, JPEG, SVG; see SvgOptions).
+// group opacity, mix-blend-mode and isolation; <image> (PNG, JPEG, GIF, WebP, SVG; see SvgOptions).
 // Filters: the filter property (url() lists and the CSS filter functions) with every filter
 // primitive, evaluated by the filter stage (casteljau/filter.hpp) in device pixels after the
 // element is drawn into a layer, before its clip, mask and opacity

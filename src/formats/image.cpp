@@ -1,5 +1,6 @@
 // Formats stage: raster images (include/casteljau/image.hpp): the format named by the bytes'
-// signature, and decoding by it (PNG in png.cpp, JPEG in jpeg.cpp).
+// signature, and decoding by it (PNG in png.cpp, JPEG in jpeg.cpp, GIF in gif.cpp, WebP in
+// webp.cpp).
 #include "casteljau/image.hpp"
 
 #include <algorithm>
@@ -31,12 +32,12 @@ Pixmap decode_image(std::span<const std::uint8_t> bytes) {
     switch (sniff_image(bytes)) {
         case ImageFormat::Png: return decode_png(bytes);
         case ImageFormat::Jpeg: return decode_jpeg(bytes);
-        case ImageFormat::Gif: throw Error(ErrorKind::InvalidData, "GIF images are not supported");
-        case ImageFormat::Webp: throw Error(ErrorKind::InvalidData, "WebP images are not supported");
+        case ImageFormat::Gif: return decode_gif(bytes);
+        case ImageFormat::Webp: return decode_webp(bytes);
         case ImageFormat::Svg: throw Error(ErrorKind::InvalidData, "an SVG image is not a raster image");
         case ImageFormat::Unknown: break;
     }
-    throw Error(ErrorKind::InvalidData, "unrecognised image data (not PNG or JPEG)");
+    throw Error(ErrorKind::InvalidData, "unrecognised image data (not PNG, JPEG, GIF or WebP)");
 }
 
 }  // namespace casteljau
