@@ -159,7 +159,7 @@ Affine parse_svg_transform(std::string_view text);
 // and others) in their colours. SvgDocument::parse and load call it, and so does the casteljau
 // command; a program drawing text without reading SVG calls it once before drawing. Each glyph
 // document is read with export_id "glyphN" and no system fonts; currentColor is black. Converted
-// glyph documents are cached per process (at most 512, by the font's document bytes and the glyph).
+// glyph documents are cached per process (at most 512, by font and glyph).
 // Thread-safety: call it before drawing text on several threads.
 void enable_svg_glyphs();
 

@@ -35,11 +35,13 @@ namespace casteljau::text_detail {
 namespace {
 
 // The SVG document of one glyph as the font's 'SVG ' table holds it (HarfBuzz finds it; empty
-// when the glyph has none), alive as long as this object.
+// when the glyph has none), alive as long as this object, and its key for the drawer's caches: the
+// font's serial number (a glyph has one document, so the font and the glyph name it).
 class SvgGlyphDocument {
 public:
     SvgGlyphDocument(const Font::Impl& fi, std::uint32_t glyph)
-        : blob_(hb_ot_color_glyph_reference_svg(hb_font_get_face(fi.hb), glyph)) {}
+        : blob_(hb_ot_color_glyph_reference_svg(hb_font_get_face(fi.hb), glyph)), key_(fi.serial) {}
+    std::uint64_t key() const { return key_; }
     ~SvgGlyphDocument() { hb_blob_destroy(blob_); }
     SvgGlyphDocument(const SvgGlyphDocument&) = delete;
     SvgGlyphDocument& operator=(const SvgGlyphDocument&) = delete;
@@ -51,6 +53,7 @@ public:
 
 private:
     hb_blob_t* blob_;
+    std::uint64_t key_;
 };
 
 // Bounds (font units, y up) of what an SVG glyph draws: see color_glyphs.hpp.
@@ -403,7 +406,7 @@ bool draw_color_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, dou
             // The document's user units are font units with y down.
             const Affine flip = Affine::translate(-x0, -y0) * to_pixels * Affine::scale(1, -1);
             const SvgGlyphDocument doc(font.impl(), glyph);
-            if (!svg_glyph_drawer()(sub, doc.text(), glyph, flip, paint.color)) return false;
+            if (!svg_glyph_drawer()(sub, doc.text(), doc.key(), glyph, flip, paint.color)) return false;
         } else {
             sub.set_transform(Affine::translate(-x0, -y0) * to_pixels);
             paint_colr_glyph(sub, font, glyph, font_palette(font, palette), paint.color);

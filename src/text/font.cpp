@@ -16,6 +16,7 @@
 #include <hb-ot.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -308,6 +309,11 @@ void Font::Impl::load_glyph(std::uint32_t glyph) const {
     if (err) font_error(source, "cannot load glyph " + std::to_string(glyph) + ": " + ft_error_text(err));
     if (face->glyph->format != FT_GLYPH_FORMAT_OUTLINE)
         font_error(source, "glyph " + std::to_string(glyph) + " has no outline");
+}
+
+std::uint64_t Font::Impl::next_serial() {
+    static std::atomic<std::uint64_t> counter{0};
+    return counter.fetch_add(1, std::memory_order_relaxed);
 }
 
 void Font::Impl::variations_changed() {

@@ -47,6 +47,8 @@ struct Font::Impl {
     // Identity of this Font for caches: a cache holds a weak_ptr to it, so an entry made for a
     // destroyed Font is never mistaken for one of a new Font at the same address.
     std::shared_ptr<const int> token = std::make_shared<const int>(0);
+    // A number no other Font of this process has had or will have (cache keys that outlive it).
+    std::uint64_t serial = next_serial();
 
     Impl() = default;
     Impl(const Impl&) = delete;
@@ -57,6 +59,9 @@ struct Font::Impl {
     void variations_changed();
     // Loads a glyph's unhinted outline into face->glyph; throws Error(Font).
     void load_glyph(std::uint32_t glyph) const;
+
+private:
+    static std::uint64_t next_serial();
 };
 
 // Font units per 1/64 unit: FreeType and HarfBuzz values are divided by this.

@@ -4,8 +4,12 @@
 // the same glyphs from an SVG document's text and from `casteljau text`.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include "casteljau/canvas.hpp"
 #include "casteljau/png.hpp"
@@ -107,6 +111,29 @@ TEST_CASE("SVG glyphs: a malformed document falls back to the outline, and opaci
     CHECK(box.x0 <= 10);
     CHECK(box.x1 >= 90);
     CHECK(box.y1 - box.y0 >= 80);
+}
+
+TEST_CASE("SVG glyphs: two fonts whose documents differ for one glyph each draw their own", "[svg][text][color]") {
+    enable_svg_glyphs();
+    std::ifstream f(kSvgFont, std::ios::binary);
+    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    // The same font with glyph A's red turned cyan (the document is stored uncompressed).
+    const std::string red = "#ff0000", cyan = "#00ffff";
+    const auto at = std::search(bytes.begin(), bytes.end(), red.begin(), red.end());
+    REQUIRE(at != bytes.end());
+    std::copy(cyan.begin(), cyan.end(), at);
+    const Font original = Font::load(kSvgFont);
+    const Font patched = Font::from_memory(bytes);
+    auto pixel = [](const Font& font) {
+        Pixmap pm(120, 120);
+        Canvas canvas(pm);
+        draw_text(canvas, "A", font, 100, Point{10.25, 10.5}, Paint::solid(Color::black()));
+        return pm.pixel(50, 40);
+    };
+    for (int round = 0; round < 2; ++round) {  // the second time from the converted documents kept
+        CHECK(is(pixel(original), 255, 0, 0, 255));
+        CHECK(is(pixel(patched), 0, 255, 255, 255));
+    }
 }
 
 TEST_CASE("SVG glyphs: an SVG document's text and the text command draw them in colour", "[svg][text][color][cli]") {

@@ -9,18 +9,17 @@
 // cannot be read (malformed, no element for the glyph, beyond the SVG limits) is reported as not
 // drawable, and the text stage fills the glyph's outline instead.
 //
-// Converted documents are kept, by the address, size and bytes of the font's document and the
-// glyph, in a cache of kCachedGlyphs entries per process (emptied when full), so a glyph repeated
-// in a text, or drawn again, is converted once.
+// Converted documents are kept, by the document key the text stage gives (the font's serial number,
+// never reused in a process) and the glyph, in a cache of kCachedGlyphs entries per process
+// (emptied when full), so a glyph repeated in a text, or drawn again, is converted once.
 // Thread-safety: the cache is locked; converted documents are immutable and drawn concurrently.
 #include <cstdint>
-#include <cstring>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <string_view>
-#include <tuple>
+#include <utility>
 
 #include "casteljau/error.hpp"
 #include "casteljau/svg.hpp"
@@ -32,14 +31,10 @@ namespace {
 
 constexpr std::size_t kCachedGlyphs = 512;
 
-struct CachedGlyph {
-    std::string document;                      // the bytes, to tell apart documents at a reused address
-    std::shared_ptr<const SvgDocument> drawn;  // null: the document cannot be drawn
-};
-
 struct GlyphCacheState {
     std::mutex mutex;
-    std::map<std::tuple<const char*, std::size_t, std::uint32_t>, CachedGlyph> entries;
+    // Null: the document cannot be drawn.
+    std::map<std::pair<std::uint64_t, std::uint32_t>, std::shared_ptr<const SvgDocument>> entries;
 };
 
 GlyphCacheState& cache() {
@@ -48,13 +43,12 @@ GlyphCacheState& cache() {
 }
 
 // The converted document of `glyph`, or null when it cannot be drawn.
-std::shared_ptr<const SvgDocument> convert_glyph(std::string_view document, std::uint32_t glyph) {
+std::shared_ptr<const SvgDocument> convert_glyph(std::string_view document, std::uint64_t key, std::uint32_t glyph) {
     GlyphCacheState& c = cache();
-    const auto key = std::make_tuple(document.data(), document.size(), glyph);
     {
         std::lock_guard<std::mutex> lock(c.mutex);
-        const auto it = c.entries.find(key);
-        if (it != c.entries.end() && it->second.document == document) return it->second.drawn;
+        const auto it = c.entries.find({key, glyph});
+        if (it != c.entries.end()) return it->second;
     }
     SvgOptions options;
     options.export_id = "glyph" + std::to_string(glyph);
@@ -65,13 +59,13 @@ std::shared_ptr<const SvgDocument> convert_glyph(std::string_view document, std:
     } catch (const Error&) { drawn = nullptr; }
     std::lock_guard<std::mutex> lock(c.mutex);
     if (c.entries.size() >= kCachedGlyphs) c.entries.clear();
-    c.entries[key] = CachedGlyph{std::string(document), drawn};
+    c.entries[{key, glyph}] = drawn;
     return drawn;
 }
 
-bool draw_svg_glyph(Canvas& canvas, std::string_view document, std::uint32_t glyph, const Affine& font_to_canvas,
-                    Color /*foreground: glyph documents keep their own colours*/) {
-    const std::shared_ptr<const SvgDocument> drawn = convert_glyph(document, glyph);
+bool draw_svg_glyph(Canvas& canvas, std::string_view document, std::uint64_t key, std::uint32_t glyph,
+                    const Affine& font_to_canvas, Color /*foreground: glyph documents keep their own colours*/) {
+    const std::shared_ptr<const SvgDocument> drawn = convert_glyph(document, key, glyph);
     if (!drawn) return false;
     drawn->render(canvas, font_to_canvas);
     return true;
