@@ -1,7 +1,7 @@
 // casteljau/limits.hpp: every limit of the library: the resource limits that bound what untrusted
-// input (SVG, GeoJSON, TopoJSON, PNG, JPEG, fonts, path data, style sheets) can make the library
-// allocate or compute, fixed (namespace limits, compile-time constants) or readable and settable at
-// run time (Limits).
+// input (SVG, GeoJSON, TopoJSON, PNG, JPEG, GIF, WebP, fonts, path data, style sheets) can make
+// the library allocate or compute, fixed (namespace limits, compile-time constants) or readable
+// and settable at run time (Limits).
 //
 // Each field of Limits has a default (the values in README.md "Limits") and a ceiling
 // (Limits::ceilings()). Every limit may be lowered to 1 (svg_image_nesting to 0: no SVG document
