@@ -15,6 +15,7 @@
 // destructible locals, and so do the callbacks libpng calls, so a longjmp never skips a C++
 // destructor; every C++ object (Pixmap, vectors, the libpng handles' guards) lives in the caller.
 #include "casteljau/png.hpp"
+#include "formats/straight_alpha.hpp"
 
 #include <png.h>
 
@@ -349,17 +350,7 @@ Pixmap decode_png(std::span<const std::uint8_t> bytes) {
     if (!png_read_rgba8(h.png, h.info, rows.data(), pixmap.stride()))
         throw Error(ErrorKind::InvalidData, std::string("invalid PNG: ") + state.sink.message);
 
-    // Straight alpha in the file -> premultiplied in the Pixmap.
-    for (int y = 0; y < pixmap.height(); ++y) {
-        std::uint8_t* p = pixmap.row(y);
-        for (int x = 0; x < pixmap.width(); ++x, p += 4) {
-            const PremulPixel q = premultiply(Color{p[0], p[1], p[2], p[3]});
-            p[0] = q.r;
-            p[1] = q.g;
-            p[2] = q.b;
-            p[3] = q.a;
-        }
-    }
+    formats_detail::premultiply_in_place(pixmap);  // straight alpha in the file
     return pixmap;
 }
 

@@ -9,6 +9,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/image.hpp"
+#include "formats/straight_alpha.hpp"
 
 namespace casteljau {
 
@@ -23,17 +24,7 @@ Pixmap decode_webp(std::span<const std::uint8_t> bytes) {
     const std::size_t size = pixmap.stride() * static_cast<std::size_t>(pixmap.height());
     if (!WebPDecodeRGBAInto(bytes.data(), bytes.size(), pixmap.data(), size, static_cast<int>(pixmap.stride())))
         throw Error(ErrorKind::InvalidData, "invalid WebP: corrupt or truncated image data");
-    for (int y = 0; y < pixmap.height(); ++y) {
-        std::uint8_t* p = pixmap.row(y);
-        for (int x = 0; x < pixmap.width(); ++x, p += 4) {
-            if (p[3] == 255) continue;
-            const PremulPixel q = premultiply(Color{p[0], p[1], p[2], p[3]});
-            p[0] = q.r;
-            p[1] = q.g;
-            p[2] = q.b;
-            p[3] = q.a;
-        }
-    }
+    formats_detail::premultiply_in_place(pixmap);
     return pixmap;
 }
 

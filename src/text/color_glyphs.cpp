@@ -340,11 +340,9 @@ ColorGlyphKind color_glyph_kind(const Font& font, std::uint32_t glyph) {
 
 Rect color_glyph_bounds(const Font& font, std::uint32_t glyph) {
     const Font::Impl& fi = font.impl();
-    if (fi.has_svg && color_glyph_kind(font, glyph) == ColorGlyphKind::Svg) return svg_glyph_bounds(font, glyph);
-    if (fi.has_colr) {
-        const ColorGlyphKind kind = color_glyph_kind(font, glyph);
-        if (kind == ColorGlyphKind::PaintGraph || kind == ColorGlyphKind::Layers) return colr_glyph_bounds(font, glyph);
-    }
+    const ColorGlyphKind kind = color_glyph_kind(font, glyph);
+    if (kind == ColorGlyphKind::Svg) return svg_glyph_bounds(font, glyph);
+    if (kind == ColorGlyphKind::PaintGraph || kind == ColorGlyphKind::Layers) return colr_glyph_bounds(font, glyph);
     StrikeBitmap bm;
     FT_Int largest = 0;
     for (FT_Int i = 1; i < fi.face->num_fixed_sizes; ++i)

@@ -26,11 +26,19 @@ namespace {
 // canvas anyway and integer arithmetic stays far from overflow.
 constexpr double kMaxCachedOrigin = 1e8;
 
-// Whether a glyph is drawn in colour (COLR, CBDT, sbix) rather than as a coverage mask; a font
+// Whether a glyph is drawn in colour (SVG, COLR, CBDT, sbix) rather than as a coverage mask; a font
 // without colour tables answers at once.
 bool is_color(const Font& font, std::uint32_t glyph) {
     if (!text_detail::may_have_color_glyphs(font)) return false;
     return text_detail::color_glyph_kind(font, glyph) != text_detail::ColorGlyphKind::None;
+}
+
+// The fill options of glyph outlines drawn as paths: the canvas's, nonzero, at the text tolerance.
+FillOptions outline_fill(Canvas& canvas, const TextDrawOptions& options) {
+    FillOptions fill = canvas.fill_options();
+    fill.rule = FillRule::NonZero;
+    fill.tolerance = options.tolerance;
+    return fill;
 }
 
 // Fills glyph g's outline (layout space of M, which maps it to the canvas's pixels).
@@ -109,12 +117,8 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
                 const PositionedGlyph& g = *color[i];
                 const Font& font = *layout.fonts[g.font];
                 if (!text_detail::draw_color_glyph(canvas, font, g.glyph, layout.size, M, g.position, paint,
-                                                   options.palette)) {
-                    FillOptions fill = canvas.fill_options();
-                    fill.rule = FillRule::NonZero;
-                    fill.tolerance = options.tolerance;
-                    fill_outline(canvas, gc, font, g, layout.size, M, paint, fill);
-                }
+                                                   options.palette))
+                    fill_outline(canvas, gc, font, g, layout.size, M, paint, outline_fill(canvas, options));
                 continue;
             }
             const std::size_t mi = k++;
@@ -127,9 +131,7 @@ void draw_text(Canvas& canvas, const TextLayout& layout, Point origin, const Pai
     }
     if (!(options.tolerance >= 1e-4 && options.tolerance <= 10))
         throw Error(ErrorKind::InvalidArgument, "draw_text: tolerance must be in [1e-4, 10] px");
-    FillOptions fill = canvas.fill_options();
-    fill.rule = FillRule::NonZero;
-    fill.tolerance = options.tolerance;
+    const FillOptions fill = outline_fill(canvas, options);
     for (const PositionedGlyph& g : layout.glyphs) {
         const Font& font = *layout.fonts[g.font];
         if (is_color(font, g.glyph) &&
