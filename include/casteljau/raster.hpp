@@ -77,8 +77,8 @@ Topology classify_topology(const Path& path);
 // t / max_tolerance pixels per unit up. It proves more than classify_topology(path) (a path
 // proven there is proven here, within the same work budget): two segments whose hulls overlap, such as the two sides of a thin
 // curved stroke, are apart when every pair of chords the flattener can draw for them at one such
-// tolerance is apart (cubics and conics are halved while their flatness bound exceeds the
-// tolerance, so their chords are known in advance; see src/raster/topology.cpp). The verdict
+// tolerance is apart (conics are halved while their flatness bound exceeds the tolerance, so
+// their chords are known in advance; see src/raster/topology.cpp). The verdict
 // says nothing about other maps: a non-uniform scale or a shear flattens differently. Throws
 // Error(InvalidArgument) unless max_tolerance is positive and finite. Thread-safe.
 Topology classify_topology(const Path& path, double max_tolerance);

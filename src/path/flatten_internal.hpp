@@ -133,9 +133,10 @@ struct Flattener {
     }
 
     // Cubics and conics are halved at t = 1/2 while their bound exceeds the tolerance, so every
-    // chord joins the ends of one node of the halving tree: classify_topology's verdict for
-    // similarity maps (src/raster/topology.cpp, chords_apart and hull_areas) depends on exactly
-    // this rule and these bounds; change them together.
+    // chord joins the ends of one node of the halving tree. Area-balanced cubics (the fill's) are
+    // cut into equal pieces instead (balanced_cubic): classify_topology (src/raster/topology.cpp)
+    // takes a conic's chords from its halving tree and a quadratic's or cubic's from anywhere in
+    // its hull, and checks that a cubic's balanced pieces cannot cross; change them together.
     //
     // A cubic's halving tree is walked without computing the halves. With D0 = P0 - 2 P1 + P2,
     // D1 = P1 - 2 P2 + P3 and L(t) = (1 - t) D0 + t D1 (B''(t) = 6 L(t)), the node over
@@ -145,12 +146,13 @@ struct Flattener {
     // emits B(t0 + h), evaluated in the power basis; the last one emits P3 itself. This is the
     // same rule and the same chords as de Casteljau halving, at a fraction of its cost (no control
     // points are split or stacked), up to rounding in the last bits of the points and bounds.
-    void cubic(Point a, Point b, Point c, Point d) {
+    [[gnu::always_inline]] inline void cubic(Point a, Point b, Point c, Point d) {
         const Point p0 = m(a), p1 = m(b), p2 = m(c), p3 = m(d);
         if (culled({p0, p1, p2, p3})) return emit(p3);
         const Point D0 = p0 - p1 * 2 + p2, D1 = p1 - p2 * 2 + p3;
         const double s0 = sq(D0), s1 = sq(D1);
         if (!(0.5625 * std::max(s0, s1) > tol2)) return emit(p3);
+        if (balanced) return balanced_cubic(p0, p1, p3, D0, D1, std::max(s0, s1));
         // B(t) = p0 + t (3 (p1 - p0) + t (3 D0 + t (D1 - D0))); L(t) = D0 + t (D1 - D0).
         const Point E = D1 - D0, C1 = (p1 - p0) * 3, C2 = D0 * 3;
         // Node (k, j) covers [t0, t0 + h] with h = 2^-k, t0 = j h; it is halved while |L|^2 at
@@ -190,6 +192,37 @@ struct Flattener {
                 lim *= 0.0625;
             }
         }
+    }
+
+    // Area-balanced cubic pieces (`balanced`): n pieces of equal parameter length h = 1 / n, every
+    // interior vertex B(t) moved by -(h^2 / 2) L(t). With L linear, on a piece starting at L0 with
+    // slope E (L = L0 + u h E), the curve minus the line between the moved vertices is
+    //   e(u) = h^2 L0 (1/2 - 3 u (1 - u)) + h^3 E (u^3 - u / 2),
+    // and both terms integrate to zero over u in [0, 1]: interior pieces lose no area, as the
+    // balanced quadratic pieces (the quadratic is the case E = 0). |e| <= (1/2) h^2 |L0| +
+    // (1/2) h^3 |E| there; on the two end pieces (one end fixed) the first coefficient becomes
+    // max|u (3 u - 5/2)| = 25/48. So n is the smallest with h^2 (25/48 M + h |E| / 2) <= tol,
+    // M = max(|D0|, |D1|) >= |L| everywhere. The moved vertices keep non-negative Bernstein
+    // weights, so they stay in the control points' hull.
+    void balanced_cubic(Point p0, Point p1, Point p3, Point D0, Point D1, double m2) {
+        const Point E = D1 - D0, C1 = (p1 - p0) * 3, C2 = D0 * 3;
+        const double M = std::sqrt(m2), e = std::sqrt(sq(E)), tol = std::sqrt(tol2);
+        constexpr int kMaxPieces = 1 << limits::kMaxFlattenDepth;
+        auto fits = [&](double n) { return (25.0 / 48.0) * M * n + 0.5 * e <= tol * n * n * n; };
+        int n = 2;
+        while (n < 16 && !fits(n)) ++n;
+        if (n == 16 && !fits(n)) {
+            const double q = std::ceil(std::sqrt((25.0 / 48.0) * M / tol));
+            n = q < kMaxPieces ? static_cast<int>(q) : kMaxPieces;
+            while (n < kMaxPieces && !fits(n)) ++n;
+        }
+        const double h = 1.0 / n, k = 0.5 * h * h;
+        const Point base = p0 - D0 * k, slope = E * k;
+        for (int i = 1; i < n; ++i) {
+            const double t = i * h;
+            emit(base + (C1 + (C2 + E * t) * t) * t - slope * t);
+        }
+        emit(p3);
     }
 
     void conic(Point a, Point b, Point c, double w) {

@@ -6,9 +6,9 @@
 // -1) over the whole plane: then nonzero and even-odd agree with |integral| in every pixel. The
 // classifier proves this from the path's control points, in the path's own coordinates, in three
 // steps:
-//   1. No segment crosses itself (a cubic must have control points monotone in x or in y; lines,
-//      quadratics and conics cannot), and no two segments meet, except consecutive segments of a
-//      contour at their shared end point.
+//   1. No segment crosses itself (a cubic must have control points monotone in x or in y, with
+//      the margin its area-balanced pieces need; lines, quadratics and conics cannot), and no two
+//      segments meet, except consecutive segments of a contour at their shared end point.
 //      Every segment (line, quadratic, cubic, conic with a positive weight) lies in the convex hull
 //      of its control points, and so does every chord the flattener draws between two of its
 //      points. Two segments are apart when a line separates their hulls: the candidate lines run
@@ -22,11 +22,11 @@
 //      segment but stay inside its whole hull, so the verdict holds for the flattened polygon at
 //      any tolerance.
 //      The verdict for similarity maps (classify_topology(path, max_tolerance)) goes further for
-//      two non-adjacent segments whose hulls meet: the flattener halves cubics and conics while
-//      their flatness bound exceeds the tolerance, and under a similarity map of scale s that
-//      bound is s times the one in path units, so which chords it draws at tolerance tol depends
-//      only on lambda = tol / s. chords_apart walks both halving trees and requires every two
-//      chords that can be drawn at one lambda in (0, max_tolerance] to be apart (quadratics,
+//      two non-adjacent segments whose hulls meet: the flattener halves conics while their
+//      flatness bound exceeds the tolerance, and under a similarity map of scale s that bound is
+//      s times the one in path units, so which chords it draws at tolerance tol depends only on
+//      lambda = tol / s. chords_apart walks both halving trees and requires every two chords that
+//      can be drawn at one lambda in (0, max_tolerance] to be apart (quadratics and cubics,
 //      flattened in equal pieces, stand for their chords by their whole hulls). Two things the
 //      curves' own configuration no longer carries over to the flattened one are then checked:
 //      each contour's orientation is decided with a slack of its segments' hull areas (any
@@ -165,17 +165,20 @@ private:
     bool boxes_apart(const Rect& a, const Rect& b) const {
         return a.x1 + delta_ < b.x0 || b.x1 + delta_ < a.x0 || a.y1 + delta_ < b.y0 || b.y1 + delta_ < a.y0;
     }
-    bool separated(const Point* a, int na, const Point* b, int nb);
+    bool separated(const Point* a, int na, const Point* b, int nb, double gap = 0);
     bool disjoint(const Seg& a, const Seg& b, int depth);
     bool sectors_apart(const Seg& a, const Seg& b) const;
     bool meet_only_at_end(const Seg& a, const Seg& b, int depth);
-    // The flattener's bound of a cubic or conic node in path units (0 for lines and quadratics,
+    // The flattener's bound of a conic node in path units (0 for lines, quadratics and cubics,
     // which it does not halve). Rounding of the bounds (here in path units, in pixels in the
     // flattener) is covered by widening every comparison with them by a relative kBoundSlack.
     static double halving_bound(const Seg& s);
     static constexpr double kBoundSlack = 0x1p-30;
+    static constexpr int kBandDepth = 12;  // halvings of a pair in bands_apart
     static void as_root(Seg& s);
     bool chords_apart(const Seg& a, const Seg& b);
+    static double band(const Seg& s, double lambda);
+    bool bands_apart(const Seg& a, const Seg& b, double gap, int depth);
     bool winding_about(const Seg& s, Point p, int depth, int& w);
     bool orientation(std::size_t c, int& o, double slack) const;
     double hull_areas(std::size_t c) const;
@@ -183,13 +186,13 @@ private:
 };
 
 // Is there a line, through two control points of a or of b or perpendicular to such a pair, with
-// a's hull and b's hull strictly on its two sides (by more than delta)?
-bool Classifier::separated(const Point* a, int na, const Point* b, int nb) {
+// a's hull and b's hull strictly on its two sides (by more than delta, plus `gap`)?
+bool Classifier::separated(const Point* a, int na, const Point* b, int nb, double gap) {
     --budget_;
     auto try_dir = [&](Point o, Point d) {
         const double len = std::max(std::abs(d.x), std::abs(d.y));
         if (len == 0) return false;
-        const double margin = delta_ * len;
+        const double margin = delta_ * len + (gap > 0 ? gap * std::hypot(d.x, d.y) : 0.0);
         double amin = INFINITY, amax = -INFINITY, bmin = INFINITY, bmax = -INFINITY;
         for (int i = 0; i < na; ++i) {
             const double v = cross(d, a[i] - o);
@@ -325,15 +328,14 @@ bool Classifier::meet_only_at_end(const Seg& a, const Seg& b, int depth) {
     return disjoint(a0, b, depth - 1) && disjoint(a1, b1, depth - 1) && meet_only_at_end(a1, b0, depth - 1);
 }
 
-// The flattener halves cubics and conics at t = 1/2 (de Casteljau) while their flatness bound
+// The flattener halves conics at t = 1/2 (de Casteljau) while their flatness bound
 // exceeds the tolerance, so every chord it draws for such a segment joins the ends of one node of
 // the segment's halving tree, and a node is drawn as a chord exactly when its bound is within the
 // tolerance and no ancestor's is. In path units under a similarity map of scale s, that is for
 // lambda = tol / s in [lo, hi): lo = the node's bound, hi = the least bound of its ancestors.
-// Lines are one chord at every tolerance; quadratics (n pieces of equal parameter length) may
-// draw a chord anywhere inside their hull, which stands in for their chords.
+// Lines are one chord at every tolerance; quadratics and cubics (n pieces of equal parameter
+// length) may draw a chord anywhere inside their hull, which stands in for their chords.
 double Classifier::halving_bound(const Seg& s) {
-    if (s.n == 4) return std::sqrt(flatten_detail::bound2_cubic(s.p[0], s.p[1], s.p[2], s.p[3]));
     if (s.conic) return std::sqrt(flatten_detail::bound2_conic(s.p[0], s.p[1], s.p[2], s.w));
     return 0;
 }
@@ -355,21 +357,21 @@ bool Classifier::chords_apart(const Seg& a, const Seg& b) {
     const double lo = std::max(a.lo, b.lo) * (1 - kBoundSlack), hi = std::min(a.hi, b.hi) * (1 + kBoundSlack);
     if (lo < hi && lo <= lambda_ * (1 + kBoundSlack)) {
         auto chord = [](const Seg& s, Point* q) {
-            if (s.n == 3 && !s.conic) {
-                for (int i = 0; i < 3; ++i) q[i] = s.p[i];
-                return 3;
+            if (!s.conic && s.n > 2) {
+                for (int i = 0; i < s.n; ++i) q[i] = s.p[i];
+                return s.n;
             }
             q[0] = s.p[0];
             q[1] = s.p[s.n - 1];
             return 2;
         };
-        Point ca[3], cb[3];
+        Point ca[4], cb[4];
         const int na = chord(a, ca), nb = chord(b, cb);
         if (!separated(ca, na, cb, nb)) return false;
     }
     const bool split_a = a.lo >= b.lo;
     const Seg& x = split_a ? a : b;
-    // Nodes with lo = 0 are never halved (lines, quadratics, straight curves, the depth limit):
+    // Nodes with lo = 0 are never halved (lines, quadratics, cubics, straight conics, the depth limit):
     // both are chords at every tolerance, and those were just found apart.
     if (!(x.lo > 0)) return true;
     Seg h[2];
@@ -381,6 +383,40 @@ bool Classifier::chords_apart(const Seg& a, const Seg& b) {
     }
     const Seg& other = split_a ? b : a;
     return chords_apart(h[0], other) && chords_apart(h[1], other);
+}
+
+// How far the flattened polygon of s can lie from the curve at tolerance lambda (path units):
+// nothing for a line, else lambda itself, unless the depth limit stops the flattener first, which
+// leaves at most the chord bound divided by 4^kMaxFlattenDepth (doubled here to cover the
+// area-balanced pieces).
+double Classifier::band(const Seg& s, double lambda) {
+    if (s.n == 2) return 0;
+    double b = 0;
+    if (s.conic)
+        b = std::sqrt(flatten_detail::bound2_conic(s.p[0], s.p[1], s.p[2], s.w));
+    else if (s.n == 3)
+        b = std::sqrt(flatten_detail::bound2_quad(s.p[0], s.p[1], s.p[2]));
+    else if (s.n == 4)
+        b = std::sqrt(flatten_detail::bound2_cubic(s.p[0], s.p[1], s.p[2], s.p[3]));
+    return std::max(lambda, 2 * std::ldexp(b, -2 * limits::kMaxFlattenDepth)) * (1 + kBoundSlack);
+}
+
+// Two non-adjacent segments whose hulls meet: are the curves farther apart than `gap`, the sum of
+// their bands? Every flattening at a tolerance up to lambda_ stays within its band of its curve,
+// so the two polygons then cannot meet. Proven on hulls widened by the gap, halving the larger
+// segment while none separates them.
+bool Classifier::bands_apart(const Seg& a, const Seg& b, double gap, int depth) {
+    const Rect& p = a.box;
+    const Rect& q = b.box;
+    if (p.x1 + gap < q.x0 || q.x1 + gap < p.x0 || p.y1 + gap < q.y0 || q.y1 + gap < p.y0) return true;
+    if (budget_ <= 0) return false;
+    if (separated(a.p, a.n, b.p, b.n, gap)) return true;
+    if (depth == 0) return false;
+    Seg h0, h1;
+    const bool split_a = std::max(p.width(), p.height()) >= std::max(q.width(), q.height());
+    split(split_a ? a : b, h0, h1);
+    const Seg& other = split_a ? b : a;
+    return bands_apart(h0, other, gap, depth - 1) && bands_apart(h1, other, gap, depth - 1);
 }
 
 // Adds to w the crossings of s's control polygon with the ray from p to +x (Sunday's rule: +1
@@ -407,11 +443,17 @@ bool Classifier::winding_about(const Seg& s, Point p, int depth, int& w) {
 }
 
 // Twice the area within which every flattening of contour c at a tolerance up to lambda_ differs
-// from the curves: any chord the flattener draws for a node of a segment's halving tree bounds,
-// with the node's curve, a region inside the node's hull. For a cubic or conic that sum is taken
-// over the nodes its flattening can start from (the first nodes, from the root down, whose bound
-// is within lambda_: every chord drawn is one of them or inside one), for a quadratic over its
-// whole hull. An orientation decided with this slack holds for the flattened contour.
+// from the curves, summed over its segments, each bounded in two ways (the smaller counts).
+// Hulls: any chord the flattener draws for a node of a segment's halving tree bounds, with the
+// node's curve, a region inside the node's hull. For a conic that sum is taken over the nodes its
+// flattening can start from (the first nodes, from the root down, whose bound is within lambda_:
+// every chord drawn is one of them or inside one), for a quadratic or a cubic over its whole hull
+// (its pieces, area-balanced ones included, stay inside it).
+// Bands: the straight homotopy from a segment's curve B to its polygon P (the same parameter)
+// moves every point by at most the band d, so it sweeps twice an area of at most
+// d (len B + len P). len B is at most the control polygon's length Lc, and len P at most
+// len B + max|P_i - 2 P_(i+1) + P_(i+2)| / 2 <= 1.5 Lc (the balanced vertices' offsets), so
+// 3 d Lc bounds it. An orientation decided with this slack holds for the flattened contour.
 // (Twice a hull's area is half the sum of twice the areas of the triangles that leave out one
 // control point each, for three or four points in any position.)
 double Classifier::hull_areas(std::size_t c) const {
@@ -429,23 +471,28 @@ double Classifier::hull_areas(std::size_t c) const {
     for (std::size_t i = contour_at_[c]; i < contour_at_[c + 1]; ++i) {
         const Seg& s = segs_[i];
         if (s.n == 2) continue;
-        if (s.n == 3 && !s.conic) {
-            sum += hull2(s);
+        double lc = 0;
+        for (int k = 1; k < s.n; ++k) lc += std::hypot(s.p[k].x - s.p[k - 1].x, s.p[k].y - s.p[k - 1].y);
+        const double banded = 3 * band(s, lambda_) * lc;
+        if (!s.conic) {
+            sum += std::min(hull2(s), banded);
             continue;
         }
         int n = 0;
         stack[n] = s;
         stack[n++].depth = 0;
+        double nodes = 0;
         while (n > 0) {
             const Seg q = stack[--n];
             if (q.depth >= limits::kMaxFlattenDepth || halving_bound(q) <= lambda_ * (1 + kBoundSlack)) {
-                sum += hull2(q);
+                nodes += hull2(q);
                 continue;
             }
             split(q, stack[n], stack[n + 1]);
             stack[n].depth = stack[n + 1].depth = q.depth + 1;
             n += 2;
         }
+        sum += std::min(nodes, banded);
     }
     return sum;
 }
@@ -577,7 +624,13 @@ Topology Classifier::run(const Path& path, double lambda) {
         if (degenerate) return;
         if (s.n == 4) {
             // A cubic may loop on itself. One whose control points are monotone in x or in y is
-            // monotone there too, and so is every polygon inscribed in it: no self-crossing.
+            // monotone there too, and so is every polygon inscribed in it: no self-crossing. So is
+            // the fill's area-balanced polygon (Flattener::balanced_cubic), whose inner vertices
+            // B(t) - (h^2 / 2) L(t) lie off the curve. With a, b, c >= 0 the steps dP_j of the
+            // coordinate (E = a - 2b + c) and h <= 1/2, an end step is
+            // a (3h - 5h^2/2 + h^3/2) + b (5h^2/2 - h^3) + c h^3/2 >= 0, and an inner step over
+            // [t, t + h] (h <= t <= 1 - 2h) is the curve's step minus (h^3 / 2) E, where the curve's
+            // step, 3 the integral of a (1 - s)^2 + 2 b s (1 - s) + c s^2, is at least 7 (a + c) h^3.
             auto mono = [&](double Point::*c) {
                 const double a = s.p[0].*c, b = s.p[1].*c, d = s.p[2].*c, e = s.p[3].*c;
                 return (a <= b && b <= d && d <= e) || (a >= b && b >= d && d >= e);
@@ -695,7 +748,8 @@ Topology Classifier::run(const Path& path, double lambda) {
                             Seg a = s, b = t;
                             as_root(a);
                             as_root(b);
-                            ok = chords_apart(a, b);
+                            ok = chords_apart(a, b) ||
+                                 bands_apart(s, t, band(s, lambda_) + band(t, lambda_), kBandDepth);
                             if (ok && s.contour == t.contour) relaxed_[static_cast<std::size_t>(s.contour)] = 1;
                         }
                     }

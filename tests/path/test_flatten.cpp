@@ -83,12 +83,12 @@ void halving_leaves(Point p0, Point p1, Point p2, Point p3, double tol, int dept
 }
 }  // namespace
 
-TEST_CASE("flatten: a cubic's vertices are the end points of its halving tree's leaves", "[flatten][topology]") {
-    // src/raster/topology.cpp proves glyphs simple for exactly these chords; a flattener that cut
-    // cubics any other way (fewer or differently placed pieces) would void that proof.
+TEST_CASE("flatten: a cubic's chords are the end points of its halving tree's leaves", "[flatten]") {
+    // The public flatten() in Chords mode halves cubics (de Casteljau) until each piece meets the
+    // bound; a flattener that cut them otherwise would change every stroke's polygon.
     std::mt19937 rng(4242);
     std::uniform_real_distribution<double> u(-1, 1), lg(-2, 4);
-    for (FlattenMode mode : {FlattenMode::Chords, FlattenMode::AreaBalanced})
+    for (FlattenMode mode : {FlattenMode::Chords})
         for (double tol : {0.015, 0.25, 1e-3}) {
             for (int i = 0; i < 300; ++i) {
                 const double size = std::pow(10.0, lg(rng));
@@ -159,28 +159,112 @@ TEST_CASE("flatten: quadratics in both modes stay within the tolerance, both way
     }
 }
 
-TEST_CASE("flatten: area-balanced quadratics lose far less area than chords", "[flatten]") {
-    // Area of the region between a parabola arc and its base chord: 2/3 of the triangle's area,
-    // i.e. |cross(P1 - P0, P2 - P0)| / 3. Chords lose area on every piece; balanced pieces only
-    // on the two end pieces (half a piece each).
-    const Point p0{0, 0}, p1{50, 80}, p2{100, 0};
-    const double exact = std::abs((p1 - p0).cross(p2 - p0)) / 3.0;
-    Path p;
-    p.move_to(p0).quad_to(p1, p2);
+namespace {
+// The area a curve closed by its chord loses when flattened at 0.05 px in both modes: chords lose
+// area on every piece, balanced pieces only on the two end pieces (half a piece each).
+struct AreaLoss {
+    double chords, balanced;
+    std::size_t chord_points, balanced_points;
+};
+AreaLoss area_loss(const Path& p, double exact) {
     Polyline chords, balanced;
     flatten(p, Affine{}, 0.05, chords, FlattenMode::Chords);
     flatten(p, Affine{}, 0.05, balanced, FlattenMode::AreaBalanced);
-    const double e_chords = exact - std::abs(polygon_area(chords.points));
-    const double e_balanced = exact - std::abs(polygon_area(balanced.points));
-    INFO("chords: " << chords.points.size() << " points, area error " << e_chords
-                    << "; balanced: " << balanced.points.size() << " points, area error " << e_balanced);
-    CHECK(e_chords > 0);                                   // chords are always inside a convex arc
-    CHECK(balanced.points.size() < chords.points.size());  // the balanced bound is 25/36 of the chord's
-    CHECK(std::abs(e_balanced) < 0.3 * e_chords);
+    const AreaLoss l{exact - std::abs(polygon_area(chords.points)), exact - std::abs(polygon_area(balanced.points)),
+                     chords.points.size(), balanced.points.size()};
+    INFO("chords: " << l.chord_points << " points, area error " << l.chords << "; balanced: " << l.balanced_points
+                    << " points, area error " << l.balanced);
+    CHECK(l.chords > 0);                        // chords are always inside a convex arc
+    CHECK(l.balanced_points < l.chord_points);  // the balanced bound is below the chord's
+    CHECK(std::abs(l.balanced) < 0.3 * l.chords);
+    return l;
+}
+}  // namespace
+
+TEST_CASE("flatten: area-balanced quadratics lose far less area than chords", "[flatten]") {
+    // Area of the region between a parabola arc and its base chord: 2/3 of the triangle's area,
+    // i.e. |cross(P1 - P0, P2 - P0)| / 3.
+    const Point p0{0, 0}, p1{50, 80}, p2{100, 0};
+    Path p;
+    p.move_to(p0).quad_to(p1, p2);
+    const AreaLoss l = area_loss(p, std::abs((p1 - p0).cross(p2 - p0)) / 3.0);
     // The pieces are equal in parameter, so with n pieces the loss is one chord piece's worth:
     // (2/3) (|A| / (4 n^2)) * (piece length), with A = P0 - 2 P1 + P2 = (0, -160).
-    const double n = static_cast<double>(balanced.points.size() - 1);
-    CHECK(e_balanced == Approx(exact / (n * n * n)).epsilon(0.05));
+    const double n = static_cast<double>(l.balanced_points - 1);
+    CHECK(l.balanced == Approx(std::abs((p1 - p0).cross(p2 - p0)) / 3.0 / (n * n * n)).epsilon(0.05));
+}
+
+TEST_CASE("flatten: area-balanced cubics stay within the tolerance, in the hull, monotone where the curve is",
+          "[flatten][topology]") {
+    // src/raster/topology.cpp relies on all three: a polygon within the tolerance of its curve
+    // (bands_apart), inside the control hull (the hull tests) and monotone along a coordinate
+    // whenever the control points are (no self-crossing).
+    std::mt19937 rng(99);
+    std::uniform_real_distribution<double> u(0, 300), lg(-2, 3);
+    int monotone = 0;
+    for (double tol : {0.01, 0.05, 0.25})
+        for (int i = 0; i < 150; ++i) {
+            Point q[4];
+            for (Point& pt : q) pt = Point{u(rng), u(rng)};
+            if (i % 3 == 0) {  // control points monotone in x, some with a vertical end tangent
+                std::sort(q, q + 4, [](Point a, Point b) { return a.x < b.x; });
+                if (i % 2 == 0) q[1].x = q[0].x;
+            }
+            if (i % 5 == 0) {  // small curves: few pieces
+                const double s = std::pow(10.0, lg(rng)) / 300;
+                for (Point& pt : q) pt = q[0] + (pt - q[0]) * s;
+            }
+            Path p;
+            p.move_to(q[0]).cubic_to(q[1], q[2], q[3]);
+            Polyline pl;
+            flatten(p, Affine{}, tol, pl, FlattenMode::AreaBalanced);
+            REQUIRE(pl.points.front() == q[0]);
+            REQUIRE(pl.points.back() == q[3]);
+            const std::size_t n = pl.points.size() - 1;
+            // Piece k against the curve over [k / n, (k + 1) / n], at the same parameter.
+            double worst = 0;
+            for (std::size_t k = 0; k < n; ++k)
+                for (int j = 0; j <= 64; ++j) {
+                    const double f = j / 64.0;
+                    const Point on = cubic_at(q[0], q[1], q[2], q[3], (k + f) / static_cast<double>(n));
+                    const Point poly = pl.points[k] + (pl.points[k + 1] - pl.points[k]) * f;
+                    worst = std::max(worst, (on - poly).length());
+                }
+            INFO("tolerance " << tol << ", " << n << " pieces");
+            REQUIRE(worst <= tol * (1 + 1e-9));
+            // Inside the hull: on the inner side of every hull edge (the hull of 4 points is
+            // bounded by lines through two of them with the others on one side).
+            for (int a = 0; a < 4; ++a)
+                for (int b = a + 1; b < 4; ++b) {
+                    const Point d = q[b] - q[a];
+                    double lo = INFINITY, hi = -INFINITY;
+                    for (const Point& c : q) {
+                        lo = std::min(lo, d.cross(c - q[a]));
+                        hi = std::max(hi, d.cross(c - q[a]));
+                    }
+                    const double slack = 1e-9 * (d.length() * 600 + 1);
+                    if (lo < -slack && hi > slack) continue;  // not a hull edge
+                    for (const Point& v : pl.points) {
+                        const double c = d.cross(v - q[a]);
+                        REQUIRE((c >= lo - slack && c <= hi + slack));
+                    }
+                }
+            const bool mono = q[0].x <= q[1].x && q[1].x <= q[2].x && q[2].x <= q[3].x;
+            if (mono) {
+                ++monotone;
+                for (std::size_t k = 0; k < n; ++k) REQUIRE(pl.points[k + 1].x >= pl.points[k].x - 1e-9);
+            }
+        }
+    CHECK(monotone >= 150);
+}
+
+TEST_CASE("flatten: area-balanced cubics lose far less area than chords", "[flatten]") {
+    // A cubic arch closed by its chord, against its closed-form area (P0 at the origin, so the
+    // chord adds nothing): (1/20) (6 P0xP1 + 3 P0xP2 + P0xP3 + 3 P1xP2 + 3 P1xP3 + 6 P2xP3).
+    const Point p0{0, 0}, p1{10, 90}, p2{80, 70}, p3{100, 0};
+    Path p;
+    p.move_to(p0).cubic_to(p1, p2, p3);
+    area_loss(p, std::abs(3 * p1.cross(p2) + 3 * p1.cross(p3) + 6 * p2.cross(p3)) / 20);
 }
 
 TEST_CASE("flatten: the tolerance is in pixels, after the transform", "[flatten]") {

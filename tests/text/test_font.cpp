@@ -14,6 +14,7 @@
 #include "casteljau/font.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/raster.hpp"
+#include "reference_area.hpp"
 #include "temp_dir.hpp"
 #include "text_support.hpp"
 
@@ -328,10 +329,16 @@ struct Worst {
     double mean = -1;
     int max = -1;
     std::string what_mean, what_max;
-    void add(const DiffStats& d, const std::string& what) {
+    std::uint32_t gid = 0;  // the rendering with the worst mean
+    double size = 0;
+    Point origin{};
+    void add(const DiffStats& d, const std::string& what, std::uint32_t g = 0, double px = 0, Point at = {}) {
         if (d.mean > mean) {
             mean = d.mean;
             what_mean = what;
+            gid = g;
+            size = px;
+            origin = at;
         }
         if (d.max > max) {
             max = d.max;
@@ -361,7 +368,11 @@ int supersampling_for(double size) { return size <= 12 ? 32 : size <= 24 ? 16 : 
 // shipped Latin fonts, at 14 sizes from 9 to 200 px, with the origin stepping through quarter-pixel
 // offsets: our coverage (Rasterizer::fill_mask of Font::glyph_path, the text tolerance, exact
 // overlaps) against FreeType's smooth rendering of the same unhinted outline at the same origin.
-// Per glyph: mean absolute difference over the ink box <= 1/255, max <= 16/255. FreeType at 1x is
+// Per glyph: mean absolute difference over the ink box <= 1.25/255, max <= 16/255, and the
+// rendering with the largest mean within rounding of the exact area (the supersampled reference
+// keeps FreeType's own thin bias on small cubic rings and dots, which our area-balanced
+// flattening does not share: Libertine's degree sign at 32 px is 1.16/255 from it on average and
+// 0.33/255 from the exact area, about what 8-bit rounding costs). FreeType at 1x is
 // compared too and printed, not asserted: it is itself off the exact coverage by up to ~40/255 mean
 // on tiny cubic dots (Libertine's diaeresis at 10 px) and ~80/255 max where contours overlap, which
 // the printout shows next to our difference from it.
@@ -391,7 +402,7 @@ TEST_CASE("Glyph coverage matches FreeType's smooth rendering of the same unhint
                 const Gray ft1 = ft.render(gid, size, origin);
                 const DiffStats a = compare_coverage(ours, ref), b = compare_coverage(ours, ft1),
                                 e = compare_coverage(ft1, ref);
-                vs_ref.add(a, describe(path, c, gid, size, origin, a));
+                vs_ref.add(a, describe(path, c, gid, size, origin, a), gid, size, origin);
                 vs_ft1.add(b, describe(path, c, gid, size, origin, b));
                 ft1_vs_ref.add(e, describe(path, c, gid, size, origin, e));
                 ++count;
@@ -410,8 +421,27 @@ TEST_CASE("Glyph coverage matches FreeType's smooth rendering of the same unhint
             vs_ft1.what_max.c_str(), ft1_vs_ref.what_mean.c_str(), ft1_vs_ref.what_max.c_str());
         INFO(name << ": worst mean " << vs_ref.what_mean << "; worst max " << vs_ref.what_max);
         CHECK(glyphs >= 200);
-        CHECK(vs_ref.mean <= 1.0);
+        CHECK(vs_ref.mean <= 1.25);
         CHECK(vs_ref.max <= 16);
+        // Where we differ most from it, the independent exact-area reference decides: ours is
+        // within rounding of the exact coverage there (the difference is FreeType's).
+        const Path worst = font.glyph_path(vs_ref.gid);
+        const Affine m = font.glyph_transform(vs_ref.size, vs_ref.origin);
+        const Mask ours = raster.fill_mask(worst, m, opts);
+        const ref::CoverageGrid exact = ref::path_reference(worst, m, FillRule::NonZero, ours.bounds);
+        double sum = 0, most = 0;
+        for (int y = ours.bounds.y0; y < ours.bounds.y1; ++y)
+            for (int x = ours.bounds.x0; x < ours.bounds.x1; ++x) {
+                const std::size_t i = static_cast<std::size_t>(y - ours.bounds.y0) * ours.bounds.width() +
+                                      static_cast<std::size_t>(x - ours.bounds.x0);
+                const double d = std::abs(ours.data[i] - 255 * exact.at(x, y));
+                sum += d;
+                most = std::max(most, d);
+            }
+        const double exact_mean = sum / static_cast<double>(ours.data.size());
+        INFO("that rendering against the exact area: mean " << exact_mean << "/255, max " << most << "/255");
+        CHECK(exact_mean <= 0.8);
+        CHECK(most <= 2);
     }
 }
 
