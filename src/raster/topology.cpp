@@ -90,6 +90,9 @@ Rect box_of(const Seg& s) {
 
 inline Point mid(Point a, Point b) { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}; }
 inline double cross(Point a, Point b) { return a.x * b.y - a.y * b.x; }
+// Squared length; control points stay within 2^500 (Classifier::run checks the extent), so the
+// squares cannot overflow.
+inline double length_sq(Point v) { return v.x * v.x + v.y * v.y; }
 
 // Splits s at t = 1/2 (parameter midpoint; for a conic, of its standard parametrization).
 void split(const Seg& s, Seg& a, Seg& b) {
@@ -192,7 +195,7 @@ bool Classifier::separated(const Point* a, int na, const Point* b, int nb, doubl
     auto try_dir = [&](Point o, Point d) {
         const double len = std::max(std::abs(d.x), std::abs(d.y));
         if (len == 0) return false;
-        const double margin = delta_ * len + (gap > 0 ? gap * std::hypot(d.x, d.y) : 0.0);
+        const double margin = delta_ * len + (gap > 0 ? gap * std::sqrt(d.x * d.x + d.y * d.y) : 0.0);
         double amin = INFINITY, amax = -INFINITY, bmin = INFINITY, bmax = -INFINITY;
         for (int i = 0; i < na; ++i) {
             const double v = cross(d, a[i] - o);
@@ -398,7 +401,9 @@ double Classifier::band(const Seg& s, double lambda) {
         b = std::sqrt(flatten_detail::bound2_quad(s.p[0], s.p[1], s.p[2]));
     else if (s.n == 4)
         b = std::sqrt(flatten_detail::bound2_cubic(s.p[0], s.p[1], s.p[2], s.p[3]));
-    return std::max(lambda, 2 * std::ldexp(b, -2 * limits::kMaxFlattenDepth)) * (1 + kBoundSlack);
+    constexpr double kDepthShrink =
+        1.0 / (double(1u << limits::kMaxFlattenDepth) * double(1u << limits::kMaxFlattenDepth));
+    return std::max(lambda, 2 * b * kDepthShrink) * (1 + kBoundSlack);
 }
 
 // Two non-adjacent segments whose hulls meet: are the curves farther apart than `gap`, the sum of
@@ -472,7 +477,7 @@ double Classifier::hull_areas(std::size_t c) const {
         const Seg& s = segs_[i];
         if (s.n == 2) continue;
         double lc = 0;
-        for (int k = 1; k < s.n; ++k) lc += std::hypot(s.p[k].x - s.p[k - 1].x, s.p[k].y - s.p[k - 1].y);
+        for (int k = 1; k < s.n; ++k) lc += std::sqrt(length_sq(s.p[k] - s.p[k - 1]));
         const double banded = 3 * band(s, lambda_) * lc;
         if (!s.conic) {
             sum += std::min(hull2(s), banded);
