@@ -39,6 +39,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -102,6 +103,13 @@ struct SvgOptions {
     std::shared_ptr<const FontDatabase> font_database;
     double dpi = 96;
     std::string export_id;
+    // The initial value of the `color` property: what currentColor means where the document sets
+    // no colour. A host drawing the document inside something that has a colour of its own (an
+    // OpenType SVG glyph inside text) sets it.
+    Color color = Color::black();
+    // What context-fill means outside `use` and markers (where it names their paint): none unless
+    // set. An OpenType SVG glyph's context is its text, filled with `color`.
+    std::optional<Color> context_fill;
 };
 
 class SvgDocument {
@@ -158,8 +166,9 @@ Affine parse_svg_transform(std::string_view text);
 // set_svg_glyph_drawer), so that draw_text draws fonts with an 'SVG ' table (Twitter Color Emoji
 // and others) in their colours. SvgDocument::parse and load call it, and so does the casteljau
 // command; a program drawing text without reading SVG calls it once before drawing. Each glyph
-// document is read with export_id "glyphN" and no system fonts; currentColor is black. Converted
-// glyph documents are cached per process (at most 512, by font and glyph).
+// document is read with export_id "glyphN" and no system fonts; currentColor and context-fill are
+// the text's colour, as OpenType's SVG table asks. Converted glyph documents are cached per
+// process (at most 512, by font, glyph and colour).
 // Thread-safety: call it before drawing text on several threads.
 void enable_svg_glyphs();
 

@@ -210,12 +210,12 @@ bool is_color_glyph(const Font& font, std::uint32_t glyph);
 // are SVG documents, which the text stage does not read itself: the SVG reader sits above it
 // (casteljau/svg.hpp). draw_text hands them to the drawer set here, which enable_svg_glyphs()
 // (casteljau/svg.hpp) installs; SvgDocument and the casteljau command install it. With no drawer
-// set, such glyphs are drawn by their outlines (every SVG font has them), as before.
+// set, such glyphs are drawn by their outlines (every SVG font has them).
 // The drawer draws glyph `glyph` of `document` (the font's document for it, as stored: possibly
 // gzip-compressed, possibly holding other glyphs; the glyph is its element with id "glyphN") on
 // `canvas`, whose transform it leaves alone; `font_to_canvas` maps the document's user units
 // (font units, y down, the glyph origin at 0,0) to the canvas's pixels; `foreground` is the
-// text's colour. `document_key` and `glyph` name the document for caches: two calls with the
+// text's colour (what the document's currentColor and context-fill mean). `document_key` and `glyph` name the document for caches: two calls with the
 // same pair have the same document, for the life of the process (the key is the font's serial
 // number, which no other font of the process gets). It returns false when it cannot draw the
 // document (then the outline is filled).

@@ -163,10 +163,11 @@ def make_colr(out):
 def make_svg(out):
     from fontTools.ttLib import newTable
     from fontTools.ttLib.tables.S_V_G_ import SVGDocument
-    names = [".notdef", "space", "A", "B", "C", "D", "E"]
+    names = [".notdef", "space", "A", "B", "C", "D", "E", "F", "G"]
     fb = FontBuilder(1000, isTTF=True)
     fb.setupGlyphOrder(names)
-    fb.setupCharacterMap({0x20: "space", 0x41: "A", 0x42: "B", 0x43: "C", 0x44: "D", 0x45: "E"})
+    fb.setupCharacterMap({0x20: "space", 0x41: "A", 0x42: "B", 0x43: "C", 0x44: "D", 0x45: "E", 0x46: "F",
+                          0x47: "G"})
     glyphs = {n: box(100, 100, 900, 900) for n in names}
     glyphs["space"] = empty()
     square_em_tables(fb, names, glyphs, "Casteljau SVG Test")
@@ -177,9 +178,15 @@ def make_svg(out):
     cd = ('<svg %s><rect id="glyph4" x="100" y="-900" width="400" height="800" fill="#ff0000"/>'
           '<rect id="glyph5" x="500" y="-900" width="400" height="800" fill="#0000ff"/></svg>' % ns)
     e = '<svg %s><g id="glyph6"><rect x="100" y="-900" width="800" height="800"' % ns
+    # F: currentColor (the text's colour) left, blue right. G: context-fill (the text's colour)
+    # left, currentColor right under a colour the document sets itself (green).
+    f = ('<svg %s><g id="glyph7"><rect x="100" y="-900" width="400" height="800" fill="currentColor"/>'
+         '<rect x="500" y="-900" width="400" height="800" fill="#0000ff"/></g></svg>' % ns)
+    g = ('<svg %s><g id="glyph8" style="color:#00ff00"><rect x="100" y="-900" width="400" height="800" '
+         'fill="context-fill"/><rect x="500" y="-900" width="400" height="800" fill="currentColor"/></g></svg>' % ns)
     svg = newTable("SVG ")
     svg.docList = [SVGDocument(a, 2, 2), SVGDocument(b, 3, 3, compressed=True), SVGDocument(cd, 4, 5),
-                   SVGDocument(e, 6, 6)]
+                   SVGDocument(e, 6, 6), SVGDocument(f, 7, 7), SVGDocument(g, 8, 8)]
     fb.font["SVG "] = svg
     fb.font.recalcTimestamp = False
     fb.font["head"].created = fb.font["head"].modified = 0

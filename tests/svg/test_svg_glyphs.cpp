@@ -136,6 +136,41 @@ TEST_CASE("SVG glyphs: two fonts whose documents differ for one glyph each draw 
     }
 }
 
+TEST_CASE("SVG glyphs: currentColor and context-fill take the text's colour, a colour the document sets wins",
+          "[svg][text][color]") {
+    enable_svg_glyphs();
+    // F: currentColor over x 100..500 (pixels 20.25..60.25), blue over 500..900. G: context-fill
+    // left, currentColor right under the document's own color:#00ff00.
+    for (int round = 0; round < 2; ++round) {  // the second time from the converted documents kept
+        for (const Color text : {Color::rgba(200, 100, 0), Color::rgba(0, 50, 220)}) {
+            const Pixmap f = draw("F", Paint::solid(text));
+            CHECK(is(f.pixel(40, 60), text.r, text.g, text.b, 255));
+            CHECK(is(f.pixel(80, 60), 0, 0, 255, 255));
+            const Pixmap g = draw("G", Paint::solid(text));
+            CHECK(is(g.pixel(40, 60), text.r, text.g, text.b, 255));
+            CHECK(is(g.pixel(80, 60), 0, 255, 0, 255));
+            // Column 60 is a quarter left, three quarters right, drawn one over the other:
+            // 1/4 + 3/4 (1 - 1/4) = 13/16 covered, over 80 rows.
+            CHECK(alpha_area(g) == Approx(80.0 * 80.0 - 80 * 3.0 / 16).margin(1));
+        }
+    }
+}
+
+TEST_CASE("SVG: SvgOptions::color is the initial currentColor and context_fill the root's context-fill", "[svg]") {
+    const std::string doc = R"(<svg xmlns="http://www.w3.org/2000/svg" width="20" height="10">
+        <rect width="10" height="10" fill="currentColor"/><rect x="10" width="10" height="10" fill="context-fill"/>
+        </svg>)";
+    const Pixmap plain = SvgDocument::parse(doc).render();
+    CHECK(is(plain.pixel(5, 5), 0, 0, 0, 255));  // black, the initial colour
+    CHECK(plain.pixel(15, 5).a == 0);            // no context: none
+    SvgOptions options;
+    options.color = Color::rgba(255, 0, 0);
+    options.context_fill = Color::rgba(0, 0, 255);
+    const Pixmap given = SvgDocument::parse(doc, options).render();
+    CHECK(is(given.pixel(5, 5), 255, 0, 0, 255));
+    CHECK(is(given.pixel(15, 5), 0, 0, 255, 255));
+}
+
 TEST_CASE("SVG glyphs: an SVG document's text and the text command draw them in colour", "[svg][text][color][cli]") {
     SvgOptions options;
     options.font_files = {kSvgFont};

@@ -98,6 +98,15 @@ struct Style {
     double font_size = kDefaultFontSize;  // the element's computed font-size (em in filter functions)
 };
 
+// The style the document's root inherits: the initial values, with the colour and the context
+// paint the host gives (SvgOptions::color, SvgOptions::context_fill).
+inline Style initial_style(const SvgOptions& options) {
+    Style st;
+    st.color = options.color;
+    if (options.context_fill) st.context_fill = PaintRef::solid(*options.context_fill);
+    return st;
+}
+
 // An element's properties after the cascade: (name, value) pairs, later ones winning.
 using Properties = std::vector<std::pair<std::string, std::string>>;
 

@@ -118,7 +118,7 @@ ConvertedDocument convert_document(std::string_view input, const SvgOptions& opt
     cut_recursive_links(cx, root);
     // The root goes through the element path like any group: its conditional processing,
     // transform, display, opacity, clip-path, mask, filter and blending apply to the whole document.
-    if (conditions_pass(root)) element(cx, root, Style(), out.view, vp, 0);
+    if (conditions_pass(root)) element(cx, root, initial_style(options), out.view, vp, 0);
     warn_export_not_reached(cx);
     out.items = std::move(cx.items);
     out.warnings.insert(out.warnings.end(), cx.warnings.begin(), cx.warnings.end());

@@ -51,7 +51,7 @@ svg_filter::SvgFilterEnv filter_env(Context& cx, const Style& st, Viewport vp, i
             else if (target && !is_active(cx, target)) {
                 cx.active_refs.push_back(target);
                 // Drawn like a `use`, placed at the subregion's origin (as resvg and Chrome do).
-                element(cx, target, Style(), Affine::translate(sub.x0, sub.y0), vp, depth + 1);
+                element(cx, target, initial_style(cx.options), Affine::translate(sub.x0, sub.y0), vp, depth + 1);
                 cx.active_refs.pop_back();
             }
         } else {
