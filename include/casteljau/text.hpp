@@ -57,8 +57,8 @@ namespace casteljau {
 // per-glyph mean difference (over the ink box) at 9-200 px is ~5-8/255 at 0.05 px (small dots and
 // rings lose area to their chords), ~2.5/255 at 0.02 px, ~1.1/255 at 0.01 px and ~0.9/255 at
 // 0.005 px, where small rings match the 16x reference exactly. Glyph masks are cached, so the
-// extra segments cost little. (Measured with chords; with the area-balanced quadratics fills use,
-// TrueType glyphs lose less area at each tolerance, and cubics the same.)
+// extra segments cost little. (Measured with chords; with the area-balanced pieces fills use,
+// quadratic and cubic glyphs lose less area at each tolerance.)
 inline constexpr double kTextTolerance = 0.005;
 
 // Decodes UTF-8; each maximal invalid subsequence (and each encoded surrogate or value above
