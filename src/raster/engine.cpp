@@ -7,7 +7,7 @@
 // the piece's right, acc[k + 1] the rest; a prefix sum along the row gives the integral of the
 // winding number over each pixel. The buffer is double: windings of hundreds stay exact. Without
 // the overlap check (the shape was proven simple, or exactness is off), shapes at most
-// kRowVectorMax SIMD vectors wide use row vectors instead (RowPiece in raster_internal.hpp): the
+// kRowVectorMax SIMD vectors (and 64 px) wide use row vectors instead (RowPiece in raster_internal.hpp): the
 // walk lists each edge's pieces per row, and finish() adds every piece's area to its whole row,
 // in float (the precision this leaves is stated in casteljau/raster.hpp).
 //
@@ -140,7 +140,7 @@ void Engine::begin(int w, int h, bool track) {
     }
     dirty_ = true;
     const int lanes = row_vector_lanes();
-    vec_ = !track && w <= kRowVectorMax * lanes;
+    vec_ = !track && w <= std::min(kRowVectorMax * lanes, kRowVectorMaxPixels);
     if (vec_) {
         vstride_ = std::max(1, (w + lanes - 1) / lanes) * lanes;
         const std::size_t n = static_cast<std::size_t>(vstride_) * static_cast<std::size_t>(h);

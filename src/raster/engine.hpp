@@ -94,15 +94,18 @@ private:
     int w_ = 0, h_ = 0;
     std::size_t stride_ = 0;
     bool track_ = false;
-    // Narrow shapes (at most kRowVectorMax SIMD vectors per row) without the overlap check are
-    // accumulated by row vectors (see RowPiece in raster_internal.hpp): the walk only lists the
-    // pieces of edges per row, and finish() adds each piece's exact area to its whole row at once,
-    // in float. 11 to 20 % faster from 12 to 96 px than the double cell walk without tracking;
-    // glyphs proven simple take it. With the overlap check the cell walk stays:
-    // the visits need it anyway and it accumulates nearly for free alongside (row vectors on top
-    // measured 5 % slower at 12 px, equal at 48 and 96 px).
+    // Narrow shapes (at most kRowVectorMax SIMD vectors and kRowVectorMaxPixels per row) without
+    // the overlap check are accumulated by row vectors (see RowPiece in raster_internal.hpp): the
+    // walk only lists the pieces of edges per row, and finish() adds each piece's exact area to its
+    // whole row at once, in float. 11 to 20 % faster from 12 to 96 px than the double cell walk
+    // without tracking; glyphs proven simple take it. A piece costs a pass over its whole row, so
+    // wider shapes take the cell walk: with glyphs up to 128 px wide on row vectors, DejaVu Sans at
+    // 256 px was 7 % slower than with the limit at 64 to 96 px, on AVX-512 and AVX2 alike. With
+    // the overlap check the cell walk stays: the visits need it anyway and it accumulates nearly
+    // for free alongside (row vectors on top measured 5 % slower at 12 px, equal at 48 and 96 px).
     bool vec_ = false;
     static constexpr int kRowVectorMax = 8;
+    static constexpr int kRowVectorMaxPixels = 64;
     int vstride_ = 0;                    // floats per row of facc_ (w rounded up to whole vectors)
     platform::LargeVector<float> facc_;  // per pixel: the integral of the winding number, all zero between shapes
     std::vector<RowPiece> pieces_;
