@@ -10,6 +10,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 runs=${1:-7}
 cj="$root/build/casteljau"
 suite="$root/../shared/conformance/resvg-suite/tests/filters"
+command -v rsvg-convert > /dev/null || { echo "rsvg-convert is not installed (Debian librsvg2-bin)"; exit 77; }
+[ -d "$suite" ] || { echo "the resvg suite is not at $suite"; exit 77; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 {
