@@ -99,8 +99,8 @@ private:
     // walk only lists the pieces of edges per row, and finish() adds each piece's exact area to its
     // whole row at once, in float. 11 to 20 % faster from 12 to 96 px than the double cell walk
     // without tracking; glyphs proven simple take it. A piece costs a pass over its whole row, so
-    // wider shapes take the cell walk: with glyphs up to 128 px wide on row vectors, DejaVu Sans at
-    // 256 px was 7 % slower than with the limit at 64 to 96 px, on AVX-512 and AVX2 alike. With
+    // wider shapes take the cell walk: DejaVu Sans at 256 px renders 7 % faster with the limit at
+    // 64 to 96 px than at 128 px, on AVX-512 and AVX2 alike. With
     // the overlap check the cell walk stays: the visits need it anyway and it accumulates nearly
     // for free alongside (row vectors on top measured 5 % slower at 12 px, equal at 48 and 96 px).
     bool vec_ = false;
