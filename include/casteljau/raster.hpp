@@ -13,10 +13,10 @@
 // pixel in which edges could make accumulation inexact (crossings, overlapping or stacked
 // contours) is recomputed exactly from the edges inside it (see src/raster/exact_cell.cpp). A
 // shape whose topology the caller did not give is classified by fill() when its box is large for
-// its number of segments (width + height at least 4 pixels per path verb: there the per-cell
+// its number of segments (width + height at least 16 pixels per path verb: there the per-cell
 // check would cost more than the classification; under a similarity map with the verdict for
 // that map and tolerance), and otherwise takes the overlap check.
-// Precision: shapes with the overlap check, and shapes wider than 8 SIMD vectors (64 px with AVX2),
+// Precision: shapes with the overlap check, and shapes wider than 64 px (or than 8 SIMD vectors),
 // accumulate in double, which rounds the area correctly but for values within about 1e-12 of a
 // level of half-way between two levels. Narrower shapes without it (most glyphs) accumulate in
 // float: the area before rounding is within about 4e-3 of a level of the exact one (positions
@@ -90,7 +90,7 @@ double similarity_scale(const Affine& m);
 
 // The verdict Rasterizer::fill reaches for `path` under `m` at `tolerance` (pixels) when it is given
 // none and the shape's box on the target measures box_width x box_height pixels: classify_topology
-// (for this map and tolerance when m is a similarity) when width + height is at least 4 pixels per
+// (for this map and tolerance when m is a similarity) when width + height is at least 16 pixels per
 // path verb, else Unknown: not worth classifying, the per-cell check costs per boundary pixel and
 // the classification per segment (fill() then takes the per-cell check). A caller filling one
 // path in several pieces (bands, tiles) decides once with the whole box and passes the verdict in

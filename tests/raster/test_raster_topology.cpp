@@ -517,12 +517,12 @@ TEST_CASE("topology: the rasterizer classifies a path under a similarity map wit
     const Path o = font.glyph_path(font.glyph_index(U'o'));
     REQUIRE(classify_topology(o) == Topology::Overlapping);
     Rasterizer r;
-    const double s = 200 * font.glyph_transform(1, {0, 0}).a;  // 200 px: large enough to be classified
-    (void)r.fill_mask(o, Affine{s, 0, 0, -s, 10, 250}, {});
+    const double s = 500 * font.glyph_transform(1, {0, 0}).a;  // 500 px: large enough to be classified
+    (void)r.fill_mask(o, Affine{s, 0, 0, -s, 10, 600}, {});
     CHECK(r.last_stats().topology == Topology::Simple);
-    (void)r.fill_mask(o, Affine::rotate(0.5) * Affine{-s, 0, 0, -s, 10, 250}, {});
+    (void)r.fill_mask(o, Affine::rotate(0.5) * Affine{-s, 0, 0, -s, 10, 600}, {});
     CHECK(r.last_stats().topology == Topology::Simple);
     // A shear flattens differently: only the verdict for every map applies.
-    (void)r.fill_mask(o, Affine::skew_x(0.3) * Affine{s, 0, 0, -s, 10, 250}, {});
+    (void)r.fill_mask(o, Affine::skew_x(0.3) * Affine{s, 0, 0, -s, 10, 600}, {});
     CHECK(r.last_stats().topology == Topology::Overlapping);
 }
