@@ -215,9 +215,10 @@ bool is_color_glyph(const Font& font, std::uint32_t glyph);
 // gzip-compressed, possibly holding other glyphs; the glyph is its element with id "glyphN") on
 // `canvas`, whose transform it leaves alone; `font_to_canvas` maps the document's user units
 // (font units, y down, the glyph origin at 0,0) to the canvas's pixels; `foreground` is the
-// text's colour (what the document's currentColor and context-fill mean). `document_key` and `glyph` name the document for caches: two calls with the
-// same pair have the same document, for the life of the process (the key is the font's serial
-// number, which no other font of the process gets). It returns false when it cannot draw the
+// text's colour (what the document's currentColor and context-fill mean). `document_key` and
+// `glyph` name the document for caches: two calls with the same pair have the same document, for
+// the life of the process (the key is the font's serial number, which no other font of the
+// process gets). It returns false when it cannot draw the
 // document (then the outline is filled).
 // Thread-safety: set the drawer before drawing text on several threads; it must be callable from
 // any thread.

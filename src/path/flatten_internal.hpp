@@ -64,7 +64,7 @@ struct Flattener {
     double tol2;       // tolerance squared
     const Rect* cull;  // when set, curves whose control box misses it become their chord
     Sink& out;
-    bool balanced = false;  // area-balanced quadratic pieces (see quad()); only for filling
+    bool balanced = false;  // area-balanced pieces (see quad() and balanced_cubic()); only for filling
 
     void emit(Point p) { out.point(p); }
     void finish_contour() { out.end(); }

@@ -173,8 +173,8 @@ private:
 // opens another (capsule_sections too), and the closed one goes to the row's coverage at once when
 // it ends left of the capsule's left end (no later capsule reaches it), else to the closed list;
 // one between the last closed interval and the open one is kept in its place. Only one reaching
-// back over closed intervals (long capsules crossing each other) is kept as it comes, and then the line is sorted and merged once at the end, so a line never costs the
-// square of its intervals.
+// back over closed intervals (long capsules crossing each other) is kept as it comes, and then the
+// line is sorted and merged once at the end, so a line never costs the square of its intervals.
 class LineUnion {
 public:
     void clear() {

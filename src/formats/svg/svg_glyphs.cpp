@@ -7,13 +7,13 @@
 // the transform the text stage gives, and nothing clips it but the pixmap the text stage draws
 // it into. currentColor and context-fill are the text's colour (the foreground the text stage
 // gives), as OpenType's SVG table asks of glyph documents; a `color` or fill the document sets
-// itself wins. A document that
-// cannot be read (malformed, no element for the glyph, beyond the SVG limits) is reported as not
-// drawable, and the text stage fills the glyph's outline instead.
+// itself wins. A document that cannot be read (malformed, no element for the glyph, beyond the
+// SVG limits) is reported as not drawable, and the text stage fills the glyph's outline instead.
 //
-// Converted documents are kept, by the document key the text stage gives (the font's serial number,
-// never reused in a process), the glyph and the colour, in a cache of kCachedGlyphs entries per process
-// (emptied when full), so a glyph repeated in a text, or drawn again, is converted once.
+// Converted documents are kept, by the document key the text stage gives (the font's serial
+// number, never reused in a process), the glyph and the colour, in a cache of kCachedGlyphs
+// entries per process (emptied when full), so a glyph repeated in a text, or drawn again, is
+// converted once.
 // Thread-safety: the cache is locked; converted documents are immutable and drawn concurrently.
 #include <cstdint>
 #include <map>
