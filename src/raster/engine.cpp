@@ -27,8 +27,14 @@
 //     edge up and one down), accumulation is exact. Common cases are decided in closed form (two
 //     single edges: which side of each other they lie on) or from where the runs enter and leave
 //     (runs whose edges meet nowhere), without clipping every piece.
-//   - Every other cell with visits (crossings, stacked copies, more than six runs, loops) is
-//     recomputed exactly from its edges (exact_cell.cpp) with the accumulated integral.
+//   - A closed run with every vertex inside the cell (a small island or lake of a map) is a loop:
+//     simple when its edges meet only consecutively, it adds its orientation to the winding of
+//     the region around it, read by crossing the other runs from its first vertex to the cell's
+//     right side. With loops among the runs, accumulation is exact when all windings so found
+//     take two values at most.
+//   - Every other cell with visits (crossings, stacked copies, more than six runs, loops on the
+//     boundary) is recomputed exactly from its edges (exact_cell.cpp) with the accumulated
+//     integral.
 // Only positive-length pieces inside the open cell count as visits: an edge along a cell's
 // boundary only moves cover, which accumulation gets right.
 #include <algorithm>
@@ -300,21 +306,27 @@ int Engine::run_edges(const Visit& v, std::uint32_t* out) const {
 
 // A run that cannot cross itself: monotone in x or in y, at most two edges (one bend), or (up to
 // kMaxRunEdges edges) no two of its edges meet except consecutive ones at their shared vertex,
-// and no two consecutive ones fold back onto each other.
+// and no two consecutive ones fold back onto each other. A run whose last edge ends where its
+// first starts (a whole small contour inside the cell, such as an island of a map) is a closed
+// polygon: its last and first edges are consecutive there.
 bool Engine::simple_run(const Visit& v) const {
     if (monotone(v.dirs)) return true;
     std::uint32_t ids[kMaxRunEdges];
     const int n = run_edges(v, ids);
     if (n < 0) return false;
     if (n <= 2) return true;
+    const Edge& first = segs_[ids[0]];
+    const Edge& last = segs_[ids[n - 1]];
+    const bool closed = last.x1 == first.x0 && last.y1 == first.y0;
+    auto folds = [](const Edge& a, const Edge& b) {
+        const double ax = a.x1 - a.x0, ay = a.y1 - a.y0, bx = b.x1 - b.x0, by = b.y1 - b.y0;
+        return ax * by - ay * bx == 0 && ax * bx + ay * by < 0;
+    };
+    if (closed && folds(last, first)) return false;
     for (int i = 0; i < n; ++i) {
         const Edge& a = segs_[ids[i]];
-        if (i + 1 < n) {
-            const Edge& b = segs_[ids[i + 1]];
-            const double ax = a.x1 - a.x0, ay = a.y1 - a.y0, bx = b.x1 - b.x0, by = b.y1 - b.y0;
-            if (ax * by - ay * bx == 0 && ax * bx + ay * by < 0) return false;  // folds back
-        }
-        for (int j = i + 2; j < n; ++j) {
+        if (i + 1 < n && folds(a, segs_[ids[i + 1]])) return false;
+        for (int j = i + 2; j < n - (closed && i == 0 ? 1 : 0); ++j) {
             const Edge& b = segs_[ids[j]];
             if (segments_meet(a.x0, a.y0, a.x1, a.y1, b.x0, b.y0, b.x1, b.y1)) return false;
         }
@@ -322,29 +334,40 @@ bool Engine::simple_run(const Visit& v) const {
     return true;
 }
 
-// Three or more simple runs in one cell. When no two meet inside the closed cell, each region
-// between them touches the cell's boundary, so the windings in the cell are those met going around the boundary, where
-// they change by -1 at every entry and +1 at every exit: accumulation is exact when they take
-// two values at most.
+// Two to six simple runs in one cell, of two kinds: open runs, which enter and leave through the
+// cell's boundary, and loops, closed runs with every vertex inside the open cell (a small island
+// or lake of a map). When no two runs meet inside the closed cell, each region between the open
+// runs touches the boundary, where the windings change by -1 at every entry and +1 at every exit
+// going around it. A loop adds its orientation (+1 or -1) to the winding of the region around it,
+// which is read at the loop's first vertex P: the winding at the boundary point level with P on
+// the cell's right side, less the steps of the other runs' pieces crossed on the way there
+// (-1 for a piece going down, in y, +1 going up: the same rule as at the boundary). Accumulation
+// is exact when all these windings take two values at most.
 bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) const {
     std::uint32_t ids[kMaxRuns][kMaxRunEdges];
     int counts[kMaxRuns];
+    bool loop[kMaxRuns];
     struct End {
         double t;
         int step;
     };
     End ends[2 * kMaxRuns];
+    int nends = 0;
+    auto inside_open = [&](double x, double y) { return x > col && x < col + 1 && y > row && y < row + 1; };
     for (int k = 0; k < n; ++k) {
         counts[k] = run_edges(*runs[k], ids[k]);
         if (counts[k] < 0) return false;
         const Edge& first = segs_[ids[k][0]];
         const Edge& last = segs_[ids[k][counts[k] - 1]];
+        loop[k] = last.x1 == first.x0 && last.y1 == first.y0;
+        for (int i = 0; i < counts[k] && loop[k]; ++i) loop[k] = inside_open(segs_[ids[k][i]].x0, segs_[ids[k][i]].y0);
+        if (loop[k]) continue;
         double ax, ay, bx, by;
         if (!cell_portion(first, col, row, ax, ay, bx, by) || (ax == bx && ay == by)) return false;
-        ends[2 * k] = {boundary_param(ax - col, ay - row), -1};
+        ends[nends++] = {boundary_param(ax - col, ay - row), -1};
         if (!cell_portion(last, col, row, ax, ay, bx, by) || (ax == bx && ay == by)) return false;
-        ends[2 * k + 1] = {boundary_param(bx - col, by - row), 1};
-        if (ends[2 * k].t < 0 || ends[2 * k + 1].t < 0) return false;
+        ends[nends++] = {boundary_param(bx - col, by - row), 1};
+        if (ends[nends - 2].t < 0 || ends[nends - 1].t < 0) return false;
     }
     // Only the runs' parts inside the closed cell must not meet: consecutive runs of a contour that
     // leaves the cell and comes back one vertex later meet at that vertex, outside.
@@ -365,14 +388,50 @@ bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) co
                     const ExactScratch::Piece& q = pieces[b][j];
                     if (segments_meet(p.ax, p.ay, p.bx, p.by, q.ax, q.ay, q.bx, q.by)) return false;
                 }
-    for (int k = 1; k < 2 * n; ++k)  // insertion sort (at most 2 * kMaxRuns ends)
+    for (int k = 1; k < nends; ++k)  // insertion sort (at most 2 * kMaxRuns ends)
         for (int j = k; j > 0 && ends[j].t < ends[j - 1].t; --j) std::swap(ends[j], ends[j - 1]);
     int w = 0, lo = 0, hi = 0;
-    for (int k = 0; k < 2 * n; ++k) {
+    for (int k = 0; k < nends; ++k) {
         if (k > 0 && ends[k].t == ends[k - 1].t) return false;
         w += ends[k].step;
         lo = std::min(lo, w);
         hi = std::max(hi, w);
+    }
+    for (int k = 0; k < n; ++k) {
+        if (!loop[k]) continue;
+        const double px = segs_[ids[k][0]].x0, py = segs_[ids[k][0]].y0;
+        // The winding just inside the right side, level with P.
+        const double ty = 1 + (py - row);
+        int around = 0;
+        for (int e = 0; e < nends; ++e) {
+            if (ends[e].t == ty) return false;
+            if (ends[e].t < ty) around += ends[e].step;
+        }
+        // Less the steps crossed between P and there (half-open in y, so a vertex level with P
+        // counts once).
+        for (int m = 0; m < n; ++m) {
+            if (m == k) continue;
+            for (int i = 0; i < inside[m]; ++i) {
+                const ExactScratch::Piece& q = pieces[m][i];
+                if (!((q.ay <= py && q.by > py) || (q.by <= py && q.ay > py))) continue;
+                if (q.ax == col + 1 && q.bx == col + 1) return false;  // along the right side
+                const double side = orient(q.ax, q.ay, q.bx, q.by, px, py);
+                if (side == 0) return false;
+                const bool down = q.by > q.ay;
+                if ((side > 0) == down) around -= down ? -1 : 1;  // the piece is right of P
+            }
+        }
+        // The loop's orientation: the sign of its area (shoelace about P), > 0 adding +1 by the
+        // boundary's rule.
+        double area = 0;
+        for (int i = 0; i < counts[k]; ++i) {
+            const Edge& e = segs_[ids[k][i]];
+            area += (e.x0 - px) * (e.y1 - py) - (e.x1 - px) * (e.y0 - py);
+        }
+        if (!(std::fabs(area) > 1e-12)) return false;
+        const int inner = around + (area > 0 ? 1 : -1);
+        lo = std::min({lo, around, inner});
+        hi = std::max({hi, around, inner});
     }
     return hi - lo <= 1;
 }
@@ -398,7 +457,7 @@ void Engine::classify() {
         }
         if (all_simple && n == 1) continue;
         if (all_simple && n == 2 && harmless_two(*runs[0], *runs[1], col, row)) continue;
-        if (all_simple && n > 2 && n <= kMaxRuns && harmless_many(runs, n, col, row)) continue;
+        if (all_simple && n >= 2 && n <= kMaxRuns && harmless_many(runs, n, col, row)) continue;
         exact_.push_back(cell);
     }
     // ... then list the exact ones in row order (finish() sums each row from its start) with their edges.
