@@ -1,6 +1,7 @@
 // Random paths for the geometry fuzz targets (rasterizer, stroker): verbs and coordinates from
 // the fuzzer's bytes, with hostile values (NaN, infinities, 1e30, denormals, zero-length
-// segments, repeated points) as often as ordinary ones, and sometimes long runs of segments.
+// segments, repeated points, points of a coarse lattice) as often as ordinary ones, and sometimes
+// long runs of segments.
 #pragma once
 
 #include "casteljau/path.hpp"
@@ -15,6 +16,10 @@ inline Path random_path(Bytes& in, double span) {
         const std::uint8_t how = in.byte();
         if (how % 8 == 0) return last;                                                           // zero-length piece
         if (how % 8 == 1) return Point{last.x + in.number(4) / 64, last.y + in.number(4) / 64};  // tiny step
+        if (how % 8 == 2) {  // a node of a 5 x 5 lattice: contours touch, fold back and share edges
+            const double ix = in.byte() % 5, iy = in.byte() % 5;
+            return Point{span / 4 * ix, span / 4 * iy};
+        }
         return Point{in.number(span), in.number(span)};
     };
     auto piece = [&](std::uint8_t verb) {

@@ -55,9 +55,11 @@ enum class FillRule { NonZero, EvenOdd };
 // What a path's outline allows plain accumulation to do (classify_topology).
 enum class Topology : std::uint8_t {
     Unknown,      // not decided yet: the rasterizer decides
-    Simple,       // no two segments meet (beyond consecutive ones at their shared point) and the
-                  // winding number takes only the values 0 and 1, or only 0 and -1: plain
-                  // accumulation is exact under both fill rules
+    Simple,       // the winding number takes only the values 0 and 1, or only 0 and -1: plain
+                  // accumulation is exact under both fill rules. Proven when no two segments
+                  // meet except consecutive ones at their shared point and lines touching at a
+                  // shared vertex without crossing there; spikes (a line straight back along the
+                  // one before) are left out of the proof, as they cancel in accumulation
     Overlapping,  // anything else (or not proven simple): pixels where edges interact are computed exactly
 };
 
@@ -65,7 +67,9 @@ enum class Topology : std::uint8_t {
 // holds for the path under every invertible affine map, so callers may compute it once per outline
 // (the glyph cache does, per glyph and variation instance) and pass it in FillOptions::topology.
 // Each test keeps a margin of 2^-40 of the path's extent, far above double rounding: shapes whose
-// parts touch or nearly touch are "overlapping". Cost: segments paired on a uniform grid over
+// parts touch or nearly touch are "overlapping", except lines that share an end point exactly
+// (map rings meeting at a node, a ring pinched onto itself), which are proven when the contours
+// pass through that vertex without crossing. Cost: segments paired on a uniform grid over
 // their boxes, about 0.1 us per segment for outlines whose segments are apart; bounded work (then
 // "overlapping") for adversarial ones. See src/raster/topology.cpp. Thread-safe (scratch buffers
 // are per thread).

@@ -196,7 +196,7 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opti
     // overlap check. A verdict the caller gives (the glyph cache's, cached per outline) is used
     // as it is; an unknown one is decided here by decide_topology's rule: classifying costs about
     // 0.1 us per segment whatever the size, while the per-cell check costs per boundary pixel, so
-    // it pays from about 4 pixels of box side per segment (a DejaVu glyph from about 64 px).
+    // it pays from kClassifyPixelsPerSegment pixels of box side per segment.
     FillOptions opts = options;
     if (opts.exact_overlaps) {
         if (opts.topology == Topology::Unknown) opts.topology = decide_topology(path, m, opts.tolerance, bw, bh);

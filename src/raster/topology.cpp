@@ -6,9 +6,16 @@
 // -1) over the whole plane: then nonzero and even-odd agree with |integral| in every pixel. The
 // classifier proves this from the path's control points, in the path's own coordinates, in three
 // steps:
+//   0. Spikes go first: a line followed by the line straight back to where it started adds
+//      nothing to any pixel's integral (the rasterizer maps both of their shared end points
+//      alike, so the two cancel) and changes no winding number off itself.
 //   1. No segment crosses itself (a cubic must have control points monotone in x or in y, with
 //      the margin its area-balanced pieces need; lines, quadratics and conics cannot), and no two
-//      segments meet, except consecutive segments of a contour at their shared end point.
+//      segments meet, except consecutive segments of a contour at their shared end point, and
+//      lines that share an end point V exactly and leave it in different directions: there the
+//      contours touch, and touches_uncross requires that they do not cross at V, so that pulling
+//      the passes through V apart by an arbitrarily small amount makes contours that do not
+//      meet, with the same winding numbers but on a set of no area.
 //      Every segment (line, quadratic, cubic, conic with a positive weight) lies in the convex hull
 //      of its control points, and so does every chord the flattener draws between two of its
 //      points. Two segments are apart when a line separates their hulls: the candidate lines run
@@ -32,7 +39,8 @@
 //      each contour's orientation is decided with a slack of its segments' hull areas (any
 //      flattening moves the contour's area by less), and winding numbers are read at a point of
 //      the contour outside every hull of the other contours (winding_point).
-//   2. So every contour is a simple closed curve and contours do not meet. Its orientation is the
+//   2. So every contour is a simple closed curve and contours do not meet (after the pulling
+//      apart of step 1). Its orientation is the
 //      sign of its area (closed-form Bezier area).
 //   3. The winding number of every region: a region touches some contour A, on A's inside or its
 //      outside, so it is w(A) or w(A) + orientation(A), where w(A) is the winding number of the
@@ -49,6 +57,8 @@
 // A work budget bounds the splitting; past it the verdict is "overlapping" (the exact path).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "casteljau/error.hpp"
@@ -76,6 +86,13 @@ struct Seg {
     int depth = 0;
     double lo = 0, hi = INFINITY;
 };
+
+// b goes straight back along line a (a spike): for plain accumulation the two cancel exactly, as
+// the rasterizer maps their shared end points alike.
+bool is_spike_pair(const Seg& a, const Seg& b) { return a.n == 2 && b.n == 2 && a.p[0] == b.p[1] && a.p[1] == b.p[0]; }
+bool is_spike(const std::vector<Seg>& contour, const Seg& s) {
+    return !contour.empty() && is_spike_pair(contour.back(), s);
+}
 
 Rect box_of(const Seg& s) {
     Rect r{s.p[0].x, s.p[0].y, s.p[0].x, s.p[0].y};
@@ -172,6 +189,11 @@ private:
     bool disjoint(const Seg& a, const Seg& b, int depth);
     bool sectors_apart(const Seg& a, const Seg& b) const;
     bool meet_only_at_end(const Seg& a, const Seg& b, int depth);
+    bool directions_apart(Point u, Point v) const;
+    bool touch_at_vertex(const Seg& a, const Seg& b);
+    bool touches_uncross();
+    std::vector<Point> touches_;  // vertices where non-consecutive lines touch (touch_at_vertex)
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> passes_;  // (touch, segment leaving it)
     // The flattener's bound of a conic node in path units (0 for lines, quadratics and cubics,
     // which it does not halve). Rounding of the bounds (here in path units, in pixels in the
     // flattener) is covered by widening every comparison with them by a relative kBoundSlack.
@@ -308,27 +330,101 @@ bool Classifier::sectors_apart(const Seg& a, const Seg& b) const {
     return !inside(sa.lo, sb) && !inside(sb.lo, sa);
 }
 
+// Two straight segments leaving one point S along u and v meet only at S unless they fold onto
+// each other: apart when the angle between u and v exceeds the angular margin, or they point
+// apart. Directions of vectors shorter than 2^10 margins are not trusted.
+bool Classifier::directions_apart(Point u, Point v) const {
+    const double lu = std::max(std::abs(u.x), std::abs(u.y)), lv = std::max(std::abs(v.x), std::abs(v.y));
+    const double min_len = delta_ * double(1 << 10);
+    if (!(lu >= min_len && lv >= min_len)) return false;
+    const double c = cross(u, v), dot = u.x * v.x + u.y * v.y;
+    // |u| |v| <= 2 lu lv: the turn exceeds the angular margin, or u and v point apart.
+    return std::abs(c) > 2 * lu * lv / double(1 << 20) || dot < -0.5 * lu * lv;
+}
+
 bool Classifier::meet_only_at_end(const Seg& a, const Seg& b, int depth) {
     if (budget_ <= 0) return false;
     --budget_;
-    if (a.n == 2 && b.n == 2) {
-        // Two straight segments from S meet only at S unless they fold back onto each other:
-        // apart when they turn by more than the margin, or continue forwards.
-        const Point u = a.p[0] - b.p[0], v = b.p[1] - b.p[0];
-        const double lu = std::max(std::abs(u.x), std::abs(u.y)), lv = std::max(std::abs(v.x), std::abs(v.y));
-        const double min_len = delta_ * double(1 << 10);
-        if (lu >= min_len && lv >= min_len) {
-            const double c = cross(u, v), dot = u.x * v.x + u.y * v.y;
-            // |u| |v| <= 2 lu lv: the turn exceeds the angular margin, or u and v point apart.
-            if (std::abs(c) > 2 * lu * lv / double(1 << 20) || dot < -0.5 * lu * lv) return true;
-        }
-    }
+    if (a.n == 2 && b.n == 2 && directions_apart(a.p[0] - b.p[0], b.p[1] - b.p[0])) return true;
     if (sectors_apart(a, b)) return true;
     if (depth == 0) return false;
     Seg a0, a1, b0, b1;
     split(a, a0, a1);
     split(b, b0, b1);
     return disjoint(a0, b, depth - 1) && disjoint(a1, b1, depth - 1) && meet_only_at_end(a1, b0, depth - 1);
+}
+
+// Two lines that are not consecutive in a contour share exactly one end point V and leave it in
+// directions apart (directions_apart): they meet at V only, where the boundary touches itself (map
+// rings often touch at a node). V is kept for touches_uncross, which decides whether the touch is
+// harmless. Curves touching at a vertex are not accepted (they take the exact path).
+bool Classifier::touch_at_vertex(const Seg& a, const Seg& b) {
+    if (a.n != 2 || b.n != 2) return false;
+    int shared = 0;
+    Point v{}, ua{}, ub{};
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+            if (a.p[i] == b.p[j]) {
+                ++shared;
+                v = a.p[i];
+                ua = a.p[1 - i] - v;
+                ub = b.p[1 - j] - v;
+            }
+    if (shared != 1 || !directions_apart(ua, ub)) return false;
+    touches_.push_back(v);
+    return true;
+}
+
+// At every touch vertex V the contours pass several times, each pass arriving along one line and
+// leaving along the next. The passes do not cross when, for every two of them, the two directions
+// of one from V lie on the same side of the other's pair in the circular order (chords of a
+// circle that do not interleave). Then the passes can be pulled apart by an arbitrarily small
+// amount without meeting: every contour becomes a simple closed curve apart from the others, and
+// winding numbers change only on a set of no area, so steps 2 and 3 decide the path as they do
+// contours that do not meet. All directions at V are apart by the angular margin (every pair of
+// lines at V passed directions_apart or meet_only_at_end), so the order is not a matter of rounding.
+bool Classifier::touches_uncross() {
+    if (touches_.empty()) return true;
+    auto before = [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
+    std::sort(touches_.begin(), touches_.end(), before);
+    touches_.erase(std::unique(touches_.begin(), touches_.end()), touches_.end());
+    passes_.clear();
+    for (std::size_t i = 0; i < segs_.size(); ++i) {
+        const auto at = std::lower_bound(touches_.begin(), touches_.end(), segs_[i].p[0], before);
+        if (at != touches_.end() && *at == segs_[i].p[0])
+            passes_.emplace_back(static_cast<std::uint32_t>(at - touches_.begin()), static_cast<std::uint32_t>(i));
+    }
+    std::sort(passes_.begin(), passes_.end());
+    struct Pass {
+        double lo, hi;  // the angles of its two directions from V, lo < hi
+    };
+    std::vector<Pass> at_v;
+    for (std::size_t k = 0; k < passes_.size();) {
+        std::size_t e = k;
+        at_v.clear();
+        for (; e < passes_.size() && passes_[e].first == passes_[k].first; ++e) {
+            const Seg& out = segs_[passes_[e].second];
+            const std::size_t c = static_cast<std::size_t>(out.contour);
+            const std::size_t first = contour_at_[c], count = contour_at_[c + 1] - first;
+            const Seg& in = segs_[first + (static_cast<std::size_t>(out.index) + count - 1) % count];
+            if (out.n != 2 || in.n != 2 || !(in.p[1] == out.p[0])) return false;
+            const Point v = out.p[0];
+            const double a = std::atan2(in.p[0].y - v.y, in.p[0].x - v.x);
+            const double b = std::atan2(out.p[1].y - v.y, out.p[1].x - v.x);
+            if (!(a != b)) return false;
+            at_v.push_back({std::min(a, b), std::max(a, b)});
+        }
+        for (std::size_t i = 0; i < at_v.size(); ++i)
+            for (std::size_t j = i + 1; j < at_v.size(); ++j) {
+                const Pass& p = at_v[i];
+                const Pass& q = at_v[j];
+                if (q.lo == p.lo || q.lo == p.hi || q.hi == p.lo || q.hi == p.hi) return false;
+                const bool lo_in = q.lo > p.lo && q.lo<p.hi, hi_in = q.hi> p.lo && q.hi < p.hi;
+                if (lo_in != hi_in) return false;  // the passes cross at V
+            }
+        k = e;
+    }
+    return true;
 }
 
 // The flattener halves conics at t = 1/2 (de Casteljau) while their flatness bound
@@ -569,6 +665,13 @@ bool Classifier::orientation(std::size_t c, int& o, double slack) const {
 }
 
 void Classifier::add_contour(std::vector<Seg>& c) {
+    // Spikes across the contour's start (its last line returning along its first).
+    std::size_t first = 0;
+    while (c.size() - first >= 2 && is_spike_pair(c.back(), c[first])) {
+        c.pop_back();
+        ++first;
+    }
+    c.erase(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(first));
     if (c.empty()) return;
     // At least three segments, so that consecutive segments share exactly one end point.
     while (c.size() < 3) {
@@ -597,6 +700,7 @@ Topology Classifier::run(const Path& path, double lambda) {
     segs_.clear();
     contour_at_.clear();
     contour_.clear();
+    touches_.clear();
     if (!path.is_finite()) return Topology::Overlapping;
     const Rect cb = path.control_bounds();
     if (!(cb.x1 >= cb.x0)) return Topology::Simple;  // no points
@@ -643,6 +747,12 @@ Topology Classifier::run(const Path& path, double lambda) {
             if (!mono(&Point::x) && !mono(&Point::y)) self_crossing = true;
         }
         s.box = box_of(s);
+        // A line straight back along the previous one (a spike, A to B to A) adds nothing to any
+        // pixel's integral and no area anywhere: both are left out.
+        if (is_spike(contour, s)) {
+            contour.pop_back();
+            return;
+        }
         contour.push_back(s);
     };
     auto end_contour = [&]() {
@@ -748,7 +858,7 @@ Topology Classifier::run(const Path& path, double lambda) {
                     else if (s.contour == t.contour && (s.index == t.index + 1 || (t.index == last && s.index == 0)))
                         ok = meet_only_at_end(t, s, kDepth);
                     else {
-                        ok = disjoint(s, t, kDepth);
+                        ok = disjoint(s, t, kDepth) || touch_at_vertex(s, t);
                         if (!ok && lambda_ > 0 && s.whole && t.whole) {
                             Seg a = s, b = t;
                             as_root(a);
@@ -761,6 +871,8 @@ Topology Classifier::run(const Path& path, double lambda) {
                     if (!ok) return Topology::Overlapping;
                 }
         }
+
+    if (!touches_uncross()) return Topology::Overlapping;
 
     // 2 and 3. Orientation of each contour and winding numbers of the others along it.
     std::vector<Rect>& boxes = boxes_;
@@ -778,8 +890,9 @@ Topology Classifier::run(const Path& path, double lambda) {
     }
     int lo = 0, hi = 0;
     for (std::size_t a = 0; a < ncontours; ++a) {
+        // The winding numbers are read at a vertex of a; where contours touch, at one clear of the others.
         Point p = segs_[contour_at_[a]].p[0];
-        if (lambda_ > 0 && !winding_point(a, boxes, p)) return Topology::Overlapping;
+        if ((lambda_ > 0 || !touches_.empty()) && !winding_point(a, boxes, p)) return Topology::Overlapping;
         int w = 0;
         for (std::size_t b = 0; b < ncontours; ++b) {
             if (b == a || boxes_apart(boxes[b], Rect{p.x, p.y, p.x, p.y})) continue;

@@ -109,17 +109,120 @@ TEST_CASE("topology: crossings, nesting and stacked copies are Overlapping", "[r
     Path loop;
     loop.move_to(0, 0).cubic_to({30, 30}, {-20, 30}, {10, 0}).close();
     CHECK(classify_topology(loop) == Topology::Overlapping);
-    // Contours that touch at a vertex are not proven simple (the margin).
-    CHECK(classify_topology(join(square(0, 0, 10), square(10, 10, 10))) == Topology::Overlapping);
+    // Contours that cross where they share a vertex (windings 1 and -1 on either side of it).
+    CHECK(classify_topology(polygon({{0, 0}, {10, 10}, {20, 20}, {20, 0}, {10, 10}, {0, 20}})) ==
+          Topology::Overlapping);
+    // Squares touching at a corner with opposite orientations (windings 1 and -1).
+    CHECK(classify_topology(join(square(0, 0, 10), square(10, 10, 10, false))) == Topology::Overlapping);
+    // A corner touching the middle of another square's side (not a shared vertex) is not proven.
+    CHECK(classify_topology(join(square(0, 0, 10), square(10, 5, 10))) == Topology::Overlapping);
     // Consecutive curves whose hulls leave their shared point in overlapping directions: b starts
     // below a and ends above it, so it crosses a (windings 1 and -1).
     Path crossing_curves;
     crossing_curves.move_to(0, 0).quad_to({10, 10}, {20, 0}).quad_to({10, -2}, {0, 4}).close();
     CHECK(classify_topology(crossing_curves) == Topology::Overlapping);
-    // A spike going back on itself.
-    CHECK(classify_topology(polygon({{0, 0}, {10, 0}, {20, 0}, {10, 0}, {10, 10}})) == Topology::Overlapping);
+    // A fold that does not return to the vertex it left (only part of the way back).
+    CHECK(classify_topology(polygon({{0, 0}, {10, 0}, {20, 0}, {15, 0}, {10, 10}})) == Topology::Overlapping);
     // Non-finite coordinates never claim simplicity.
     CHECK(classify_topology(polygon({{0, 0}, {NAN, 0}, {5, 5}})) == Topology::Overlapping);
+}
+
+TEST_CASE("topology: contours touching at shared vertices without crossing are Simple", "[raster][topology]") {
+    // Squares touching at a corner (map rings meeting at a node): windings 0 and 1.
+    const Path corners = join(square(0, 0, 10), square(10, 10, 10));
+    CHECK(classify_topology(corners) == Topology::Simple);
+    // The same with three more squares around the corner... two of them touch it diagonally
+    // opposite, so four squares meet at (10, 10) like a checkerboard.
+    const Path checker = join(join(corners, square(10, 0, 10, false)), square(0, 10, 10, false));
+    CHECK(classify_topology(checker) == Topology::Overlapping);  // the other two have the other orientation
+    // A ring touching itself: a lake pinched onto the shore at (20, 0), traced in the opposite
+    // direction (winding 0 inside it).
+    const Path pinched_lake = polygon({{0, 0}, {20, 0}, {15, 10}, {25, 10}, {20, 0}, {40, 0}, {40, 40}, {0, 40}});
+    CHECK(classify_topology(pinched_lake) == Topology::Simple);
+    // The same lobe traced the other way crosses the shore at (20, 0) (winding 2 inside).
+    const Path pinched_lobe = polygon({{0, 0}, {20, 0}, {25, 10}, {15, 10}, {20, 0}, {40, 0}, {40, 40}, {0, 40}});
+    CHECK(classify_topology(pinched_lobe) == Topology::Overlapping);
+    // Two triangles joined at one vertex, one contour (a bow tie pinched, not crossed).
+    const Path bow = polygon({{0, 0}, {10, 10}, {20, 0}, {20, 20}, {10, 10}, {0, 20}});
+    CHECK(classify_topology(bow) == Topology::Simple);
+    // Spikes (straight out and back to the same vertex) add no area: the rest decides.
+    CHECK(classify_topology(polygon({{0, 0}, {10, 0}, {20, 0}, {10, 0}, {10, 10}})) == Topology::Simple);
+    CHECK(classify_topology(polygon({{0, 0}, {10, 0}, {10, 10}, {30, 30}, {10, 10}, {0, 10}})) == Topology::Simple);
+    // A spike across the contour's start, and a contour that is only a spike.
+    CHECK(classify_topology(polygon({{-5, -5}, {0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}})) == Topology::Simple);
+    CHECK(classify_topology(polygon({{0, 0}, {10, 0}})) == Topology::Simple);
+    // Curves touching at a vertex are not proven (only lines are).
+    Path curved = square(0, 0, 10);
+    curved.move_to(10, 10).quad_to({20, 10}, {20, 20}).line_to(10, 20).close();
+    CHECK(classify_topology(curved) == Topology::Overlapping);
+    // Every Simple one renders with plain accumulation as the exact reference does, with the shared
+    // vertices inside pixels (not on their corners).
+    Rasterizer r;
+    FillOptions plain;
+    plain.exact_overlaps = false;
+    const Affine m = Affine::translate(0.37, 0.61) * Affine::scale(0.43, 0.41);
+    const ref::Contours shapes[] = {
+        {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{10, 10}, {20, 10}, {20, 20}, {10, 20}}},
+        {{{0, 0}, {20, 0}, {15, 10}, {25, 10}, {20, 0}, {40, 0}, {40, 40}, {0, 40}}},
+        {{{0, 0}, {10, 10}, {20, 0}, {20, 20}, {10, 10}, {0, 20}}},
+        {{{0, 0}, {10, 0}, {10, 10}, {30, 30}, {10, 10}, {0, 10}}},
+    };
+    for (const ref::Contours& cs : shapes) {
+        const Path p = ref::to_path(cs);
+        REQUIRE(classify_topology(p) == Topology::Simple);
+        for (FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
+            plain.rule = rule;
+            const IRect clip{0, 0, 20, 20};
+            const auto cmp = compare(render(r, p, m, plain, clip), ref::slab_area(ref::transformed(cs, m), rule, clip));
+            INFO(cmp.text());
+            CHECK(cmp.max_err <= 1.0);
+        }
+    }
+}
+
+TEST_CASE("topology: random polygons on a coarse lattice classified Simple render plainly within the exact bound",
+          "[raster][topology]") {
+    // Vertices on a 5 x 5 lattice: contours touch at shared vertices, run back along their own
+    // edges, cross at vertices and along edges. Whatever is classified Simple must accumulate
+    // exactly, under both rules, with the lattice points inside pixels.
+    std::mt19937 rng(2026);
+    std::uniform_int_distribution<int> coord(0, 4);
+    Rasterizer r;
+    FillOptions plain;
+    plain.exact_overlaps = false;
+    const Affine m = Affine::translate(0.3, 0.45) * Affine::scale(3.1, 2.9);
+    const IRect clip{0, 0, 16, 16};
+    int simple = 0, overlapping = 0, touching_simple = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        ref::Contours cs(1 + trial % 3);
+        bool shares = false;
+        std::vector<Point> seen;
+        for (ref::Contour& c : cs) {
+            const int n = 3 + static_cast<int>(rng() % 5);
+            for (int k = 0; k < n; ++k) {
+                const Point q{double(coord(rng)), double(coord(rng))};
+                if (std::find(seen.begin(), seen.end(), q) != seen.end()) shares = true;
+                seen.push_back(q);
+                c.push_back(q);
+            }
+        }
+        const Path p = ref::to_path(cs);
+        if (classify_topology(p) != Topology::Simple) {
+            ++overlapping;
+            continue;
+        }
+        ++simple;
+        if (shares) ++touching_simple;
+        for (FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
+            plain.rule = rule;
+            const auto cmp = compare(render(r, p, m, plain, clip), ref::slab_area(ref::transformed(cs, m), rule, clip));
+            INFO("trial " << trial << ": " << cmp.text());
+            CHECK(cmp.max_err <= 1.0);
+        }
+    }
+    CHECK(simple > 200);
+    CHECK(overlapping > 200);
+    CHECK(touching_simple > 50);  // shapes proven through a shared vertex or a spike
 }
 
 TEST_CASE("topology: verdicts do not change under affine maps", "[raster][topology]") {
