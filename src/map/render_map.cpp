@@ -18,6 +18,7 @@
 #include "casteljau/seamless.hpp"
 #include "core/for_each_index.hpp"
 #include "map/clip_to_frame.hpp"
+#include "map/ring_spikes.hpp"
 #include "map/simplify_map.hpp"
 #include "map/unique_segments.hpp"
 
@@ -163,12 +164,17 @@ struct PathVisitor final : PieceVisitor {
     double point_radius = 3;
     // Strokes only: rings and lines cut to this rectangle around the image (clip_to_frame.hpp).
     std::optional<Rect> clip;
+    bool fill_only = false;              // rings only filled: their spikes go (ring_spikes.hpp)
     Path fill;                           // polygons + point disks
     Path lines;                          // open polylines, to be stroked
     std::vector<Point> mapped, clipped;  // a ring in pixel space
     void ring(const std::vector<Point>& pts) override {
         mapped.resize(pts.size());
         for (std::size_t i = 0; i < pts.size(); ++i) mapped[i] = m.apply(pts[i]);
+        if (fill_only) {
+            map_detail::drop_spikes(mapped);
+            if (mapped.size() < 3) return;
+        }
         if (clip && !map_detail::inside(mapped, *clip)) {
             map_detail::clip_ring(mapped, *clip, clipped);
             if (clipped.size() >= 3) fill.add_polygon(clipped);
@@ -568,6 +574,7 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
             const std::optional<Color> c = layer.fill_for(data.features[feature]);
             if (!c) return;
             PathVisitor v;
+            v.fill_only = true;
             build(w, feature, v);
             if (v.fill.empty()) return;
             out = Drawable{std::move(v.fill), *c, Path{}};

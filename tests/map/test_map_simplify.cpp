@@ -20,6 +20,7 @@
 #include "casteljau/png.hpp"
 #include "casteljau/tiles.hpp"
 #include "map/border_nodes.hpp"
+#include "map/ring_spikes.hpp"
 #include "map/simplify_map.hpp"
 #include "map/simplify_polyline.hpp"
 #include "map_test_util.hpp"
@@ -380,4 +381,58 @@ TEST_CASE("Map simplify: sparse data are drawn as they are, dense data simplifie
         else
             CHECK(differ > 0);
     }
+}
+
+TEST_CASE("drop_spikes: steps out and straight back leave a ring, nothing else does", "[map][simplify]") {
+    using map_detail::drop_spikes;
+    auto spikes_out = [](std::vector<Point> r) {
+        drop_spikes(r);
+        return r;
+    };
+    const std::vector<Point> square{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+    CHECK(spikes_out(square) == square);
+    // A spike, a spike with a spike on it (A B C B A), a repeated position, the first position
+    // repeated at the end.
+    CHECK(spikes_out({{0, 0}, {4, 0}, {6, 1}, {4, 0}, {4, 4}, {0, 4}}) == square);
+    CHECK(spikes_out({{0, 0}, {4, 0}, {6, 1}, {7, 3}, {6, 1}, {4, 0}, {4, 4}, {0, 4}}) == square);
+    CHECK(spikes_out({{0, 0}, {4, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}}) == square);
+    // Across the start: the tip is the last position, or the first.
+    CHECK(spikes_out({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {-2, -3}}) ==
+          std::vector<Point>{{0, 0}, {4, 0}, {4, 4}, {0, 4}, {-2, -3}});  // a fifth corner, not a spike
+    CHECK(spikes_out({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}, {-2, -3}}) == square);
+    CHECK(spikes_out({{-2, -3}, {0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}}) ==
+          std::vector<Point>{{4, 0}, {4, 4}, {0, 4}, {0, 0}});
+    // A fold only part of the way back is kept (it is not a spike).
+    const std::vector<Point> fold{{0, 0}, {4, 0}, {6, 0}, {5, 0}, {4, 4}, {0, 4}};
+    CHECK(spikes_out(fold) == fold);
+    // Nothing but spikes: empty.
+    CHECK(spikes_out({{0, 0}, {4, 0}, {0, 0}}).empty());
+    CHECK(spikes_out({{0, 0}, {4, 0}, {5, 5}, {4, 0}}).empty());
+    CHECK(spikes_out({}).empty());
+}
+
+TEST_CASE("Maps: a polygon with spikes fills as without them, and its stroke keeps them", "[map][simplify]") {
+    const char* with =
+        R"({"type":"Polygon","coordinates":[[[0,0],[10,0],[15,3],[10,0],[10,10],[0,10],[-4,12],[0,10],[0,0]]]})";
+    const char* without = R"({"type":"Polygon","coordinates":[[[0,0],[10,0],[10,10],[0,10],[0,0]]]})";
+    MapOptions o;
+    o.width = 200;
+    o.height = 200;
+    o.bbox = Rect{-5.3, -5.1, 16.1, 15.2};
+    MapStyle fill_only;
+    const Pixmap a = render_map(read_geojson(with), MapProjection{}, fill_only, o);
+    const Pixmap b = render_map(read_geojson(without), MapProjection{}, fill_only, o);
+    int differing = 0;
+    for (int y = 0; y < 200; ++y)
+        for (int x = 0; x < 200; ++x) differing += !(a.pixel(x, y) == b.pixel(x, y));
+    CHECK(differing == 0);
+    MapStyle stroked;
+    stroked.layers[0].fill.reset();
+    stroked.layers[0].stroke = Color::black();
+    const Pixmap c = render_map(read_geojson(with), MapProjection{}, stroked, o);
+    const Pixmap d = render_map(read_geojson(without), MapProjection{}, stroked, o);
+    differing = 0;
+    for (int y = 0; y < 200; ++y)
+        for (int x = 0; x < 200; ++x) differing += !(c.pixel(x, y) == d.pixel(x, y));
+    CHECK(differing > 20);  // the spikes' strokes
 }
