@@ -17,7 +17,7 @@
 //   - A cell with one visit whose run cannot cross itself and which enters and leaves through the
 //     cell's boundary is split by it into two regions whose windings differ by one: exact. A run
 //     cannot cross itself when it is monotone in x or in y, has at most two edges (one bend), or
-//     (checked pairwise, up to 16 edges) no two of its edges meet except consecutive ones at their
+//     (checked pairwise, up to 32 edges) no two of its edges meet except consecutive ones at their
 //     vertex. (The run through a contour's start vertex arrives in two parts, the contour's first
 //     and last edges; they are merged when the contour closes.)
 //   - A cell with two to six such runs that do not meet inside the closed cell: every region

@@ -423,6 +423,43 @@ TEST_CASE("fill rules: small closed loops inside one pixel are exact by accumula
     }
 }
 
+TEST_CASE("fill rules: a run of 27 edges winding through one pixel is checked, not computed exactly", "[fillrule]") {
+    // The contour enters pixel (5, 5) from the left, meanders down through it (right, down, left,
+    // down, ...), climbs back along its right side and leaves: one run of 27 edges, monotone in
+    // neither x nor y, that does not cross itself. A copy whose lower rungs reach across the climb
+    // crosses itself there.
+    const Contour meander = [] {
+        Contour c{{1.0, 5.1}, {5.0, 5.1}};
+        double y = 5.1;
+        for (int k = 0; k < 12; ++k) {
+            const bool right = k % 2 == 0;
+            c.push_back({right ? 5.9 : 5.1, y});
+            y += 0.055;
+            c.push_back({right ? 5.9 : 5.1, y});
+        }
+        c.push_back({5.95, y});
+        c.push_back({5.95, 5.05});
+        c.push_back({6.5, 5.05});
+        c.push_back({6.5, 9.0});
+        c.push_back({1.0, 9.0});
+        return c;
+    }();
+    Rasterizer r;
+    FillOptions opts;
+    opts.topology = Topology::Overlapping;
+    for (FillRule rule : kRules) {
+        opts.rule = rule;
+        check_polygons(r, {meander}, Affine::identity(), opts, {0, 0, 8, 10}, "meander");
+        CHECK(r.last_stats().exact_cells == 0);
+    }
+    Contour crossed = meander;
+    for (Point& q : crossed)
+        if (q.x == 5.9 && q.y > 5.6) q.x = 5.97;
+    opts.rule = FillRule::NonZero;
+    check_polygons(r, {crossed}, Affine::identity(), opts, {0, 0, 8, 10}, "meander crossing its climb");
+    CHECK(r.last_stats().exact_cells >= 1);
+}
+
 TEST_CASE("fill rules: random small loops among a pixel's edges match the exact reference", "[fillrule]") {
     // Random polygons with random small triangles (inside one pixel each, either orientation):
     // whatever the per-cell check decides for the loops, the coverage is exact.
