@@ -20,7 +20,7 @@
 //     (checked pairwise, up to 32 edges) no two of its edges meet except consecutive ones at their
 //     vertex. (The run through a contour's start vertex arrives in two parts, the contour's first
 //     and last edges; they are merged when the contour closes.)
-//   - A cell with two to twelve such runs that do not meet inside the closed cell: every region
+//   - A cell with two to six such runs that do not meet inside the closed cell: every region
 //     between them touches the cell's boundary, so the windings in the cell are those met going
 //     around the boundary, changing by -1 where a run enters and +1 where one leaves. When they
 //     take two values at most (for two runs: entries and exits alternate, as in a stem with one
@@ -32,7 +32,7 @@
 //     the region around it, read by crossing the other runs from its first vertex to the cell's
 //     right side. With loops among the runs, accumulation is exact when all windings so found
 //     take two values at most.
-//   - Every other cell with visits (crossings, stacked copies, more than twelve runs, loops on the
+//   - Every other cell with visits (crossings, stacked copies, more than six runs, loops on the
 //     boundary) is recomputed exactly from its edges (exact_cell.cpp) with the accumulated
 //     integral.
 // Only positive-length pieces inside the open cell count as visits: an edge along a cell's
@@ -334,7 +334,7 @@ bool Engine::simple_run(const Visit& v) const {
     return true;
 }
 
-// Two to kMaxRuns simple runs in one cell, of two kinds: open runs, which enter and leave through the
+// Two to six simple runs in one cell, of two kinds: open runs, which enter and leave through the
 // cell's boundary, and loops, closed runs with every vertex inside the open cell (a small island
 // or lake of a map). When no two runs meet inside the closed cell, each region between the open
 // runs touches the boundary, where the windings change by -1 at every entry and +1 at every exit

@@ -90,7 +90,7 @@ private:
     // than an exact cell of as many (a map's coasts at small sizes wind through one pixel in 17 to
     // 32 edges; countries-land-10km at 256 px: 575 exact cells at 16, 399 at 32, 363 at 64).
     static constexpr int kMaxRunEdges = 32;
-    static constexpr int kMaxRuns = 12;  // cells with more runs are computed exactly
+    static constexpr int kMaxRuns = 6;  // cells with more runs are computed exactly
     int run_edges(const Visit& v, std::uint32_t* out) const;
     bool harmless_many(const Visit* const* runs, int n, int col, int row) const;
 
