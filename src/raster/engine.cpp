@@ -334,6 +334,13 @@ bool Engine::simple_run(const Visit& v) const {
     return true;
 }
 
+// Whether run v ends where it starts (a loop, when every vertex is inside the cell).
+bool Engine::closed_run(const Visit& v) const {
+    const Edge& first = segs_[v.pre >= 0 ? visits_[static_cast<std::size_t>(v.pre)].s0 : v.s0];
+    const Edge& last = segs_[v.s1];
+    return last.x1 == first.x0 && last.y1 == first.y0;
+}
+
 // Two to six simple runs in one cell, of two kinds: open runs, which enter and leave through the
 // cell's boundary, and loops, closed runs with every vertex inside the open cell (a small island
 // or lake of a map). When no two runs meet inside the closed cell, each region between the open
@@ -369,6 +376,18 @@ bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) co
         ends[nends++] = {boundary_param(bx - col, by - row), 1};
         if (ends[nends - 2].t < 0 || ends[nends - 1].t < 0) return false;
     }
+    // The walk around the boundary first: it is cheap, and where many runs crowd a cell (the hub
+    // of a tight bend) it usually finds the windings spanning more than one unit at once.
+    for (int k = 1; k < nends; ++k)  // insertion sort (at most 2 * kMaxRuns ends)
+        for (int j = k; j > 0 && ends[j].t < ends[j - 1].t; --j) std::swap(ends[j], ends[j - 1]);
+    int w = 0, lo = 0, hi = 0;
+    for (int k = 0; k < nends; ++k) {
+        if (k > 0 && ends[k].t == ends[k - 1].t) return false;
+        w += ends[k].step;
+        lo = std::min(lo, w);
+        hi = std::max(hi, w);
+    }
+    if (hi - lo > 1) return false;
     // Only the runs' parts inside the closed cell must not meet: consecutive runs of a contour that
     // leaves the cell and comes back one vertex later meet at that vertex, outside.
     ExactScratch::Piece pieces[kMaxRuns][kMaxRunEdges];
@@ -388,15 +407,6 @@ bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) co
                     const ExactScratch::Piece& q = pieces[b][j];
                     if (segments_meet(p.ax, p.ay, p.bx, p.by, q.ax, q.ay, q.bx, q.by)) return false;
                 }
-    for (int k = 1; k < nends; ++k)  // insertion sort (at most 2 * kMaxRuns ends)
-        for (int j = k; j > 0 && ends[j].t < ends[j - 1].t; --j) std::swap(ends[j], ends[j - 1]);
-    int w = 0, lo = 0, hi = 0;
-    for (int k = 0; k < nends; ++k) {
-        if (k > 0 && ends[k].t == ends[k - 1].t) return false;
-        w += ends[k].step;
-        lo = std::min(lo, w);
-        hi = std::max(hi, w);
-    }
     for (int k = 0; k < n; ++k) {
         if (!loop[k]) continue;
         const double px = segs_[ids[k][0]].x0, py = segs_[ids[k][0]].y0;
@@ -457,7 +467,10 @@ void Engine::classify() {
         }
         if (all_simple && n == 1) continue;
         if (all_simple && n == 2 && harmless_two(*runs[0], *runs[1], col, row)) continue;
-        if (all_simple && n >= 2 && n <= kMaxRuns && harmless_many(runs, n, col, row)) continue;
+        // Two open runs harmless_two turned down are not harmless; with a loop they may be.
+        if (all_simple && n >= 2 && n <= kMaxRuns && (n > 2 || closed_run(*runs[0]) || closed_run(*runs[1])) &&
+            harmless_many(runs, n, col, row))
+            continue;
         exact_.push_back(cell);
     }
     // ... then list the exact ones in row order (finish() sums each row from its start) with their edges.

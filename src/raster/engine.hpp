@@ -86,6 +86,7 @@ private:
     void gather(const Visit& v, int col, int row, std::vector<ExactScratch::Piece>& out) const;
     void classify();
     bool simple_run(const Visit& v) const;
+    bool closed_run(const Visit& v) const;
     // Longer runs are not checked for simplicity: exact. The pairwise check of 32 edges costs less
     // than an exact cell of as many (a map's coasts at small sizes wind through one pixel in 17 to
     // 32 edges; countries-land-10km at 256 px: 575 exact cells at 16, 399 at 32, 363 at 64).
