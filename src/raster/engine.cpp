@@ -304,6 +304,13 @@ int Engine::run_edges(const Visit& v, std::uint32_t* out) const {
     return add(v) ? n : -1;
 }
 
+// Whether run v ends where it starts (a loop, when every vertex is inside the cell).
+bool Engine::closed_run(const Visit& v) const {
+    const Edge& first = segs_[v.pre >= 0 ? visits_[static_cast<std::size_t>(v.pre)].s0 : v.s0];
+    const Edge& last = segs_[v.s1];
+    return last.x1 == first.x0 && last.y1 == first.y0;
+}
+
 // A run that cannot cross itself: monotone in x or in y, at most two edges (one bend), or (up to
 // kMaxRunEdges edges) no two of its edges meet except consecutive ones at their shared vertex,
 // and no two consecutive ones fold back onto each other. A run whose last edge ends where its
@@ -315,14 +322,12 @@ bool Engine::simple_run(const Visit& v) const {
     const int n = run_edges(v, ids);
     if (n < 0) return false;
     if (n <= 2) return true;
-    const Edge& first = segs_[ids[0]];
-    const Edge& last = segs_[ids[n - 1]];
-    const bool closed = last.x1 == first.x0 && last.y1 == first.y0;
+    const bool closed = closed_run(v);
     auto folds = [](const Edge& a, const Edge& b) {
         const double ax = a.x1 - a.x0, ay = a.y1 - a.y0, bx = b.x1 - b.x0, by = b.y1 - b.y0;
         return ax * by - ay * bx == 0 && ax * bx + ay * by < 0;
     };
-    if (closed && folds(last, first)) return false;
+    if (closed && folds(segs_[ids[n - 1]], segs_[ids[0]])) return false;
     for (int i = 0; i < n; ++i) {
         const Edge& a = segs_[ids[i]];
         if (i + 1 < n && folds(a, segs_[ids[i + 1]])) return false;
@@ -332,13 +337,6 @@ bool Engine::simple_run(const Visit& v) const {
         }
     }
     return true;
-}
-
-// Whether run v ends where it starts (a loop, when every vertex is inside the cell).
-bool Engine::closed_run(const Visit& v) const {
-    const Edge& first = segs_[v.pre >= 0 ? visits_[static_cast<std::size_t>(v.pre)].s0 : v.s0];
-    const Edge& last = segs_[v.s1];
-    return last.x1 == first.x0 && last.y1 == first.y0;
 }
 
 // Two to six simple runs in one cell, of two kinds: open runs, which enter and leave through the
@@ -364,11 +362,11 @@ bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) co
     for (int k = 0; k < n; ++k) {
         counts[k] = run_edges(*runs[k], ids[k]);
         if (counts[k] < 0) return false;
-        const Edge& first = segs_[ids[k][0]];
-        const Edge& last = segs_[ids[k][counts[k] - 1]];
-        loop[k] = last.x1 == first.x0 && last.y1 == first.y0;
+        loop[k] = closed_run(*runs[k]);
         for (int i = 0; i < counts[k] && loop[k]; ++i) loop[k] = inside_open(segs_[ids[k][i]].x0, segs_[ids[k][i]].y0);
         if (loop[k]) continue;
+        const Edge& first = segs_[ids[k][0]];
+        const Edge& last = segs_[ids[k][counts[k] - 1]];
         double ax, ay, bx, by;
         if (!cell_portion(first, col, row, ax, ay, bx, by) || (ax == bx && ay == by)) return false;
         ends[nends++] = {boundary_param(ax - col, ay - row), -1};
@@ -428,7 +426,7 @@ bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) co
                 const double side = orient(q.ax, q.ay, q.bx, q.by, px, py);
                 if (side == 0) return false;
                 const bool down = q.by > q.ay;
-                if ((side > 0) == down) around -= down ? -1 : 1;  // the piece is right of P
+                if ((side > 0) == down) around += down ? 1 : -1;  // the piece is right of P
             }
         }
         // The loop's orientation: the sign of its area (shoelace about P), > 0 adding +1 by the
