@@ -51,6 +51,11 @@ struct Geometry {
     std::vector<Point> points;
     std::vector<std::uint32_t> ring_ends;
     std::vector<std::uint32_t> polygon_ends;
+    // TopoJSON only (empty otherwise): the indices into `points`, in order, where a ring or line
+    // begins an arc, that is each ring's or line's first position and every position two
+    // consecutive arcs share. A border two features share is one arc, so these are where shared
+    // borders begin and end.
+    std::vector<std::uint32_t> arc_starts;
 };
 
 struct PropertyValue {

@@ -98,7 +98,13 @@ struct TopoReader {
         used.assign(out.arc_ends.size(), false);
     }
 
-    // Appends the positions of a list of arc indices (one ring or line) to g.
+    // Forgets the arc starts beyond g's positions (after rings were dropped).
+    static void drop_arc_starts(Geometry& g) {
+        while (!g.arc_starts.empty() && g.arc_starts.back() >= g.points.size()) g.arc_starts.pop_back();
+    }
+
+    // Appends the positions of a list of arc indices (one ring or line) to g, and where its arcs
+    // start to g.arc_starts.
     // Returns false for a ring collapsed below 4 positions (not added).
     bool arc_list(element e, Geometry& g, bool ring) {
         array a = get_array(e, "an array of arc indices");
@@ -120,17 +126,21 @@ struct TopoReader {
             geo_detail::count_positions(positions, a1 - a0, path);
             // Consecutive arcs share their joining position: keep it once.
             const std::size_t skip = i > 0 ? 1 : 0;
+            const std::size_t start = g.points.size() > begin ? g.points.size() - skip : begin;
             if (k >= 0) {
                 for (std::size_t j = a0 + skip; j < a1; ++j) g.points.push_back(out.arc_points[j]);
             } else {
                 for (std::size_t j = a1 - skip; j-- > a0;) g.points.push_back(out.arc_points[j]);
             }
+            if (start < g.points.size() && (g.arc_starts.empty() || g.arc_starts.back() < start))
+                g.arc_starts.push_back(static_cast<std::uint32_t>(start));
             ++i;
         }
         if (ring && g.points.size() - begin < 4) {
             // Quantization collapses tiny rings to fewer than 4 positions (Natural Earth 10m has
             // some): they enclose no area and are dropped.
             g.points.resize(begin);
+            drop_arc_starts(g);
             return false;
         }
         if (ring) geo_detail::check_ring(g, begin, path);
@@ -151,6 +161,7 @@ struct TopoReader {
         if (!exterior_ok) {  // a collapsed exterior: the holes inside it go too
             g.points.resize(points0);
             g.ring_ends.resize(rings0);
+            drop_arc_starts(g);
             return;
         }
         if (g.ring_ends.size() > rings0) g.polygon_ends.push_back(static_cast<std::uint32_t>(g.ring_ends.size()));

@@ -64,15 +64,6 @@ public:
         }
     }
 
-    // The entry of position p (hash h), or kNone.
-    std::uint32_t find(Point p, std::uint64_t h) const {
-        for (std::size_t s = home(h);; s = s + 1 == slots_.size() ? 0 : s + 1) {
-            const Slot& x = slots_[s];
-            if (!x.used) return kNone;
-            if (x.p == p) return static_cast<std::uint32_t>(s);
-        }
-    }
-
     // Records that entry e occurs between entries u and v.
     void neighbours(std::uint32_t e, std::uint32_t u, std::uint32_t v) {
         Slot& x = slots_[e];
@@ -204,34 +195,62 @@ void nodes_from_positions(const MapData& data, BorderNodes& r) {
     }
 }
 
-// TopoJSON: every ring and line is a chain of arcs, and a border two rings share is one arc, so
-// the nodes are the ends of the arcs (a table of those only), and what every ring or line has
-// whatever its neighbours.
-void nodes_from_arcs(const MapData& data, BorderNodes& r) {
-    PositionTable ends(2 * data.used_arcs.size());
-    for (std::uint32_t a : data.used_arcs) {
-        const std::uint32_t first = a == 0 ? 0 : data.arc_ends[a - 1], last = data.arc_ends[a];
-        if (first == last) continue;
-        for (Point p : {data.arc_points[first], data.arc_points[last - 1]})
-            ends.make_node(ends.find_or_add(p, hash_point(p)));
+// Marks in `node` (indexed like pts) the positions of one ring or line that are nodes whatever its
+// neighbours: every position of one with fewer than three distinct positions, a line's ends, and
+// the ends of a step across the antimeridian. `distinct` holds distinct_positions(pts, closed).
+void intrinsic_nodes(std::span<const Point> pts, bool closed, std::span<const std::uint32_t> distinct,
+                     std::span<std::uint8_t> node) {
+    const std::size_t m = distinct.size();
+    for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t next = k + 1 == m ? 0 : k + 1;
+        if (m < 3 || (!closed && (k == 0 || k + 1 == m))) node[distinct[k]] = 1;
+        if ((closed || k + 1 < m) && std::fabs(pts[distinct[next]].x - pts[distinct[k]].x) > 180)
+            node[distinct[k]] = node[distinct[next]] = 1;
     }
+}
+
+// TopoJSON: every ring and line is a chain of arcs, and a border two rings share is one arc, so
+// the nodes are where a ring or line passes from one arc to the next (Geometry::arc_starts), and
+// what every ring or line has whatever its neighbours. An arc start that repeats a position counts
+// for the first of its repeats (the one distinct_positions keeps); one among a ring's closing
+// repeats, for its first position.
+void nodes_from_arcs(const MapData& data, BorderNodes& r) {
     std::vector<std::uint32_t> distinct;
-    std::vector<std::uint64_t> hashes;
-    for_each_line(data, [&](std::span<const Point> pts, bool closed, std::size_t base) {
-        distinct_positions(pts, closed, distinct);
-        const std::size_t m = distinct.size();
-        hashes.resize(m);
-        for (std::size_t k = 0; k < m; ++k) hashes[k] = hash_point(pts[distinct[k]]);
-        for (std::size_t k = 0; k < m; ++k) {
-            if (k + kAhead < m) ends.prefetch(hashes[k + kAhead]);
-            const Point p = pts[distinct[k]];
-            const Point q = pts[distinct[(k + 1) % m]];
-            const bool end = !closed && (k == 0 || k + 1 == m);
-            if (m < 3 || end || ends.find(p, hashes[k]) != kNone) r.node[base + distinct[k]] = 1;
-            if ((closed || k + 1 < m) && std::fabs(q.x - p.x) > 180)
-                r.node[base + distinct[k]] = r.node[base + distinct[(k + 1) % m]] = 1;
+    std::size_t base = 0;
+    for (const Feature& f : data.features)
+        for (const Geometry& g : f.geometries) {
+            if (g.kind != GeometryKind::Points) {
+                const bool closed = g.kind == GeometryKind::Polygons;
+                const std::span<const Point> all(g.points);
+                std::size_t next = 0;  // the first of g.arc_starts not yet placed
+                std::uint32_t start = 0;
+                for (std::uint32_t end : g.ring_ends) {
+                    const std::span<const Point> pts = all.subspan(start, end - start);
+                    const std::span<std::uint8_t> node =
+                        std::span<std::uint8_t>(r.node).subspan(base + start, pts.size());
+                    distinct_positions(pts, closed, distinct);
+                    intrinsic_nodes(pts, closed, distinct, node);
+                    std::size_t k = 0;  // the group of repeats the arc start falls in
+                    for (; next < g.arc_starts.size() && g.arc_starts[next] < end; ++next) {
+                        if (g.arc_starts[next] < start || distinct.empty()) continue;
+                        const std::uint32_t i = g.arc_starts[next] - start;
+                        while (k + 1 < distinct.size() && distinct[k + 1] <= i) ++k;
+                        node[pts[i] == pts[distinct[k]] ? distinct[k] : distinct[0]] = 1;
+                    }
+                    start = end;
+                }
+            }
+            base += g.points.size();
         }
-    });
+}
+
+// Whether the data's rings and lines were assembled from arcs, each geometry with its arc starts.
+bool has_arc_starts(const MapData& data) {
+    if (data.arc_ends.empty()) return false;
+    for (const Feature& f : data.features)
+        for (const Geometry& g : f.geometries)
+            if (g.kind != GeometryKind::Points && !g.points.empty() && g.arc_starts.empty()) return false;
+    return true;
 }
 
 }  // namespace
@@ -246,7 +265,7 @@ BorderNodes find_border_nodes(const MapData& data) {
     }
     r.feature_start.push_back(total);
     r.node.assign(total, 0);
-    if (!data.arc_ends.empty())
+    if (has_arc_starts(data))
         nodes_from_arcs(data, r);
     else
         nodes_from_positions(data, r);

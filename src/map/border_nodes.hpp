@@ -12,17 +12,18 @@
 // Between two consecutive nodes of a ring every position has the same two neighbours wherever it
 // occurs, so such a run is either held whole by every ring that holds one of its inner positions,
 // in one direction or the other, or by none: the runs between nodes are the arcs of the data's
-// topology. TopoJSON data (MapData::arc_ends not empty) has them already: the ends of its arcs are
-// nodes, since a border two rings share is one arc. Any other data (a GeoJSON file whose
-// neighbours repeat their common positions) gets them from its positions alone, through a table of
-// every position and the neighbours it was first seen with. Positions compare bit for bit (-0.0
-// equals +0.0).
+// topology. TopoJSON data (MapData::arc_ends not empty, every geometry with its
+// Geometry::arc_starts) has them already: a border two rings share is one arc, so the positions
+// where a ring or line passes from one arc to the next are its nodes, with no search. Any other
+// data (a GeoJSON file whose neighbours repeat their common positions) gets them from its
+// positions alone, through a table of every position and the neighbours it was first seen with.
+// Positions compare bit for bit (-0.0 equals +0.0).
 //
 // Consecutive repeats of a position (and a ring's closing repeat of its first) are skipped: they
 // carry no step. distinct_positions() is the one place that decides which positions count.
 //
 // Memory while finding: 4 bytes per position and about 43 bytes per distinct position (the table
-// grows with them; TopoJSON: per arc end); the result keeps one byte per position.
+// grows with them; TopoJSON: none); the result keeps one byte per position.
 // Thread-safety: free functions.
 #pragma once
 

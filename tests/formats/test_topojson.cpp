@@ -48,10 +48,15 @@ TEST_CASE("TopoJSON decodes quantized delta arcs and shares them", "[topojson]")
     CHECK(lg.points == want_left);
     CHECK(lg.ring_ends == std::vector<std::uint32_t>{5});
     CHECK(lg.polygon_ends == std::vector<std::uint32_t>{1});
+    // Arc 1 starts where arc 0 ends (index 1, kept once).
+    CHECK(lg.arc_starts == std::vector<std::uint32_t>{0, 1});
     // Arc 2 then arc 0 reversed (~0 = -1).
     const std::vector<Point> want_right = {{11, 20}, {12, 20}, {12, 21}, {11, 21}, {11, 20}};
     CHECK(d.features[1].geometries.at(0).points == want_right);
+    CHECK(d.features[1].geometries.at(0).arc_starts == std::vector<std::uint32_t>{0, 3});
     CHECK(d.features[2].geometries.at(0).kind == GeometryKind::Lines);
+    CHECK(d.features[2].geometries.at(0).arc_starts == std::vector<std::uint32_t>{0});
+    CHECK(d.features[3].geometries.at(0).arc_starts.empty());
     CHECK(d.features[2].geometries.at(0).points.size() == 2);
     // Points are quantized but not delta-encoded.
     const std::vector<Point> want_dots = {{10, 20}, {12, 21}};
@@ -112,6 +117,7 @@ TEST_CASE("TopoJSON bad input: arc index out of range, unclosed ring, not a topo
     REQUIRE(collapsed.features.size() == 1);
     CHECK(collapsed.features[0].geometries.at(0).polygon_ends == std::vector<std::uint32_t>{1});
     CHECK(collapsed.features[0].geometries.at(0).points.size() == 4);
+    CHECK(collapsed.features[0].geometries.at(0).arc_starts == std::vector<std::uint32_t>{0});
     m = error_of(R"({"type":"FeatureCollection","features":[]})", k);
     CHECK(k == ErrorKind::Parse);
     m = error_of(R"({"type":"Topology","objects":{"a":{"type":"Squiggle","arcs":[]}},"arcs":[]})", k);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "casteljau/error.hpp"
+#include "casteljau/file_io.hpp"
 #include "casteljau/map.hpp"
 #include "casteljau/png.hpp"
 #include "casteljau/tiles.hpp"
@@ -184,6 +185,51 @@ TEST_CASE("Border nodes: where a shared border starts and ends, line ends, antim
         read_geojson(R"({"type":"LineString","coordinates":[[170,0],[175,1],[179,2],[-179,3],[-175,4],[-170,5]]})");
     const map_detail::BorderNodes ln = map_detail::find_border_nodes(l);
     CHECK(ln.node == std::vector<std::uint8_t>{1, 0, 1, 1, 0, 1});
+}
+
+TEST_CASE("Border nodes: TopoJSON's arc starts give the nodes the position table finds", "[map][simplify]") {
+    // Quantized positions repeat at arc joins here and there; the nodes must land on the first of
+    // the repeats, as distinct_positions counts them.
+    const auto bytes = read_file(std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/maps/countries-110m.json");
+    const MapData topo = read_map_data(std::string(bytes.begin(), bytes.end()));
+    MapData plain = topo;
+    for (Feature& f : plain.features)
+        for (Geometry& g : f.geometries) g.arc_starts.clear();  // no arc starts: the table of positions
+    const map_detail::BorderNodes from_arcs = map_detail::find_border_nodes(topo);
+    const map_detail::BorderNodes from_positions = map_detail::find_border_nodes(plain);
+    REQUIRE(from_arcs.node.size() == from_positions.node.size());
+    CHECK(std::count(from_arcs.node.begin(), from_arcs.node.end(), 1) > 500);
+    // A ring that is one arc (an island) starts at a node; the table finds none in it.
+    std::size_t base = 0, islands = 0;
+    for (const Feature& f : topo.features)
+        for (const Geometry& g : f.geometries) {
+            std::uint32_t start = 0;
+            for (std::uint32_t end : g.ring_ends) {
+                const auto a = from_arcs.node.begin() + std::ptrdiff_t(base + start);
+                const auto p = from_positions.node.begin() + std::ptrdiff_t(base + start);
+                const bool island = std::count(p, p + (end - start), 1) == 0;
+                islands += island;
+                for (std::uint32_t i = 0; i < end - start; ++i) {
+                    INFO("position " << base + start + i);
+                    REQUIRE(a[i] == (island && i == 0 ? 1 : p[i]));
+                }
+                start = end;
+            }
+            base += g.points.size();
+        }
+    CHECK(islands > 50);
+    // A join that repeats its position, and a ring closing on repeats of its first.
+    const MapData rep = read_topojson(R"({"type":"Topology","objects":{"o":{"type":"GeometryCollection","geometries":[
+        {"type":"Polygon","arcs":[[0,1]]},{"type":"Polygon","arcs":[[2,-1]]}]}},"arcs":[
+        [[0,40],[1,20],[0,0],[0,0]],
+        [[0,0],[0,0],[-40,0],[-40,40],[0,40],[0,40]],
+        [[0,40],[40,40],[40,0],[0,0]]]})");
+    MapData rep_plain = rep;
+    for (Feature& f : rep_plain.features)
+        for (Geometry& g : f.geometries) g.arc_starts.clear();
+    CHECK(map_detail::find_border_nodes(rep).node == map_detail::find_border_nodes(rep_plain).node);
+    CHECK(map_detail::find_border_nodes(rep).node ==
+          std::vector<std::uint8_t>{1, 0, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0});
 }
 
 namespace {
