@@ -16,6 +16,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -48,13 +49,19 @@ public:
     // Projects one position (degrees). Returns false when the projection cannot map it (PROJ
     // reports an error or a non-finite result).
     bool project(Point lonlat, Point& out) const {
-        if (kind_ != Kind::Equirectangular) return project_other(lonlat, out);
-        out = lonlat;  // the identity, inline: maps project every position, often three times
-        return true;
+        if (kind_ == Kind::Equirectangular) {
+            out = lonlat;  // the identity, inline: maps project every position, often three times
+            return true;
+        }
+        // By value, so that the caller's `out` need not live in memory (reading it back right
+        // after a store of its halves stalls).
+        const std::optional<Point> q = project_other(lonlat);
+        if (q) out = *q;
+        return q.has_value();
     }
 
 private:
-    bool project_other(Point lonlat, Point& out) const;
+    std::optional<Point> project_other(Point lonlat) const;
 
     Kind kind_ = Kind::Equirectangular;
     std::string spec_ = "equirectangular";

@@ -82,15 +82,14 @@ MapProjection MapProjection::parse(std::string_view spec) {
 
 MapProjection MapProjection::clone() const { return parse(spec_); }
 
-bool MapProjection::project_other(Point ll, Point& out) const {
+std::optional<Point> MapProjection::project_other(Point ll) const {
     switch (kind_) {
-        case Kind::Equirectangular: out = ll; return true;
+        case Kind::Equirectangular: return ll;
         case Kind::WebMercator: {
             constexpr double d2r = kPi / 180.0;
             const double lat = std::clamp(ll.y, -kWebMercatorMaxLatitude, kWebMercatorMaxLatitude);
-            out.x = kWebMercatorRadius * ll.x * d2r;
-            out.y = kWebMercatorRadius * std::log(std::tan(kPi / 4 + lat * d2r / 2));
-            return true;
+            return Point{kWebMercatorRadius * ll.x * d2r,
+                         kWebMercatorRadius * std::log(std::tan(kPi / 4 + lat * d2r / 2))};
         }
         case Kind::Proj: {
             const proj_library::Api& api = proj_library::api();
@@ -104,12 +103,11 @@ bool MapProjection::project_other(Point ll, Point& out) const {
             const PJ_COORD r = api.trans(proj_->pj, PJ_FWD, c);
             if (api.errno_of(proj_->pj) != 0 || !std::isfinite(r.xy.x) || !std::isfinite(r.xy.y) ||
                 std::fabs(r.xy.x) > 1e30 || std::fabs(r.xy.y) > 1e30)
-                return false;
-            out = {r.xy.x, r.xy.y};
-            return true;
+                return std::nullopt;
+            return Point{r.xy.x, r.xy.y};
         }
     }
-    return false;
+    return std::nullopt;
 }
 
 }  // namespace casteljau
