@@ -471,10 +471,11 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
     // bounds for leaving out what cannot reach the image.
     auto simplify_once = [&] {
         if (simplified || !(opts.simplify > 0)) return;
-        own = map_detail::bounds_only(data, proj, threads);
-        if (map_detail::worth_simplifying(*own, proj, frame.to_pixel))
+        if (map_detail::worth_simplifying(data, proj, frame.to_pixel))
             own = map_detail::simplify_map(data, map_detail::find_border_nodes(data), proj, frame.to_pixel,
                                            opts.simplify, threads);
+        else
+            own = map_detail::bounds_only(data, proj, threads);
         simplified = &*own;
     };
     auto geometries = [&](std::size_t i) -> const std::vector<Geometry>& {

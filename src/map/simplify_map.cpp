@@ -247,13 +247,31 @@ SimplifiedMap bounds_only(const MapData& data, const MapProjection& proj, int th
     return r;
 }
 
+namespace {
+
+bool dense_enough(std::size_t positions, const Rect& extent, const Affine& to_pixel) {
+    if (!(extent.x0 <= extent.x1) || !(extent.y0 <= extent.y1)) return false;  // nothing projected
+    const double pixels = (extent.x1 - extent.x0) * (extent.y1 - extent.y0) *
+                          std::fabs(to_pixel.a * to_pixel.d - to_pixel.b * to_pixel.c);
+    return static_cast<double>(positions) > kSimplifyDensity * std::max(pixels, 1.0);
+}
+
+}  // namespace
+
 bool worth_simplifying(const SimplifiedMap& b, const MapProjection& proj, const Affine& to_pixel) {
     // A projection that bends lon/lat steps needs the simplifier's densifying bound: always.
     if (!proj.preserves_graticule_lines()) return true;
-    if (!(b.extent.x0 <= b.extent.x1) || !(b.extent.y0 <= b.extent.y1)) return false;  // nothing projected
-    const double pixels = (b.extent.x1 - b.extent.x0) * (b.extent.y1 - b.extent.y0) *
-                          std::fabs(to_pixel.a * to_pixel.d - to_pixel.b * to_pixel.c);
-    return static_cast<double>(b.positions) > kSimplifyDensity * std::max(pixels, 1.0);
+    return dense_enough(b.positions, b.extent, to_pixel);
+}
+
+bool worth_simplifying(const MapData& data, const MapProjection& proj, const Affine& to_pixel) {
+    if (!proj.preserves_graticule_lines()) return true;
+    const Rect ll = data.bounds();
+    if (!(ll.x0 <= ll.x1) || !(ll.y0 <= ll.y1) || data.position_count() == 0) return false;
+    Point lo, hi;
+    if (!proj.project({ll.x0, ll.y0}, lo) || !proj.project({ll.x1, ll.y1}, hi)) return true;
+    const Rect extent{std::min(lo.x, hi.x), std::min(lo.y, hi.y), std::max(lo.x, hi.x), std::max(lo.y, hi.y)};
+    return dense_enough(data.position_count(), extent, to_pixel);
 }
 
 }  // namespace casteljau::map_detail

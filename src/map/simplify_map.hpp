@@ -69,6 +69,10 @@ inline constexpr double kSimplifyDensity = 0.25;
 // scale (its translation does not matter: every metatile of a zoom decides alike). Always with a
 // projection that bends lon/lat steps, whose long steps the simplifier bounds.
 bool worth_simplifying(const SimplifiedMap& b, const MapProjection& proj, const Affine& to_pixel);
+// The same decision from the data themselves, without projecting every position: a projection
+// that keeps lon/lat lines straight maps longitude and latitude each on its own, monotonically,
+// so the projected extent is that of the data's lon/lat bounds.
+bool worth_simplifying(const MapData& data, const MapProjection& proj, const Affine& to_pixel);
 
 // render_map (casteljau/map.hpp) drawing `simplified` in place of the data's geometries (made for
 // frame.to_pixel, or for a translation of it), whatever opts.simplify says. Features whose bounds

@@ -352,6 +352,32 @@ TEST_CASE("Map simplify: the world's coverage within 0.2/255 on average and 8/25
     }
 }
 
+TEST_CASE("Map simplify: deciding from the data's lon/lat bounds decides as the projected bounds do",
+          "[map][simplify]") {
+    const MapData world = test::load_world();
+    const MapData north = read_geojson(R"({"type":"LineString","coordinates":[[-20,50],[-10,60],[5,55],[30,75]]})");
+    for (const char* spec : {"equirectangular", "mercator"}) {
+        const MapProjection proj = MapProjection::parse(spec);
+        for (const MapData* data : {&world, &north}) {
+            const map_detail::SimplifiedMap as_is = map_detail::bounds_only(*data, proj, 1);
+            // From a pixel for the whole extent to 2^20 across it: the decision flips once between.
+            const double base = 1 / std::max(as_is.extent.x1 - as_is.extent.x0, as_is.extent.y1 - as_is.extent.y0);
+            int flips = 0;
+            bool last = false;
+            for (double k = 0; k <= 20; k += 0.25) {
+                const double s = base * std::exp2(k);
+                const Affine to_pixel{s, 0, 0, -s, 3, 7};
+                const bool decided = map_detail::worth_simplifying(*data, proj, to_pixel);
+                INFO(spec << ", scale 2^" << k);
+                CHECK(decided == map_detail::worth_simplifying(as_is, proj, to_pixel));
+                flips += k > 0 && decided != last;
+                last = decided;
+            }
+            CHECK(flips == 1);
+        }
+    }
+}
+
 TEST_CASE("Tiles: one simplified copy per zoom draws what render_map draws for the metatile",
           "[map][simplify][tiles]") {
     const MapData world = test::load_world();
