@@ -158,6 +158,13 @@ struct BoundsVisitor final : PieceVisitor {
     void point(Point p) override { add(p); }
 };
 
+// Appends the segments of a closed ring, its closing one included, to `out`.
+void append_ring_segments(std::span<const Point> ring, std::vector<LineSegment>& out) {
+    if (ring.size() < 2) return;
+    for (std::size_t i = 1; i < ring.size(); ++i) out.push_back({ring[i - 1], ring[i]});
+    out.push_back({ring.back(), ring.front()});
+}
+
 // Builds the pixel-space paths of one feature.
 struct PathVisitor final : PieceVisitor {
     Affine m;
@@ -168,9 +175,25 @@ struct PathVisitor final : PieceVisitor {
     Path fill;                           // polygons + point disks
     Path lines;                          // open polylines, to be stroked
     std::vector<Point> mapped, clipped;  // a ring in pixel space
+    // A fill's visitor that also gathers the segments a sampled stroke draws of the rings and point
+    // disks (append_segments), so that the feature is projected once for both: the rings as the
+    // stroke's visitor would add them (spikes kept, cut to stroke_clip, as lines are too), the
+    // disks flattened within disk_tolerance. nullptr: none.
+    std::vector<LineSegment>* ring_segments = nullptr;
+    std::optional<Rect> stroke_clip;
+    double disk_tolerance = 0;
+    Polyline flat;
     void ring(const std::vector<Point>& pts) override {
         mapped.resize(pts.size());
         for (std::size_t i = 0; i < pts.size(); ++i) mapped[i] = m.apply(pts[i]);
+        if (ring_segments) {
+            if (!stroke_clip || map_detail::inside(mapped, *stroke_clip)) {
+                append_ring_segments(mapped, *ring_segments);
+            } else {
+                map_detail::clip_ring(mapped, *stroke_clip, clipped);
+                if (clipped.size() >= 3) append_ring_segments(clipped, *ring_segments);
+            }
+        }
         if (fill_only) {
             map_detail::drop_spikes(mapped);
             if (mapped.size() < 3) return;
@@ -185,16 +208,15 @@ struct PathVisitor final : PieceVisitor {
     void line(const std::vector<Point>& pts) override {
         mapped.resize(pts.size());
         for (std::size_t i = 0; i < pts.size(); ++i) mapped[i] = m.apply(pts[i]);
-        if (clip && !map_detail::inside(mapped, *clip)) {
-            map_detail::clip_line(mapped, *clip, lines);
+        const std::optional<Rect>& cut = clip ? clip : stroke_clip;
+        if (cut && !map_detail::inside(mapped, *cut)) {
+            map_detail::clip_line(mapped, *cut, lines);
             return;
         }
         lines.move_to(mapped[0]);
         for (std::size_t i = 1; i < mapped.size(); ++i) lines.line_to(mapped[i]);
     }
-    void point(Point p) override {
-        if (point_radius > 0) fill.add_circle(m.apply(p), point_radius);
-    }
+    void point(Point p) override;
 };
 
 Rect projected_bbox(const MapProjection& proj, const Rect& bb) {
@@ -398,6 +420,16 @@ void append_segments(const Path& path, double tolerance, Polyline& flat, std::ve
     }
 }
 
+void PathVisitor::point(Point p) {
+    if (!(point_radius > 0)) return;
+    fill.add_circle(m.apply(p), point_radius);
+    if (ring_segments) {
+        Path disk;
+        disk.add_circle(m.apply(p), point_radius);
+        append_segments(disk, disk_tolerance, flat, *ring_segments);
+    }
+}
+
 // One feature made ready to draw: its pixel-space fill (or stroke outline) and colour.
 struct Drawable {
     Path path;
@@ -570,14 +602,35 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
         std::vector<std::size_t> order;
         for (std::size_t i = 0; i < data.features.size(); ++i)
             if (layer.filter.matches(data.features[i]) && visible(i)) order.push_back(i);
+        const std::optional<Color> line_color = layer.stroke ? layer.stroke : layer.fill;
+        ss.width = layer.stroke_width;
+        const bool sampled = line_color && layer.stroke_width > 0 && opts.sampled_strokes && thin_round(ss);
+        // A sampled stroke after a fill takes its segments from the fill's visitors (one per
+        // feature of `order`, in its order), so that every feature is projected once.
+        const bool stroke_with_fill = sampled && layer.fill;
+        std::vector<std::vector<LineSegment>> feature_segments(stroke_with_fill ? order.size() : 0);
+        std::vector<std::uint32_t> segment_slot(stroke_with_fill ? data.features.size() : 0);
+        for (std::size_t k = 0; k < feature_segments.size(); ++k)
+            segment_slot[order[k]] = static_cast<std::uint32_t>(k);
         // Fills: seamless (SeamlessCompositor, last feature first so that later features win) or source-over in order.
         auto make_fill = [&](int w, std::size_t feature, std::optional<Drawable>& out) {
             const std::optional<Color> c = layer.fill_for(data.features[feature]);
-            if (!c) return;
+            if (!c && !stroke_with_fill) return;
             PathVisitor v;
             v.fill_only = true;
+            std::vector<LineSegment> ring_segments;
+            if (stroke_with_fill) {
+                v.stroke_clip = stroke_clip;
+                if (layer.stroke) v.ring_segments = &ring_segments;  // a fill colour strokes lines only
+                v.disk_tolerance = opts.tolerance;
+            }
             build(w, feature, v);
-            if (v.fill.empty()) return;
+            if (stroke_with_fill) {
+                std::vector<LineSegment>& mine = feature_segments[segment_slot[feature]];
+                append_segments(v.lines, opts.tolerance, v.flat, mine);
+                mine.insert(mine.end(), ring_segments.begin(), ring_segments.end());
+            }
+            if (!c || v.fill.empty()) return;
             out = Drawable{std::move(v.fill), *c, Path{}};
             out->box = out->path.control_bounds();
             if (fo.exact_overlaps) {
@@ -661,14 +714,21 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
         // nonzero rule. Polygon rings go through SharedBorders first, in feature order, so a border
         // shared by two features is stroked once (the union, and so the pixels, stay the same; the
         // exact overlap computation along every border is saved).
-        const std::optional<Color> line_color = layer.stroke ? layer.stroke : layer.fill;
         if (!line_color || !(layer.stroke_width > 0)) continue;
-        ss.width = layer.stroke_width;
-        if (opts.sampled_strokes && thin_round(ss)) {
+        if (sampled) {
             // The union of every feature's capsules, drawn from the segments directly
             // (round_stroke.hpp): no outline, so nothing folds. The union does not depend on
             // repeats, so a shared border's second copy is dropped before the sweep.
             std::vector<LineSegment> segments;
+            if (stroke_with_fill) {
+                std::size_t total = 0;
+                for (const auto& f : feature_segments) total += f.size();
+                segments.reserve(total);
+                for (auto& f : feature_segments) {
+                    segments.insert(segments.end(), f.begin(), f.end());
+                    std::vector<LineSegment>().swap(f);
+                }
+            }
             auto make_lines = [&](int w, std::size_t feature, std::optional<Drawable>& out) {
                 PathVisitor v;
                 v.clip = stroke_clip;
@@ -678,13 +738,14 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
                     out = Drawable{std::move(v.lines), *line_color, std::move(v.fill)};
             };
             Polyline flat;
-            chunked(order, make_lines, [&](std::vector<std::optional<Drawable>>& chunk) {
-                for (const auto& d : chunk) {
-                    if (!d) continue;
-                    append_segments(d->path, opts.tolerance, flat, segments);
-                    append_segments(d->rings, opts.tolerance, flat, segments);
-                }
-            });
+            if (!stroke_with_fill)
+                chunked(order, make_lines, [&](std::vector<std::optional<Drawable>>& chunk) {
+                    for (const auto& d : chunk) {
+                        if (!d) continue;
+                        append_segments(d->path, opts.tolerance, flat, segments);
+                        append_segments(d->rings, opts.tolerance, flat, segments);
+                    }
+                });
             if (segments.empty()) continue;
             map_detail::drop_repeated_segments(segments);
             target_clear = false;

@@ -714,6 +714,61 @@ TEST_CASE("render_map into a new pixmap equals render_map onto a drawn one, laye
     }
 }
 
+TEST_CASE("Map strokes: a stroke drawn with its layer's fill equals the same stroke in a layer of its own",
+          "[map][stroke]") {
+    // The fill's visitors hand the stroke its segments: rings (one with a spike, one leaving the
+    // frame, so cut), lines (one leaving the frame), point disks and a mixed collection, in order.
+    const MapData all = read_geojson(R"({"type":"FeatureCollection","features":[
+      {"type":"Feature","properties":{"k":"area"},"geometry":{"type":"Polygon","coordinates":[[[5,5],[30,5],[30,20],[35,22],[30,20],[5,20],[5,5]]]}},
+      {"type":"Feature","properties":{"k":"area"},"geometry":{"type":"Polygon","coordinates":[[[60,10],[140,10],[140,45],[60,45],[60,10]],[[70,20],[80,20],[80,30],[70,20]]]}},
+      {"type":"Feature","properties":{"k":"line"},"geometry":{"type":"LineString","coordinates":[[2,40],[40,30],[120,48]]}},
+      {"type":"Feature","properties":{"k":"dot"},"geometry":{"type":"MultiPoint","coordinates":[[20,35],[45,8]]}},
+      {"type":"Feature","properties":{"k":"mix"},"geometry":{"type":"GeometryCollection","geometries":[
+        {"type":"Polygon","coordinates":[[[40,30],[55,30],[55,44],[40,30]]]},{"type":"Point","coordinates":[50,15]},
+        {"type":"LineString","coordinates":[[35,2],[58,9]]}]}}]})");
+    MapOptions o;
+    o.width = 200;
+    o.height = 100;
+    o.bbox = Rect{0, 0, 100, 50};
+    const Color fill = Color::rgba(200, 180, 60, 255), ink = Color::rgba(20, 30, 90, 200);
+    for (bool seamless : {true, false}) {
+        o.seamless = seamless;
+        // With a stroke colour: rings, lines and disks are stroked. Without: the fill's colour
+        // strokes the lines only (the layer of its own strokes the line feature, and the mixed
+        // collection is left out).
+        for (bool with_stroke : {true, false}) {
+            MapData d = all;
+            if (!with_stroke) d.features.pop_back();
+            INFO((seamless ? "seamless" : "separate") << (with_stroke ? ", stroke colour" : ", fill colour on lines"));
+            MapStyle one;
+            one.point_radius = 2.5;
+            one.layers[0].fill = fill;
+            if (with_stroke) one.layers[0].stroke = ink;
+            one.layers[0].stroke_width = 1.3;
+            MapStyle two = one;
+            two.layers[0].stroke.reset();
+            two.layers[0].stroke_width = 0;
+            MapLayerStyle strokes;
+            strokes.fill.reset();
+            strokes.stroke = with_stroke ? ink : fill;
+            strokes.stroke_width = 1.3;
+            if (!with_stroke)
+                strokes.filter =
+                    read_map_style(R"({"layers":[{"filter":{"property":"k","==":"line"}}]})").layers.at(0).filter;
+            two.layers.push_back(strokes);
+            const Pixmap a = render_map(d, MapProjection{}, one, o), b = render_map(d, MapProjection{}, two, o);
+            int differ = 0, inked = 0;
+            for (int y = 0; y < a.height(); ++y)
+                for (int x = 0; x < a.width(); ++x) {
+                    differ += !(a.pixel(x, y) == b.pixel(x, y));
+                    inked += a.pixel(x, y).r < 150;
+                }
+            CHECK(inked > 100);
+            CHECK(differ == 0);
+        }
+    }
+}
+
 TEST_CASE("Map strokes: thin round strokes are the exact union of every feature's stroke", "[map][stroke]") {
     // Wiggly rings (many vertices per pixel, folding and reversing), a ring sharing their border
     // and an open line, stroked 0.8 px with round joins and caps: render_map against the union of
