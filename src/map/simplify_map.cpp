@@ -137,6 +137,19 @@ private:
         const Point a = lonlat_[f], b = lonlat_[l];
         bool reversed = less(b, a);
         if (a == b && n > 2) reversed = less(lonlat_[(first + n - 2) % m], lonlat_[(first + 1) % m]);
+        // A step of more than 180 degrees of longitude would be read as crossing the antimeridian;
+        // a projection that bends lon/lat steps draws a step longer than kDensifyDegrees as a curve.
+        auto too_long = [this](const Point* lonlat) {
+            return [this, lonlat](std::size_t i, std::size_t j) {
+                const double dx = std::fabs(lonlat[j].x - lonlat[i].x);
+                return dx > 180 || dx > max_degrees_ || std::fabs(lonlat[j].y - lonlat[i].y) > max_degrees_;
+            };
+        };
+        if (!reversed && f + n <= m) {  // in place: the run's positions lie in order in the ring's
+            runs_.simplify(std::span<const Point>(pixel_).subspan(f, n), tolerance_,
+                           std::span<std::uint8_t>(keep_).subspan(f, n), too_long(lonlat_.data() + f));
+            return;
+        }
         run_pixel_.resize(n);
         run_lonlat_.resize(n);
         run_keep_.assign(n, 0);
@@ -144,13 +157,7 @@ private:
             run_pixel_[i] = pixel_[k];
             run_lonlat_[i] = lonlat_[k];
         });
-        // A step of more than 180 degrees of longitude would be read as crossing the antimeridian;
-        // a projection that bends lon/lat steps draws a step longer than kDensifyDegrees as a curve.
-        auto too_long = [&](std::size_t i, std::size_t j) {
-            const double dx = std::fabs(run_lonlat_[j].x - run_lonlat_[i].x);
-            return dx > 180 || dx > max_degrees_ || std::fabs(run_lonlat_[j].y - run_lonlat_[i].y) > max_degrees_;
-        };
-        runs_.simplify(run_pixel_, tolerance_, run_keep_, too_long);
+        runs_.simplify(run_pixel_, tolerance_, run_keep_, too_long(run_lonlat_.data()));
         for_each_position(reversed, [&](std::size_t i, std::size_t k) { keep_[k] |= run_keep_[i]; });
     }
 
