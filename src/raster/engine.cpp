@@ -448,8 +448,14 @@ void Engine::classify() {
     exact_.clear();
     exact_at_.clear();
     exact_ids_.clear();
-    for (const Visit& v : visits_)
-        if (!monotone(v.dirs) && !v.merged_away && !simple_run(v)) add_cand(v.cell);
+    // Whether each run is simple, decided once: a candidate cell asks again for each of its runs.
+    simple_.resize(visits_.size());
+    for (std::size_t i = 0; i < visits_.size(); ++i) {
+        const Visit& v = visits_[i];
+        if (v.merged_away) continue;
+        simple_[i] = monotone(v.dirs) || simple_run(v);
+        if (!simple_[i]) add_cand(v.cell);
+    }
     // Decide each candidate (cands_ holds each cell once, in no particular order) ...
     for (std::uint32_t cell : cands_) {
         const int row = static_cast<int>(cell / stride_), col = static_cast<int>(cell % stride_);
@@ -461,7 +467,7 @@ void Engine::classify() {
             if (v.merged_away) continue;
             if (++n > kMaxRuns) break;  // computed exactly whatever its runs are
             runs[n - 1] = &v;
-            all_simple = all_simple && simple_run(v);
+            all_simple = all_simple && simple_[static_cast<std::size_t>(i)];
         }
         if (all_simple && n == 1) continue;
         if (all_simple && n == 2 && harmless_two(*runs[0], *runs[1], col, row)) continue;

@@ -129,6 +129,7 @@ private:
     std::size_t max_edges_ = 0;  // Limits::flattened_segments, read by begin()
     double exact_base_ = 0;      // Limits::exact_work, read by begin()
     AppendList<Visit> visits_;
+    std::vector<std::uint8_t> simple_;  // per visit: its run is simple (set by classify)
     std::vector<std::uint32_t> cands_;  // cells with two or more visits, or a non-simple one (each once)
     void add_cand(std::uint32_t cell) {
         if (!cand_[cell]) {
