@@ -190,26 +190,60 @@ TEST_CASE("read_map_data refuses a TopoJSON layer name for GeoJSON", "[geojson][
     } catch (const Error& e) { CHECK(e.kind() == ErrorKind::InvalidArgument); }
 }
 
-TEST_CASE("read_map_data reads a FeatureCollection alike on either path", "[geojson]") {
-    // The word Topology in a property sends the collection through the DOM instead of the
-    // parallel reader: the same features and positions come out.
-    const std::string collection = R"({"type":"FeatureCollection","features":[
-        {"type":"Feature","properties":{"name":"NAME"},"geometry":{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,3],[0,0]]]}},
-        {"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":[[1,1],[2,2.5]]}}]})";
-    std::string named = collection;
-    named.replace(named.find("\"NAME\""), 6, "\"Topology\"");
-    const MapData a = read_map_data(collection), b = read_map_data(named);
-    REQUIRE(a.features.size() == 2);
-    REQUIRE(b.features.size() == 2);
-    for (std::size_t i = 0; i < 2; ++i) {
-        REQUIRE(a.features[i].geometries.size() == 1);
-        REQUIRE(b.features[i].geometries.size() == 1);
-        CHECK(a.features[i].geometries[0].points == b.features[i].geometries[0].points);
-        CHECK(a.features[i].geometries[0].ring_ends == b.features[i].geometries[0].ring_ends);
+namespace {
+
+// The features of a and b are the same: ids, properties, geometries, positions.
+void check_same_features(const MapData& a, const MapData& b) {
+    REQUIRE(a.features.size() == b.features.size());
+    for (std::size_t i = 0; i < a.features.size(); ++i) {
+        const Feature &fa = a.features[i], &fb = b.features[i];
+        INFO("feature " << i);
+        CHECK(fa.id == fb.id);
+        REQUIRE(fa.properties.size() == fb.properties.size());
+        for (std::size_t k = 0; k < fa.properties.size(); ++k) {
+            CHECK(fa.properties[k].first == fb.properties[k].first);
+            CHECK(fa.properties[k].second.to_string() == fb.properties[k].second.to_string());
+        }
+        REQUIRE(fa.geometries.size() == fb.geometries.size());
+        for (std::size_t g = 0; g < fa.geometries.size(); ++g) {
+            CHECK(fa.geometries[g].kind == fb.geometries[g].kind);
+            CHECK(fa.geometries[g].points == fb.geometries[g].points);
+            CHECK(fa.geometries[g].ring_ends == fb.geometries[g].ring_ends);
+            CHECK(fa.geometries[g].polygon_ends == fb.geometries[g].polygon_ends);
+        }
     }
-    CHECK(b.features[0].properties.size() == a.features[0].properties.size());
-    // A layer name refuses a collection too.
+}
+
+}  // namespace
+
+TEST_CASE("read_map_data reads a FeatureCollection alike on either path", "[geojson]") {
+    // read_geojson cuts a collection into features and reads them in parallel; read_map_data reads
+    // a small document through one DOM, and so does it a large one that holds the word Topology
+    // (it may be a TopoJSON), while a large collection without it goes feature by feature.
+    const std::string collection = R"({"type":"FeatureCollection","features":[
+        {"type":"Feature","id":7,"properties":{"name":"NAME","n":[1,{"a":null}]},"geometry":{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,3],[0,0]]]}},
+        {"type":"Feature","properties":{},"geometry":{"type":"GeometryCollection","geometries":[
+          {"type":"LineString","coordinates":[[1,1],[2,2.5]]},{"type":"MultiPoint","coordinates":[[3,1],[0.5,2]]}]}}]})";
+    check_same_features(read_geojson(collection), read_map_data(collection));
+    const auto sample = read_file(std::string(CASTELJAU_SOURCE_DIR) + "/tests/data/maps/sample.geojson");
+    const std::string sample_text(sample.begin(), sample.end());
+    check_same_features(read_geojson(sample_text), read_map_data(sample_text));
+    // Past 8 MB: the same features repeated, with and without the word.
+    std::string large = R"({"type":"FeatureCollection","features":[)";
+    const std::string feature =
+        R"({"type":"Feature","properties":{"name":"NAME","v":1.5},"geometry":{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,3],[0.25,2.75],[0,0]]]}})";
+    for (int i = 0; large.size() < (std::size_t(9) << 20); ++i) large += (i ? "," : "") + feature;
+    large += "]}";
+    std::string named = large;
+    named.replace(named.find("\"NAME\""), 6, "\"Topology\"");
+    const MapData a = read_map_data(large), b = read_map_data(named);
+    CHECK(a.features.size() > 40000);
+    MapData renamed = b;
+    renamed.features[0].properties[0].second.text = "NAME";
+    check_same_features(a, renamed);
+    // A layer name refuses a collection too, on either path.
     CHECK_THROWS_AS(read_map_data(collection, "countries"), Error);
+    CHECK_THROWS_AS(read_map_data(large, "countries"), Error);
 }
 
 TEST_CASE("read_map_file reads in place like read_map_data and reports errors", "[geojson]") {
