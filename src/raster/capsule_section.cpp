@@ -61,10 +61,12 @@ HWY_INLINE void OrBits(D d, M m, int i, std::uint64_t* HWY_RESTRICT words) {
     words[i / 64] |= bits << (i % 64);
 }
 
-int CapsuleSectionsImpl(const SweptCapsule& k, double r, int row, double step, int s0, int n,
-                        double* HWY_RESTRICT lo_out, double* HWY_RESTRICT hi_out, double* HWY_RESTRICT open_lo,
-                        double* HWY_RESTRICT open_hi, double* HWY_RESTRICT closed_hi,
-                        std::uint64_t* HWY_RESTRICT left_bits, std::uint64_t* HWY_RESTRICT closed_bits) {
+// One capsule on lines s0 .. s0 + n - 1 of the row (capsule_section.hpp): returns how many lines
+// it left for the caller (a bit set in left_bits or closed_bits).
+HWY_INLINE int CapsuleSections(const SweptCapsule& k, double r, int row, double step, int s0, int n,
+                               double* HWY_RESTRICT lo_out, double* HWY_RESTRICT hi_out, double* HWY_RESTRICT open_lo,
+                               double* HWY_RESTRICT open_hi, double* HWY_RESTRICT closed_hi,
+                               std::uint64_t* HWY_RESTRICT left_bits, std::uint64_t* HWY_RESTRICT closed_bits) {
     const hn::ScalableTag<double> d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     static_assert(kMaxSectionLines % 64 == 0);
@@ -109,6 +111,27 @@ int CapsuleSectionsImpl(const SweptCapsule& k, double r, int row, double step, i
     return static_cast<int>(handed);
 }
 
+// A row's capsules in order until one leaves something for the caller (capsule_section.hpp).
+int CapsuleSectionsImpl(const SweptCapsule* const* caps, int count, double r, int row, int lines,
+                        double* HWY_RESTRICT lo, double* HWY_RESTRICT hi, double* HWY_RESTRICT open_lo,
+                        double* HWY_RESTRICT open_hi, double* HWY_RESTRICT closed_hi,
+                        std::uint64_t* HWY_RESTRICT left_bits, std::uint64_t* HWY_RESTRICT closed_bits, int* s0_out,
+                        int* n_out) {
+    const double step = 1.0 / lines;
+    for (int c = 0; c < count; ++c) {
+        int s0, s1;
+        section_lines(*caps[c], row, lines, s0, s1);
+        if (s1 < s0) continue;
+        if (CapsuleSections(*caps[c], r, row, step, s0, s1 - s0 + 1, lo, hi, open_lo + s0, open_hi + s0, closed_hi + s0,
+                            left_bits, closed_bits) != 0) {
+            *s0_out = s0;
+            *n_out = s1 - s0 + 1;
+            return c;
+        }
+    }
+    return count;
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace casteljau::raster
 HWY_AFTER_NAMESPACE();
@@ -118,11 +141,11 @@ namespace casteljau::raster {
 
 CASTELJAU_SIMD_EXPORT(CapsuleSectionsImpl);
 
-int capsule_sections(const SweptCapsule& k, double r, int row, double step, int s0, int n, double* lo, double* hi,
+int capsule_sections(const SweptCapsule* const* caps, int count, double r, int row, int lines, double* lo, double* hi,
                      double* open_lo, double* open_hi, double* closed_hi, std::uint64_t* left_bits,
-                     std::uint64_t* closed_bits) {
-    return CASTELJAU_SIMD_DISPATCH(CapsuleSectionsImpl)(k, r, row, step, s0, n, lo, hi, open_lo, open_hi, closed_hi,
-                                                        left_bits, closed_bits);
+                     std::uint64_t* closed_bits, int* s0, int* n) {
+    return CASTELJAU_SIMD_DISPATCH(CapsuleSectionsImpl)(caps, count, r, row, lines, lo, hi, open_lo, open_hi, closed_hi,
+                                                        left_bits, closed_bits, s0, n);
 }
 
 }  // namespace casteljau::raster

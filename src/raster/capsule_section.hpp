@@ -1,11 +1,13 @@
 // Internal: where a capsule (a segment swept by a disc) crosses horizontal sample lines, for
 // round_stroke.cpp. The sections of one capsule on a run of lines are computed together, with
-// Highway's runtime dispatch (core/simd_dispatch.hpp), one line per lane.
+// Highway's runtime dispatch (core/simd_dispatch.hpp), one line per lane, and a row's capsules
+// one after another in one call while they leave nothing for the caller.
 //
-// Conventions: pixel space, y down. Line s of row j is y = j + (s + 0.5) * step.
+// Conventions: pixel space, y down. Line s of a row j of `lines` lines is y = j + (s + 0.5) / lines.
 // Thread-safety: pure functions.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -32,21 +34,36 @@ struct SweptCapsule {
 inline constexpr int kMaxSectionLines = 256;
 inline constexpr int kSectionPadding = 64;
 
-// For lines s0 .. s0 + n - 1 of row `row` (n <= kMaxSectionLines), the interval of x where the
-// line lies within r of the capsule, folded into the line's union where that is simple. A line's
-// union is kept as its open interval open_lo[i] <= open_hi[i] (the rightmost; open_lo = +infinity
-// and open_hi = -infinity: none yet) and, left of it, closed intervals ending at most at
-// closed_hi[i] (-infinity: none). A line with no open interval takes the section as its open one;
-// a section meeting the open interval and starting right of closed_hi merges with it; a section
-// right of the open interval closes it (closed_hi becomes its end; bit i of closed_bits is set and
-// lo[i], hi[i] hold the closed interval) and becomes the open one. Any other section is left for the
-// caller: bit i of left_bits is set and lo[i], hi[i] hold it. Lines the capsule misses (or does not
-// cross strictly inside (y0, y1)) change nothing and have neither bit. lo, hi, open_lo, open_hi and
-// closed_hi hold n + kSectionPadding values from line s0's; left_bits and closed_bits n / 64 words,
-// rounded up. The values are those of the scalar formula (the same operations in the same order,
-// no fused multiply-add), whatever the target. Returns how many lines have a bit set.
-int capsule_sections(const SweptCapsule& k, double r, int row, double step, int s0, int n, double* lo, double* hi,
+// The lines of row `row` (of `lines` lines) whose centres may lie inside the capsule's vertical
+// extent (y0, y1), with a line to spare on each side (the sections decide exactly): s0 .. s1, none
+// when s1 < s0.
+inline void section_lines(const SweptCapsule& k, int row, int lines, int& s0, int& s1) {
+    s0 = std::max(0, static_cast<int>(std::floor((k.y0 - row) * lines)) - 1);
+    s1 = std::min(lines - 1, static_cast<int>(std::ceil((k.y1 - row) * lines)));
+}
+
+// The capsules caps[0], caps[1], ... in order, each on its lines s0 .. s0 + n - 1 of row `row`
+// (section_lines; n <= kMaxSectionLines), until one leaves lines for the caller.
+//
+// For each capsule, the interval of x where each of its lines lies within r of it is folded into
+// the line's union where that is simple. A line's union is kept as its open interval
+// open_lo[i] <= open_hi[i] (the rightmost; open_lo = +infinity and open_hi = -infinity: none yet)
+// and, left of it, closed intervals ending at most at closed_hi[i] (-infinity: none). A line with
+// no open interval takes the section as its open one; a section meeting the open interval and
+// starting right of closed_hi merges with it; a section right of the open interval closes it
+// (closed_hi becomes its end) and becomes the open one. Any other section is left for the caller,
+// and so is each closed interval. Lines the capsule misses (or does not cross strictly inside
+// (y0, y1)) change nothing.
+//
+// Returns the index of the first capsule that left something, with its s0 and n in *s0 and *n:
+// for its line s0 + i, bit i of left_bits is set when lo[i], hi[i] hold a section left for the
+// caller, bit i of closed_bits when they hold the interval it closed (each line has one bit at
+// most). Returns count when no capsule left anything. open_lo, open_hi and closed_hi hold the
+// row's lines from its line 0, lines + kSectionPadding values; lo and hi n + kSectionPadding
+// values; left_bits and closed_bits n / 64 words, rounded up. The values are those of the scalar
+// formula (the same operations in the same order, no fused multiply-add), whatever the target.
+int capsule_sections(const SweptCapsule* const* caps, int count, double r, int row, int lines, double* lo, double* hi,
                      double* open_lo, double* open_hi, double* closed_hi, std::uint64_t* left_bits,
-                     std::uint64_t* closed_bits);
+                     std::uint64_t* closed_bits, int* s0, int* n);
 
 }  // namespace casteljau::raster

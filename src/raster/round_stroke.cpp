@@ -260,7 +260,7 @@ private:
 // end of its closed ones kept in arrays, as capsule_sections reads and folds them.
 class RowLines {
 public:
-    RowLines(int lines, double r) : r_(r), step_(1.0 / lines), lines_(static_cast<std::size_t>(lines)) {
+    RowLines(int lines, double r) : r_(r), lines_(static_cast<std::size_t>(lines)) {
         static_assert(raster::kMaxSectionLines >= kMaxRoundStrokeLines);
         for (std::vector<double>* v : {&lo_, &hi_, &open_lo_, &open_hi_, &closed_hi_})
             v->resize(raster::kMaxSectionLines + raster::kSectionPadding);
@@ -278,23 +278,34 @@ public:
         std::fill(closed_hi_.begin(), closed_hi_.end(), -INFINITY);
     }
 
-    // Adds the sections of the capsule of `segment` (vertical extent [y0, y1], left end x0) to the
-    // row's lines; the capsules come in order of x0.
-    void add(const raster::SweptCapsule& capsule, double y0, double y1, double x0) {
+    // Adds the sections of caps[0 .. count) (their left ends in x0) to the row's lines; the
+    // capsules come in order of their left ends.
+    void add(const raster::SweptCapsule* const* caps, const double* x0, int count) {
         const int n = static_cast<int>(lines_.size());
-        // The lines whose centres may lie inside (y0, y1), with a line to spare on each side; the
-        // sections decide exactly.
-        const int s0 = std::max(0, static_cast<int>(std::floor((y0 - row_) * n)) - 1);
-        const int s1 = std::min(n - 1, static_cast<int>(std::ceil((y1 - row_) * n)));
-        if (s1 < s0) return;
+        for (int c = 0; c < count;) {
+            int s0 = 0, lines = 0;
+            c += raster::capsule_sections(caps + c, count - c, r_, row_, n, lo_.data(), hi_.data(), open_lo_.data(),
+                                          open_hi_.data(), closed_hi_.data(), left_bits_, closed_bits_, &s0, &lines);
+            if (c == count) return;
+            hand_over(x0[c], s0, lines);
+            ++c;
+        }
+    }
+
+    // Adds what is left of every line's union to the row's coverage.
+    void accumulate() {
+        for (std::size_t u = 0; u < lines_.size(); ++u)
+            for (auto [l, h] : lines_[u].merged(open_lo_[u], open_hi_[u])) settle(l, h);
+    }
+
+private:
+    // Takes what capsule_sections left of the capsule with left end x0 on its lines s0 .. s0 + n - 1:
+    // the intervals it closed and the sections it could not fold.
+    void hand_over(double x0, int s0, int n) {
         // A section may start left of x0 by the rounding of its square root: a margin far above it.
         const double settled_below = x0 - 1e-9 * std::max(1.0, std::fabs(x0));
-        if (raster::capsule_sections(capsule, r_, row_, step_, s0, s1 - s0 + 1, lo_.data(), hi_.data(),
-                                     open_lo_.data() + s0, open_hi_.data() + s0, closed_hi_.data() + s0, left_bits_,
-                                     closed_bits_) == 0)
-            return;
         // Each line has at most one of the two bits.
-        for (int word = 0; word <= (s1 - s0) / 64; ++word) {
+        for (int word = 0; word <= (n - 1) / 64; ++word) {
             for (std::uint64_t bits = closed_bits_[word]; bits != 0; bits &= bits - 1) {
                 const std::size_t t = static_cast<std::size_t>(word * 64 + std::countr_zero(bits));
                 lines_[t + static_cast<std::size_t>(s0)].close(lo_[t], hi_[t], settled_below,
@@ -308,13 +319,6 @@ public:
         }
     }
 
-    // Adds what is left of every line's union to the row's coverage.
-    void accumulate() {
-        for (std::size_t u = 0; u < lines_.size(); ++u)
-            for (auto [l, h] : lines_[u].merged(open_lo_[u], open_hi_[u])) settle(l, h);
-    }
-
-private:
     // Adds the final interval [lo, hi] of one line, clipped, to the row's coverage.
     void settle(double lo, double hi) {
         lo = std::max(lo, x0_);
@@ -322,7 +326,7 @@ private:
         if (hi > lo) coverage_->add(lo - x0_, hi - x0_);
     }
 
-    double r_, step_;
+    double r_;
     int row_ = 0;
     double x0_ = 0, x1_ = 0;
     RowCoverage* coverage_ = nullptr;
@@ -395,6 +399,8 @@ void round_stroke_spans(std::span<const LineSegment> segments, double radius, co
     std::vector<Active> active;
     std::vector<SweptCapsule> built;
     std::vector<std::uint32_t> free_slots;
+    std::vector<const SweptCapsule*> row_caps;  // the active capsules of a row, in order
+    std::vector<double> row_x0;                 // and their left ends
     std::size_t next = 0;
     for (int j = clip.y0; j < clip.y1; ++j) {
         std::erase_if(active, [&](const Active& a) {
@@ -431,7 +437,13 @@ void round_stroke_spans(std::span<const LineSegment> segments, double radius, co
             continue;
         }
         lines.start(j, clip.x0, clip.x1, row);
-        for (const Active& a : active) lines.add(built[a.slot], caps[a.cap].y0, caps[a.cap].y1, caps[a.cap].x0);
+        row_caps.clear();
+        row_x0.clear();
+        for (const Active& a : active) {
+            row_caps.push_back(&built[a.slot]);
+            row_x0.push_back(caps[a.cap].x0);
+        }
+        lines.add(row_caps.data(), row_x0.data(), static_cast<int>(row_caps.size()));
         lines.accumulate();
         row.emit(1.0 / lines_per_pixel, j, clip.x0, w, sink);
     }
