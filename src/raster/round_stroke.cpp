@@ -37,25 +37,28 @@ namespace {
 
 using raster::SweptCapsule;
 
+// The band's parameters straight from the segment's differences (ux / uy = dx / dy and so on), so
+// that the square root of its length holds up only the half-width: two divisions, not five.
 SweptCapsule make_capsule(const LineSegment& s, double r) {
     SweptCapsule k{s.a.x, s.a.y, s.b.x, s.b.y, std::min(s.a.y, s.b.y) - r, std::max(s.a.y, s.b.y) + r};
-    const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, len = std::sqrt(dx * dx + dy * dy);
-    if (!(len > 0) || !std::isfinite(len)) return k;  // a disc
-    const double ux = dx / len, uy = dy / len;
+    const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, len2 = dx * dx + dy * dy;
+    if (!(len2 > 0) || !std::isfinite(len2)) return k;  // a disc
     k.band = true;
-    if (ux == 0) {
+    if (dx == 0) {
         k.vertical = true;
         k.end_lo = std::min(0.0, dy);
         k.end_hi = std::max(0.0, dy);
         return k;
     }
-    if (uy != 0) {
-        k.side_slope = ux / uy;
-        k.side_half = r / std::abs(uy);
+    const double inv_dx = 1 / dx;
+    if (dy != 0) {
+        const double inv_dy = 1 / dy;
+        k.side_slope = dx * inv_dy;
+        k.side_half = r * std::sqrt(len2) * std::abs(inv_dy);
     }
-    k.end_slope = uy / ux;
-    k.end_lo = std::min(0.0, len / ux);
-    k.end_hi = std::max(0.0, len / ux);
+    k.end_slope = dy * inv_dx;
+    k.end_lo = std::min(0.0, len2 * inv_dx);
+    k.end_hi = std::max(0.0, len2 * inv_dx);
     return k;
 }
 
