@@ -155,21 +155,26 @@ void distinct_positions(std::span<const Point> line, bool closed, std::vector<st
 
 namespace {
 
-// Calls each(line, closed, base) for every ring (closed) and line of the data; base is the index
-// of its first position in BorderNodes::node.
+// Calls each(line, closed, first) for every ring (closed) and line of geometry g, whose first
+// position has index base in BorderNodes::node; first is the index of the line's first position.
+template <class Each>
+void for_each_ring(const Geometry& g, std::size_t base, Each&& each) {
+    if (g.kind == GeometryKind::Points) return;
+    std::uint32_t start = 0;
+    const std::span<const Point> pts(g.points);
+    for (std::uint32_t end : g.ring_ends) {
+        each(pts.subspan(start, end - start), g.kind == GeometryKind::Polygons, base + start);
+        start = end;
+    }
+}
+
+// The same for every ring and line of the data.
 template <class Each>
 void for_each_line(const MapData& data, Each&& each) {
     std::size_t base = 0;
     for (const Feature& f : data.features)
         for (const Geometry& g : f.geometries) {
-            if (g.kind != GeometryKind::Points) {
-                std::uint32_t start = 0;
-                const std::span<const Point> pts(g.points);
-                for (std::uint32_t end : g.ring_ends) {
-                    each(pts.subspan(start, end - start), g.kind == GeometryKind::Polygons, base + start);
-                    start = end;
-                }
-            }
+            for_each_ring(g, base, each);
             base += g.points.size();
         }
 }
@@ -209,37 +214,41 @@ void intrinsic_nodes(std::span<const Point> pts, bool closed, std::span<const st
     }
 }
 
+// Marks in `node` (indexed like pts) the positions of one ring or line where it passes from one arc
+// to the next: `starts`, its arc starts as indices into its geometry's positions, of which pts
+// begins at `offset` (any before it are ignored). An arc start that repeats a position counts for
+// the first of its repeats (the one distinct_positions keeps); one among a ring's closing repeats,
+// for its first position.
+void arc_start_nodes(std::span<const Point> pts, std::span<const std::uint32_t> distinct,
+                     std::span<const std::uint32_t> starts, std::size_t offset, std::span<std::uint8_t> node) {
+    if (distinct.empty()) return;
+    std::size_t k = 0;  // the group of repeats the arc start falls in
+    for (const std::uint32_t at : starts) {
+        if (at < offset) continue;
+        const std::size_t i = at - offset;
+        while (k + 1 < distinct.size() && distinct[k + 1] <= i) ++k;
+        node[pts[i] == pts[distinct[k]] ? distinct[k] : distinct[0]] = 1;
+    }
+}
+
 // TopoJSON: every ring and line is a chain of arcs, and a border two rings share is one arc, so
 // the nodes are where a ring or line passes from one arc to the next (Geometry::arc_starts), and
-// what every ring or line has whatever its neighbours. An arc start that repeats a position counts
-// for the first of its repeats (the one distinct_positions keeps); one among a ring's closing
-// repeats, for its first position.
+// what every ring or line has whatever its neighbours.
 void nodes_from_arcs(const MapData& data, BorderNodes& r) {
     std::vector<std::uint32_t> distinct;
     std::size_t base = 0;
     for (const Feature& f : data.features)
         for (const Geometry& g : f.geometries) {
-            if (g.kind != GeometryKind::Points) {
-                const bool closed = g.kind == GeometryKind::Polygons;
-                const std::span<const Point> all(g.points);
-                std::size_t next = 0;  // the first of g.arc_starts not yet placed
-                std::uint32_t start = 0;
-                for (std::uint32_t end : g.ring_ends) {
-                    const std::span<const Point> pts = all.subspan(start, end - start);
-                    const std::span<std::uint8_t> node =
-                        std::span<std::uint8_t>(r.node).subspan(base + start, pts.size());
-                    distinct_positions(pts, closed, distinct);
-                    intrinsic_nodes(pts, closed, distinct, node);
-                    std::size_t k = 0;  // the group of repeats the arc start falls in
-                    for (; next < g.arc_starts.size() && g.arc_starts[next] < end; ++next) {
-                        if (g.arc_starts[next] < start || distinct.empty()) continue;
-                        const std::uint32_t i = g.arc_starts[next] - start;
-                        while (k + 1 < distinct.size() && distinct[k + 1] <= i) ++k;
-                        node[pts[i] == pts[distinct[k]] ? distinct[k] : distinct[0]] = 1;
-                    }
-                    start = end;
-                }
-            }
+            const std::span<const std::uint32_t> starts(g.arc_starts);
+            std::size_t next = 0;  // the first arc start not yet placed
+            for_each_ring(g, base, [&](std::span<const Point> pts, bool closed, std::size_t first) {
+                const std::span<std::uint8_t> node = std::span<std::uint8_t>(r.node).subspan(first, pts.size());
+                const std::size_t start = first - base, from = next;
+                while (next < starts.size() && starts[next] < start + pts.size()) ++next;
+                distinct_positions(pts, closed, distinct);
+                intrinsic_nodes(pts, closed, distinct, node);
+                arc_start_nodes(pts, distinct, starts.subspan(from, next - from), start, node);
+            });
             base += g.points.size();
         }
 }

@@ -158,11 +158,27 @@ struct BoundsVisitor final : PieceVisitor {
     void point(Point p) override { add(p); }
 };
 
-// Appends the segments of a closed ring, its closing one included, to `out`.
-void append_ring_segments(std::span<const Point> ring, std::vector<LineSegment>& out) {
-    if (ring.size() < 2) return;
-    for (std::size_t i = 1; i < ring.size(); ++i) out.push_back({ring[i - 1], ring[i]});
-    out.push_back({ring.back(), ring.front()});
+// Appends the segments of the polyline `pts` to `out`, and for a closed one (`closed`) the segment
+// back to its start; a single point gives none.
+void append_polyline_segments(std::span<const Point> pts, bool closed, std::vector<LineSegment>& out) {
+    if (pts.size() < 2) return;
+    for (std::size_t i = 1; i < pts.size(); ++i) out.push_back({pts[i - 1], pts[i]});
+    if (closed) out.push_back({pts.back(), pts.front()});
+}
+
+// Appends the segments of `path` (pixel space; curves flattened within `tolerance`) to `out`: its
+// closed contours with their closing segments, and a contour of one point as nothing, as stroke()
+// draws them.
+void append_segments(const Path& path, double tolerance, Polyline& flat, std::vector<LineSegment>& out) {
+    if (path.empty()) return;
+    flat.clear();
+    flatten(path, Affine{}, tolerance, flat);
+    std::size_t begin = 0;
+    for (std::size_t c = 0; c < flat.contour_ends.size(); ++c) {
+        const std::size_t end = flat.contour_ends[c];
+        append_polyline_segments(std::span<const Point>(flat.points).subspan(begin, end - begin), flat.closed[c], out);
+        begin = end;
+    }
 }
 
 // Builds the pixel-space paths of one feature.
@@ -188,10 +204,10 @@ struct PathVisitor final : PieceVisitor {
         for (std::size_t i = 0; i < pts.size(); ++i) mapped[i] = m.apply(pts[i]);
         if (ring_segments) {
             if (!stroke_clip || map_detail::inside(mapped, *stroke_clip)) {
-                append_ring_segments(mapped, *ring_segments);
+                append_polyline_segments(mapped, true, *ring_segments);
             } else {
                 map_detail::clip_ring(mapped, *stroke_clip, clipped);
-                if (clipped.size() >= 3) append_ring_segments(clipped, *ring_segments);
+                if (clipped.size() >= 3) append_polyline_segments(clipped, true, *ring_segments);
             }
         }
         if (fill_only) {
@@ -216,7 +232,15 @@ struct PathVisitor final : PieceVisitor {
         lines.move_to(mapped[0]);
         for (std::size_t i = 1; i < mapped.size(); ++i) lines.line_to(mapped[i]);
     }
-    void point(Point p) override;
+    void point(Point p) override {
+        if (!(point_radius > 0)) return;
+        fill.add_circle(m.apply(p), point_radius);
+        if (ring_segments) {
+            Path disk;
+            disk.add_circle(m.apply(p), point_radius);
+            append_segments(disk, disk_tolerance, flat, *ring_segments);
+        }
+    }
 };
 
 Rect projected_bbox(const MapProjection& proj, const Rect& bb) {
@@ -400,34 +424,6 @@ constexpr double kThinStrokeWidth = 2;
 
 bool thin_round(const StrokeStyle& ss) {
     return ss.join == LineJoin::Round && ss.cap == LineCap::Round && ss.width <= kThinStrokeWidth;
-}
-
-// Appends the segments of `path` (pixel space; curves flattened within `tolerance`) to `out`: its
-// closed contours with their closing segments, and a contour of one point as nothing, as stroke()
-// draws them.
-void append_segments(const Path& path, double tolerance, Polyline& flat, std::vector<LineSegment>& out) {
-    if (path.empty()) return;
-    flat.clear();
-    flatten(path, Affine{}, tolerance, flat);
-    std::size_t begin = 0;
-    for (std::size_t c = 0; c < flat.contour_ends.size(); ++c) {
-        const std::size_t end = flat.contour_ends[c];
-        if (end - begin >= 2) {
-            for (std::size_t i = begin + 1; i < end; ++i) out.push_back({flat.points[i - 1], flat.points[i]});
-            if (flat.closed[c]) out.push_back({flat.points[end - 1], flat.points[begin]});
-        }
-        begin = end;
-    }
-}
-
-void PathVisitor::point(Point p) {
-    if (!(point_radius > 0)) return;
-    fill.add_circle(m.apply(p), point_radius);
-    if (ring_segments) {
-        Path disk;
-        disk.add_circle(m.apply(p), point_radius);
-        append_segments(disk, disk_tolerance, flat, *ring_segments);
-    }
 }
 
 // One feature made ready to draw: its pixel-space fill (or stroke outline) and colour.

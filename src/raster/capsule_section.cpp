@@ -6,6 +6,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -111,6 +113,14 @@ HWY_INLINE int CapsuleSections(const SweptCapsule& k, double r, int row, double 
     return static_cast<int>(handed);
 }
 
+// The lines of row `row` (of `lines` lines) whose centres may lie inside the capsule's vertical
+// extent (y0, y1), with a line to spare on each side (the sections decide exactly): s0 .. s1, none
+// when s1 < s0.
+HWY_INLINE void SectionLines(const SweptCapsule& k, int row, int lines, int& s0, int& s1) {
+    s0 = std::max(0, static_cast<int>(std::floor((k.y0 - row) * lines)) - 1);
+    s1 = std::min(lines - 1, static_cast<int>(std::ceil((k.y1 - row) * lines)));
+}
+
 // A row's capsules in order until one leaves something for the caller (capsule_section.hpp).
 int CapsuleSectionsImpl(const SweptCapsule* const* caps, int count, double r, int row, int lines,
                         double* HWY_RESTRICT lo, double* HWY_RESTRICT hi, double* HWY_RESTRICT open_lo,
@@ -120,7 +130,7 @@ int CapsuleSectionsImpl(const SweptCapsule* const* caps, int count, double r, in
     const double step = 1.0 / lines;
     for (int c = 0; c < count; ++c) {
         int s0, s1;
-        section_lines(*caps[c], row, lines, s0, s1);
+        SectionLines(*caps[c], row, lines, s0, s1);
         if (s1 < s0) continue;
         if (CapsuleSections(*caps[c], r, row, step, s0, s1 - s0 + 1, lo, hi, open_lo + s0, open_hi + s0, closed_hi + s0,
                             left_bits, closed_bits) != 0) {

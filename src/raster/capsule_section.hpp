@@ -7,7 +7,6 @@
 // Thread-safety: pure functions.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -34,16 +33,9 @@ struct SweptCapsule {
 inline constexpr int kMaxSectionLines = 256;
 inline constexpr int kSectionPadding = 64;
 
-// The lines of row `row` (of `lines` lines) whose centres may lie inside the capsule's vertical
-// extent (y0, y1), with a line to spare on each side (the sections decide exactly): s0 .. s1, none
-// when s1 < s0.
-inline void section_lines(const SweptCapsule& k, int row, int lines, int& s0, int& s1) {
-    s0 = std::max(0, static_cast<int>(std::floor((k.y0 - row) * lines)) - 1);
-    s1 = std::min(lines - 1, static_cast<int>(std::ceil((k.y1 - row) * lines)));
-}
-
 // The capsules caps[0], caps[1], ... in order, each on its lines s0 .. s0 + n - 1 of row `row`
-// (section_lines; n <= kMaxSectionLines), until one leaves lines for the caller.
+// (those whose centres may lie inside its vertical extent (y0, y1), with a line to spare on each
+// side; n <= kMaxSectionLines), until one leaves lines for the caller.
 //
 // For each capsule, the interval of x where each of its lines lies within r of it is folded into
 // the line's union where that is simple. A line's union is kept as its open interval
