@@ -114,6 +114,8 @@ public:
     // the transform applies to a shader's coordinates only, as for masks) with `paint`: the rows of
     // round_stroke_spans() go straight to the pixels, only near the strokes.
     void fill_round_stroke(std::span<const LineSegment> segments, double radius, const Paint& paint);
+    // Composites recorded coverage rows (pixel space, as fill_mask) with `paint`, inside the clip.
+    void fill_coverage(const CoverageRows& rows, const Paint& paint);
 
     // Draws `image` (premultiplied, its pixel space [0, w] x [0, h]) mapped by `m` and then by the
     // current transform, sampled at pixel centres. The image is only read during the call.

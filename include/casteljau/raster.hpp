@@ -38,6 +38,7 @@
 // afresh, page by page.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -101,6 +102,31 @@ double similarity_scale(const Affine& m);
 // FillOptions::topology, instead of fill() classifying it again for every piece. Thread-safe.
 Topology decide_topology(const Path& path, const Affine& m, double tolerance, double box_width, double box_height);
 
+// A set of pixels over a rectangle (pixel space), one bit each; pixels outside the rectangle are
+// never in it. Inserting on different rows from different threads is safe (each row has words of
+// its own); anything else needs the caller's synchronisation.
+class PixelSet {
+public:
+    PixelSet() = default;
+    // The empty set over `bounds` (bounds.width() x bounds.height() bits, all clear).
+    explicit PixelSet(const IRect& bounds);
+    const IRect& bounds() const { return bounds_; }
+    // Adds pixels x0 .. x1 - 1 of row y (those inside the bounds).
+    void insert(int y, int x0, int x1);
+    bool contains(int x, int y) const {
+        if (x < bounds_.x0 || y < bounds_.y0 || x >= bounds_.x1 || y >= bounds_.y1) return false;
+        const std::size_t i = static_cast<std::size_t>(x - bounds_.x0);
+        return (bits_[static_cast<std::size_t>(y - bounds_.y0) * words_ + i / 64] >> (i % 64)) & 1;
+    }
+    // The number of pixels in the set.
+    std::size_t count() const;
+
+private:
+    IRect bounds_;
+    std::size_t words_ = 0;  // per row
+    std::vector<std::uint64_t> bits_;
+};
+
 struct FillOptions {
     FillRule rule = FillRule::NonZero;
     double tolerance = kDefaultTolerance;  // flattening tolerance in pixels
@@ -120,6 +146,12 @@ struct FillOptions {
     // fill. Cost: a sweep over the capsules that can hold a pixel, with a work budget of a few
     // tests per capsule and per recomputed pixel.
     std::span<const CutCapsule> inside;
+    // Pixels the caller will paint over with opaque paint at full coverage, so that their coverage
+    // is never seen: the overlap check leaves them to plain accumulation (what exact_overlaps =
+    // false gives) instead of recomputing them exactly. Every other pixel keeps its exact
+    // coverage. The set must outlive the fill. render_map hides the pixels its opaque strokes
+    // cover fully from the fills under them.
+    const PixelSet* hidden = nullptr;
 };
 
 // Receives coverage one row at a time, rows in increasing y. `coverage[i]` belongs to pixel
@@ -128,6 +160,26 @@ class SpanSink {
 public:
     virtual ~SpanSink() = default;
     virtual void row(int y, int x, int length, const std::uint8_t* coverage) = 0;
+};
+
+// Coverage rows kept to be used later: a SpanSink that records the rows it is handed, in order,
+// and hands them on to another sink (replay), as often as asked. Memory: the coverage bytes plus
+// 24 bytes per row. A value; not for concurrent recording.
+class CoverageRows final : public SpanSink {
+public:
+    void row(int y, int x, int length, const std::uint8_t* coverage) override;
+    // Hands every recorded row to `sink`, in the order they came.
+    void replay(SpanSink& sink) const;
+    void clear();
+    bool empty() const { return rows_.empty(); }
+
+private:
+    struct Row {
+        int y, x, length;
+        std::size_t at;  // its coverage: bytes_[at, at + length)
+    };
+    std::vector<Row> rows_;
+    std::vector<std::uint8_t> bytes_;
 };
 
 // An 8-bit coverage mask (A8) positioned at `origin` in pixel space.
@@ -152,6 +204,9 @@ struct RasterStats {
     // Of the cells the overlap check marked, those found full inside FillOptions::inside (not
     // counted in exact_cells).
     std::size_t inside_cells = 0;
+    // Cells the overlap check would have examined, left to accumulation because they are in
+    // FillOptions::hidden (not counted in exact_cells).
+    std::size_t hidden_cells = 0;
     double exact_work = 0;                  // piece visits the exact cells cost (bounded by the fill's size)
     std::size_t strips = 0;                 // dense buffers run: 1, or the bands of a large shape
     Topology topology = Topology::Unknown;  // the verdict the fill used (Unknown: exact_overlaps off)

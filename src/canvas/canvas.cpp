@@ -219,6 +219,28 @@ void Canvas::fill_round_stroke(std::span<const LineSegment> segments, double rad
     round_stroke_spans(segments, radius, state_.clip, sink);
 }
 
+void Canvas::fill_coverage(const CoverageRows& rows, const Paint& paint) {
+    if (state_.clip.empty() || rows.empty()) return;
+    PaintPipeline pipe(paint, state_.transform, state_.opacity, state_.blend, scratch_);
+    if (pipe.paints_nothing()) return;
+    PipelineSink pixels(layer_or_target(), pipe, state_.clip_mask.get(), coverage_);
+    // The rows' parts inside the clip rectangle.
+    class Clipped final : public SpanSink {
+    public:
+        Clipped(const IRect& clip, SpanSink& to) : clip_(clip), to_(to) {}
+        void row(int y, int x, int length, const std::uint8_t* coverage) override {
+            if (y < clip_.y0 || y >= clip_.y1) return;
+            const int x0 = std::max(x, clip_.x0), x1 = std::min(x + length, clip_.x1);
+            if (x1 > x0) to_.row(y, x0, x1 - x0, coverage + (x0 - x));
+        }
+
+    private:
+        const IRect& clip_;
+        SpanSink& to_;
+    } clipped(state_.clip, pixels);
+    rows.replay(clipped);
+}
+
 void Canvas::draw_image(const Pixmap& image, const Affine& m, ImageSampling sampling, double opacity) {
     if (image.width() < 1 || image.height() < 1) throw Error(ErrorKind::InvalidArgument, "draw_image: empty image");
     // The shader only reads the image during this call: share it without owning it.

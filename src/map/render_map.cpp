@@ -20,6 +20,7 @@
 #include "map/clip_to_frame.hpp"
 #include "map/ring_spikes.hpp"
 #include "map/simplify_map.hpp"
+#include "map/stroke_cover.hpp"
 #include "map/unique_segments.hpp"
 
 namespace casteljau {
@@ -608,6 +609,26 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
         std::vector<std::uint32_t> segment_slot(stroke_with_fill ? data.features.size() : 0);
         for (std::size_t k = 0; k < feature_segments.size(); ++k)
             segment_slot[order[k]] = static_cast<std::uint32_t>(k);
+        // The stroke's segments the fills' visitors gathered, one copy of each, in feature order.
+        auto gathered_segments = [&] {
+            std::vector<LineSegment> segments;
+            std::size_t total = 0;
+            for (const auto& f : feature_segments) total += f.size();
+            segments.reserve(total);
+            for (auto& f : feature_segments) {
+                segments.insert(segments.end(), f.begin(), f.end());
+                std::vector<LineSegment>().swap(f);
+            }
+            map_detail::drop_repeated_segments(segments);
+            return segments;
+        };
+        // A sampled stroke's sweeps: each reads every segment once to find those it needs, so one
+        // thread sweeps the whole image at once and several take a band each.
+        const std::vector<IRect> sweeps =
+            threads == 1 ? std::vector<IRect>{IRect{0, 0, frame.width, frame.height}} : bands;
+        // An opaque sampled stroke over a seamless fill is swept first (stroke_cover.hpp).
+        map_detail::StrokeCover cover;
+        bool covered = false;
         // Fills: seamless (SeamlessCompositor, last feature first so that later features win) or source-over in order.
         auto make_fill = [&](int w, std::size_t feature, std::optional<Drawable>& out) {
             const std::optional<Color> c = layer.fill_for(data.features[feature]);
@@ -639,6 +660,7 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
         auto fill_options = [&](const Drawable& d) {
             FillOptions o = fo;
             o.topology = d.topology;
+            if (covered) o.hidden = &cover.full();
             return o;
         };
         const bool seamless = layer.fill && opts.seamless;
@@ -654,8 +676,17 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
             const bool banded = positions <= kChunkPositions;
             Pixmap* const direct = target_clear ? &target : nullptr;  // the fills go straight into it
             if (!banded) start_compositor(whole, IRect{0, 0, frame.width, frame.height}, direct);
+            // One chunk holds every feature, so the stroke's segments are all known before any
+            // fill is drawn.
+            const bool occlude =
+                stroke_with_fill && banded && fo.exact_overlaps && line_color->a == 255 && layer.opacity >= 1;
             bool drew = false;
             chunked(order, make_fill, [&](const std::vector<std::optional<Drawable>>& chunk) {
+                if (occlude) {
+                    cover.sweep(gathered_segments(), 0.5 * ss.width, IRect{0, 0, frame.width, frame.height}, sweeps,
+                                threads);
+                    covered = true;
+                }
                 parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
                     Rasterizer& raster = canvases[static_cast<std::size_t>(w)]->rasterizer();
                     SeamlessCompositor* into = banded ? nullptr : &*whole;
@@ -715,16 +746,22 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
             // The union of every feature's capsules, drawn from the segments directly
             // (round_stroke.hpp): no outline, so nothing folds. The union does not depend on
             // repeats, so a shared border's second copy is dropped before the sweep.
-            std::vector<LineSegment> segments;
-            if (stroke_with_fill) {
-                std::size_t total = 0;
-                for (const auto& f : feature_segments) total += f.size();
-                segments.reserve(total);
-                for (auto& f : feature_segments) {
-                    segments.insert(segments.end(), f.begin(), f.end());
-                    std::vector<LineSegment>().swap(f);
-                }
+            Paint paint = Paint::solid(*line_color);
+            paint.opacity = layer.opacity;
+            if (covered) {
+                target_clear = false;
+                parallel::for_each_index(threads, sweeps.size(), [&](int w, std::size_t k) {
+                    Canvas& canvas = *canvases[static_cast<std::size_t>(w)];
+                    canvas.save();
+                    canvas.clip_rect(
+                        Rect{double(sweeps[k].x0), double(sweeps[k].y0), double(sweeps[k].x1), double(sweeps[k].y1)});
+                    cover.composite(k, canvas, paint);
+                    canvas.restore();
+                });
+                continue;
             }
+            std::vector<LineSegment> segments;
+            if (stroke_with_fill) segments = gathered_segments();
             auto make_lines = [&](int w, std::size_t feature, std::optional<Drawable>& out) {
                 PathVisitor v;
                 v.clip = stroke_clip;
@@ -742,22 +779,14 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
                         append_segments(d->rings, opts.tolerance, flat, segments);
                     }
                 });
+            if (!stroke_with_fill) map_detail::drop_repeated_segments(segments);
             if (segments.empty()) continue;
-            map_detail::drop_repeated_segments(segments);
             target_clear = false;
-            Paint paint = Paint::solid(*line_color);
-            paint.opacity = layer.opacity;
-            // Each sweep reads every segment once to find those it needs: one thread sweeps the
-            // whole image at once, several take a band each.
-            if (threads == 1) {
-                canvases[0]->fill_round_stroke(segments, 0.5 * ss.width, paint);
-                continue;
-            }
-            parallel::for_each_index(threads, bands.size(), [&](int w, std::size_t b) {
+            parallel::for_each_index(threads, sweeps.size(), [&](int w, std::size_t k) {
                 Canvas& canvas = *canvases[static_cast<std::size_t>(w)];
                 canvas.save();
                 canvas.clip_rect(
-                    Rect{double(bands[b].x0), double(bands[b].y0), double(bands[b].x1), double(bands[b].y1)});
+                    Rect{double(sweeps[k].x0), double(sweeps[k].y0), double(sweeps[k].x1), double(sweeps[k].y1)});
                 canvas.fill_round_stroke(segments, 0.5 * ss.width, paint);
                 canvas.restore();
             });

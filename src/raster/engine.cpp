@@ -444,20 +444,29 @@ bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) co
     return hi - lo <= 1;
 }
 
-void Engine::classify() {
+std::size_t Engine::classify(int ox, int oy, const PixelSet* hidden) {
     exact_.clear();
     exact_at_.clear();
     exact_ids_.clear();
+    // A hidden cell is never exact, so neither its runs nor the cell itself need deciding.
+    auto is_hidden = [&](std::uint32_t cell) {
+        return hidden && hidden->contains(ox + static_cast<int>(cell % stride_), oy + static_cast<int>(cell / stride_));
+    };
+    std::size_t hidden_cells = 0;
     // Whether each run is simple, decided once: a candidate cell asks again for each of its runs.
     simple_.resize(visits_.size());
     for (std::size_t i = 0; i < visits_.size(); ++i) {
         const Visit& v = visits_[i];
         if (v.merged_away) continue;
-        simple_[i] = monotone(v.dirs) || simple_run(v);
+        simple_[i] = monotone(v.dirs) || is_hidden(v.cell) || simple_run(v);
         if (!simple_[i]) add_cand(v.cell);
     }
     // Decide each candidate (cands_ holds each cell once, in no particular order) ...
     for (std::uint32_t cell : cands_) {
+        if (is_hidden(cell)) {
+            ++hidden_cells;
+            continue;
+        }
         const int row = static_cast<int>(cell / stride_), col = static_cast<int>(cell % stride_);
         int n = 0;
         const Visit* runs[kMaxRuns] = {};
@@ -487,14 +496,15 @@ void Engine::classify() {
         }
     }
     exact_at_.push_back(static_cast<std::uint32_t>(exact_ids_.size()));
+    return hidden_cells;
 }
 
 void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats,
-                    std::span<const CutCapsule> inside) {
+                    std::span<const CutCapsule> inside, const PixelSet* hidden) {
     stats.segments = count_;
     stats.strips = 1;
     if (track_) {
-        classify();
+        stats.hidden_cells = classify(ox, oy, hidden);
         for (const Visit& v : visits_) head_[v.cell] = 0;
         for (std::uint32_t cell : cands_) cand_[cell] = 0;
         cands_.clear();

@@ -58,9 +58,10 @@ public:
     // The current contour is complete (its closing edge was pushed).
     void contour_end();
     // Resolves the marked cells and hands the rows to the sink, at pixel offset (ox, oy). Marked
-    // cells wholly inside one of `inside` (pixel space) are full under the nonzero rule.
+    // cells wholly inside one of `inside` (pixel space) are full under the nonzero rule; cells of
+    // pixels in `hidden` keep their accumulated coverage (FillOptions::hidden).
     void finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& stats,
-                std::span<const CutCapsule> inside = {});
+                std::span<const CutCapsule> inside = {}, const PixelSet* hidden = nullptr);
     // Frees the per-edge and per-visit lists that hold room for more than `records` entries (the
     // dense buffers stay: a strip bounds them). Between shapes only.
     void trim(std::size_t records);
@@ -84,7 +85,8 @@ private:
     bool harmless_two(const Visit& a, const Visit& b, int col, int row);
     bool run_ends(const Visit& v, int col, int row, double& t0, double& t1) const;
     void gather(const Visit& v, int col, int row, std::vector<ExactScratch::Piece>& out) const;
-    void classify();
+    // Lists the cells to compute exactly; returns how many candidates `hidden` left out.
+    std::size_t classify(int ox, int oy, const PixelSet* hidden);
     bool simple_run(const Visit& v) const;
     bool closed_run(const Visit& v) const;
     // Longer runs are not checked for simplicity: exact. The pairwise check of 32 edges costs less

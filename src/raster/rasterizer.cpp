@@ -209,7 +209,7 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opti
         raster::Engine& d = impl_->engine;
         d.begin(bw, bh, opts.exact_overlaps);
         raster::build_edges(path, local, opts.tolerance, inside, bw, bh, d);
-        d.finish(opts.rule, ox, oy, sink, stats_, opts.inside);
+        d.finish(opts.rule, ox, oy, sink, stats_, opts.inside, opts.hidden);
         return;
     }
     // Larger boxes: the clipped edges are kept, then swept in bands of at most kMaxStripCells cells.
@@ -268,11 +268,12 @@ void Rasterizer::Impl::run_bands(const FillOptions& opts, int ox, int oy, int bw
         }
         engine.contour_end();
         RasterStats part;
-        engine.finish(opts.rule, ox, oy + y0, sink, part, opts.inside);
+        engine.finish(opts.rule, ox, oy + y0, sink, part, opts.inside, opts.hidden);
         stats.exact_cells += part.exact_cells;
         stats.dense_cells += part.dense_cells;
         stats.accumulated_cells += part.accumulated_cells;
         stats.inside_cells += part.inside_cells;
+        stats.hidden_cells += part.hidden_cells;
         stats.exact_work += part.exact_work;
         ++stats.strips;
     }

@@ -161,35 +161,44 @@ TEST_CASE("clip_path: rotated clips reaching past the canvas, or wholly outside 
         for (int x = 0; x < w; ++x) CHECK(none.pixel(x, y).a == 0);
 }
 
-TEST_CASE("fill_round_stroke: composites the round-stroke rows as fill_mask composites their mask",
+TEST_CASE("fill_round_stroke and fill_coverage composite the round-stroke rows as fill_mask composites their mask",
           "[canvas][clip][round_stroke]") {
     // Half-transparent red over a blue background, under a clip path and a clip rectangle: the
-    // rows go straight to the pixels, and must give what the mask of the same strokes gives.
+    // rows go straight to the pixels, or are recorded over the whole image and composited later
+    // (cut to the clip rectangle then), and must give what the mask of the same strokes gives.
     const std::vector<LineSegment> segs{
         {{3.2, 4.1}, {150.6, 30.3}}, {{20.5, 35.0}, {140.2, 2.7}}, {{90, 20}, {90, 20}}};
     Path clip;
     clip.add_rect({10.5, 0, 120.25, 40});
-    auto draw = [&](bool direct) {
+    enum Mode { kDirect, kMask, kRecorded };
+    auto draw = [&](Mode mode) {
         Pixmap pm(160, 40);
         Canvas c(pm);
         c.fill_rect({0, 0, 160, 40}, Paint::solid(Color::rgba(20, 40, 200)));
         c.clip_path(clip);
         c.clip_rect({0, 3, 160, 37});
         const Paint red = Paint::solid(Color::rgba(230, 20, 10, 128));
-        if (direct)
+        if (mode == kDirect) {
             c.fill_round_stroke(segs, 1.3, red);
-        else
+        } else if (mode == kMask) {
             c.fill_mask(round_stroke_mask(segs, 1.3, {0, 0, 160, 40}), red);
+        } else {
+            CoverageRows rows;
+            round_stroke_spans(segs, 1.3, {0, 0, 160, 40}, rows);
+            c.fill_coverage(rows, red);
+        }
         return pm;
     };
-    const Pixmap a = draw(true), b = draw(false);
-    int differ = 0, red = 0;
+    const Pixmap a = draw(kDirect), b = draw(kMask), r = draw(kRecorded);
+    int differ = 0, differ_recorded = 0, red = 0;
     for (int y = 0; y < 40; ++y)
         for (int x = 0; x < 160; ++x) {
             differ += !(a.pixel(x, y) == b.pixel(x, y));
+            differ_recorded += !(r.pixel(x, y) == b.pixel(x, y));
             red += a.pixel(x, y).r > 100;
         }
     CHECK(differ == 0);
+    CHECK(differ_recorded == 0);
     CHECK(red > 200);
     CHECK(a.pixel(5, 5).r < 30);    // outside the clip path
     CHECK(a.pixel(60, 38).r < 30);  // outside the clip rectangle
