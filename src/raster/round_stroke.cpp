@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -70,7 +71,7 @@ struct Extent {
 };
 
 // The segments that can reach `clip`, in order of the pixel row where their extent begins (a
-// counting sort: two passes over the segments, no comparisons).
+// counting sort: two passes over the segments), and in each row in order of their left ends.
 std::vector<Extent> extents_in(std::span<const LineSegment> segments, double r, const IRect& clip) {
     if (segments.size() > UINT32_MAX) throw Error(ErrorKind::Limit, "round_stroke_mask: more than 2^32 - 1 segments");
     // Calls each(first row, extent) for every segment reaching the clip, rows relative to clip.y0.
@@ -91,6 +92,11 @@ std::vector<Extent> extents_in(std::span<const LineSegment> segments, double r, 
     for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
     std::vector<Extent> out(start.back());
     for_each([&](std::size_t row, const Extent& e) { out[start[row]++] = e; });
+    // start[row] is now where the next row begins.
+    auto left = [](const Extent& a, const Extent& b) { return a.x0 < b.x0; };
+    for (std::size_t row = 0, begin = 0; row + 1 < start.size(); begin = start[row++])
+        std::sort(out.begin() + static_cast<std::ptrdiff_t>(begin),
+                  out.begin() + static_cast<std::ptrdiff_t>(start[row]), left);
     return out;
 }
 
@@ -399,7 +405,7 @@ void round_stroke_spans(std::span<const LineSegment> segments, double radius, co
     struct Active {
         std::uint32_t cap, slot;
     };
-    std::vector<Active> active;
+    std::vector<Active> active, merged;
     std::vector<SweptCapsule> built;
     std::vector<std::uint32_t> free_slots;
     std::vector<const SweptCapsule*> row_caps;  // the active capsules of a row, in order
@@ -430,10 +436,13 @@ void round_stroke_spans(std::span<const LineSegment> segments, double radius, co
             built[slot].start_disc = !(i > 0 && segments[i - 1].b == segments[i].a && built[slot].band);
             active.push_back({static_cast<std::uint32_t>(next), slot});
         }
-        if (active.size() > kept) {
+        if (active.size() > kept && kept > 0) {  // the new ones came in order of their left ends
+            merged.clear();
             auto left = [&](const Active& a, const Active& b) { return caps[a.cap].x0 < caps[b.cap].x0; };
-            std::sort(active.begin() + static_cast<std::ptrdiff_t>(kept), active.end(), left);
-            std::inplace_merge(active.begin(), active.begin() + static_cast<std::ptrdiff_t>(kept), active.end(), left);
+            std::merge(active.begin(), active.begin() + static_cast<std::ptrdiff_t>(kept),
+                       active.begin() + static_cast<std::ptrdiff_t>(kept), active.end(), std::back_inserter(merged),
+                       left);
+            active.swap(merged);
         }
         if (active.empty()) {
             if (next == caps.size()) break;
