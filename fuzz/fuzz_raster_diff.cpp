@@ -16,7 +16,9 @@
 //      in FillOptions::topology) and with plain accumulation within 1/255 of the exact cells;
 //   4. under the similarity maps, at a flattening tolerance from 0.015 to 2 px (bits 4-5 of byte
 //      0), a path that classify_topology(path, tolerance / scale) proves Simple renders by plain
-//      accumulation within 1/255 of the exact cells at that tolerance.
+//      accumulation within 1/255 of the exact cells at that tolerance;
+//   5. with FillOptions::hidden (a pattern of pixels picked by bits 6-7 of byte 0), every hidden
+//      pixel within 1/255 of plain accumulation and every other one equal to the exact cells.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -130,6 +132,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         FillOptions exact = opts;
         exact.topology = Topology::Overlapping;
         const Mask cells = render(r, path, m, exact);
+        // Exact everywhere: no cell fell back to lines or to accumulation for want of budget.
+        const bool all_exact = r.last_stats().dense_cells == 0 && r.last_stats().accumulated_cells == 0;
         expect_close("default vs exact cells", fast, cells);
         // The verdict: a path classify_topology proves simple, filled with that verdict (plain
         // accumulation) and with exact overlaps off, must match the exact cells.
@@ -148,6 +152,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             cells_at.topology = Topology::Overlapping;
             expect_close("plain accumulation of a path Simple under similarity maps vs exact cells",
                          render(r, path, m, plain), render(r, path, m, cells_at));
+        }
+        if (all_exact) {
+            // Hidden pixels: every third, in diagonal stripes, or in a block, by bits 6-7.
+            PixelSet hidden(IRect{0, 0, kSize, kSize});
+            const int pattern = head >> 6;
+            for (int y = 0; y < kSize; ++y)
+                for (int x = 0; x < kSize; ++x)
+                    if ((pattern == 0 && (x + 2 * y) % 3 == 0) || (pattern == 1 && (x + y) % 7 < 3) ||
+                        (pattern == 2 && x >= 8 && x < 24 && y >= 4 && y < 30) || pattern == 3)
+                        hidden.insert(y, x, x + 1);
+            FillOptions hide = exact, plain = opts;
+            hide.hidden = &hidden;
+            plain.exact_overlaps = false;
+            const Mask partly = render(r, path, m, hide), accumulated = render(r, path, m, plain);
+            for (int y = 0; y < kSize; ++y)
+                for (int x = 0; x < kSize; ++x) {
+                    const int got = partly.at(x, y);
+                    if (hidden.contains(x, y) && std::abs(got - accumulated.at(x, y)) > 1)
+                        fail("a hidden pixel vs plain accumulation", x, y, got, accumulated.at(x, y));
+                    if (!hidden.contains(x, y) && got != cells.at(x, y))
+                        fail("a pixel not hidden vs exact cells", x, y, got, cells.at(x, y));
+                }
         }
         if (!curved) {
             const ref::CoverageGrid g = ref::path_reference(path, m, opts.rule, IRect{0, 0, kSize, kSize});
