@@ -122,9 +122,9 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         sc.breaks.push_back(by);
         if (ay == by) continue;  // horizontal: a slab boundary, no slab of its own
         if (ay < by)
-            sc.inside.push_back({ay, by, ax, bx, 1});
+            sc.inside.push_back({ay, by, ax, bx, (bx - ax) / (by - ay), 1});
         else
-            sc.inside.push_back({by, ay, bx, ax, -1});
+            sc.inside.push_back({by, ay, bx, ax, (ax - bx) / (ay - by), -1});
     }
     const std::size_t n = sc.inside.size();
     sc.work += static_cast<double>(ids.size());  // clipping every edge to the cell
@@ -168,12 +168,12 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         // Pairwise crossings of the pieces cut the slabs too.
         for (std::size_t i = 0; i < n && !dense; ++i) {
             const auto& a = sc.inside[i];
-            const double ka = (a.xb - a.xa) / (a.yb - a.ya);
+            const double ka = a.k;
             for (std::size_t j = i + 1; j < n; ++j) {
                 const auto& b = sc.inside[j];
                 const double lo = std::max(a.ya, b.ya), hi = std::min(a.yb, b.yb);
                 if (!(hi > lo)) continue;
-                const double kb = (b.xb - b.xa) / (b.yb - b.ya);
+                const double kb = b.k;
                 if (ka == kb) continue;
                 const double y = (b.xa - a.xa + a.ya * ka - b.ya * kb) / (ka - kb);
                 if (y > lo && y < hi) sc.breaks.push_back(y);
@@ -330,7 +330,7 @@ double exact_cell_coverage(const Edge* edges, const std::vector<std::uint32_t>& 
         sc.active.resize(live.size());
         for (std::size_t a = 0; a < live.size(); ++a) {
             const auto& p = sc.inside[live[a]];
-            const double k = (p.xb - p.xa) / (p.yb - p.ya);
+            const double k = p.k;
             sc.active[a] = {std::clamp(p.xa + (y0 - p.ya) * k, cx, cr), std::clamp(p.xa + (y1 - p.ya) * k, cx, cr),
                             std::clamp(p.xa + (ym - p.ya) * k, cx, cr), p.dir};
         }

@@ -38,6 +38,7 @@ struct ExactScratch {
     std::vector<double> breaks;
     struct Part {
         double ya, yb, xa, xb;
+        double k;  // dx / dy, once per piece rather than per slab and per pair
         int dir;
     };
     std::vector<Part> inside;
