@@ -549,6 +549,14 @@ void draw_map(const MapData& data, const map_detail::SimplifiedMap* simplified, 
     // Any other background waits for the first drawing: a seamless fill's compositors set each
     // row to it as they composite onto it, while the row is in cache (the same pixels as filling
     // the image first); anything else paints it first (paint_background).
+    // A drawn pixmap under a transparent background is cleared first, band by band on the
+    // workers, and then takes the fills directly as a new one does.
+    if (!cleared && style.background.a == 0) {
+        parallel::for_each_index(threads, bands.size(), [&](int, std::size_t b) {
+            target.fill_rows(bands[b].y0, bands[b].y1, style.background);
+        });
+        cleared = true;
+    }
     bool target_clear = cleared && style.background.a == 0;
     std::vector<char> background_due(bands.size(), !target_clear);
     auto paint_background = [&] {
