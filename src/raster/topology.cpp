@@ -208,6 +208,10 @@ private:
     bool orientation(std::size_t c, int& o, double slack) const;
     double hull_areas(std::size_t c) const;
     bool winding_point(std::size_t a, const std::vector<Rect>& boxes, Point& p);
+    class Collector;
+    bool pairs_apart(const Rect& cb);
+    bool pair_apart(const Seg& s, const Seg& t);
+    bool windings_in_range();
 };
 
 // Is there a line, through two control points of a or of b or perpendicular to such a pair, with
@@ -695,6 +699,88 @@ void Classifier::add_contour(std::vector<Seg>& c) {
     c.clear();
 }
 
+// Segments per contour (each contour closed by a line when it does not end at its start), without
+// segments whose control points all coincide (they draw nothing) and without spikes. Notes a cubic
+// not proven free of loops (self_crossing) and a conic weight outside [2^-500, 2^500], where no
+// proof is attempted (splitting such a conic would overflow; control points are finite here).
+class Classifier::Collector {
+public:
+    explicit Collector(Classifier& c) : c_(c) {}
+    bool self_crossing = false;
+    bool out_of_range = false;
+
+    void move(Point p) {
+        end();
+        start_ = cur_ = p;
+    }
+    void line(Point a, Point b) {
+        push({a, b}, false, 1);
+        cur_ = b;
+    }
+    void quad(Point a, Point c, Point b) {
+        push({a, c, b}, false, 1);
+        cur_ = b;
+    }
+    void cubic(Point a, Point c1, Point c2, Point b) {
+        push({a, c1, c2, b}, false, 1);
+        cur_ = b;
+    }
+    void conic(Point a, Point c, Point b, double w) {
+        push({a, c, b}, true, w);
+        cur_ = b;
+    }
+    void close(Point last, Point first) {
+        if (!(last == first)) push({last, first}, false, 1);
+        cur_ = start_ = first;
+        end();
+    }
+    // Closes and adds the current contour.
+    void end() {
+        if (!c_.contour_.empty() && !(cur_ == start_)) push({cur_, start_}, false, 1);
+        c_.add_contour(c_.contour_);
+    }
+
+private:
+    void push(std::initializer_list<Point> pts, bool conic, double w) {
+        Seg s;
+        s.n = 0;
+        for (Point q : pts) s.p[s.n++] = q;
+        s.conic = conic;
+        s.w = w;
+        if (conic && !(w >= 0x1p-500 && w <= 0x1p500)) out_of_range = true;
+        bool degenerate = true;
+        for (int i = 1; i < s.n; ++i) degenerate = degenerate && s.p[i] == s.p[0];
+        if (degenerate) return;
+        if (s.n == 4 && !cubic_monotone(s)) self_crossing = true;
+        s.box = box_of(s);
+        // A line straight back along the previous one (a spike, A to B to A) adds nothing to any
+        // pixel's integral and no area anywhere: both are left out.
+        if (is_spike(c_.contour_, s)) {
+            c_.contour_.pop_back();
+            return;
+        }
+        c_.contour_.push_back(s);
+    }
+
+    // A cubic may loop on itself. One whose control points are monotone in x or in y is monotone
+    // there too, and so is every polygon inscribed in it: no self-crossing. So is the fill's
+    // area-balanced polygon (Flattener::balanced_cubic), whose inner vertices B(t) - (h^2 / 2) L(t)
+    // lie off the curve. With a, b, c >= 0 the steps dP_j of the coordinate (E = a - 2b + c) and
+    // h <= 1/2, an end step is a (3h - 5h^2/2 + h^3/2) + b (5h^2/2 - h^3) + c h^3/2 >= 0, and an
+    // inner step over [t, t + h] (h <= t <= 1 - 2h) is the curve's step minus (h^3 / 2) E, where the
+    // curve's step, 3 the integral of a (1 - s)^2 + 2 b s (1 - s) + c s^2, is at least 7 (a + c) h^3.
+    static bool cubic_monotone(const Seg& s) {
+        auto mono = [&](double Point::*c) {
+            const double a = s.p[0].*c, b = s.p[1].*c, d = s.p[2].*c, e = s.p[3].*c;
+            return (a <= b && b <= d && d <= e) || (a >= b && b >= d && d >= e);
+        };
+        return mono(&Point::x) || mono(&Point::y);
+    }
+
+    Classifier& c_;
+    Point start_{}, cur_{};
+};
+
 Topology Classifier::run(const Path& path, double lambda) {
     lambda_ = lambda;
     segs_.clear();
@@ -713,101 +799,25 @@ Topology Classifier::run(const Path& path, double lambda) {
     if (!(extent >= 0x1p-500 && extent <= 0x1p500)) return Topology::Overlapping;
     delta_ = std::ldexp(extent, -40);
 
-    // Segments per contour (each contour closed by a line when it does not end at its start),
-    // without segments whose control points all coincide (they draw nothing).
-    std::vector<Seg>& contour = contour_;
-    Point start{}, cur{};
-    bool self_crossing = false;  // a cubic not proven free of loops
-    // A conic weight outside [2^-500, 2^500]: no proof is attempted (splitting such a conic would
-    // overflow). Control points are finite here (checked above).
-    bool out_of_range = false;
-    auto push = [&](std::initializer_list<Point> pts, bool conic, double w) {
-        Seg s;
-        s.n = 0;
-        for (Point q : pts) s.p[s.n++] = q;
-        s.conic = conic;
-        s.w = w;
-        if (conic && !(w >= 0x1p-500 && w <= 0x1p500)) out_of_range = true;
-        bool degenerate = true;
-        for (int i = 1; i < s.n; ++i) degenerate = degenerate && s.p[i] == s.p[0];
-        if (degenerate) return;
-        if (s.n == 4) {
-            // A cubic may loop on itself. One whose control points are monotone in x or in y is
-            // monotone there too, and so is every polygon inscribed in it: no self-crossing. So is
-            // the fill's area-balanced polygon (Flattener::balanced_cubic), whose inner vertices
-            // B(t) - (h^2 / 2) L(t) lie off the curve. With a, b, c >= 0 the steps dP_j of the
-            // coordinate (E = a - 2b + c) and h <= 1/2, an end step is
-            // a (3h - 5h^2/2 + h^3/2) + b (5h^2/2 - h^3) + c h^3/2 >= 0, and an inner step over
-            // [t, t + h] (h <= t <= 1 - 2h) is the curve's step minus (h^3 / 2) E, where the curve's
-            // step, 3 the integral of a (1 - s)^2 + 2 b s (1 - s) + c s^2, is at least 7 (a + c) h^3.
-            auto mono = [&](double Point::*c) {
-                const double a = s.p[0].*c, b = s.p[1].*c, d = s.p[2].*c, e = s.p[3].*c;
-                return (a <= b && b <= d && d <= e) || (a >= b && b >= d && d >= e);
-            };
-            if (!mono(&Point::x) && !mono(&Point::y)) self_crossing = true;
-        }
-        s.box = box_of(s);
-        // A line straight back along the previous one (a spike, A to B to A) adds nothing to any
-        // pixel's integral and no area anywhere: both are left out.
-        if (is_spike(contour, s)) {
-            contour.pop_back();
-            return;
-        }
-        contour.push_back(s);
-    };
-    auto end_contour = [&]() {
-        if (!contour.empty() && !(cur == start)) push({cur, start}, false, 1);
-        add_contour(contour);
-    };
-    struct Visitor {
-        decltype(push)& push_;
-        decltype(end_contour)& end_;
-        Point& start_;
-        Point& cur_;
-        void move(Point p) {
-            end_();
-            start_ = cur_ = p;
-        }
-        void line(Point a, Point b) {
-            push_({a, b}, false, 1);
-            cur_ = b;
-        }
-        void quad(Point a, Point c, Point b) {
-            push_({a, c, b}, false, 1);
-            cur_ = b;
-        }
-        void cubic(Point a, Point c1, Point c2, Point b) {
-            push_({a, c1, c2, b}, false, 1);
-            cur_ = b;
-        }
-        void conic(Point a, Point c, Point b, double w) {
-            push_({a, c, b}, true, w);
-            cur_ = b;
-        }
-        void close(Point last, Point first) {
-            if (!(last == first)) push_({last, first}, false, 1);
-            cur_ = start_ = first;
-            add_contour_now();
-        }
-        void add_contour_now() { end_(); }
-    };
-    Visitor v{push, end_contour, start, cur};
-    path.visit(v);
-    end_contour();
+    Collector collect(*this);
+    path.visit(collect);
+    collect.end();
     contour_at_.push_back(segs_.size());
-    const std::size_t ncontours = contour_at_.size() - 1;
-    if (self_crossing || out_of_range) return Topology::Overlapping;
+    if (collect.self_crossing || collect.out_of_range) return Topology::Overlapping;
     if (segs_.empty()) return Topology::Simple;
     budget_ = 200 * static_cast<long>(segs_.size()) + 20000;
+    if (!pairs_apart(cb) || !touches_uncross()) return Topology::Overlapping;
+    return windings_in_range() ? Topology::Simple : Topology::Overlapping;
+}
 
-    // 1. Pairs of segments with overlapping boxes, found on a uniform grid of about one cell per
-    // segment over the path's bounds: each segment is listed in the cells its box covers, and a
-    // pair is tested in one cell only (the corner cell of the two boxes' overlap), so segments far
-    // apart cost nothing and a pair is never tested twice.
-    // Pairs are decided on the segments' whole hulls, without splitting: the flattener's chords may
-    // span any part of a segment, and they stay inside its whole hull, so only a separation of whole
-    // hulls also holds for the flattened polygon at any tolerance.
-    constexpr int kDepth = 0;
+// 1. Pairs of segments with overlapping boxes, found on a uniform grid of about one cell per
+// segment over the path's bounds `cb`: each segment is listed in the cells its box covers, and a
+// pair is tested in one cell only (the corner cell of the two boxes' overlap), so segments far
+// apart cost nothing and a pair is never tested twice.
+// Pairs are decided on the segments' whole hulls, without splitting: the flattener's chords may
+// span any part of a segment, and they stay inside its whole hull, so only a separation of whole
+// hulls also holds for the flattened polygon at any tolerance.
+bool Classifier::pairs_apart(const Rect& cb) {
     const std::size_t n = segs_.size();
     const int grid = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(n))), 1, 1024);
     const double gx = grid / std::max(cb.width() + 2 * delta_, delta_),
@@ -825,62 +835,61 @@ Topology Classifier::run(const Path& path, double lambda) {
             for (int x = span[i].x0; x <= span[i].x1; ++x) ++cstart[static_cast<std::size_t>(y) * grid + x + 1];
     }
     for (std::size_t c = 1; c < cstart.size(); ++c) cstart[c] += cstart[c - 1];
-    if (cstart.back() > 64 * n + 100000) return Topology::Overlapping;  // long segments everywhere: not worth it
+    if (cstart.back() > 64 * n + 100000) return false;  // long segments everywhere: not worth it
     std::vector<std::uint32_t>& members = members_;
     members.resize(cstart.back());
-    {
-        std::vector<std::uint32_t>& fill = fill_;
-        fill.assign(cstart.begin(), cstart.end() - 1);
-        for (std::uint32_t i = 0; i < n; ++i)
-            for (int y = span[i].y0; y <= span[i].y1; ++y)
-                for (int x = span[i].x0; x <= span[i].x1; ++x)
-                    members[fill[static_cast<std::size_t>(y) * grid + x]++] = i;
-    }
-    relaxed_.assign(ncontours, 0);
+    std::vector<std::uint32_t>& fill = fill_;
+    fill.assign(cstart.begin(), cstart.end() - 1);
+    for (std::uint32_t i = 0; i < n; ++i)
+        for (int y = span[i].y0; y <= span[i].y1; ++y)
+            for (int x = span[i].x0; x <= span[i].x1; ++x) members[fill[static_cast<std::size_t>(y) * grid + x]++] = i;
+    relaxed_.assign(contour_at_.size() - 1, 0);
     long box_tests = 0;
     for (int cy = 0; cy < grid; ++cy)
         for (int cx = 0; cx < grid; ++cx) {
             const std::size_t c = static_cast<std::size_t>(cy) * grid + cx;
             for (std::uint32_t k = cstart[c]; k < cstart[c + 1]; ++k)
                 for (std::uint32_t l = k + 1; l < cstart[c + 1]; ++l) {
-                    if (++box_tests > 256 * static_cast<long>(n) + 100000) return Topology::Overlapping;
+                    if (++box_tests > 256 * static_cast<long>(n) + 100000) return false;
                     const std::uint32_t i = members[k], j = members[l];
                     if (std::max(span[i].x0, span[j].x0) != cx || std::max(span[i].y0, span[j].y0) != cy) continue;
-                    const Seg& s = segs_[i];
-                    const Seg& t = segs_[j];
-                    if (boxes_apart(s.box, t.box)) continue;
-                    bool ok;
-                    const std::size_t count = contour_at_[static_cast<std::size_t>(s.contour) + 1] -
-                                              contour_at_[static_cast<std::size_t>(s.contour)];
-                    const int last = static_cast<int>(count) - 1;
-                    if (s.contour == t.contour && (t.index == s.index + 1 || (s.index == last && t.index == 0)))
-                        ok = meet_only_at_end(s, t, kDepth);
-                    else if (s.contour == t.contour && (s.index == t.index + 1 || (t.index == last && s.index == 0)))
-                        ok = meet_only_at_end(t, s, kDepth);
-                    else {
-                        ok = disjoint(s, t, kDepth) || touch_at_vertex(s, t);
-                        if (!ok && lambda_ > 0 && s.whole && t.whole) {
-                            Seg a = s, b = t;
-                            as_root(a);
-                            as_root(b);
-                            ok = chords_apart(a, b) ||
-                                 bands_apart(s, t, band(s, lambda_) + band(t, lambda_), kBandDepth);
-                            if (ok && s.contour == t.contour) relaxed_[static_cast<std::size_t>(s.contour)] = 1;
-                        }
-                    }
-                    if (!ok) return Topology::Overlapping;
+                    if (!boxes_apart(segs_[i].box, segs_[j].box) && !pair_apart(segs_[i], segs_[j])) return false;
                 }
         }
+    return true;
+}
 
-    if (!touches_uncross()) return Topology::Overlapping;
+// Whether segments s and t, whose boxes overlap, meet nowhere but at a vertex they may share.
+bool Classifier::pair_apart(const Seg& s, const Seg& t) {
+    constexpr int kDepth = 0;
+    const std::size_t count =
+        contour_at_[static_cast<std::size_t>(s.contour) + 1] - contour_at_[static_cast<std::size_t>(s.contour)];
+    const int last = static_cast<int>(count) - 1;
+    if (s.contour == t.contour && (t.index == s.index + 1 || (s.index == last && t.index == 0)))
+        return meet_only_at_end(s, t, kDepth);
+    if (s.contour == t.contour && (s.index == t.index + 1 || (t.index == last && s.index == 0)))
+        return meet_only_at_end(t, s, kDepth);
+    bool ok = disjoint(s, t, kDepth) || touch_at_vertex(s, t);
+    if (!ok && lambda_ > 0 && s.whole && t.whole) {
+        Seg a = s, b = t;
+        as_root(a);
+        as_root(b);
+        ok = chords_apart(a, b) || bands_apart(s, t, band(s, lambda_) + band(t, lambda_), kBandDepth);
+        if (ok && s.contour == t.contour) relaxed_[static_cast<std::size_t>(s.contour)] = 1;
+    }
+    return ok;
+}
 
-    // 2 and 3. Orientation of each contour and winding numbers of the others along it.
+// 2 and 3. Orientation of each contour and winding numbers of the others along it: the winding
+// numbers must span one unit.
+bool Classifier::windings_in_range() {
+    const std::size_t ncontours = contour_at_.size() - 1;
     std::vector<Rect>& boxes = boxes_;
     boxes.resize(ncontours);
     std::vector<int>& orient = orient_;
     orient.resize(ncontours);
     for (std::size_t c = 0; c < ncontours; ++c) {
-        if (!orientation(c, orient[c], relaxed_[c] ? hull_areas(c) : 0)) return Topology::Overlapping;
+        if (!orientation(c, orient[c], relaxed_[c] ? hull_areas(c) : 0)) return false;
         Rect b = segs_[contour_at_[c]].box;
         for (std::size_t i = contour_at_[c]; i < contour_at_[c + 1]; ++i) {
             const Rect& sb = segs_[i].box;
@@ -892,18 +901,18 @@ Topology Classifier::run(const Path& path, double lambda) {
     for (std::size_t a = 0; a < ncontours; ++a) {
         // The winding numbers are read at a vertex of a; where contours touch, at one clear of the others.
         Point p = segs_[contour_at_[a]].p[0];
-        if ((lambda_ > 0 || !touches_.empty()) && !winding_point(a, boxes, p)) return Topology::Overlapping;
+        if ((lambda_ > 0 || !touches_.empty()) && !winding_point(a, boxes, p)) return false;
         int w = 0;
         for (std::size_t b = 0; b < ncontours; ++b) {
             if (b == a || boxes_apart(boxes[b], Rect{p.x, p.y, p.x, p.y})) continue;
             for (std::size_t i = contour_at_[b]; i < contour_at_[b + 1]; ++i)
-                if (!winding_about(segs_[i], p, 20, w)) return Topology::Overlapping;
+                if (!winding_about(segs_[i], p, 20, w)) return false;
         }
         lo = std::min({lo, w, w + orient[a]});
         hi = std::max({hi, w, w + orient[a]});
-        if (hi - lo > 1) return Topology::Overlapping;
+        if (hi - lo > 1) return false;
     }
-    return Topology::Simple;
+    return true;
 }
 
 }  // namespace
