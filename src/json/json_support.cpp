@@ -13,140 +13,163 @@ bool is_ws(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 }  // namespace
 
-// A validating scan of RFC 8259 JSON with an explicit stack (no recursion), returning the offset of
-// the first byte that cannot continue a valid document.
-std::size_t syntax_error_offset(std::string_view s) {
-    std::size_t i = 0;
-    const std::size_t n = s.size();
-    std::vector<char> stack;  // '{' or '['
-    auto skip_ws = [&] {
-        while (i < n && is_ws(s[i])) ++i;
-    };
-    // Scans one scalar at i; returns false at the offending byte.
-    auto scalar = [&]() -> bool {
-        if (i >= n) return false;
-        const char c = s[i];
-        if (c == '"') {
-            ++i;
-            while (i < n) {
-                const unsigned char ch = static_cast<unsigned char>(s[i]);
-                if (ch == '"') {
-                    ++i;
-                    return true;
-                }
-                if (ch < 0x20) return false;
-                if (ch == '\\') {
-                    ++i;
-                    if (i >= n) return false;
-                    const char e = s[i];
-                    if (e == 'u') {
-                        for (int k = 0; k < 4; ++k) {
-                            ++i;
-                            if (i >= n || !std::isxdigit(static_cast<unsigned char>(s[i]))) return false;
-                        }
-                    } else if (std::string_view("\"\\/bfnrt").find(e) == std::string_view::npos) {
-                        return false;
-                    }
-                }
-                ++i;
-            }
-            return false;
-        }
-        for (std::string_view lit : {std::string_view("true"), std::string_view("false"), std::string_view("null")}) {
-            if (c == lit[0]) {
-                for (char l : lit) {
-                    if (i >= n || s[i] != l) return false;
-                    ++i;
-                }
-                return true;
-            }
-        }
-        if (c == '-' || (c >= '0' && c <= '9')) {
-            if (s[i] == '-') ++i;
-            if (i >= n || !std::isdigit(static_cast<unsigned char>(s[i]))) return false;
-            if (s[i] == '0')
-                ++i;
-            else
-                while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
-            if (i < n && s[i] == '.') {
-                ++i;
-                if (i >= n || !std::isdigit(static_cast<unsigned char>(s[i]))) return false;
-                while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
-            }
-            if (i < n && (s[i] == 'e' || s[i] == 'E')) {
-                ++i;
-                if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
-                if (i >= n || !std::isdigit(static_cast<unsigned char>(s[i]))) return false;
-                while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
-            }
-            return true;
-        }
-        return false;
-    };
-    // An object member's key and colon at i (after '{' or ','): kNoError when both are there,
-    // otherwise where the text goes wrong.
-    constexpr std::size_t kNoError = std::string_view::npos;
-    auto member_key = [&]() -> std::size_t {
-        skip_ws();
-        if (i >= n) return n;
-        if (s[i] != '"' || !scalar()) return i;
-        skip_ws();
-        if (i >= n) return n;
-        if (s[i] != ':') return i;
-        ++i;
-        return kNoError;
-    };
-    // Expecting a value at i.
-    for (;;) {
-        skip_ws();
-        if (i >= n) return n;
-        bool value_done = false;
-        if (s[i] == '{') {
-            stack.push_back('{');
-            ++i;
+namespace {
+
+// A validating scan of RFC 8259 JSON with an explicit stack (no recursion). Each step returns
+// whether the text can go on; `i` is then the offending byte.
+class SyntaxScan {
+public:
+    explicit SyntaxScan(std::string_view s) : s_(s), n_(s.size()) {}
+
+    // The offset of the first byte that cannot continue a valid document (npos: none).
+    std::size_t run() {
+        for (;;) {  // expecting a value at i_
             skip_ws();
-            if (i < n && s[i] == '}') {
-                ++i;
-                stack.pop_back();
-                value_done = true;
+            if (i_ >= n_) return n_;
+            bool value_done = false;
+            if (s_[i_] == '{' || s_[i_] == '[') {
+                if (const std::size_t bad = open_container(value_done); bad != kNoError) return bad;
             } else {
-                if (const std::size_t bad = member_key(); bad != kNoError) return bad;
-                continue;
-            }
-        } else if (s[i] == '[') {
-            stack.push_back('[');
-            ++i;
-            skip_ws();
-            if (i < n && s[i] == ']') {
-                ++i;
-                stack.pop_back();
+                if (!scalar()) return i_ >= n_ ? n_ : i_;
                 value_done = true;
-            } else
-                continue;
-        } else {
-            if (!scalar()) return i >= n ? n : i;
-            value_done = true;
-        }
-        // After a value: close containers or move to the next element.
-        while (value_done) {
-            skip_ws();
-            if (stack.empty()) return i < n ? i : std::string_view::npos;  // trailing content, or valid
-            if (i >= n) return n;
-            const char top = stack.back();
-            if (s[i] == ',') {
-                ++i;
-                if (top == '{')
-                    if (const std::size_t bad = member_key(); bad != kNoError) return bad;
-                value_done = false;
-            } else if ((top == '{' && s[i] == '}') || (top == '[' && s[i] == ']')) {
-                ++i;
-                stack.pop_back();
-            } else {
-                return i;
             }
+            if (value_done)
+                if (const std::size_t bad = after_value(); bad != kGoOn) return bad;
         }
     }
-}
+
+private:
+    static constexpr std::size_t kNoError = std::string_view::npos;
+    static constexpr std::size_t kGoOn = std::string_view::npos - 1;  // a value is expected next
+
+    void skip_ws() {
+        while (i_ < n_ && is_ws(s_[i_])) ++i_;
+    }
+    bool digit() const { return i_ < n_ && std::isdigit(static_cast<unsigned char>(s_[i_])); }
+
+    bool string() {
+        ++i_;
+        while (i_ < n_) {
+            const unsigned char ch = static_cast<unsigned char>(s_[i_]);
+            if (ch == '"') {
+                ++i_;
+                return true;
+            }
+            if (ch < 0x20) return false;
+            if (ch == '\\') {
+                ++i_;
+                if (i_ >= n_) return false;
+                const char e = s_[i_];
+                if (e == 'u') {
+                    for (int k = 0; k < 4; ++k) {
+                        ++i_;
+                        if (i_ >= n_ || !std::isxdigit(static_cast<unsigned char>(s_[i_]))) return false;
+                    }
+                } else if (std::string_view("\"\\/bfnrt").find(e) == std::string_view::npos) {
+                    return false;
+                }
+            }
+            ++i_;
+        }
+        return false;
+    }
+
+    bool literal(std::string_view lit) {
+        for (char l : lit) {
+            if (i_ >= n_ || s_[i_] != l) return false;
+            ++i_;
+        }
+        return true;
+    }
+
+    bool number() {
+        if (s_[i_] == '-') ++i_;
+        if (!digit()) return false;
+        if (s_[i_] == '0')
+            ++i_;
+        else
+            while (digit()) ++i_;
+        if (i_ < n_ && s_[i_] == '.') {
+            ++i_;
+            if (!digit()) return false;
+            while (digit()) ++i_;
+        }
+        if (i_ < n_ && (s_[i_] == 'e' || s_[i_] == 'E')) {
+            ++i_;
+            if (i_ < n_ && (s_[i_] == '+' || s_[i_] == '-')) ++i_;
+            if (!digit()) return false;
+            while (digit()) ++i_;
+        }
+        return true;
+    }
+
+    // One scalar at i.
+    bool scalar() {
+        if (i_ >= n_) return false;
+        const char c = s_[i_];
+        if (c == '"') return string();
+        for (std::string_view lit : {std::string_view("true"), std::string_view("false"), std::string_view("null")})
+            if (c == lit[0]) return literal(lit);
+        if (c == '-' || (c >= '0' && c <= '9')) return number();
+        return false;
+    }
+
+    // An object member's key and colon at i (after '{' or ','): kNoError when both are there,
+    // otherwise where the text goes wrong.
+    std::size_t member_key() {
+        skip_ws();
+        if (i_ >= n_) return n_;
+        if (s_[i_] != '"' || !scalar()) return i_;
+        skip_ws();
+        if (i_ >= n_) return n_;
+        if (s_[i_] != ':') return i_;
+        ++i_;
+        return kNoError;
+    }
+
+    // '{' or '[' at i: an empty container is a whole value (value_done); else its first member's
+    // key or first element comes next.
+    std::size_t open_container(bool& value_done) {
+        const char open = s_[i_];
+        stack_.push_back(open);
+        ++i_;
+        skip_ws();
+        if (i_ < n_ && s_[i_] == (open == '{' ? '}' : ']')) {
+            ++i_;
+            stack_.pop_back();
+            value_done = true;
+            return kNoError;
+        }
+        return open == '{' ? member_key() : kNoError;
+    }
+
+    // After a value: closes containers or moves to the next element (kGoOn: a value comes next).
+    std::size_t after_value() {
+        for (;;) {
+            skip_ws();
+            if (stack_.empty()) return i_ < n_ ? i_ : kNoError;  // trailing content, or valid
+            if (i_ >= n_) return n_;
+            const char top = stack_.back();
+            if (s_[i_] == ',') {
+                ++i_;
+                if (top == '{')
+                    if (const std::size_t bad = member_key(); bad != kNoError) return bad;
+                return kGoOn;
+            }
+            if (!((top == '{' && s_[i_] == '}') || (top == '[' && s_[i_] == ']'))) return i_;
+            ++i_;
+            stack_.pop_back();
+        }
+    }
+
+    std::string_view s_;
+    std::size_t n_, i_ = 0;
+    std::vector<char> stack_;  // '{' or '['
+};
+
+}  // namespace
+
+std::size_t syntax_error_offset(std::string_view s) { return SyntaxScan(s).run(); }
 
 namespace {
 
