@@ -172,6 +172,7 @@ private:
         int x0, y0, x1, y1;
     };
     std::vector<Seg> contour_, halves_;
+    bool unproven_ = false;  // a contour the proof cannot take (add_contour)
     std::vector<Cells> span_;
     std::vector<std::uint32_t> cstart_, members_, fill_;
     std::vector<Rect> boxes_;
@@ -677,10 +678,21 @@ void Classifier::add_contour(std::vector<Seg>& c) {
     }
     c.erase(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(first));
     if (c.empty()) return;
-    // At least three segments, so that consecutive segments share exactly one end point.
+    // At least three segments, so that consecutive segments share exactly one end point. Lines
+    // are halved for that, never curves: the flattener's chords span a whole curve, and its
+    // area-balanced vertices lie off the curve, outside the hulls of the curve's halves. A
+    // contour of curves alone is not proven.
     while (c.size() < 3) {
+        if (std::none_of(c.begin(), c.end(), [](const Seg& s) { return s.n == 2; })) {
+            unproven_ = true;
+            break;
+        }
         halves_.clear();
         for (const Seg& s : c) {
+            if (s.n != 2) {
+                halves_.push_back(s);
+                continue;
+            }
             Seg a, b;
             split(s, a, b);
             a.whole = b.whole = false;
@@ -787,6 +799,7 @@ Topology Classifier::run(const Path& path, double lambda) {
     contour_at_.clear();
     contour_.clear();
     touches_.clear();
+    unproven_ = false;
     if (!path.is_finite()) return Topology::Overlapping;
     const Rect cb = path.control_bounds();
     if (!(cb.x1 >= cb.x0)) return Topology::Simple;  // no points
@@ -803,7 +816,7 @@ Topology Classifier::run(const Path& path, double lambda) {
     path.visit(collect);
     collect.end();
     contour_at_.push_back(segs_.size());
-    if (collect.self_crossing || collect.out_of_range) return Topology::Overlapping;
+    if (collect.self_crossing || collect.out_of_range || unproven_) return Topology::Overlapping;
     if (segs_.empty()) return Topology::Simple;
     budget_ = 200 * static_cast<long>(segs_.size()) + 20000;
     if (!pairs_apart(cb) || !touches_uncross()) return Topology::Overlapping;
