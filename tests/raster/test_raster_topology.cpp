@@ -632,10 +632,10 @@ TEST_CASE("topology: the rasterizer classifies a path under a similarity map wit
 
 TEST_CASE("regression: a two-segment contour's curve is not halved for the proof", "[raster][topology]") {
     // Two copies of a contour of one quadratic and its closing line, 0.328 px apart: the curves
-    // keep clear of each other by 0.016 px, but at a coarse tolerance the area-balanced polygon's
-    // vertex (off the curve, towards the control point) reaches into the other copy. Halving the
-    // curve to give the contour three segments made each half's hull look apart, though the
-    // flattener's chords span the whole curve (fuzz_raster_diff found it: 152 against 150 at 0.5 px).
+    // keep clear of each other by 0.016 px, but at 0.5 px the area-balanced polygon's vertex (off
+    // the curve, towards the control point) reaches into the other copy. Halving the curve to give
+    // the contour three segments would make each half's hull look apart, though the flattener's
+    // chords and vertices span the whole curve (plain accumulation 152 against the exact 150).
     Path p;
     for (double dy : {0.0, 0.328125}) {
         p.move_to({21.15625, 23.046875 + dy});
