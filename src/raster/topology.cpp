@@ -172,7 +172,6 @@ private:
         int x0, y0, x1, y1;
     };
     std::vector<Seg> contour_, halves_;
-    bool unproven_ = false;  // a contour the proof cannot take (add_contour)
     std::vector<Cells> span_;
     std::vector<std::uint32_t> cstart_, members_, fill_;
     std::vector<Rect> boxes_;
@@ -182,7 +181,8 @@ private:
     std::vector<char> relaxed_;  // per contour: a pair inside it was decided by chords
     long budget_ = 0;            // hull tests left
 
-    void add_contour(std::vector<Seg>& c);
+    // Adds contour c (emptied); false for a contour the proof cannot take.
+    bool add_contour(std::vector<Seg>& c);
     bool boxes_apart(const Rect& a, const Rect& b) const {
         return a.x1 + delta_ < b.x0 || b.x1 + delta_ < a.x0 || a.y1 + delta_ < b.y0 || b.y1 + delta_ < a.y0;
     }
@@ -669,7 +669,7 @@ bool Classifier::orientation(std::size_t c, int& o, double slack) const {
     return true;
 }
 
-void Classifier::add_contour(std::vector<Seg>& c) {
+bool Classifier::add_contour(std::vector<Seg>& c) {
     // Spikes across the contour's start (its last line returning along its first).
     std::size_t first = 0;
     while (c.size() - first >= 2 && is_spike_pair(c.back(), c[first])) {
@@ -677,15 +677,15 @@ void Classifier::add_contour(std::vector<Seg>& c) {
         ++first;
     }
     c.erase(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(first));
-    if (c.empty()) return;
+    if (c.empty()) return true;
     // At least three segments, so that consecutive segments share exactly one end point. Lines
     // are halved for that, never curves: the flattener's chords span a whole curve, and its
     // area-balanced vertices lie off the curve, outside the hulls of the curve's halves. A
     // contour of curves alone is not proven.
     while (c.size() < 3) {
         if (std::none_of(c.begin(), c.end(), [](const Seg& s) { return s.n == 2; })) {
-            unproven_ = true;
-            break;
+            c.clear();
+            return false;
         }
         halves_.clear();
         for (const Seg& s : c) {
@@ -709,17 +709,20 @@ void Classifier::add_contour(std::vector<Seg>& c) {
     }
     contour_at_.push_back(segs_.size() - c.size());
     c.clear();
+    return true;
 }
 
 // Segments per contour (each contour closed by a line when it does not end at its start), without
 // segments whose control points all coincide (they draw nothing) and without spikes. Notes a cubic
-// not proven free of loops (self_crossing) and a conic weight outside [2^-500, 2^500], where no
-// proof is attempted (splitting such a conic would overflow; control points are finite here).
+// not proven free of loops (self_crossing), a conic weight outside [2^-500, 2^500], where no proof
+// is attempted (splitting such a conic would overflow; control points are finite here), and a
+// contour add_contour cannot take (unproven).
 class Classifier::Collector {
 public:
     explicit Collector(Classifier& c) : c_(c) {}
     bool self_crossing = false;
     bool out_of_range = false;
+    bool unproven = false;  // a contour add_contour could not take
 
     void move(Point p) {
         end();
@@ -749,7 +752,7 @@ public:
     // Closes and adds the current contour.
     void end() {
         if (!c_.contour_.empty() && !(cur_ == start_)) push({cur_, start_}, false, 1);
-        c_.add_contour(c_.contour_);
+        if (!c_.add_contour(c_.contour_)) unproven = true;
     }
 
 private:
@@ -799,7 +802,6 @@ Topology Classifier::run(const Path& path, double lambda) {
     contour_at_.clear();
     contour_.clear();
     touches_.clear();
-    unproven_ = false;
     if (!path.is_finite()) return Topology::Overlapping;
     const Rect cb = path.control_bounds();
     if (!(cb.x1 >= cb.x0)) return Topology::Simple;  // no points
@@ -816,7 +818,7 @@ Topology Classifier::run(const Path& path, double lambda) {
     path.visit(collect);
     collect.end();
     contour_at_.push_back(segs_.size());
-    if (collect.self_crossing || collect.out_of_range || unproven_) return Topology::Overlapping;
+    if (collect.self_crossing || collect.out_of_range || collect.unproven) return Topology::Overlapping;
     if (segs_.empty()) return Topology::Simple;
     budget_ = 200 * static_cast<long>(segs_.size()) + 20000;
     if (!pairs_apart(cb) || !touches_uncross()) return Topology::Overlapping;
