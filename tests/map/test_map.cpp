@@ -745,17 +745,10 @@ TEST_CASE("Map strokes: a stroke drawn with its layer's fill equals the same str
             one.layers[0].fill = fill;
             if (with_stroke) one.layers[0].stroke = ink;
             one.layers[0].stroke_width = 1.3;
-            MapStyle two = one;
-            two.layers[0].stroke.reset();
-            two.layers[0].stroke_width = 0;
-            MapLayerStyle strokes;
-            strokes.fill.reset();
-            strokes.stroke = with_stroke ? ink : fill;
-            strokes.stroke_width = 1.3;
+            MapStyle two = test::stroke_in_own_layer(one, with_stroke ? ink : fill);
             if (!with_stroke)
-                strokes.filter =
+                two.layers.back().filter =
                     read_map_style(R"({"layers":[{"filter":{"property":"k","==":"line"}}]})").layers.at(0).filter;
-            two.layers.push_back(strokes);
             const Pixmap a = render_map(d, MapProjection{}, one, o), b = render_map(d, MapProjection{}, two, o);
             int differ = 0, inked = 0;
             for (int y = 0; y < a.height(); ++y)

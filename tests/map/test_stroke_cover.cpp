@@ -10,6 +10,7 @@
 
 #include "casteljau/map.hpp"
 #include "map/stroke_cover.hpp"
+#include "map_test_util.hpp"
 
 using namespace casteljau;
 
@@ -61,14 +62,7 @@ TEST_CASE("Map strokes: an opaque stroke over its fill gives the pixels of the s
     one.layers[0].stroke = Color::rgba(20, 30, 90, 255);
     one.layers[0].stroke_width = 0.4;
     // The same stroke in a layer of its own is swept after the fills, which then hide nothing.
-    MapStyle two = one;
-    two.layers[0].stroke.reset();
-    two.layers[0].stroke_width = 0;
-    MapLayerStyle strokes;
-    strokes.fill.reset();
-    strokes.stroke = one.layers[0].stroke;
-    strokes.stroke_width = one.layers[0].stroke_width;
-    two.layers.push_back(strokes);
+    const MapStyle two = test::stroke_in_own_layer(one, *one.layers[0].stroke);
     for (int threads : {1, 2}) {
         INFO(threads << " threads");
         o.threads = threads;

@@ -3,22 +3,15 @@
 #include <catch2/catch.hpp>
 
 #include "casteljau/raster.hpp"
+#include "raster_check.hpp"
 
 using namespace casteljau;
+using casteljau::testing::overlapping_squares;
+using casteljau::testing::render;
 
 namespace {
 
-// Three squares overlapping each other: where two or three are stacked, plain accumulation of
-// their sides is wrong (it adds the stacked windings inside the side pixels).
-Path stacked() {
-    Path p;
-    p.add_rect(Rect{0.3, 0.3, 30.3, 30.3});
-    p.add_rect(Rect{20.6, 20.6, 50.6, 50.6});
-    p.add_rect(Rect{10.2, 10.2, 40.7, 40.7});
-    return p;
-}
-
-// Collects rows into a w x h image from (0, 0).
+// Collects replayed rows into a w x h image from (0, 0).
 class Image final : public SpanSink {
 public:
     Image(int w, int h) : w_(w), px_(static_cast<std::size_t>(w * h), 0) {}
@@ -36,22 +29,21 @@ private:
 
 TEST_CASE("FillOptions::hidden: hidden pixels are accumulated, the others exact", "[raster][hidden]") {
     Rasterizer r;
-    const Path p = stacked();
+    const Path p = overlapping_squares();
     const IRect clip{0, 0, 52, 52};
-    Image exact(52, 52), plain(52, 52), half(52, 52);
-    r.fill(p, Affine{}, FillOptions{}, clip, exact);
-    const std::size_t exact_cells = r.last_stats().exact_cells;
+    const testing::Rendered exact = render(r, p, Affine{}, FillOptions{}, clip);
+    const std::size_t exact_cells = exact.stats.exact_cells;
     REQUIRE(exact_cells > 0);
     FillOptions off;
     off.exact_overlaps = false;
-    r.fill(p, Affine{}, off, clip, plain);
+    const testing::Rendered plain = render(r, p, Affine{}, off, clip);
     // The left half hidden.
     PixelSet left(IRect{0, 0, 52, 52});
     for (int y = 0; y < 52; ++y) left.insert(y, 0, 26);
     FillOptions fo;
     fo.hidden = &left;
-    r.fill(p, Affine{}, fo, clip, half);
-    const RasterStats s = r.last_stats();
+    const testing::Rendered half = render(r, p, Affine{}, fo, clip);
+    const RasterStats& s = half.stats;
     CHECK(s.hidden_cells > 0);
     CHECK(s.exact_cells > 0);
     CHECK(s.exact_cells < exact_cells);
@@ -67,14 +59,13 @@ TEST_CASE("FillOptions::hidden: hidden pixels are accumulated, the others exact"
     // Every pixel hidden: no exact cell, the accumulated pixels; a set elsewhere changes nothing.
     PixelSet all(IRect{0, 0, 52, 52}), far(IRect{100, 100, 200, 200});
     for (int y = 0; y < 52; ++y) all.insert(y, -5, 60);
-    Image every(52, 52), none(52, 52);
     fo.hidden = &all;
-    r.fill(p, Affine{}, fo, clip, every);
-    CHECK(r.last_stats().exact_cells == 0);
+    const testing::Rendered every = render(r, p, Affine{}, fo, clip);
+    CHECK(every.stats.exact_cells == 0);
     fo.hidden = &far;
-    r.fill(p, Affine{}, fo, clip, none);
-    CHECK(r.last_stats().hidden_cells == 0);
-    CHECK(r.last_stats().exact_cells == exact_cells);
+    const testing::Rendered none = render(r, p, Affine{}, fo, clip);
+    CHECK(none.stats.hidden_cells == 0);
+    CHECK(none.stats.exact_cells == exact_cells);
     for (int y = 0; y < 52; ++y)
         for (int x = 0; x < 52; ++x) {
             CHECK(every.at(x, y) == plain.at(x, y));
@@ -91,14 +82,13 @@ TEST_CASE("FillOptions::hidden: a shape swept in strips finds its hidden pixels 
     const IRect clip{0, 0, 701, 701};
     FillOptions fo;
     fo.topology = Topology::Overlapping;
-    Image exact(701, 701), half(701, 701);
-    r.fill(p, Affine{}, fo, clip, exact);
-    REQUIRE(r.last_stats().strips > 1);
+    const testing::Rendered exact = render(r, p, Affine{}, fo, clip);
+    REQUIRE(exact.stats.strips > 1);
     PixelSet top(IRect{0, 0, 701, 701});
     for (int y = 0; y < 350; ++y) top.insert(y, 0, 701);
     fo.hidden = &top;
-    r.fill(p, Affine{}, fo, clip, half);
-    CHECK(r.last_stats().hidden_cells > 0);
+    const testing::Rendered half = render(r, p, Affine{}, fo, clip);
+    CHECK(half.stats.hidden_cells > 0);
     // The stacked side at x = 0.3 doubles under accumulation: 0.7 x 2, clamped to full.
     CHECK(exact.at(0, 400) == 179);
     CHECK(half.at(0, 400) == 179);
@@ -130,13 +120,13 @@ TEST_CASE("PixelSet: runs across words, clipped to the bounds", "[raster][hidden
 
 TEST_CASE("CoverageRows: replays what it recorded, in order", "[raster][hidden]") {
     Rasterizer r;
-    const Path p = stacked();
+    const Path p = overlapping_squares();
     const IRect clip{0, 0, 52, 52};
     CoverageRows rows;
     r.fill(p, Affine{}, FillOptions{}, clip, rows);
     REQUIRE_FALSE(rows.empty());
-    Image direct(52, 52), replayed(52, 52), twice(52, 52);
-    r.fill(p, Affine{}, FillOptions{}, clip, direct);
+    const testing::Rendered direct = render(r, p, Affine{}, FillOptions{}, clip);
+    Image replayed(52, 52), twice(52, 52);
     rows.replay(replayed);
     rows.replay(twice);
     int inked = 0;

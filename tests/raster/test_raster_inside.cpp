@@ -3,26 +3,15 @@
 #include <catch2/catch.hpp>
 
 #include "casteljau/raster.hpp"
+#include "raster_check.hpp"
 
 using namespace casteljau;
 
-namespace {
-
-// Two squares overlapping in [20, 30] x [20, 30] (nonzero: their union), and a third contour
-// crossing both so that the overlap check has cells to recompute.
-Path stacked() {
-    Path p;
-    p.add_rect(Rect{0.3, 0.3, 30.3, 30.3});
-    p.add_rect(Rect{20.6, 20.6, 50.6, 50.6});
-    p.add_rect(Rect{10.2, 10.2, 40.7, 40.7});
-    return p;
-}
-
-}  // namespace
+using casteljau::testing::overlapping_squares;
 
 TEST_CASE("FillOptions::inside: cells inside a true capsule are full, pixels unchanged", "[raster][inside]") {
     Rasterizer r;
-    const Path p = stacked();
+    const Path p = overlapping_squares();
     const Mask plain = r.fill_mask(p, Affine{}, FillOptions{});
     const std::size_t exact = r.last_stats().exact_cells;
     REQUIRE(exact > 0);

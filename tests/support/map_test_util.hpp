@@ -9,9 +9,25 @@
 
 #include "casteljau/geojson.hpp"
 #include "casteljau/file_io.hpp"
+#include "casteljau/map.hpp"
 #include "reference_area.hpp"
 
 namespace casteljau::test {
+
+// `one` with its first layer's stroke moved to a layer of its own after it, in `colour` at the
+// same width: render_map then strokes apart from the fills (no segments gathered by the fill's
+// visitors, nothing swept before the fills), and the pixels must be the same.
+inline MapStyle stroke_in_own_layer(const MapStyle& one, Color colour) {
+    MapStyle two = one;
+    two.layers[0].stroke.reset();
+    two.layers[0].stroke_width = 0;
+    MapLayerStyle strokes;
+    strokes.fill.reset();
+    strokes.stroke = colour;
+    strokes.stroke_width = one.layers[0].stroke_width;
+    two.layers.push_back(strokes);
+    return two;
+}
 
 // Equirectangular frame of the bbox -180,-90,180,90 onto W x H pixels.
 struct EquirectFrame {

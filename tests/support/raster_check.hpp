@@ -71,5 +71,14 @@ ref::Contour reversed(ref::Contour c);
 inline ref::Contour rect(double x0, double y0, double x1, double y1) {
     return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
+// Three squares in one path overlapping each other ([20.6, 30.3] x [20.6, 30.3] is in all three): the
+// overlap check has cells to recompute, where plain accumulation adds the stacked windings.
+inline Path overlapping_squares() {
+    Path p;
+    p.add_rect(Rect{0.3, 0.3, 30.3, 30.3});
+    p.add_rect(Rect{20.6, 20.6, 50.6, 50.6});
+    p.add_rect(Rect{10.2, 10.2, 40.7, 40.7});
+    return p;
+}
 
 }  // namespace casteljau::testing
