@@ -38,6 +38,99 @@ Affine about(double cx, double cy, const Affine& m) {
     return Affine::translate(cx, cy) * m * Affine::translate(-cx, -cy);
 }
 
+// Reads the fields of the paint at `at` after its format byte. Offsets are relative to the paint;
+// a field out of bounds, or a child offset that is 0 or leaves the table, clears c.ok.
+struct PaintReader {
+    const std::vector<std::uint8_t>& d;
+    std::size_t at;
+    Cursor c;
+    bool variable = false;  // a variable form: its defaults are read, its VarIndexBase skipped
+
+    // A child paint: a 24-bit offset, stored as a table offset in `slot`.
+    void child(std::size_t& slot) {
+        const std::uint32_t off = c.u24();
+        if (off == 0 || at + off >= d.size()) c.ok = false;
+        slot = at + off;
+    }
+
+    Point point() {
+        const double x = c.i16(), y = c.i16();
+        return {x, y};
+    }
+
+    // The ColorLine at a 24-bit offset: its extend mode and stops.
+    void color_line(ColrColorLine& line) {
+        const std::uint32_t off = c.u24();
+        if (off == 0) c.ok = false;
+        Cursor l{d, at + off};
+        line.extend = l.u8();
+        const std::uint16_t count = l.u16();
+        const std::size_t size = variable ? 10 : 6;  // VarColorStop adds a VarIndexBase
+        if (!l.ok || count * size > d.size() - l.at) c.ok = false;
+        for (std::uint16_t i = 0; i < count && l.ok && c.ok; ++i) {
+            ColrStop s;
+            s.offset = l.f2dot14();
+            s.palette_index = l.u16();
+            s.alpha = l.f2dot14();
+            if (variable) l.u32();
+            line.stops.push_back(s);
+        }
+        if (line.extend > 2) line.extend = 0;
+    }
+
+    // Formats 4 to 9: linear, radial and sweep gradients.
+    void gradient(std::uint8_t format, ColrPaint& out) {
+        color_line(out.line);
+        out.p0 = point();
+        if (format <= 5) {
+            out.kind = ColrPaint::Kind::Linear;
+            out.p1 = point();
+            out.p2 = point();
+        } else if (format <= 7) {
+            out.kind = ColrPaint::Kind::Radial;
+            out.r0 = c.u16();
+            out.p1 = point();
+            out.r1 = c.u16();
+        } else {
+            out.kind = ColrPaint::Kind::Sweep;
+            // Half turns with a bias of one half turn, so that 360 degrees can be written.
+            out.start_angle = (c.f2dot14() + 1) * 180;
+            out.end_angle = (c.f2dot14() + 1) * 180;
+        }
+    }
+
+    // Formats 12 to 31, after the child offset: the transform from child to parent space.
+    Affine transform(std::uint8_t format) {
+        if (format <= 13) {  // an Affine2x3 table at a 24-bit offset
+            const std::uint32_t off = c.u24();
+            Cursor m{d, at + off};
+            const double xx = m.fixed(), yx = m.fixed(), xy = m.fixed(), yy = m.fixed(), dx = m.fixed(), dy = m.fixed();
+            if (!m.ok || off == 0) c.ok = false;
+            return Affine{xx, yx, xy, yy, dx, dy};
+        }
+        if (format <= 15) {
+            const double dx = c.i16(), dy = c.i16();
+            return Affine::translate(dx, dy);
+        }
+        Affine m;
+        bool centred;
+        if (format <= 23) {  // scale: per axis (16 to 19) or uniform (20 to 23)
+            const double sx = c.f2dot14(), sy = format >= 20 ? sx : c.f2dot14();
+            m = Affine::scale(sx, sy);
+            centred = format == 18 || format == 19 || format == 22 || format == 23;
+        } else if (format <= 27) {
+            m = Affine::rotate(c.f2dot14() * kPi);  // counter-clockwise, half turns per unit
+            centred = format >= 26;
+        } else {
+            const double ax = c.f2dot14() * kPi, ay = c.f2dot14() * kPi;
+            m = Affine{1, std::tan(ay), -std::tan(ax), 1, 0, 0};
+            centred = format >= 30;
+        }
+        const double cx = centred ? c.i16() : 0, cy = centred ? c.i16() : 0;
+        return about(cx, cy, m);
+    }
+};
+
 }  // namespace
 
 ColrTable::ColrTable(std::vector<std::uint8_t> bytes) : data_(std::move(bytes)) {
@@ -107,147 +200,38 @@ std::optional<Rect> ColrTable::clip_box(std::uint32_t glyph) const {
 
 bool ColrTable::paint(std::size_t at, ColrPaint& out) const {
     out = ColrPaint{};
-    Cursor c{data_, at};
-    const std::uint8_t format = c.u8();
-    const bool var = format >= 3 && format <= 31 && format % 2 == 1;  // variable forms: defaults only
-    auto child = [&](std::size_t& slot) {
-        const std::uint32_t off = c.u24();
-        if (off == 0 || at + off >= data_.size()) c.ok = false;
-        slot = at + off;
-    };
-    auto color_line = [&](ColrColorLine& line) {
-        const std::uint32_t off = c.u24();
-        if (off == 0) c.ok = false;
-        Cursor l{data_, at + off};
-        line.extend = l.u8();
-        const std::uint16_t count = l.u16();
-        const std::size_t size = var ? 10 : 6;  // VarColorStop adds a VarIndexBase
-        if (!l.ok || count * size > data_.size() - l.at) c.ok = false;
-        for (std::uint16_t i = 0; i < count && l.ok && c.ok; ++i) {
-            ColrStop s;
-            s.offset = l.f2dot14();
-            s.palette_index = l.u16();
-            s.alpha = l.f2dot14();
-            if (var) l.u32();
-            line.stops.push_back(s);
-        }
-        if (line.extend > 2) line.extend = 0;
-    };
-    auto point = [&] { return Point{static_cast<double>(c.i16()), static_cast<double>(c.i16())}; };
-    switch (format) {
-        case 1:
-            out.kind = ColrPaint::Kind::Layers;
-            out.layer_count = c.u8();
-            out.first_layer = c.u32();
-            break;
-        case 2:
-        case 3:
-            out.kind = ColrPaint::Kind::Solid;
-            out.palette_index = c.u16();
-            out.alpha = c.f2dot14();
-            break;
-        case 4:
-        case 5:
-            out.kind = ColrPaint::Kind::Linear;
-            color_line(out.line);
-            out.p0 = point();
-            out.p1 = point();
-            out.p2 = point();
-            break;
-        case 6:
-        case 7:
-            out.kind = ColrPaint::Kind::Radial;
-            color_line(out.line);
-            out.p0 = point();
-            out.r0 = c.u16();
-            out.p1 = point();
-            out.r1 = c.u16();
-            break;
-        case 8:
-        case 9:
-            out.kind = ColrPaint::Kind::Sweep;
-            color_line(out.line);
-            out.p0 = point();
-            // Half turns with a bias of one half turn, so that 360 degrees can be written.
-            out.start_angle = (c.f2dot14() + 1) * 180;
-            out.end_angle = (c.f2dot14() + 1) * 180;
-            break;
-        case 10:
-            out.kind = ColrPaint::Kind::Glyph;
-            child(out.child);
-            out.glyph = c.u16();
-            break;
-        case 11:
-            out.kind = ColrPaint::Kind::ColrGlyph;
-            out.glyph = c.u16();
-            break;
-        case 12:
-        case 13: {
-            out.kind = ColrPaint::Kind::Transform;
-            child(out.child);
-            const std::uint32_t off = c.u24();
-            Cursor m{data_, at + off};
-            const double xx = m.fixed(), yx = m.fixed(), xy = m.fixed(), yy = m.fixed(), dx = m.fixed(), dy = m.fixed();
-            if (!m.ok || off == 0) c.ok = false;
-            out.transform = Affine{xx, yx, xy, yy, dx, dy};
-            break;
-        }
-        case 14:
-        case 15: {
-            out.kind = ColrPaint::Kind::Transform;
-            child(out.child);
-            const double dx = c.i16(), dy = c.i16();
-            out.transform = Affine::translate(dx, dy);
-            break;
-        }
-        case 16:
-        case 17:
-        case 18:
-        case 19:
-        case 20:
-        case 21:
-        case 22:
-        case 23: {
-            out.kind = ColrPaint::Kind::Transform;
-            child(out.child);
-            const bool uniform = format >= 20;
-            const bool centred = format == 18 || format == 19 || format == 22 || format == 23;
-            const double sx = c.f2dot14(), sy = uniform ? sx : c.f2dot14();
-            const double cx = centred ? c.i16() : 0, cy = centred ? c.i16() : 0;
-            out.transform = about(cx, cy, Affine::scale(sx, sy));
-            break;
-        }
-        case 24:
-        case 25:
-        case 26:
-        case 27: {
-            out.kind = ColrPaint::Kind::Transform;
-            child(out.child);
-            const double angle = c.f2dot14() * kPi;  // counter-clockwise, half turns per unit
-            const double cx = format >= 26 ? c.i16() : 0, cy = format >= 26 ? c.i16() : 0;
-            out.transform = about(cx, cy, Affine::rotate(angle));
-            break;
-        }
-        case 28:
-        case 29:
-        case 30:
-        case 31: {
-            out.kind = ColrPaint::Kind::Transform;
-            child(out.child);
-            const double ax = c.f2dot14() * kPi, ay = c.f2dot14() * kPi;
-            const double cx = format >= 30 ? c.i16() : 0, cy = format >= 30 ? c.i16() : 0;
-            out.transform = about(cx, cy, Affine{1, std::tan(ay), -std::tan(ax), 1, 0, 0});
-            break;
-        }
-        case 32:
-            out.kind = ColrPaint::Kind::Composite;
-            child(out.child);
-            out.mode = c.u8();
-            child(out.backdrop);
-            break;
-        default: return false;
+    PaintReader r{data_, at, Cursor{data_, at}};
+    const std::uint8_t format = r.c.u8();
+    r.variable = format >= 3 && format <= 31 && format % 2 == 1;
+    if (format == 0 || format > 32) return false;
+    if (format == 1) {
+        out.kind = ColrPaint::Kind::Layers;
+        out.layer_count = r.c.u8();
+        out.first_layer = r.c.u32();
+    } else if (format <= 3) {
+        out.kind = ColrPaint::Kind::Solid;
+        out.palette_index = r.c.u16();
+        out.alpha = r.c.f2dot14();
+    } else if (format <= 9) {
+        r.gradient(format, out);
+    } else if (format == 10) {
+        out.kind = ColrPaint::Kind::Glyph;
+        r.child(out.child);
+        out.glyph = r.c.u16();
+    } else if (format == 11) {
+        out.kind = ColrPaint::Kind::ColrGlyph;
+        out.glyph = r.c.u16();
+    } else if (format <= 31) {
+        out.kind = ColrPaint::Kind::Transform;
+        r.child(out.child);
+        out.transform = r.transform(format);
+    } else {
+        out.kind = ColrPaint::Kind::Composite;
+        r.child(out.child);
+        out.mode = r.c.u8();
+        r.child(out.backdrop);
     }
-    return c.ok;
+    return r.c.ok;
 }
 
 }  // namespace casteljau::text_detail
