@@ -63,106 +63,128 @@ std::vector<P> convert(const PointList& l) {
 
 bool is_knot_kind(const std::string& k) { return k == "bspline" || k == "nurbs"; }
 
+// Prints points one per line, at the input's scale and dimension.
 template <CurvePoint P>
-void run(const SplineOptions& o, const CurveFile& file) {
-    const double scale = file.points.scale();
-    constexpr int dim = point_dimension<P>;
-    std::ostringstream out;
-    auto line = [&](const P& p) { out << format_point(to_p3(p), scale, dim) << '\n'; };
-    const std::vector<P> pts = convert<P>(file.points);
+struct PointPrinter {
+    std::ostringstream& out;
+    double scale;
+    void operator()(const P& p) const { out << format_point(to_p3(p), scale, point_dimension<P>) << '\n'; }
+    // A NURBS control point: its coordinates, then its weight.
+    void operator()(const P& p, double weight) const {
+        out << format_point(to_p3(p), scale, point_dimension<P>) << ' ' << format_number(weight, 0) << '\n';
+    }
+};
 
-    if (is_knot_kind(o.kind)) {
-        const int degree = o.o_degree->count() || file.degree < 0 ? o.degree : file.degree;
-        std::vector<double> knots = o.o_knots->count() ? parse_numbers_option("--knots", o.knots) : file.knots;
-        std::vector<P> ctrl = pts;
-        std::vector<double> weights =
-            o.o_weights->count() ? parse_numbers_option("--weights", o.weights) : file.weights;
-        if (knots.empty()) {
-            if (o.knot_type == "periodic") {
-                // Wrap the control points (and weights) like BSpline::periodic.
-                const BSpline<P> per = BSpline<P>::periodic(degree, ctrl);
-                ctrl.assign(per.points().begin(), per.points().end());
-                knots.assign(per.knots().begin(), per.knots().end());
-                if (!weights.empty()) {
-                    const std::size_t n = weights.size();
-                    for (std::size_t i = 0; i < static_cast<std::size_t>(degree) && n > 0; ++i)
-                        weights.push_back(weights[i % n]);
-                }
-            } else {
-                knots =
-                    o.knot_type == "uniform" ? uniform_knots(degree, ctrl.size()) : clamped_knots(degree, ctrl.size());
-            }
+// A B-spline's or NURBS's degree, knots, control points and weights: from the options, else the
+// file; knots missing from both are built for --knot-type.
+template <CurvePoint P>
+struct KnottedInput {
+    int degree;
+    std::vector<double> knots, weights;
+    std::vector<P> ctrl;
+};
+
+template <CurvePoint P>
+KnottedInput<P> knotted_input(const SplineOptions& o, const CurveFile& file, const std::vector<P>& pts) {
+    KnottedInput<P> in{o.o_degree->count() || file.degree < 0 ? o.degree : file.degree,
+                       o.o_knots->count() ? parse_numbers_option("--knots", o.knots) : file.knots,
+                       o.o_weights->count() ? parse_numbers_option("--weights", o.weights) : file.weights, pts};
+    if (!in.knots.empty()) return in;
+    if (o.knot_type != "periodic") {
+        in.knots = o.knot_type == "uniform" ? uniform_knots(in.degree, in.ctrl.size())
+                                            : clamped_knots(in.degree, in.ctrl.size());
+        return in;
+    }
+    // Wrap the control points (and weights) like BSpline::periodic.
+    const BSpline<P> per = BSpline<P>::periodic(in.degree, in.ctrl);
+    in.ctrl.assign(per.points().begin(), per.points().end());
+    in.knots.assign(per.knots().begin(), per.knots().end());
+    if (!in.weights.empty()) {
+        const std::size_t n = in.weights.size();
+        for (std::size_t i = 0; i < static_cast<std::size_t>(in.degree) && n > 0; ++i)
+            in.weights.push_back(in.weights[i % n]);
+    }
+    return in;
+}
+
+// What the options ask of a B-spline or NURBS `s`: its pictures (the curve from curve_path(s)),
+// its Bezier pieces (print_pieces()), a point or derivative at --eval, or its basis functions at
+// --basis-at.
+template <CurvePoint P, class Spline, class CurvePath, class PrintPieces>
+void report_knotted(const SplineOptions& o, const Spline& s, int degree, const PointPrinter<P>& line,
+                    const CurvePath& curve_path, const PrintPieces& print_pieces) {
+    if (o.o_render->count() || o.o_basis->count()) {
+        if constexpr (std::same_as<P, Point>) {
+            std::vector<Point> kp;
+            for (double u : s.breakpoints()) kp.push_back(s.eval(u));
+            render_pictures(o, curve_path(s), s.points(), kp, degree, s.knots());
         }
-        if (o.kind == "bspline") {
-            const BSpline<P> s(degree, ctrl, knots);
-            if (o.o_render->count() || o.o_basis->count()) {
-                if constexpr (std::same_as<P, Point>) {
-                    std::vector<Point> kp;
-                    for (double u : s.breakpoints()) kp.push_back(s.eval(u));
-                    const auto pieces = s.to_bezier();
-                    render_pictures(o, to_path(pieces), s.points(), kp, degree, s.knots());
-                }
-            } else if (o.o_to_bezier->count()) {
+    } else if (o.o_to_bezier->count()) {
+        print_pieces();
+    } else if (o.o_eval->count()) {
+        line(s.derivative(o.o_derivative->count() ? o.derivative : 0, o.eval));
+    } else {
+        for (double b : bspline_basis_all(degree, s.knots(), o.basis_at)) line.out << format_number(b, 1) << '\n';
+    }
+}
+
+template <CurvePoint P>
+void run_knotted(const SplineOptions& o, const CurveFile& file, const std::vector<P>& pts,
+                 const PointPrinter<P>& line) {
+    KnottedInput<P> in = knotted_input(o, file, pts);
+    if (o.kind == "bspline") {
+        const BSpline<P> s(in.degree, in.ctrl, in.knots);
+        report_knotted(
+            o, s, in.degree, line, [](const auto& sp) { return to_path(sp.to_bezier()); },
+            [&] {
                 const auto pieces = s.to_bezier();
                 for (std::size_t j = 0; j < pieces.size(); ++j) {
-                    if (j) out << '\n';
+                    if (j) line.out << '\n';
                     for (const P& p : pieces[j].points()) line(p);
                 }
-            } else if (o.o_eval->count()) {
-                line(s.derivative(o.o_derivative->count() ? o.derivative : 0, o.eval));
-            } else {
-                for (double b : bspline_basis_all(degree, s.knots(), o.basis_at)) out << format_number(b, 1) << '\n';
-            }
-        } else {
-            if (weights.empty()) weights.assign(ctrl.size(), 1.0);
-            const Nurbs<P> s(degree, ctrl, weights, knots);
-            if (o.o_render->count() || o.o_basis->count()) {
-                if constexpr (std::same_as<P, Point>) {
-                    std::vector<Point> kp;
-                    for (double u : s.breakpoints()) kp.push_back(s.eval(u));
-                    render_pictures(o, to_path(s), s.points(), kp, degree, s.knots());
-                }
-            } else if (o.o_to_bezier->count()) {
-                const auto pieces = s.to_bezier();
-                for (std::size_t j = 0; j < pieces.size(); ++j) {
-                    if (j) out << '\n';
-                    for (std::size_t i = 0; i < pieces[j].points().size(); ++i)
-                        out << format_point(to_p3(pieces[j].points()[i]), scale, dim) << ' '
-                            << format_number(pieces[j].weights()[i], 0) << '\n';
-                }
-            } else if (o.o_eval->count()) {
-                line(s.derivative(o.o_derivative->count() ? o.derivative : 0, o.eval));
-            } else {
-                for (double b : bspline_basis_all(degree, s.knots(), o.basis_at)) out << format_number(b, 1) << '\n';
-            }
-        }
-        std::cout << out.str();
+            });
         return;
     }
+    if (in.weights.empty()) in.weights.assign(in.ctrl.size(), 1.0);
+    const Nurbs<P> s(in.degree, in.ctrl, in.weights, in.knots);
+    report_knotted(
+        o, s, in.degree, line, [](const auto& sp) { return to_path(sp); },
+        [&] {
+            const auto pieces = s.to_bezier();
+            for (std::size_t j = 0; j < pieces.size(); ++j) {
+                if (j) line.out << '\n';
+                for (std::size_t i = 0; i < pieces[j].points().size(); ++i)
+                    line(pieces[j].points()[i], pieces[j].weights()[i]);
+            }
+        });
+}
 
-    // Interpolating splines: cubic Bézier pieces.
+// The cubic Bezier pieces of an interpolating spline (--kind hermite, cardinal, catmull-rom, kb or
+// natural).
+template <CurvePoint P>
+std::vector<Bezier<P>> interpolating_pieces(const SplineOptions& o, const CurveFile& file, const std::vector<P>& pts) {
     const EndCondition ends = o.ends == "closed"  ? EndCondition::Closed
                               : o.ends == "inner" ? EndCondition::Inner
                                                   : EndCondition::Duplicate;
-    std::vector<Bezier<P>> pieces;
     if (o.kind == "hermite") {
         const PointList tl = o.o_tangents->count() ? parse_points_option("--tangents", o.tangents) : file.tangents;
         if (!tl.points.empty() && tl.dimension != file.points.dimension)
             throw UsageError("--tangents must have the same dimension as the points");
-        const std::vector<P> tangents = convert<P>(tl);
-        pieces = hermite_spline<P>(pts, tangents);
-    } else if (o.kind == "cardinal") {
-        pieces = cardinal_spline<P>(pts, o.tension, ends);
-    } else if (o.kind == "catmull-rom") {
-        pieces = catmull_rom_spline<P>(pts, ends);
-    } else if (o.kind == "kb") {
-        pieces = kochanek_bartels_spline<P>(pts, {o.tension, o.continuity, o.bias}, ends);
-    } else {
-        const Parametrization param = o.param == "chord"         ? Parametrization::ChordLength
-                                      : o.param == "centripetal" ? Parametrization::Centripetal
-                                                                 : Parametrization::Uniform;
-        pieces = natural_spline<P>(pts, param);
+        return hermite_spline<P>(pts, convert<P>(tl));
     }
+    if (o.kind == "cardinal") return cardinal_spline<P>(pts, o.tension, ends);
+    if (o.kind == "catmull-rom") return catmull_rom_spline<P>(pts, ends);
+    if (o.kind == "kb") return kochanek_bartels_spline<P>(pts, {o.tension, o.continuity, o.bias}, ends);
+    const Parametrization param = o.param == "chord"         ? Parametrization::ChordLength
+                                  : o.param == "centripetal" ? Parametrization::Centripetal
+                                                             : Parametrization::Uniform;
+    return natural_spline<P>(pts, param);
+}
+
+// What the options ask of an interpolating spline's pieces: its picture, the pieces, or a point
+// or derivative at --eval = T (piece floor(T) at T - floor(T)).
+template <CurvePoint P>
+void report_pieces(const SplineOptions& o, const std::vector<Bezier<P>>& pieces, const PointPrinter<P>& line) {
     if (o.o_render->count()) {
         if constexpr (std::same_as<P, Point>) {
             std::vector<Point> polygon, joins;
@@ -176,7 +198,7 @@ void run(const SplineOptions& o, const CurveFile& file) {
         }
     } else if (o.o_to_bezier->count()) {
         for (std::size_t j = 0; j < pieces.size(); ++j) {
-            if (j) out << '\n';
+            if (j) line.out << '\n';
             for (const P& p : pieces[j].points()) line(p);
         }
     } else {
@@ -188,6 +210,17 @@ void run(const SplineOptions& o, const CurveFile& file) {
         const double t = o.eval - static_cast<double>(j);
         line(pieces[j].derivative(o.o_derivative->count() ? o.derivative : 0, t));
     }
+}
+
+template <CurvePoint P>
+void run(const SplineOptions& o, const CurveFile& file) {
+    std::ostringstream out;
+    const PointPrinter<P> line{out, file.points.scale()};
+    const std::vector<P> pts = convert<P>(file.points);
+    if (is_knot_kind(o.kind))
+        run_knotted(o, file, pts, line);
+    else
+        report_pieces(o, interpolating_pieces(o, file, pts), line);
     std::cout << out.str();
 }
 
