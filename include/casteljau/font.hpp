@@ -159,4 +159,9 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+// Sets each of `settings` on every font of `fonts` that has its axis, as a fallback chain shares
+// them (a font without the axis is left as it is). A setting whose axis none of the fonts has
+// throws Error(Font) naming the fonts' axes, before any font changes.
+void set_chain_variations(std::span<Font* const> fonts, std::span<const Variation> settings);
+
 }  // namespace casteljau

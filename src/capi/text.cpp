@@ -46,28 +46,9 @@ std::vector<std::unique_ptr<Font>> fonts_with(const casteljau_font* const* fonts
     need(fonts, "fonts");
     std::vector<std::unique_ptr<Font>> out;
     for (size_t i = 0; i < count; ++i) out.push_back(std::make_unique<Font>(need(fonts[i], "font")->font.clone()));
-    std::string axes;
-    for (const auto& f : out)
-        for (const VariationAxis& a : f->axes()) axes += (axes.empty() ? "" : ", ") + a.tag;
-    for (const Variation& v : variations) {
-        if (std::any_of(out.begin(), out.end(), [&](const auto& f) {
-                return std::any_of(f->axes().begin(), f->axes().end(),
-                                   [&](const VariationAxis& a) { return a.tag == v.tag; });
-            }))
-            continue;
-        std::string tag = v.tag;
-        while (!tag.empty() && tag.back() == ' ') tag.pop_back();
-        throw Error(ErrorKind::Font, "unknown variation axis '" + tag + "': " +
-                                         (axes.empty() ? std::string("no font given is a variable font")
-                                                       : "the fonts' axes are " + axes));
-    }
-    for (auto& f : out) {
-        std::vector<Variation> mine;
-        for (const Variation& v : variations)
-            for (const VariationAxis& a : f->axes())
-                if (a.tag == v.tag) mine.push_back(v);
-        if (!mine.empty()) f->set_variations(mine);
-    }
+    std::vector<Font*> chain;
+    for (const auto& f : out) chain.push_back(f.get());
+    set_chain_variations(chain, variations);
     return out;
 }
 

@@ -295,6 +295,30 @@ Variation parse_variation(std::string_view text) {
     return {tag, v};
 }
 
+void set_chain_variations(std::span<Font* const> fonts, std::span<const Variation> settings) {
+    auto has_axis = [](const Font& f, const Variation& v) {
+        return std::any_of(f.axes().begin(), f.axes().end(), [&](const VariationAxis& a) { return a.tag == v.tag; });
+    };
+    for (const Variation& v : settings) {
+        if (std::any_of(fonts.begin(), fonts.end(), [&](const Font* f) { return has_axis(*f, v); })) continue;
+        std::string axes;
+        for (const Font* f : fonts)
+            for (const VariationAxis& a : f->axes()) axes += (axes.empty() ? "" : ", ") + a.tag;
+        std::string tag = v.tag;
+        while (!tag.empty() && tag.back() == ' ') tag.pop_back();
+        throw Error(ErrorKind::Font, "unknown variation axis '" + tag + "': " +
+                                         (axes.empty() ? std::string("no font given is a variable font")
+                                                       : "the fonts' axes are " + axes));
+    }
+    for (Font* f : fonts) {
+        std::vector<Variation> mine;
+        for (const Variation& v : settings)
+            for (const VariationAxis& a : f->axes())
+                if (a.tag == v.tag) mine.push_back(v);
+        if (!mine.empty()) f->set_variations(mine);
+    }
+}
+
 Font::Impl::~Impl() {
     if (hb) hb_font_destroy(hb);
     if (face) FT_Done_Face(face);

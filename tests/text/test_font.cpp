@@ -323,6 +323,27 @@ TEST_CASE("Variation errors: unknown axis, non-variable font, bad syntax, missin
     }
 }
 
+TEST_CASE("Chain variations: each axis on the fonts that have it, an axis none has is an error", "[font]") {
+    Font var = Font::load(kInterVar), plain = Font::load(kDejaVu);
+    std::vector<Font*> chain{&plain, &var};
+    const Variation bold = parse_variation("wght=700");
+    set_chain_variations(chain, {&bold, 1});
+    CHECK(var.variation_coordinates() == std::vector<double>{700});
+    CHECK(plain.variation_key() == 0);  // not variable: left as it is
+
+    // An unknown axis names the chain's axes and changes no font, even after a known one.
+    const Variation both[] = {parse_variation("wght=300"), parse_variation("wdth=80")};
+    std::string msg;
+    CHECK(error_kind_of([&] { set_chain_variations(chain, both); }, &msg) == ErrorKind::Font);
+    CHECK(msg.find("unknown variation axis 'wdth': the fonts' axes are wght") != std::string::npos);
+    CHECK(var.variation_coordinates() == std::vector<double>{700});
+
+    std::vector<Font*> plain_only{&plain};
+    CHECK(error_kind_of([&] { set_chain_variations(plain_only, {&bold, 1}); }, &msg) == ErrorKind::Font);
+    CHECK(msg.find("no font given is a variable font") != std::string::npos);
+    set_chain_variations(plain_only, {});  // nothing to set: nothing happens
+}
+
 namespace {
 
 struct Worst {
