@@ -194,7 +194,125 @@ void apply_font_shorthand(const Context& cx, std::string_view v, TextCtx& ctx, d
     }
 }
 
+namespace {
+
+// font-feature-settings: normal, or tags with values (on and off as 1 and 0).
+void apply_feature_settings(std::string_view val, TextCtx& ctx) {
+    ctx.feature_settings.clear();
+    if (val == "normal") return;
+    for (auto& [tag, value] : tag_value_list(val)) {
+        if (value == "on") value = "1";
+        if (value == "off") value = "0";
+        ctx.feature_settings.push_back(value.empty() ? tag : tag + "=" + value);
+    }
+}
+
+// The font's properties other than its size: family, weight, style, stretch, small caps,
+// kerning, features and variations. False for another property.
+bool apply_font_property(Context& cx, const pugi::xml_node& node, const std::string& k, std::string_view val,
+                         TextCtx& ctx) {
+    if (k == "font-family")
+        apply_font_family(cx, val, ctx);
+    else if (k == "font-weight") {
+        if (auto w = font_weight(val, ctx.font.weight)) ctx.font.weight = *w;
+    } else if (k == "font-style") {
+        if (val == "normal")
+            ctx.font.slant = FontSlant::Normal;
+        else if (val == "italic")
+            ctx.font.slant = FontSlant::Italic;
+        else if (val.substr(0, 7) == "oblique")
+            ctx.font.slant = FontSlant::Oblique;
+    } else if (k == "font-stretch") {
+        if (auto s = font_stretch(val)) ctx.font.stretch = *s;
+    } else if (k == "font-variant" || k == "font-variant-caps") {
+        ctx.small_caps = val == "small-caps";
+    } else if (k == "font-kerning") {
+        // A CSS property only (resvg ignores the presentation attribute).
+        if (!node.attribute("font-kerning")) ctx.no_kerning = val == "none";
+    } else if (k == "kerning") {
+        // SVG 1.1: "auto" or a length; 0 turns kerning off, other lengths are not supported.
+        if (val == "auto")
+            ctx.no_kerning = false;
+        else if (auto l = parse_length(val, 1, kUnknownFontSize, cx.options.dpi); l && *l == 0)
+            ctx.no_kerning = true;
+    } else if (k == "font-feature-settings") {
+        apply_feature_settings(val, ctx);
+    } else if (k == "font-variation-settings") {
+        ctx.font.variations.clear();
+        if (val != "normal")
+            for (const auto& [tag, value] : tag_value_list(val))
+                if (auto n = parse_number(value); n && tag.size() <= 4) ctx.font.variations.push_back({tag, *n});
+    } else {
+        return false;
+    }
+    return true;
+}
+
+// text-decoration and text-decoration-line: keywords separated by white space (a comma makes the
+// value invalid), each drawn in the element's style.
+void apply_decoration(std::string_view val, TextCtx& ctx) {
+    if (val.find(',') != std::string_view::npos) return;
+    for (std::string_view w : split_list(val)) {
+        svg_text::Decoration d;
+        d.style = ctx.style;
+        if (w == "underline")
+            d.kind = svg_text::Decoration::Underline;
+        else if (w == "overline")
+            d.kind = svg_text::Decoration::Overline;
+        else if (w == "line-through")
+            d.kind = svg_text::Decoration::LineThrough;
+        else
+            continue;
+        ctx.decorations.push_back(d);
+    }
+}
+
+// Spacing (relative to the font size `fs`), anchoring, baselines, decorations and direction.
+void apply_layout_property(Context& cx, const pugi::xml_node& node, const std::string& k, std::string_view val,
+                           double fs, TextCtx& ctx) {
+    if (k == "letter-spacing") {
+        if (val == "normal")
+            ctx.letter_spacing = 0;
+        else if (auto l = text_length(val, fs, ctx.viewport_width, cx.options.dpi))
+            ctx.letter_spacing = *l;
+    } else if (k == "word-spacing") {
+        if (val == "normal")
+            ctx.word_spacing = 0;
+        else if (auto l = text_length(val, fs, ctx.viewport_width, cx.options.dpi))
+            ctx.word_spacing = *l;
+    } else if (k == "text-anchor") {
+        if (val == "start")
+            ctx.anchor = svg_text::Anchor::Start;
+        else if (val == "middle")
+            ctx.anchor = svg_text::Anchor::Middle;
+        else if (val == "end")
+            ctx.anchor = svg_text::Anchor::End;
+    } else if (k == "dominant-baseline") {
+        // auto is alphabetic in horizontal text; SVG 1.1's no-change (and any value not
+        // understood) keeps the inherited baseline.
+        ctx.dominant = val == "auto" ? svg_text::Baseline::Alphabetic : baseline_kind(val, ctx.dominant);
+        ctx.baseline = ctx.dominant;
+    } else if (k == "alignment-baseline") {
+        ctx.baseline = baseline_kind(val, ctx.dominant);
+    } else if (k == "baseline-shift" && std::string_view(node.name()) != "text") {
+        // Not on the text element itself (as resvg): only tspans shift their baseline.
+        if (val == "sub")
+            ctx.baseline_shifts.push_back({1, 0});
+        else if (val == "super")
+            ctx.baseline_shifts.push_back({2, 0});
+        else if (val != "baseline")
+            if (auto l = text_length(val, fs, fs, cx.options.dpi)) ctx.baseline_shifts.push_back({0, *l});
+    } else if (k == "text-decoration" || k == "text-decoration-line") {
+        apply_decoration(val, ctx);
+    } else if (k == "direction") {
+        ctx.direction = std::string(val);
+    }
+}
+
+}  // namespace
+
 // Applies the text properties `node` sets itself to `ctx` (inherited ones carry on to children).
+// The font size comes first (the font shorthand sets it too): other lengths are relative to it.
 void apply_text_props(Context& cx, const pugi::xml_node& node, TextCtx& ctx) {
     const double parent_size = ctx.font.size;
     // alignment-baseline is not inherited (only the keyword inherit takes the parent's value).
@@ -216,95 +334,7 @@ void apply_text_props(Context& cx, const pugi::xml_node& node, TextCtx& ctx) {
             if (k == "alignment-baseline") ctx.baseline = parent_alignment;
             continue;
         }
-        if (k == "font-family")
-            apply_font_family(cx, val, ctx);
-        else if (k == "font-weight") {
-            if (auto w = font_weight(val, ctx.font.weight)) ctx.font.weight = *w;
-        } else if (k == "font-style") {
-            if (val == "normal")
-                ctx.font.slant = FontSlant::Normal;
-            else if (val == "italic")
-                ctx.font.slant = FontSlant::Italic;
-            else if (val.substr(0, 7) == "oblique")
-                ctx.font.slant = FontSlant::Oblique;
-        } else if (k == "font-stretch") {
-            if (auto s = font_stretch(val)) ctx.font.stretch = *s;
-        } else if (k == "font-variant" || k == "font-variant-caps") {
-            ctx.small_caps = val == "small-caps";
-        } else if (k == "font-kerning") {
-            // A CSS property only (resvg ignores the presentation attribute).
-            if (!node.attribute("font-kerning")) ctx.no_kerning = val == "none";
-        } else if (k == "kerning") {
-            // SVG 1.1: "auto" or a length; 0 turns kerning off, other lengths are not supported.
-            if (val == "auto")
-                ctx.no_kerning = false;
-            else if (auto l = parse_length(val, 1, kUnknownFontSize, cx.options.dpi); l && *l == 0)
-                ctx.no_kerning = true;
-        } else if (k == "font-feature-settings") {
-            ctx.feature_settings.clear();
-            if (val != "normal") {
-                for (auto& [tag, value] : tag_value_list(val)) {
-                    if (value == "on") value = "1";
-                    if (value == "off") value = "0";
-                    ctx.feature_settings.push_back(value.empty() ? tag : tag + "=" + value);
-                }
-            }
-        } else if (k == "font-variation-settings") {
-            ctx.font.variations.clear();
-            if (val != "normal")
-                for (const auto& [tag, value] : tag_value_list(val))
-                    if (auto n = parse_number(value); n && tag.size() <= 4) ctx.font.variations.push_back({tag, *n});
-        } else if (k == "letter-spacing") {
-            if (val == "normal")
-                ctx.letter_spacing = 0;
-            else if (auto l = text_length(val, fs, ctx.viewport_width, cx.options.dpi))
-                ctx.letter_spacing = *l;
-        } else if (k == "word-spacing") {
-            if (val == "normal")
-                ctx.word_spacing = 0;
-            else if (auto l = text_length(val, fs, ctx.viewport_width, cx.options.dpi))
-                ctx.word_spacing = *l;
-        } else if (k == "text-anchor") {
-            if (val == "start")
-                ctx.anchor = svg_text::Anchor::Start;
-            else if (val == "middle")
-                ctx.anchor = svg_text::Anchor::Middle;
-            else if (val == "end")
-                ctx.anchor = svg_text::Anchor::End;
-        } else if (k == "dominant-baseline") {
-            // auto is alphabetic in horizontal text; SVG 1.1's no-change (and any value not
-            // understood) keeps the inherited baseline.
-            ctx.dominant = val == "auto" ? svg_text::Baseline::Alphabetic : baseline_kind(val, ctx.dominant);
-            ctx.baseline = ctx.dominant;
-        } else if (k == "alignment-baseline") {
-            ctx.baseline = baseline_kind(val, ctx.dominant);
-        } else if (k == "baseline-shift" && std::string_view(node.name()) != "text") {
-            // Not on the text element itself (as resvg): only tspans shift their baseline.
-            if (val == "sub")
-                ctx.baseline_shifts.push_back({1, 0});
-            else if (val == "super")
-                ctx.baseline_shifts.push_back({2, 0});
-            else if (val != "baseline")
-                if (auto l = text_length(val, fs, fs, cx.options.dpi)) ctx.baseline_shifts.push_back({0, *l});
-        } else if (k == "text-decoration" || k == "text-decoration-line") {
-            // The keywords are separated by white space only: a comma makes the value invalid.
-            if (val.find(',') != std::string_view::npos) continue;
-            for (std::string_view w : split_list(val)) {
-                svg_text::Decoration d;
-                d.style = ctx.style;
-                if (w == "underline")
-                    d.kind = svg_text::Decoration::Underline;
-                else if (w == "overline")
-                    d.kind = svg_text::Decoration::Overline;
-                else if (w == "line-through")
-                    d.kind = svg_text::Decoration::LineThrough;
-                else
-                    continue;
-                ctx.decorations.push_back(d);
-            }
-        } else if (k == "direction") {
-            ctx.direction = std::string(val);
-        }
+        if (!apply_font_property(cx, node, k, val, ctx)) apply_layout_property(cx, node, k, val, fs, ctx);
     }
     if (const char* sp = node.attribute("xml:space").value(); *sp) ctx.preserve = std::string_view(sp) == "preserve";
     ctx.font.features.clear();
