@@ -33,12 +33,56 @@ void draw_color_glyph(const DisplayItem& it, Canvas& c, const Affine& base) {
     c.set_transform(saved);
 }
 
-}  // namespace
+// A pattern fill's shader: the tile drawn at the device resolution the fill needs (at most 2048
+// pixels a side), repeated.
+std::shared_ptr<const Shader> pattern_shader(const PatternTile& pt, const Affine& to_device, Canvas& c) {
+    const Affine m = to_device * pt.transform;
+    const double sx = std::hypot(m.a, m.b) * pt.tile.width(), sy = std::hypot(m.c, m.d) * pt.tile.height();
+    const int tw = static_cast<int>(std::clamp(std::ceil(sx), 1.0, 2048.0));
+    const int th = static_cast<int>(std::clamp(std::ceil(sy), 1.0, 2048.0));
+    auto tile = std::make_shared<Pixmap>(tw, th);
+    Canvas tc(*tile);
+    tc.fill_options() = c.fill_options();
+    draw(pt.items, tc,
+         Affine::scale(tw / pt.tile.width(), th / pt.tile.height()) * Affine::translate(-pt.tile.x0, -pt.tile.y0));
+    return std::make_shared<const Shader>(Shader::image(tile, true,
+                                                        pt.transform * Affine::translate(pt.tile.x0, pt.tile.y0) *
+                                                            Affine::scale(pt.tile.width() / tw, pt.tile.height() / th),
+                                                        true));
+}
 
-void draw(const DisplayList& items, Canvas& canvas, const Affine& base) {
-    // Layers: groups with opacity, clip paths or masks (BeginLayer .. EndLayer), and the content of
-    // clip paths and masks (BeginClip/BeginMask .. EndMask), which becomes a coverage mask that
-    // multiplies the layer it closes in.
+// One display list drawn onto a canvas. Layers: groups with opacity, clip paths or masks
+// (BeginLayer .. EndLayer), filtered content (BeginFilter .. EndFilter), and the content of clip
+// paths and masks (BeginClip/BeginMask .. EndMask), which becomes a coverage mask that multiplies
+// the layer it closes in. Each is a frame the size of the canvas, drawn into until it ends.
+class Drawing {
+public:
+    Drawing(Canvas& canvas, const Affine& base) : canvas_(canvas), base_(base) {}
+
+    void item(const DisplayItem& it) {
+        switch (it.kind) {
+            case DisplayItem::BeginLayer:
+            case DisplayItem::BeginClip:
+            case DisplayItem::BeginMask:
+                begin_frame(it.opacity, it.kind == DisplayItem::BeginMask && it.luminance, it.blend);
+                return;
+            case DisplayItem::BeginFilter: begin_frame(1, false, BlendMode::Normal); return;
+            case DisplayItem::EndFilter: end_filter(it); return;
+            case DisplayItem::EndLayer: end_layer(); return;
+            case DisplayItem::EndMask: end_mask(); return;
+            case DisplayItem::PushClip: push_clip(it); return;
+            case DisplayItem::PopClip: current().restore(); return;
+            case DisplayItem::SvgImage:
+                if (it.svg_image) it.svg_image->render(current(), base_ * it.transform);
+                return;
+            case DisplayItem::Bounds: return;
+            case DisplayItem::ColorGlyph: draw_color_glyph(it, current(), base_); return;
+            case DisplayItem::Fill:
+            case DisplayItem::Stroke: shape(it); return;
+        }
+    }
+
+private:
     struct Frame {
         Pixmap pm;
         Canvas canvas;
@@ -47,98 +91,78 @@ void draw(const DisplayList& items, Canvas& canvas, const Affine& base) {
         BlendMode blend = BlendMode::Normal;
         Frame(int w, int h) : pm(w, h), canvas(pm) {}
     };
-    std::vector<std::unique_ptr<Frame>> frames;
-    auto cur = [&]() -> Canvas& { return frames.empty() ? canvas : frames.back()->canvas; };
-    for (const DisplayItem& it : items) {
-        switch (it.kind) {
-            case DisplayItem::BeginLayer:
-            case DisplayItem::BeginClip:
-            case DisplayItem::BeginMask: {
-                frames.push_back(std::make_unique<Frame>(canvas.width(), canvas.height()));
-                frames.back()->canvas.fill_options() = canvas.fill_options();
-                frames.back()->opacity = it.opacity;
-                frames.back()->luminance = it.kind == DisplayItem::BeginMask && it.luminance;
-                frames.back()->blend = it.blend;
-                continue;
-            }
-            case DisplayItem::BeginFilter:
-                frames.push_back(std::make_unique<Frame>(canvas.width(), canvas.height()));
-                frames.back()->canvas.fill_options() = canvas.fill_options();
-                continue;
-            case DisplayItem::EndFilter: {
-                if (frames.empty()) continue;
-                std::unique_ptr<Frame> f = std::move(frames.back());
-                frames.pop_back();
-                Pixmap result = std::move(f->pm);
-                if (it.filters)
-                    for (const filter::FilterGraph& g : *it.filters)
-                        result = filter::apply_filter(g, base * it.transform, result);
-                cur().draw_layer(result, 1.0);
-                continue;
-            }
-            case DisplayItem::EndLayer: {
-                if (frames.empty()) continue;
-                std::unique_ptr<Frame> f = std::move(frames.back());
-                frames.pop_back();
-                cur().draw_layer(f->pm, f->opacity, f->blend);
-                continue;
-            }
-            case DisplayItem::EndMask: {
-                if (frames.size() < 2) continue;
-                std::unique_ptr<Frame> f = std::move(frames.back());
-                frames.pop_back();
-                apply_mask(frames.back()->pm, f->luminance ? mask_from_luminance(f->pm) : mask_from_alpha(f->pm));
-                continue;
-            }
-            case DisplayItem::PushClip: {
-                Canvas& c = cur();
-                c.save();
-                const Affine saved = c.transform();
-                c.set_transform(base * it.transform);
-                c.clip_rect(it.path.bounds());
-                c.set_transform(saved);
-                continue;
-            }
-            case DisplayItem::PopClip: cur().restore(); continue;
-            case DisplayItem::SvgImage:
-                if (it.svg_image) it.svg_image->render(cur(), base * it.transform);
-                continue;
-            case DisplayItem::Bounds: continue;
-            case DisplayItem::ColorGlyph: draw_color_glyph(it, cur(), base); continue;
-            case DisplayItem::Fill:
-            case DisplayItem::Stroke: break;
-        }
-        Canvas& c = cur();
-        Paint paint = Paint::solid(it.color);
-        paint.shader = it.shader;
-        paint.opacity = it.opacity;
-        if (it.pattern) {
-            // The tile is drawn at the device resolution the fill needs, then repeated.
-            const PatternTile& pt = *it.pattern;
-            const Affine m = base * it.transform * pt.transform;
-            const double sx = std::hypot(m.a, m.b) * pt.tile.width(), sy = std::hypot(m.c, m.d) * pt.tile.height();
-            const int tw = static_cast<int>(std::clamp(std::ceil(sx), 1.0, 2048.0));
-            const int th = static_cast<int>(std::clamp(std::ceil(sy), 1.0, 2048.0));
-            auto tile = std::make_shared<Pixmap>(tw, th);
-            Canvas tc(*tile);
-            tc.fill_options() = c.fill_options();
-            draw(pt.items, tc,
-                 Affine::scale(tw / pt.tile.width(), th / pt.tile.height()) *
-                     Affine::translate(-pt.tile.x0, -pt.tile.y0));
-            paint.shader = std::make_shared<const Shader>(
-                Shader::image(tile, true,
-                              pt.transform * Affine::translate(pt.tile.x0, pt.tile.y0) *
-                                  Affine::scale(pt.tile.width() / tw, pt.tile.height() / th),
-                              true));
-        }
+
+    Canvas& current() { return frames_.empty() ? canvas_ : frames_.back()->canvas; }
+
+    void begin_frame(double opacity, bool luminance, BlendMode blend) {
+        frames_.push_back(std::make_unique<Frame>(canvas_.width(), canvas_.height()));
+        Frame& f = *frames_.back();
+        f.canvas.fill_options() = canvas_.fill_options();
+        f.opacity = opacity;
+        f.luminance = luminance;
+        f.blend = blend;
+    }
+
+    std::unique_ptr<Frame> pop_frame() {
+        std::unique_ptr<Frame> f = std::move(frames_.back());
+        frames_.pop_back();
+        return f;
+    }
+
+    void end_filter(const DisplayItem& it) {
+        if (frames_.empty()) return;
+        Pixmap result = std::move(pop_frame()->pm);
+        if (it.filters)
+            for (const filter::FilterGraph& g : *it.filters)
+                result = filter::apply_filter(g, base_ * it.transform, result);
+        current().draw_layer(result, 1.0);
+    }
+
+    void end_layer() {
+        if (frames_.empty()) return;
+        const std::unique_ptr<Frame> f = pop_frame();
+        current().draw_layer(f->pm, f->opacity, f->blend);
+    }
+
+    void end_mask() {
+        if (frames_.size() < 2) return;
+        const std::unique_ptr<Frame> f = pop_frame();
+        apply_mask(frames_.back()->pm, f->luminance ? mask_from_luminance(f->pm) : mask_from_alpha(f->pm));
+    }
+
+    void push_clip(const DisplayItem& it) {
+        Canvas& c = current();
+        c.save();
         const Affine saved = c.transform();
-        c.set_transform(base * it.transform);
+        c.set_transform(base_ * it.transform);
+        c.clip_rect(it.path.bounds());
+        c.set_transform(saved);
+    }
+
+    void shape(const DisplayItem& it) {
+        Canvas& c = current();
+        Paint paint = Paint::solid(it.color);
+        paint.shader = it.pattern ? pattern_shader(*it.pattern, base_ * it.transform, c) : it.shader;
+        paint.opacity = it.opacity;
+        const Affine saved = c.transform();
+        c.set_transform(base_ * it.transform);
         if (it.kind == DisplayItem::Stroke)
             c.stroke_path(it.path, it.stroke, paint);
         else
             c.fill_path(it.path, paint, it.rule);
         c.set_transform(saved);
     }
+
+    Canvas& canvas_;
+    const Affine base_;
+    std::vector<std::unique_ptr<Frame>> frames_;
+};
+
+}  // namespace
+
+void draw(const DisplayList& items, Canvas& canvas, const Affine& base) {
+    Drawing drawing(canvas, base);
+    for (const DisplayItem& it : items) drawing.item(it);
 }
 
 }  // namespace casteljau::svg
