@@ -218,9 +218,99 @@ bool read_convolve_matrix(const pugi::xml_node& n, filter::Primitive& p) {
     return true;
 }
 
+using P = filter::Primitive;
+
+void read_composite(const pugi::xml_node& n, P& p) {
+    p.op = P::Composite;
+    const std::string_view o = trim(n.attribute("operator").value());
+    using C = filter::CompositeOp;
+    p.composite = o == "in"           ? C::In
+                  : o == "out"        ? C::Out
+                  : o == "atop"       ? C::Atop
+                  : o == "xor"        ? C::Xor
+                  : o == "arithmetic" ? C::Arithmetic
+                  : o == "lighter"    ? C::Lighter
+                                      : C::Over;
+    p.k1 = number_attr(n, "k1", 0);
+    p.k2 = number_attr(n, "k2", 0);
+    p.k3 = number_attr(n, "k3", 0);
+    p.k4 = number_attr(n, "k4", 0);
+}
+
+// feGaussianBlur and feDropShadow (a blur of the alpha, offset and flooded).
+void read_blur(const pugi::xml_node& n, const Units& u, const SvgFilterEnv& env, bool shadow, P& p) {
+    p.op = shadow ? P::DropShadow : P::GaussianBlur;
+    auto sd = number_pair(n, "stdDeviation");
+    double sx = shadow ? 2 : 0, sy = sx;
+    if (sd) {
+        sx = sd->first;
+        sy = sd->second;
+    }
+    if (sx < 0 || sy < 0) sx = sy = 0;  // a negative deviation disables the blur
+    p.std_x = u.lx(sx);
+    p.std_y = u.ly(sy);
+    p.edge = edge_mode(n, filter::EdgeMode::None);
+    if (shadow) {
+        p.dx = u.lx(number_attr(n, "dx", 2));
+        p.dy = u.ly(number_attr(n, "dy", 2));
+        p.color = flood_color(n, env, "flood-color", "flood-opacity", Color::black());
+    }
+}
+
+void read_morphology(const pugi::xml_node& n, const Units& u, P& p) {
+    p.op = P::Morphology;
+    p.dilate = trim(n.attribute("operator").value()) == "dilate";
+    // A missing, malformed or negative radius, or zero on both axes, is 1 (as resvg does); zero on
+    // one axis only is 1 on that axis (as Chrome and Safari do).
+    auto r = number_pair(n, "radius");
+    if (!r || r->first < 0 || r->second < 0 || (r->first == 0 && r->second == 0)) r = std::pair{1.0, 1.0};
+    if (r->first == 0) r->first = 1;
+    if (r->second == 0) r->second = 1;
+    p.rx = u.lx(r->first);
+    p.ry = u.ly(r->second);
+}
+
+void read_turbulence(const pugi::xml_node& n, P& p) {
+    p.op = P::Turbulence;
+    auto f = n.attribute("baseFrequency") ? number_pair(n, "baseFrequency")
+                                          : std::optional<std::pair<double, double>>{std::pair{0.0, 0.0}};
+    if (!f || f->first < 0 || f->second < 0) f = std::pair{0.0, 0.0};
+    p.freq_x = f->first;
+    p.freq_y = f->second;
+    const double oct = number_attr(n, "numOctaves", 1);
+    p.octaves = oct < 0 ? 0 : static_cast<int>(std::min(oct, 64.0));
+    p.seed = number_attr(n, "seed", 0);
+    p.stitch = trim(n.attribute("stitchTiles").value()) == "stitch";
+    p.fractal = trim(n.attribute("type").value()) == "fractalNoise";
+}
+
+void read_displacement(const pugi::xml_node& n, const Units& u, P& p) {
+    p.op = P::DisplacementMap;
+    p.scale = number_attr(n, "scale", 0);
+    if (u.bbox) p.scale *= std::sqrt(u.box.width() * u.box.height());
+    auto channel = [&](const char* a) {
+        const std::string_view v = trim(n.attribute(a).value());
+        return v == "R" ? 0 : v == "G" ? 1 : v == "B" ? 2 : 3;
+    };
+    p.x_channel = channel("xChannelSelector");
+    p.y_channel = channel("yChannelSelector");
+}
+
+// feDiffuseLighting and feSpecularLighting; false for a specular exponent outside [1, 128] or a
+// missing or invalid light source.
+bool read_lighting(const pugi::xml_node& n, const Units& u, const SvgFilterEnv& env, bool specular, P& p) {
+    p.op = specular ? P::SpecularLighting : P::DiffuseLighting;
+    p.surface_scale = number_attr(n, "surfaceScale", 1);
+    p.diffuse_constant = number_attr(n, "diffuseConstant", 1);
+    p.specular_constant = number_attr(n, "specularConstant", 1);
+    p.specular_exponent = number_attr(n, "specularExponent", 1);
+    if (specular && !(p.specular_exponent >= 1 && p.specular_exponent <= 128)) return false;
+    p.color = flood_color(n, env, "lighting-color", "lighting-opacity", Color::white());
+    return read_light(n, u, p.light);
+}
+
 // The filter primitive element `n` read into `p`; false when it is unknown or invalid.
-bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv& env, filter::Primitive& p) {
-    using P = filter::Primitive;
+bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv& env, P& p) {
     const std::string_view name = n.name();
     if (name == "feFlood") {
         p.op = P::Flood;
@@ -229,97 +319,33 @@ bool read_primitive(const pugi::xml_node& n, const Units& u, const SvgFilterEnv&
         p.op = P::Offset;
         p.dx = u.lx(number_attr(n, "dx", 0));
         p.dy = u.ly(number_attr(n, "dy", 0));
-    } else if (name == "feMerge") {
-        p.op = P::Merge;
+    } else if (name == "feMerge" || name == "feTile") {
+        p.op = name == "feMerge" ? P::Merge : P::Tile;
     } else if (name == "feBlend") {
         p.op = P::Blend;
         const std::string mode = std::string(trim(n.attribute("mode").value()));
         if (!mode.empty() && !parse_blend_mode(mode, p.blend)) p.blend = BlendMode::Normal;
     } else if (name == "feComposite") {
-        p.op = P::Composite;
-        const std::string_view o = trim(n.attribute("operator").value());
-        using C = filter::CompositeOp;
-        p.composite = o == "in"           ? C::In
-                      : o == "out"        ? C::Out
-                      : o == "atop"       ? C::Atop
-                      : o == "xor"        ? C::Xor
-                      : o == "arithmetic" ? C::Arithmetic
-                      : o == "lighter"    ? C::Lighter
-                                          : C::Over;
-        p.k1 = number_attr(n, "k1", 0);
-        p.k2 = number_attr(n, "k2", 0);
-        p.k3 = number_attr(n, "k3", 0);
-        p.k4 = number_attr(n, "k4", 0);
+        read_composite(n, p);
     } else if (name == "feGaussianBlur" || name == "feDropShadow") {
-        p.op = name == "feGaussianBlur" ? P::GaussianBlur : P::DropShadow;
-        auto sd = number_pair(n, "stdDeviation");
-        double sx = p.op == P::DropShadow ? 2 : 0, sy = sx;
-        if (sd) {
-            sx = sd->first;
-            sy = sd->second;
-        }
-        if (sx < 0 || sy < 0) sx = sy = 0;  // a negative deviation disables the blur
-        p.std_x = u.lx(sx);
-        p.std_y = u.ly(sy);
-        p.edge = edge_mode(n, filter::EdgeMode::None);
-        if (p.op == P::DropShadow) {
-            p.dx = u.lx(number_attr(n, "dx", 2));
-            p.dy = u.ly(number_attr(n, "dy", 2));
-            p.color = flood_color(n, env, "flood-color", "flood-opacity", Color::black());
-        }
+        read_blur(n, u, env, name == "feDropShadow", p);
     } else if (name == "feColorMatrix") {
         read_color_matrix(n, p);
     } else if (name == "feComponentTransfer") {
         read_component_transfer(n, p);
     } else if (name == "feMorphology") {
-        p.op = P::Morphology;
-        p.dilate = trim(n.attribute("operator").value()) == "dilate";
-        // A missing, malformed or negative radius, or zero on both axes, is 1 (as resvg does); zero
-        // on one axis only is 1 on that axis (as Chrome and Safari do).
-        auto r = number_pair(n, "radius");
-        if (!r || r->first < 0 || r->second < 0 || (r->first == 0 && r->second == 0)) r = std::pair{1.0, 1.0};
-        if (r->first == 0) r->first = 1;
-        if (r->second == 0) r->second = 1;
-        p.rx = u.lx(r->first);
-        p.ry = u.ly(r->second);
+        read_morphology(n, u, p);
     } else if (name == "feConvolveMatrix") {
-        if (!read_convolve_matrix(n, p)) return false;
-    } else if (name == "feTile") {
-        p.op = P::Tile;
+        return read_convolve_matrix(n, p);
     } else if (name == "feImage") {
         p.op = P::Image;
         p.draw = env.image(n, p.subregion);
     } else if (name == "feTurbulence") {
-        p.op = P::Turbulence;
-        auto f = n.attribute("baseFrequency") ? number_pair(n, "baseFrequency")
-                                              : std::optional<std::pair<double, double>>{std::pair{0.0, 0.0}};
-        if (!f || f->first < 0 || f->second < 0) f = std::pair{0.0, 0.0};
-        p.freq_x = f->first;
-        p.freq_y = f->second;
-        const double oct = number_attr(n, "numOctaves", 1);
-        p.octaves = oct < 0 ? 0 : static_cast<int>(std::min(oct, 64.0));
-        p.seed = number_attr(n, "seed", 0);
-        p.stitch = trim(n.attribute("stitchTiles").value()) == "stitch";
-        p.fractal = trim(n.attribute("type").value()) == "fractalNoise";
+        read_turbulence(n, p);
     } else if (name == "feDisplacementMap") {
-        p.op = P::DisplacementMap;
-        p.scale = number_attr(n, "scale", 0);
-        if (u.bbox) p.scale *= std::sqrt(u.box.width() * u.box.height());
-        auto channel = [&](const char* a) {
-            const std::string_view v = trim(n.attribute(a).value());
-            return v == "R" ? 0 : v == "G" ? 1 : v == "B" ? 2 : 3;
-        };
-        p.x_channel = channel("xChannelSelector");
-        p.y_channel = channel("yChannelSelector");
+        read_displacement(n, u, p);
     } else if (name == "feDiffuseLighting" || name == "feSpecularLighting") {
-        p.op = name == "feDiffuseLighting" ? P::DiffuseLighting : P::SpecularLighting;
-        p.surface_scale = number_attr(n, "surfaceScale", 1);
-        p.diffuse_constant = number_attr(n, "diffuseConstant", 1);
-        p.specular_constant = number_attr(n, "specularConstant", 1);
-        p.specular_exponent = number_attr(n, "specularExponent", 1);
-        if (p.op == P::SpecularLighting && !(p.specular_exponent >= 1 && p.specular_exponent <= 128)) return false;
-        p.color = flood_color(n, env, "lighting-color", "lighting-opacity", Color::white());
-        if (!read_light(n, u, p.light)) return false;
+        return read_lighting(n, u, env, name == "feSpecularLighting", p);
     } else {
         return false;
     }
