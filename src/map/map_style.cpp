@@ -71,6 +71,69 @@ MapFilter filter(element e, JsonPath& path) {
     path.fail(ErrorKind::Parse, "a filter needs one of ==, !=, <, >, in, has");
 }
 
+// Calls read(value) with the path at `name` when object `o` has that member.
+template <class Read>
+void optional_member(object o, const char* name, JsonPath& path, Read&& read) {
+    element e;
+    if (o[name].get(e) != simdjson::SUCCESS) return;
+    auto s = path.key(name);
+    read(e);
+}
+
+// A number in [lo, hi]; `range` names the range in the error.
+double number_in(element e, JsonPath& path, double lo, double hi, const char* range) {
+    const double v = number(e, path);
+    if (v < lo || v > hi) path.fail(ErrorKind::Parse, range);
+    return v;
+}
+
+std::vector<Color> palette(element e, JsonPath& path) {
+    simdjson::dom::array a;
+    if (e.get_array().get(a) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected an array of colours");
+    std::vector<Color> colors;
+    std::size_t k = 0;
+    for (element c : a) {
+        auto s = path.index(k++);
+        colors.push_back(color_or_none(c, path).value_or(Color::transparent()));
+    }
+    return colors;
+}
+
+// [[MIN, COLOUR], [MAX, COLOUR]].
+ColorRamp ramp(element e, JsonPath& path) {
+    simdjson::dom::array a;
+    if (e.get_array().get(a) != simdjson::SUCCESS || a.size() != 2)
+        path.fail(ErrorKind::Parse, "expected [[MIN, COLOUR], [MAX, COLOUR]]");
+    ColorRamp r;
+    for (std::size_t k = 0; k < 2; ++k) {
+        auto s = path.index(k);
+        simdjson::dom::array stop;
+        if (a.at(k).get_array().get(stop) != simdjson::SUCCESS || stop.size() != 2)
+            path.fail(ErrorKind::Parse, "expected [VALUE, COLOUR]");
+        const double v = number(stop.at(0).value_unsafe(), path);
+        const Color c = color_or_none(stop.at(1).value_unsafe(), path).value_or(Color::transparent());
+        (k == 0 ? r.min : r.max) = v;
+        (k == 0 ? r.min_color : r.max_color) = c;
+    }
+    return r;
+}
+
+MapLayerStyle layer(element le, JsonPath& path) {
+    object lo;
+    if (le.get_object().get(lo) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected a layer object");
+    MapLayerStyle l;
+    optional_member(lo, "filter", path, [&](element e) { l.filter = filter(e, path); });
+    optional_member(lo, "fill", path, [&](element e) { l.fill = color_or_none(e, path); });
+    optional_member(lo, "stroke", path, [&](element e) { l.stroke = color_or_none(e, path); });
+    optional_member(lo, "fill_by", path, [&](element e) { l.fill_by = string_of(e, path); });
+    optional_member(lo, "width", path,
+                    [&](element e) { l.stroke_width = number_in(e, path, 0, 1e4, "must be 0 to 10000"); });
+    optional_member(lo, "opacity", path, [&](element e) { l.opacity = number_in(e, path, 0, 1, "must be 0 to 1"); });
+    optional_member(lo, "palette", path, [&](element e) { l.palette = palette(e, path); });
+    optional_member(lo, "ramp", path, [&](element e) { l.ramp = ramp(e, path); });
+    return l;
+}
+
 }  // namespace
 
 MapStyle read_map_style(std::string_view text) {
@@ -81,96 +144,27 @@ MapStyle read_map_style(std::string_view text) {
     object o;
     if (root.get_object().get(o) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected an object");
     MapStyle st;
-    element e;
-    if (o["background"].get(e) == simdjson::SUCCESS) {
-        auto s = path.key("background");
-        st.background = color_or_none(e, path).value_or(Color::transparent());
-    }
-    if (o["point_radius"].get(e) == simdjson::SUCCESS) {
-        auto s = path.key("point_radius");
-        st.point_radius = number(e, path);
-        if (st.point_radius < 0 || st.point_radius > 1e4) path.fail(ErrorKind::Parse, "must be 0 to 10000");
-    }
-    if (o["line_join"].get(e) == simdjson::SUCCESS) {
-        auto s = path.key("line_join");
+    optional_member(o, "background", path,
+                    [&](element e) { st.background = color_or_none(e, path).value_or(Color::transparent()); });
+    optional_member(o, "point_radius", path,
+                    [&](element e) { st.point_radius = number_in(e, path, 0, 1e4, "must be 0 to 10000"); });
+    optional_member(o, "line_join", path, [&](element e) {
         if (!parse_line_join(string_of(e, path), st.join))
             path.fail(ErrorKind::Parse, "expected miter, miter-clip, round or bevel");
-    }
-    if (o["line_cap"].get(e) == simdjson::SUCCESS) {
-        auto s = path.key("line_cap");
+    });
+    optional_member(o, "line_cap", path, [&](element e) {
         if (!parse_line_cap(string_of(e, path), st.cap)) path.fail(ErrorKind::Parse, "expected butt, round or square");
-    }
+    });
     auto ls = path.key("layers");
     simdjson::dom::array layers;
+    element e;
     if (o["layers"].get(e) != simdjson::SUCCESS || e.get_array().get(layers) != simdjson::SUCCESS)
         path.fail(ErrorKind::Parse, "missing or not an array of layers");
     st.layers.clear();
     std::size_t i = 0;
     for (element le : layers) {
         auto s = path.index(i++);
-        object lo;
-        if (le.get_object().get(lo) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected a layer object");
-        MapLayerStyle l;
-        if (lo["filter"].get(e) == simdjson::SUCCESS) {
-            auto s2 = path.key("filter");
-            l.filter = filter(e, path);
-        }
-        if (lo["fill"].get(e) == simdjson::SUCCESS) {
-            auto s2 = path.key("fill");
-            l.fill = color_or_none(e, path);
-        }
-        if (lo["stroke"].get(e) == simdjson::SUCCESS) {
-            auto s2 = path.key("stroke");
-            l.stroke = color_or_none(e, path);
-        }
-        if (lo["fill_by"].get(e) == simdjson::SUCCESS) {
-            auto s2 = path.key("fill_by");
-            l.fill_by = string_of(e, path);
-        }
-        if (lo["width"].get(e) == simdjson::SUCCESS) {
-            auto s2 = path.key("width");
-            l.stroke_width = number(e, path);
-            if (l.stroke_width < 0 || l.stroke_width > 1e4) path.fail(ErrorKind::Parse, "must be 0 to 10000");
-        }
-        if (lo["opacity"].get(e) == simdjson::SUCCESS) {
-            auto s2 = path.key("opacity");
-            l.opacity = number(e, path);
-            if (l.opacity < 0 || l.opacity > 1) path.fail(ErrorKind::Parse, "must be 0 to 1");
-        }
-        if (lo["palette"].get(e) == simdjson::SUCCESS) {
-            auto s2 = path.key("palette");
-            simdjson::dom::array a;
-            if (e.get_array().get(a) != simdjson::SUCCESS) path.fail(ErrorKind::Parse, "expected an array of colours");
-            std::size_t k = 0;
-            for (element c : a) {
-                auto s3 = path.index(k++);
-                l.palette.push_back(color_or_none(c, path).value_or(Color::transparent()));
-            }
-        }
-        if (lo["ramp"].get(e) == simdjson::SUCCESS) {
-            auto s2 = path.key("ramp");
-            simdjson::dom::array a;
-            if (e.get_array().get(a) != simdjson::SUCCESS || a.size() != 2)
-                path.fail(ErrorKind::Parse, "expected [[MIN, COLOUR], [MAX, COLOUR]]");
-            ColorRamp r;
-            for (std::size_t k = 0; k < 2; ++k) {
-                auto s3 = path.index(k);
-                simdjson::dom::array stop;
-                if (a.at(k).get_array().get(stop) != simdjson::SUCCESS || stop.size() != 2)
-                    path.fail(ErrorKind::Parse, "expected [VALUE, COLOUR]");
-                const double v = number(stop.at(0).value_unsafe(), path);
-                const Color c = color_or_none(stop.at(1).value_unsafe(), path).value_or(Color::transparent());
-                if (k == 0) {
-                    r.min = v;
-                    r.min_color = c;
-                } else {
-                    r.max = v;
-                    r.max_color = c;
-                }
-            }
-            l.ramp = r;
-        }
-        st.layers.push_back(std::move(l));
+        st.layers.push_back(layer(le, path));
     }
     return st;
 }
