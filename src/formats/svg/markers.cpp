@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -13,24 +12,47 @@
 
 namespace casteljau::svg {
 
-// Markers at the vertices of `path`: marker-start at the first, marker-end at the last,
-// marker-mid at the others; each oriented (orient auto / auto-start-reverse / an angle),
-// scaled by the stroke width (markerUnits strokeWidth), mapped by its viewBox and refX/refY,
-// and clipped to markerWidth x markerHeight unless overflow is visible.
-void emit_markers(Context& cx, const Path& path, const Style& st, const Affine& cm, Viewport vp, int depth) {
-    if (st.marker_start.empty() && st.marker_mid.empty() && st.marker_end.empty()) return;
-    struct Vertex {
-        Point p;
-        std::optional<Vec> in, out;
-    };
-    std::vector<Vertex> vs;
-    std::size_t subpath_first = 0;
-    auto dir = [](Point a, Point b) -> std::optional<Vec> {
+namespace {
+
+// A vertex of the marked path with the directions of the segments coming in and going out (none
+// at an open end, or where every control point coincides with the vertex).
+struct MarkerVertex {
+    Point p;
+    std::optional<Vec> in, out;
+};
+
+// The path's vertices in order: every segment's end, and each subpath's start. A closed
+// subpath's end vertex turns into its first segment, and its start vertex comes in from its
+// closing segment.
+class VertexCollector {
+public:
+    std::vector<MarkerVertex> vs;
+
+    void move(Point p) {
+        first_ = vs.size();
+        vs.push_back({p, std::nullopt, std::nullopt});
+    }
+    void line(Point a, Point b) { segment(a, {b}); }
+    void quad(Point a, Point c, Point b) { segment(a, {c, b}); }
+    void cubic(Point a, Point c1, Point c2, Point b) { segment(a, {c1, c2, b}); }
+    void conic(Point a, Point c, Point b, double) { segment(a, {c, b}); }
+    void close(Point last, Point first) {
+        if (!(last == first)) segment(last, {first});
+        if (first_ < vs.size()) {
+            vs.back().out = vs[first_].out;
+            vs[first_].in = vs.back().in;
+        }
+    }
+
+private:
+    static std::optional<Vec> dir(Point a, Point b) {
         const Vec d{b.x - a.x, b.y - a.y};
         if (d.x == 0 && d.y == 0) return std::nullopt;
         return d;
-    };
-    auto segment = [&](Point p0, std::initializer_list<Point> rest) {
+    }
+    // A segment from p0 through `rest`: its start direction towards the first control point apart
+    // from p0, its end direction from the last one apart from its end.
+    void segment(Point p0, std::initializer_list<Point> rest) {
         std::vector<Point> pts{p0};
         pts.insert(pts.end(), rest.begin(), rest.end());
         std::optional<Vec> start, end;
@@ -38,71 +60,69 @@ void emit_markers(Context& cx, const Path& path, const Style& st, const Affine& 
         for (std::size_t i = pts.size() - 1; i-- > 0 && !end;) end = dir(pts[i], pts.back());
         if (!vs.empty() && !vs.back().out) vs.back().out = start;
         vs.push_back({pts.back(), end, std::nullopt});
-    };
-    auto close = [&](Point last, Point first) {
-        if (!(last == first)) segment(last, {first});
-        // A closed subpath: its end vertex turns into its first segment, and its start vertex
-        // comes in from its closing segment.
-        if (subpath_first < vs.size()) {
-            vs.back().out = vs[subpath_first].out;
-            vs[subpath_first].in = vs.back().in;
-        }
-    };
-    struct Visitor {
-        std::function<void(Point)> on_move;
-        std::function<void(Point, std::initializer_list<Point>)> on_segment;
-        std::function<void(Point, Point)> on_close;
-        void move(Point p) { on_move(p); }
-        void line(Point a, Point b) { on_segment(a, {b}); }
-        void quad(Point a, Point c, Point b) { on_segment(a, {c, b}); }
-        void cubic(Point a, Point c1, Point c2, Point b) { on_segment(a, {c1, c2, b}); }
-        void conic(Point a, Point c, Point b, double) { on_segment(a, {c, b}); }
-        void close(Point last, Point first) { on_close(last, first); }
-    };
-    path.visit(Visitor{[&](Point p) {
-                           subpath_first = vs.size();
-                           vs.push_back({p, std::nullopt, std::nullopt});
-                       },
-                       segment, close});
-    if (vs.empty()) return;
+    }
+    std::size_t first_ = 0;  // the current subpath's first vertex
+};
+
+// An angle with an optional unit (deg, grad, rad, turn; degrees without one), in radians; 0 when
+// invalid.
+double parse_angle(std::string_view o) {
+    double unit = kPi / 180;
+    // "grad" before "rad": both end in "rad".
+    if (o.size() > 3 && o.substr(o.size() - 3) == "deg") {
+        o.remove_suffix(3);
+    } else if (o.size() > 4 && o.substr(o.size() - 4) == "grad") {
+        o.remove_suffix(4);
+        unit = kPi / 200;
+    } else if (o.size() > 3 && o.substr(o.size() - 3) == "rad") {
+        o.remove_suffix(3);
+        unit = 1;
+    } else if (o.size() > 4 && o.substr(o.size() - 4) == "turn") {
+        o.remove_suffix(4);
+        unit = 2 * kPi;
+    }
+    const auto n = parse_number(o);
+    return n ? *n * unit : 0;
+}
+
+// The marker's rotation at vertex v (radians): orient auto bisects the directions in and out,
+// auto-start-reverse turns the first vertex's by a half turn, an angle is itself.
+double marker_angle(const pugi::xml_node& marker, const MarkerVertex& v, bool first) {
+    const std::string_view orient = trim(marker.attribute("orient").value());
+    if (orient != "auto" && orient != "auto-start-reverse") return orient.empty() ? 0 : parse_angle(orient);
+    double angle = 0;
+    const std::optional<Vec>& a = v.in ? v.in : v.out;
+    const std::optional<Vec>& b = v.out ? v.out : v.in;
+    if (a && b) {
+        const double ai = std::atan2(a->y, a->x), ao = std::atan2(b->y, b->x);
+        angle = (ai + ao) / 2;
+        if (std::fabs(ai - ao) > kPi) angle += kPi;
+    }
+    if (orient == "auto-start-reverse" && first) angle += kPi;
+    return angle;
+}
+
+}  // namespace
+
+// Markers at the vertices of `path`: marker-start at the first, marker-end at the last,
+// marker-mid at the others; each oriented (orient auto / auto-start-reverse / an angle),
+// scaled by the stroke width (markerUnits strokeWidth), mapped by its viewBox and refX/refY,
+// and clipped to markerWidth x markerHeight unless overflow is visible.
+void emit_markers(Context& cx, const Path& path, const Style& st, const Affine& cm, Viewport vp, int depth) {
+    if (st.marker_start.empty() && st.marker_mid.empty() && st.marker_end.empty()) return;
+    VertexCollector collect;
+    path.visit(collect);
+    const std::vector<MarkerVertex>& vs = collect.vs;
     std::shared_ptr<const ContextElement> context;  // the marked shape, for context-fill/-stroke
     for (std::size_t i = 0; i < vs.size(); ++i) {
         const std::string& id = i == 0 ? st.marker_start : i + 1 == vs.size() ? st.marker_end : st.marker_mid;
         if (id.empty()) continue;
         const pugi::xml_node marker = lookup(cx, id);
         if (!marker || std::string_view(marker.name()) != "marker" || is_active(cx, marker)) continue;
-        const Vertex& v = vs[i];
-        double angle = 0;
-        const std::string_view orient = trim(marker.attribute("orient").value());
-        if (orient == "auto" || orient == "auto-start-reverse") {
-            const std::optional<Vec>& a = v.in ? v.in : v.out;
-            const std::optional<Vec>& b = v.out ? v.out : v.in;
-            if (a && b) {
-                const double ai = std::atan2(a->y, a->x), ao = std::atan2(b->y, b->x);
-                angle = (ai + ao) / 2;
-                if (std::fabs(ai - ao) > kPi) angle += kPi;
-            }
-            if (orient == "auto-start-reverse" && i == 0) angle += kPi;
-        } else if (!orient.empty()) {
-            std::string_view o = orient;
-            double unit = kPi / 180;
-            // "grad" before "rad": both end in "rad".
-            if (o.size() > 3 && o.substr(o.size() - 3) == "deg") {
-                o.remove_suffix(3);
-            } else if (o.size() > 4 && o.substr(o.size() - 4) == "grad") {
-                o.remove_suffix(4);
-                unit = kPi / 200;
-            } else if (o.size() > 3 && o.substr(o.size() - 3) == "rad") {
-                o.remove_suffix(3);
-                unit = 1;
-            } else if (o.size() > 4 && o.substr(o.size() - 4) == "turn") {
-                o.remove_suffix(4);
-                unit = 2 * kPi;
-            }
-            if (auto n = parse_number(o)) angle = *n * unit;
-        }
+        const double angle = marker_angle(marker, vs[i], i == 0);
         if (!context) context = std::make_shared<const ContextElement>(ContextElement{path, cm, vp});
-        emit_marker(cx, marker, st, context, cm * Affine::translate(v.p.x, v.p.y) * Affine::rotate(angle), vp, depth);
+        emit_marker(cx, marker, st, context, cm * Affine::translate(vs[i].p.x, vs[i].p.y) * Affine::rotate(angle), vp,
+                    depth);
     }
 }
 
