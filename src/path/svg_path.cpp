@@ -352,98 +352,95 @@ private:
         return false;
     }
 
+    // Appends command `cmd` with its arguments `a` (read at `pos`); false with the error set.
     bool apply(char cmd, const double* a, std::size_t pos) {
-        const Point cur = path_.current_point();
         const bool rel = cmd >= 'a';
-        auto pt = [&](double x, double y) { return rel ? Point{cur.x + x, cur.y + y} : Point{x, y}; };
         switch (to_upper(cmd)) {
-            case 'M': {
-                const Point p = pt(a[0], a[1]);
-                if (!p.is_finite()) return out_of_range(pos);
-                const bool merges = !path_.verbs().empty() && path_.verbs().back() == Verb::Move;
-                if (!reserve(merges ? 0 : 1, false, pos)) return false;
-                path_.move_to(p);
-                prev_ = Prev::None;
-                return true;
-            }
-            case 'L':
-            case 'H':
-            case 'V': {
-                Point p;
-                if (cmd == 'H' || cmd == 'h')
-                    p = {rel ? cur.x + a[0] : a[0], cur.y};
-                else if (cmd == 'V' || cmd == 'v')
-                    p = {cur.x, rel ? cur.y + a[0] : a[0]};
-                else
-                    p = pt(a[0], a[1]);
-                if (!p.is_finite()) return out_of_range(pos);
-                if (!reserve(1, true, pos)) return false;
-                path_.line_to(p);
-                prev_ = Prev::None;
-                return true;
-            }
-            case 'C':
-            case 'S': {
-                Point c1, c2, p;
-                if (cmd == 'C' || cmd == 'c') {
-                    c1 = pt(a[0], a[1]);
-                    c2 = pt(a[2], a[3]);
-                    p = pt(a[4], a[5]);
-                } else {
-                    c1 = prev_ == Prev::Cubic ? reflect(cur, last_ctrl_) : cur;
-                    c2 = pt(a[0], a[1]);
-                    p = pt(a[2], a[3]);
-                }
-                if (!c1.is_finite() || !c2.is_finite() || !p.is_finite()) return out_of_range(pos);
-                if (!reserve(3, true, pos)) return false;
-                path_.cubic_to(c1, c2, p);
-                prev_ = Prev::Cubic;
-                last_ctrl_ = c2;
-                return true;
-            }
-            case 'Q':
-            case 'T': {
-                Point c, p;
-                if (cmd == 'Q' || cmd == 'q') {
-                    c = pt(a[0], a[1]);
-                    p = pt(a[2], a[3]);
-                } else {
-                    c = prev_ == Prev::Quad ? reflect(cur, last_ctrl_) : cur;
-                    p = pt(a[0], a[1]);
-                }
-                if (!c.is_finite() || !p.is_finite()) return out_of_range(pos);
-                if (!reserve(2, true, pos)) return false;
-                path_.quad_to(c, p);
-                prev_ = Prev::Quad;
-                last_ctrl_ = c;
-                return true;
-            }
-            case 'A': {
-                const Point p = pt(a[5], a[6]);
-                if (!p.is_finite()) return out_of_range(pos);
-                if (arc_buf_.empty()) arc_buf_.resize(3 * limits::kMaxArcPieces);
-                const detail::ArcCubics r =
-                    detail::arc_cubics(cur, a[0], a[1], a[2], a[3] != 0, a[4] != 0, p, tolerance_, arc_buf_);
-                prev_ = Prev::None;
-                switch (r.kind) {
-                    case detail::ArcKind::Nothing: return true;
-                    case detail::ArcKind::Line:
-                        if (!reserve(1, true, pos)) return false;
-                        path_.line_to(p);
-                        return true;
-                    case detail::ArcKind::OutOfRange: return out_of_range(pos, "arc out of range");
-                    case detail::ArcKind::Cubics:
-                        if (!reserve(3 * static_cast<std::size_t>(r.count), true, pos)) return false;
-                        for (int i = 0; i < r.count; ++i) {
-                            const Point* q = &arc_buf_[static_cast<std::size_t>(3 * i)];
-                            path_.cubic_to(q[0], q[1], q[2]);
-                        }
-                        return true;
-                }
-                return true;
-            }
+            case 'M': return apply_move(at(rel, a[0], a[1]), pos);
+            case 'L': return apply_line(at(rel, a[0], a[1]), pos);
+            case 'H': return apply_line({rel ? path_.current_point().x + a[0] : a[0], path_.current_point().y}, pos);
+            case 'V': return apply_line({path_.current_point().x, rel ? path_.current_point().y + a[0] : a[0]}, pos);
+            case 'C': return apply_cubic(at(rel, a[0], a[1]), at(rel, a[2], a[3]), at(rel, a[4], a[5]), pos);
+            case 'S': return apply_cubic(smooth_control(Prev::Cubic), at(rel, a[0], a[1]), at(rel, a[2], a[3]), pos);
+            case 'Q': return apply_quad(at(rel, a[0], a[1]), at(rel, a[2], a[3]), pos);
+            case 'T': return apply_quad(smooth_control(Prev::Quad), at(rel, a[0], a[1]), pos);
+            case 'A': return apply_arc(a, at(rel, a[5], a[6]), pos);
             default: return true;
         }
+    }
+
+    // (x, y), relative to the current point for a lower-case command.
+    Point at(bool rel, double x, double y) const {
+        const Point cur = path_.current_point();
+        return rel ? Point{cur.x + x, cur.y + y} : Point{x, y};
+    }
+
+    // S and T: the previous control point reflected about the current point when the previous
+    // command was of the same kind, else the current point.
+    Point smooth_control(Prev kind) const {
+        const Point cur = path_.current_point();
+        return prev_ == kind ? reflect(cur, last_ctrl_) : cur;
+    }
+
+    bool apply_move(Point p, std::size_t pos) {
+        if (!p.is_finite()) return out_of_range(pos);
+        const bool merges = !path_.verbs().empty() && path_.verbs().back() == Verb::Move;
+        if (!reserve(merges ? 0 : 1, false, pos)) return false;
+        path_.move_to(p);
+        prev_ = Prev::None;
+        return true;
+    }
+
+    bool apply_line(Point p, std::size_t pos) {
+        if (!p.is_finite()) return out_of_range(pos);
+        if (!reserve(1, true, pos)) return false;
+        path_.line_to(p);
+        prev_ = Prev::None;
+        return true;
+    }
+
+    bool apply_cubic(Point c1, Point c2, Point p, std::size_t pos) {
+        if (!c1.is_finite() || !c2.is_finite() || !p.is_finite()) return out_of_range(pos);
+        if (!reserve(3, true, pos)) return false;
+        path_.cubic_to(c1, c2, p);
+        prev_ = Prev::Cubic;
+        last_ctrl_ = c2;
+        return true;
+    }
+
+    bool apply_quad(Point c, Point p, std::size_t pos) {
+        if (!c.is_finite() || !p.is_finite()) return out_of_range(pos);
+        if (!reserve(2, true, pos)) return false;
+        path_.quad_to(c, p);
+        prev_ = Prev::Quad;
+        last_ctrl_ = c;
+        return true;
+    }
+
+    // An elliptical arc with radii a[0], a[1], rotation a[2] and flags a[3], a[4], ending at p: as
+    // cubics, a line, or nothing (detail::arc_cubics).
+    bool apply_arc(const double* a, Point p, std::size_t pos) {
+        if (!p.is_finite()) return out_of_range(pos);
+        if (arc_buf_.empty()) arc_buf_.resize(3 * limits::kMaxArcPieces);
+        const detail::ArcCubics r =
+            detail::arc_cubics(path_.current_point(), a[0], a[1], a[2], a[3] != 0, a[4] != 0, p, tolerance_, arc_buf_);
+        prev_ = Prev::None;
+        switch (r.kind) {
+            case detail::ArcKind::Nothing: return true;
+            case detail::ArcKind::Line:
+                if (!reserve(1, true, pos)) return false;
+                path_.line_to(p);
+                return true;
+            case detail::ArcKind::OutOfRange: return out_of_range(pos, "arc out of range");
+            case detail::ArcKind::Cubics:
+                if (!reserve(3 * static_cast<std::size_t>(r.count), true, pos)) return false;
+                for (int i = 0; i < r.count; ++i) {
+                    const Point* q = &arc_buf_[static_cast<std::size_t>(3 * i)];
+                    path_.cubic_to(q[0], q[1], q[2]);
+                }
+                return true;
+        }
+        return true;
     }
 
     Path path_;
