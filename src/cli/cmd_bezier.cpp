@@ -43,57 +43,58 @@ void print_points(std::ostream& out, std::span<const P> pts, double scale) {
     for (const P& p : pts) out << format_point(to_p3(p), scale, point_dimension<P>) << '\n';
 }
 
+// --interpolate: the cubic through four points at t = 0, 1/3, 2/3 and 1.
 template <CurvePoint P>
-void run(const BezierOptions& o, const PointList& input) {
-    const double scale = input.scale();
-    std::ostringstream out;
+void print_interpolating_cubic(std::ostream& out, const PointList& input) {
+    if (input.points.size() != 4)
+        throw Error(ErrorKind::InvalidData,
+                    "--interpolate needs exactly 4 points (Q0..Q3 at t = 0, 1/3, 2/3, 1), got " +
+                        std::to_string(input.points.size()));
+    const auto& q = input.points;
+    const Bezier<P> c = interpolate_cubic(to_point<P>(q[0]), to_point<P>(q[1]), to_point<P>(q[2]), to_point<P>(q[3]));
+    print_points<P>(out, c.points(), input.scale());
+}
+
+// --render: the curve's figure (2-D only), with the de Casteljau construction at --construction.
+template <CurvePoint P>
+void render_figure(const BezierOptions& o, const Bezier<P>& curve) {
+    if constexpr (std::same_as<P, Point>) {
+        FigureOptions fo;
+        parse_size_option("--size", o.size, fo.width, fo.height);
+        fo.margin = std::min(24.0, std::min(fo.width, fo.height) / 10.0);
+        std::optional<double> t;
+        if (o.o_construction->count()) t = o.construction;
+        write_png(draw_bezier_figure(curve, fo, t).image, o.render);
+    } else {
+        (void)curve;
+        throw UsageError("--render draws 2-D curves only (got 3-D points)");
+    }
+}
+
+// --reduce: the curve of one degree less, its deviation on standard error.
+template <CurvePoint P>
+void print_reduced(std::ostream& out, const BezierOptions& o, const Bezier<P>& curve, double scale) {
+    const ReductionMethod m = o.method == "forward"    ? ReductionMethod::Forward
+                              : o.method == "backward" ? ReductionMethod::Backward
+                                                       : ReductionMethod::Combined;
+    const Reduction<P> r = reduce_degree(curve, m);
+    print_points<P>(out, r.curve.points(), scale);
+    std::cerr << "casteljau: max deviation " << format_number(r.max_deviation, 0) << " (sampled), bound "
+              << format_number(r.deviation_bound, 0) << "\n";
+}
+
+// The one computation the options ask for, printed to `out`.
+template <CurvePoint P>
+void print_result(std::ostream& out, const BezierOptions& o, const Bezier<P>& curve, double scale) {
     auto print = [&](const P& p) { out << format_point(to_p3(p), scale, point_dimension<P>) << '\n'; };
-
-    if (o.o_interpolate->count()) {
-        if (input.points.size() != 4)
-            throw Error(ErrorKind::InvalidData,
-                        "--interpolate needs exactly 4 points (Q0..Q3 at t = 0, 1/3, 2/3, 1), got " +
-                            std::to_string(input.points.size()));
-        const auto& q = input.points;
-        const Bezier<P> c =
-            interpolate_cubic(to_point<P>(q[0]), to_point<P>(q[1]), to_point<P>(q[2]), to_point<P>(q[3]));
-        print_points<P>(out, c.points(), scale);
-        std::cout << out.str();
-        return;
-    }
-
-    std::vector<P> pts;
-    for (const Point3& p : input.points) pts.push_back(to_point<P>(p));
-    const Bezier<P> curve(std::move(pts));
-
-    if (o.o_render->count()) {
-        if constexpr (std::same_as<P, Point>) {
-            FigureOptions fo;
-            parse_size_option("--size", o.size, fo.width, fo.height);
-            fo.margin = std::min(24.0, std::min(fo.width, fo.height) / 10.0);
-            std::optional<double> t;
-            if (o.o_construction->count()) t = o.construction;
-            write_png(draw_bezier_figure(curve, fo, t).image, o.render);
-        } else {
-            throw UsageError("--render draws 2-D curves only (got 3-D points)");
-        }
-        return;
-    }
     if (o.o_eval->count()) {
         print(o.o_derivative->count() ? curve.derivative(o.derivative, o.eval) : curve.eval(o.eval));
     } else if (o.o_derivative->count()) {
-        const auto d = curve.derivative_points(o.derivative);
-        print_points<P>(out, d, scale);
+        print_points<P>(out, curve.derivative_points(o.derivative), scale);
     } else if (o.o_elevate->count()) {
         print_points<P>(out, curve.elevated(o.times).points(), scale);
     } else if (o.o_reduce->count()) {
-        const ReductionMethod m = o.method == "forward"    ? ReductionMethod::Forward
-                                  : o.method == "backward" ? ReductionMethod::Backward
-                                                           : ReductionMethod::Combined;
-        const Reduction<P> r = reduce_degree(curve, m);
-        print_points<P>(out, r.curve.points(), scale);
-        std::cerr << "casteljau: max deviation " << format_number(r.max_deviation, 0) << " (sampled), bound "
-                  << format_number(r.deviation_bound, 0) << "\n";
+        print_reduced(out, o, curve, scale);
     } else if (o.o_split->count()) {
         const auto [l, r] = curve.split(o.split);
         print_points<P>(out, l.points(), scale);
@@ -123,6 +124,21 @@ void run(const BezierOptions& o, const PointList& input) {
             k = curve.curvature(o.curvature);
         out << (std::isinf(k) ? std::string("inf") : format_number(k, 0)) << '\n';
     }
+}
+
+template <CurvePoint P>
+void run(const BezierOptions& o, const PointList& input) {
+    std::ostringstream out;
+    if (o.o_interpolate->count()) {
+        print_interpolating_cubic<P>(out, input);
+        std::cout << out.str();
+        return;
+    }
+    std::vector<P> pts;
+    for (const Point3& p : input.points) pts.push_back(to_point<P>(p));
+    const Bezier<P> curve(std::move(pts));
+    if (o.o_render->count()) return render_figure(o, curve);
+    print_result(out, o, curve, input.scale());
     std::cout << out.str();
 }
 
