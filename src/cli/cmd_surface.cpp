@@ -85,6 +85,63 @@ std::vector<T> grid_of(const simdjson::dom::element& e, const std::string& path,
     return out;
 }
 
+// "type": bezier (the default), bspline or nurbs.
+std::string surface_type(const simdjson::dom::object& obj, const std::string& path) {
+    simdjson::dom::element e;
+    if (obj["type"].get(e) != simdjson::SUCCESS) return "bezier";
+    std::string_view t;
+    if (e.get_string().get(t) != simdjson::SUCCESS) bad(path, "\"type\" must be a string", ErrorKind::Parse);
+    std::string type(t);
+    if (type != "bezier" && type != "bspline" && type != "nurbs")
+        bad(path, "\"type\" must be \"bezier\", \"bspline\" or \"nurbs\", got \"" + type + "\"");
+    return type;
+}
+
+// "degree": [m, n], each an integer 1..64.
+std::pair<int, int> surface_degree(const simdjson::dom::object& obj, const std::string& path) {
+    simdjson::dom::element e;
+    if (obj["degree"].get(e) != simdjson::SUCCESS) bad(path, "missing \"degree\": [m, n]");
+    const std::vector<double> deg = numbers(e, path, "degree");
+    if (deg.size() != 2 || deg[0] != std::floor(deg[0]) || deg[1] != std::floor(deg[1]) || deg[0] < 1 || deg[1] < 1 ||
+        deg[0] > 64 || deg[1] > 64)
+        bad(path, "\"degree\" must be two integers [m, n], each 1..64");
+    return {static_cast<int>(deg[0]), static_cast<int>(deg[1])};
+}
+
+// "points": rows of [x, y, z] control points, all rows of one length.
+std::vector<Point3> control_net(const simdjson::dom::object& obj, const std::string& path, std::size_t& rows,
+                                std::size_t& cols) {
+    simdjson::dom::element e;
+    if (obj["points"].get(e) != simdjson::SUCCESS) bad(path, "missing \"points\"");
+    return grid_of<Point3>(e, path, "points", rows, cols,
+                           [&](const simdjson::dom::element& x, const std::string& where) {
+                               const std::vector<double> c = numbers(x, path, where);
+                               if (c.size() != 3) bad(path, where + " must be [x, y, z]");
+                               return Point3{c[0], c[1], c[2]};
+                           });
+}
+
+// A knot vector member, or the clamped knots of `degree` over `count` control points.
+std::vector<double> knots_or_clamped(const simdjson::dom::object& obj, const std::string& path, const char* member,
+                                     int degree, std::size_t count) {
+    simdjson::dom::element e;
+    if (obj[member].get(e) == simdjson::SUCCESS) return numbers(e, path, member);
+    return clamped_knots(degree, count);
+}
+
+// "weights": a grid of the points' shape; all 1 when absent.
+std::vector<double> weight_grid(const simdjson::dom::object& obj, const std::string& path, std::size_t rows,
+                                std::size_t cols) {
+    simdjson::dom::element e;
+    if (obj["weights"].get(e) != simdjson::SUCCESS) return std::vector<double>(rows * cols, 1.0);
+    std::size_t wr = 0, wc = 0;
+    std::vector<double> w = grid_of<double>(
+        e, path, "weights", wr, wc,
+        [&](const simdjson::dom::element& x, const std::string& where) { return number(x, path, where); });
+    if (wr != rows || wc != cols) bad(path, "\"weights\" must have the shape of \"points\"");
+    return w;
+}
+
 void run(const SurfaceOptions& o) {
     const std::string& path = o.file;
     const std::string text = read_text_input(path);
@@ -96,31 +153,10 @@ void run(const SurfaceOptions& o) {
     simdjson::dom::object obj;
     if (doc.get_object().get(obj) != simdjson::SUCCESS)
         bad(path, "the top level must be a JSON object", ErrorKind::Parse);
-
-    std::string type = "bezier";
-    simdjson::dom::element e;
-    if (obj["type"].get(e) == simdjson::SUCCESS) {
-        std::string_view t;
-        if (e.get_string().get(t) != simdjson::SUCCESS) bad(path, "\"type\" must be a string", ErrorKind::Parse);
-        type = std::string(t);
-        if (type != "bezier" && type != "bspline" && type != "nurbs")
-            bad(path, "\"type\" must be \"bezier\", \"bspline\" or \"nurbs\", got \"" + type + "\"");
-    }
-    if (obj["degree"].get(e) != simdjson::SUCCESS) bad(path, "missing \"degree\": [m, n]");
-    const std::vector<double> deg = numbers(e, path, "degree");
-    if (deg.size() != 2 || deg[0] != std::floor(deg[0]) || deg[1] != std::floor(deg[1]) || deg[0] < 1 || deg[1] < 1 ||
-        deg[0] > 64 || deg[1] > 64)
-        bad(path, "\"degree\" must be two integers [m, n], each 1..64");
-    const int m = static_cast<int>(deg[0]), n = static_cast<int>(deg[1]);
-
-    if (obj["points"].get(e) != simdjson::SUCCESS) bad(path, "missing \"points\"");
+    const std::string type = surface_type(obj, path);
+    const auto [m, n] = surface_degree(obj, path);
     std::size_t rows = 0, cols = 0;
-    std::vector<Point3> net =
-        grid_of<Point3>(e, path, "points", rows, cols, [&](const simdjson::dom::element& x, const std::string& where) {
-            const std::vector<double> c = numbers(x, path, where);
-            if (c.size() != 3) bad(path, where + " must be [x, y, z]");
-            return Point3{c[0], c[1], c[2]};
-        });
+    std::vector<Point3> net = control_net(obj, path, rows, cols);
 
     SurfaceDrawing d;
     d.projection = o.projection == "ortho"     ? Projection::Orthographic
@@ -140,28 +176,14 @@ void run(const SurfaceOptions& o) {
         write_png(draw_surface_figure(BezierPatch<Point3>(m, n, std::move(net)), d, fo).image, o.render);
         return;
     }
-    std::vector<double> ku, kv;
-    if (obj["knots_u"].get(e) == simdjson::SUCCESS)
-        ku = numbers(e, path, "knots_u");
-    else
-        ku = clamped_knots(m, rows);
-    if (obj["knots_v"].get(e) == simdjson::SUCCESS)
-        kv = numbers(e, path, "knots_v");
-    else
-        kv = clamped_knots(n, cols);
+    std::vector<double> ku = knots_or_clamped(obj, path, "knots_u", m, rows);
+    std::vector<double> kv = knots_or_clamped(obj, path, "knots_v", n, cols);
     if (type == "bspline") {
         const BSplineSurface<Point3> s(m, n, rows, cols, std::move(net), std::move(ku), std::move(kv));
         write_png(draw_surface_figure(s, d, fo).image, o.render);
         return;
     }
-    std::vector<double> w(rows * cols, 1.0);
-    if (obj["weights"].get(e) == simdjson::SUCCESS) {
-        std::size_t wr = 0, wc = 0;
-        w = grid_of<double>(e, path, "weights", wr, wc, [&](const simdjson::dom::element& x, const std::string& where) {
-            return number(x, path, where);
-        });
-        if (wr != rows || wc != cols) bad(path, "\"weights\" must have the shape of \"points\"");
-    }
+    std::vector<double> w = weight_grid(obj, path, rows, cols);
     const NurbsSurface<Point3> s(m, n, rows, cols, std::move(net), std::move(w), std::move(ku), std::move(kv));
     write_png(draw_surface_figure(s, d, fo).image, o.render);
 }
