@@ -112,6 +112,14 @@ private:
     Impl* impl_;
 };
 
+// Renders the pyramid (render_tiles) into `output`: an MBTiles file when the name ends in
+// ".mbtiles" (`name` in its metadata, the Web Mercator world as its bounds), else a folder tree
+// DIR/z/x/y.png, where opts.resume first removes the temporary files of interrupted writes and then
+// skips the tiles already there. Throws Error(InvalidArgument) for opts.resume with an MBTiles
+// output (written whole), and as render_tiles and the writers do.
+TileStats write_tiles(const MapData& data, const MapStyle& style, const TileOptions& opts, const std::string& output,
+                      const std::string& name, const std::function<void(std::uint64_t, std::uint64_t)>& progress = {});
+
 // Joins MBTiles files (for example one per shard) into `output` (atomically, as above): every
 // tile of every input, metadata from the first input with minzoom/maxzoom/bounds widened to all.
 void merge_mbtiles(const std::vector<std::string>& inputs, const std::string& output);

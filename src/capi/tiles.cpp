@@ -1,6 +1,5 @@
 // C API: tile pyramids (casteljau_map.h, casteljau_tile_*), written the way `casteljau tiles` does.
 #include <string>
-#include <string_view>
 
 #include "capi/handles.hpp"
 
@@ -14,11 +13,6 @@ namespace {
 template <class F>
 casteljau_status edit(casteljau_tile_options* options, F&& f) noexcept {
     return guard([&] { f(*need(options, "options")); });
-}
-
-bool is_mbtiles(std::string_view output) {
-    constexpr std::string_view kSuffix = ".mbtiles";
-    return output.size() >= kSuffix.size() && output.substr(output.size() - kSuffix.size()) == kSuffix;
 }
 
 // The pyramid's options and style at the options' scale: pixels per tile, buffer, stroke widths
@@ -36,27 +30,6 @@ MapStyle scaled_style(const casteljau_map_style* style, int scale) {
     for (MapLayerStyle& l : st.layers) l.stroke_width *= scale;
     st.point_radius *= scale;
     return st;
-}
-
-TileStats write_pyramid(const MapData& data, const MapStyle& style, const TileOptions& to,
-                        const casteljau_tile_options& o, const std::string& output,
-                        const std::function<void(std::uint64_t, std::uint64_t)>& progress) {
-    if (is_mbtiles(output)) {
-        if (to.resume)
-            throw Error(ErrorKind::InvalidArgument,
-                        "resume works with a folder output (an .mbtiles file is written whole)");
-        MbtilesWriter w(output, o.name, to.min_zoom, to.max_zoom, Rect{-180, -85.0511287798, 180, 85.0511287798});
-        const TileStats st = render_tiles(
-            data, style, to, [&](int z, int x, int y, const std::vector<std::uint8_t>& png) { w.write(z, x, y, png); },
-            {}, progress);
-        w.finish();
-        return st;
-    }
-    TileFolderWriter w(output);
-    if (to.resume) w.remove_interrupted_writes();
-    return render_tiles(
-        data, style, to, [&](int z, int x, int y, const std::vector<std::uint8_t>& png) { w.write(z, x, y, png); },
-        [&](int z, int x, int y) { return w.exists(z, x, y); }, progress);
 }
 
 }  // namespace
@@ -149,7 +122,7 @@ casteljau_status casteljau_map_render_tiles(const casteljau_map* map, const cast
         auto report = [&](std::uint64_t done, std::uint64_t total) {
             if (progress && progress(done, total, user) != 0) throw casteljau::capi::Cancelled{};
         };
-        const TileStats st = write_pyramid(data, scaled_style(style, o.scale), scaled_options(o), o, out, report);
+        const TileStats st = write_tiles(data, scaled_style(style, o.scale), scaled_options(o), out, o.name, report);
         if (stats) *stats = {st.metatiles, st.written, st.skipped_empty, st.skipped_existing};
     });
 }

@@ -241,4 +241,24 @@ void merge_mbtiles(const std::vector<std::string>& inputs, const std::string& ou
     out.finish();
 }
 
+TileStats write_tiles(const MapData& data, const MapStyle& style, const TileOptions& opts, const std::string& output,
+                      const std::string& name, const std::function<void(std::uint64_t, std::uint64_t)>& progress) {
+    if (output.ends_with(".mbtiles")) {
+        if (opts.resume)
+            throw Error(ErrorKind::InvalidArgument,
+                        "resume works with a folder output (an .mbtiles file is written whole)");
+        MbtilesWriter w(output, name, opts.min_zoom, opts.max_zoom, Rect{-180, -85.0511287798, 180, 85.0511287798});
+        const TileStats st = render_tiles(
+            data, style, opts,
+            [&](int z, int x, int y, const std::vector<std::uint8_t>& png) { w.write(z, x, y, png); }, {}, progress);
+        w.finish();
+        return st;
+    }
+    TileFolderWriter w(output);
+    if (opts.resume) w.remove_interrupted_writes();
+    return render_tiles(
+        data, style, opts, [&](int z, int x, int y, const std::vector<std::uint8_t>& png) { w.write(z, x, y, png); },
+        [&](int z, int x, int y) { return w.exists(z, x, y); }, progress);
+}
+
 }  // namespace casteljau

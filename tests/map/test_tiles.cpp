@@ -215,3 +215,30 @@ TEST_CASE("tiles: resume, skip-empty, and bad input", "[tiles][cli][errors]") {
     CHECK(list_metatiles(0, 3, 8).size() == 1 + 1 + 1 + 1);
     CHECK(shard_range(10, 2, 3) == std::pair<std::size_t, std::size_t>{6, 10});
 }
+
+TEST_CASE("tiles: write_tiles picks the store by the output's name and resumes folders only", "[tiles]") {
+    const fs::path dir = casteljau::test::scratch_dir("tiles_write");
+    const MapData data = read_map_file(kWorld);
+    TileOptions to;
+    to.max_zoom = 1;
+    to.metatile = 2;
+    const TileStats folder = write_tiles(data, MapStyle{}, to, (dir / "folder").string(), "w");
+    CHECK(folder.written == 5);
+    const auto files = folder_files(dir / "folder");
+    CHECK(files.size() == 5);
+    CHECK(files.count("1/1/0.png") == 1);
+    const TileStats db = write_tiles(data, MapStyle{}, to, (dir / "w.mbtiles").string(), "w");
+    CHECK(db.written == 5);
+    CHECK(mbtiles_files(dir / "w.mbtiles") == files);
+    CHECK(mbtiles_metadata(dir / "w.mbtiles").at("name") == "w");
+
+    // Resume: a tile removed from the folder is drawn again, the others are kept.
+    fs::remove(dir / "folder" / "1" / "1" / "0.png");
+    to.resume = true;
+    const TileStats again = write_tiles(data, MapStyle{}, to, (dir / "folder").string(), "w");
+    CHECK(again.written == 1);
+    CHECK(again.skipped_existing == 4);
+    CHECK(folder_files(dir / "folder") == files);
+    CHECK_THROWS_AS(write_tiles(data, MapStyle{}, to, (dir / "r.mbtiles").string(), "w"), Error);
+    CHECK(!fs::exists(dir / "r.mbtiles"));
+}
