@@ -84,38 +84,50 @@ std::optional<std::vector<std::uint8_t>> image_bytes(Context& cx, std::string_vi
     }
 }
 
-void image(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& cm, Viewport vp, double opacity) {
-    if (!st.visible) return;
-    const std::optional<std::vector<std::uint8_t>> bytes = image_bytes(cx, href(n));
-    if (!bytes) return;
+namespace {
+
+// An image's content: a decoded raster, or a parsed SVG document, with its intrinsic size.
+struct ImageContent {
     std::shared_ptr<const Pixmap> raster;
     std::shared_ptr<const SvgDocument> svg;
     double iw = 0, ih = 0;
+};
+
+// Decodes the bytes (an SVG document one level deeper, whose warnings become this document's;
+// else PNG, JPEG, GIF or WebP); nothing, with a warning, when that fails or nests too deep.
+std::optional<ImageContent> load_image(Context& cx, const std::vector<std::uint8_t>& bytes) {
+    ImageContent c;
     try {
-        if (sniff_image(*bytes) == ImageFormat::Svg) {
+        if (sniff_image(bytes) == ImageFormat::Svg) {
             if (cx.options.nesting + 1 > cx.limits.svg_image_nesting) {
                 warn(cx, "SVG images nested deeper than " + std::to_string(cx.limits.svg_image_nesting) + "; skipped");
-                return;
+                return std::nullopt;
             }
             SvgOptions inner = cx.options;
             inner.nesting++;
             inner.export_id.clear();  // an image is drawn whole
-            svg = std::make_shared<const SvgDocument>(SvgDocument::parse(
-                std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()), inner));
-            // Its warnings are this document's too (a skipped image deep in a chain, a bad
-            // path inside an icon): the reader of this file would otherwise never see them.
-            for (const std::string& w : svg->warnings()) warn(cx, "in an SVG image: " + w);
-            iw = svg->intrinsic_width();
-            ih = svg->intrinsic_height();
+            c.svg = std::make_shared<const SvgDocument>(
+                SvgDocument::parse(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), inner));
+            // Its warnings are this document's too (a skipped image deep in a chain, a bad path
+            // inside an icon): the reader of this file would otherwise never see them.
+            for (const std::string& w : c.svg->warnings()) warn(cx, "in an SVG image: " + w);
+            c.iw = c.svg->intrinsic_width();
+            c.ih = c.svg->intrinsic_height();
         } else {
-            raster = std::make_shared<const Pixmap>(decode_image(*bytes));
-            iw = raster->width();
-            ih = raster->height();
+            c.raster = std::make_shared<const Pixmap>(decode_image(bytes));
+            c.iw = c.raster->width();
+            c.ih = c.raster->height();
         }
     } catch (const Error& e) {
         warn(cx, std::string("image not drawn: ") + e.what());
-        return;
+        return std::nullopt;
     }
+    return c;
+}
+
+// The image's width and height: its attributes (or CSS properties), auto or missing ones from the
+// intrinsic size, keeping its aspect ratio when only one is given.
+std::pair<double, double> image_size(Context& cx, const pugi::xml_node& n, Viewport vp, double iw, double ih) {
     auto size_attr = [&](const char* name, double percent_of) -> std::optional<double> {
         std::string_view v = trim(n.attribute(name).value());
         for (const auto& [k, val] : properties(cx, n))
@@ -124,18 +136,26 @@ void image(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& 
         return parse_length(v, percent_of, kUnknownFontSize, cx.options.dpi);
     };
     std::optional<double> w = size_attr("width", vp.w), h = size_attr("height", vp.h);
-    if (!w && !h) {
-        w = iw;
-        h = ih;
-    } else if (!w) {
-        w = *h * iw / ih;
-    } else if (!h) {
-        h = *w * ih / iw;
-    }
-    if (!(*w > 0) || !(*h > 0) || !(iw > 0) || !(ih > 0)) return;
+    if (!w && !h) return {iw, ih};
+    if (!w) return {*h * iw / ih, *h};
+    if (!h) return {*w, *w * ih / iw};
+    return {*w, *h};
+}
+
+}  // namespace
+
+void image(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& cm, Viewport vp, double opacity) {
+    if (!st.visible) return;
+    const std::optional<std::vector<std::uint8_t>> bytes = image_bytes(cx, href(n));
+    if (!bytes) return;
+    const std::optional<ImageContent> content = load_image(cx, *bytes);
+    if (!content) return;
+    const auto& [raster, svg, iw, ih] = *content;
+    const auto [w, h] = image_size(cx, n, vp, iw, ih);
+    if (!(w > 0) || !(h > 0) || !(iw > 0) || !(ih > 0)) return;
     const double x = length_attr(cx, n, "x", vp.w), y = length_attr(cx, n, "y", vp.h);
     const std::string_view par = n.attribute("preserveAspectRatio").value();
-    const Affine m = cm * Affine::translate(x, y) * viewbox_transform(Rect::from_xywh(0, 0, iw, ih), par, *w, *h);
+    const Affine m = cm * Affine::translate(x, y) * viewbox_transform(Rect::from_xywh(0, 0, iw, ih), par, w, h);
     const bool slice = par.find("slice") != std::string_view::npos;
     const std::string rendering = inherited(cx, n, "image-rendering");
     const bool smooth = !(rendering == "optimizeSpeed" || rendering == "pixelated" || rendering == "crisp-edges");
@@ -154,7 +174,7 @@ void image(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& 
         cx.items.push_back(std::move(it));
     };
     if (slice || svg)
-        clipped(cx, Rect::from_xywh(x, y, *w, *h), cm, draw);
+        clipped(cx, Rect::from_xywh(x, y, w, h), cm, draw);
     else
         draw();
 }
