@@ -48,72 +48,88 @@ std::string ident(std::string_view s, std::size_t& i) {
     return std::string(s.substr(b, i - b));
 }
 
-// Parses one selector (no commas). False when it uses anything unsupported.
+// The body of an attribute selector, between [ and ]: a name, then optionally an operator (=, ~=,
+// ^=, $=, *=, |=) and a value, quoted or not. False when it is not one.
+bool parse_attribute_test(std::string_view body, AttributeTest& a) {
+    std::size_t j = 0;
+    a.name = ident(body, j);
+    if (a.name.empty()) return false;
+    body = trim(body.substr(j));
+    if (body.empty()) return true;
+    if (body[0] == '=') {
+        a.op = '=';
+        body.remove_prefix(1);
+    } else if (body.size() >= 2 && body[1] == '=' &&
+               std::string_view("~^$*|").find(body[0]) != std::string_view::npos) {
+        a.op = body[0];
+        body.remove_prefix(2);
+    } else {
+        return false;
+    }
+    body = trim(body);
+    if (body.size() >= 2 && (body.front() == '"' || body.front() == '\'') && body.back() == body.front())
+        body = body.substr(1, body.size() - 2);
+    a.value = std::string(body);
+    return true;
+}
+
+// The counts a selector's specificity is made of.
+struct Specificity {
+    int ids = 0, classes = 0, types = 0;
+};
+
+// One compound selector at s[i] (a type or *, then #id, .class, [attribute] and :first-child, up
+// to white space or >), counted into `sp`. False when it is empty or uses anything unsupported.
+bool parse_compound(std::string_view s, std::size_t& i, Compound& c, Specificity& sp) {
+    bool any = false;
+    if (s[i] == '*') {
+        ++i;
+        any = true;
+    } else if (ident_char(s[i])) {
+        c.type = ident(s, i);
+        ++sp.types;
+        any = true;
+    }
+    while (i < s.size() && !is_space(s[i]) && s[i] != '>') {
+        const char k = s[i++];
+        if (k == '#' || k == '.') {
+            std::string name = ident(s, i);
+            if (name.empty()) return false;
+            (k == '#' ? c.ids : c.classes).push_back(std::move(name));
+            (k == '#' ? sp.ids : sp.classes)++;
+        } else if (k == '[') {
+            const std::size_t close = s.find(']', i);
+            if (close == std::string_view::npos) return false;
+            AttributeTest a;
+            if (!parse_attribute_test(trim(s.substr(i, close - i)), a)) return false;
+            i = close + 1;
+            c.attributes.push_back(std::move(a));
+            ++sp.classes;
+        } else if (k == ':') {
+            if (ident(s, i) != "first-child") return false;
+            c.first_child = true;
+            ++sp.classes;
+        } else {
+            return false;
+        }
+        any = true;
+    }
+    return any;
+}
+
+// Parses one selector (no commas): compounds joined by white space (descendant) or > (child).
+// False when it uses anything unsupported.
 bool parse_selector(std::string_view s, Selector& out) {
     s = trim(s);
     if (s.empty()) return false;
     std::size_t i = 0;
     char pending = ' ';
-    int ids = 0, classes = 0, types = 0;
+    Specificity sp;
     while (i < s.size()) {
         if (out.compounds.size() >= kMaxCompounds) return false;
         Compound c;
         c.combinator = pending;
-        bool any = false;
-        if (s[i] == '*') {
-            ++i;
-            any = true;
-        } else if (ident_char(s[i])) {
-            c.type = ident(s, i);
-            ++types;
-            any = true;
-        }
-        while (i < s.size() && !is_space(s[i]) && s[i] != '>') {
-            const char k = s[i++];
-            if (k == '#' || k == '.') {
-                std::string name = ident(s, i);
-                if (name.empty()) return false;
-                (k == '#' ? c.ids : c.classes).push_back(std::move(name));
-                (k == '#' ? ids : classes)++;
-            } else if (k == '[') {
-                const std::size_t close = s.find(']', i);
-                if (close == std::string_view::npos) return false;
-                std::string_view body = trim(s.substr(i, close - i));
-                i = close + 1;
-                AttributeTest a;
-                std::size_t j = 0;
-                a.name = ident(body, j);
-                if (a.name.empty()) return false;
-                body = trim(body.substr(j));
-                if (!body.empty()) {
-                    if (body[0] == '=') {
-                        a.op = '=';
-                        body.remove_prefix(1);
-                    } else if (body.size() >= 2 && body[1] == '=' &&
-                               std::string_view("~^$*|").find(body[0]) != std::string_view::npos) {
-                        a.op = body[0];
-                        body.remove_prefix(2);
-                    } else {
-                        return false;
-                    }
-                    body = trim(body);
-                    if (body.size() >= 2 && (body.front() == '"' || body.front() == '\'') &&
-                        body.back() == body.front())
-                        body = body.substr(1, body.size() - 2);
-                    a.value = std::string(body);
-                }
-                c.attributes.push_back(std::move(a));
-                ++classes;
-            } else if (k == ':') {
-                if (ident(s, i) != "first-child") return false;
-                c.first_child = true;
-                ++classes;
-            } else {
-                return false;
-            }
-            any = true;
-        }
-        if (!any) return false;
+        if (!parse_compound(s, i, c, sp)) return false;
         out.compounds.push_back(std::move(c));
         while (i < s.size() && is_space(s[i])) ++i;
         pending = ' ';
@@ -124,7 +140,7 @@ bool parse_selector(std::string_view s, Selector& out) {
             if (i >= s.size()) return false;
         }
     }
-    out.specificity = ids * 10000 + std::min(classes, 99) * 100 + std::min(types, 99);
+    out.specificity = sp.ids * 10000 + std::min(sp.classes, 99) * 100 + std::min(sp.types, 99);
     return !out.compounds.empty();
 }
 
