@@ -94,11 +94,9 @@ void halve(const std::vector<double>& c, std::vector<double>& left, std::vector<
     }
 }
 
-}  // namespace
-
-std::vector<double> bernstein_roots(std::span<const double> coeffs) {
-    std::vector<double> roots;
-    if (coeffs.size() < 2) return roots;
+// The coefficients divided by their largest magnitude (checked: degree, finite values); empty when
+// they are all (nearly) zero.
+std::vector<double> normalized(std::span<const double> coeffs) {
     if (coeffs.size() > static_cast<std::size_t>(limits::kMaxBezierDegree) + 1)
         throw Error(ErrorKind::Limit, "bernstein_roots: degree " + std::to_string(coeffs.size() - 1) +
                                           " exceeds the limit of " + std::to_string(limits::kMaxBezierDegree));
@@ -107,16 +105,60 @@ std::vector<double> bernstein_roots(std::span<const double> coeffs) {
         if (!std::isfinite(c)) throw Error(ErrorKind::InvalidData, "bernstein_roots: non-finite coefficient");
         scale = std::max(scale, std::abs(c));
     }
-    if (scale <= 1e-300) return roots;  // identically zero: no isolated roots
+    if (scale <= 1e-300) return {};  // identically zero: no isolated roots
+    std::vector<double> c(coeffs.begin(), coeffs.end());
+    for (double& x : c) x /= scale;
+    return c;
+}
 
+// The one simple root of c on [a, b] (its end values of opposite signs): bisection in the local
+// parameter until the global interval cannot shrink any more.
+double bisect_root(const std::vector<double>& c, double a, double b, std::vector<double>& scratch) {
+    double lo = 0, hi = 1;
+    const double sa = c.front();
+    for (int k = 0; k < 64; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        const double ga = a + (b - a) * lo, gb = a + (b - a) * hi;
+        if (!(gb - ga > 2e-16 * std::max(1.0, std::abs(gb)))) break;
+        const double fm = eval_scalar(c, mid, scratch);
+        if (fm == 0) {
+            lo = hi = mid;
+            break;
+        }
+        if ((fm > 0) == (sa > 0))
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return a + (b - a) * 0.5 * (lo + hi);
+}
+
+// The roots sorted, clamped to [0, 1], those within 1e-14 of the previous one dropped.
+std::vector<double> distinct_roots(std::vector<double> roots) {
+    std::sort(roots.begin(), roots.end());
+    std::vector<double> out;
+    for (double r : roots) {
+        r = std::clamp(r, 0.0, 1.0);
+        if (out.empty() || r - out.back() > 1e-14) out.push_back(r);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<double> bernstein_roots(std::span<const double> coeffs) {
+    std::vector<double> roots;
+    if (coeffs.size() < 2) return roots;
+    std::vector<double> c0 = normalized(coeffs);
+    if (c0.empty()) return roots;
+    // Intervals of the parameter with the coefficients of the polynomial restricted to them, halved
+    // until Descartes' rule of signs shows no root or exactly one simple root inside.
     struct Item {
         std::vector<double> c;
         double a, b;
         int depth;
     };
     std::vector<Item> stack;
-    std::vector<double> c0(coeffs.begin(), coeffs.end());
-    for (double& x : c0) x /= scale;
     if (c0.back() == 0) roots.push_back(1.0);
     stack.push_back({std::move(c0), 0.0, 1.0, 0});
     std::vector<double> scratch, left, right;
@@ -124,7 +166,6 @@ std::vector<double> bernstein_roots(std::span<const double> coeffs) {
     constexpr std::size_t kMaxWork =
         50000;  // intervals examined: a safety net (about 64 roots x 2 x 52 levels are needed at most)
     std::size_t work = 0;
-
     while (!stack.empty()) {
         Item it = std::move(stack.back());
         stack.pop_back();
@@ -132,27 +173,8 @@ std::vector<double> bernstein_roots(std::span<const double> coeffs) {
         if (it.c.front() == 0) roots.push_back(it.a);
         const int v = sign_changes(it.c);
         if (v == 0) continue;
-        const double fa = it.c.front(), fb = it.c.back();
-        if (v == 1 && fa != 0 && fb != 0) {
-            // Exactly one simple root inside, and f(a), f(b) have opposite signs: bisect in the
-            // local parameter until the global interval cannot shrink any more.
-            double lo = 0, hi = 1;
-            const double sa = fa;
-            for (int k = 0; k < 64; ++k) {
-                const double mid = 0.5 * (lo + hi);
-                const double ga = it.a + (it.b - it.a) * lo, gb = it.a + (it.b - it.a) * hi;
-                if (!(gb - ga > 2e-16 * std::max(1.0, std::abs(gb)))) break;
-                const double fm = eval_scalar(it.c, mid, scratch);
-                if (fm == 0) {
-                    lo = hi = mid;
-                    break;
-                }
-                if ((fm > 0) == (sa > 0))
-                    lo = mid;
-                else
-                    hi = mid;
-            }
-            roots.push_back(it.a + (it.b - it.a) * 0.5 * (lo + hi));
+        if (v == 1 && it.c.front() != 0 && it.c.back() != 0) {
+            roots.push_back(bisect_root(it.c, it.a, it.b, scratch));
             continue;
         }
         if (it.depth >= kMaxDepth) {
@@ -164,13 +186,7 @@ std::vector<double> bernstein_roots(std::span<const double> coeffs) {
         stack.push_back({right, m, it.b, it.depth + 1});
         stack.push_back({left, it.a, m, it.depth + 1});
     }
-    std::sort(roots.begin(), roots.end());
-    std::vector<double> out;
-    for (double r : roots) {
-        r = std::clamp(r, 0.0, 1.0);
-        if (out.empty() || r - out.back() > 1e-14) out.push_back(r);
-    }
-    return out;
+    return distinct_roots(std::move(roots));
 }
 
 }  // namespace casteljau
