@@ -224,6 +224,94 @@ void run(const SplineOptions& o, const CurveFile& file) {
     std::cout << out.str();
 }
 
+// Options that apply to some kinds only are usage errors with the others.
+void check_kind_options(const SplineOptions& o) {
+    const bool knotted = is_knot_kind(o.kind);
+    auto only = [&](CLI::Option* opt, bool allowed, const char* kinds) {
+        if (opt->count() && !allowed)
+            throw UsageError("spline: " + opt->get_name() + " applies to --kind " + kinds + " only");
+    };
+    only(o.o_degree, knotted, "bspline or nurbs");
+    only(o.o_knots, knotted, "bspline or nurbs");
+    only(o.o_knot_type, knotted, "bspline or nurbs");
+    only(o.o_basis_at, knotted, "bspline or nurbs");
+    only(o.o_basis, knotted, "bspline or nurbs");
+    only(o.o_weights, o.kind == "nurbs", "nurbs");
+    only(o.o_tangents, o.kind == "hermite", "hermite");
+    only(o.o_tension, o.kind == "cardinal" || o.kind == "kb", "cardinal or kb");
+    only(o.o_continuity, o.kind == "kb", "kb");
+    only(o.o_bias, o.kind == "kb", "kb");
+    only(o.o_ends, o.kind == "cardinal" || o.kind == "catmull-rom" || o.kind == "kb", "cardinal, catmull-rom or kb");
+    only(o.o_param, o.kind == "natural", "natural");
+    if (o.o_knots->count() && o.o_knot_type->count()) throw UsageError("spline: give --knots or --knot-type, not both");
+}
+
+// One source of points, one action, and options that go with them.
+void check_spline_usage(const SplineOptions& o) {
+    const int sources = static_cast<int>(o.o_points->count() > 0) + static_cast<int>(o.o_file->count() > 0);
+    if (sources != 1) throw UsageError("spline: give exactly one of --points or --points-file");
+    const bool pictures = o.o_render->count() > 0 || o.o_basis->count() > 0;
+    const int actions = static_cast<int>(o.o_to_bezier->count() > 0) + static_cast<int>(o.o_eval->count() > 0) +
+                        static_cast<int>(o.o_basis_at->count() > 0) + static_cast<int>(pictures);
+    if (actions != 1)
+        throw UsageError("spline: choose exactly one action: --to-bezier, --eval, --basis-at or --render/--basis");
+    if (o.o_size->count() && !pictures) throw UsageError("spline: --size applies to --render and --basis only");
+    if (o.o_derivative->count() && !o.o_eval->count()) throw UsageError("spline: --derivative needs --eval");
+    check_kind_options(o);
+}
+
+void run_spline(const SplineOptions& o) {
+    check_spline_usage(o);
+    CurveFile file;
+    if (o.o_points->count())
+        file.points = parse_points_option("--points", o.points);
+    else
+        file = read_curve_file(o.points_file);
+    const bool pictures = o.o_render->count() > 0 || o.o_basis->count() > 0;
+    if (pictures && file.points.dimension == 3) throw UsageError("spline: --render and --basis draw 2-D curves only");
+    if (file.points.dimension == 3)
+        run<Point3>(o, file);
+    else
+        run<Point>(o, file);
+}
+
+// The spline's own options: knots and weights (B-splines, NURBS), tangents, tension, continuity,
+// bias, ends (interpolating kinds), parametrisation (natural).
+void add_shape_options(CLI::App* sub, SplineOptions& o) {
+    o.o_degree =
+        sub->add_option("--degree", o.degree, "bspline/nurbs degree, 1..64 (default 3)")->check(CLI::Range(1, 64));
+    o.o_knots =
+        sub->add_option("--knots", o.knots, "bspline/nurbs knot vector \"u0 u1 ...\" (count = points + degree + 1)");
+    o.o_knot_type = sub->add_option("--knot-type", o.knot_type,
+                                    "Without --knots: clamped (default, on [0, 1]), uniform or periodic")
+                        ->check(CLI::IsMember({"clamped", "uniform", "periodic"}));
+    o.o_weights = sub->add_option("--weights", o.weights, "nurbs weights \"w0 w1 ...\" (positive; default all 1)");
+    o.o_tangents = sub->add_option("--tangents", o.tangents, "hermite tangents \"x,y x,y ...\", one per point");
+    o.o_tension = sub->add_option("--tension", o.tension, "cardinal/kb tension (0 = Catmull-Rom, 1 = straight)");
+    o.o_continuity = sub->add_option("--continuity", o.continuity, "kb continuity (-1 = box corners)");
+    o.o_bias = sub->add_option("--bias", o.bias, "kb bias");
+    o.o_ends = sub->add_option("--ends", o.ends, "cardinal/catmull-rom/kb ends: duplicate (default), closed or inner")
+                   ->check(CLI::IsMember({"duplicate", "closed", "inner"}));
+    o.o_param =
+        sub->add_option("--param", o.param, "natural spline parametrisation: uniform (default), chord or centripetal")
+            ->check(CLI::IsMember({"uniform", "chord", "centripetal"}));
+}
+
+// The actions: pieces, a point or derivative, basis functions, pictures.
+void add_action_options(CLI::App* sub, SplineOptions& o) {
+    o.o_to_bezier = sub->add_flag("--to-bezier")->description("Print the Bezier pieces");
+    o.o_eval = sub->add_option("--eval", o.eval, "Print the point at T (or the K-th derivative with --derivative K)");
+    o.o_derivative =
+        sub->add_option("--derivative", o.derivative, "Derivative order K for --eval")->check(CLI::NonNegativeNumber);
+    o.o_basis_at =
+        sub->add_option("--basis-at", o.basis_at, "bspline/nurbs: print the basis functions N_i(T), one per line");
+    o.o_render = sub->add_option("--render", o.render,
+                                 "Draw the curve, its control polygon (dashed) and its knots (orange) into a PNG file");
+    o.o_basis = sub->add_option("--basis", o.basis,
+                                "bspline/nurbs: plot the basis functions N_i(t) over the domain into a PNG file");
+    o.o_size = sub->add_option("--size", o.size, "With --render/--basis: canvas WxH in pixels (default 400x400)");
+}
+
 }  // namespace
 
 void register_spline(CLI::App& app) {
@@ -243,76 +331,9 @@ void register_spline(CLI::App& app) {
     o->o_file = sub->add_option(
         "--points-file", o->points_file,
         "JSON file {\"points\": [[x, y], ...], optional \"knots\", \"weights\", \"tangents\", \"degree\"}");
-    o->o_degree =
-        sub->add_option("--degree", o->degree, "bspline/nurbs degree, 1..64 (default 3)")->check(CLI::Range(1, 64));
-    o->o_knots =
-        sub->add_option("--knots", o->knots, "bspline/nurbs knot vector \"u0 u1 ...\" (count = points + degree + 1)");
-    o->o_knot_type = sub->add_option("--knot-type", o->knot_type,
-                                     "Without --knots: clamped (default, on [0, 1]), uniform or periodic")
-                         ->check(CLI::IsMember({"clamped", "uniform", "periodic"}));
-    o->o_weights = sub->add_option("--weights", o->weights, "nurbs weights \"w0 w1 ...\" (positive; default all 1)");
-    o->o_tangents = sub->add_option("--tangents", o->tangents, "hermite tangents \"x,y x,y ...\", one per point");
-    o->o_tension = sub->add_option("--tension", o->tension, "cardinal/kb tension (0 = Catmull-Rom, 1 = straight)");
-    o->o_continuity = sub->add_option("--continuity", o->continuity, "kb continuity (-1 = box corners)");
-    o->o_bias = sub->add_option("--bias", o->bias, "kb bias");
-    o->o_ends = sub->add_option("--ends", o->ends, "cardinal/catmull-rom/kb ends: duplicate (default), closed or inner")
-                    ->check(CLI::IsMember({"duplicate", "closed", "inner"}));
-    o->o_param =
-        sub->add_option("--param", o->param, "natural spline parametrisation: uniform (default), chord or centripetal")
-            ->check(CLI::IsMember({"uniform", "chord", "centripetal"}));
-    o->o_to_bezier = sub->add_flag("--to-bezier")->description("Print the Bezier pieces");
-    o->o_eval = sub->add_option("--eval", o->eval, "Print the point at T (or the K-th derivative with --derivative K)");
-    o->o_derivative =
-        sub->add_option("--derivative", o->derivative, "Derivative order K for --eval")->check(CLI::NonNegativeNumber);
-    o->o_basis_at =
-        sub->add_option("--basis-at", o->basis_at, "bspline/nurbs: print the basis functions N_i(T), one per line");
-    o->o_render = sub->add_option(
-        "--render", o->render, "Draw the curve, its control polygon (dashed) and its knots (orange) into a PNG file");
-    o->o_basis = sub->add_option("--basis", o->basis,
-                                 "bspline/nurbs: plot the basis functions N_i(t) over the domain into a PNG file");
-    o->o_size = sub->add_option("--size", o->size, "With --render/--basis: canvas WxH in pixels (default 400x400)");
-    sub->callback([o]() {
-        const int sources = static_cast<int>(o->o_points->count() > 0) + static_cast<int>(o->o_file->count() > 0);
-        if (sources != 1) throw UsageError("spline: give exactly one of --points or --points-file");
-        const bool pictures = o->o_render->count() > 0 || o->o_basis->count() > 0;
-        const int actions = static_cast<int>(o->o_to_bezier->count() > 0) + static_cast<int>(o->o_eval->count() > 0) +
-                            static_cast<int>(o->o_basis_at->count() > 0) + static_cast<int>(pictures);
-        if (actions != 1)
-            throw UsageError("spline: choose exactly one action: --to-bezier, --eval, --basis-at or --render/--basis");
-        if (o->o_size->count() && !pictures) throw UsageError("spline: --size applies to --render and --basis only");
-        if (o->o_derivative->count() && !o->o_eval->count()) throw UsageError("spline: --derivative needs --eval");
-        const bool knotted = is_knot_kind(o->kind);
-        auto only = [&](CLI::Option* opt, bool allowed, const char* kinds) {
-            if (opt->count() && !allowed)
-                throw UsageError("spline: " + opt->get_name() + " applies to --kind " + kinds + " only");
-        };
-        only(o->o_degree, knotted, "bspline or nurbs");
-        only(o->o_knots, knotted, "bspline or nurbs");
-        only(o->o_knot_type, knotted, "bspline or nurbs");
-        only(o->o_basis_at, knotted, "bspline or nurbs");
-        only(o->o_basis, knotted, "bspline or nurbs");
-        only(o->o_weights, o->kind == "nurbs", "nurbs");
-        only(o->o_tangents, o->kind == "hermite", "hermite");
-        only(o->o_tension, o->kind == "cardinal" || o->kind == "kb", "cardinal or kb");
-        only(o->o_continuity, o->kind == "kb", "kb");
-        only(o->o_bias, o->kind == "kb", "kb");
-        only(o->o_ends, o->kind == "cardinal" || o->kind == "catmull-rom" || o->kind == "kb",
-             "cardinal, catmull-rom or kb");
-        only(o->o_param, o->kind == "natural", "natural");
-        if (o->o_knots->count() && o->o_knot_type->count())
-            throw UsageError("spline: give --knots or --knot-type, not both");
-        CurveFile file;
-        if (o->o_points->count())
-            file.points = parse_points_option("--points", o->points);
-        else
-            file = read_curve_file(o->points_file);
-        if (pictures && file.points.dimension == 3)
-            throw UsageError("spline: --render and --basis draw 2-D curves only");
-        if (file.points.dimension == 3)
-            run<Point3>(*o, file);
-        else
-            run<Point>(*o, file);
-    });
+    add_shape_options(sub, *o);
+    add_action_options(sub, *o);
+    sub->callback([o] { run_spline(*o); });
 }
 
 }  // namespace casteljau::cli
