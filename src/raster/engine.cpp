@@ -348,75 +348,98 @@ bool Engine::simple_run(const Visit& v) const {
 // the cell's right side, less the steps of the other runs' pieces crossed on the way there
 // (-1 for a piece going down, in y, +1 going up: the same rule as at the boundary). Accumulation
 // is exact when all these windings take two values at most.
-bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) const {
+struct Engine::ManyRuns {
+    // The arrays are filled as the steps go (not zeroed first: this runs for every crowded cell).
+    ManyRuns(const Engine& engine, int runs, int c, int r) : e(engine), n(runs), col(c), row(r) {}
+
+    const Engine& e;
+    const int n, col, row;
     std::uint32_t ids[kMaxRuns][kMaxRunEdges];
     int counts[kMaxRuns];
     bool loop[kMaxRuns];
     struct End {
-        double t;
-        int step;
+        double t;  // position along the cell's boundary (boundary_param)
+        int step;  // -1 where a run enters, +1 where it leaves
     };
     End ends[2 * kMaxRuns];
     int nends = 0;
-    auto inside_open = [&](double x, double y) { return x > col && x < col + 1 && y > row && y < row + 1; };
-    for (int k = 0; k < n; ++k) {
-        counts[k] = run_edges(*runs[k], ids[k]);
-        if (counts[k] < 0) return false;
-        loop[k] = closed_run(*runs[k]);
-        for (int i = 0; i < counts[k] && loop[k]; ++i) loop[k] = inside_open(segs_[ids[k][i]].x0, segs_[ids[k][i]].y0);
-        if (loop[k]) continue;
-        const Edge& first = segs_[ids[k][0]];
-        const Edge& last = segs_[ids[k][counts[k] - 1]];
-        double ax, ay, bx, by;
-        if (!cell_portion(first, col, row, ax, ay, bx, by) || (ax == bx && ay == by)) return false;
-        ends[nends++] = {boundary_param(ax - col, ay - row), -1};
-        if (!cell_portion(last, col, row, ax, ay, bx, by) || (ax == bx && ay == by)) return false;
-        ends[nends++] = {boundary_param(bx - col, by - row), 1};
-        if (ends[nends - 2].t < 0 || ends[nends - 1].t < 0) return false;
+    ExactScratch::Piece pieces[kMaxRuns][kMaxRunEdges];  // each run's parts inside the closed cell
+    int inside[kMaxRuns];
+    int lo = 0, hi = 0;  // the windings seen so far span [lo, hi]
+
+    // Each run's edges; loops apart; the open runs' ends on the boundary. False when a run is too
+    // long or an end is not clearly on the boundary.
+    bool gather(const Visit* const* runs) {
+        auto inside_open = [&](double x, double y) { return x > col && x < col + 1 && y > row && y < row + 1; };
+        for (int k = 0; k < n; ++k) {
+            counts[k] = e.run_edges(*runs[k], ids[k]);
+            if (counts[k] < 0) return false;
+            loop[k] = e.closed_run(*runs[k]);
+            for (int i = 0; i < counts[k] && loop[k]; ++i)
+                loop[k] = inside_open(e.segs_[ids[k][i]].x0, e.segs_[ids[k][i]].y0);
+            if (loop[k]) continue;
+            const Edge& first = e.segs_[ids[k][0]];
+            const Edge& last = e.segs_[ids[k][counts[k] - 1]];
+            double ax, ay, bx, by;
+            if (!cell_portion(first, col, row, ax, ay, bx, by) || (ax == bx && ay == by)) return false;
+            ends[nends++] = {boundary_param(ax - col, ay - row), -1};
+            if (!cell_portion(last, col, row, ax, ay, bx, by) || (ax == bx && ay == by)) return false;
+            ends[nends++] = {boundary_param(bx - col, by - row), 1};
+            if (ends[nends - 2].t < 0 || ends[nends - 1].t < 0) return false;
+        }
+        return true;
     }
-    // The walk around the boundary first: it is cheap, and where many runs crowd a cell (the hub
-    // of a tight bend) it usually finds the windings spanning more than one unit at once.
-    for (int k = 1; k < nends; ++k)  // insertion sort (at most 2 * kMaxRuns ends)
-        for (int j = k; j > 0 && ends[j].t < ends[j - 1].t; --j) std::swap(ends[j], ends[j - 1]);
-    int w = 0, lo = 0, hi = 0;
-    for (int k = 0; k < nends; ++k) {
-        if (k > 0 && ends[k].t == ends[k - 1].t) return false;
-        w += ends[k].step;
-        lo = std::min(lo, w);
-        hi = std::max(hi, w);
+
+    // The walk around the boundary: the windings of the regions that touch it. It is cheap, and
+    // where many runs crowd a cell (the hub of a tight bend) it usually finds the windings spanning
+    // more than one unit at once.
+    bool boundary_windings() {
+        for (int k = 1; k < nends; ++k)  // insertion sort (at most 2 * kMaxRuns ends)
+            for (int j = k; j > 0 && ends[j].t < ends[j - 1].t; --j) std::swap(ends[j], ends[j - 1]);
+        int w = 0;
+        for (int k = 0; k < nends; ++k) {
+            if (k > 0 && ends[k].t == ends[k - 1].t) return false;
+            w += ends[k].step;
+            lo = std::min(lo, w);
+            hi = std::max(hi, w);
+        }
+        return hi - lo <= 1;
     }
-    if (hi - lo > 1) return false;
+
     // Only the runs' parts inside the closed cell must not meet: consecutive runs of a contour that
     // leaves the cell and comes back one vertex later meet at that vertex, outside.
-    ExactScratch::Piece pieces[kMaxRuns][kMaxRunEdges];
-    int inside[kMaxRuns];
-    for (int k = 0; k < n; ++k) {
-        inside[k] = 0;
-        for (int i = 0; i < counts[k]; ++i) {
-            double ax, ay, bx, by;
-            if (cell_portion(segs_[ids[k][i]], col, row, ax, ay, bx, by)) pieces[k][inside[k]++] = {ax, ay, bx, by};
+    bool apart() {
+        for (int k = 0; k < n; ++k) {
+            inside[k] = 0;
+            for (int i = 0; i < counts[k]; ++i) {
+                double ax, ay, bx, by;
+                if (cell_portion(e.segs_[ids[k][i]], col, row, ax, ay, bx, by))
+                    pieces[k][inside[k]++] = {ax, ay, bx, by};
+            }
         }
+        for (int a = 0; a < n; ++a)
+            for (int b = a + 1; b < n; ++b)
+                for (int i = 0; i < inside[a]; ++i)
+                    for (int j = 0; j < inside[b]; ++j) {
+                        const ExactScratch::Piece& p = pieces[a][i];
+                        const ExactScratch::Piece& q = pieces[b][j];
+                        if (segments_meet(p.ax, p.ay, p.bx, p.by, q.ax, q.ay, q.bx, q.by)) return false;
+                    }
+        return true;
     }
-    for (int a = 0; a < n; ++a)
-        for (int b = a + 1; b < n; ++b)
-            for (int i = 0; i < inside[a]; ++i)
-                for (int j = 0; j < inside[b]; ++j) {
-                    const ExactScratch::Piece& p = pieces[a][i];
-                    const ExactScratch::Piece& q = pieces[b][j];
-                    if (segments_meet(p.ax, p.ay, p.bx, p.by, q.ax, q.ay, q.bx, q.by)) return false;
-                }
-    for (int k = 0; k < n; ++k) {
-        if (!loop[k]) continue;
-        const double px = segs_[ids[k][0]].x0, py = segs_[ids[k][0]].y0;
-        // The winding just inside the right side, level with P.
+
+    // The winding around loop k, read at its first vertex P: the winding just inside the right
+    // side level with P, less the steps of the other runs' pieces crossed between P and there.
+    // False when that reading is not clear-cut.
+    bool winding_around(int k, int& around) const {
+        const double px = e.segs_[ids[k][0]].x0, py = e.segs_[ids[k][0]].y0;
         const double ty = 1 + (py - row);
-        int around = 0;
-        for (int e = 0; e < nends; ++e) {
-            if (ends[e].t == ty) return false;
-            if (ends[e].t < ty) around += ends[e].step;
+        around = 0;
+        for (int i = 0; i < nends; ++i) {
+            if (ends[i].t == ty) return false;
+            if (ends[i].t < ty) around += ends[i].step;
         }
-        // Less the steps crossed between P and there (half-open in y, so a vertex level with P
-        // counts once).
+        // Half-open in y, so a vertex level with P counts once.
         for (int m = 0; m < n; ++m) {
             if (m == k) continue;
             for (int i = 0; i < inside[m]; ++i) {
@@ -429,19 +452,34 @@ bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) co
                 if ((side > 0) == down) around += down ? 1 : -1;  // the piece is right of P
             }
         }
-        // The loop's orientation: the sign of its area (shoelace about P), > 0 adding +1 by the
-        // boundary's rule.
-        double area = 0;
-        for (int i = 0; i < counts[k]; ++i) {
-            const Edge& e = segs_[ids[k][i]];
-            area += (e.x0 - px) * (e.y1 - py) - (e.x1 - px) * (e.y0 - py);
-        }
-        if (!(std::fabs(area) > 1e-12)) return false;
-        const int inner = around + (area > 0 ? 1 : -1);
-        lo = std::min({lo, around, inner});
-        hi = std::max({hi, around, inner});
+        return true;
     }
-    return hi - lo <= 1;
+
+    // Each loop adds its orientation (the sign of its area, shoelace about its first vertex; > 0
+    // adds +1 by the boundary's rule) to the winding around it.
+    bool loop_windings() {
+        for (int k = 0; k < n; ++k) {
+            if (!loop[k]) continue;
+            int around;
+            if (!winding_around(k, around)) return false;
+            const double px = e.segs_[ids[k][0]].x0, py = e.segs_[ids[k][0]].y0;
+            double area = 0;
+            for (int i = 0; i < counts[k]; ++i) {
+                const Edge& s = e.segs_[ids[k][i]];
+                area += (s.x0 - px) * (s.y1 - py) - (s.x1 - px) * (s.y0 - py);
+            }
+            if (!(std::fabs(area) > 1e-12)) return false;
+            const int inner = around + (area > 0 ? 1 : -1);
+            lo = std::min({lo, around, inner});
+            hi = std::max({hi, around, inner});
+        }
+        return hi - lo <= 1;
+    }
+};
+
+bool Engine::harmless_many(const Visit* const* runs, int n, int col, int row) const {
+    ManyRuns m(*this, n, col, row);
+    return m.gather(runs) && m.boundary_windings() && m.apart() && m.loop_windings();
 }
 
 std::size_t Engine::classify(int ox, int oy, const PixelSet* hidden) {

@@ -96,6 +96,7 @@ private:
     static constexpr int kMaxRuns = 6;  // cells with more runs are computed exactly
     int run_edges(const Visit& v, std::uint32_t* out) const;
     bool harmless_many(const Visit* const* runs, int n, int col, int row) const;
+    struct ManyRuns;  // harmless_many's steps (engine.cpp)
 
     int w_ = 0, h_ = 0;
     std::size_t stride_ = 0;
