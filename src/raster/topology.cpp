@@ -90,9 +90,6 @@ struct Seg {
 // b goes straight back along line a (a spike): for plain accumulation the two cancel exactly, as
 // the rasterizer maps their shared end points alike.
 bool is_spike_pair(const Seg& a, const Seg& b) { return a.n == 2 && b.n == 2 && a.p[0] == b.p[1] && a.p[1] == b.p[0]; }
-bool is_spike(const std::vector<Seg>& contour, const Seg& s) {
-    return !contour.empty() && is_spike_pair(contour.back(), s);
-}
 
 Rect box_of(const Seg& s) {
     Rect r{s.p[0].x, s.p[0].y, s.p[0].x, s.p[0].y};
@@ -171,7 +168,8 @@ private:
     struct Cells {
         int x0, y0, x1, y1;
     };
-    std::vector<Seg> contour_, halves_;
+    std::size_t open_ = 0;  // the contour being collected: segs_[open_, end)
+    std::vector<Seg> halves_;
     std::vector<Cells> span_;
     std::vector<std::uint32_t> cstart_, members_, fill_;
     std::vector<Rect> boxes_;
@@ -181,8 +179,9 @@ private:
     std::vector<char> relaxed_;  // per contour: a pair inside it was decided by chords
     long budget_ = 0;            // hull tests left
 
-    // Adds contour c (emptied); false for a contour the proof cannot take.
-    bool add_contour(std::vector<Seg>& c);
+    // Completes the contour being collected; false (and the contour dropped) for one the proof
+    // cannot take.
+    bool add_contour();
     bool boxes_apart(const Rect& a, const Rect& b) const {
         return a.x1 + delta_ < b.x0 || b.x1 + delta_ < a.x0 || a.y1 + delta_ < b.y0 || b.y1 + delta_ < a.y0;
     }
@@ -669,46 +668,47 @@ bool Classifier::orientation(std::size_t c, int& o, double slack) const {
     return true;
 }
 
-bool Classifier::add_contour(std::vector<Seg>& c) {
+bool Classifier::add_contour() {
+    const std::size_t start = open_;
     // Spikes across the contour's start (its last line returning along its first).
-    std::size_t first = 0;
-    while (c.size() - first >= 2 && is_spike_pair(c.back(), c[first])) {
-        c.pop_back();
+    std::size_t first = start;
+    while (segs_.size() - first >= 2 && is_spike_pair(segs_.back(), segs_[first])) {
+        segs_.pop_back();
         ++first;
     }
-    c.erase(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(first));
-    if (c.empty()) return true;
+    segs_.erase(segs_.begin() + static_cast<std::ptrdiff_t>(start), segs_.begin() + static_cast<std::ptrdiff_t>(first));
+    if (segs_.size() == start) return true;
     // At least three segments, so that consecutive segments share exactly one end point. Lines
     // are halved for that, never curves: the flattener's chords span a whole curve, and its
     // area-balanced vertices lie off the curve, outside the hulls of the curve's halves. A
     // contour of curves alone is not proven.
-    while (c.size() < 3) {
-        if (std::none_of(c.begin(), c.end(), [](const Seg& s) { return s.n == 2; })) {
-            c.clear();
+    while (segs_.size() - start < 3) {
+        const auto begin = segs_.begin() + static_cast<std::ptrdiff_t>(start);
+        if (std::none_of(begin, segs_.end(), [](const Seg& s) { return s.n == 2; })) {
+            segs_.resize(start);
             return false;
         }
         halves_.clear();
-        for (const Seg& s : c) {
-            if (s.n != 2) {
-                halves_.push_back(s);
+        for (auto it = begin; it != segs_.end(); ++it) {
+            if (it->n != 2) {
+                halves_.push_back(*it);
                 continue;
             }
             Seg a, b;
-            split(s, a, b);
+            split(*it, a, b);
             a.whole = b.whole = false;
             halves_.push_back(a);
             halves_.push_back(b);
         }
-        c.swap(halves_);
+        segs_.resize(start);
+        segs_.insert(segs_.end(), halves_.begin(), halves_.end());
     }
     const int id = static_cast<int>(contour_at_.size());
-    for (std::size_t i = 0; i < c.size(); ++i) {
-        c[i].contour = id;
-        c[i].index = static_cast<int>(i);
-        segs_.push_back(c[i]);
+    for (std::size_t i = start; i < segs_.size(); ++i) {
+        segs_[i].contour = id;
+        segs_[i].index = static_cast<int>(i - start);
     }
-    contour_at_.push_back(segs_.size() - c.size());
-    c.clear();
+    contour_at_.push_back(start);
     return true;
 }
 
@@ -751,13 +751,16 @@ public:
     }
     // Closes and adds the current contour.
     void end() {
-        if (!c_.contour_.empty() && !(cur_ == start_)) push({cur_, start_}, false, 1);
-        if (!c_.add_contour(c_.contour_)) unproven = true;
+        if (c_.segs_.size() > c_.open_ && !(cur_ == start_)) push({cur_, start_}, false, 1);
+        if (!c_.add_contour()) unproven = true;
+        c_.open_ = c_.segs_.size();
     }
 
 private:
+    // Appends the segment to the contour being collected, in place (segments are large).
     void push(std::initializer_list<Point> pts, bool conic, double w) {
-        Seg s;
+        std::vector<Seg>& segs = c_.segs_;
+        Seg& s = segs.emplace_back();
         s.n = 0;
         for (Point q : pts) s.p[s.n++] = q;
         s.conic = conic;
@@ -765,16 +768,12 @@ private:
         if (conic && !(w >= 0x1p-500 && w <= 0x1p500)) out_of_range = true;
         bool degenerate = true;
         for (int i = 1; i < s.n; ++i) degenerate = degenerate && s.p[i] == s.p[0];
-        if (degenerate) return;
+        if (degenerate) return segs.pop_back();
         if (s.n == 4 && !cubic_monotone(s)) self_crossing = true;
         s.box = box_of(s);
         // A line straight back along the previous one (a spike, A to B to A) adds nothing to any
         // pixel's integral and no area anywhere: both are left out.
-        if (is_spike(c_.contour_, s)) {
-            c_.contour_.pop_back();
-            return;
-        }
-        c_.contour_.push_back(s);
+        if (segs.size() - 1 > c_.open_ && is_spike_pair(segs[segs.size() - 2], s)) segs.resize(segs.size() - 2);
     }
 
     // A cubic may loop on itself. One whose control points are monotone in x or in y is monotone
@@ -800,7 +799,7 @@ Topology Classifier::run(const Path& path, double lambda) {
     lambda_ = lambda;
     segs_.clear();
     contour_at_.clear();
-    contour_.clear();
+    open_ = 0;
     touches_.clear();
     if (!path.is_finite()) return Topology::Overlapping;
     const Rect cb = path.control_bounds();
