@@ -106,6 +106,42 @@ public:
         }
     }
 
+    // The exponent part at s_[p] ('e' or 'E', sign?, digits): p moves past it and `exponent` gets
+    // its value, saturated at 10^8. False (error recorded) when no digit follows.
+    bool scan_exponent(std::size_t& p, long long& exponent) {
+        const std::size_t n = s_.size();
+        std::size_t q = p + 1;
+        bool eneg = false;
+        if (q < n && (s_[q] == '+' || s_[q] == '-')) {
+            eneg = s_[q] == '-';
+            ++q;
+        }
+        if (q >= n || !is_digit(s_[q])) {
+            fail_at(q, std::string("a digit after '") + s_[q - 1] + "'");
+            return false;
+        }
+        while (q < n && is_digit(s_[q])) {
+            if (exponent < 100000000) exponent = exponent * 10 + (s_[q] - '0');
+            ++q;
+        }
+        if (eneg) exponent = -exponent;
+        p = q;
+        return true;
+    }
+
+    // The decimal magnitude of a mantissa with integer digits s_[int_begin, int_end) and fraction
+    // digits s_[frac_begin, frac_end): the position of its first nonzero digit relative to the
+    // point (1 for 1.5, 0 for 0.5, -1 for 0.05). With the exponent, > 0 means |value| >= 1.
+    long long decimal_magnitude(std::size_t int_begin, std::size_t int_end, std::size_t frac_begin,
+                                std::size_t frac_end) const {
+        std::size_t k = int_begin;
+        while (k < int_end && s_[k] == '0') ++k;
+        if (k < int_end) return static_cast<long long>(int_end - k);
+        std::size_t z = frac_begin;
+        while (z < frac_end && s_[z] == '0') ++z;
+        return -static_cast<long long>(z - frac_begin);
+    }
+
     enum class Num { Ok, None, Bad };
 
     // Scans one number at the current position: sign? (digits ('.' digits?)? | '.' digits)
@@ -134,42 +170,13 @@ public:
             return Num::Bad;
         }
         long long exponent = 0;  // saturated, only used to tell overflow from underflow
-        if (p < n && (s_[p] == 'e' || s_[p] == 'E')) {
-            std::size_t q = p + 1;
-            bool eneg = false;
-            if (q < n && (s_[q] == '+' || s_[q] == '-')) {
-                eneg = s_[q] == '-';
-                ++q;
-            }
-            if (q >= n || !is_digit(s_[q])) {
-                fail_at(q, std::string("a digit after '") + s_[q - 1] + "'");
-                return Num::Bad;
-            }
-            while (q < n && is_digit(s_[q])) {
-                if (exponent < 100000000) exponent = exponent * 10 + (s_[q] - '0');
-                ++q;
-            }
-            if (eneg) exponent = -exponent;
-            p = q;
-        }
+        if (p < n && (s_[p] == 'e' || s_[p] == 'E') && !scan_exponent(p, exponent)) return Num::Bad;
         // from_chars takes no '+'.
         const char* first = s_.data() + start + (s_[start] == '+' ? 1 : 0);
         double v = 0;
         const auto r = std::from_chars(first, s_.data() + p, v, std::chars_format::general);
         if (r.ec == std::errc::result_out_of_range) {
-            // Overflow or underflow? The decimal magnitude: the position of the first nonzero digit
-            // relative to the point, plus the exponent. >= 1 means |value| >= 1: an overflow.
-            long long mag = 0;
-            std::size_t k = int_begin;
-            while (k < int_end && s_[k] == '0') ++k;
-            if (k < int_end) {
-                mag = static_cast<long long>(int_end - k);
-            } else {
-                std::size_t z = frac_begin;
-                while (z < frac_end && s_[z] == '0') ++z;
-                mag = -static_cast<long long>(z - frac_begin);
-            }
-            if (mag + exponent > 0) {
+            if (decimal_magnitude(int_begin, int_end, frac_begin, frac_end) + exponent > 0) {
                 fail_at(start, nullptr);
                 error_ = "number out of range";
                 return Num::Bad;
