@@ -161,36 +161,56 @@ std::optional<Rect> items_bbox(const Context& cx, std::size_t first, const Affin
     return box;
 }
 
-void element(Context& cx, const pugi::xml_node& child, const Style& st, const Affine& m, Viewport vp, int depth) {
+namespace {
+
+// Counts one more element against the nesting and expansion limits (Error(Limit) past them).
+void count_element(Context& cx, int depth) {
     if (depth > cx.limits.nesting_depth)
         throw Error(ErrorKind::Limit, "SVG elements nested deeper than " + std::to_string(cx.limits.nesting_depth));
     if (++cx.expanded > cx.limits.svg_elements)
         throw Error(ErrorKind::Limit, "SVG expands to more than " + std::to_string(cx.limits.svg_elements) +
                                           " elements (nested <use> references)");
-    const std::string_view name = child.name();
-    if (name == "defs" || name == "title" || name == "desc" || name == "metadata" || name == "style" ||
-        name == "clipPath" || name == "mask" || name == "pattern" || name == "linearGradient" ||
-        name == "radialGradient" || name == "symbol" || name == "marker" || name == "filter")
-        return;
+}
+
+// Elements never drawn where they stand: definitions, resources referenced from elsewhere and
+// text about the document.
+bool drawn_by_reference_only(std::string_view name) {
+    return name == "defs" || name == "title" || name == "desc" || name == "metadata" || name == "style" ||
+           name == "clipPath" || name == "mask" || name == "pattern" || name == "linearGradient" ||
+           name == "radialGradient" || name == "symbol" || name == "marker" || name == "filter";
+}
+
+double own_opacity(Context& cx, const pugi::xml_node& node) {
+    double opacity = 1;
+    for (const auto& [k, v] : properties(cx, node))
+        if (k == "opacity")
+            if (auto ov = parse_opacity(v)) opacity = *ov;
+    return opacity;
+}
+
+// An element with opacity 0 is not drawn, but it still counts in its group's bounding box: its
+// content's box, as a bounds item.
+void bounds_only(Context& cx, const pugi::xml_node& node, const Style& cst, const Affine& cm, Viewport vp, int depth) {
+    const std::size_t first = cx.items.size();
+    content(cx, node, cst, cm, vp, depth, 1.0);
+    const std::optional<Rect> box = items_bbox(cx, first, cm);
+    cx.items.resize(first);
+    if (box) cx.items.push_back(bounds_item(Path().add_rect(*box), cm));
+}
+
+}  // namespace
+
+void element(Context& cx, const pugi::xml_node& child, const Style& st, const Affine& m, Viewport vp, int depth) {
+    count_element(cx, depth);
+    if (drawn_by_reference_only(child.name())) return;
     Style cst = st;
     cst.viewport = vp;
     apply_style(cx, child, cst);
     for (const auto& [k, v] : properties(cx, child))
         if (k == "display" && trim(v) == "none") return;
     const Affine cm = m * element_transform(cx, child, vp);
-    double opacity = 1;
-    for (const auto& [k, v] : properties(cx, child))
-        if (k == "opacity")
-            if (auto ov = parse_opacity(v)) opacity = *ov;
-    if (opacity <= 0) {
-        // Not drawn, but it still counts in its group's bounding box: its content's box.
-        const std::size_t first = cx.items.size();
-        content(cx, child, cst, cm, vp, depth, 1.0);
-        const std::optional<Rect> box = items_bbox(cx, first, cm);
-        cx.items.resize(first);
-        if (box) cx.items.push_back(bounds_item(Path().add_rect(*box), cm));
-        return;
-    }
+    const double opacity = own_opacity(cx, child);
+    if (opacity <= 0) return bounds_only(cx, child, cst, cm, vp, depth);
     bool clip_missing = false, mask_missing = false;
     const pugi::xml_node clip = reference(cx, child, "clip-path", "clipPath", clip_missing);
     const pugi::xml_node mask = reference(cx, child, "mask", "mask", mask_missing);
