@@ -150,7 +150,11 @@ void image(Context& cx, const pugi::xml_node& n, const Style& st, const Affine& 
     if (!bytes) return;
     const std::optional<ImageContent> content = load_image(cx, *bytes);
     if (!content) return;
-    const auto& [raster, svg, iw, ih] = *content;
+    // Named members rather than a structured binding, which the lambda below could not capture
+    // under every compiler the build supports.
+    const std::shared_ptr<const Pixmap>& raster = content->raster;
+    const std::shared_ptr<const SvgDocument>& svg = content->svg;
+    const double iw = content->iw, ih = content->ih;
     const auto [w, h] = image_size(cx, n, vp, iw, ih);
     if (!(w > 0) || !(h > 0) || !(iw > 0) || !(ih > 0)) return;
     const double x = length_attr(cx, n, "x", vp.w), y = length_attr(cx, n, "y", vp.h);
