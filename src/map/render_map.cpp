@@ -102,44 +102,68 @@ std::optional<Color> MapLayerStyle::fill_for(const Feature& f) const {
     return kPalette[h % (sizeof kPalette / sizeof kPalette[0])];
 }
 
-MapFrame fit_map(const MapData& data, const MapProjection& proj, const MapOptions& opts) {
+namespace {
+
+void check_frame_options(const MapOptions& opts) {
     if (opts.width < 1) throw Error(ErrorKind::InvalidArgument, "map width must be at least 1 pixel");
     if (opts.height < 0) throw Error(ErrorKind::InvalidArgument, "map height must not be negative");
     if (!(opts.padding >= 0) || !std::isfinite(opts.padding))
         throw Error(ErrorKind::InvalidArgument, "padding must be a finite number >= 0");
-    Rect ext;
+}
+
+// The projected extent to draw: the bbox's, or the data's bounds.
+Rect map_extent(const MapData& data, const MapProjection& proj, const MapOptions& opts) {
     if (opts.bbox) {
         const Rect& b = *opts.bbox;
         if (!std::isfinite(b.x0) || !std::isfinite(b.x1) || !std::isfinite(b.y0) || !std::isfinite(b.y1) ||
             !(b.x0 < b.x1) || !(b.y0 < b.y1) || b.y0 < -90 || b.y1 > 90 || b.x0 < -540 || b.x1 > 540)
             throw Error(ErrorKind::InvalidArgument,
                         "bbox must be W,S,E,N degrees with W < E, S < N, latitudes within -90..90");
-        ext = projected_bbox(proj, b);
+        const Rect ext = projected_bbox(proj, b);
         if (!(ext.x1 > ext.x0) || !(ext.y1 > ext.y0))
             throw Error(ErrorKind::InvalidArgument, "the bbox does not project to an area with this projection");
-    } else {
-        Projector pr(proj);
-        BoundsVisitor b;
-        for (const Feature& f : data.features)
-            for (const Geometry& g : f.geometries) pr.geometry(g, b);
-        if (!(b.r.x1 >= b.r.x0))
-            throw Error(ErrorKind::InvalidData,
-                        "the map has no geometry to draw (pass --bbox to draw an empty extent)");
-        ext = b.r;
+        return ext;
     }
-    double ew = ext.width(), eh = ext.height();
-    if (ew <= 0 && eh <= 0) {  // a single point: a unit extent around it
-        ew = eh = 1;
-        ext = Rect{ext.x0 - 0.5, ext.y0 - 0.5, ext.x0 + 0.5, ext.y0 + 0.5};
-    } else if (ew <= 0) {
-        ext.x0 -= eh / 2;
-        ext.x1 += eh / 2;
-        ew = eh;
-    } else if (eh <= 0) {
-        ext.y0 -= ew / 2;
-        ext.y1 += ew / 2;
-        eh = ew;
-    }
+    Projector pr(proj);
+    BoundsVisitor b;
+    for (const Feature& f : data.features)
+        for (const Geometry& g : f.geometries) pr.geometry(g, b);
+    if (!(b.r.x1 >= b.r.x0))
+        throw Error(ErrorKind::InvalidData, "the map has no geometry to draw (pass --bbox to draw an empty extent)");
+    return b.r;
+}
+
+// The extent with its width and height; one without width or height is made square around its
+// line (a unit square around a point).
+struct Extent {
+    Rect r;
+    double w, h;
+};
+
+Extent with_area(Rect ext) {
+    const double ew = ext.width(), eh = ext.height();
+    if (ew <= 0 && eh <= 0) return {Rect{ext.x0 - 0.5, ext.y0 - 0.5, ext.x0 + 0.5, ext.y0 + 0.5}, 1, 1};
+    if (ew <= 0) return {Rect{ext.x0 - eh / 2, ext.y0, ext.x1 + eh / 2, ext.y1}, eh, eh};
+    if (eh <= 0) return {Rect{ext.x0, ext.y0 - ew / 2, ext.x1, ext.y1 + ew / 2}, ew, ew};
+    return {ext, ew, eh};
+}
+
+// The image's height: the given one, or `natural` (padding included) when none is; the padding
+// must leave room inside it.
+int frame_height(const MapOptions& opts, double natural) {
+    const double h = opts.height > 0 ? opts.height : std::max(1.0, natural);
+    check_canvas_size(opts.width, h);
+    const int height = static_cast<int>(h);
+    if (!(height - 2 * opts.padding > 0))
+        throw Error(ErrorKind::InvalidArgument, "padding leaves no room in the image height");
+    return height;
+}
+
+}  // namespace
+
+MapFrame fit_map(const MapData& data, const MapProjection& proj, const MapOptions& opts) {
+    check_frame_options(opts);
+    const auto [ext, ew, eh] = with_area(map_extent(data, proj, opts));
     const double p = opts.padding;
     const double inner_w = opts.width - 2 * p;
     if (!(inner_w > 0)) throw Error(ErrorKind::InvalidArgument, "padding leaves no room in the image width");
@@ -148,22 +172,14 @@ MapFrame fit_map(const MapData& data, const MapProjection& proj, const MapOption
     if (opts.bbox) {
         // The bbox fills the image exactly (non-uniform scale when both sizes are given).
         const double sx = inner_w / ew;
-        const double h = opts.height > 0 ? opts.height : std::max(1.0, std::round(eh * sx + 2 * p));
-        check_canvas_size(opts.width, h);
-        fr.height = static_cast<int>(h);
-        const double inner_h = fr.height - 2 * p;
-        if (!(inner_h > 0)) throw Error(ErrorKind::InvalidArgument, "padding leaves no room in the image height");
-        const double sy = inner_h / eh;
+        fr.height = frame_height(opts, std::round(eh * sx + 2 * p));
+        const double sy = (fr.height - 2 * p) / eh;
         fr.to_pixel = Affine{sx, 0, 0, -sy, p - ext.x0 * sx, p + ext.y1 * sy};
         return fr;
     }
     double s = inner_w / ew;
-    double h = opts.height;
-    if (h <= 0) h = std::max(1.0, std::ceil(eh * s + 2 * p));
-    check_canvas_size(opts.width, h);
-    fr.height = static_cast<int>(h);
+    fr.height = frame_height(opts, std::ceil(eh * s + 2 * p));
     const double inner_h = fr.height - 2 * p;
-    if (!(inner_h > 0)) throw Error(ErrorKind::InvalidArgument, "padding leaves no room in the image height");
     s = std::min(s, inner_h / eh);
     // Centre the extent.
     const double ox = p + (inner_w - ew * s) / 2, oy = p + (inner_h - eh * s) / 2;
