@@ -57,6 +57,73 @@ void emit_clip(Context& cx, const pugi::xml_node& clip, const Affine& cm, const 
     cx.active_refs.pop_back();
 }
 
+namespace {
+
+// A black fill of `path` with `rule` mapped by `cm`: one clip shape.
+DisplayItem clip_fill(Path path, FillRule rule, const Affine& cm) {
+    DisplayItem it;
+    it.kind = DisplayItem::Fill;
+    it.color = Color::black();
+    it.rule = rule;
+    it.transform = cm;
+    it.path = std::move(path);
+    return it;
+}
+
+// Whether a clipPath child is drawn (display and visibility), its clip-rule read into `rule`.
+bool clip_child_shown(Context& cx, const pugi::xml_node& c, FillRule& rule) {
+    bool visible = true;
+    for (const auto& [k, v] : properties(cx, c)) {
+        const std::string_view val = trim(v);
+        if (k == "display" && val == "none") return false;
+        if (k == "visibility") visible = val == "visible";
+        if (k == "clip-rule") rule = val == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
+    }
+    return visible;
+}
+
+// A use inside a clipPath: only a shape or text may be its target, placed at the use's x and y.
+void clip_use(Context& cx, const pugi::xml_node& c, const Affine& cm, FillRule rule, Viewport vp, int depth) {
+    const char* h = href(c);
+    const pugi::xml_node target = *h == '#' ? lookup(cx, h + 1) : pugi::xml_node();
+    if (!target || is_active(cx, target)) return;
+    const std::string_view tn = target.name();
+    if (tn != "path" && tn != "rect" && tn != "circle" && tn != "ellipse" && tn != "polyline" && tn != "polygon" &&
+        tn != "text")
+        return;
+    cx.active_refs.push_back(target);
+    const Affine at = Affine::translate(length_attr(cx, c, "x", vp.w), length_attr(cx, c, "y", vp.h));
+    clip_child(cx, target, cm * at, rule, vp, depth + 1);
+    cx.active_refs.pop_back();
+}
+
+// Text inside a clipPath: its glyph outlines (and decorations), filled black.
+void clip_text(Context& cx, const pugi::xml_node& c, const Affine& cm, FillRule rule, Viewport vp) {
+    std::vector<Style> styles;
+    for (svg_text::Outline& o : text_outlines(cx, c, Style{}, vp, styles)) {
+        if (o.layer == svg_text::Outline::Glyphs && o.path.empty()) continue;
+        cx.items.push_back(clip_fill(std::move(o.path), rule, cm));
+    }
+}
+
+// A shape inside a clipPath (not a line, which has no area), clipped by its own clip-path.
+void clip_shape(Context& cx, const pugi::xml_node& c, const Affine& cm, FillRule rule, Viewport vp, int depth) {
+    std::optional<Path> p = shape_path(cx, c, vp);
+    if (!p || p->empty() || std::string_view(c.name()) == "line") return;
+    bool missing = false;
+    pugi::xml_node own = reference(cx, c, "clip-path", "clipPath", missing);
+    if (own && is_active(cx, own)) own = {};  // a reference back into the cycle is ignored (as resvg does)
+    if (own) cx.items.push_back(layer_item(DisplayItem::BeginLayer, 1));
+    const Rect b = p->bounds();
+    cx.items.push_back(clip_fill(std::move(*p), rule, cm));
+    if (own) {
+        emit_clip(cx, own, cm, b, vp, depth + 1);
+        cx.items.push_back(layer_item(DisplayItem::EndLayer, 1));
+    }
+}
+
+}  // namespace
+
 // One child of a clipPath: a shape (or a use of a shape), its own transform, clip-rule and
 // clip-path; fill, stroke and opacity have no effect.
 void clip_child(Context& cx, const pugi::xml_node& c, const Affine& m, FillRule rule, Viewport vp, int depth) {
@@ -65,63 +132,15 @@ void clip_child(Context& cx, const pugi::xml_node& c, const Affine& m, FillRule 
     if (++cx.expanded > cx.limits.svg_elements)
         throw Error(ErrorKind::Limit,
                     "SVG expands to more than " + std::to_string(cx.limits.svg_elements) + " elements");
-    if (!conditions_pass(c)) return;
-    bool visible = true;
-    for (const auto& [k, v] : properties(cx, c)) {
-        const std::string_view val = trim(v);
-        if (k == "display" && val == "none") return;
-        if (k == "visibility") visible = val == "visible";
-        if (k == "clip-rule") rule = val == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
-    }
-    if (!visible) return;
+    if (!conditions_pass(c) || !clip_child_shown(cx, c, rule)) return;
     const Affine cm = m * element_transform(cx, c, vp);
     const std::string_view name = c.name();
-    if (name == "use") {
-        const char* h = href(c);
-        const pugi::xml_node target = *h == '#' ? lookup(cx, h + 1) : pugi::xml_node();
-        if (!target || is_active(cx, target)) return;
-        const std::string_view tn = target.name();
-        if (tn != "path" && tn != "rect" && tn != "circle" && tn != "ellipse" && tn != "polyline" && tn != "polygon" &&
-            tn != "text")
-            return;  // only shapes may be used inside a clipPath
-        cx.active_refs.push_back(target);
-        const Affine at = Affine::translate(length_attr(cx, c, "x", vp.w), length_attr(cx, c, "y", vp.h));
-        clip_child(cx, target, cm * at, rule, vp, depth + 1);
-        cx.active_refs.pop_back();
-        return;
-    }
-    if (name == "text") {
-        std::vector<Style> styles;
-        for (svg_text::Outline& o : text_outlines(cx, c, Style{}, vp, styles)) {
-            if (o.layer == svg_text::Outline::Glyphs && o.path.empty()) continue;
-            DisplayItem it;
-            it.kind = DisplayItem::Fill;
-            it.color = Color::black();
-            it.rule = rule;
-            it.transform = cm;
-            it.path = std::move(o.path);
-            cx.items.push_back(std::move(it));
-        }
-        return;
-    }
-    std::optional<Path> p = shape_path(cx, c, vp);
-    if (!p || p->empty() || name == "line") return;
-    bool missing = false;
-    pugi::xml_node own = reference(cx, c, "clip-path", "clipPath", missing);
-    if (own && is_active(cx, own)) own = {};  // a reference back into the cycle is ignored (as resvg does)
-    if (own) cx.items.push_back(layer_item(DisplayItem::BeginLayer, 1));
-    DisplayItem it;
-    it.kind = DisplayItem::Fill;
-    it.color = Color::black();
-    it.rule = rule;
-    it.transform = cm;
-    const Rect b = p->bounds();
-    it.path = std::move(*p);
-    cx.items.push_back(std::move(it));
-    if (own) {
-        emit_clip(cx, own, cm, b, vp, depth + 1);
-        cx.items.push_back(layer_item(DisplayItem::EndLayer, 1));
-    }
+    if (name == "use")
+        clip_use(cx, c, cm, rule, vp, depth);
+    else if (name == "text")
+        clip_text(cx, c, cm, rule, vp);
+    else
+        clip_shape(cx, c, cm, rule, vp, depth);
 }
 
 // A mask's content drawn into a mask layer (luminance, or alpha with mask-type="alpha"),
