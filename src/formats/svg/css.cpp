@@ -144,61 +144,43 @@ bool parse_selector(std::string_view s, Selector& out) {
     return !out.compounds.empty();
 }
 
+// Whether `word` is one of the white-space separated words of `list`.
+bool has_word(std::string_view list, std::string_view word) {
+    for (std::size_t i = 0; i < list.size();) {
+        while (i < list.size() && is_space(list[i])) ++i;
+        std::size_t j = i;
+        while (j < list.size() && !is_space(list[j])) ++j;
+        if (list.substr(i, j - i) == word) return true;
+        i = j;
+    }
+    return false;
+}
+
+bool attribute_matches(const AttributeTest& a, const pugi::xml_node& e) {
+    const pugi::xml_attribute attr = e.attribute(a.name.c_str());
+    if (!attr) return false;
+    const std::string_view v = attr.value();
+    const std::string_view w = a.value;
+    switch (a.op) {
+        case 0: return true;
+        case '=': return v == w;
+        case '^': return !w.empty() && v.substr(0, w.size()) == w;
+        case '$': return !w.empty() && v.size() >= w.size() && v.substr(v.size() - w.size()) == w;
+        case '*': return !w.empty() && v.find(w) != std::string_view::npos;
+        case '|': return v == w || v.substr(0, w.size() + 1) == std::string(w) + "-";
+        case '~': return !w.empty() && has_word(v, w);
+        default: return false;
+    }
+}
+
 bool compound_matches(const Compound& c, const pugi::xml_node& e) {
     if (!c.type.empty() && c.type != "*" && c.type != e.name()) return false;
     for (const std::string& id : c.ids)
         if (id != e.attribute("id").value()) return false;
-    if (!c.classes.empty()) {
-        const std::string_view list = e.attribute("class").value();
-        for (const std::string& cls : c.classes) {
-            bool found = false;
-            for (std::size_t i = 0; i < list.size() && !found;) {
-                while (i < list.size() && is_space(list[i])) ++i;
-                std::size_t j = i;
-                while (j < list.size() && !is_space(list[j])) ++j;
-                found = list.substr(i, j - i) == cls;
-                i = j;
-            }
-            if (!found) return false;
-        }
-    }
-    for (const AttributeTest& a : c.attributes) {
-        const pugi::xml_attribute attr = e.attribute(a.name.c_str());
-        if (!attr) return false;
-        const std::string_view v = attr.value();
-        const std::string_view w = a.value;
-        switch (a.op) {
-            case 0: break;
-            case '=':
-                if (v != w) return false;
-                break;
-            case '^':
-                if (w.empty() || v.substr(0, w.size()) != w) return false;
-                break;
-            case '$':
-                if (w.empty() || v.size() < w.size() || v.substr(v.size() - w.size()) != w) return false;
-                break;
-            case '*':
-                if (w.empty() || v.find(w) == std::string_view::npos) return false;
-                break;
-            case '|':
-                if (v != w && v.substr(0, w.size() + 1) != std::string(w) + "-") return false;
-                break;
-            case '~': {
-                bool found = false;
-                for (std::size_t i = 0; i < v.size() && !found;) {
-                    while (i < v.size() && is_space(v[i])) ++i;
-                    std::size_t j = i;
-                    while (j < v.size() && !is_space(v[j])) ++j;
-                    found = !w.empty() && v.substr(i, j - i) == w;
-                    i = j;
-                }
-                if (!found) return false;
-                break;
-            }
-            default: return false;
-        }
-    }
+    for (const std::string& cls : c.classes)
+        if (!has_word(e.attribute("class").value(), cls)) return false;
+    for (const AttributeTest& a : c.attributes)
+        if (!attribute_matches(a, e)) return false;
     if (c.first_child) {
         for (pugi::xml_node p = e.previous_sibling(); p; p = p.previous_sibling())
             if (p.type() == pugi::node_element) return false;
