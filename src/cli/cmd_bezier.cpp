@@ -142,6 +142,72 @@ void run(const BezierOptions& o, const PointList& input) {
     std::cout << out.str();
 }
 
+// One source of points, one action, and options that go with their action.
+void check_bezier_usage(const BezierOptions& o) {
+    const int sources = static_cast<int>(o.o_points->count() > 0) + static_cast<int>(o.o_file->count() > 0);
+    if (sources != 1) throw UsageError("bezier: give exactly one of --points or --points-file");
+    int actions = 0;
+    for (CLI::Option* a : {o.o_eval, o.o_elevate, o.o_reduce, o.o_split, o.o_subcurve, o.o_triangle, o.o_bounds,
+                           o.o_power, o.o_curvature, o.o_interpolate, o.o_render})
+        actions += a->count() > 0;
+    if (o.o_derivative->count() && !o.o_eval->count()) ++actions;
+    if (actions != 1)
+        throw UsageError(
+            "bezier: choose exactly one action: --eval, --derivative, --elevate, --reduce, --split, "
+            "--subcurve, --triangle, --bounds, --power, --curvature, --interpolate or --render");
+    if ((o.o_size->count() || o.o_construction->count()) && !o.o_render->count())
+        throw UsageError("bezier: --size and --construction apply to --render only");
+    if (o.o_times->count() && !o.o_elevate->count()) throw UsageError("bezier: --times applies to --elevate only");
+    if (o.o_method->count() && !o.o_reduce->count()) throw UsageError("bezier: --method applies to --reduce only");
+}
+
+void run_bezier(const BezierOptions& o) {
+    check_bezier_usage(o);
+    const PointList pts =
+        o.o_points->count() ? parse_points_option("--points", o.points) : read_curve_file(o.points_file).points;
+    if (pts.dimension == 3)
+        run<Point3>(o, pts);
+    else
+        run<Point>(o, pts);
+}
+
+// The computations that print: evaluation, derivatives, elevation, reduction, splitting, the
+// triangle, bounds, power form, curvature, interpolation.
+void add_computation_options(CLI::App* sub, BezierOptions& o) {
+    o.o_eval =
+        sub->add_option("--eval", o.eval, "Print P(T) (de Casteljau), or the K-th derivative with --derivative K");
+    o.o_derivative = sub->add_option("--derivative", o.derivative,
+                                     "Derivative order K >= 0; alone, print the K-th derivative's control points")
+                         ->check(CLI::NonNegativeNumber);
+    o.o_elevate = sub->add_flag("--elevate")->description("Print the control points after exact degree elevation");
+    o.o_times = sub->add_option("--times", o.times, "With --elevate: how many times (default 1)")
+                    ->check(CLI::NonNegativeNumber);
+    o.o_reduce = sub->add_flag("--reduce")->description("Print the degree n-1 approximation (deviation on stderr)");
+    o.o_method = sub->add_option("--method", o.method, "With --reduce: forward, backward or combined (default)")
+                     ->check(CLI::IsMember({"forward", "backward", "combined"}));
+    o.o_split = sub->add_option("--split", o.split, "Print the two halves at T (left, empty line, right)");
+    o.o_subcurve = sub->add_option("--subcurve", o.subcurve, "Print the sub-curve over [T0, T1], given as \"T0,T1\"");
+    o.o_triangle = sub->add_option("--triangle", o.triangle, "Print the de Casteljau triangle at T, one row per block");
+    o.o_bounds = sub->add_flag("--bounds")->description("Print the tight bounding box: min corner, then max corner");
+    o.o_power =
+        sub->add_flag("--power")->description("Print the power-form coefficients a_0..a_n of P(t) = sum a_k t^k");
+    o.o_curvature =
+        sub->add_option("--curvature", o.curvature, "Print the curvature at T (signed in 2-D; inf at a cusp)");
+    o.o_interpolate =
+        sub->add_flag("--interpolate")
+            ->description("Treat 4 points as Q0..Q3 and print the cubic through them at t = 0, 1/3, 2/3, 1");
+}
+
+// The figure: --render with its size and the construction drawn.
+void add_render_options(CLI::App* sub, BezierOptions& o) {
+    o.o_render =
+        sub->add_option("--render", o.render, "Draw the curve, its control polygon and points into a PNG file");
+    o.o_size = sub->add_option("--size", o.size, "With --render: canvas WxH in pixels (default 400x400)");
+    o.o_construction =
+        sub->add_option("--construction", o.construction,
+                        "With --render: draw the de Casteljau construction at T (levels coloured, P(T) red)");
+}
+
 }  // namespace
 
 void register_bezier(CLI::App& app) {
@@ -156,60 +222,9 @@ void register_bezier(CLI::App& app) {
         sub->add_option("--points", o->points, "Control points \"x,y x,y ...\" (or x,y,z); degree = count - 1 (1..64)");
     o->o_file =
         sub->add_option("--points-file", o->points_file, "JSON file {\"points\": [[x, y], ...]} ('-' reads stdin)");
-    o->o_eval =
-        sub->add_option("--eval", o->eval, "Print P(T) (de Casteljau), or the K-th derivative with --derivative K");
-    o->o_derivative = sub->add_option("--derivative", o->derivative,
-                                      "Derivative order K >= 0; alone, print the K-th derivative's control points")
-                          ->check(CLI::NonNegativeNumber);
-    o->o_elevate = sub->add_flag("--elevate")->description("Print the control points after exact degree elevation");
-    o->o_times = sub->add_option("--times", o->times, "With --elevate: how many times (default 1)")
-                     ->check(CLI::NonNegativeNumber);
-    o->o_reduce = sub->add_flag("--reduce")->description("Print the degree n-1 approximation (deviation on stderr)");
-    o->o_method = sub->add_option("--method", o->method, "With --reduce: forward, backward or combined (default)")
-                      ->check(CLI::IsMember({"forward", "backward", "combined"}));
-    o->o_split = sub->add_option("--split", o->split, "Print the two halves at T (left, empty line, right)");
-    o->o_subcurve = sub->add_option("--subcurve", o->subcurve, "Print the sub-curve over [T0, T1], given as \"T0,T1\"");
-    o->o_triangle =
-        sub->add_option("--triangle", o->triangle, "Print the de Casteljau triangle at T, one row per block");
-    o->o_bounds = sub->add_flag("--bounds")->description("Print the tight bounding box: min corner, then max corner");
-    o->o_power =
-        sub->add_flag("--power")->description("Print the power-form coefficients a_0..a_n of P(t) = sum a_k t^k");
-    o->o_curvature =
-        sub->add_option("--curvature", o->curvature, "Print the curvature at T (signed in 2-D; inf at a cusp)");
-    o->o_interpolate =
-        sub->add_flag("--interpolate")
-            ->description("Treat 4 points as Q0..Q3 and print the cubic through them at t = 0, 1/3, 2/3, 1");
-    o->o_render =
-        sub->add_option("--render", o->render, "Draw the curve, its control polygon and points into a PNG file");
-    o->o_size = sub->add_option("--size", o->size, "With --render: canvas WxH in pixels (default 400x400)");
-    o->o_construction =
-        sub->add_option("--construction", o->construction,
-                        "With --render: draw the de Casteljau construction at T (levels coloured, P(T) red)");
-    sub->callback([o]() {
-        const int sources = static_cast<int>(o->o_points->count() > 0) + static_cast<int>(o->o_file->count() > 0);
-        if (sources != 1) throw UsageError("bezier: give exactly one of --points or --points-file");
-        int actions = 0;
-        for (CLI::Option* a : {o->o_eval, o->o_elevate, o->o_reduce, o->o_split, o->o_subcurve, o->o_triangle,
-                               o->o_bounds, o->o_power, o->o_curvature, o->o_interpolate, o->o_render})
-            actions += a->count() > 0;
-        if (o->o_derivative->count() && !o->o_eval->count()) ++actions;
-        if (actions != 1)
-            throw UsageError(
-                "bezier: choose exactly one action: --eval, --derivative, --elevate, --reduce, --split, "
-                "--subcurve, --triangle, --bounds, --power, --curvature, --interpolate or --render");
-        if ((o->o_size->count() || o->o_construction->count()) && !o->o_render->count())
-            throw UsageError("bezier: --size and --construction apply to --render only");
-        if (o->o_times->count() && !o->o_elevate->count())
-            throw UsageError("bezier: --times applies to --elevate only");
-        if (o->o_method->count() && !o->o_reduce->count())
-            throw UsageError("bezier: --method applies to --reduce only");
-        const PointList pts =
-            o->o_points->count() ? parse_points_option("--points", o->points) : read_curve_file(o->points_file).points;
-        if (pts.dimension == 3)
-            run<Point3>(*o, pts);
-        else
-            run<Point>(*o, pts);
-    });
+    add_computation_options(sub, *o);
+    add_render_options(sub, *o);
+    sub->callback([o] { run_bezier(*o); });
 }
 
 }  // namespace casteljau::cli
