@@ -17,46 +17,51 @@
 
 namespace casteljau::svg {
 
-// The bytes an <image> href names: a data: URI (base64 or plain), or a relative file inside
-// the resource root; nullopt (with a warning) for anything refused or unreadable.
-std::optional<std::vector<std::uint8_t>> image_bytes(Context& cx, std::string_view ref) {
-    ref = trim(ref);
-    if (ref.substr(0, 5) == "data:") {
-        const std::size_t comma = ref.find(',');
-        if (comma == std::string_view::npos) return std::nullopt;
-        const std::string_view meta = ref.substr(5, comma - 5);
-        const std::string_view payload = ref.substr(comma + 1);
-        std::vector<std::uint8_t> out;
-        if (meta.size() >= 7 && meta.substr(meta.size() - 7) == ";base64") {
-            unsigned acc = 0;
-            int bits = 0;
-            for (char ch : payload) {
-                int v;
-                if (ch >= 'A' && ch <= 'Z')
-                    v = ch - 'A';
-                else if (ch >= 'a' && ch <= 'z')
-                    v = ch - 'a' + 26;
-                else if (ch >= '0' && ch <= '9')
-                    v = ch - '0' + 52;
-                else if (ch == '+' || ch == '-')
-                    v = 62;
-                else if (ch == '/' || ch == '_')
-                    v = 63;
-                else
-                    continue;  // whitespace, padding
-                acc = (acc << 6) | static_cast<unsigned>(v);
-                bits += 6;
-                if (bits >= 8) {
-                    bits -= 8;
-                    out.push_back(static_cast<std::uint8_t>(acc >> bits));
-                    acc &= (1u << bits) - 1;
-                }
-            }
-        } else {
-            out.assign(payload.begin(), payload.end());
+namespace {
+
+// Base64 (standard or URL-safe alphabet); white space, padding and other characters are skipped.
+std::vector<std::uint8_t> decode_base64(std::string_view payload) {
+    std::vector<std::uint8_t> out;
+    unsigned acc = 0;
+    int bits = 0;
+    for (char ch : payload) {
+        int v;
+        if (ch >= 'A' && ch <= 'Z')
+            v = ch - 'A';
+        else if (ch >= 'a' && ch <= 'z')
+            v = ch - 'a' + 26;
+        else if (ch >= '0' && ch <= '9')
+            v = ch - '0' + 52;
+        else if (ch == '+' || ch == '-')
+            v = 62;
+        else if (ch == '/' || ch == '_')
+            v = 63;
+        else
+            continue;
+        acc = (acc << 6) | static_cast<unsigned>(v);
+        bits += 6;
+        if (bits >= 8) {
+            bits -= 8;
+            out.push_back(static_cast<std::uint8_t>(acc >> bits));
+            acc &= (1u << bits) - 1;
         }
-        return out;
     }
+    return out;
+}
+
+// The bytes of a data: URI, base64 or plain; nothing without a comma.
+std::optional<std::vector<std::uint8_t>> data_uri_bytes(std::string_view ref) {
+    const std::size_t comma = ref.find(',');
+    if (comma == std::string_view::npos) return std::nullopt;
+    const std::string_view meta = ref.substr(5, comma - 5);
+    const std::string_view payload = ref.substr(comma + 1);
+    if (meta.size() >= 7 && meta.substr(meta.size() - 7) == ";base64") return decode_base64(payload);
+    return std::vector<std::uint8_t>(payload.begin(), payload.end());
+}
+
+// A relative file inside the resource root (the document's folder unless set); nothing, with a
+// warning, for any other reference or a file that cannot be read.
+std::optional<std::vector<std::uint8_t>> file_bytes(Context& cx, std::string_view ref) {
     if (ref.find(':') != std::string_view::npos || ref.empty() || ref.front() == '/' || ref.front() == '#') {
         warn(cx, "image '" + std::string(ref.substr(0, 80)) + "' refused: only data: URIs and relative files are read");
         return std::nullopt;
@@ -82,6 +87,16 @@ std::optional<std::vector<std::uint8_t>> image_bytes(Context& cx, std::string_vi
         warn(cx, std::string("image: ") + e.what());
         return std::nullopt;
     }
+}
+
+}  // namespace
+
+// The bytes an <image> href names: a data: URI (base64 or plain), or a relative file inside
+// the resource root; nullopt (with a warning) for anything refused or unreadable.
+std::optional<std::vector<std::uint8_t>> image_bytes(Context& cx, std::string_view ref) {
+    ref = trim(ref);
+    if (ref.substr(0, 5) == "data:") return data_uri_bytes(ref);
+    return file_bytes(cx, ref);
 }
 
 namespace {
