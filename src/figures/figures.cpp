@@ -150,8 +150,11 @@ Figure draw_spline_figure(const Path& curve, std::span<const Point> polygon, std
     return f;
 }
 
-Figure draw_basis_figure(int degree, std::span<const double> knots, const FigureOptions& o) {
-    check_options(o);
+namespace {
+
+// The number of basis functions of `degree` over `knots`, checked (Error for a bad degree, too few
+// or decreasing knots, or an empty domain).
+std::size_t basis_count(int degree, std::span<const double> knots) {
     if (degree < 0 || degree > limits::kMaxSplineDegree)
         throw Error(ErrorKind::InvalidArgument,
                     "basis degree must lie in 0.." + std::to_string(limits::kMaxSplineDegree));
@@ -161,19 +164,14 @@ Figure draw_basis_figure(int degree, std::span<const double> knots, const Figure
                                                 std::to_string(knots.size()));
     const std::size_t count = knots.size() - static_cast<std::size_t>(degree) - 1;
     validate_knots(degree, count, knots);
-    const double t0 = knots[static_cast<std::size_t>(degree)], t1 = knots[count];
-    if (!(t1 > t0)) throw Error(ErrorKind::InvalidData, "the basis functions' domain is empty");
+    if (!(knots[count] > knots[static_cast<std::size_t>(degree)]))
+        throw Error(ErrorKind::InvalidData, "the basis functions' domain is empty");
+    return count;
+}
 
-    // Plot area: extra room at the left and bottom for the axes; N in [0, 1] plus headroom.
-    const double left = o.margin + 8, right = o.width - o.margin, top = o.margin, bottom = o.height - o.margin - 8;
-    if (!(right - left > 4 && bottom - top > 4))
-        throw Error(ErrorKind::InvalidArgument, "figure too small for a basis plot");
-    const double sx = (right - left) / (t1 - t0), sy = (bottom - top) / 1.08;
-    Figure f{blank(o), Affine{sx, 0, 0, -sy, left - sx * t0, bottom}};
-    Canvas c(f.image);
-    const Affine& m = f.transform;
-
-    // Axes, knot ticks, the line N = 1.
+// The axes of a basis plot over [t0, t1] (m: plot to pixels), a tick at each knot inside, and the
+// dashed line N = 1.
+void draw_basis_axes(Canvas& c, const Affine& m, std::span<const double> knots, double t0, double t1) {
     const Paint axis = Paint::solid(figure_colors::kAxis);
     Path axes;
     axes.move_to(m.apply({t0, 1.08})).line_to(m.apply({t0, 0})).line_to(m.apply({t1, 0}));
@@ -190,18 +188,22 @@ Figure draw_basis_figure(int degree, std::span<const double> knots, const Figure
     Path unit;
     unit.move_to(one).line_to(m.apply({t1, 1}));
     c.stroke_path(unit, dashed(0.75), Paint::solid(figure_colors::kPolygon));
+}
 
-    const int n = static_cast<int>(count);
-    if (degree == 0) {
-        for (std::size_t i = 0; i < count; ++i) {
-            const double a = knots[i], b = knots[i + 1];
-            if (!(b > a)) continue;
-            Path step;
-            step.move_to(m.apply({a, 0})).line_to(m.apply({a, 1})).line_to(m.apply({b, 1})).line_to(m.apply({b, 0}));
-            c.stroke_path(step, solid(2.0), Paint::solid(basis_color(static_cast<int>(i), n)));
-        }
-        return f;
+// Degree 0: each basis function is a step, 1 over its knot span.
+void draw_steps(Canvas& c, const Affine& m, std::span<const double> knots, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const double a = knots[i], b = knots[i + 1];
+        if (!(b > a)) continue;
+        Path step;
+        step.move_to(m.apply({a, 0})).line_to(m.apply({a, 1})).line_to(m.apply({b, 1})).line_to(m.apply({b, 0}));
+        c.stroke_path(step, solid(2.0), Paint::solid(basis_color(static_cast<int>(i), static_cast<int>(count))));
     }
+}
+
+// Each basis function N_i as the graph (t, N_i(t)): the B-spline whose control points sit at the
+// Greville abscissae with heights 0, except 1 at i.
+void draw_basis_curves(Canvas& c, const Affine& m, int degree, std::span<const double> knots, std::size_t count) {
     std::vector<double> greville(count);
     for (std::size_t j = 0; j < count; ++j) {
         double s = 0;
@@ -215,8 +217,28 @@ Figure draw_basis_figure(int degree, std::span<const double> knots, const Figure
         const BSpline<Point> graph(degree, std::move(ctrl), kv);
         const auto pieces = graph.to_bezier();
         c.stroke_path(to_path(pieces, 1e-4).transformed(m), solid(2.0),
-                      Paint::solid(basis_color(static_cast<int>(i), n)));
+                      Paint::solid(basis_color(static_cast<int>(i), static_cast<int>(count))));
     }
+}
+
+}  // namespace
+
+Figure draw_basis_figure(int degree, std::span<const double> knots, const FigureOptions& o) {
+    check_options(o);
+    const std::size_t count = basis_count(degree, knots);
+    const double t0 = knots[static_cast<std::size_t>(degree)], t1 = knots[count];
+    // Plot area: extra room at the left and bottom for the axes; N in [0, 1] plus headroom.
+    const double left = o.margin + 8, right = o.width - o.margin, top = o.margin, bottom = o.height - o.margin - 8;
+    if (!(right - left > 4 && bottom - top > 4))
+        throw Error(ErrorKind::InvalidArgument, "figure too small for a basis plot");
+    const double sx = (right - left) / (t1 - t0), sy = (bottom - top) / 1.08;
+    Figure f{blank(o), Affine{sx, 0, 0, -sy, left - sx * t0, bottom}};
+    Canvas c(f.image);
+    draw_basis_axes(c, f.transform, knots, t0, t1);
+    if (degree == 0)
+        draw_steps(c, f.transform, knots, count);
+    else
+        draw_basis_curves(c, f.transform, degree, knots, count);
     return f;
 }
 
