@@ -13,6 +13,7 @@
 #include "casteljau/error.hpp"
 #include "casteljau/file_io.hpp"
 #include "casteljau/limits.hpp"
+#include "casteljau/projection.hpp"
 #include "casteljau/tiles.hpp"
 #include "map/sqlite_library.hpp"
 
@@ -21,6 +22,9 @@ namespace casteljau {
 namespace {
 // SQLite, opened on first use.
 const sqlite_library::Api& sq() { return sqlite_library::api(); }
+
+// The Web Mercator world in degrees: the bounds of a pyramid's MBTiles metadata.
+constexpr Rect kWorldBounds{-180, -kWebMercatorMaxLatitude, 180, kWebMercatorMaxLatitude};
 }  // namespace
 
 TileFolderWriter::TileFolderWriter(std::string dir) : dir_(std::move(dir)) {
@@ -219,7 +223,7 @@ void merge_mbtiles(const std::vector<std::string>& inputs, const std::string& ou
         sq().finalize(st);
     }
     if (minz > maxz) minz = maxz = 0;
-    if (!(b.x0 <= b.x1)) b = Rect{-180, -85.0511287798, 180, 85.0511287798};
+    if (!(b.x0 <= b.x1)) b = kWorldBounds;
     MbtilesWriter out(output, name, minz, maxz, b);
     for (const std::string& path : inputs) {
         ReadDb in(path);
@@ -247,7 +251,7 @@ TileStats write_tiles(const MapData& data, const MapStyle& style, const TileOpti
         if (opts.resume)
             throw Error(ErrorKind::InvalidArgument,
                         "resume works with a folder output (an .mbtiles file is written whole)");
-        MbtilesWriter w(output, name, opts.min_zoom, opts.max_zoom, Rect{-180, -85.0511287798, 180, 85.0511287798});
+        MbtilesWriter w(output, name, opts.min_zoom, opts.max_zoom, kWorldBounds);
         const TileStats st = render_tiles(
             data, style, opts,
             [&](int z, int x, int y, const std::vector<std::uint8_t>& png) { w.write(z, x, y, png); }, {}, progress);

@@ -428,11 +428,10 @@ struct Engine::ManyRuns {
         return true;
     }
 
-    // The winding around loop k, read at its first vertex P: the winding just inside the right
+    // The winding around loop k, read at its first vertex P = (px, py): the winding just inside the right
     // side level with P, less the steps of the other runs' pieces crossed between P and there.
     // False when that reading is not clear-cut.
-    bool winding_around(int k, int& around) const {
-        const double px = e.segs_[ids[k][0]].x0, py = e.segs_[ids[k][0]].y0;
+    bool winding_around(int k, double px, double py, int& around) const {
         const double ty = 1 + (py - row);
         around = 0;
         for (int i = 0; i < nends; ++i) {
@@ -460,9 +459,9 @@ struct Engine::ManyRuns {
     bool loop_windings() {
         for (int k = 0; k < n; ++k) {
             if (!loop[k]) continue;
-            int around;
-            if (!winding_around(k, around)) return false;
             const double px = e.segs_[ids[k][0]].x0, py = e.segs_[ids[k][0]].y0;
+            int around;
+            if (!winding_around(k, px, py, around)) return false;
             double area = 0;
             for (int i = 0; i < counts[k]; ++i) {
                 const Edge& s = e.segs_[ids[k][i]];

@@ -270,16 +270,12 @@ void apply_decoration(std::string_view val, TextCtx& ctx) {
 // Spacing (relative to the font size `fs`), anchoring, baselines, decorations and direction.
 void apply_layout_property(Context& cx, const pugi::xml_node& node, const std::string& k, std::string_view val,
                            double fs, TextCtx& ctx) {
-    if (k == "letter-spacing") {
+    if (k == "letter-spacing" || k == "word-spacing") {
+        double& spacing = k == "letter-spacing" ? ctx.letter_spacing : ctx.word_spacing;
         if (val == "normal")
-            ctx.letter_spacing = 0;
+            spacing = 0;
         else if (auto l = text_length(val, fs, ctx.viewport_width, cx.options.dpi))
-            ctx.letter_spacing = *l;
-    } else if (k == "word-spacing") {
-        if (val == "normal")
-            ctx.word_spacing = 0;
-        else if (auto l = text_length(val, fs, ctx.viewport_width, cx.options.dpi))
-            ctx.word_spacing = *l;
+            spacing = *l;
     } else if (k == "text-anchor") {
         if (val == "start")
             ctx.anchor = svg_text::Anchor::Start;
