@@ -22,6 +22,13 @@
 // Natural Earth at 1024 px), at half the cost of 64 lines (16 lines reach 15/255). The map
 // stage's measured error is in BENCHMARKS.md.
 //
+// Precision: a clip whose x range, widened by the radius and a pixel, lies within 8192 px of x = 0
+// is swept in float (twice the lines per SIMD vector), its segments first cut to that strip of x
+// and their y taken from each row's top; any other clip in double. Float moves an interval's ends
+// by a few 2^-10 px at most: the pixels stay within 1/255 of the double computation. The choice
+// and the cut depend on the clip's x range only, so clips that differ in y (bands of one image)
+// give the same pixels where they overlap.
+//
 // Conventions: pixel space, x right, y down, pixel (i, j) is the square [i, i+1) x [j, j+1).
 // Coverage is rounded to 1/255 (half-way rounds up).
 // Cost: each capsule costs the sample lines it spans (its height plus the width, times

@@ -54,8 +54,15 @@ inline constexpr int kSectionPadding = 64;
 // row's lines from its line 0, lines + kSectionPadding values; lo and hi n + kSectionPadding
 // values; left_bits and closed_bits n / 64 words, rounded up. The values are those of the scalar
 // formula (the same operations in the same order, no fused multiply-add), whatever the target.
+//
+// In double, or in float (twice the lines per vector): the capsule's values are rounded to float
+// first and every operation is done in float. Heights are taken from the row's top (a capsule's y
+// minus `row`, in double, then rounded), so that they stay small wherever a line meets the capsule.
 int capsule_sections(const SweptCapsule* const* caps, int count, double r, int row, int lines, double* lo, double* hi,
                      double* open_lo, double* open_hi, double* closed_hi, std::uint64_t* left_bits,
+                     std::uint64_t* closed_bits, int* s0, int* n);
+int capsule_sections(const SweptCapsule* const* caps, int count, double r, int row, int lines, float* lo, float* hi,
+                     float* open_lo, float* open_hi, float* closed_hi, std::uint64_t* left_bits,
                      std::uint64_t* closed_bits, int* s0, int* n);
 
 }  // namespace casteljau::raster

@@ -10,7 +10,8 @@
 // soon as no capsule still to come can reach it, or at the end of the row, and one running sum
 // per row, times the lines' common weight, turns the cells into coverage, handed to a SpanSink in
 // runs of the blocks the intervals reached. A capsule's section form is built once, when its first
-// row comes.
+// row comes. The lines are kept in float for clips near x = 0 (kFloatSweepSide), each segment cut
+// to a strip of x there first (in_float_strip), and in double for others.
 //
 // Error: on a band of height h the midpoint rule misses the integral of the covered length L(y) by
 // at most h/2 times the total variation of L over the band (the half above the midpoint and the
@@ -26,6 +27,7 @@
 #include <cmath>
 #include <iterator>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -37,6 +39,10 @@ namespace casteljau {
 namespace {
 
 using raster::SweptCapsule;
+
+// Clips whose x, with the radius and a pixel around them, stay within this many pixels of 0 are swept
+// in float (in_float_strip); others in double.
+constexpr double kFloatSweepSide = 8192;
 
 // The band's parameters straight from the segment's differences (ux / uy = dx / dy and so on), so
 // that the square root of its length holds up only the half-width: two divisions, not five.
@@ -61,6 +67,24 @@ SweptCapsule make_capsule(const LineSegment& s, double r) {
     k.end_lo = std::min(0.0, len2 * inv_dx);
     k.end_hi = std::max(0.0, len2 * inv_dx);
     return k;
+}
+
+// Segment s cut to the strip |x| <= kFloatSweepSide, for a sweep in float: its coordinates keep
+// 2^-10 px there (y is taken from each row's top, capsule_section.hpp). The clip and the radius
+// and a pixel around it lie inside the strip, and the points within the radius of s there are
+// within it of the part kept. A segment that misses the strip becomes a point on its left edge,
+// whose disc cannot reach the clip. The cut depends on s alone, not on the clip, so every clip
+// (a band of an image, or the whole) sweeps the same capsules.
+LineSegment in_float_strip(const LineSegment& s) {
+    constexpr double lo = -kFloatSweepSide, hi = kFloatSweepSide;
+    const Point a = s.a, b = s.b;
+    if (a.x >= lo && a.x <= hi && b.x >= lo && b.x <= hi) return s;
+    if ((a.x < lo && b.x < lo) || (a.x > hi && b.x > hi)) return {{lo, a.y}, {lo, a.y}};
+    // The parameters [t0, t1] of a + t (b - a) inside the strip (b.x != a.x here).
+    const double dx = b.x - a.x, ta = (lo - a.x) / dx, tb = (hi - a.x) / dx;
+    const double t0 = std::max(0.0, std::min(ta, tb)), t1 = std::min(1.0, std::max(ta, tb));
+    auto at = [&](double t) { return Point{std::clamp(a.x + dx * t, lo, hi), a.y + (b.y - a.y) * t}; };
+    return {t0 > 0 ? at(t0) : a, t1 < 1 ? at(t1) : b};
 }
 
 // A segment that can reach the clip: its extent, the radius included, and its index. The sweep
@@ -205,20 +229,24 @@ public:
     // Interval [lo, hi], which capsule_sections left: it meets the open interval [open_lo, open_hi]
     // or lies left of it, and reaches where the closed intervals end (closed_hi) or the line is
     // no longer in order.
-    void add(double lo, double hi, double& open_lo, double& open_hi, double& closed_hi) {
+    // (Real: the lines' type, float or double; every value here is one of them, so the
+    // conversions are exact.)
+    template <class Real>
+    void add(double lo, double hi, Real& open_lo, Real& open_hi, Real& closed_hi) {
         if (!sorted_) {
             closed_.emplace_back(lo, hi);
         } else if (hi >= open_lo) {  // meets the open interval and reaches closed ones: merge them
-            open_lo = std::min(open_lo, lo);
-            open_hi = std::max(open_hi, hi);
-            while (!closed_.empty() && closed_.back().second >= open_lo) {
-                open_lo = std::min(open_lo, closed_.back().first);
+            double merged_lo = std::min<double>(open_lo, lo);
+            open_hi = static_cast<Real>(std::max<double>(open_hi, hi));
+            while (!closed_.empty() && closed_.back().second >= merged_lo) {
+                merged_lo = std::min(merged_lo, closed_.back().first);
                 closed_.pop_back();
             }
-            closed_hi = closed_.empty() ? -INFINITY : closed_.back().second;
+            open_lo = static_cast<Real>(merged_lo);
+            closed_hi = static_cast<Real>(closed_.empty() ? -INFINITY : closed_.back().second);
         } else {
             insert_closed(lo, hi);
-            closed_hi = closed_.back().second;
+            closed_hi = static_cast<Real>(closed_.back().second);
         }
     }
 
@@ -266,12 +294,14 @@ private:
 };
 
 // The sample lines of one pixel row: each line's union (LineUnion) with its open interval and the
-// end of its closed ones kept in arrays, as capsule_sections reads and folds them.
+// end of its closed ones kept in arrays, as capsule_sections reads and folds them, in Real (float
+// or double).
+template <class Real>
 class RowLines {
 public:
     RowLines(int lines, double r) : r_(r), lines_(static_cast<std::size_t>(lines)) {
         static_assert(raster::kMaxSectionLines >= kMaxRoundStrokeLines);
-        for (std::vector<double>* v : {&lo_, &hi_, &open_lo_, &open_hi_, &closed_hi_})
+        for (std::vector<Real>* v : {&lo_, &hi_, &open_lo_, &open_hi_, &closed_hi_})
             v->resize(raster::kMaxSectionLines + raster::kSectionPadding);
     }
 
@@ -311,8 +341,8 @@ private:
     // Takes what capsule_sections left of the capsule with left end x0 on its lines s0 .. s0 + n - 1:
     // the intervals it closed and the sections it could not fold.
     void hand_over(double x0, int s0, int n) {
-        // A section may start left of x0 by the rounding of its square root: a margin far above it.
-        const double settled_below = x0 - 1e-9 * std::max(1.0, std::fabs(x0));
+        // A section may start left of x0 by its rounding: a margin far above it.
+        const double settled_below = x0 - kRoundingMargin * std::max(1.0, std::fabs(x0));
         // Each line has at most one of the two bits.
         for (int word = 0; word <= (n - 1) / 64; ++word) {
             for (std::uint64_t bits = closed_bits_[word]; bits != 0; bits &= bits - 1) {
@@ -340,8 +370,10 @@ private:
     double x0_ = 0, x1_ = 0;
     RowCoverage* coverage_ = nullptr;
     std::vector<LineUnion> lines_;
-    std::vector<double> lo_, hi_;                        // one capsule's sections, from its first line
-    std::vector<double> open_lo_, open_hi_, closed_hi_;  // per line (LineUnion)
+    // Far above the relative rounding of a section's ends (a few units of the last place).
+    static constexpr double kRoundingMargin = std::is_same_v<Real, float> ? 1e-5 : 1e-9;
+    std::vector<Real> lo_, hi_;                        // one capsule's sections, from its first line
+    std::vector<Real> open_lo_, open_hi_, closed_hi_;  // per line (LineUnion)
     std::uint64_t left_bits_[raster::kMaxSectionLines / 64], closed_bits_[raster::kMaxSectionLines / 64];
 };
 
@@ -371,35 +403,14 @@ private:
     Mask& mask_;
 };
 
-}  // namespace
-
-Mask round_stroke_mask(std::span<const LineSegment> segments, double radius, const IRect& clip, int lines_per_pixel) {
-    Mask mask;
-    round_stroke_mask(segments, radius, clip, mask, lines_per_pixel);
-    return mask;
-}
-
-void round_stroke_mask(std::span<const LineSegment> segments, double radius, const IRect& clip, Mask& mask,
-                       int lines_per_pixel) {
-    mask.bounds = {};
-    mask.data.clear();
-    check_round_stroke(radius, clip, lines_per_pixel);
-    if (clip.empty()) return;
-    mask.bounds = clip;
-    mask.data.assign(static_cast<std::size_t>(clip.width()) * static_cast<std::size_t>(clip.height()), 0);
-    MaskRows rows(mask);
-    round_stroke_spans(segments, radius, clip, rows, lines_per_pixel);
-}
-
-void round_stroke_spans(std::span<const LineSegment> segments, double radius, const IRect& clip, SpanSink& sink,
-                        int lines_per_pixel) {
-    check_round_stroke(radius, clip, lines_per_pixel);
-    if (clip.empty()) return;
-    const std::vector<Extent> caps = extents_in(segments, radius, clip);
-    if (caps.empty()) return;
+// The sweep of round_stroke_spans over the segments reaching the clip (caps), its sample lines in
+// Real (float: segments cut by in_float_strip).
+template <class Real>
+void sweep(std::span<const LineSegment> segments, const std::vector<Extent>& caps, double radius, const IRect& clip,
+           SpanSink& sink, int lines_per_pixel) {
     const int w = clip.width();
     RowCoverage row(w);
-    RowLines lines(lines_per_pixel, radius);
+    RowLines<Real> lines(lines_per_pixel, radius);
     // The active capsules, each built once when its first row comes and kept in a slot of `built`
     // until its last row has gone.
     struct Active {
@@ -430,9 +441,11 @@ void round_stroke_spans(std::span<const LineSegment> segments, double radius, co
                 free_slots.pop_back();
             }
             const std::uint32_t i = caps[next].segment;
-            built[slot] = make_capsule(segments[i], radius);
+            const LineSegment& s = segments[i];
+            built[slot] = make_capsule(std::is_same_v<Real, float> ? in_float_strip(s) : s, radius);
             // A polyline's segments come one after another: the previous one, a capsule of this
-            // sweep too, already holds the disc where this one starts.
+            // sweep too, already holds the disc where this one starts (or both were cut there,
+            // where the disc cannot reach the clip).
             built[slot].start_disc = !(i > 0 && segments[i - 1].b == segments[i].a && built[slot].band);
             active.push_back({static_cast<std::uint32_t>(next), slot});
         }
@@ -459,6 +472,40 @@ void round_stroke_spans(std::span<const LineSegment> segments, double radius, co
         lines.accumulate();
         row.emit(1.0 / lines_per_pixel, j, clip.x0, w, sink);
     }
+}
+
+}  // namespace
+
+Mask round_stroke_mask(std::span<const LineSegment> segments, double radius, const IRect& clip, int lines_per_pixel) {
+    Mask mask;
+    round_stroke_mask(segments, radius, clip, mask, lines_per_pixel);
+    return mask;
+}
+
+void round_stroke_mask(std::span<const LineSegment> segments, double radius, const IRect& clip, Mask& mask,
+                       int lines_per_pixel) {
+    mask.bounds = {};
+    mask.data.clear();
+    check_round_stroke(radius, clip, lines_per_pixel);
+    if (clip.empty()) return;
+    mask.bounds = clip;
+    mask.data.assign(static_cast<std::size_t>(clip.width()) * static_cast<std::size_t>(clip.height()), 0);
+    MaskRows rows(mask);
+    round_stroke_spans(segments, radius, clip, rows, lines_per_pixel);
+}
+
+void round_stroke_spans(std::span<const LineSegment> segments, double radius, const IRect& clip, SpanSink& sink,
+                        int lines_per_pixel) {
+    check_round_stroke(radius, clip, lines_per_pixel);
+    if (clip.empty()) return;
+    const std::vector<Extent> caps = extents_in(segments, radius, clip);
+    if (caps.empty()) return;
+    // The choice depends on the clip's x only: the bands of an image, which differ in y, sweep alike.
+    const double margin = radius + 1;
+    if (clip.x0 - margin >= -kFloatSweepSide && clip.x1 + margin <= kFloatSweepSide)
+        sweep<float>(segments, caps, radius, clip, sink, lines_per_pixel);
+    else
+        sweep<double>(segments, caps, radius, clip, sink, lines_per_pixel);
 }
 
 }  // namespace casteljau

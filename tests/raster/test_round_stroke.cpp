@@ -229,3 +229,75 @@ TEST_CASE("round_stroke_mask: every SIMD target gives the same pixels", "[raster
     for (std::size_t k = 0; k < 40 * 40; ++k) covered += first[k] > 0;
     CHECK(covered > 400);
 }
+
+TEST_CASE("round_stroke_mask: segments reaching far outside the clip", "[raster][round_stroke]") {
+    // Segments from far away (coordinates of 1e7 px) cover the clip as their parts near it do:
+    // only those parts are swept, in the clip's coordinates. One passing the clip by more than the
+    // radius covers nothing.
+    const IRect clip{-30, 20, 70, 60};
+    const std::vector<LineSegment> far{{{-1e7, 31.3}, {1e7, 31.3}},
+                                       {{-1e7, -1e7 + 0.37}, {1e7, 1e7 + 0.37}},
+                                       {{25.6, -1e7}, {25.6, 1e7}},
+                                       {{-1e7, 1e7}, {1e7, 1e7 - 15}}};
+    // The same lines between points just outside the clip.
+    const std::vector<LineSegment> near{
+        {{-40, 31.3}, {80, 31.3}}, {{-50, -50 + 0.37}, {90, 90 + 0.37}}, {{25.6, 10}, {25.6, 70}}};
+    for (double r : {0.4, 3.0}) {
+        const Mask a = round_stroke_mask(far, r, clip);
+        const Mask b = round_stroke_mask(near, r, clip);
+        int worst = 0;
+        for (std::size_t k = 0; k < a.data.size(); ++k) worst = std::max(worst, std::abs(a.data[k] - b.data[k]));
+        INFO("radius " << r);
+        CHECK(worst <= 1);
+        std::size_t covered = 0;
+        for (std::uint8_t v : a.data) covered += v > 0;
+        CHECK(covered > 200);
+    }
+}
+
+TEST_CASE("round_stroke_mask: a wide clip (double) and a narrow one (float) agree", "[raster][round_stroke]") {
+    // Clips up to 8192 px per side are swept in float, wider ones in double: the same strokes
+    // give the same pixels within the rounding of 1/255.
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<LineSegment> segs;
+    Point p{10, 10};
+    for (int i = 0; i < 400; ++i) {
+        const Point q{std::clamp(p.x + 6 * (u(rng) - 0.5), 1.0, 99.0), std::clamp(p.y + 6 * (u(rng) - 0.5), 1.0, 39.0)};
+        segs.push_back({p, q});
+        p = q;
+    }
+    for (double r : {0.25, 0.4, 1.7}) {
+        const Mask narrow = round_stroke_mask(segs, r, {0, 0, 100, 40});
+        const Mask wide = round_stroke_mask(segs, r, {0, 0, 9000, 40});
+        int worst = 0;
+        for (int y = 0; y < 40; ++y)
+            for (int x = 0; x < 100; ++x) worst = std::max(worst, std::abs(narrow.at(x, y) - wide.at(x, y)));
+        INFO("radius " << r);
+        CHECK(worst <= 1);
+    }
+}
+
+TEST_CASE("round_stroke_mask: rows far down the image give the pixels of rows near the top", "[raster][round_stroke]") {
+    // Heights are taken from each row's top: the same strokes 30,000 rows further down (nearly
+    // horizontal segments, where a height error moves the section most) give the same pixels.
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<LineSegment> top, low;
+    constexpr double kDown = 30000;
+    for (int i = 0; i < 60; ++i) {
+        const Point a{2 + 90 * u(rng), 2 + 26 * u(rng)};
+        const Point b{std::clamp(a.x + 40 * (u(rng) - 0.5), 1.0, 99.0),
+                      std::clamp(a.y + 2 * (u(rng) - 0.5), 1.0, 29.0)};
+        top.push_back({a, b});
+        low.push_back({{a.x, a.y + kDown}, {b.x, b.y + kDown}});
+    }
+    for (double r : {0.3, 0.8}) {
+        const Mask a = round_stroke_mask(top, r, {0, 0, 100, 30});
+        const Mask b = round_stroke_mask(low, r, {0, 30000, 100, 30030});
+        int worst = 0;
+        for (std::size_t k = 0; k < a.data.size(); ++k) worst = std::max(worst, std::abs(a.data[k] - b.data[k]));
+        INFO("radius " << r);
+        CHECK(worst <= 1);
+    }
+}
