@@ -71,21 +71,56 @@ HWY_INLINE void OrBits(D d, M m, int i, std::uint64_t* HWY_RESTRICT words) {
     words[i / 64] |= bits << (i % 64);
 }
 
+// Adds the settling lanes' intervals [olo, ohi], cut to the row's pixels, to one SettledRun when
+// they end within kSettledPixels pixels of each other; returns the lanes left to the caller (none,
+// or all of them when they spread wider or the runs are full).
+template <class D, class V, class M>
+HWY_INLINE M SettleLanes(D d, M settle, V olo, V ohi, SectionRow<hn::TFromD<D>>& st) {
+    const auto none = hn::FirstN(d, 0);
+    const auto l = hn::Max(olo, Splat(d, st.clip_lo)), h = hn::Min(ohi, Splat(d, st.clip_hi));
+    const auto valid = hn::And(settle, hn::Lt(l, h));
+    if (hn::AllFalse(d, valid)) return none;  // nothing inside the row's pixels
+    const double first =
+        std::floor(static_cast<double>(hn::GetLane(hn::MinOfLanes(d, hn::IfThenElse(valid, l, Splat(d, INFINITY))))));
+    const double last =
+        std::floor(static_cast<double>(hn::GetLane(hn::MaxOfLanes(d, hn::IfThenElse(valid, h, Splat(d, -INFINITY))))));
+    if (last - first >= kSettledPixels || st.n_runs == st.max_runs) return valid;
+    // Lengths from the first pixel's left side (small values, exact differences), each rounded to
+    // whole units of kSettledUnit: whole numbers, summed exactly in any order.
+    const auto base = Splat(d, first);
+    const auto u = hn::IfThenElseZero(valid, hn::Sub(l, base)), v = hn::IfThenElseZero(valid, hn::Sub(h, base));
+    const auto units = Splat(d, 1.0 / kSettledUnit);
+    SettledRun& run = st.runs[st.n_runs++];
+    run.x = static_cast<int>(first);
+    run.count = static_cast<int>(last - first) + 1;
+    for (int k = 0; k < run.count; ++k) {
+        const auto len =
+            hn::Max(hn::Sub(hn::Min(v, Splat(d, k + 1.0)), hn::Max(u, Splat(d, static_cast<double>(k)))), hn::Zero(d));
+        const auto q = hn::Round(hn::Mul(len, units));
+        run.units[k] = static_cast<std::int32_t>(hn::GetLane(hn::SumOfLanes(d, q)));
+    }
+    return none;
+}
+
 // One capsule on lines s0 .. s0 + n - 1 of the row (capsule_section.hpp): returns how many lines
-// it left for the caller (a bit set in left_bits or closed_bits). T: the lanes' type.
+// it left for the caller (a bit set in left_bits or closed_bits). Intervals it closes that no
+// later capsule can reach (ending left of settle_below, on lines still in order) are settled here.
 template <class T>
-HWY_INLINE int CapsuleSections(const SweptCapsule& k, double r, int row, double step, int s0, int n,
-                               T* HWY_RESTRICT lo_out, T* HWY_RESTRICT hi_out, T* HWY_RESTRICT open_lo,
-                               T* HWY_RESTRICT open_hi, T* HWY_RESTRICT closed_hi,
-                               std::uint64_t* HWY_RESTRICT left_bits, std::uint64_t* HWY_RESTRICT closed_bits) {
+HWY_INLINE int CapsuleSections(const SweptCapsule& k, double step, int s0, int n, double settle_below,
+                               SectionRow<T>& st) {
     const hn::ScalableTag<T> d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     static_assert(kMaxSectionLines % 64 == 0);
-    for (int w = 0; w < (n + 63) / 64; ++w) left_bits[w] = closed_bits[w] = 0;
+    const int row = st.row;
+    T* HWY_RESTRICT open_lo = st.open_lo + s0;
+    T* HWY_RESTRICT open_hi = st.open_hi + s0;
+    T* HWY_RESTRICT closed_hi = st.closed_hi + s0;
+    const T* HWY_RESTRICT limit = st.settle_limit + s0;
+    for (int w = 0; w < (n + 63) / 64; ++w) st.left_bits[w] = st.closed_bits[w] = 0;
     // Heights above the row's top: small wherever a line meets the capsule, so that float keeps them
     // to its last place, however far down the image the row is.
-    const auto r2 = Splat(d, r * r), y0 = Splat(d, k.y0 - row), y1 = Splat(d, k.y1 - row);
-    const auto inf = Splat(d, INFINITY), neg_inf = Splat(d, -INFINITY);
+    const auto r2 = Splat(d, st.r * st.r), y0 = Splat(d, k.y0 - row), y1 = Splat(d, k.y1 - row);
+    const auto inf = Splat(d, INFINITY), neg_inf = Splat(d, -INFINITY), below = Splat(d, settle_below);
     std::size_t handed = 0;
     for (int i = 0; i < n; i += lanes) {
         const auto s = hn::Iota(d, static_cast<T>(s0 + i));
@@ -93,12 +128,12 @@ HWY_INLINE int CapsuleSections(const SweptCapsule& k, double r, int row, double 
         auto lo = inf, hi = neg_inf;
         if (k.start_disc) AddDisc(d, c, row, k.ax, k.ay, r2, lo, hi);
         AddDisc(d, c, row, k.bx, k.by, r2, lo, hi);
-        if (k.band) AddBand(d, c, row, k, r, lo, hi);
+        if (k.band) AddBand(d, c, row, k, st.r, lo, hi);
         const auto hit = hn::And(hn::And(hn::Gt(c, y0), hn::Lt(c, y1)),
                                  hn::And(hn::Lt(lo, hi), hn::FirstN(d, static_cast<std::size_t>(n - i))));
         // Fold into the open intervals: take where there is none, merge where the section meets it
         // and stays right of the closed ones, advance where it lies right of it (the open interval
-        // is closed and handed out, the section opens).
+        // is closed, and settled or handed out; the section opens).
         auto olo = hn::LoadU(d, open_lo + i), ohi = hn::LoadU(d, open_hi + i);
         const auto take = hn::And(hit, hn::Gt(olo, ohi));
         const auto meets = hn::And(hn::Le(lo, ohi), hn::Ge(hi, olo));
@@ -106,17 +141,20 @@ HWY_INLINE int CapsuleSections(const SweptCapsule& k, double r, int row, double 
         const auto advance = hn::AndNot(take, hn::And(hit, hn::Gt(lo, ohi)));
         const auto left = hn::AndNot(hn::Or(hn::Or(take, merge), advance), hit);
         hn::StoreU(hn::IfThenElse(advance, ohi, hn::LoadU(d, closed_hi + i)), d, closed_hi + i);
-        hn::StoreU(hn::IfThenElse(left, lo, olo), d, lo_out + i);
-        hn::StoreU(hn::IfThenElse(left, hi, ohi), d, hi_out + i);
+        const auto settle = hn::And(advance, hn::And(hn::Lt(ohi, below), hn::Lt(ohi, hn::LoadU(d, limit + i))));
+        auto closes = hn::AndNot(settle, advance);
+        if (!hn::AllFalse(d, settle)) closes = hn::Or(closes, SettleLanes(d, settle, olo, ohi, st));
+        hn::StoreU(hn::IfThenElse(left, lo, olo), d, st.lo + i);
+        hn::StoreU(hn::IfThenElse(left, hi, ohi), d, st.hi + i);
         const auto opens = hn::Or(take, advance);
         olo = hn::IfThenElse(opens, lo, hn::IfThenElse(merge, hn::Min(olo, lo), olo));
         ohi = hn::IfThenElse(opens, hi, hn::IfThenElse(merge, hn::Max(ohi, hi), ohi));
         hn::StoreU(olo, d, open_lo + i);
         hn::StoreU(ohi, d, open_hi + i);
-        const std::size_t count = hn::CountTrue(d, hn::Or(left, advance));
+        const std::size_t count = hn::CountTrue(d, hn::Or(left, closes));
         if (count != 0) {
-            OrBits(d, left, i, left_bits);
-            OrBits(d, advance, i, closed_bits);
+            OrBits(d, left, i, st.left_bits);
+            OrBits(d, closes, i, st.closed_bits);
             handed += count;
         }
     }
@@ -133,17 +171,17 @@ HWY_INLINE void SectionLines(const SweptCapsule& k, int row, int lines, int& s0,
 
 // A row's capsules in order until one leaves something for the caller (capsule_section.hpp).
 template <class T>
-HWY_INLINE int RowSections(const SweptCapsule* const* caps, int count, double r, int row, int lines, T* HWY_RESTRICT lo,
-                           T* HWY_RESTRICT hi, T* HWY_RESTRICT open_lo, T* HWY_RESTRICT open_hi,
-                           T* HWY_RESTRICT closed_hi, std::uint64_t* HWY_RESTRICT left_bits,
-                           std::uint64_t* HWY_RESTRICT closed_bits, int* s0_out, int* n_out) {
-    const double step = 1.0 / lines;
+HWY_INLINE int RowSections(const SweptCapsule* const* caps, const double* x0, int count, SectionRow<T>& st, int* s0_out,
+                           int* n_out) {
+    const double step = 1.0 / st.lines;
     for (int c = 0; c < count; ++c) {
         int s0, s1;
-        SectionLines(*caps[c], row, lines, s0, s1);
+        SectionLines(*caps[c], st.row, st.lines, s0, s1);
         if (s1 < s0) continue;
-        if (CapsuleSections(*caps[c], r, row, step, s0, s1 - s0 + 1, lo, hi, open_lo + s0, open_hi + s0, closed_hi + s0,
-                            left_bits, closed_bits) != 0) {
+        // No capsule still to come reaches left of this one's left end (they come in its order),
+        // less a margin for the rounding of the sections.
+        const double below = x0[c] - st.margin * std::max(1.0, std::fabs(x0[c]));
+        if (CapsuleSections(*caps[c], step, s0, s1 - s0 + 1, below, st) != 0) {
             *s0_out = s0;
             *n_out = s1 - s0 + 1;
             return c;
@@ -152,16 +190,14 @@ HWY_INLINE int RowSections(const SweptCapsule* const* caps, int count, double r,
     return count;
 }
 
-int CapsuleSectionsImpl(const SweptCapsule* const* caps, int count, double r, int row, int lines, double* lo,
-                        double* hi, double* open_lo, double* open_hi, double* closed_hi, std::uint64_t* left_bits,
-                        std::uint64_t* closed_bits, int* s0, int* n) {
-    return RowSections(caps, count, r, row, lines, lo, hi, open_lo, open_hi, closed_hi, left_bits, closed_bits, s0, n);
+int CapsuleSectionsImpl(const SweptCapsule* const* caps, const double* x0, int count, SectionRow<double>& st, int* s0,
+                        int* n) {
+    return RowSections(caps, x0, count, st, s0, n);
 }
 
-int CapsuleSectionsFloatImpl(const SweptCapsule* const* caps, int count, double r, int row, int lines, float* lo,
-                             float* hi, float* open_lo, float* open_hi, float* closed_hi, std::uint64_t* left_bits,
-                             std::uint64_t* closed_bits, int* s0, int* n) {
-    return RowSections(caps, count, r, row, lines, lo, hi, open_lo, open_hi, closed_hi, left_bits, closed_bits, s0, n);
+int CapsuleSectionsFloatImpl(const SweptCapsule* const* caps, const double* x0, int count, SectionRow<float>& st,
+                             int* s0, int* n) {
+    return RowSections(caps, x0, count, st, s0, n);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -174,18 +210,14 @@ namespace casteljau::raster {
 CASTELJAU_SIMD_EXPORT(CapsuleSectionsImpl);
 CASTELJAU_SIMD_EXPORT(CapsuleSectionsFloatImpl);
 
-int capsule_sections(const SweptCapsule* const* caps, int count, double r, int row, int lines, double* lo, double* hi,
-                     double* open_lo, double* open_hi, double* closed_hi, std::uint64_t* left_bits,
-                     std::uint64_t* closed_bits, int* s0, int* n) {
-    return CASTELJAU_SIMD_DISPATCH(CapsuleSectionsImpl)(caps, count, r, row, lines, lo, hi, open_lo, open_hi, closed_hi,
-                                                        left_bits, closed_bits, s0, n);
+int capsule_sections(const SweptCapsule* const* caps, const double* x0, int count, SectionRow<double>& row, int* s0,
+                     int* n) {
+    return CASTELJAU_SIMD_DISPATCH(CapsuleSectionsImpl)(caps, x0, count, row, s0, n);
 }
 
-int capsule_sections(const SweptCapsule* const* caps, int count, double r, int row, int lines, float* lo, float* hi,
-                     float* open_lo, float* open_hi, float* closed_hi, std::uint64_t* left_bits,
-                     std::uint64_t* closed_bits, int* s0, int* n) {
-    return CASTELJAU_SIMD_DISPATCH(CapsuleSectionsFloatImpl)(caps, count, r, row, lines, lo, hi, open_lo, open_hi,
-                                                             closed_hi, left_bits, closed_bits, s0, n);
+int capsule_sections(const SweptCapsule* const* caps, const double* x0, int count, SectionRow<float>& row, int* s0,
+                     int* n) {
+    return CASTELJAU_SIMD_DISPATCH(CapsuleSectionsFloatImpl)(caps, x0, count, row, s0, n);
 }
 
 }  // namespace casteljau::raster

@@ -33,9 +33,40 @@ struct SweptCapsule {
 inline constexpr int kMaxSectionLines = 256;
 inline constexpr int kSectionPadding = 64;
 
-// The capsules caps[0], caps[1], ... in order, each on its lines s0 .. s0 + n - 1 of row `row`
-// (those whose centres may lie inside its vertical extent (y0, y1), with a line to spare on each
-// side; n <= kMaxSectionLines), until one leaves lines for the caller.
+// Closed intervals of one capsule and one SIMD vector of lines, settled together: their summed
+// lengths in pixels x .. x + count - 1 (count <= kSettledPixels), in units of kSettledUnit px.
+inline constexpr int kSettledPixels = 4;
+inline constexpr double kSettledUnit = 0x1p-20;
+struct SettledRun {
+    int x, count;
+    std::int32_t units[kSettledPixels];
+};
+
+// One pixel row's sample lines, as capsule_sections folds capsules into them; T is double or
+// float. Line s of the row's `lines` is y = row + (s + 0.5) / lines.
+template <class T>
+struct SectionRow {
+    int row = 0, lines = 0;
+    double r = 0;  // the capsules' radius
+    // Per line from the row's line 0 (lines + kSectionPadding values): the open interval and the
+    // end of the closed ones (see capsule_sections), and settle_limit: +infinity while the line's
+    // closed intervals are in order (one may settle), -infinity once not (the caller keeps all).
+    T *open_lo = nullptr, *open_hi = nullptr, *closed_hi = nullptr, *settle_limit = nullptr;
+    // One capsule's sections or closed intervals left for the caller, from its first line (n +
+    // kSectionPadding values), and which lines hold which (n / 64 words, rounded up).
+    T *lo = nullptr, *hi = nullptr;
+    std::uint64_t *left_bits = nullptr, *closed_bits = nullptr;
+    // Settling: the row's pixels span x in [clip_lo, clip_hi]; `margin` is the relative rounding
+    // allowed for a section's left end; runs[0 .. n_runs) receive what settled (max_runs at most).
+    double clip_lo = 0, clip_hi = 0, margin = 0;
+    SettledRun* runs = nullptr;
+    int n_runs = 0, max_runs = 0;
+};
+
+// The capsules caps[0], caps[1], ... (their left ends in x0, in increasing order) in order, each
+// on its lines s0 .. s0 + n - 1 of the row (those whose centres may lie inside its vertical extent
+// (y0, y1), with a line to spare on each side; n <= kMaxSectionLines), until one leaves lines for
+// the caller.
 //
 // For each capsule, the interval of x where each of its lines lies within r of it is folded into
 // the line's union where that is simple. A line's union is kept as its open interval
@@ -43,26 +74,26 @@ inline constexpr int kSectionPadding = 64;
 // and, left of it, closed intervals ending at most at closed_hi[i] (-infinity: none). A line with
 // no open interval takes the section as its open one; a section meeting the open interval and
 // starting right of closed_hi merges with it; a section right of the open interval closes it
-// (closed_hi becomes its end) and becomes the open one. Any other section is left for the caller,
-// and so is each closed interval. Lines the capsule misses (or does not cross strictly inside
-// (y0, y1)) change nothing.
+// (closed_hi becomes its end) and becomes the open one. Any other section is left for the caller.
+// A closed interval is settled when no capsule still to come can reach it (it ends left of this
+// capsule's left end, less the margin) and its line is in order: the closed intervals of one
+// SIMD vector of lines ending within kSettledPixels pixels go, cut to [clip_lo, clip_hi], to one
+// SettledRun; any other closed interval is left for the caller. Lines the capsule misses (or does
+// not cross strictly inside (y0, y1)) change nothing.
 //
 // Returns the index of the first capsule that left something, with its s0 and n in *s0 and *n:
 // for its line s0 + i, bit i of left_bits is set when lo[i], hi[i] hold a section left for the
 // caller, bit i of closed_bits when they hold the interval it closed (each line has one bit at
-// most). Returns count when no capsule left anything. open_lo, open_hi and closed_hi hold the
-// row's lines from its line 0, lines + kSectionPadding values; lo and hi n + kSectionPadding
-// values; left_bits and closed_bits n / 64 words, rounded up. The values are those of the scalar
-// formula (the same operations in the same order, no fused multiply-add), whatever the target.
+// most). Returns count when no capsule left anything. The values are those of the scalar formula
+// (the same operations in the same order, no fused multiply-add), whatever the target; a run's
+// lengths are rounded to whole units before they are summed, so its sums are too.
 //
 // In double, or in float (twice the lines per vector): the capsule's values are rounded to float
 // first and every operation is done in float. Heights are taken from the row's top (a capsule's y
 // minus `row`, in double, then rounded), so that they stay small wherever a line meets the capsule.
-int capsule_sections(const SweptCapsule* const* caps, int count, double r, int row, int lines, double* lo, double* hi,
-                     double* open_lo, double* open_hi, double* closed_hi, std::uint64_t* left_bits,
-                     std::uint64_t* closed_bits, int* s0, int* n);
-int capsule_sections(const SweptCapsule* const* caps, int count, double r, int row, int lines, float* lo, float* hi,
-                     float* open_lo, float* open_hi, float* closed_hi, std::uint64_t* left_bits,
-                     std::uint64_t* closed_bits, int* s0, int* n);
+int capsule_sections(const SweptCapsule* const* caps, const double* x0, int count, SectionRow<double>& row, int* s0,
+                     int* n);
+int capsule_sections(const SweptCapsule* const* caps, const double* x0, int count, SectionRow<float>& row, int* s0,
+                     int* n);
 
 }  // namespace casteljau::raster

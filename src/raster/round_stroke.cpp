@@ -157,6 +157,18 @@ public:
         to_ = std::max(to_, i1);
     }
 
+    // Adds a run of summed lengths (capsule_section.hpp) whose pixel x is origin + run.x.
+    void add_run(const raster::SettledRun& run, int origin) {
+        const int p0 = run.x - origin;
+        for (int k = 0; k < run.count; ++k)
+            cells_[static_cast<std::size_t>(p0 + k)].area -= run.units[k] * raster::kSettledUnit;
+        const unsigned k0 = static_cast<unsigned>(p0) / unsigned{kBlock},
+                       k1 = static_cast<unsigned>(p0 + run.count - 1) / unsigned{kBlock};
+        for (unsigned k = k0; k <= k1; ++k) touched_[k / 64] |= std::uint64_t{1} << (k % 64);
+        from_ = std::min(from_, p0);
+        to_ = std::max(to_, p0 + run.count - 1);
+    }
+
     // Hands `sink` row y's touched pixels (of w, from x0), each covered length times `weight` as
     // 8-bit coverage, one run of touched blocks at a time, and clears the accumulators.
     void emit(double weight, int y, int x0, int w, SpanSink& sink) {
@@ -214,6 +226,9 @@ public:
         closed_.clear();
         sorted_ = true;
     }
+
+    // Whether the closed intervals are still in order (else they are sorted once at the end).
+    bool in_order() const { return sorted_; }
 
     // The open interval [lo, hi], closed by capsule_sections. No interval still to come starts left
     // of `settled_below`: one ending left of it, with the closed ones in order (so none overlaps it),
@@ -299,32 +314,50 @@ private:
 template <class Real>
 class RowLines {
 public:
-    RowLines(int lines, double r) : r_(r), lines_(static_cast<std::size_t>(lines)) {
+    RowLines(int lines, double r) : lines_(static_cast<std::size_t>(lines)) {
         static_assert(raster::kMaxSectionLines >= kMaxRoundStrokeLines);
-        for (std::vector<Real>* v : {&lo_, &hi_, &open_lo_, &open_hi_, &closed_hi_})
+        for (std::vector<Real>* v : {&lo_, &hi_, &open_lo_, &open_hi_, &closed_hi_, &settle_limit_})
             v->resize(raster::kMaxSectionLines + raster::kSectionPadding);
+        runs_.resize(kMaxRuns);
+        st_.lines = lines;
+        st_.r = r;
+        st_.open_lo = open_lo_.data();
+        st_.open_hi = open_hi_.data();
+        st_.closed_hi = closed_hi_.data();
+        st_.settle_limit = settle_limit_.data();
+        st_.lo = lo_.data();
+        st_.hi = hi_.data();
+        st_.left_bits = left_bits_;
+        st_.closed_bits = closed_bits_;
+        st_.margin = kRoundingMargin;
+        st_.runs = runs_.data();
+        st_.max_runs = kMaxRuns;
     }
 
     // Starts pixel row `row`, whose intervals, clipped to [x0, x1], go to `coverage` (local x from x0).
     void start(int row, double x0, double x1, RowCoverage& coverage) {
-        row_ = row;
+        st_.row = row;
+        st_.clip_lo = x0;
+        st_.clip_hi = x1;
         x0_ = x0;
         x1_ = x1;
+        origin_ = static_cast<int>(x0);
         coverage_ = &coverage;
         for (LineUnion& line : lines_) line.clear();
         std::fill(open_lo_.begin(), open_lo_.end(), INFINITY);
         std::fill(open_hi_.begin(), open_hi_.end(), -INFINITY);
         std::fill(closed_hi_.begin(), closed_hi_.end(), -INFINITY);
+        std::fill(settle_limit_.begin(), settle_limit_.end(), INFINITY);
     }
 
     // Adds the sections of caps[0 .. count) (their left ends in x0) to the row's lines; the
     // capsules come in order of their left ends.
     void add(const raster::SweptCapsule* const* caps, const double* x0, int count) {
-        const int n = static_cast<int>(lines_.size());
         for (int c = 0; c < count;) {
             int s0 = 0, lines = 0;
-            c += raster::capsule_sections(caps + c, count - c, r_, row_, n, lo_.data(), hi_.data(), open_lo_.data(),
-                                          open_hi_.data(), closed_hi_.data(), left_bits_, closed_bits_, &s0, &lines);
+            st_.n_runs = 0;
+            c += raster::capsule_sections(caps + c, x0 + c, count - c, st_, &s0, &lines);
+            for (int k = 0; k < st_.n_runs; ++k) coverage_->add_run(runs_[static_cast<std::size_t>(k)], origin_);
             if (c == count) return;
             hand_over(x0[c], s0, lines);
             ++c;
@@ -339,7 +372,7 @@ public:
 
 private:
     // Takes what capsule_sections left of the capsule with left end x0 on its lines s0 .. s0 + n - 1:
-    // the intervals it closed and the sections it could not fold.
+    // the intervals it closed and did not settle, and the sections it could not fold.
     void hand_over(double x0, int s0, int n) {
         // A section may start left of x0 by its rounding: a margin far above it.
         const double settled_below = x0 - kRoundingMargin * std::max(1.0, std::fabs(x0));
@@ -354,6 +387,7 @@ private:
                 const std::size_t t = static_cast<std::size_t>(word * 64 + std::countr_zero(bits));
                 const std::size_t u = t + static_cast<std::size_t>(s0);
                 lines_[u].add(lo_[t], hi_[t], open_lo_[u], open_hi_[u], closed_hi_[u]);
+                if (!lines_[u].in_order()) settle_limit_[u] = -INFINITY;
             }
         }
     }
@@ -365,16 +399,19 @@ private:
         if (hi > lo) coverage_->add(lo - x0_, hi - x0_);
     }
 
-    double r_;
-    int row_ = 0;
-    double x0_ = 0, x1_ = 0;
-    RowCoverage* coverage_ = nullptr;
-    std::vector<LineUnion> lines_;
     // Far above the relative rounding of a section's ends (a few units of the last place).
     static constexpr double kRoundingMargin = std::is_same_v<Real, float> ? 1e-5 : 1e-9;
+    static constexpr int kMaxRuns = 64;  // settled runs per call of capsule_sections
+    double x0_ = 0, x1_ = 0;
+    int origin_ = 0;  // x0 as a whole pixel (clips are whole pixels)
+    RowCoverage* coverage_ = nullptr;
+    std::vector<LineUnion> lines_;
     std::vector<Real> lo_, hi_;                        // one capsule's sections, from its first line
     std::vector<Real> open_lo_, open_hi_, closed_hi_;  // per line (LineUnion)
+    std::vector<Real> settle_limit_;                   // per line: +infinity while in order
+    std::vector<raster::SettledRun> runs_;
     std::uint64_t left_bits_[raster::kMaxSectionLines / 64], closed_bits_[raster::kMaxSectionLines / 64];
+    raster::SectionRow<Real> st_;
 };
 
 // Throws for arguments round_stroke_spans() does not take (see casteljau/round_stroke.hpp).

@@ -301,3 +301,50 @@ TEST_CASE("round_stroke_mask: rows far down the image give the pixels of rows ne
         CHECK(worst <= 1);
     }
 }
+
+TEST_CASE("round_stroke_mask: long crossing segments against the exact union", "[raster][round_stroke]") {
+    // Long segments crossing every which way: a capsule's section may reach back over intervals
+    // that earlier capsules closed on its line, which then goes out of order; a closed interval
+    // must not be settled while an interval kept out of order may still overlap it.
+    std::mt19937 rng(77);
+    std::uniform_real_distribution<double> u(0, 1);
+    double worst = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        std::vector<std::vector<Point>> lines;
+        const int n = 8 + trial % 20;
+        for (int i = 0; i < n; ++i)
+            lines.push_back({{2 + 60 * u(rng), 2 + 60 * u(rng)}, {2 + 60 * u(rng), 2 + 60 * u(rng)}});
+        const double r = 0.15 + 0.4 * u(rng);
+        const IRect clip{0, 0, 64, 64};
+        const Mask m = round_stroke_mask(segments_of(lines), r, clip);
+        const Error255 e = compare(m, reference(lines, r, clip));
+        INFO("trial " << trial << " radius " << r << ": max " << e.max << "/255");
+        CHECK(e.max <= 8.0);
+        worst = std::max(worst, e.max);
+    }
+    WARN("long crossing segments: worst pixel " << worst << "/255");
+}
+
+TEST_CASE("round_stroke_mask: a line's intervals out of order are never settled early", "[raster][round_stroke]") {
+    // Ten long diagonals, all starting at x = 1 (so they come first), cross row 30 side by side
+    // near x = 60; their intervals on its lines stay open to later capsules. A short vertical stroke
+    // at x = 10 then reaches back over all of them (the lines' intervals go out of order), a short
+    // horizontal stroke merges with the rightmost and spans two others, and a last vertical stroke
+    // closes that interval: it must not be settled at once, or the points it shares with the two
+    // diagonals count twice.
+    std::vector<std::vector<Point>> lines;
+    for (int i = 0; i < 10; ++i) {
+        const Point p{60 + 0.8 * i, 30.5};
+        const Point a{1, 10}, d = p - a;
+        lines.push_back({a, a + d * (24.0 / 20.5)});
+    }
+    lines.push_back({{10, 28}, {10, 33}});
+    lines.push_back({{65.5, 30.5}, {68, 30.5}});
+    lines.push_back({{70, 28}, {70, 33}});
+    const IRect clip{0, 8, 80, 38};
+    const double r = 0.1;
+    const Mask m = round_stroke_mask(segments_of(lines), r, clip);
+    const Error255 e = compare(m, reference(lines, r, clip));
+    INFO("max " << e.max << "/255");
+    CHECK(e.max <= 8.0);
+}
