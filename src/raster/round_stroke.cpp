@@ -40,6 +40,9 @@ namespace {
 
 using raster::SweptCapsule;
 
+// Capsules ahead whose segments the sweep fetches before it builds them.
+constexpr std::size_t kFetchAhead = 8;
+
 // Clips whose x, with the radius and a pixel around them, stay within this many pixels of 0 are swept
 // in float (in_float_strip); others in double.
 constexpr double kFloatSweepSide = 8192;
@@ -477,6 +480,8 @@ void sweep(std::span<const LineSegment> segments, const std::vector<Extent>& cap
                 slot = free_slots.back();
                 free_slots.pop_back();
             }
+            // The segments come in order of their first rows, scattered in memory: fetch ahead.
+            if (next + kFetchAhead < caps.size()) __builtin_prefetch(&segments[caps[next + kFetchAhead].segment]);
             const std::uint32_t i = caps[next].segment;
             const LineSegment& s = segments[i];
             built[slot] = make_capsule(std::is_same_v<Real, float> ? in_float_strip(s) : s, radius);
