@@ -336,6 +336,8 @@ public:
         st_.runs = runs_.data();
         st_.max_runs = kMaxRuns;
     }
+    RowLines(const RowLines&) = delete;  // st_ points into the object's own lists
+    RowLines& operator=(const RowLines&) = delete;
 
     // Starts pixel row `row`, whose intervals, clipped to [x0, x1], go to `coverage` (local x from x0).
     void start(int row, double x0, double x1, RowCoverage& coverage) {
