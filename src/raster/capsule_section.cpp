@@ -178,10 +178,7 @@ HWY_INLINE int RowSections(const SweptCapsule* const* caps, const double* x0, in
         int s0, s1;
         SectionLines(*caps[c], st.row, st.lines, s0, s1);
         if (s1 < s0) continue;
-        // No capsule still to come reaches left of this one's left end (they come in its order),
-        // less a margin for the rounding of the sections.
-        const double below = x0[c] - st.margin * std::max(1.0, std::fabs(x0[c]));
-        if (CapsuleSections(*caps[c], step, s0, s1 - s0 + 1, below, st) != 0) {
+        if (CapsuleSections(*caps[c], step, s0, s1 - s0 + 1, settle_bound(x0[c], st.margin), st) != 0) {
             *s0_out = s0;
             *n_out = s1 - s0 + 1;
             return c;

@@ -7,6 +7,7 @@
 // Thread-safety: pure functions.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -41,6 +42,11 @@ struct SettledRun {
     int x, count;
     std::int32_t units[kSettledPixels];
 };
+
+// Where intervals settle for a capsule with left end x0, when capsules come in order of their left
+// ends: none still to come reaches left of x0, less `margin` (relative) for the rounding of the
+// sections.
+inline double settle_bound(double x0, double margin) { return x0 - margin * std::max(1.0, std::fabs(x0)); }
 
 // One pixel row's sample lines, as capsule_sections folds capsules into them; T is double or
 // float. Line s of the row's `lines` is y = row + (s + 0.5) / lines.

@@ -344,9 +344,6 @@ public:
         st_.row = row;
         st_.clip_lo = x0;
         st_.clip_hi = x1;
-        x0_ = x0;
-        x1_ = x1;
-        origin_ = static_cast<int>(x0);
         coverage_ = &coverage;
         for (LineUnion& line : lines_) line.clear();
         std::fill(open_lo_.begin(), open_lo_.end(), INFINITY);
@@ -362,7 +359,8 @@ public:
             int s0 = 0, lines = 0;
             st_.n_runs = 0;
             c += raster::capsule_sections(caps + c, x0 + c, count - c, st_, &s0, &lines);
-            for (int k = 0; k < st_.n_runs; ++k) coverage_->add_run(runs_[static_cast<std::size_t>(k)], origin_);
+            for (int k = 0; k < st_.n_runs; ++k)
+                coverage_->add_run(runs_[static_cast<std::size_t>(k)], static_cast<int>(st_.clip_lo));
             if (c == count) return;
             hand_over(x0[c], s0, lines);
             ++c;
@@ -379,8 +377,7 @@ private:
     // Takes what capsule_sections left of the capsule with left end x0 on its lines s0 .. s0 + n - 1:
     // the intervals it closed and did not settle, and the sections it could not fold.
     void hand_over(double x0, int s0, int n) {
-        // A section may start left of x0 by its rounding: a margin far above it.
-        const double settled_below = x0 - kRoundingMargin * std::max(1.0, std::fabs(x0));
+        const double settled_below = raster::settle_bound(x0, kRoundingMargin);
         // Each line has at most one of the two bits.
         for (int word = 0; word <= (n - 1) / 64; ++word) {
             for (std::uint64_t bits = closed_bits_[word]; bits != 0; bits &= bits - 1) {
@@ -399,16 +396,15 @@ private:
 
     // Adds the final interval [lo, hi] of one line, clipped, to the row's coverage.
     void settle(double lo, double hi) {
-        lo = std::max(lo, x0_);
-        hi = std::min(hi, x1_);
-        if (hi > lo) coverage_->add(lo - x0_, hi - x0_);
+        lo = std::max(lo, st_.clip_lo);
+        hi = std::min(hi, st_.clip_hi);
+        if (hi > lo) coverage_->add(lo - st_.clip_lo, hi - st_.clip_lo);
     }
 
-    // Far above the relative rounding of a section's ends (a few units of the last place).
+    // Far above the relative rounding of a section's ends (a few units of the last place): a
+    // section may start left of its capsule's left end by that much.
     static constexpr double kRoundingMargin = std::is_same_v<Real, float> ? 1e-5 : 1e-9;
     static constexpr int kMaxRuns = 64;  // settled runs per call of capsule_sections
-    double x0_ = 0, x1_ = 0;
-    int origin_ = 0;  // x0 as a whole pixel (clips are whole pixels)
     RowCoverage* coverage_ = nullptr;
     std::vector<LineUnion> lines_;
     std::vector<Real> lo_, hi_;                        // one capsule's sections, from its first line
