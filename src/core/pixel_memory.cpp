@@ -38,8 +38,9 @@ void* allocate(std::size_t bytes, bool zeroed) noexcept {
         return p;
     }
 #endif
-    if (bytes == 0) bytes = 1;
-    return zeroed ? std::calloc(bytes, 1) : std::malloc(bytes);
+    if (zeroed) return std::calloc(bytes == 0 ? 1 : bytes, 1);
+    constexpr std::size_t kAlign = 64;
+    return std::aligned_alloc(kAlign, (bytes + kAlign) / kAlign * kAlign);  // a multiple of kAlign, never 0
 }
 
 void* allocate_sparse(std::size_t bytes) noexcept {
