@@ -36,20 +36,27 @@ template <class D, class V>
 HWY_INLINE void StoreCoverage(D d, V a, std::uint8_t* HWY_RESTRICT out) {
     const hn::Rebind<std::int32_t, D> di;
     const hn::Rebind<std::uint8_t, D> du8;
-    const double bias = sizeof(hn::TFromD<D>) == 8 ? kRoundUp : kRoundUpFloat;  // see kRoundUp
-    const auto scaled = hn::MulAdd(a, hn::Set(d, 255.0), hn::Set(d, bias));
-    if constexpr (sizeof(hn::TFromD<D>) == 8)
+    if constexpr (sizeof(hn::TFromD<D>) == 8) {
+        const auto scaled = hn::MulAdd(a, hn::Set(d, 255.0), hn::Set(d, kRoundUp));  // see kRoundUp
         hn::StoreU(hn::DemoteTo(du8, hn::DemoteTo(di, scaled)), du8, out);
-    else
-        hn::StoreU(hn::DemoteTo(du8, hn::ConvertTo(di, scaled)), du8, out);
+    } else {
+        // a x 255 + (kRoundUpFloat - 1/2) rounded to the nearest integer by adding 2^23, whose
+        // float then holds that integer in its low mantissa bits: the level of kRoundUpFloat's
+        // truncation (a tie, which would go to even, needs a x 255 exactly 2^-12 below a half level).
+        (void)di;
+        const hn::RebindToUnsigned<D> du;
+        const auto scaled = hn::MulAdd(a, hn::Set(d, 255.0f), hn::Set(d, static_cast<float>(kRoundUpFloat - 0.5)));
+        const auto bits = hn::BitCast(du, hn::Add(scaled, hn::Set(d, 8388608.0f)));
+        hn::StoreU(hn::TruncateTo(du8, bits), du8, out);
+    }
 }
 
 // Scans acc[i, to) in whole vectors of tag d: `scan` makes a vector's inclusive prefix sum and
 // `last` broadcasts its last lane. The carry chain is one add per vector; the in-register scans of
 // successive vectors are independent of it. Clears what it reads; returns where it stopped.
 template <class D, class Scan, class Last>
-HWY_INLINE int ScanVectors(D d, double* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT cov, int i, int to, double& sum,
-                           FillRule rule, Scan scan, Last last) {
+HWY_INLINE int ScanVectors(D d, hn::TFromD<D>* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT cov, int i, int to,
+                           hn::TFromD<D>& sum, FillRule rule, Scan scan, Last last) {
     const int n = static_cast<int>(hn::Lanes(d));
     if (to - i < n) return i;
     const auto zero = hn::Zero(d);
@@ -65,37 +72,45 @@ HWY_INLINE int ScanVectors(D d, double* HWY_RESTRICT acc, std::uint8_t* HWY_REST
     return i;
 }
 
-HWY_INLINE double ScanRange(double* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT cov, int from, int to, double start,
-                            FillRule rule) {
-    double sum = start;
+// Scans acc[from, to) from the running sum `start`; returns the sum at `to`. Double cells keep
+// rows crossing hundreds of stacked edges exact to far below 1/255; float cells (narrower shapes)
+// have twice the lanes. Each 128-bit block is scanned in register (kBlock lanes), a 256-bit
+// vector then adds its lower half's total to its upper half; the tail goes one cell at a time.
+template <class T>
+HWY_INLINE T ScanRange(T* HWY_RESTRICT acc, std::uint8_t* HWY_RESTRICT cov, int from, int to, T start, FillRule rule) {
+    T sum = start;
     int i = from;
-    // Double precision keeps rows crossing hundreds of stacked edges exact to far below 1/255.
+#if HWY_TARGET != HWY_SCALAR
+    constexpr int kBlock = 16 / sizeof(T);
+    auto scan_block = [](auto d, auto v) {
+        v = hn::Add(v, hn::ShiftLeftLanes<1>(d, v));
+        if constexpr (kBlock == 4) v = hn::Add(v, hn::ShiftLeftLanes<2>(d, v));
+        return v;
+    };
+#endif
 #if HWY_TARGET != HWY_SCALAR && HWY_MAX_BYTES >= 32
-    // Four doubles per 256-bit vector: scan within each 128-bit half, then add the lower half's
-    // total to the upper half.
     {
-        const hn::FixedTag<double, 4> d4;
+        const hn::FixedTag<T, 2 * kBlock> dw;
         i = ScanVectors(
-            d4, acc, cov, i, to, sum, rule,
-            [d4](auto v) {
-                v = hn::Add(v, hn::ShiftLeftLanes<1>(d4, v));                                    // a, a+b, c, c+d
-                return hn::Add(v, hn::ConcatLowerLower(d4, hn::Broadcast<1>(v), hn::Zero(d4)));  // + 0, 0, a+b, a+b
+            dw, acc, cov, i, to, sum, rule,
+            [dw, scan_block](auto v) {
+                v = scan_block(dw, v);
+                return hn::Add(v, hn::ConcatLowerLower(dw, hn::Broadcast<kBlock - 1>(v), hn::Zero(dw)));
             },
-            [d4](auto v) { return hn::Broadcast<1>(hn::ConcatUpperUpper(d4, v, v)); });
+            [dw](auto v) { return hn::Broadcast<kBlock - 1>(hn::ConcatUpperUpper(dw, v, v)); });
     }
 #endif
 #if HWY_TARGET != HWY_SCALAR
-    // Two doubles per 128-bit vector (the whole row on SSE targets, the tail on wider ones).
     {
-        const hn::FixedTag<double, 2> d2;
+        const hn::FixedTag<T, kBlock> dn;
         i = ScanVectors(
-            d2, acc, cov, i, to, sum, rule, [d2](auto v) { return hn::Add(v, hn::ShiftLeftLanes<1>(d2, v)); },
-            [](auto v) { return hn::Broadcast<1>(v); });
+            dn, acc, cov, i, to, sum, rule, [dn, scan_block](auto v) { return scan_block(dn, v); },
+            [](auto v) { return hn::Broadcast<kBlock - 1>(v); });
     }
 #endif
     for (; i < to; ++i) {
         sum += acc[i];
-        acc[i] = 0.0;
+        acc[i] = T(0);
         cov[i] = coverage_u8(sum, rule);
     }
     return sum;
@@ -107,8 +122,9 @@ struct ScanSpan {
     int from, end;
 };
 
-HWY_INLINE ScanSpan ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::uint64_t* bm, int words, int w,
-                                   int stride, FillRule rule) {
+template <class T>
+HWY_INLINE ScanSpan ScanBlocksImpl(T* acc, std::uint8_t* cov, const std::uint64_t* bm, int words, int w, int stride,
+                                   FillRule rule) {
     const int nb = words * 64;
     auto bit = [&](int b) { return b < nb && ((bm[b >> 6] >> (b & 63)) & 1) != 0; };
     auto next_set = [&](int b) {
@@ -122,7 +138,7 @@ HWY_INLINE ScanSpan ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::ui
     const int first = next_set(0);
     if (first >= nb) return {0, 0};
     const int from = first << kScanBlockShift;
-    double sum = 0;
+    T sum = 0;
     int pos = from;
     for (int b = first; b < nb;) {
         int e = b + 1;
@@ -133,7 +149,7 @@ HWY_INLINE ScanSpan ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::ui
             std::memset(cov + pos, coverage_u8(sum, rule), static_cast<std::size_t>(std::min(a0, w) - pos));
         const int to = std::min(a1, w);
         if (to > a0) sum = ScanRange(acc, cov, a0, to, sum, rule);
-        for (int k = std::max(a0, w); k < a1; ++k) acc[k] = 0.0;  // spill cells
+        for (int k = std::max(a0, w); k < a1; ++k) acc[k] = T(0);  // spill cells
         if (to > pos) pos = to;
         b = next_set(e);
     }
@@ -147,7 +163,17 @@ HWY_INLINE ScanSpan ScanBlocksImpl(double* acc, std::uint8_t* cov, const std::ui
     return {from, pos};
 }
 
+void ScanFloatRows(const ScanRows& s, SpanSink& sink) {
+    for (int r = 0; r < s.h; ++r) {
+        const std::size_t row_base = static_cast<std::size_t>(r) * static_cast<std::size_t>(s.stride);
+        const ScanSpan span = ScanBlocksImpl(s.facc + row_base, s.cov, s.blocks + static_cast<std::size_t>(r) * s.words,
+                                             s.words, s.w, s.stride, s.rule);
+        if (span.end > span.from) sink.row(s.oy + r, s.ox + span.from, span.end - span.from, s.cov + span.from);
+    }
+}
+
 void ScanRowsImpl(const ScanRows& s, SpanSink& sink) {
+    if (s.facc) return ScanFloatRows(s, sink);
     std::size_t pi = 0;
     for (int r = 0; r < s.h; ++r) {
         const std::size_t row_base = static_cast<std::size_t>(r) * static_cast<std::size_t>(s.stride);
@@ -165,8 +191,22 @@ int RowVectorLanesImpl() {
     return static_cast<int>(hn::Lanes(d));
 }
 
+template <int kVectors, class D>
+HWY_INLINE void AccumulateFixed(D d, const RowPiece* HWY_RESTRICT pieces, std::size_t n, float* HWY_RESTRICT acc) {
+    const std::size_t stride = kVectors * hn::Lanes(d);
+    for (std::size_t k = 0; k < n; ++k)
+        AddRowPieceFixed<kVectors>(d, pieces[k], acc + static_cast<std::size_t>(pieces[k].r) * stride);
+}
+
 void RowVectorAccumulateImpl(const RowPiece* HWY_RESTRICT pieces, std::size_t n, float* HWY_RESTRICT acc, int stride) {
     const hn::ScalableTag<float> d;
+    switch (stride / static_cast<int>(hn::Lanes(d))) {  // rows of up to four vectors: unrolled
+        case 1: return AccumulateFixed<1>(d, pieces, n, acc);
+        case 2: return AccumulateFixed<2>(d, pieces, n, acc);
+        case 3: return AccumulateFixed<3>(d, pieces, n, acc);
+        case 4: return AccumulateFixed<4>(d, pieces, n, acc);
+        default: break;
+    }
     for (std::size_t k = 0; k < n; ++k)
         AddRowPiece(d, pieces[k], acc + static_cast<std::size_t>(pieces[k].r) * static_cast<std::size_t>(stride),
                     stride);

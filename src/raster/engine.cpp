@@ -123,7 +123,7 @@ void Engine::trim(std::size_t records) {
     auto release = [records](auto& v) {
         if (v.capacity() > records) std::remove_reference_t<decltype(v)>().swap(v);
     };
-    release(pieces_);
+    pieces_.release_above(records);
     release(cands_);
     release(exact_ids_);
 }
@@ -147,6 +147,7 @@ void Engine::begin(int w, int h, bool track) {
     dirty_ = true;
     const int lanes = row_vector_lanes();
     vec_ = !track && w <= std::min(kRowVectorMax * lanes, kRowVectorMaxPixels);
+    fcells_ = !track && !vec_ && w <= kFloatCellsMax;
     if (vec_) {
         vstride_ = std::max(1, (w + lanes - 1) / lanes) * lanes;
         const std::size_t n = static_cast<std::size_t>(vstride_) * static_cast<std::size_t>(h);
@@ -154,7 +155,12 @@ void Engine::begin(int w, int h, bool track) {
         row_from_.assign(static_cast<std::size_t>(h), INT_MAX);
         pieces_.clear();
     } else {
-        grow_zeroed(acc_, cells);
+        if (fcells_) {
+            stride_ = (stride_ + 7) & ~std::size_t(7);  // whole 8-cell blocks: the scan's vectors
+            grow_zeroed(facc_, stride_ * static_cast<std::size_t>(h));
+        } else {
+            grow_zeroed(acc_, cells);
+        }
         words_ = ((stride_ >> kBlockShift) + 64) / 64;
         blocks_.assign(words_ * static_cast<std::size_t>(h), 0);
     }
@@ -599,7 +605,8 @@ void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
     stats.exact_work += scratch_.work;
     stats.dense_cells += scratch_.dense_cells;
     // Then every row in one call (one dispatch per shape, not per row).
-    const ScanRows rows{acc_.data(),
+    const ScanRows rows{fcells_ ? nullptr : acc_.data(),
+                        fcells_ ? facc_.data() : nullptr,
                         cov_.data(),
                         blocks_.data(),
                         static_cast<int>(words_),

@@ -24,6 +24,12 @@ public:
         buf_[n_++] = v;
     }
     void clear() { n_ = 0; }
+    // Room for n more records: write them from the returned end, then pass the new end to commit().
+    T* room(std::size_t n) {
+        while (buf_.size() - n_ < n) grow();
+        return buf_.data() + n_;
+    }
+    void commit(const T* end) { n_ = static_cast<std::size_t>(end - buf_.data()); }
     // Frees the memory when it holds room for more than `n` records (the list is then empty).
     void release_above(std::size_t n) {
         if (buf_.size() > n) {
@@ -76,11 +82,15 @@ private:
         bool merged_away;      // this record is the first part of another visit (`pre` of it)
     };
 
-    template <bool kTrack, bool kVec>
+    // The cell walk. T: the cells' type (float for the float cells, else double).
+    template <bool kTrack, class T = double>
     inline void row_piece(int r, double xa, double ya, double xb, double yb, std::uint32_t sid, std::uint8_t bits);
-    template <bool kTrack, bool kVec>
+    template <bool kTrack, class T = double>
     inline void walk(double x0, double y0, double x1, double y1);
-    inline void add_piece(int r, int c0, double xl, double xr, double dy);
+    template <class T>
+    T* cells();
+    // The row vectors' walk: lists the edge's pieces.
+    inline void list_pieces(double x0, double y0, double x1, double y1);
     inline void touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits);
     bool harmless_two(const Visit& a, const Visit& b, int col, int row);
     bool run_ends(const Visit& v, int col, int row, double& t0, double& t1) const;
@@ -106,16 +116,23 @@ private:
     // walk only lists the pieces of edges per row, and finish() adds each piece's exact area to its
     // whole row at once, in float. 11 to 20 % faster from 12 to 96 px than the double cell walk
     // without tracking; glyphs proven simple take it. A piece costs a pass over its whole row, so
-    // wider shapes take the cell walk: DejaVu Sans at 256 px renders 7 % faster with the limit at
-    // 64 to 96 px than at 128 px, on AVX-512 and AVX2 alike. With
-    // the overlap check the cell walk stays: the visits need it anyway and it accumulates nearly
-    // for free alongside (row vectors on top measured 5 % slower at 12 px, equal at 48 and 96 px).
+    // wider shapes take the cell walk (float cells, below): DejaVu Sans at 256 px renders 5 %
+    // faster with the limit at 64 px than at 128 px, and at 48 px 5 % slower with it at 32 px.
+    // With the overlap check the cell walk stays: the visits need it anyway and it accumulates
+    // nearly for free alongside (row vectors on top measured 5 % slower at 12 px, equal at 48 and
+    // 96 px).
     bool vec_ = false;
     static constexpr int kRowVectorMax = 8;
     static constexpr int kRowVectorMaxPixels = 64;
+    // Wider shapes without the overlap check, up to kFloatCellsMax cells wide, accumulate cover and
+    // area in float cells (facc_, rows of stride_ cells, a multiple of 8): half the memory of double
+    // cells and twice the lanes in the scan. Rounding in a row's prefix sum stays below
+    // kFloatCellsMax x 2^-24 of the coverage (0.016/255 at most); wider shapes take double cells.
+    bool fcells_ = false;
+    static constexpr int kFloatCellsMax = 1024;
     int vstride_ = 0;                    // floats per row of facc_ (w rounded up to whole vectors)
-    platform::LargeVector<float> facc_;  // per pixel: the integral of the winding number, all zero between shapes
-    std::vector<RowPiece> pieces_;
+    platform::LargeVector<float> facc_;  // row vectors or float cells, all zero between shapes
+    AppendList<RowPiece> pieces_;
     std::vector<int> row_from_;                 // per row: first column a piece touches (INT_MAX: none)
     bool dirty_ = false;                        // buffers may hold data from an interrupted shape
     platform::LargeVector<double> acc_;         // cover/area, (w + 2) x h, all zero between shapes
@@ -194,34 +211,32 @@ private:
     for (unsigned b = b0; b <= b1; ++b) m[b >> 6] |= std::uint64_t(1) << (b & 63);
 }
 
-// One piece of an edge for the row-vector accumulation; c0 = its first column.
-[[gnu::always_inline]] inline void Engine::add_piece(int r, int c0, double xl, double xr, double dy) {
-    pieces_.push_back(make_row_piece(r, static_cast<float>(xl), static_cast<float>(xr), static_cast<float>(dy)));
-    int& from = row_from_[static_cast<std::size_t>(r)];
-    if (c0 < from) from = c0;
-}
-
 // The cover/area step, the only one: a piece of signed height d spanning [u0, u1] inside cell c
 // of a row adds d times the part of the cell right of it to acc[c], the rest of d to acc[c + 1].
-[[gnu::always_inline]] inline void add_cell(double* acc, int c, double d, double u0, double u1) {
+template <class T>
+[[gnu::always_inline]] inline void add_cell(T* acc, int c, double d, double u0, double u1) {
     const double a = d * ((c + 1) - 0.5 * (u0 + u1));
-    acc[c] += a;
-    acc[c + 1] += d - a;
+    acc[c] += static_cast<T>(a);
+    acc[c + 1] += static_cast<T>(d - a);
 }
 
-template <bool kTrack, bool kVec>
+template <>
+inline double* Engine::cells<double>() {
+    return acc_.data();
+}
+template <>
+inline float* Engine::cells<float>() {
+    return facc_.data();
+}
+
+template <bool kTrack, class T>
 [[gnu::always_inline]] inline void Engine::row_piece(int r, double xa, double ya, double xb, double yb,
                                                      std::uint32_t sid, std::uint8_t bits) {
     const double dy = yb - ya;
     const double xl = xa < xb ? xa : xb, xr = xa < xb ? xb : xa;
     const int c0 = floor_nn(xl);
     const int c1 = ceil_nn(xr) - 1;
-    static_assert(!(kTrack && kVec), "row vectors are used without the overlap check only");
-    if constexpr (kVec) {
-        add_piece(r, c0, xl, xr, dy);  // the area goes in at finish()
-        return;
-    }
-    double* acc = acc_.data() + static_cast<std::size_t>(r) * stride_;
+    T* acc = cells<T>() + static_cast<std::size_t>(r) * stride_;
     if (c1 <= c0) {
         add_cell(acc, c0, dy, xl, xr);
         mark(r, c0, c0 + 1);
@@ -270,14 +285,51 @@ inline void Engine::push(double x0, double y0, double x1, double y1) {
     if (++count_ > max_edges_)
         throw Error(ErrorKind::Limit, "path too complex: more than " + std::to_string(max_edges_) + " edges");
     if (track_)
-        walk<true, false>(x0, y0, x1, y1);
+        walk<true>(x0, y0, x1, y1);
     else if (vec_)
-        walk<false, true>(x0, y0, x1, y1);
+        list_pieces(x0, y0, x1, y1);
+    else if (fcells_)
+        walk<false, float>(x0, y0, x1, y1);
     else
-        walk<false, false>(x0, y0, x1, y1);
+        walk<false>(x0, y0, x1, y1);
 }
 
-template <bool kTrack, bool kVec>
+// Calls piece(r, xa, ya, xb, yb) for each pixel row r that the edge (y0 != y1) crosses, in travel
+// order, with the part of the edge inside that row.
+template <class F>
+[[gnu::always_inline]] inline void for_each_row(double x0, double y0, double x1, double y1, F&& piece) {
+    if (y1 > y0) {
+        const int r0 = floor_nn(y0), rend = ceil_nn(y1) - 1;
+        if (rend <= r0) return piece(r0, x0, y0, x1, y1);  // one row
+        const double k = (x1 - x0) / (y1 - y0);
+        const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
+        double ya = y0, xa = x0;
+        for (int r = r0; r < rend; ++r) {
+            const double yb = r + 1.0;
+            const double xb = std::clamp(x0 + (yb - y0) * k, xlo, xhi);
+            piece(r, xa, ya, xb, yb);
+            ya = yb;
+            xa = xb;
+        }
+        piece(rend, xa, ya, x1, y1);
+    } else {
+        const int r0 = ceil_nn(y0) - 1, rend = floor_nn(y1);
+        if (rend >= r0) return piece(r0, x0, y0, x1, y1);  // one row
+        const double k = (x1 - x0) / (y1 - y0);
+        const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
+        double ya = y0, xa = x0;
+        for (int r = r0; r > rend; --r) {
+            const double yb = r;
+            const double xb = std::clamp(x0 + (yb - y0) * k, xlo, xhi);
+            piece(r, xa, ya, xb, yb);
+            ya = yb;
+            xa = xb;
+        }
+        piece(rend, xa, ya, x1, y1);
+    }
+}
+
+template <bool kTrack, class T>
 [[gnu::always_inline]] inline void Engine::walk(double x0, double y0, double x1, double y1) {
     std::uint32_t sid = 0;
     std::uint8_t bits = 0;
@@ -313,35 +365,26 @@ template <bool kTrack, bool kVec>
         }
         return;
     }
-    if (y1 > y0) {
-        const int r0 = floor_nn(y0), rend = ceil_nn(y1) - 1;
-        if (rend <= r0) return row_piece<kTrack, kVec>(r0, x0, y0, x1, y1, sid, bits);  // one row
-        const double k = (x1 - x0) / (y1 - y0);
-        const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
-        double ya = y0, xa = x0;
-        for (int r = r0; r < rend; ++r) {
-            const double yb = r + 1.0;
-            const double xb = std::clamp(x0 + (yb - y0) * k, xlo, xhi);
-            row_piece<kTrack, kVec>(r, xa, ya, xb, yb, sid, bits);
-            ya = yb;
-            xa = xb;
-        }
-        row_piece<kTrack, kVec>(rend, xa, ya, x1, y1, sid, bits);
-    } else {
-        const int r0 = ceil_nn(y0) - 1, rend = floor_nn(y1);
-        if (rend >= r0) return row_piece<kTrack, kVec>(r0, x0, y0, x1, y1, sid, bits);  // one row
-        const double k = (x1 - x0) / (y1 - y0);
-        const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
-        double ya = y0, xa = x0;
-        for (int r = r0; r > rend; --r) {
-            const double yb = r;
-            const double xb = std::clamp(x0 + (yb - y0) * k, xlo, xhi);
-            row_piece<kTrack, kVec>(r, xa, ya, xb, yb, sid, bits);
-            ya = yb;
-            xa = xb;
-        }
-        row_piece<kTrack, kVec>(rend, xa, ya, x1, y1, sid, bits);
-    }
+    for_each_row(
+        x0, y0, x1, y1, [&](int r, double xa, double ya, double xb, double yb) __attribute__((always_inline)) {
+            row_piece<kTrack, T>(r, xa, ya, xb, yb, sid, bits);
+        });
+}
+
+// Row vectors: the pieces of one edge, one per pixel row it crosses; their areas go in at
+// finish(). Room for every row is made first, so the pieces go out through local pointers.
+[[gnu::always_inline]] inline void Engine::list_pieces(double x0, double y0, double x1, double y1) {
+    if (y0 == y1) return;  // no cover
+    RowPiece* out = pieces_.room(static_cast<std::size_t>(std::abs(y1 - y0)) + 2);
+    int* const from = row_from_.data();
+    for_each_row(
+        x0, y0, x1, y1, [&](int r, double xa, double ya, double xb, double yb) __attribute__((always_inline)) {
+            const double xl = xa < xb ? xa : xb, xr = xa < xb ? xb : xa;
+            *out++ = make_row_piece(r, static_cast<float>(xl), static_cast<float>(xr), static_cast<float>(yb - ya));
+            const int c0 = floor_nn(xl);
+            if (c0 < from[r]) from[r] = c0;
+        });
+    pieces_.commit(out);
 }
 
 }  // namespace casteljau::raster

@@ -111,16 +111,19 @@ std::uint8_t exact_cell_u8(const Edge* edges, std::vector<std::uint32_t>& ids, d
                            FillRule rule, ExactScratch& scratch);
 
 // 8-bit coverage of an accumulated signed area under the fill rule: nonzero min(|a|, 1), even-odd
-// the distance of |a| to the nearest even integer; rounded to nearest.
-inline std::uint8_t coverage_u8(double a, FillRule rule) {
-    double v = a < 0 ? -a : a;
+// the distance of |a| to the nearest even integer; rounded to nearest, with the bias of a's type
+// (kRoundUp for double, kRoundUpFloat for float sums).
+template <class T>
+inline std::uint8_t coverage_u8(T a, FillRule rule) {
+    T v = a < 0 ? -a : a;
     if (rule == FillRule::NonZero) {
-        v = v < 1.0 ? v : 1.0;
+        v = v < T(1) ? v : T(1);
     } else {
-        v = v - 2.0 * static_cast<double>(static_cast<long long>(v * 0.5));
-        v = v > 1.0 ? 2.0 - v : v;
+        v = v - T(2) * static_cast<T>(static_cast<long long>(v * T(0.5)));
+        v = v > T(1) ? T(2) - v : v;
     }
-    return static_cast<std::uint8_t>(v * 255.0 + kRoundUp);
+    constexpr T kBias = static_cast<T>(sizeof(T) == sizeof(double) ? kRoundUp : kRoundUpFloat);
+    return static_cast<std::uint8_t>(v * T(255) + kBias);
 }
 
 // The rows of the engine's dense buffer. Per row, bit b of its `words` 64-bit words of `blocks` says cells
@@ -129,10 +132,12 @@ inline std::uint8_t coverage_u8(double a, FillRule rule) {
 // running sum. Cells at or past `w` (spill cells, up to `stride`) are cleared, never delivered.
 // The exact cells' coverage (patches: cell index row * stride + col and value, sorted) is written
 // over the scanned row, and each row with a touched block goes to the sink at (ox, oy). One call
-// (one SIMD dispatch) per shape.
+// (one SIMD dispatch) per shape. Float cells (facc instead of acc) come in rows of whole blocks
+// (stride a multiple of 8) and have no patches.
 inline constexpr int kScanBlockShift = 3;
 struct ScanRows {
     double* acc;
+    float* facc;
     std::uint8_t* cov;  // stride bytes of scratch
     const std::uint64_t* blocks;
     int words, w, h, stride;
