@@ -37,6 +37,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "casteljau/paint.hpp"
@@ -95,7 +96,13 @@ private:
     void composite_rows(Pixmap& dst, const PremulPixel* background) const;
     IRect region_;
     std::vector<std::uint8_t> layer_;  // premultiplied RGBA8, when the layer is the compositor's own
-    std::vector<std::uint8_t> cov_;
+    // Coverage taken per pixel of the region. It comes from the system as zero pages, so a large
+    // region costs nothing where no fill reaches (a map's oceans) and nothing is written to clear it.
+    struct FreeCoverage {
+        std::size_t bytes;
+        void operator()(std::uint8_t* p) const noexcept;
+    };
+    std::unique_ptr<std::uint8_t[], FreeCoverage> cov_;
     std::vector<int> lo_, hi_;  // per row: the columns [lo, hi) fills have touched (lo >= hi: none)
     Pixmap* into_ = nullptr;    // the target whose pixels are the layer (reset_into), or null
     // The layer's pixel at the region's origin, and the bytes from one layer row to the next.

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <new>
 
 #include "casteljau/error.hpp"
+#include "core/pixel_memory.hpp"
 #include "paint/pixel_math.hpp"
 
 namespace casteljau {
@@ -49,7 +51,11 @@ void SeamlessCompositor::start(const IRect& region, bool clear_layer) {
     if (same_size(region)) {
         forget(clear_layer);  // only what the last fills touched
     } else {
-        cov_.assign(coverage_cells(region), 0);
+        const std::size_t n = coverage_cells(region);
+        cov_.reset();
+        cov_ = std::unique_ptr<std::uint8_t[], FreeCoverage>(static_cast<std::uint8_t*>(platform::allocate(n, true)),
+                                                             FreeCoverage{n});
+        if (!cov_) throw std::bad_alloc();
         lo_.assign(static_cast<std::size_t>(region.y1 - region.y0), region.x1 - region.x0);
         hi_.assign(static_cast<std::size_t>(region.y1 - region.y0), 0);
     }
@@ -67,6 +73,8 @@ std::size_t SeamlessCompositor::layer_stride() const {
 
 void SeamlessCompositor::clear() { forget(true); }
 
+void SeamlessCompositor::FreeCoverage::operator()(std::uint8_t* p) const noexcept { platform::release(p, bytes); }
+
 void SeamlessCompositor::forget(bool layer_too) {
     const std::size_t w = static_cast<std::size_t>(width());
     std::uint8_t* const layer = layer_origin();
@@ -75,7 +83,7 @@ void SeamlessCompositor::forget(bool layer_too) {
         if (lo_[r] >= hi_[r]) continue;
         const std::size_t lo = static_cast<std::size_t>(lo_[r]), len = static_cast<std::size_t>(hi_[r] - lo_[r]);
         if (layer_too) std::memset(layer + r * stride + lo * 4, 0, len * 4);
-        std::memset(cov_.data() + r * w + lo, 0, len);
+        std::memset(cov_.get() + r * w + lo, 0, len);
         lo_[r] = width();
         hi_[r] = 0;
     }
@@ -188,7 +196,7 @@ void SeamlessCompositor::add(Rasterizer& raster, const Path& path, const FillOpt
     SeamlessSink sink;
     sink.layer = layer_origin();
     sink.layer_stride = layer_stride();
-    sink.cov = cov_.data();
+    sink.cov = cov_.get();
     sink.lo = lo_.data();
     sink.hi = hi_.data();
     sink.width = width();
