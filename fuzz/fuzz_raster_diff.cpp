@@ -18,7 +18,10 @@
 //      0), a path that classify_topology(path, tolerance / scale) proves Simple renders by plain
 //      accumulation within 1/255 of the exact cells at that tolerance;
 //   5. with FillOptions::hidden (a pattern of pixels picked by bits 6-7 of byte 0), every hidden
-//      pixel within 1/255 of plain accumulation and every other one equal to the exact cells.
+//      pixel within 1/255 of plain accumulation and every other one equal to the exact cells;
+//   6. a path proven Simple as in 3, with a far square beside it so that its box is too wide for
+//      the row vectors (the float cells accumulate it): plain accumulation within 1/255 of the
+//      exact cells.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -144,6 +147,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             FillOptions plain = opts;
             plain.exact_overlaps = false;
             expect_close("plain accumulation of a Simple path vs exact cells", render(r, path, m, plain), cells);
+            Path wide;
+            wide.append(path, m);
+            wide.move_to({600, 0});
+            wide.line_to({601, 0});
+            wide.line_to({601, 1});
+            wide.line_to({600, 1});
+            wide.close();
+            expect_close("plain accumulation in float cells vs exact cells",
+                         r.fill_mask(wide, Affine{}, plain, IRect{0, 0, 610, kSize}), cells);
         }
         if (similarity > 0 && classify_topology(path, coarse / similarity) == Topology::Simple) {
             FillOptions plain = opts, cells_at = opts;
