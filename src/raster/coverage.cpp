@@ -34,16 +34,15 @@ HWY_INLINE V ApplyRule(D d, V v, FillRule rule) {
 // Coverage in [0, 1] (double or float lanes) to 8-bit, rounded to nearest, half-way up.
 template <class D, class V>
 HWY_INLINE void StoreCoverage(D d, V a, std::uint8_t* HWY_RESTRICT out) {
-    const hn::Rebind<std::int32_t, D> di;
     const hn::Rebind<std::uint8_t, D> du8;
     if constexpr (sizeof(hn::TFromD<D>) == 8) {
+        const hn::Rebind<std::int32_t, D> di;
         const auto scaled = hn::MulAdd(a, hn::Set(d, 255.0), hn::Set(d, kRoundUp));  // see kRoundUp
         hn::StoreU(hn::DemoteTo(du8, hn::DemoteTo(di, scaled)), du8, out);
     } else {
         // a x 255 + (kRoundUpFloat - 1/2) rounded to the nearest integer by adding 2^23, whose
         // float then holds that integer in its low mantissa bits: the level of kRoundUpFloat's
         // truncation (a tie, which would go to even, needs a x 255 exactly 2^-12 below a half level).
-        (void)di;
         const hn::RebindToUnsigned<D> du;
         const auto scaled = hn::MulAdd(a, hn::Set(d, 255.0f), hn::Set(d, static_cast<float>(kRoundUpFloat - 0.5)));
         const auto bits = hn::BitCast(du, hn::Add(scaled, hn::Set(d, 8388608.0f)));
