@@ -1,6 +1,7 @@
 // Memory for pixel buffers (see pixel_memory.hpp).
 #include "core/pixel_memory.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 
@@ -40,7 +41,7 @@ void* allocate(std::size_t bytes, bool zeroed) noexcept {
 #endif
     if (zeroed) return std::calloc(bytes == 0 ? 1 : bytes, 1);
     constexpr std::size_t kAlign = 64;
-    return std::aligned_alloc(kAlign, (bytes + kAlign) / kAlign * kAlign);  // a multiple of kAlign, never 0
+    return std::aligned_alloc(kAlign, (std::max<std::size_t>(bytes, 1) + kAlign - 1) / kAlign * kAlign);
 }
 
 void* allocate_sparse(std::size_t bytes) noexcept {

@@ -162,27 +162,27 @@ HWY_INLINE ScanSpan ScanBlocksImpl(T* acc, std::uint8_t* cov, const std::uint64_
     return {from, pos};
 }
 
-void ScanFloatRows(const ScanRows& s, SpanSink& sink) {
-    for (int r = 0; r < s.h; ++r) {
-        const std::size_t row_base = static_cast<std::size_t>(r) * static_cast<std::size_t>(s.stride);
-        const ScanSpan span = ScanBlocksImpl(s.facc + row_base, s.cov, s.blocks + static_cast<std::size_t>(r) * s.words,
-                                             s.words, s.w, s.stride, s.rule);
-        if (span.end > span.from) sink.row(s.oy + r, s.ox + span.from, span.end - span.from, s.cov + span.from);
-    }
-}
-
-void ScanRowsImpl(const ScanRows& s, SpanSink& sink) {
-    if (s.facc) return ScanFloatRows(s, sink);
+// Every row of cells `acc` (s.acc or s.facc) to the sink, with the exact cells' patches (double
+// cells only; float cells have none).
+template <class T>
+HWY_INLINE void ScanRowsOf(const ScanRows& s, T* acc, SpanSink& sink) {
     std::size_t pi = 0;
     for (int r = 0; r < s.h; ++r) {
         const std::size_t row_base = static_cast<std::size_t>(r) * static_cast<std::size_t>(s.stride);
-        const ScanSpan span = ScanBlocksImpl(s.acc + row_base, s.cov, s.blocks + static_cast<std::size_t>(r) * s.words,
+        const ScanSpan span = ScanBlocksImpl(acc + row_base, s.cov, s.blocks + static_cast<std::size_t>(r) * s.words,
                                              s.words, s.w, s.stride, s.rule);
         const std::size_t row_end = row_base + static_cast<std::size_t>(s.stride);
         for (; pi < s.npatches && s.patches[pi].first < row_end; ++pi)
             if (span.end > span.from) s.cov[s.patches[pi].first - row_base] = s.patches[pi].second;
         if (span.end > span.from) sink.row(s.oy + r, s.ox + span.from, span.end - span.from, s.cov + span.from);
     }
+}
+
+void ScanRowsImpl(const ScanRows& s, SpanSink& sink) {
+    if (s.facc)
+        ScanRowsOf(s, s.facc, sink);
+    else
+        ScanRowsOf(s, s.acc, sink);
 }
 
 int RowVectorLanesImpl() {

@@ -18,63 +18,44 @@ HWY_BEFORE_NAMESPACE();
 namespace casteljau::raster {
 namespace HWY_NAMESPACE {
 
-// Adds piece p's area to row[0, stride) (stride: whole vectors of d): per pixel c, with
+// Adds piece p's area to the N pixels of row from pixel i (one vector of d): per pixel c, with
 // u0 = max(xl, c) and u1 = min(xr, c + 1), k * (max(u1 - u0, 0) * (c + 1 - (u0 + u1) / 2) +
-// max(min(xr, c) - xl, 0)). That is zero for every pixel with c + 1 <= xl, so the loop starts at
-// the vector holding pixel floor(xl) (xl >= 0: the walk's coordinates are clamped to the box).
+// max(min(xr, c) - xl, 0)); a vertical piece (xl == xr, k = dy) adds k * clamp(c + 1 - x, 0, 1).
+// Both are zero for every pixel with c + 1 <= xl.
 template <class D>
-HWY_INLINE void AddRowPiece(D d, const RowPiece& p, float* HWY_RESTRICT row, int stride) {
+HWY_INLINE void AddPieceVector(D d, const RowPiece& p, int i, float* HWY_RESTRICT row) {
     namespace hn = hwy::HWY_NAMESPACE;
-    const int N = static_cast<int>(hn::Lanes(d));
-    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
-    const auto iota = hn::Iota(d, 0.0f);
+    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f);
     const auto xl = hn::Set(d, p.xl), xr = hn::Set(d, p.xr), k = hn::Set(d, p.k);
-    const int first = static_cast<int>(p.xl) & -N;  // N is a power of two
-    if (p.xl == p.xr) {                             // vertical: k * clamp(c + 1 - x, 0, 1)
-        for (int i = first; i < stride; i += N) {
-            const auto cr = hn::Add(iota, hn::Set(d, static_cast<float>(i + 1)));
-            const auto part = hn::Min(hn::Max(hn::Sub(cr, xl), zero), one);
-            hn::StoreU(hn::MulAdd(k, part, hn::LoadU(d, row + i)), d, row + i);
-        }
+    const auto cl = hn::Add(hn::Iota(d, 0.0f), hn::Set(d, static_cast<float>(i)));
+    const auto cr = hn::Add(cl, one);
+    if (p.xl == p.xr) {
+        const auto part = hn::Min(hn::Max(hn::Sub(cr, xl), zero), one);
+        hn::StoreU(hn::MulAdd(k, part, hn::LoadU(d, row + i)), d, row + i);
         return;
     }
-    for (int i = first; i < stride; i += N) {
-        const auto cl = hn::Add(iota, hn::Set(d, static_cast<float>(i)));
-        const auto cr = hn::Add(cl, one);
-        const auto u0 = hn::Max(xl, cl), u1 = hn::Min(xr, cr);
-        const auto len = hn::Max(hn::Sub(u1, u0), zero);
-        const auto mid = hn::NegMulAdd(hn::Add(u0, u1), half, cr);
-        const auto left = hn::Max(hn::Sub(hn::Min(xr, cl), xl), zero);
-        hn::StoreU(hn::MulAdd(k, hn::MulAdd(len, mid, left), hn::LoadU(d, row + i)), d, row + i);
-    }
+    const auto u0 = hn::Max(xl, cl), u1 = hn::Min(xr, cr);
+    const auto len = hn::Max(hn::Sub(u1, u0), zero);
+    const auto mid = hn::NegMulAdd(hn::Add(u0, u1), hn::Set(d, 0.5f), cr);
+    const auto left = hn::Max(hn::Sub(hn::Min(xr, cl), xl), zero);
+    hn::StoreU(hn::MulAdd(k, hn::MulAdd(len, mid, left), hn::LoadU(d, row + i)), d, row + i);
+}
+
+// Adds piece p's area to row[0, stride) (stride: whole vectors of d), from the vector holding
+// pixel floor(xl) (xl >= 0: the walk's coordinates are clamped to the box).
+template <class D>
+HWY_INLINE void AddRowPiece(D d, const RowPiece& p, float* HWY_RESTRICT row, int stride) {
+    const int N = static_cast<int>(hwy::HWY_NAMESPACE::Lanes(d));
+    for (int i = static_cast<int>(p.xl) & -N; i < stride; i += N) AddPieceVector(d, p, i, row);  // N: a power of two
 }
 
 // AddRowPiece for rows of exactly kVectors vectors of d (a glyph's rows at text sizes): every
-// vector of the row, with the pixel positions fixed, so there is no loop to set up per piece.
-// Vectors left of xl get zero from the formula, as AddRowPiece's skipped ones.
+// vector of the row, unrolled, so there is no loop to set up per piece (the vectors left of xl
+// add zero).
 template <int kVectors, class D>
 HWY_INLINE void AddRowPieceFixed(D d, const RowPiece& p, float* HWY_RESTRICT row) {
-    namespace hn = hwy::HWY_NAMESPACE;
-    const int N = static_cast<int>(hn::Lanes(d));
-    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
-    const auto xl = hn::Set(d, p.xl), xr = hn::Set(d, p.xr), k = hn::Set(d, p.k);
-    if (p.xl == p.xr) {  // vertical: k * clamp(c + 1 - x, 0, 1)
-        for (int v = 0; v < kVectors; ++v) {
-            const auto cr = hn::Add(hn::Iota(d, 0.0f), hn::Set(d, static_cast<float>(v * N + 1)));
-            const auto part = hn::Min(hn::Max(hn::Sub(cr, xl), zero), one);
-            hn::StoreU(hn::MulAdd(k, part, hn::LoadU(d, row + v * N)), d, row + v * N);
-        }
-        return;
-    }
-    for (int v = 0; v < kVectors; ++v) {
-        const auto cl = hn::Add(hn::Iota(d, 0.0f), hn::Set(d, static_cast<float>(v * N)));
-        const auto cr = hn::Add(cl, one);
-        const auto u0 = hn::Max(xl, cl), u1 = hn::Min(xr, cr);
-        const auto len = hn::Max(hn::Sub(u1, u0), zero);
-        const auto mid = hn::NegMulAdd(hn::Add(u0, u1), half, cr);
-        const auto left = hn::Max(hn::Sub(hn::Min(xr, cl), xl), zero);
-        hn::StoreU(hn::MulAdd(k, hn::MulAdd(len, mid, left), hn::LoadU(d, row + v * N)), d, row + v * N);
-    }
+    const int N = static_cast<int>(hwy::HWY_NAMESPACE::Lanes(d));
+    for (int v = 0; v < kVectors; ++v) AddPieceVector(d, p, v * N, row);
 }
 
 }  // namespace HWY_NAMESPACE
