@@ -7,14 +7,16 @@
 // of the glyph's box in a preallocated buffer", for every glyph of the set:
 //   casteljau              Rasterizer::fill with a SpanSink copying rows into a reused buffer
 //                          (cleared first), default options: exact, no topology given (so the
-//                          per-cell overlap check for every glyph: the raw-path figure)
+//                          winding sweep for every glyph below 16 px of box per verb, and the
+//                          verdict of classify_topology above: the raw-path figure)
 //   casteljau (font path)  the same with each glyph's topology decided once (untimed, in prepare),
 //                          as the glyph cache does per glyph (the verdict for similarity maps,
 //                          classify_topology(path, tolerance)): what text rendering runs
 //   casteljau (font path: any-map verdict)  the same with the verdict for every affine map
 //                          (classify_topology(path)): fewer CFF glyphs proven
-//   casteljau (exact cells) exact, topology given as Overlapping: every glyph through the per-cell
-//                          overlap check (also the exact reference below)
+//   casteljau (exact cells) exact, topology given as Overlapping and the winding sweep off: every
+//                          glyph through the per-cell overlap check (also the exact reference
+//                          below, made independently of the sweep)
 //   casteljau (exact off)  the same with exact_overlaps off
 //   fill_mask, fill_mask (exact off)
 //                          Rasterizer::fill_mask, which allocates and returns a fresh Mask
@@ -139,7 +141,10 @@ public:
     CasteljauFill(bool exact, double tol, Verdict verdict = Verdict::PerFill) : exact_(exact), verdict_(verdict) {
         opts_.exact_overlaps = exact;
         opts_.tolerance = tol;
-        if (verdict == Verdict::ExactCells) opts_.topology = casteljau::Topology::Overlapping;
+        if (verdict == Verdict::ExactCells) {
+            opts_.topology = casteljau::Topology::Overlapping;
+            opts_.winding_sweep = false;
+        }
     }
     std::string name() const override {
         if (!exact_) return "casteljau (exact off)";

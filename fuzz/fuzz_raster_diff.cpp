@@ -7,9 +7,10 @@
 //   0 move, 1 line, 2 quad, 3 cubic, 4 close, 5 stacked copy of everything so far (offset by the
 //   next two bytes in 1/64 px, often 0: an exact copy), 6 conic (weight from the next byte).
 // Checks, each aborting on failure:
-//   1. default options (exact, topology decided per fill) against the exact cells (every shape
-//      through the per-cell overlap check): the same flattening, so they must agree to rounding,
-//      |difference| <= 1/255 at every pixel;
+//   1. default options (exact, topology decided per fill: the winding sweep for a shape not
+//      proven simple) against the exact cells (every shape through the per-cell overlap check,
+//      winding sweep off): the same flattening, so they must agree to rounding, |difference| <=
+//      1/255 at every pixel;
 //   2. for straight-edged paths, default options against the independent exact-area reference of
 //      tests/support/reference_area.* (slab integration): within 1/255 at every pixel;
 //   3. a path classify_topology proves Simple renders through the fast path (that verdict given
@@ -21,7 +22,9 @@
 //      pixel within 1/255 of plain accumulation and every other one equal to the exact cells;
 //   6. a path proven Simple as in 3, with a far square beside it so that its box is too wide for
 //      the row vectors (the float cells accumulate it): plain accumulation within 1/255 of the
-//      exact cells.
+//      exact cells;
+//   7. every path through the winding sweep (topology given as Overlapping), alone and with the
+//      far square of 6: within 1/255 of the exact cells.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -50,6 +53,19 @@ struct Reader {
         return {x, coord()};
     }
 };
+
+// The path mapped by m, with a 1 x 1 square at x = 600: a box too wide for the row vectors, so
+// plain accumulation takes the float cells.
+Path with_far_square(const Path& path, const Affine& m) {
+    Path wide;
+    wide.append(path, m);
+    wide.move_to({600, 0});
+    wide.line_to({601, 0});
+    wide.line_to({601, 1});
+    wide.line_to({600, 1});
+    wide.close();
+    return wide;
+}
 
 Mask render(Rasterizer& r, const Path& p, const Affine& m, const FillOptions& o) {
     return r.fill_mask(p, m, o, IRect{0, 0, kSize, kSize});
@@ -134,6 +150,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const Topology verdict = r.last_stats().topology;
         FillOptions exact = opts;
         exact.topology = Topology::Overlapping;
+        exact.winding_sweep = false;
         const Mask cells = render(r, path, m, exact);
         // Exact everywhere: no cell fell back to lines or to accumulation for want of budget.
         const bool all_exact = r.last_stats().dense_cells == 0 && r.last_stats().accumulated_cells == 0;
@@ -147,15 +164,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             FillOptions plain = opts;
             plain.exact_overlaps = false;
             expect_close("plain accumulation of a Simple path vs exact cells", render(r, path, m, plain), cells);
-            Path wide;
-            wide.append(path, m);
-            wide.move_to({600, 0});
-            wide.line_to({601, 0});
-            wide.line_to({601, 1});
-            wide.line_to({600, 1});
-            wide.close();
+            const Path wide = with_far_square(path, m);
             expect_close("plain accumulation in float cells vs exact cells",
                          r.fill_mask(wide, Affine{}, plain, IRect{0, 0, 610, kSize}), cells);
+        }
+        {
+            FillOptions swept = opts;
+            swept.topology = Topology::Overlapping;
+            expect_close("the winding sweep vs exact cells", render(r, path, m, swept), cells);
+            const Path wide = with_far_square(path, m);
+            expect_close("the winding sweep in float cells vs exact cells",
+                         r.fill_mask(wide, Affine{}, swept, IRect{0, 0, 610, kSize}), cells);
         }
         if (similarity > 0 && classify_topology(path, coarse / similarity) == Topology::Simple) {
             FillOptions plain = opts, cells_at = opts;

@@ -9,21 +9,27 @@
 // cache keeps each glyph's verdict): a shape proven "simple" (no two segments meet, winding values
 // only 0 and 1, or only 0 and -1: 96 % of DejaVu Sans glyphs, and under the similarity maps that
 // glyphs are drawn with 89 % of Linux Libertine's, against 50 % under every map) is accumulated plainly; any
-// other shape takes the overlap check, where every
-// pixel in which edges could make accumulation inexact (crossings, overlapping or stacked
-// contours) is recomputed exactly from the edges inside it (see src/raster/exact_cell.cpp). A
-// shape whose topology the caller did not give is classified by fill() when its box is large for
+// other shape is made exact in one of two ways:
+//   - the winding sweep (src/raster/winding_sweep.hpp), for shapes of one dense buffer (below)
+//     without FillOptions::inside or hidden: a sweep down the shape keeps its edges in x order
+//     and replaces them by the boundary of the region it fills, which plain accumulation renders
+//     exactly. It costs per edge and per crossing, not per pixel; a shape with too many crossings
+//     for its size (past 32 strip steps per edge, plus 1024) takes the overlap check instead;
+//   - the overlap check, where every pixel in which edges could make accumulation inexact
+//     (crossings, overlapping or stacked contours) is recomputed exactly from the edges inside it
+//     (see src/raster/exact_cell.cpp).
+// A shape whose topology the caller did not give is classified by fill() when its box is large for
 // its number of segments (width + height at least 16 pixels per path verb: there the per-cell
 // check would cost more than the classification; under a similarity map with the verdict for
-// that map and tolerance), and otherwise takes the overlap check.
-// Precision: shapes with the overlap check, and shapes wider than 64 px (or than 8 SIMD vectors),
-// accumulate in double, which rounds the area correctly but for values within about 1e-12 of a
-// level of half-way between two levels. Narrower shapes without it (most glyphs) accumulate in
-// float: the area before rounding is within about 4e-3 of a level of the exact one (positions
-// rounded to float; pieces narrower than 1e-4 px taken as vertical), so a pixel may round one
-// level away from the correctly rounded value only where its exact area lies that close to
-// half-way. A half-way value rounds up in both (from exactly representable positions; see
-// kRoundUp in src/raster/raster_internal.hpp).
+// that map and tolerance), and otherwise made exact as above.
+// Precision: shapes with the overlap check, and shapes wider than 1024 px, accumulate in double,
+// which rounds the area correctly but for values within about 1e-12 of a level of half-way
+// between two levels. Narrower shapes without it (most glyphs) accumulate in float: the area
+// before rounding is within about 4e-3 of a level of the exact one (positions rounded to float;
+// pieces narrower than 1e-4 px taken as vertical), so a pixel may round one level away from the
+// correctly rounded value only where its exact area lies that close to half-way. A half-way value
+// rounds up in both (from exactly representable positions; see kRoundUp in
+// src/raster/raster_internal.hpp).
 //
 // Range: geometry is clipped in double precision before it is converted to float cell coordinates,
 // so any finite coordinate up to limits::kMaxCoordinate is accepted; the target rectangle is at
@@ -152,6 +158,10 @@ struct FillOptions {
     // coverage. The set must outlive the fill. render_map hides the pixels its opaque strokes
     // cover fully from the fills under them.
     const PixelSet* hidden = nullptr;
+    // Shapes that need exactness may take the winding sweep (see the top of this header); false
+    // sends every one to the per-cell overlap check. Both are exact; the pixels they give differ
+    // by at most one level, where float and double accumulation round differently.
+    bool winding_sweep = true;
 };
 
 // Receives coverage one row at a time, rows in increasing y. `coverage[i]` belongs to pixel
@@ -191,6 +201,7 @@ struct Mask {
 
 struct RasterStats {
     std::size_t segments = 0;     // line segments accumulated
+    bool swept = false;           // the winding sweep made the shape exact (no cell below is counted)
     std::size_t exact_cells = 0;  // cells recomputed exactly
     // Of those, cells where the exact method would cost too much (thousands of pieces crossing in
     // one pixel, or the fill's exact-work budget spent: Limits::exact_work piece visits plus 2000 per

@@ -312,10 +312,17 @@ TEST_CASE("topology: DejaVu Sans glyphs, Simple ones render plainly within the e
 TEST_CASE("topology: the rasterizer uses the verdict and the caller's verdict", "[raster][topology]") {
     Rasterizer r;
     Mask m;
-    // Without a verdict: the overlap check.
+    // Without a verdict: the winding sweep.
     const Path stacked = join(square(1.5, 1.5, 8), square(1.5, 1.5, 8));
     m = r.fill_mask(stacked, Affine::identity());
     CHECK(r.last_stats().topology == Topology::Unknown);
+    CHECK(r.last_stats().swept);
+    CHECK(m.at(1, 1) == 64);
+    // The same through the overlap check.
+    FillOptions cells;
+    cells.winding_sweep = false;
+    m = r.fill_mask(stacked, Affine::identity(), cells);
+    CHECK(!r.last_stats().swept);
     CHECK(r.last_stats().exact_cells > 0);
     CHECK(m.at(1, 1) == 64);  // a quarter of the pixel, not half (the two copies do not add up)
     FillOptions classified;
@@ -353,13 +360,14 @@ TEST_CASE("topology: the rasterizer classifies shapes large for their number of 
     CHECK(r.last_stats().exact_cells == 0);
     FillOptions checked;  // the per-cell check on the same flattened outline
     checked.topology = Topology::Overlapping;
+    checked.winding_sweep = false;
     const auto with_check = render(r, rings, Affine::identity(), checked, clip);
     CHECK(max_difference(out, with_check) <= 1);
     // Two large squares stacked: classified Overlapping, and exact (a stacked copy adds nothing).
     const Path stacked = join(square(20.25, 20.25, 200), square(20.25, 20.25, 200));
     out = render(r, stacked, Affine::identity(), exact, clip);
     CHECK(r.last_stats().topology == Topology::Overlapping);
-    CHECK(r.last_stats().exact_cells > 0);
+    CHECK(r.last_stats().swept);
     const auto cmp =
         compare(out, ref::path_reference(square(20.25, 20.25, 200), Affine::identity(), FillRule::NonZero, clip));
     INFO(cmp.text());
@@ -368,7 +376,7 @@ TEST_CASE("topology: the rasterizer classifies shapes large for their number of 
     // A glyph-sized box with as many segments: not classified (the per-cell check is cheaper).
     (void)render(r, join(square(1.5, 1.5, 8), square(1.5, 1.5, 8)), Affine::identity(), exact, clip);
     CHECK(r.last_stats().topology == Topology::Unknown);
-    CHECK(r.last_stats().exact_cells > 0);
+    CHECK(r.last_stats().swept);
 }
 
 TEST_CASE("topology: decide_topology is the verdict fill reaches for a shape given none", "[raster][topology]") {

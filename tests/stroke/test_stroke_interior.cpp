@@ -64,8 +64,9 @@ TEST_CASE("stroke_outline: interior capsules leave every pixel of random strokes
         const double tol = rng() % 2 ? 0.015 : 0.25;
         const StrokeOutline s = stroke_outline(path, st, m, tol);
         REQUIRE(s.outline == stroke(path, st, m, tol));
-        FillOptions plain;
+        FillOptions plain;  // the overlap check, which the capsules shorten
         plain.tolerance = tol;
+        plain.winding_sweep = false;
         FillOptions hinted = plain;
         hinted.inside = s.inside;
         const Mask a = raster.fill_mask(s.outline, m, plain);
@@ -106,8 +107,9 @@ TEST_CASE("stroke_outline: interior capsules of short crowded strokes leave ever
         if (rng() % 4 == 0) st.dashes = {3 + 10 * u(rng), 1 + 4 * u(rng)};
         const double tol = rng() % 2 ? 0.015 : 0.2;
         const StrokeOutline s = stroke_outline(path, st, Affine{}, tol);
-        FillOptions plain;
+        FillOptions plain;  // the overlap check, which the capsules shorten
         plain.tolerance = tol;
+        plain.winding_sweep = false;
         FillOptions hinted = plain;
         hinted.inside = s.inside;
         const Mask a = raster.fill_mask(s.outline, Affine{}, plain);

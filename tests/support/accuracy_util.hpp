@@ -77,17 +77,33 @@ inline std::string describe(const ref::Contours& cs, const Affine& m, const IRec
     return s + "}";
 }
 
-inline Comparison check_polygons(Rasterizer& r, const ref::Contours& user, const Affine& m, const FillOptions& opts,
-                                 const IRect& clip, const std::string& what) {
-    const Rendered out = render(r, ref::to_path(user), m, opts, clip);
-    const ref::CoverageGrid truth = ref::slab_area(ref::transformed(user, m), opts.rule, clip);
+inline Comparison check_one(const Rendered& out, const ref::CoverageGrid& truth, const ref::Contours& user,
+                            const Affine& m, const FillOptions& opts, const IRect& clip, const std::string& what) {
     const Comparison c = compare(out, truth);
-    INFO(what << (opts.rule == FillRule::NonZero ? " [nonzero]" : " [even-odd]") << ": " << c.text());
+    INFO(what << (opts.rule == FillRule::NonZero ? " [nonzero]" : " [even-odd]")
+              << (opts.exact_overlaps && !opts.winding_sweep ? " [overlap check]" : "") << ": " << c.text());
     INFO((c.max_err > kRoundedErr ? describe(user, m, clip) : std::string()));
     REQUIRE(out.contract_violation.empty());
     REQUIRE(out.nonzero_outside_window == 0);
     REQUIRE(c.max_err <= kPolygonMaxErr);
     CHECK(c.max_err <= kRoundedErr);
+    return c;
+}
+
+// Renders the polygons with `opts` and checks them against the exact area. With exactness on and
+// the winding sweep allowed, the shape is rendered and checked a second time through the per-cell
+// overlap check (winding_sweep off), so both exact methods meet the same reference; r's
+// last_stats() are then those of the overlap check. Returns the first render's comparison.
+inline Comparison check_polygons(Rasterizer& r, const ref::Contours& user, const Affine& m, const FillOptions& opts,
+                                 const IRect& clip, const std::string& what) {
+    const Path path = ref::to_path(user);
+    const ref::CoverageGrid truth = ref::slab_area(ref::transformed(user, m), opts.rule, clip);
+    const Comparison c = check_one(render(r, path, m, opts, clip), truth, user, m, opts, clip, what);
+    if (opts.exact_overlaps && opts.winding_sweep) {
+        FillOptions cells = opts;
+        cells.winding_sweep = false;
+        check_one(render(r, path, m, cells, clip), truth, user, m, cells, clip, what);
+    }
     return c;
 }
 

@@ -1,0 +1,171 @@
+// Raster stage: the winding sweep (see winding_sweep.hpp).
+#include "raster/winding_sweep.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+#include "casteljau/error.hpp"
+
+namespace casteljau::raster {
+
+namespace {
+
+// Two neighbours whose order is wrong by at most this much (in pixels) are taken as touching, not
+// crossing: the area this misplaces is below kTouch x the strip's height.
+constexpr double kTouch = 1e-9;
+
+// The order of chains at a strip's top: by x, and chains that meet there by their slope (the one
+// further left just below comes first).
+inline bool before(const auto& a, const auto& b) { return a.x < b.x - kTouch || (a.x <= b.x + kTouch && a.k < b.k); }
+
+}  // namespace
+
+void WindingSweep::begin(std::size_t max_edges) {
+    pts_.clear();
+    chains_.clear();
+    open_ = false;
+    count_ = 0;
+    max_edges_ = max_edges;
+}
+
+void WindingSweep::too_many() const {
+    throw Error(ErrorKind::Limit, "path too complex: more than " + std::to_string(max_edges_) + " edges");
+}
+
+void WindingSweep::close_chain() {
+    if (!open_) return;
+    Chain& c = chains_.back();
+    c.last = static_cast<std::uint32_t>(pts_.size() - 1);
+    if (c.dir < 0) std::reverse(pts_.begin() + c.first, pts_.end());
+    c.xmin = c.xmax = pts_[c.first].x;
+    for (std::size_t i = c.first + 1; i < pts_.size(); ++i) {
+        c.xmin = std::min(c.xmin, pts_[i].x);
+        c.xmax = std::max(c.xmax, pts_[i].x);
+    }
+    open_ = false;
+}
+
+void WindingSweep::trim(std::size_t points) {
+    if (pts_.capacity() <= points) return;
+    std::vector<Pt>().swap(pts_);
+    std::vector<Chain>().swap(chains_);
+    std::vector<std::pair<double, std::uint32_t>>().swap(order_);
+    std::vector<Active>().swap(active_);
+    open_ = false;
+}
+
+void WindingSweep::flush(const Active& a, double y, std::vector<Edge>& out) const {
+    if (a.keep == 0 || !(y > a.ys)) return;
+    double px = x_on(a.seg_s, a.ys), py = a.ys;
+    auto emit = [&](double x, double yy) {
+        if (a.keep > 0)
+            out.push_back({px, py, x, yy, -1, -1});
+        else
+            out.push_back({x, yy, px, py, -1, -1});
+        px = x;
+        py = yy;
+    };
+    std::uint32_t j = a.seg_s + 1;
+    for (; j <= a.last && pts_[j].y < y; ++j) emit(pts_[j].x, pts_[j].y);
+    emit(x_on(j - 1, y), y);
+}
+
+double WindingSweep::first_crossing(const Active& a, const Active& b, double y, double end, std::size_t& work) const {
+    if (a.xmax <= b.xmin) return end;  // a lies left of b all along
+    std::uint32_t ia = a.seg, ib = b.seg;
+    double prev = y, fprev = a.x - b.x;
+    while (prev < end) {
+        const double v = std::min({pts_[ia + 1].y, pts_[ib + 1].y, end});
+        const double f = x_on(ia, v) - x_on(ib, v);
+        if (f > kTouch) return prev + (v - prev) * (std::max(0.0, -fprev) / (f - fprev));
+        ++work;
+        if (pts_[ia + 1].y <= v && ia + 1 < a.last) ++ia;
+        if (pts_[ib + 1].y <= v && ib + 1 < b.last) ++ib;
+        prev = v;
+        fprev = f;
+    }
+    return end;
+}
+
+bool WindingSweep::run(FillRule rule, std::size_t budget, std::vector<Edge>& out) {
+    close_chain();
+    const std::size_t m = chains_.size();
+    if (m == 0) return true;
+    order_.clear();
+    for (std::uint32_t c = 0; c < m; ++c) order_.emplace_back(pts_[chains_[c].first].y, c);
+    std::sort(order_.begin(), order_.end());
+    active_.clear();
+    std::size_t work = 0, next_top = 0;
+    double y = order_[0].first;
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    while (true) {
+        for (; next_top < m && order_[next_top].first <= y; ++next_top) {
+            const Chain& c = chains_[order_[next_top].second];
+            active_.push_back({pts_[c.first].x, slope(c.first), pts_[c.last].y, y, c.first, c.first, c.last, c.xmin,
+                               c.xmax, c.dir, 0});
+        }
+        if (active_.empty()) {
+            if (next_top == m) return true;
+            y = order_[next_top].first;
+            continue;
+        }
+        double next = next_top < m ? order_[next_top].first : kNone;
+        for (const Active& a : active_) next = std::min(next, a.bottom);
+        // Insertion sort: the order of the strip before is nearly this one.
+        for (std::size_t i = 1; i < active_.size(); ++i) {
+            if (!before(active_[i], active_[i - 1])) continue;
+            const Active a = active_[i];
+            std::size_t j = i;
+            for (; j > 0 && before(a, active_[j - 1]); --j) active_[j] = active_[j - 1];
+            active_[j] = a;
+        }
+        // The strip ends at the first crossing of neighbours.
+        for (std::size_t i = 0; i + 1 < active_.size(); ++i)
+            next = first_crossing(active_[i], active_[i + 1], y, next, work);
+        work += active_.size();
+        if (work > budget || !(next > y)) return false;
+        // Left to right with the running winding number: a chain bounds the filled region where the
+        // number changes between zero and nonzero (nonzero rule), or always (even-odd). Kept chains
+        // run down where the region starts and up where it ends, so every run of it winds +1.
+        int w = 0;
+        std::int8_t side = 1;
+        for (Active& a : active_) {
+            std::int8_t keep;
+            if (rule == FillRule::NonZero) {
+                const int was = w;
+                w += a.dir;
+                keep = was == 0 ? 1 : (w == 0 ? -1 : 0);
+            } else {
+                keep = side;
+                side = static_cast<std::int8_t>(-side);
+            }
+            if (keep != a.keep) {
+                flush(a, y, out);
+                a.keep = keep;
+                a.ys = y;
+                a.seg_s = a.seg;
+            }
+        }
+        // To the next strip: the chains that end here leave, the others move to its top.
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < active_.size(); ++i) {
+            Active& a = active_[i];
+            if (a.bottom <= next) {
+                flush(a, a.bottom, out);
+                continue;
+            }
+            std::uint32_t s = a.seg;
+            while (pts_[s + 1].y <= next) ++s;
+            if (kept != i) active_[kept] = a;
+            Active& k = active_[kept++];
+            k.seg = s;
+            k.x = x_on(s, next);
+            k.k = slope(s);
+        }
+        active_.resize(kept);
+        y = next;
+    }
+}
+
+}  // namespace casteljau::raster

@@ -1,0 +1,102 @@
+// Internal: the raster stage's winding sweep. It turns the edges of any closed shape (contours
+// that overlap, cross themselves or each other, under either fill rule) into the edges of the
+// region it fills, each oriented so that the winding number they make is 1 inside that region and
+// 0 outside. Plain cover/area accumulation of the result is then the exact coverage of the shape,
+// with no overlap check per cell.
+//
+// How: the edges are joined into chains (runs of a contour going the same way, up or down). A
+// sweep down the shape keeps the chains that span the current horizontal strip sorted by x. A
+// strip ends at the next chain's top or bottom or at the first crossing of two neighbours, so the
+// order holds inside it, and the winding number between two neighbours is constant there. Walking the
+// strip's edges left to right with the running winding number says which of them bound the filled
+// region: those where it changes between zero and nonzero (nonzero rule), or every one (even-odd).
+// The others (inside an overlap) are dropped; a bounding chain is kept for as many strips as it
+// stays bounding. Horizontal edges bound no strip and are dropped.
+//
+// Cost: the edges, plus the strips times the chains spanning them. A shape with many crossings (each one a strip)
+// may cost more than the per-cell check, so the sweep stops at a budget and says so.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "casteljau/raster.hpp"
+#include "raster/raster_internal.hpp"
+
+namespace casteljau::raster {
+
+class WindingSweep {
+public:
+    // Starts a shape; more than `max_edges` edges pushed is a Limit error.
+    void begin(std::size_t max_edges);
+    // One edge in box coordinates, in contour order (the edge builder's interface).
+    inline void push(double x0, double y0, double x1, double y1);
+    void contour_end() {}
+    std::size_t edges() const { return count_; }
+    // Frees the buffers that hold room for more than `points` points (between shapes).
+    void trim(std::size_t points);
+    // Appends the boundary edges of the region the pushed edges fill under `rule` to `out` (in
+    // box coordinates). Returns false, with `out` in an unspecified state, when the sweep would
+    // take more than `budget` steps (a chain passed in a strip, or a point passed when looking for
+    // crossings).
+    bool run(FillRule rule, std::size_t budget, std::vector<Edge>& out);
+
+private:
+    struct Pt {
+        double x, y;
+    };
+    // A run of consecutive edges of one contour going the same way up or down: its points, by y.
+    struct Chain {
+        std::uint32_t first, last;  // into pts_, pts_[first].y < ... < pts_[last].y
+        std::int8_t dir;            // +1: the contour runs down along it, -1: up
+        double xmin, xmax;          // its points' x range
+    };
+    // A chain spanning the current strip.
+    struct Active {
+        double x;             // at the strip's top
+        double k;             // dx / dy of its segment just below the top
+        double bottom;        // pts_[chain.last].y
+        double ys;            // where the current kept piece starts
+        std::uint32_t seg;    // segment (pts_[seg], pts_[seg + 1]) holding the strip's top
+        std::uint32_t seg_s;  // segment holding ys
+        std::uint32_t last;   // the chain's last point
+        double xmin, xmax;    // the chain's x range
+        std::int8_t dir;
+        std::int8_t keep;  // current piece: +1 kept running down, -1 kept running up, 0 dropped
+    };
+    void close_chain();
+    [[noreturn]] void too_many() const;
+    double x_on(std::uint32_t seg, double y) const {
+        const Pt& a = pts_[seg];
+        const Pt& b = pts_[seg + 1];
+        return y == a.y ? a.x : y == b.y ? b.x : a.x + (y - a.y) * ((b.x - a.x) / (b.y - a.y));
+    }
+    double slope(std::uint32_t seg) const { return (pts_[seg + 1].x - pts_[seg].x) / (pts_[seg + 1].y - pts_[seg].y); }
+    void flush(const Active& a, double y, std::vector<Edge>& out) const;
+    // The first y in (y, end] where chain a (left of b at y) is right of b, or `end`; the
+    // crossing's y when there is one. Counts the points it passes in `work`.
+    double first_crossing(const Active& a, const Active& b, double y, double end, std::size_t& work) const;
+
+    std::vector<Pt> pts_;  // the open chain's in travel order, the others' by y
+    std::vector<Chain> chains_;
+    bool open_ = false;  // the last chain takes more points
+    std::size_t count_ = 0, max_edges_ = 0;
+    std::vector<std::pair<double, std::uint32_t>> order_;  // chains' tops, in order
+    std::vector<Active> active_;                           // by x at the strip's top
+};
+
+inline void WindingSweep::push(double x0, double y0, double x1, double y1) {
+    if (x0 == x1 && y0 == y1) return;
+    if (++count_ > max_edges_) too_many();
+    if (y0 == y1) return;  // bounds no strip; the next edge starts elsewhere, so a chain ends
+    const std::int8_t dir = y1 > y0 ? 1 : -1;
+    if (!(open_ && chains_.back().dir == dir && pts_.back().x == x0 && pts_.back().y == y0)) {
+        close_chain();
+        chains_.push_back({static_cast<std::uint32_t>(pts_.size()), 0, dir, 0, 0});
+        pts_.push_back({x0, y0});
+        open_ = true;
+    }
+    pts_.push_back({x1, y1});
+}
+
+}  // namespace casteljau::raster

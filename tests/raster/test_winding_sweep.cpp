@@ -1,0 +1,160 @@
+// The winding sweep (src/raster/winding_sweep.hpp): shapes that are not proven simple are
+// replaced by the boundary of the region they fill, which plain accumulation renders exactly.
+// Every pixel is compared with the independent exact reference (tests/support/reference_area.*);
+// check_polygons also renders each shape through the per-cell overlap check.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <random>
+#include <string>
+
+#include "accuracy_util.hpp"
+
+using namespace casteljau;
+using namespace casteljau::testing;
+using ref::Contour;
+using ref::Contours;
+
+namespace {
+
+// Renders with default options and checks that the sweep, not the overlap check, made it exact.
+Comparison check_swept(Rasterizer& r, const Contours& shape, FillRule rule, const IRect& clip,
+                       const std::string& what) {
+    FillOptions o;
+    o.rule = rule;
+    o.topology = Topology::Overlapping;
+    const Rendered out = render(r, ref::to_path(shape), Affine::identity(), o, clip);
+    INFO(what);
+    CHECK(out.stats.swept);
+    CHECK(out.stats.exact_cells == 0);
+    return check_polygons(r, shape, Affine::identity(), o, clip, what);
+}
+
+// A random polygon of n vertices in [0, size)^2: it crosses itself about n^2 / 10 times.
+Contour scribble(std::mt19937& rng, int n, double size) {
+    std::uniform_real_distribution<double> u(0.0, size);
+    Contour c;
+    for (int i = 0; i < n; ++i) c.push_back({u(rng), u(rng)});
+    return c;
+}
+
+// The largest |difference| of two renders over their clip.
+int max_difference(const Rendered& a, const Rendered& b) {
+    int worst = 0;
+    for (int y = a.clip.y0; y < a.clip.y1; ++y)
+        for (int x = a.clip.x0; x < a.clip.x1; ++x) worst = std::max(worst, std::abs(a.at(x, y) - b.at(x, y)));
+    return worst;
+}
+
+}  // namespace
+
+TEST_CASE("winding sweep: random self-crossing polygons, both rules", "[raster][sweep]") {
+    Rasterizer r;
+    std::mt19937 rng(20261130);
+    for (int i = 0; i < 60; ++i) {
+        const int n = 3 + i % 9;
+        const double size = 4 + 40 * ((i * 7) % 11) / 10.0;
+        Contours shape{scribble(rng, n, size)};
+        if (i % 3 == 0) shape.push_back(scribble(rng, n, size));  // a second contour over the first
+        const int side = static_cast<int>(size) + 1;
+        for (FillRule rule : kRules) check_swept(r, shape, rule, {0, 0, side, side}, "scribble " + std::to_string(i));
+    }
+}
+
+TEST_CASE("winding sweep: stacked, touching and nested contours", "[raster][sweep]") {
+    Rasterizer r;
+    const IRect clip{0, 0, 24, 24};
+    for (FillRule rule : kRules) {
+        // An exact copy: windings 0 and 2, the region of one square.
+        check_swept(r, {rect(2.3, 2.3, 17.6, 15.2), rect(2.3, 2.3, 17.6, 15.2)}, rule, clip, "stacked copy");
+        // Two squares sharing a side, the same way round: no seam along it.
+        check_swept(r, {rect(2.3, 2.3, 9.5, 15.2), rect(9.5, 2.3, 17.6, 15.2)}, rule, clip, "shared side");
+        // A hole the other way round, and an island inside it.
+        check_swept(r, {rect(2.3, 2.3, 20.6, 20.2), reversed(rect(5.5, 5.5, 15.1, 15.1)), rect(8.2, 8.2, 9.9, 12.7)},
+                    rule, clip, "hole and island");
+        // Overlapping squares of opposite orientations: windings -1, 0 and 1 side by side.
+        check_swept(r, {rect(2.3, 2.3, 12.6, 12.2), reversed(rect(7.5, 7.5, 20.1, 18.1))}, rule, clip,
+                    "opposite orientations");
+        // A bow-tie whose crossing lies on a pixel corner, and one whose crossing is inside a pixel.
+        check_swept(r, {{{2, 2}, {12, 12}, {12, 2}, {2, 12}}}, rule, clip, "bow-tie on a corner");
+        check_swept(r, {{{2.3, 2.1}, {12.7, 13.3}, {12.2, 2.6}, {2.5, 12.9}}}, rule, clip, "bow-tie");
+    }
+    // Every pixel of the shared side is full: the two halves meet without a seam.
+    const Rendered out = render(r, ref::to_path({rect(2.3, 2.3, 9.5, 15.2), rect(9.5, 2.3, 17.6, 15.2)}),
+                                Affine::identity(), FillOptions{}, clip);
+    for (int y = 3; y < 15; ++y) CHECK(out.at(9, y) == 255);
+}
+
+TEST_CASE("winding sweep: shapes reaching outside the target", "[raster][sweep]") {
+    Rasterizer r;
+    std::mt19937 rng(7);
+    for (int i = 0; i < 20; ++i) {
+        Contours shape{scribble(rng, 7, 40), scribble(rng, 5, 40)};
+        for (Contour& c : shape)
+            for (Point& p : c) p = {p.x - 10, p.y - 8};  // parts left of and above the target
+        for (FillRule rule : kRules)
+            check_swept(r, shape, rule, {0, 0, 20, 22}, "clipped scribble " + std::to_string(i));
+    }
+}
+
+TEST_CASE("winding sweep: curved glyph-like shapes agree with the overlap check", "[raster][sweep]") {
+    Rasterizer r;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 30.0);
+    for (int i = 0; i < 40; ++i) {
+        Path p;
+        for (int c = 0; c < 2; ++c) {
+            p.move_to({u(rng), u(rng)});
+            p.cubic_to({u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)});
+            p.quad_to({u(rng), u(rng)}, {u(rng), u(rng)});
+            p.close();
+        }
+        for (FillRule rule : kRules) {
+            FillOptions swept;
+            swept.rule = rule;
+            swept.topology = Topology::Overlapping;
+            FillOptions cells = swept;
+            cells.winding_sweep = false;
+            const IRect clip{0, 0, 31, 31};
+            const Rendered a = render(r, p, Affine::identity(), swept, clip);
+            const Rendered b = render(r, p, Affine::identity(), cells, clip);
+            REQUIRE(a.stats.swept);
+            REQUIRE(!b.stats.swept);
+            INFO("path " << i);
+            CHECK(max_difference(a, b) <= 1);
+            check_curves(r, p, Affine::identity(), swept, clip, "curves " + std::to_string(i));
+        }
+    }
+}
+
+TEST_CASE("winding sweep: too many crossings for the budget go to the overlap check", "[raster][sweep]") {
+    Rasterizer r;
+    // 60 thin bars at random angles through one 40 x 40 square: about 1,800 crossings for 240
+    // edges, more strips than the sweep's budget allows.
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Contours bars;
+    for (int i = 0; i < 60; ++i) {
+        const double a = 3.14159 * u(rng), cx = 15 + 10 * u(rng), cy = 15 + 10 * u(rng);
+        const double dx = 18 * std::cos(a), dy = 18 * std::sin(a), nx = -0.2 * std::sin(a), ny = 0.2 * std::cos(a);
+        bars.push_back({{cx - dx - nx, cy - dy - ny},
+                        {cx + dx - nx, cy + dy - ny},
+                        {cx + dx + nx, cy + dy + ny},
+                        {cx - dx + nx, cy - dy + ny}});
+    }
+    const IRect clip{0, 0, 42, 42};
+    for (FillRule rule : kRules) {
+        FillOptions o;
+        o.rule = rule;
+        o.topology = Topology::Overlapping;
+        const Rendered out = render(r, ref::to_path(bars), Affine::identity(), o, clip);
+        CHECK(!out.stats.swept);
+        CHECK(out.stats.exact_cells > 0);
+        check_polygons(r, bars, Affine::identity(), o, clip, "60 crossing bars");
+    }
+    // A few of them stay within the budget.
+    const Contours few(bars.begin(), bars.begin() + 4);
+    for (FillRule rule : kRules) check_swept(r, few, rule, clip, "4 crossing bars");
+}
