@@ -118,8 +118,7 @@ struct Rasterizer::Impl {
     std::vector<Edge> edges;                       // banded fills: the clipped edges ...
     std::vector<std::uint32_t> contour;            // ... their contours ...
     std::vector<std::vector<std::uint32_t>> band;  // ... and the edges of each band, in contour order
-    raster::WindingSweep sweep;                    // shapes without a verdict: their region's boundary ...
-    std::vector<Edge> boundary;                    // ... in edges that accumulate exactly
+    raster::WindingSweep sweep;                    // shapes without a verdict: their region's boundary
 
     // Releases the edge lists and the engine's records when a fill made them larger than an
     // ordinary one needs (before waiting in the spare pool).
@@ -132,7 +131,6 @@ struct Rasterizer::Impl {
         }
         engine.trim(kMaxSpareEdges);
         sweep.trim(kMaxSpareEdges);
-        if (boundary.capacity() > kMaxSpareEdges) std::vector<Edge>().swap(boundary);
     }
     // Fills the box of bw x bh cells at (ox, oy) band by band from `edges`.
     void run_bands(const FillOptions& opts, int ox, int oy, int bw, int bh, SpanSink& sink, RasterStats& stats);
@@ -223,12 +221,10 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opti
             raster::WindingSweep& sweep = impl_->sweep;
             sweep.begin(current_limits().flattened_segments);
             raster::build_edges(path, local, opts.tolerance, inside, bw, bh, sweep);
-            impl_->boundary.clear();
             const std::size_t budget = kSweepWorkPerEdge * sweep.edges() + kSweepWorkBase;
-            if (sweep.run(opts.rule, budget, impl_->boundary)) {
-                raster::Engine& d = impl_->engine;
-                d.begin(bw, bh, false);
-                for (const Edge& e : impl_->boundary) d.push(e.x0, e.y0, e.x1, e.y1);
+            raster::Engine& d = impl_->engine;
+            d.begin(bw, bh, false);
+            if (sweep.run(opts.rule, budget, d)) {
                 d.finish(FillRule::NonZero, ox, oy, sink, stats_);
                 stats_.segments = sweep.edges();
                 stats_.swept = true;

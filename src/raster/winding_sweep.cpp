@@ -6,6 +6,7 @@
 #include <string>
 
 #include "casteljau/error.hpp"
+#include "raster/engine.hpp"
 
 namespace casteljau::raster {
 
@@ -55,14 +56,14 @@ void WindingSweep::trim(std::size_t points) {
     open_ = false;
 }
 
-void WindingSweep::flush(const Active& a, double y, std::vector<Edge>& out) const {
+void WindingSweep::flush(const Active& a, double y, Engine& out) const {
     if (a.keep == 0 || !(y > a.ys)) return;
     double px = x_on(a.seg_s, a.ys), py = a.ys;
     auto emit = [&](double x, double yy) {
         if (a.keep > 0)
-            out.push_back({px, py, x, yy, -1, -1});
+            out.push(px, py, x, yy);
         else
-            out.push_back({x, yy, px, py, -1, -1});
+            out.push(x, yy, px, py);
         px = x;
         py = yy;
     };
@@ -88,7 +89,7 @@ double WindingSweep::first_crossing(const Active& a, const Active& b, double y, 
     return end;
 }
 
-bool WindingSweep::run(FillRule rule, std::size_t budget, std::vector<Edge>& out) {
+bool WindingSweep::run(FillRule rule, std::size_t budget, Engine& out) {
     close_chain();
     const std::size_t m = chains_.size();
     if (m == 0) return true;

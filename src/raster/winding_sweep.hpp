@@ -25,6 +25,8 @@
 
 namespace casteljau::raster {
 
+class Engine;
+
 class WindingSweep {
 public:
     // Starts a shape; more than `max_edges` edges pushed is a Limit error.
@@ -35,11 +37,11 @@ public:
     std::size_t edges() const { return count_; }
     // Frees the buffers that hold room for more than `points` points (between shapes).
     void trim(std::size_t points);
-    // Appends the boundary edges of the region the pushed edges fill under `rule` to `out` (in
-    // box coordinates). Returns false, with `out` in an unspecified state, when the sweep would
-    // take more than `budget` steps (a chain passed in a strip, or a point passed when looking for
-    // crossings).
-    bool run(FillRule rule, std::size_t budget, std::vector<Edge>& out);
+    // Pushes the boundary edges of the region the pushed edges fill under `rule` into `out`, an
+    // engine begun without the overlap check on the same box. Returns false, with part of them
+    // pushed, when the sweep would take more than `budget` steps (a chain passed in a strip, or a
+    // point passed when looking for crossings).
+    bool run(FillRule rule, std::size_t budget, Engine& out);
 
 private:
     struct Pt {
@@ -72,7 +74,7 @@ private:
         return y == a.y ? a.x : y == b.y ? b.x : a.x + (y - a.y) * ((b.x - a.x) / (b.y - a.y));
     }
     double slope(std::uint32_t seg) const { return (pts_[seg + 1].x - pts_[seg].x) / (pts_[seg + 1].y - pts_[seg].y); }
-    void flush(const Active& a, double y, std::vector<Edge>& out) const;
+    void flush(const Active& a, double y, Engine& out) const;
     // The first y in (y, end] where chain a (left of b at y) is right of b, or `end`; the
     // crossing's y when there is one. Counts the points it passes in `work`.
     double first_crossing(const Active& a, const Active& b, double y, double end, std::size_t& work) const;
