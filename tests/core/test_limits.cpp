@@ -187,6 +187,12 @@ TEST_CASE("limits: flattened_segments bounds flattening and filling", "[limits]"
     CHECK_THAT(msg, Catch::Contains("more than 8"));
     Rasterizer r;
     CHECK(error_of([&] { r.fill_mask(circle, Affine{}); }).first == ErrorKind::Limit);
+    FillOptions swept;  // not proven simple: the winding sweep takes the edges
+    swept.topology = Topology::Overlapping;
+    CHECK(error_of([&] { r.fill_mask(circle, Affine{}, swept); }).first == ErrorKind::Limit);
+    FillOptions cells = swept;
+    cells.winding_sweep = false;
+    CHECK(error_of([&] { r.fill_mask(circle, Affine{}, cells); }).first == ErrorKind::Limit);
     Path square;
     square.add_rect(Rect::from_xywh(1, 1, 5, 5));
     CHECK_NOTHROW(r.fill_mask(square, Affine{}));
