@@ -67,7 +67,8 @@ enum class Topology : std::uint8_t {
                   // meet except consecutive ones at their shared point and lines touching at a
                   // shared vertex without crossing there; spikes (a line straight back along the
                   // one before) are left out of the proof, as they cancel in accumulation
-    Overlapping,  // anything else (or not proven simple): pixels where edges interact are computed exactly
+    Overlapping,  // anything else (or not proven simple): made exact by the winding sweep or the
+                  // per-cell overlap check (see the top of this header)
 };
 
 // Decides the topology of `path` from its control points, in its own coordinates. The verdict
@@ -140,9 +141,9 @@ struct FillOptions {
     // The path's topology when the caller knows it (classify_topology of this very path, under any
     // affine map; or classify_topology(path, max_tolerance) when the map is a similarity and
     // tolerance / scale is at most max_tolerance): a Simple path is accumulated plainly, which is
-    // exact for it; Overlapping takes
-    // the per-cell overlap check; Unknown lets fill() decide (see the top of this header). Only
-    // read when exact_overlaps is on.
+    // exact for it; Overlapping is made exact by the winding sweep or the per-cell overlap check;
+    // Unknown lets fill() decide (see the top of this header). Only read when exact_overlaps is
+    // on.
     Topology topology = Topology::Unknown;
     // Capsules, possibly cut by lines (pixel space), that the caller knows lie wholly inside the
     // shape, such as the ones stroke_outline() gives with a stroke's outline. With the nonzero rule, a pixel that the
@@ -150,13 +151,16 @@ struct FillOptions {
     // exact computation, which would find the same, is skipped. A capsule that does not lie inside
     // the shape gives wrong pixels. Ignored under the even-odd rule. The span must outlive the
     // fill. Cost: a sweep over the capsules that can hold a pixel, with a work budget of a few
-    // tests per capsule and per recomputed pixel.
+    // tests per capsule and per recomputed pixel. A shape given capsules takes the overlap check,
+    // not the winding sweep (stroke outlines, whose joins cross themselves many times, are faster
+    // that way).
     std::span<const CutCapsule> inside;
     // Pixels the caller will paint over with opaque paint at full coverage, so that their coverage
     // is never seen: the overlap check leaves them to plain accumulation (what exact_overlaps =
     // false gives) instead of recomputing them exactly. Every other pixel keeps its exact
     // coverage. The set must outlive the fill. render_map hides the pixels its opaque strokes
-    // cover fully from the fills under them.
+    // cover fully from the fills under them. A shape given hidden pixels takes the overlap check,
+    // not the winding sweep (map features with their hidden pixels are faster that way).
     const PixelSet* hidden = nullptr;
     // Shapes that need exactness may take the winding sweep (see the top of this header); false
     // sends every one to the per-cell overlap check. Both are exact; the pixels they give differ

@@ -6,7 +6,8 @@
 //      edges become the boundary of the region it fills) when it fits one dense buffer and has no
 //      FillOptions::inside or hidden, else by the engine's overlap check. The sweep is faster on
 //      glyphs, random curves and canvas fills; stroke outlines, whose joins cross themselves
-//      hundreds of times, are faster through the overlap check with their inside capsules.
+//      hundreds of times, are faster through the overlap check with their inside capsules, and
+//      map features with their hidden pixels (FillOptions::hidden) too.
 //   2. The box: the shape's transformed control bounds inside the target, in whole pixels. The
 //      edge builder (edge_builder.hpp) flattens the path into edges local to it, clipping them to
 //      it unless the control points already lie inside.
