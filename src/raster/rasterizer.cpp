@@ -133,6 +133,10 @@ struct Rasterizer::Impl {
         engine.trim(kMaxSpareEdges);
         sweep.trim(kMaxSpareEdges);
     }
+    // Fills the box of one dense buffer (bw x bh cells at (ox, oy)) by the winding sweep; false,
+    // with nothing delivered, when the sweep gives up (too many crossings for its budget).
+    bool fill_swept(const Path& path, const Affine& local, const FillOptions& opts, bool inside, int ox, int oy, int bw,
+                    int bh, SpanSink& sink, RasterStats& stats);
     // Fills the box of bw x bh cells at (ox, oy) band by band from `edges`.
     void run_bands(const FillOptions& opts, int ox, int oy, int bw, int bh, SpanSink& sink, RasterStats& stats);
 };
@@ -218,22 +222,10 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opti
     }
     const Affine local = Affine::translate(-ox, -oy) * m;
     if ((fx1 - fx0) * (fy1 - fy0) <= static_cast<double>(kMaxStripCells)) {
-        if (opts.exact_overlaps && opts.winding_sweep && opts.inside.empty() && !opts.hidden) {
-            raster::WindingSweep& sweep = impl_->sweep;
-            sweep.begin(current_limits().flattened_segments);
-            raster::build_edges(path, local, opts.tolerance, inside, bw, bh, sweep);
-            const std::size_t budget = kSweepWorkPerEdge * sweep.edges() + kSweepWorkBase;
-            raster::Engine& d = impl_->engine;
-            d.begin(bw, bh, false);
-            if (sweep.run(opts.rule, budget, d)) {
-                d.finish(FillRule::NonZero, ox, oy, sink, stats_);
-                stats_.segments = sweep.edges();
-                stats_.swept = true;
-                return;
-            }
-            // Too many crossings for the sweep: the overlap check, on the edges flattened again.
-        }
-        // The box fits one dense buffer: edges go into the engine as the flattener makes them.
+        const bool sweep = opts.exact_overlaps && opts.winding_sweep && opts.inside.empty() && !opts.hidden;
+        if (sweep && impl_->fill_swept(path, local, opts, inside, ox, oy, bw, bh, sink, stats_)) return;
+        // The box fits one dense buffer: edges go into the engine as the flattener makes them (after
+        // a sweep that gave up, flattened again for the overlap check).
         raster::Engine& d = impl_->engine;
         d.begin(bw, bh, opts.exact_overlaps);
         raster::build_edges(path, local, opts.tolerance, inside, bw, bh, d);
@@ -260,6 +252,19 @@ void Rasterizer::fill(const Polyline& poly, const FillOptions& opts, const IRect
         begin = end;
     }
     fill(p, Affine{}, opts, clip, sink);
+}
+
+bool Rasterizer::Impl::fill_swept(const Path& path, const Affine& local, const FillOptions& opts, bool inside, int ox,
+                                  int oy, int bw, int bh, SpanSink& sink, RasterStats& stats) {
+    sweep.begin(current_limits().flattened_segments);
+    raster::build_edges(path, local, opts.tolerance, inside, bw, bh, sweep);
+    engine.begin(bw, bh, false);
+    if (!sweep.run(opts.rule, kSweepWorkPerEdge * sweep.edges() + kSweepWorkBase, engine)) return false;
+    // The kept edges wind 0 and 1 only, so the nonzero rule renders either rule's region.
+    engine.finish(FillRule::NonZero, ox, oy, sink, stats);
+    stats.segments = sweep.edges();
+    stats.swept = true;
+    return true;
 }
 
 void Rasterizer::Impl::run_bands(const FillOptions& opts, int ox, int oy, int bw, int bh, SpanSink& sink,

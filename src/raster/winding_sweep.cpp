@@ -89,82 +89,97 @@ double WindingSweep::first_crossing(const Active& a, const Active& b, double y, 
     return end;
 }
 
-bool WindingSweep::run(FillRule rule, std::size_t budget, Engine& out) {
-    close_chain();
-    const std::size_t m = chains_.size();
-    if (m == 0) return true;
-    order_.clear();
-    for (std::uint32_t c = 0; c < m; ++c) order_.emplace_back(pts_[chains_[c].first].y, c);
-    std::sort(order_.begin(), order_.end());
-    active_.clear();
-    std::size_t work = 0, next_top = 0;
-    double y = order_[0].first;
-    constexpr double kNone = std::numeric_limits<double>::infinity();
-    while (true) {
-        for (; next_top < m && order_[next_top].first <= y; ++next_top) {
-            const Chain& c = chains_[order_[next_top].second];
-            active_.push_back({pts_[c.first].x, slope(c.first), pts_[c.last].y, y, c.first, c.first, c.last, c.xmin,
-                               c.xmax, c.dir, 0});
+[[gnu::always_inline]] inline void WindingSweep::enter(double y) {
+    for (; next_top_ < order_.size() && order_[next_top_].first <= y; ++next_top_) {
+        const Chain& c = chains_[order_[next_top_].second];
+        active_.push_back(
+            {pts_[c.first].x, slope(c.first), pts_[c.last].y, y, c.first, c.first, c.last, c.xmin, c.xmax, c.dir, 0});
+    }
+}
+
+[[gnu::always_inline]] inline double WindingSweep::strip_end(double y, double next, std::size_t& work) {
+    // Insertion sort: the order of the strip before is nearly this one.
+    for (std::size_t i = 1; i < active_.size(); ++i) {
+        if (!before(active_[i], active_[i - 1])) continue;
+        const Active a = active_[i];
+        std::size_t j = i;
+        for (; j > 0 && before(a, active_[j - 1]); --j) active_[j] = active_[j - 1];
+        active_[j] = a;
+    }
+    for (const Active& a : active_) next = std::min(next, a.bottom);
+    for (std::size_t i = 0; i + 1 < active_.size(); ++i)
+        next = first_crossing(active_[i], active_[i + 1], y, next, work);
+    work += active_.size();
+    return next;
+}
+
+[[gnu::always_inline]] inline void WindingSweep::choose(FillRule rule, double y, Engine& out) {
+    // Left to right with the running winding number: a chain bounds the filled region where the
+    // number changes between zero and nonzero (nonzero rule), or always (even-odd). Kept chains
+    // run down where the region starts and up where it ends, so every run of it winds +1.
+    int w = 0;
+    std::int8_t side = 1;
+    for (Active& a : active_) {
+        std::int8_t keep;
+        if (rule == FillRule::NonZero) {
+            const int was = w;
+            w += a.dir;
+            keep = was == 0 ? 1 : (w == 0 ? -1 : 0);
+        } else {
+            keep = side;
+            side = static_cast<std::int8_t>(-side);
         }
-        if (active_.empty()) {
-            if (next_top == m) return true;
-            y = order_[next_top].first;
+        if (keep == a.keep) continue;
+        flush(a, y, out);
+        a.keep = keep;
+        a.ys = y;
+        a.seg_s = a.seg;
+    }
+}
+
+[[gnu::always_inline]] inline void WindingSweep::advance(double y, Engine& out) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < active_.size(); ++i) {
+        const Active& a = active_[i];
+        if (a.bottom <= y) {
+            flush(a, a.bottom, out);
             continue;
         }
-        double next = next_top < m ? order_[next_top].first : kNone;
-        for (const Active& a : active_) next = std::min(next, a.bottom);
-        // Insertion sort: the order of the strip before is nearly this one.
-        for (std::size_t i = 1; i < active_.size(); ++i) {
-            if (!before(active_[i], active_[i - 1])) continue;
-            const Active a = active_[i];
-            std::size_t j = i;
-            for (; j > 0 && before(a, active_[j - 1]); --j) active_[j] = active_[j - 1];
-            active_[j] = a;
+        std::uint32_t s = a.seg;
+        while (pts_[s + 1].y <= y) ++s;
+        // Copy first, then set x: writing x before copying the whole record stalls the copy.
+        if (kept != i) active_[kept] = a;
+        Active& k = active_[kept++];
+        k.seg = s;
+        k.x = x_on(s, y);
+        k.k = slope(s);
+    }
+    active_.resize(kept);
+}
+
+bool WindingSweep::run(FillRule rule, std::size_t budget, Engine& out) {
+    close_chain();
+    if (chains_.empty()) return true;
+    order_.clear();
+    for (std::uint32_t c = 0; c < chains_.size(); ++c) order_.emplace_back(pts_[chains_[c].first].y, c);
+    std::sort(order_.begin(), order_.end());
+    active_.clear();
+    next_top_ = 0;
+    std::size_t work = 0;
+    double y = order_[0].first;
+    while (true) {
+        enter(y);
+        if (active_.empty()) {
+            if (next_top_ == order_.size()) return true;
+            y = order_[next_top_].first;
+            continue;
         }
-        // The strip ends at the first crossing of neighbours.
-        for (std::size_t i = 0; i + 1 < active_.size(); ++i)
-            next = first_crossing(active_[i], active_[i + 1], y, next, work);
-        work += active_.size();
+        const double top =
+            next_top_ < order_.size() ? order_[next_top_].first : std::numeric_limits<double>::infinity();
+        const double next = strip_end(y, top, work);
         if (work > budget || !(next > y)) return false;
-        // Left to right with the running winding number: a chain bounds the filled region where the
-        // number changes between zero and nonzero (nonzero rule), or always (even-odd). Kept chains
-        // run down where the region starts and up where it ends, so every run of it winds +1.
-        int w = 0;
-        std::int8_t side = 1;
-        for (Active& a : active_) {
-            std::int8_t keep;
-            if (rule == FillRule::NonZero) {
-                const int was = w;
-                w += a.dir;
-                keep = was == 0 ? 1 : (w == 0 ? -1 : 0);
-            } else {
-                keep = side;
-                side = static_cast<std::int8_t>(-side);
-            }
-            if (keep != a.keep) {
-                flush(a, y, out);
-                a.keep = keep;
-                a.ys = y;
-                a.seg_s = a.seg;
-            }
-        }
-        // To the next strip: the chains that end here leave, the others move to its top.
-        std::size_t kept = 0;
-        for (std::size_t i = 0; i < active_.size(); ++i) {
-            Active& a = active_[i];
-            if (a.bottom <= next) {
-                flush(a, a.bottom, out);
-                continue;
-            }
-            std::uint32_t s = a.seg;
-            while (pts_[s + 1].y <= next) ++s;
-            if (kept != i) active_[kept] = a;
-            Active& k = active_[kept++];
-            k.seg = s;
-            k.x = x_on(s, next);
-            k.k = slope(s);
-        }
-        active_.resize(kept);
+        choose(rule, y, out);
+        advance(next, out);
         y = next;
     }
 }

@@ -7,14 +7,15 @@
 // How: the edges are joined into chains (runs of a contour going the same way, up or down). A
 // sweep down the shape keeps the chains that span the current horizontal strip sorted by x. A
 // strip ends at the next chain's top or bottom or at the first crossing of two neighbours, so the
-// order holds inside it, and the winding number between two neighbours is constant there. Walking the
-// strip's edges left to right with the running winding number says which of them bound the filled
-// region: those where it changes between zero and nonzero (nonzero rule), or every one (even-odd).
-// The others (inside an overlap) are dropped; a bounding chain is kept for as many strips as it
-// stays bounding. Horizontal edges bound no strip and are dropped.
+// order holds inside it, and the winding number between two neighbours is constant there.
+// Walking the strip's chains left to right with the running winding number says which of them
+// bound the filled region: those where it changes between zero and nonzero (nonzero rule), or
+// every one (even-odd). The others (inside an overlap) are dropped; a bounding chain is kept for
+// as many strips as it stays bounding. Horizontal edges bound no strip and are dropped.
 //
-// Cost: the edges, plus the strips times the chains spanning them. A shape with many crossings (each one a strip)
-// may cost more than the per-cell check, so the sweep stops at a budget and says so.
+// Cost: the edges, plus the strips times the chains spanning them. A shape with many crossings
+// (each one a strip) may cost more than the per-cell check, so the sweep stops at a budget and
+// says so.
 #pragma once
 
 #include <cstdint>
@@ -61,8 +62,9 @@ private:
         double ys;            // where the current kept piece starts
         std::uint32_t seg;    // segment (pts_[seg], pts_[seg + 1]) holding the strip's top
         std::uint32_t seg_s;  // segment holding ys
-        std::uint32_t last;   // the chain's last point
-        double xmin, xmax;    // the chain's x range
+        // Copied from the chain: the crossing search reads them for every pair of neighbours.
+        std::uint32_t last;  // the chain's last point
+        double xmin, xmax;   // the chain's x range
         std::int8_t dir;
         std::int8_t keep;  // current piece: +1 kept running down, -1 kept running up, 0 dropped
     };
@@ -75,6 +77,15 @@ private:
     }
     double slope(std::uint32_t seg) const { return (pts_[seg + 1].x - pts_[seg].x) / (pts_[seg + 1].y - pts_[seg].y); }
     void flush(const Active& a, double y, Engine& out) const;
+    // Adds the chains whose top is y to active_.
+    void enter(double y);
+    // Sorts active_ at the strip's top y and returns where the strip ends: the first of `next`
+    // and the crossings of neighbours.
+    double strip_end(double y, double next, std::size_t& work);
+    // Keeps the chains that bound the filled region in the strip from y, drops the others.
+    void choose(FillRule rule, double y, Engine& out);
+    // Moves the chains to the next strip's top y; the ones ending there are flushed and leave.
+    void advance(double y, Engine& out);
     // The first y in (y, end] where chain a (left of b at y) is right of b, or `end`; the
     // crossing's y when there is one. Counts the points it passes in `work`.
     double first_crossing(const Active& a, const Active& b, double y, double end, std::size_t& work) const;
@@ -84,6 +95,7 @@ private:
     bool open_ = false;  // the last chain takes more points
     std::size_t count_ = 0, max_edges_ = 0;
     std::vector<std::pair<double, std::uint32_t>> order_;  // chains' tops, in order
+    std::size_t next_top_ = 0;                             // the first of order_ not entered yet
     std::vector<Active> active_;                           // by x at the strip's top
 };
 
