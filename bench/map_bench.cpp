@@ -1,7 +1,9 @@
 // bench/map_bench: filling a world map, casteljau side by side with AGG and Cairo in one process.
 //
-// Usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME]
+// Usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME] [--profile render_map|agg|both]
 //   (FILE: GeoJSON or TopoJSON; bench/setup_map_data.sh installs world-atlas 10m from npm.)
+//   --profile runs one case alone, render_map's fill or AGG's, for a profiler; "both" times the
+//   two in turn in one process.
 // The map is read and projected (equirectangular, --bbox -180,-90,180,90 onto width x width/2)
 // once, outside the timed region, into pixel-space polygons per feature (antimeridian split with
 // casteljau's public split_ring_at_antimeridian). Timed, per round (thread CPU time, best of
@@ -18,7 +20,9 @@
 //   render_map:   casteljau's whole map stage from MapData (projection + paths + seamless + strokes),
 //                 into a new Pixmap and into one kept across the rounds (cleared by each render).
 //   threads:      render_map fill on 1 and 2 threads, wall time, into a new and into a kept Pixmap.
-// Prints peak RSS at the end.
+// Prints peak RSS at the end. Exits 1 when the fills with a topology verdict differ from the
+// exact cells, or the borders stroked once from the union of every ring's stroke, by more than
+// 1/255 at a pixel.
 #include <agg_conv_stroke.h>
 #include <agg_path_storage.h>
 #include <agg_pixfmt_rgba.h>
@@ -37,6 +41,7 @@
 #include <cstring>
 #include <exception>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,6 +71,96 @@ double best_of(int rounds, const std::function<void()>& f) {
 
 }  // namespace
 
+// render_map's style and options for the timed cases: a grey fill, the whole world, one thread
+// (thread CPU time counts the calling thread only).
+MapStyle grey_fill() {
+    MapStyle style;
+    style.layers[0].fill = Color::rgba(200, 200, 200);
+    return style;
+}
+
+MapOptions world_options(int w, int h) {
+    MapOptions mo;
+    mo.width = w;
+    mo.height = h;
+    mo.bbox = Rect{-180, -90, 180, 90};
+    mo.threads = 1;
+    return mo;
+}
+
+// AGG 2.6 drawing the features: every ring of a feature in one path, nonzero, into one RGBA
+// buffer that each render clears first.
+class AggMap {
+public:
+    AggMap(const std::vector<Rings>& features, int w, int h)
+        : buf_(static_cast<std::size_t>(w) * h * 4),
+          rb_(buf_.data(), w, h, w * 4),
+          pf_(rb_),
+          ren_(pf_),
+          paths_(features.size()) {
+        for (std::size_t i = 0; i < features.size(); ++i)
+            for (const auto& r : features[i]) {
+                paths_[i].move_to(r[0].x, r[0].y);
+                for (std::size_t k = 1; k < r.size(); ++k) paths_[i].line_to(r[k].x, r[k].y);
+                paths_[i].close_polygon();
+            }
+    }
+    // Every feature filled opaque black.
+    void fill() {
+        ren_.clear(agg::rgba8(0, 0, 0, 0));
+        for (auto& p : paths_) draw(p, agg::rgba8(0, 0, 0, 255));
+    }
+    // Every feature filled grey, then every ring stroked 0.8 px wide with round joins and caps.
+    void fill_stroke() {
+        ren_.clear(agg::rgba8(0, 0, 0, 0));
+        for (auto& p : paths_) draw(p, agg::rgba8(200, 200, 200, 255));
+        for (auto& p : paths_) {
+            agg::conv_stroke<agg::path_storage> st(p);
+            st.width(0.8);
+            st.line_join(agg::round_join);
+            st.line_cap(agg::round_cap);
+            draw(st, agg::rgba8(0, 0, 0, 255));
+        }
+    }
+
+private:
+    template <class Source>
+    void draw(Source& src, agg::rgba8 color) {
+        ras_.reset();
+        ras_.filling_rule(agg::fill_non_zero);
+        ras_.add_path(src);
+        agg::render_scanlines_aa_solid(ras_, sl_, ren_, color);
+    }
+
+    std::vector<std::uint8_t> buf_;
+    agg::rendering_buffer rb_;
+    agg::pixfmt_rgba32_pre pf_;
+    agg::renderer_base<agg::pixfmt_rgba32_pre> ren_;
+    agg::rasterizer_scanline_aa<> ras_;
+    agg::scanline_p8 sl_;
+    std::vector<agg::path_storage> paths_;
+};
+
+// --profile: one case alone, for a profiler (bench/stage_profile.py): render_map's fill or AGG's;
+// "both" times the two in turn, round by round, so that their times come from one process.
+int run_profile(const std::string& name, const MapData& data, const std::vector<Rings>& features, int w, int h,
+                int rounds) {
+    const MapStyle style = grey_fill();
+    const MapOptions mo = world_options(w, h);
+    const bool agg = name != "render_map", ours = name != "agg";
+    std::optional<AggMap> agg_map;
+    if (agg) agg_map.emplace(features, w, h);
+    double best_ours = 1e300, best_agg = 1e300;
+    for (int r = 0; r < rounds; ++r) {
+        if (ours)
+            best_ours = std::min(best_ours, best_of(1, [&] { (void)render_map(data, MapProjection{}, style, mo); }));
+        if (agg) best_agg = std::min(best_agg, best_of(1, [&] { agg_map->fill(); }));
+    }
+    if (ours) std::printf("profile render_map fill: best of %d rounds %.2f ms\n", rounds, best_ours * 1e3);
+    if (agg) std::printf("profile agg fill: best of %d rounds %.2f ms\n", rounds, best_agg * 1e3);
+    return 0;
+}
+
 int run(int argc, char** argv);
 
 int main(int argc, char** argv) {
@@ -79,12 +174,14 @@ int main(int argc, char** argv) {
 
 int run(int argc, char** argv) {
     auto usage = [] {
-        std::fprintf(stderr, "usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME]\n");
+        std::fprintf(
+            stderr,
+            "usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME] [--profile render_map|agg|both]\n");
         return 2;
     };
     if (argc < 2 || argv[1][0] == '-') return usage();
     int W = 4096, rounds = 5;
-    std::string layer;
+    std::string layer, profile;
     for (int i = 2; i < argc; i += 2) {
         if (i + 1 >= argc) return usage();
         if (!std::strcmp(argv[i], "--width"))
@@ -93,10 +190,13 @@ int run(int argc, char** argv) {
             rounds = std::atoi(argv[i + 1]);
         else if (!std::strcmp(argv[i], "--layer"))
             layer = argv[i + 1];
+        else if (!std::strcmp(argv[i], "--profile"))
+            profile = argv[i + 1];
         else
             return usage();
     }
-    if (W < 2 || rounds < 1) return usage();
+    if (W < 2 || rounds < 1 || !(profile.empty() || profile == "render_map" || profile == "agg" || profile == "both"))
+        return usage();
     const int H = W / 2;
     const auto bytes = read_file(argv[1]);
     const MapData data =
@@ -130,6 +230,8 @@ int run(int argc, char** argv) {
     }
     std::printf("map_bench: %s, %zu features, %zu vertices, %d x %d, best of %d rounds (thread CPU time)\n", argv[1],
                 features.size(), vertices, W, H, rounds);
+
+    if (!profile.empty()) return run_profile(profile, data, features, W, H, rounds);
 
     Pixmap pm(W, H);
     const double t_sep = best_of(rounds, [&] {
@@ -211,47 +313,9 @@ int run(int argc, char** argv) {
             once_max_diff = std::max(once_max_diff, std::abs(int(pm.pixel(x, y).a) - int(pm_union.pixel(x, y).a)));
 
     // AGG.
-    std::vector<std::uint8_t> agg_buf(static_cast<std::size_t>(W) * H * 4);
-    agg::rendering_buffer rb(agg_buf.data(), W, H, W * 4);
-    agg::pixfmt_rgba32_pre pf(rb);
-    agg::renderer_base<agg::pixfmt_rgba32_pre> ren(pf);
-    agg::rasterizer_scanline_aa<> ras;
-    agg::scanline_p8 sl;
-    std::vector<agg::path_storage> agg_paths(features.size());
-    for (std::size_t i = 0; i < features.size(); ++i)
-        for (const auto& r : features[i]) {
-            agg_paths[i].move_to(r[0].x, r[0].y);
-            for (std::size_t k = 1; k < r.size(); ++k) agg_paths[i].line_to(r[k].x, r[k].y);
-            agg_paths[i].close_polygon();
-        }
-    const double t_agg = best_of(rounds, [&] {
-        ren.clear(agg::rgba8(0, 0, 0, 0));
-        for (auto& p : agg_paths) {
-            ras.reset();
-            ras.filling_rule(agg::fill_non_zero);
-            ras.add_path(p);
-            agg::render_scanlines_aa_solid(ras, sl, ren, agg::rgba8(0, 0, 0, 255));
-        }
-    });
-    const double t_agg_stroke = best_of(rounds, [&] {
-        ren.clear(agg::rgba8(0, 0, 0, 0));
-        for (auto& p : agg_paths) {
-            ras.reset();
-            ras.filling_rule(agg::fill_non_zero);
-            ras.add_path(p);
-            agg::render_scanlines_aa_solid(ras, sl, ren, agg::rgba8(200, 200, 200, 255));
-        }
-        for (auto& p : agg_paths) {
-            agg::conv_stroke<agg::path_storage> st(p);
-            st.width(0.8);
-            st.line_join(agg::round_join);
-            st.line_cap(agg::round_cap);
-            ras.reset();
-            ras.filling_rule(agg::fill_non_zero);
-            ras.add_path(st);
-            agg::render_scanlines_aa_solid(ras, sl, ren, agg::rgba8(0, 0, 0, 255));
-        }
-    });
+    AggMap agg_map(features, W, H);
+    const double t_agg = best_of(rounds, [&] { agg_map.fill(); });
+    const double t_agg_stroke = best_of(rounds, [&] { agg_map.fill_stroke(); });
 
     // Cairo.
     cairo_surface_t* surf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, W, H);
@@ -296,13 +360,8 @@ int run(int argc, char** argv) {
     cairo_surface_destroy(surf);
 
     // The whole map stage from MapData.
-    MapStyle style;
-    style.layers[0].fill = Color::rgba(200, 200, 200);
-    MapOptions mo;
-    mo.width = W;
-    mo.height = H;
-    mo.bbox = Rect{-180, -90, 180, 90};
-    mo.threads = 1;  // thread CPU time counts the calling thread only
+    MapStyle style = grey_fill();
+    MapOptions mo = world_options(W, H);
     const MapProjection eq;
     const double t_map = best_of(rounds, [&] { (void)render_map(data, eq, style, mo); });
     // Threads: wall time (steady clock), best of the rounds, 1 and 2 threads alternating; into a
@@ -367,5 +426,11 @@ int run(int argc, char** argv) {
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
     std::printf("peak RSS: %.1f MB (input file %.1f MB)\n", ru.ru_maxrss / 1024.0, bytes.size() / 1e6);
+    // Both comparisons are of exact renders of the same region: more than a rounding step apart
+    // means one of them is broken, and its time is not worth reporting.
+    if (verdict_max_diff > 1 || once_max_diff > 1) {
+        std::fprintf(stderr, "map_bench: error: renders that must agree differ by more than 1/255\n");
+        return 1;
+    }
     return 0;
 }
