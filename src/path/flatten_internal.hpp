@@ -239,6 +239,9 @@ struct Flattener {
         while (n > 0) {
             const K q = stack[--n];
             if (q.depth >= limits::kMaxFlattenDepth || !(bound2_conic(q.p0, q.p1, q.p2, q.w) > tol2)) {
+                // A sink that must not see a point far outside the control points (which an
+                // extreme weight can make, or NaN) checks each one the halving made.
+                if constexpr (requires { Sink::check_rational(q.p2); }) Sink::check_rational(q.p2);
                 emit(q.p2);
                 continue;
             }
@@ -262,6 +265,8 @@ Rect check_flatten_input(const Path& path, const Affine& m, double tolerance);
 
 // Flattens `path` mapped by `m` into `sink`, which receives begin(p) for each contour start,
 // point(p) for each following polyline vertex, mark_closed() for an explicit close and end().
+// A sink may also define a static check_rational(Point), called with every point the halving of a
+// conic makes (the only points that can fall outside the control points' hull), before point().
 //
 // `balanced`: quadratic pieces are moved off the curve so that they lose no area (see
 // Flattener::quad), still within `tolerance` of it. Right for filling; the public flatten(), whose

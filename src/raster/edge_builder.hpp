@@ -77,12 +77,10 @@ struct EdgeSink {
 
     void begin(Point p) {
         end();
-        check(p);
         start = cur = p;
         open = true;
     }
     [[gnu::always_inline]] inline void point(Point p) {
-        check(p);
         if constexpr (kClip)
             add_clipped(cur, p);
         else
@@ -101,9 +99,11 @@ struct EdgeSink {
 
     void add_clipped(Point p, Point q) { clip_edge(W, H, p, q, out); }
 
-    // The control points were checked before flattening, but a conic with an extreme weight can
-    // still put a flattened point at NaN or far beyond them; the walk must never see one.
-    [[gnu::always_inline]] static inline void check(Point p) {
+    // The control points were checked before flattening, and polynomial curves flatten inside
+    // their hull; but a conic with an extreme weight can still put a flattened point at NaN or
+    // far beyond its control points, and the walk must never see one. The flattener calls this
+    // for every point it makes by halving a conic.
+    static void check_rational(Point p) {
         constexpr double kFar = 4 * limits::kMaxCoordinate;
         if (!(std::fabs(p.x) <= kFar && std::fabs(p.y) <= kFar)) [[unlikely]]
             throw Error(ErrorKind::InvalidData,

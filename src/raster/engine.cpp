@@ -131,6 +131,7 @@ void Engine::trim(std::size_t records) {
 void Engine::begin(int w, int h, bool track) {
     w_ = w;
     h_ = h;
+    fh_ = h;
     stride_ = static_cast<std::size_t>(w) + 2;
     track_ = track;
     const std::size_t cells = stride_ * static_cast<std::size_t>(h);

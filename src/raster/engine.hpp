@@ -59,7 +59,7 @@ public:
     // Starts a shape of w x h cells. `track`: record visits for the exact overlap check (the cell
     // walk in double); without it narrow shapes take the float row vectors.
     void begin(int w, int h, bool track);
-    // One straight edge in cell coordinates (clamped to [0, w] x [0, h]).
+    // One straight edge in cell coordinates, inside [0, w] x [0, h] up to rounding (y is held at h).
     inline void push(double x0, double y0, double x1, double y1);
     // The current contour is complete (its closing edge was pushed).
     void contour_end();
@@ -109,6 +109,7 @@ private:
     struct ManyRuns;  // harmless_many's steps (engine.cpp)
 
     int w_ = 0, h_ = 0;
+    double fh_ = 0;  // h_, for push()'s clamping
     std::size_t stride_ = 0;
     bool track_ = false;
     // Narrow shapes (at most kRowVectorMax SIMD vectors and kRowVectorMaxPixels per row) without
@@ -191,8 +192,9 @@ private:
     if (h != 0) add_cand(cell);
 }
 
-// floor and ceil for the walk's coordinates, which push() clamps to [0, w] x [0, h]: truncation is
-// floor for v >= 0 (no compare-and-adjust on the floor side).
+// floor and ceil for the walk's coordinates, which lie in [0, w] x [0, h] up to rounding (push()):
+// truncation is floor for v >= 0 (no compare-and-adjust on the floor side), and takes a rounding
+// step below 0 to cell or row 0.
 [[gnu::always_inline]] inline int floor_nn(double v) { return static_cast<int>(v); }
 [[gnu::always_inline]] inline int ceil_nn(double v) {
     const int i = static_cast<int>(v);
@@ -276,11 +278,12 @@ template <bool kTrack, class T>
 }
 
 inline void Engine::push(double x0, double y0, double x1, double y1) {
-    const double W = w_, H = h_;
-    x0 = std::clamp(x0, 0.0, W);
-    x1 = std::clamp(x1, 0.0, W);
-    y0 = std::clamp(y0, 0.0, H);
-    y1 = std::clamp(y1, 0.0, H);
+    // Coordinates arrive inside [0, w] x [0, h] up to rounding: the edge builder clips them, or
+    // the shape's control points lie inside the box. One rounding step below 0 truncates to cell
+    // or row 0, and one past w lands in the row's spill cells, so only y is held at h, so that no
+    // piece falls in a row past the last. (v < h ? v : h compiles to one min instruction.)
+    y0 = y0 < fh_ ? y0 : fh_;
+    y1 = y1 < fh_ ? y1 : fh_;
     if (x0 == x1 && y0 == y1) return;
     if (++count_ > max_edges_)
         throw Error(ErrorKind::Limit, "path too complex: more than " + std::to_string(max_edges_) + " edges");

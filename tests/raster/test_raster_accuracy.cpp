@@ -222,6 +222,33 @@ TEST_CASE("accuracy: polygons at huge offsets translated back by the transform",
     WARN("huge offsets: " << worst.text());
 }
 
+TEST_CASE("accuracy: polygons whose corners a transform puts on whole pixels, the box's sides", "[accuracy]") {
+    // The shape's box comes from its transformed control points, its edges from the transform
+    // composed with the box's offset: the two round differently, so a corner on the box's side can
+    // reach the engine a rounding step outside the box (below 0, or past its width or height).
+    Rasterizer r;
+    Worst worst;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> scale(0.3, 3.0), shift(-40.0, 40.0), frac(0.0, 1.0);
+    for (int i = 0; i < 1000; ++i) {
+        const double s = scale(rng), ex = shift(rng), ey = shift(rng);
+        // A user coordinate that the transform maps to pixel k, up to rounding.
+        auto ux = [&](double k) { return (k - ex) / s; };
+        auto uy = [&](double k) { return (k - ey) / s; };
+        const double x0 = std::floor(4 * frac(rng)), y0 = std::floor(4 * frac(rng));
+        const double x1 = x0 + 1 + std::floor(7 * frac(rng)), y1 = y0 + 1 + std::floor(7 * frac(rng));
+        const Contour box{{ux(x0), uy(y0)}, {ux(x1), uy(y0)}, {ux(x1), uy(y1)}, {ux(x0), uy(y1)}};
+        const Contour tri{{ux(x0), uy(y1)}, {ux(x1), uy(y0)}, {ux(x1), uy(y1)}};
+        const Affine m{s, 0, 0, s, ex, ey};
+        FillOptions o;
+        for (const Contour& c : {box, tri}) {
+            const std::string what = "scale " + std::to_string(s) + " #" + std::to_string(i);
+            worst.add(check_polygons(r, {c}, m, o, {0, 0, 12, 12}, what), what);
+        }
+    }
+    WARN("corners on whole pixels: " << worst.text());
+}
+
 TEST_CASE("accuracy: polygons partly outside the target on every side", "[accuracy]") {
     Rasterizer r;
     Worst worst;
