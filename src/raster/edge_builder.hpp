@@ -6,7 +6,8 @@
 // the box are dropped, parts left of it are moved onto its left side (only their height matters
 // there: they add cover to column 0), parts right of it are dropped (pixels only see edges to their
 // left). So coordinates of any finite size are safe and cell coordinates never exceed the box.
-// Every contour is closed (fills close contours implicitly).
+// Every contour is closed (fills close contours implicitly). A shape inside its box reaches an
+// engine that takes polylines (Engine::push_polyline) a batch of points at a time.
 #pragma once
 
 #include <algorithm>
@@ -111,14 +112,62 @@ struct EdgeSink {
     }
 };
 
+// Receives the flattened points of a shape inside its box and hands them to `out` a polyline at a
+// time (out.push_polyline(xy, n): the edges between n consecutive points, x and y interleaved), so
+// that the engine's per-edge work runs in one loop instead of one call per edge.
+template <class Out>
+struct PolylineSink {
+    static constexpr std::size_t kBatch = 64;  // points per call
+    Out& out;
+    double start_x = 0, start_y = 0;
+    double xy[2 * kBatch];  // not initialised: only [0, 2 n) is read
+    std::size_t n = 0;
+    bool open = false;
+
+    explicit PolylineSink(Out& o) : out(o) {}
+    void begin(Point p) {
+        end();
+        start_x = xy[0] = p.x;
+        start_y = xy[1] = p.y;
+        n = 1;
+        open = true;
+    }
+    [[gnu::always_inline]] inline void point(Point p) {
+        xy[2 * n] = p.x;
+        xy[2 * n + 1] = p.y;
+        if (++n == kBatch) [[unlikely]] {
+            out.push_polyline(xy, n);
+            xy[0] = xy[2 * n - 2];
+            xy[1] = xy[2 * n - 1];
+            n = 1;
+        }
+    }
+    void mark_closed() {}
+    void end() {
+        if (!open) return;
+        point({start_x, start_y});  // fills close every contour
+        if (n > 1) out.push_polyline(xy, n);
+        out.contour_end();
+        n = 0;
+        open = false;
+    }
+    static void check_rational(Point p) { EdgeSink<false, Out>::check_rational(p); }
+};
+
 // Flattens `path` mapped by `local` (path -> the box's cell coordinates) into `out`. `inside`: the
 // transformed control points lie inside the box, so no clipping is needed.
 template <class Out>
 void build_edges(const Path& path, const Affine& local, double tolerance, bool inside, int w, int h, Out& out) {
     if (inside) {
-        EdgeSink<false, Out> es{out};
-        flatten_into(path, local, tolerance, nullptr, es, true);
-        es.end();
+        if constexpr (requires(const double* xy) { out.push_polyline(xy, std::size_t{2}); }) {
+            PolylineSink<Out> ps(out);
+            flatten_into(path, local, tolerance, nullptr, ps, true);
+            ps.end();
+        } else {
+            EdgeSink<false, Out> es{out};
+            flatten_into(path, local, tolerance, nullptr, es, true);
+            es.end();
+        }
     } else {
         // Curves wholly outside the box (with a one-cell margin) become chords.
         const Rect cull{-1.0, -1.0, w + 1.0, h + 1.0};

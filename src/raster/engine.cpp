@@ -128,6 +128,19 @@ void Engine::trim(std::size_t records) {
     release(exact_ids_);
 }
 
+void Engine::push_polyline(const double* xy, std::size_t n) {
+    if (!vec_) {
+        for (std::size_t i = 1; i < n; ++i) push(xy[2 * i - 2], xy[2 * i - 1], xy[2 * i], xy[2 * i + 1]);
+        return;
+    }
+    // The row vectors (most glyphs): push()'s steps with its choice of walk made once.
+    for (std::size_t i = 1; i < n; ++i) {
+        const double x0 = xy[2 * i - 2], x1 = xy[2 * i];
+        double y0 = xy[2 * i - 1], y1 = xy[2 * i + 1];
+        if (admit(x0, y0, x1, y1)) list_pieces(x0, y0, x1, y1);
+    }
+}
+
 void Engine::begin(int w, int h, bool track) {
     w_ = w;
     h_ = h;

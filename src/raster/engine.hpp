@@ -61,6 +61,8 @@ public:
     void begin(int w, int h, bool track);
     // One straight edge in cell coordinates, inside [0, w] x [0, h] up to rounding (y is held at h).
     inline void push(double x0, double y0, double x1, double y1);
+    // The edges between n consecutive points (x and y interleaved), as push() for each.
+    void push_polyline(const double* xy, std::size_t n);
     // The current contour is complete (its closing edge was pushed).
     void contour_end();
     // Resolves the marked cells and hands the rows to the sink, at pixel offset (ox, oy). Marked
@@ -91,6 +93,7 @@ private:
     T* cells();
     // The row vectors' walk: lists the edge's pieces.
     inline void list_pieces(double x0, double y0, double x1, double y1);
+    inline bool admit(double x0, double& y0, double x1, double& y1);
     inline void touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits);
     bool harmless_two(const Visit& a, const Visit& b, int col, int row);
     bool run_ends(const Visit& v, int col, int row, double& t0, double& t1) const;
@@ -277,16 +280,22 @@ template <bool kTrack, class T>
     }
 }
 
-inline void Engine::push(double x0, double y0, double x1, double y1) {
-    // Coordinates arrive inside [0, w] x [0, h] up to rounding: the edge builder clips them, or
-    // the shape's control points lie inside the box. One rounding step below 0 truncates to cell
-    // or row 0, and one past w lands in the row's spill cells, so only y is held at h, so that no
-    // piece falls in a row past the last. (v < h ? v : h compiles to one min instruction.)
+// push()'s first steps: y held at h, a point-like edge dropped (false), the edge counted against
+// the limit. Coordinates arrive inside [0, w] x [0, h] up to rounding: the edge builder clips
+// them, or the shape's control points lie inside the box. One rounding step below 0 truncates to
+// cell or row 0, and one past w lands in the row's spill cells, so only y is held at h, so that no
+// piece falls in a row past the last. (v < h ? v : h compiles to one min instruction.)
+[[gnu::always_inline]] inline bool Engine::admit(double x0, double& y0, double x1, double& y1) {
     y0 = y0 < fh_ ? y0 : fh_;
     y1 = y1 < fh_ ? y1 : fh_;
-    if (x0 == x1 && y0 == y1) return;
+    if (x0 == x1 && y0 == y1) return false;
     if (++count_ > max_edges_)
         throw Error(ErrorKind::Limit, "path too complex: more than " + std::to_string(max_edges_) + " edges");
+    return true;
+}
+
+inline void Engine::push(double x0, double y0, double x1, double y1) {
+    if (!admit(x0, y0, x1, y1)) return;
     if (track_)
         walk<true>(x0, y0, x1, y1);
     else if (vec_)
