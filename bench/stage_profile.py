@@ -26,7 +26,7 @@ loaded through LD_LIBRARY_PATH). Without it, FreeType's time is one row.
 
 Usage: bench/stage_profile.py [--build build-prof] [--freetype-lib DIR] [--font FILE]
                               [--map bench/data/countries-land-10km.geo.json] [--only glyphs|map]
-                              [--freq 5000] [--verbose]
+                              [--freq 5000] [--verbose] [--self-test]
 """
 import argparse
 import collections
@@ -77,7 +77,8 @@ CASTELJAU_RULES = [
     ("span output (clearing the output, writing rows)", r"SpanSink|BufferSink|memmove|memcpy|memset"),
     ("transform", r"Affine::apply|Affine::operator"),
     ("flattening", r"Flattener|flatten|Path::visit|@.*/path/flatten"),
-    ("edge setup and clipping", r"Engine::push|EdgeSink|EdgeList|clip_edge|Engine::contour_end"),
+    ("edge setup and clipping",
+     r"Engine::push|Engine::admit|EdgeSink|PolylineSink|EdgeList|clip_edge|Engine::contour_end"),
     ("fixed cost per shape (entry checks, limits, buffer set-up)",
      r"Rasterizer::|Engine::begin|Engine::trim|current_limits|check_flatten_input|is_finite|control_bounds|"
      r"simd::chosen|row_vector_lanes|grow_zeroed|LargeBuffer"),
@@ -117,7 +118,7 @@ COMMON_RULES = [
 ]
 UNTIMED_RULES = [
     (UNTIMED, r"bench::Font|GlyphSet|glyph_set|load_glyph|FT_Load|FT_New|FT_Open|read_map_data|read_file|"
-              r"split_ring|simdjson|@.*/freetype/src/(truetype|sfnt|cff|psaux|pshinter|base/ftobjs)|"
+              r"split_ring|simdjson|TT_Load|@.*/src/(truetype|sfnt|cff|psaux|pshinter)/|@.*/src/base/ftobjs|"
               r"^_dl_|^dl_|do_lookup|check_match|_dl_relocate|strchr|^init_|__libc_start|_start@"),
 ]
 SKIP_FRAME = re.compile(r"^(std::|__gnu_cxx::|hwy::|operator new|operator delete)")
@@ -304,6 +305,57 @@ def table(title, unit, columns):
     print("\nTimed samples: %s." % samples)
 
 
+# Inlined chains (innermost first) as addr2line names them, and the stage each must land in: what
+# --self-test checks, so that a rule that stops matching the code it names is caught by ctest.
+SELF_TEST = [
+    ("cas", [("casteljau::raster::floor_nn(double)", "engine.hpp"),
+             ("casteljau::raster::Engine::list_pieces(double, double, double, double)::{lambda(int, double, double,"
+              " double, double)#1}::operator()(int, double, double, double, double) const", "engine.hpp"),
+             ("casteljau::raster::Engine::push(double, double, double, double)", "engine.hpp")],
+     "line integration (an edge's pieces per row or cell)"),
+    ("cas", [("std::min<double>(double const&, double const&)", "stl_algobase.h"),
+             ("casteljau::raster::Engine::admit(double, double&, double, double&)", "engine.hpp")],
+     "edge setup and clipping"),
+    ("cas", [("void casteljau::raster::Engine::walk<true, double>(double, double, double, double)", "engine.hpp")],
+     "overlap handling (winding sweep, overlap check, exact cells)"),
+    ("cas", [("void casteljau::raster::add_cell<float>(float*, int, double, double, double)", "engine.hpp"),
+             ("void casteljau::raster::Engine::walk<false, float>(double, double, double, double)", "engine.hpp")],
+     "accumulation (area and cover into cells)"),
+    ("cas", [("hwy::N_AVX3::Add(hwy::N_AVX3::Vec256<float>, hwy::N_AVX3::Vec256<float>)", "x86_256-inl.h"),
+             ("casteljau::raster::N_AVX3::ScanRange<float>(float*, unsigned char*, int, int, float, "
+              "casteljau::FillRule)", "coverage.cpp")],
+     "sweep (cover sums into coverage)"),
+    ("cas", [("casteljau::raster::WindingSweep::first_crossing(...) const", "winding_sweep.cpp")],
+     "overlap handling (winding sweep, overlap check, exact cells)"),
+    ("cas", [("casteljau::Affine::apply(casteljau::Point) const", "geometry.hpp"),
+             ("void casteljau::Path::visit<casteljau::flatten_detail::Flattener<...>&>(...) const", "path.hpp")],
+     "transform"),
+    ("cas", [("__memmove_avx512_unaligned_erms", "libc.so.6")], "span output (clearing the output, writing rows)"),
+    ("font", [("casteljau::(anonymous namespace)::Classifier::run()", "topology.cpp")], UNTIMED),
+    ("ft", [("gray_set_cell", "ftgrays.c"), ("gray_render_line", "ftgrays.c")],
+     "cell management (finding, allocating, sorting cells)"),
+    ("ft", [("gray_render_line", "ftgrays.c")], "line integration (an edge's pieces per row or cell)"),
+    ("ft", [("gray_hline", "ftgrays.c"), ("gray_sweep", "ftgrays.c")], "sweep (cover sums into coverage)"),
+    ("ft", [("gray_split_conic", "ftgrays.c"), ("gray_render_conic", "ftgrays.c")], "flattening"),
+    ("ft", [("load_truetype_glyph", "/tmp/ft/src/truetype/ttgload.c")], UNTIMED),
+    ("agg", [("agg::rasterizer_cells_aa<agg::cell_aa>::sort_cells()", "agg_rasterizer_cells_aa.h")],
+     "cell management (finding, allocating, sorting cells)"),
+    ("agg", [("bool agg::rasterizer_scanline_aa<...>::sweep_scanline<agg::scanline_p8>(agg::scanline_p8&)",
+              "agg_rasterizer_scanline_aa.h")], "sweep (cover sums into coverage)"),
+]
+
+
+def self_test(rule_sets):
+    failures = 0
+    for key, frames, want in SELF_TEST:
+        got = classify(frames, rule_sets[key])
+        if got != want:
+            failures += 1
+            print("stage_profile: self-test: %s went to %r, not %r" % (frames[0][0], got, want), file=sys.stderr)
+    print("stage_profile: self-test: %d of %d chains in their stage" % (len(SELF_TEST) - failures, len(SELF_TEST)))
+    return 1 if failures else 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build", default="build-prof")
@@ -314,12 +366,15 @@ def main():
     ap.add_argument("--freq", type=int, default=5000)
     ap.add_argument("--passes", type=int, default=0, help="passes over the glyph set (default: by size)")
     ap.add_argument("--verbose", action="store_true")
+    ap.add_argument("--self-test", action="store_true", help="check the rules on known chains, run nothing")
     args = ap.parse_args()
     cas = compile_rules(COMMON_RULES + UNTIMED_RULES + CASTELJAU_RULES)
     font_path = compile_rules(COMMON_RULES + UNTIMED_RULES + [(UNTIMED, r"Classifier|classify_topology")] +
                               CASTELJAU_RULES)
     ft = compile_rules(COMMON_RULES + UNTIMED_RULES + FREETYPE_RULES)
     agg = compile_rules(COMMON_RULES + UNTIMED_RULES + AGG_RULES)
+    if args.self_test:
+        sys.exit(self_test({"cas": cas, "font": font_path, "ft": ft, "agg": agg}))
     env = dict(os.environ)
     ft_env = dict(env)
     if args.freetype_lib:
