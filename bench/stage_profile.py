@@ -147,20 +147,19 @@ def compile_rules(rules):
 
 def classify(frames, rules):
     """frames: [(demangled function, file)], innermost first."""
+
+    def match(func, path):
+        key = strip_args(func) + "@" + path
+        return next((stage for stage, full, rx in rules if rx.search(func if full else key)), None)
+
+    # The innermost frame a rule names, past the standard library's; for a chain of those only,
+    # the outermost frame that one names.
     for func, path in frames:
-        if SKIP_FRAME.search(func):
-            continue
-        key = strip_args(func) + "@" + path
-        for stage, full, rx in rules:
-            if rx.search(func if full else key):
+        if not SKIP_FRAME.search(func):
+            stage = match(func, path)
+            if stage:
                 return stage
-    # A chain of std:: frames only: the outermost decides.
-    for func, path in reversed(frames):
-        key = strip_args(func) + "@" + path
-        for stage, full, rx in rules:
-            if rx.search(func if full else key):
-                return stage
-    return None
+    return next(filter(None, (match(func, path) for func, path in reversed(frames))), None)
 
 
 def symbol_table(dso):
@@ -229,17 +228,22 @@ def profile(cmd, env, freq, rules, verbose):
             if sym in tables[dso]:
                 by_dso[dso].add(tables[dso][sym] + off)
     chains = {dso: resolve(dso, sorted(addrs)) for dso, addrs in by_dso.items()}
+
+    def frames_of(dso, sym, off):
+        addr = tables.get(dso, {}).get(sym)
+        frames = chains.get(dso, {}).get(addr + off) if addr is not None and off is not None else None
+        return frames if frames and frames[0][0] != "??" else None
+
+    # Samples without debug information (libc, the loader) are named by their symbol alone.
+    bare = sorted({sym for (dso, sym, off) in counts if not dso.startswith("[kernel") and not frames_of(dso, sym, off)})
+    names = subprocess.run(["c++filt"], input="\n".join(bare), capture_output=True, text=True).stdout.splitlines()
+    demangled = dict(zip(bare, names)) if len(names) == len(bare) else {}
     stages, unmatched = collections.Counter(), collections.Counter()
     for (dso, sym, off), n in counts.items():
         if dso.startswith("[kernel"):
             stages["kernel (fresh pages)"] += n
             continue
-        addr = tables.get(dso, {}).get(sym)
-        frames = chains.get(dso, {}).get(addr + off) if addr is not None and off is not None else None
-        demangled = subprocess.run(["c++filt", sym], capture_output=True, text=True).stdout.strip() if not frames \
-            else None
-        if not frames or frames[0][0] == "??":
-            frames = [(demangled or sym, dso)]
+        frames = frames_of(dso, sym, off) or [(demangled.get(sym, sym), dso)]
         stage = classify(frames, rules)
         if stage is None:
             unmatched[strip_args(frames[-1][0]) + " (" + os.path.basename(frames[0][1]) + ")"] += n

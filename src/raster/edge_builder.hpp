@@ -67,6 +67,17 @@ void clip_edge(double W, double H, Point p, Point q, Out& out) {
     }
 }
 
+// The control points were checked before flattening, and polynomial curves flatten inside their
+// hull; but a conic with an extreme weight can still put a flattened point at NaN or far beyond
+// its control points, and the walk must never see one. The sinks below give this to the flattener
+// as check_rational, which it calls for every point it makes by halving a conic.
+inline void check_conic_point(Point p) {
+    constexpr double kFar = 4 * limits::kMaxCoordinate;
+    if (!(std::fabs(p.x) <= kFar && std::fabs(p.y) <= kFar)) [[unlikely]]
+        throw Error(ErrorKind::InvalidData,
+                    "flattening produced a non-finite or out-of-range point (a conic weight out of range?)");
+}
+
 // Receives flattened points (flatten_into's sink interface) and hands straight edges to `out`
 // (the engine or a banded fill's edge list), clipping them to [0, W] x [0, H] when kClip, else as they are.
 template <bool kClip, class Out>
@@ -100,16 +111,7 @@ struct EdgeSink {
 
     void add_clipped(Point p, Point q) { clip_edge(W, H, p, q, out); }
 
-    // The control points were checked before flattening, and polynomial curves flatten inside
-    // their hull; but a conic with an extreme weight can still put a flattened point at NaN or
-    // far beyond its control points, and the walk must never see one. The flattener calls this
-    // for every point it makes by halving a conic.
-    static void check_rational(Point p) {
-        constexpr double kFar = 4 * limits::kMaxCoordinate;
-        if (!(std::fabs(p.x) <= kFar && std::fabs(p.y) <= kFar)) [[unlikely]]
-            throw Error(ErrorKind::InvalidData,
-                        "flattening produced a non-finite or out-of-range point (a conic weight out of range?)");
-    }
+    static void check_rational(Point p) { check_conic_point(p); }
 };
 
 // Receives the flattened points of a shape inside its box and hands them to `out` a polyline at a
@@ -151,7 +153,7 @@ struct PolylineSink {
         n = 0;
         open = false;
     }
-    static void check_rational(Point p) { EdgeSink<false, Out>::check_rational(p); }
+    static void check_rational(Point p) { check_conic_point(p); }
 };
 
 // Flattens `path` mapped by `local` (path -> the box's cell coordinates) into `out`. `inside`: the

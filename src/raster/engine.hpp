@@ -112,7 +112,7 @@ private:
     struct ManyRuns;  // harmless_many's steps (engine.cpp)
 
     int w_ = 0, h_ = 0;
-    double fh_ = 0;  // h_, for push()'s clamping
+    double fh_ = 0;  // h_ as a double: admit() holds every edge's y at it without a conversion
     std::size_t stride_ = 0;
     bool track_ = false;
     // Narrow shapes (at most kRowVectorMax SIMD vectors and kRowVectorMaxPixels per row) without

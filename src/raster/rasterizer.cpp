@@ -13,9 +13,9 @@
 //      it unless the control points already lie inside.
 //   3. Storage: a box of at most 2^18 cells is one dense buffer, and edges go into the engine as
 //      the flattener makes them (a batch of points at a time when no clipping is needed); a larger
-//      box is swept in horizontal bands of at most 2^18 cells,
-//      each a dense buffer of the same engine, from the edges kept once (each band takes the edges
-//      that reach its rows, clipped to them, in contour order).
+//      box is swept in horizontal bands of at most 2^18 cells, each a dense buffer of the same
+//      engine, from the edges kept once (each band takes the edges that reach its rows, clipped
+//      to them, in contour order).
 // The engine (engine.hpp, engine.cpp): cell walk with cover/area accumulation, the overlap check
 // by visits, exact coverage of the cells that need it (exact_cell.cpp), and the row scan
 // (coverage.cpp).
