@@ -176,6 +176,7 @@ public:
         std::memset(buf_.data(), 0, g.box.pixels());
         sink_.buf = buf_.data();
         sink_.stride = g.box.width;
+        sink_.height = g.box.height;
         if (verdict_ == Verdict::Cached || verdict_ == Verdict::CachedAnyMap) opts_.topology = verdicts_[i];
         rast_.fill(g.path, g.to_box, opts_, casteljau::IRect{0, 0, g.box.width, g.box.height}, sink_);
         return {buf_.data(), g.box.width, g.box};

@@ -139,16 +139,22 @@ struct CommonOptions {
 };
 
 // Copies the rasterizer's rows into a caller's 8-bit buffer (`stride` bytes per row, pixel
-// (0, 0) at buf[0]).
+// (0, 0) at buf[0]). Given its height, it offers the buffer as the fill's direct target, as
+// Rasterizer::fill_mask's sink does (the buffer must then be zeroed before each fill).
 class BufferSink final : public casteljau::SpanSink {
 public:
     BufferSink() = default;
     BufferSink(std::uint8_t* b, int s) : buf(b), stride(s) {}
     std::uint8_t* buf = nullptr;
     int stride = 0;
+    int height = 0;  // 0: no direct target
     void row(int y, int x, int length, const std::uint8_t* coverage) override {
         std::memcpy(buf + static_cast<std::size_t>(y) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(x),
                     coverage, static_cast<std::size_t>(length));
+    }
+    casteljau::CoverageTarget target() override {
+        if (height <= 0) return {};
+        return {buf, stride, casteljau::IRect{0, 0, stride, height}};
     }
 };
 

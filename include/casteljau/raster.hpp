@@ -168,12 +168,26 @@ struct FillOptions {
     bool winding_sweep = true;
 };
 
+// An 8-bit buffer a SpanSink lets the renderer write coverage into (see SpanSink::target).
+struct CoverageTarget {
+    std::uint8_t* data = nullptr;  // pixel (bounds.x0, bounds.y0); null: no direct target
+    std::ptrdiff_t stride = 0;     // bytes from one row to the next
+    IRect bounds;                  // the pixels it holds
+};
+
 // Receives coverage one row at a time, rows in increasing y. `coverage[i]` belongs to pixel
 // (x + i, y). Rows the shape does not touch are not delivered; zero runs may be.
 class SpanSink {
 public:
     virtual ~SpanSink() = default;
     virtual void row(int y, int x, int length, const std::uint8_t* coverage) = 0;
+    // A sink filling a fresh mask may offer that mask here, asked before each fill's rows: every
+    // pixel of its bounds must hold zero. The renderer may then write the coverage of a row whose
+    // whole width (the shape's box) lies inside the bounds straight into it, zeros included,
+    // instead of calling row() for that row; other rows still come through row(). This saves a
+    // copy of every covered pixel of shapes wider than a glyph at text sizes. The default offers
+    // none.
+    virtual CoverageTarget target() { return {}; }
 };
 
 // Coverage rows kept to be used later: a SpanSink that records the rows it is handed, in order,

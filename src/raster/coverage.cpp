@@ -169,12 +169,15 @@ HWY_INLINE void ScanRowsOf(const ScanRows& s, T* acc, SpanSink& sink) {
     std::size_t pi = 0;
     for (int r = 0; r < s.h; ++r) {
         const std::size_t row_base = static_cast<std::size_t>(r) * static_cast<std::size_t>(s.stride);
-        const ScanSpan span = ScanBlocksImpl(acc + row_base, s.cov, s.blocks + static_cast<std::size_t>(r) * s.words,
+        std::uint8_t* const direct = s.direct.at(r);
+        std::uint8_t* const cov = direct ? direct : s.cov;
+        const ScanSpan span = ScanBlocksImpl(acc + row_base, cov, s.blocks + static_cast<std::size_t>(r) * s.words,
                                              s.words, s.w, s.stride, s.rule);
         const std::size_t row_end = row_base + static_cast<std::size_t>(s.stride);
         for (; pi < s.npatches && s.patches[pi].first < row_end; ++pi)
-            if (span.end > span.from) s.cov[s.patches[pi].first - row_base] = s.patches[pi].second;
-        if (span.end > span.from) sink.row(s.oy + r, s.ox + span.from, span.end - span.from, s.cov + span.from);
+            if (span.end > span.from) cov[s.patches[pi].first - row_base] = s.patches[pi].second;
+        if (span.end > span.from && !direct)
+            sink.row(s.oy + r, s.ox + span.from, span.end - span.from, s.cov + span.from);
     }
 }
 

@@ -117,6 +117,14 @@ void grow_zeroed(V& v, std::size_t n) {
 
 }  // namespace
 
+DirectRows direct_rows(const CoverageTarget& t, int ox, int oy, int w, int h) {
+    const IRect& b = t.bounds;
+    if (!t.data || ox < b.x0 || ox + w > b.x1) return {};
+    const int r0 = std::clamp(b.y0 - oy, 0, h), r1 = std::clamp(b.y1 - oy, r0, h);
+    if (r1 == r0) return {};
+    return {t.data + static_cast<std::ptrdiff_t>(oy + r0 - b.y0) * t.stride + (ox - b.x0), t.stride, r0, r1};
+}
+
 void Engine::trim(std::size_t records) {
     segs_.release_above(records);
     visits_.release_above(records);
@@ -631,7 +639,8 @@ void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
                         patches_.data(),
                         patches_.size(),
                         ox,
-                        oy};
+                        oy,
+                        direct_rows(sink.target(), ox, oy, w_, h_)};
     scan_rows(rows, sink);
     dirty_ = false;
 }

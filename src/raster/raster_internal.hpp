@@ -126,12 +126,23 @@ inline std::uint8_t coverage_u8(T a, FillRule rule) {
     return static_cast<std::uint8_t>(v * T(255) + kBias);
 }
 
+// The rows of a box (w x h at ox, oy) that a sink's direct target holds whole: row r's pixels
+// go to at(r), or through the sink's row() when at(r) is null.
+struct DirectRows {
+    std::uint8_t* first = nullptr;  // row r0's first pixel in the target
+    std::ptrdiff_t stride = 0;
+    int r0 = 0, r1 = 0;  // the box's rows inside the target
+    std::uint8_t* at(int r) const { return r >= r0 && r < r1 ? first + (r - r0) * stride : nullptr; }
+};
+DirectRows direct_rows(const CoverageTarget& t, int ox, int oy, int w, int h);
+
 // The rows of the engine's dense buffer. Per row, bit b of its `words` 64-bit words of `blocks` says cells
 // [b << kScanBlockShift, (b + 1) << kScanBlockShift) were touched. Runs of touched blocks are
 // prefix-summed into cov and cleared in acc; the gaps between them get the constant coverage of the
 // running sum. Cells at or past `w` (spill cells, up to `stride`) are cleared, never delivered.
 // The exact cells' coverage (patches: cell index row * stride + col and value, sorted) is written
-// over the scanned row, and each row with a touched block goes to the sink at (ox, oy). One call
+// over the scanned row, and each row with a touched block goes to the sink at (ox, oy), or is
+// scanned straight into the sink's target (direct) where it holds the row. One call
 // (one SIMD dispatch) per shape. Float cells (facc instead of acc) come in rows of whole blocks
 // (stride a multiple of 8) and have no patches.
 inline constexpr int kScanBlockShift = 3;
@@ -145,6 +156,7 @@ struct ScanRows {
     const std::pair<std::uint32_t, std::uint8_t>* patches;
     std::size_t npatches;
     int ox, oy;
+    DirectRows direct;
 };
 void scan_rows(const ScanRows& rows, SpanSink& sink);
 
@@ -181,7 +193,8 @@ int row_vector_lanes();
 void row_vector_accumulate(const RowPiece* pieces, std::size_t n, float* acc, int stride);
 // Maps rows [0, h) of acc through the fill rule to 8-bit coverage and clears them; rows with
 // from[r] == INT_MAX (no piece) are skipped (they are zero). Each row goes to the sink from column
-// from[r] to w, at (ox, oy). `cov`: stride bytes of scratch.
+// from[r] to w, at (ox, oy). `cov`: stride bytes of scratch. (Rows this narrow fit a vector or
+// two: writing them into the sink's target saved nothing measurable, so they are not.)
 struct RowVectorRows {
     float* acc;
     int stride, w, h;

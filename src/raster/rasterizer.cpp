@@ -87,6 +87,8 @@ public:
         std::memcpy(&mask_.data[static_cast<std::size_t>(y - b.y0) * b.width() + (x0 - b.x0)], coverage + (x0 - x),
                     static_cast<std::size_t>(x1 - x0));
     }
+    // The mask is fresh and zeroed (fill_mask).
+    CoverageTarget target() override { return {mask_.data.data(), mask_.bounds.width(), mask_.bounds}; }
 
 private:
     Mask& mask_;

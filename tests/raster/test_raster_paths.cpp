@@ -147,3 +147,112 @@ TEST_CASE("raster paths: every SIMD target of the row scan gives the same pixels
     simd::restrict_targets(0);
     WARN("row scan checked on " << targets.size() << " SIMD target(s)");
 }
+
+namespace {
+
+// A sink offering part of a larger buffer as its direct target. Rows handed to row() go into the
+// target where they lie in it, else into a picture of their own; every byte of the buffer outside
+// the target must keep its guard value.
+class TargetSink final : public SpanSink {
+public:
+    static constexpr std::uint8_t kGuard = 0xA7;
+    TargetSink(const IRect& clip, const IRect& target) : clip_(clip), target_(target) {
+        stride_ = clip.width() + 5;  // guard bytes right of every row
+        mem_.assign(static_cast<std::size_t>(stride_) * static_cast<std::size_t>(clip.height() + 2), kGuard);
+        rows_pic_.assign(static_cast<std::size_t>(clip.width()) * static_cast<std::size_t>(clip.height()), 0);
+        for (int y = target.y0; y < target.y1; ++y)
+            for (int x = target.x0; x < target.x1; ++x) *byte(x, y) = 0;
+    }
+    void row(int y, int x, int length, const std::uint8_t* coverage) override {
+        ++rows_;
+        for (int i = 0; i < length; ++i)
+            if (x + i >= clip_.x0 && x + i < clip_.x1 && y >= clip_.y0 && y < clip_.y1)
+                (inside_target(x + i, y) ? *byte(x + i, y) : *pic(x + i, y)) = coverage[i];
+    }
+    CoverageTarget target() override { return {byte(target_.x0, target_.y0), stride_, target_}; }
+    int at(int x, int y) { return inside_target(x, y) ? *byte(x, y) : *pic(x, y); }
+    bool guards_intact() const {
+        for (std::size_t i = 0; i < mem_.size(); ++i) {
+            const int x = clip_.x0 + static_cast<int>(i % static_cast<std::size_t>(stride_));
+            const int y = clip_.y0 + static_cast<int>(i / static_cast<std::size_t>(stride_));
+            if (!inside_target(x, y) && mem_[i] != kGuard) return false;
+        }
+        return true;
+    }
+    std::size_t rows() const { return rows_; }
+
+private:
+    bool inside_target(int x, int y) const {
+        return x >= target_.x0 && x < target_.x1 && y >= target_.y0 && y < target_.y1;
+    }
+    std::uint8_t* byte(int x, int y) {
+        return &mem_[static_cast<std::size_t>(y - clip_.y0) * static_cast<std::size_t>(stride_) +
+                     static_cast<std::size_t>(x - clip_.x0)];
+    }
+    std::uint8_t* pic(int x, int y) {
+        return &rows_pic_[static_cast<std::size_t>(y - clip_.y0) * static_cast<std::size_t>(clip_.width()) +
+                          static_cast<std::size_t>(x - clip_.x0)];
+    }
+    IRect clip_, target_;
+    int stride_ = 0;
+    std::vector<std::uint8_t> mem_, rows_pic_;
+    std::size_t rows_ = 0;
+};
+
+}  // namespace
+
+TEST_CASE("raster paths: a sink's direct target gets the pixels its rows would get", "[raster]") {
+    // Shapes for each accumulation: narrow ones proven simple (row vectors), wider simple ones
+    // (float cells), self-intersecting ones (the overlap check's double cells and exact cells,
+    // the winding sweep) and the busy scene (bands).
+    Path narrow, wide, crossing;
+    narrow.add_polygon(regular_polygon({21.3, 19.8}, 17.4, 29));
+    wide.add_polygon(regular_polygon({150.2, 90.7}, 83.1, 61));
+    crossing.add_polygon(star_polygon({61.5, 58.2}, 52, 7, 3, 0.2));
+    crossing.add_polygon(star_polygon({70.1, 50.6}, 40, 5, 2, 0.4));
+    const Path scene = busy_scene();
+    struct Job {
+        const Path* path;
+        IRect clip;
+        Topology topology;
+    };
+    const Job jobs[] = {{&narrow, {0, 0, 50, 45}, Topology::Simple},
+                        {&wide, {0, 0, 260, 190}, Topology::Simple},
+                        {&crossing, {0, 0, 120, 120}, Topology::Unknown},
+                        {&scene, {0, 0, 910, 720}, Topology::Unknown}};
+    const std::vector<std::int64_t> targets = simd::available_targets();
+    for (std::int64_t t : targets) {
+        simd::restrict_targets(t);
+        INFO("SIMD target " << simd::target_name(t));
+        for (const Job& j : jobs) {
+            const IRect& c = j.clip;
+            // The whole clip; rows cut at both ends; one column short on the left (no direct row).
+            const IRect cuts[] = {c, {c.x0, c.y0 + 7, c.x1, c.y1 - 9}, {c.x0 + 1, c.y0, c.x1, c.y1}};
+            for (FillRule rule : {FillRule::NonZero, FillRule::EvenOdd})
+                for (bool sweep : {true, false})
+                    for (const IRect& cut : cuts) {
+                        FillOptions o;
+                        o.rule = rule;
+                        o.topology = j.topology;
+                        o.winding_sweep = sweep;
+                        Rasterizer r;
+                        const Rendered want = render(r, *j.path, Affine{}, o, c);
+                        REQUIRE(want.contract_violation.empty());
+                        TargetSink sink(c, cut);
+                        r.fill(*j.path, Affine{}, o, c, sink);
+                        INFO("clip " << c.x1 << " x " << c.y1 << ", target rows " << cut.y0 << ".." << cut.y1
+                                     << " from column " << cut.x0 << ", sweep " << sweep);
+                        CHECK(sink.guards_intact());
+                        int worst = 0;
+                        for (int y = c.y0; y < c.y1; ++y)
+                            for (int x = c.x0; x < c.x1; ++x)
+                                worst = std::max(worst, std::abs(sink.at(x, y) - want.at(x, y)));
+                        CHECK(worst == 0);
+                        // Rows of the dense scan wholly in the target are written there, not
+                        // handed over (row vectors, the narrow shape, are always handed over).
+                        if (cut.x0 == c.x0 && j.path != &narrow) CHECK(sink.rows() < want.rows_delivered);
+                    }
+        }
+    }
+    simd::restrict_targets(0);
+}
