@@ -121,37 +121,35 @@ struct ScanSpan {
     int from, end;
 };
 
+// Touched blocks are taken one at a time, in order, from the row's bit words: a block inside the
+// row is one fixed-length scan (whole vectors, no tail), the gap before it one fill of the running
+// coverage. Branches follow the count of touched blocks, not their pattern (a run-length search
+// mispredicted about once per run).
 template <class T>
 HWY_INLINE ScanSpan ScanBlocksImpl(T* acc, std::uint8_t* cov, const std::uint64_t* bm, int words, int w, int stride,
                                    FillRule rule) {
-    const int nb = words * 64;
-    auto bit = [&](int b) { return b < nb && ((bm[b >> 6] >> (b & 63)) & 1) != 0; };
-    auto next_set = [&](int b) {
-        while (b < nb) {
-            const std::uint64_t v = bm[b >> 6] >> (b & 63);
-            if (v) return b + __builtin_ctzll(v);
-            b = (b | 63) + 1;
-        }
-        return nb;
-    };
-    const int first = next_set(0);
-    if (first >= nb) return {0, 0};
-    const int from = first << kScanBlockShift;
+    constexpr int kCells = 1 << kScanBlockShift;
+    int from = -1, pos = 0;
     T sum = 0;
-    int pos = from;
-    for (int b = first; b < nb;) {
-        int e = b + 1;
-        while (bit(e)) ++e;
-        const int a0 = b << kScanBlockShift;
-        const int a1 = std::min(e << kScanBlockShift, stride);
-        if (a0 > pos && pos < w)
-            std::memset(cov + pos, coverage_u8(sum, rule), static_cast<std::size_t>(std::min(a0, w) - pos));
-        const int to = std::min(a1, w);
-        if (to > a0) sum = ScanRange(acc, cov, a0, to, sum, rule);
-        for (int k = std::max(a0, w); k < a1; ++k) acc[k] = T(0);  // spill cells
-        if (to > pos) pos = to;
-        b = next_set(e);
+    for (int wi = 0; wi < words; ++wi) {
+        for (std::uint64_t m = bm[wi]; m != 0; m &= m - 1) {
+            const int a0 = ((wi << 6) + __builtin_ctzll(m)) << kScanBlockShift;
+            if (from < 0) from = pos = a0;
+            if (a0 > pos && pos < w)
+                std::memset(cov + pos, coverage_u8(sum, rule), static_cast<std::size_t>(std::min(a0, w) - pos));
+            if (a0 + kCells <= w) {
+                sum = ScanRange(acc, cov, a0, a0 + kCells, sum, rule);
+                pos = a0 + kCells;
+                continue;
+            }
+            // The block holding w, or one past it: cells at or past w are spill cells, cleared only.
+            const int to = std::min(a0 + kCells, w);
+            if (to > a0) sum = ScanRange(acc, cov, a0, to, sum, rule);
+            for (int k = std::max(a0, w); k < std::min(a0 + kCells, stride); ++k) acc[k] = T(0);
+            pos = std::max(pos, to);
+        }
     }
+    if (from < 0) return {0, 0};
     if (pos < w) {  // beyond the last touched cell the coverage is constant
         const std::uint8_t tail = coverage_u8(sum, rule);
         if (tail != 0) {

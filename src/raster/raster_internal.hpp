@@ -137,7 +137,7 @@ struct DirectRows {
 DirectRows direct_rows(const CoverageTarget& t, int ox, int oy, int w, int h);
 
 // The rows of the engine's dense buffer. Per row, bit b of its `words` 64-bit words of `blocks` says cells
-// [b << kScanBlockShift, (b + 1) << kScanBlockShift) were touched. Runs of touched blocks are
+// [b << kScanBlockShift, (b + 1) << kScanBlockShift) were touched. Touched blocks are
 // prefix-summed into cov and cleared in acc; the gaps between them get the constant coverage of the
 // running sum. Cells at or past `w` (spill cells, up to `stride`) are cleared, never delivered.
 // The exact cells' coverage (patches: cell index row * stride + col and value, sorted) is written
