@@ -31,12 +31,13 @@ constexpr double kAcceptMean = 0.5, kAcceptMax = 8;
 
 struct Options : bench::CommonOptions {
     std::vector<double> tolerances{0.01, 0.015, 0.025, 0.05, 0.1, 0.2, 0.25};
+    std::string font = CASTELJAU_BENCH_FONT;
 };
 
 [[noreturn]] void usage(const char* msg) {
     std::fprintf(stderr,
                  "tolerance_study: %s\nusage: tolerance_study [--quick] [--runs R] [--min-time S] [--sizes 12,24,...]\n"
-                 "                       [--tolerances 0.01,0.025,...]\n",
+                 "                       [--tolerances 0.01,0.025,...] [--font FILE]\n",
                  msg);
     std::exit(2);
 }
@@ -61,6 +62,9 @@ Options parse(int argc, char** argv) {
         if (a == "--tolerances") {
             if (i + 1 >= argc) usage("missing value after --tolerances");
             o.tolerances = split_numbers(argv[++i]);
+        } else if (a == "--font") {
+            if (i + 1 >= argc) usage("missing value after --font");
+            o.font = argv[++i];
         } else if (a == "--help" || a == "-h") {
             usage("flattening tolerance study");
         } else {
@@ -106,7 +110,7 @@ std::string fmt_tol(double t) {
 int main(int argc, char** argv) {
     const Options opt = parse(argc, argv);
     try {
-        bench::Font font;
+        bench::Font font(opt.font);
         Renderer ren;
         std::printf("tolerance_study: %s, %zu codepoints, unhinted; reference: casteljau at %.3g px\n",
                     font.path().c_str(), bench::benchmark_codepoints().size(), kReferenceTolerance);

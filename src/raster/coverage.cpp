@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstddef>
 #include <cstring>
 
 #include "raster/raster_internal.hpp"
@@ -198,7 +199,31 @@ HWY_INLINE void AccumulateFixed(D d, const RowPiece* HWY_RESTRICT pieces, std::s
         AddRowPieceFixed<kVectors>(d, pieces[k], acc + static_cast<std::size_t>(pieces[k].r) * stride);
 }
 
-void RowVectorAccumulateImpl(const RowPiece* HWY_RESTRICT pieces, std::size_t n, float* HWY_RESTRICT acc, int stride) {
+// Listed pieces {xl, xr, dy, r} to make_row_piece's {xl, xr, k, r}, with the same arithmetic (so
+// the same bits), whole vectors of pieces at a time; the rest one by one.
+HWY_INLINE void PreparePieces(RowPiece* HWY_RESTRICT pieces, std::size_t n) {
+    static_assert(sizeof(RowPiece) == 4 * sizeof(float) && offsetof(RowPiece, r) == 3 * sizeof(float),
+                  "a piece is four 32-bit lanes");
+    const hn::ScalableTag<float> d;
+    const std::size_t N = hn::Lanes(d);
+    // The r lanes travel through as float bits, untouched.
+    float* HWY_RESTRICT f = reinterpret_cast<float*>(pieces);
+    const auto narrow = hn::Set(d, 1e-4f), half = hn::Set(d, 0.5f);
+    std::size_t i = 0;
+    for (; i + N <= n; i += N) {
+        hn::Vec<decltype(d)> xl, xr, dy, r;
+        hn::LoadInterleaved4(d, f + 4 * i, xl, xr, dy, r);
+        const auto width = hn::Sub(xr, xl);
+        const auto vertical = hn::Lt(width, narrow);
+        const auto mid = hn::Mul(half, hn::Add(xl, xr));
+        const auto k = hn::IfThenElse(vertical, dy, hn::Div(dy, width));
+        hn::StoreInterleaved4(hn::IfThenElse(vertical, mid, xl), hn::IfThenElse(vertical, mid, xr), k, r, d, f + 4 * i);
+    }
+    for (; i < n; ++i) pieces[i] = make_row_piece(pieces[i].r, pieces[i].xl, pieces[i].xr, pieces[i].k);
+}
+
+void RowVectorAccumulateImpl(RowPiece* HWY_RESTRICT pieces, std::size_t n, float* HWY_RESTRICT acc, int stride) {
+    PreparePieces(pieces, n);
     const hn::ScalableTag<float> d;
     switch (stride / static_cast<int>(hn::Lanes(d))) {  // rows of up to four vectors: unrolled
         case 1: return AccumulateFixed<1>(d, pieces, n, acc);
@@ -245,7 +270,7 @@ void scan_rows(const ScanRows& rows, SpanSink& sink) { CASTELJAU_SIMD_DISPATCH(S
 
 // Not cached: tests switch targets, and the stride must be whole vectors of the kernels' target.
 int row_vector_lanes() { return CASTELJAU_SIMD_DISPATCH(RowVectorLanesImpl)(); }
-void row_vector_accumulate(const RowPiece* pieces, std::size_t n, float* acc, int stride) {
+void row_vector_accumulate(RowPiece* pieces, std::size_t n, float* acc, int stride) {
     CASTELJAU_SIMD_DISPATCH(RowVectorAccumulateImpl)(pieces, n, acc, stride);
 }
 void row_vector_emit(const RowVectorRows& rows, SpanSink& sink) {

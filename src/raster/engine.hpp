@@ -40,6 +40,7 @@ public:
     std::size_t size() const { return n_; }
     T& operator[](std::size_t i) { return buf_[i]; }
     const T& operator[](std::size_t i) const { return buf_[i]; }
+    T* data() { return buf_.data(); }
     const T* data() const { return buf_.data(); }
     const T* begin() const { return buf_.data(); }
     const T* end() const { return buf_.data() + n_; }
@@ -391,10 +392,11 @@ template <bool kTrack, class T>
     int* const from = row_from_.data();
     for_each_row(
         x0, y0, x1, y1, [&](int r, double xa, double ya, double xb, double yb) __attribute__((always_inline)) {
-            const double xl = xa < xb ? xa : xb, xr = xa < xb ? xb : xa;
-            *out++ = make_row_piece(r, static_cast<float>(xl), static_cast<float>(xr), static_cast<float>(yb - ya));
-            const int c0 = floor_nn(xl);
-            if (c0 < from[r]) from[r] = c0;
+            // Selects, not branches: the order of xa and xb and the row's leftmost piece follow
+            // the outline, which a branch predictor cannot.
+            const double xl = std::min(xa, xb), xr = std::max(xa, xb);
+            *out++ = {static_cast<float>(xl), static_cast<float>(xr), static_cast<float>(yb - ya), r};  // k: dy
+            from[r] = std::min(from[r], floor_nn(xl));
         });
     pieces_.commit(out);
 }

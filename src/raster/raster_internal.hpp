@@ -189,8 +189,11 @@ inline RowPiece make_row_piece(int r, float xl, float xr, float dy) {
 // The kernel that adds a piece to its row is AddRowPiece in row_vector-inl.h.
 // Floats per SIMD vector of the best target this CPU runs (rows are whole vectors).
 int row_vector_lanes();
-// Adds every piece to acc (`stride` floats per row, a multiple of row_vector_lanes()).
-void row_vector_accumulate(const RowPiece* pieces, std::size_t n, float* acc, int stride);
+// Adds every piece to acc (`stride` floats per row, a multiple of row_vector_lanes()). The pieces
+// come as the walk lists them, {xl, xr, dy, r} (k holding dy), and are first turned into
+// make_row_piece's form in place, a SIMD vector of pieces at a time: the division and the test for
+// vertical pieces cost a few cycles and a mispredicted branch each when done one piece at a time.
+void row_vector_accumulate(RowPiece* pieces, std::size_t n, float* acc, int stride);
 // Maps rows [0, h) of acc through the fill rule to 8-bit coverage and clears them; rows with
 // from[r] == INT_MAX (no piece) are skipped (they are zero). Each row goes to the sink from column
 // from[r] to w, at (ox, oy). `cov`: stride bytes of scratch. (Rows this narrow fit a vector or
