@@ -124,8 +124,8 @@ struct ScanSpan {
 
 // Touched blocks are taken one at a time, in order, from the row's bit words: a block inside the
 // row is one fixed-length scan (whole vectors, no tail), the gap before it one fill of the running
-// coverage. Branches follow the count of touched blocks, not their pattern (a run-length search
-// mispredicted about once per run).
+// coverage. Its branches follow the count of touched blocks, not the lengths of their runs, which
+// a branch predictor cannot learn.
 template <class T>
 HWY_INLINE ScanSpan ScanBlocksImpl(T* acc, std::uint8_t* cov, const std::uint64_t* bm, int words, int w, int stride,
                                    FillRule rule) {
