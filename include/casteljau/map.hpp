@@ -187,7 +187,8 @@ Pixmap render_map(const MapData& data, const MapProjection& proj, const MapStyle
 // stroke call to come: the stroker draws such a ring as a dot). Every other contour (open, with
 // curves such as point disks, or a ring of zero length or of two distinct positions, whose stroke
 // depends on the caps) goes to `whole` unchanged, to be stroked with the style's own caps.
-// Consecutive repeated positions are skipped.
+// A position within `merge_distance` of the last one kept (or, closing a ring, of the first) is
+// taken as that one, as the stroker does: a ring's segments and joins are those the stroker draws.
 // Memory: 16 bytes per position added plus two hash tables of 4-byte entries; clear() frees nothing
 // but forgets every ring. At most 2^31 positions between clear() calls (Error(Limit)).
 // Thread-safety: one object per thread; its methods must not be called concurrently.

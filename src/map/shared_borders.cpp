@@ -66,11 +66,15 @@ void SharedBorders::grow(std::vector<std::uint32_t>& table, bool joins) {
 }
 
 bool SharedBorders::add_ring(std::span<const Point> ring, Path& out, double merge_distance) {
-    // Consecutive repeats (and a closing repeat of the first position) carry no segment.
+    // The stroker takes a position within merge_distance of the last one it kept (and, closing,
+    // of the first) as that one, so its segments and joins are those of the ring so merged: merge
+    // it the same way, with the same test, before comparing borders. A repeat carries no segment.
     ring_.clear();
+    const double merge2 = merge_distance * merge_distance;
+    auto apart = [merge2](Point a, Point b) { return (a - b).dot(a - b) > merge2; };
     for (Point p : ring)
-        if (ring_.empty() || !same(p, ring_.back())) ring_.push_back(p);
-    while (ring_.size() > 1 && same(ring_.back(), ring_.front())) ring_.pop_back();
+        if (ring_.empty() || apart(p, ring_.back())) ring_.push_back(p);
+    while (ring_.size() > 1 && !apart(ring_.back(), ring_.front())) ring_.pop_back();
     const std::size_t n = ring_.size();
     if (n < 3) return false;  // a point or a there-and-back: its stroke depends on the caps
     // Of zero length for the stroker (casteljau/stroke.hpp): a dot, which depends on the caps too.

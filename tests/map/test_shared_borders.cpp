@@ -162,6 +162,27 @@ TEST_CASE("SharedBorders: stroking what is kept covers what every ring's stroke 
         }
 }
 
+TEST_CASE("SharedBorders: positions the stroker merges are merged before borders are compared", "[map][stroke]") {
+    // A ring that visits O three times, then a run of it closed on itself, then the ring reversed
+    // (fuzz_stroke's shapes). E lies a hair from O, so the stroker merges them, and the run
+    // E, C, O becomes a there-and-back between O and C: its join at O turns back on itself, which
+    // a miter join draws as a long spike and no other ring draws. The run must be kept whole.
+    const Point O{60, 50}, D{10, 70}, E{60 + 1e-9, 50 + 1e-9}, C{30, 20}, B{59.98, 49.99}, A{55, 95};
+    const Path r = ring({O, D, O, E, C, O, O, B, A});
+    const std::vector<Path> rings = {r.reversed(), ring({E, C, O, O}), r};
+    const IRect clip{0, 0, 120, 100};
+    for (LineJoin join : kJoins)
+        for (double width : {0.8, 5.25}) {
+            StrokeStyle st;
+            st.join = join;
+            st.cap = LineCap::Round;
+            st.width = width;
+            st.miter_limit = 10;
+            INFO("join " << int(join) << ", width " << width);
+            CHECK(union_difference(rings, st, clip) <= 1);
+        }
+}
+
 TEST_CASE("SharedBorders: the Natural Earth world, each border stroked once, same pixels", "[map][stroke]") {
     const MapData world = test::load_world();
     const test::EquirectFrame fr{1200, 600};
