@@ -107,6 +107,13 @@ void stroke_outline(const Path& path, const StrokeStyle& style, const Affine& m,
 // a square with Round or Square caps, nothing with Butt caps). Throws like stroke() for a bad
 // transform or tolerance.
 double stroke_merge_distance(const Affine& m = {}, double tolerance = 0.05);
+// The stroker's test for keeping point b after the point a it kept last (or, closing a contour,
+// its first): their squared distance exceeds merge_distance squared. A distance too small to square
+// (below about 1e-154) counts as none. Code that must see a path's points as the stroker does
+// (SharedBorders) uses the same test.
+inline bool stroke_keeps_apart(Point a, Point b, double merge_distance) {
+    return (a - b).dot(a - b) > merge_distance * merge_distance;
+}
 
 // The dashes of `path` as open contours (made of line segments, in user space); a contour that the
 // pattern leaves "on" all around stays closed. Without an effective pattern (empty, all zero, a

@@ -10,6 +10,7 @@
 
 #include "casteljau/error.hpp"
 #include "casteljau/map.hpp"
+#include "casteljau/stroke.hpp"
 #include "map/point_hash.hpp"
 
 namespace casteljau {
@@ -68,10 +69,9 @@ void SharedBorders::grow(std::vector<std::uint32_t>& table, bool joins) {
 bool SharedBorders::add_ring(std::span<const Point> ring, Path& out, double merge_distance) {
     // The stroker takes a position within merge_distance of the last one it kept (and, closing,
     // of the first) as that one, so its segments and joins are those of the ring so merged: merge
-    // it the same way, with the same test, before comparing borders. A repeat carries no segment.
+    // it the same way, with its own test, before comparing borders. A repeat carries no segment.
     ring_.clear();
-    const double merge2 = merge_distance * merge_distance;
-    auto apart = [merge2](Point a, Point b) { return (a - b).dot(a - b) > merge2; };
+    auto apart = [merge_distance](Point a, Point b) { return stroke_keeps_apart(a, b, merge_distance); };
     for (Point p : ring)
         if (ring_.empty() || apart(p, ring_.back())) ring_.push_back(p);
     while (ring_.size() > 1 && !apart(ring_.back(), ring_.front())) ring_.pop_back();

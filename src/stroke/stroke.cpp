@@ -102,8 +102,7 @@ public:
         smooth_.clear();
         q_.push_back(pts[0]);
         smooth_.push_back(smooth[0]);
-        const double eps2 = eps_ * eps_;
-        auto apart = [&](Point a, Point b) { return (a - b).dot(a - b) > eps2; };
+        auto apart = [this](Point a, Point b) { return stroke_keeps_apart(a, b, eps_); };
         for (std::size_t i = 1; i < pts.size(); ++i) {
             if (apart(pts[i], q_.back())) {
                 q_.push_back(pts[i]);
