@@ -45,6 +45,7 @@
 #include <vector>
 
 #include "casteljau/canvas.hpp"
+#include "casteljau/flatten.hpp"
 #include "casteljau/font.hpp"
 #include "casteljau/geometry.hpp"
 #include "casteljau/limits.hpp"
@@ -52,14 +53,17 @@
 
 namespace casteljau {
 
-// Flattening tolerance (px) used for glyphs. Chosen by measurement (tests/text/test_font.cpp, "Glyph
-// coverage ..."): against FreeType's rendering of the same outlines supersampled 4-16x, the worst
-// per-glyph mean difference (over the ink box) at 9-200 px is ~5-8/255 at 0.05 px (small dots and
-// rings lose area to their chords), ~2.5/255 at 0.02 px, ~1.1/255 at 0.01 px and ~0.9/255 at
-// 0.005 px, where small rings match the 16x reference exactly. Glyph masks are cached, so the
-// extra segments cost little. (Measured with chords; with the area-balanced pieces fills use,
-// quadratic and cubic glyphs lose less area at each tolerance.)
-inline constexpr double kTextTolerance = 0.005;
+// Flattening tolerance (px) used for glyphs: the fills' default. Chosen from the coverage error it
+// causes (tests/text/test_font.cpp, "The text tolerance keeps glyph masks ..."): against the exact
+// area of DejaVu Sans and Linux Libertine glyphs at subpixel origins, from 9 to 256 px, the masks'
+// mean error over the glyph set must stay within a quarter of FreeType's smooth rendering's and no
+// pixel may be off by more than 6/255. Worst size at each tolerance (mean as a share of FreeType's,
+// max): 0.005 px 0.12 / 2, 0.01 px 0.17 / 3, 0.015 px 0.22 / 6, 0.02 px 0.28 / 7. So 0.015 px is
+// the largest that meets the bound. What it costs on single glyphs is small: the rendering furthest
+// from FreeType's supersampled one, DejaVu's "(" at 9 px, is 0.49/255 from the exact area on
+// average over its box (FreeType's own 0.30/255), at most 3/255. (The rasterizer's curve pieces are
+// area-balanced, so small dots and rings do not come out thin.)
+inline constexpr double kTextTolerance = kDefaultTolerance;
 
 // Decodes UTF-8; each maximal invalid subsequence (and each encoded surrogate or value above
 // U+10FFFF) becomes one U+FFFD, following the Unicode / WHATWG recommendation.
