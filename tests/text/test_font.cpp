@@ -378,9 +378,6 @@ std::string describe(const std::string& path, char32_t c, std::uint32_t gid, dou
     return buf;
 }
 
-// FreeType's own flattening is coarse (conic chords within 1/16 px, cubics coarser) and its
-// accumulation over-covers where contours overlap, so the accurate reference is FreeType's
-// rendering of the same outline at K times the size, box-filtered back: its error shrinks K-fold.
 // The smallest rectangle holding both (either may be empty).
 IRect united(const IRect& a, const IRect& b) {
     if (a.empty()) return b;
@@ -413,6 +410,28 @@ ExactError error_against(const ref::CoverageGrid& exact, const IRect& r, At at) 
     return e;
 }
 
+// The glyphs the FreeType comparisons render: printable ASCII and Latin-1 Supplement to Latin
+// Extended-A (U+0021..U+007E, U+00A1..U+017F).
+std::vector<char32_t> latin_chars() {
+    std::vector<char32_t> chars;
+    for (char32_t c = 0x21; c <= 0x7e; ++c) chars.push_back(c);
+    for (char32_t c = 0xa1; c <= 0x17f; ++c) chars.push_back(c);
+    return chars;
+}
+
+// The k-th rendering's origin, stepping through quarter-pixel offsets in x and y.
+Point quarter_origin(int k) { return {10 + 0.25 * (k % 4), 300 + 0.25 * ((k / 4) % 4)}; }
+
+// What text draws glyph masks with.
+FillOptions text_fill() {
+    FillOptions o;
+    o.tolerance = kTextTolerance;
+    return o;
+}
+
+// FreeType's own flattening is coarse (conic chords within 1/16 px, cubics coarser) and its
+// accumulation over-covers where contours overlap, so the accurate reference is FreeType's
+// rendering of the same outline at K times the size, box-filtered back: its error shrinks K-fold.
 int supersampling_for(double size) { return size <= 12 ? 32 : size <= 24 ? 16 : size <= 96 ? 8 : 4; }
 
 }  // namespace
@@ -434,21 +453,16 @@ TEST_CASE("Glyph coverage matches FreeType's smooth rendering of the same unhint
         const Font font = Font::load(path);
         FtRenderer ft(path);
         Rasterizer raster;
-        FillOptions opts;
-        opts.tolerance = kTextTolerance;
-        std::vector<char32_t> chars;
-        for (char32_t c = 0x21; c <= 0x7e; ++c) chars.push_back(c);
-        for (char32_t c = 0xa1; c <= 0x17f; ++c) chars.push_back(c);
+        const FillOptions opts = text_fill();
         Worst vs_ref, vs_ft1, ft1_vs_ref;
         int count = 0, glyphs = 0, k = 0;
-        for (char32_t c : chars) {
+        for (char32_t c : latin_chars()) {
             const std::uint32_t gid = font.glyph_index(c);
             if (gid == 0) continue;
             ++glyphs;
             const Path outline = font.glyph_path(gid);
             for (double size : sizes) {
-                const Point origin{10 + 0.25 * (k % 4), 300 + 0.25 * ((k / 4) % 4)};
-                ++k;
+                const Point origin = quarter_origin(k++);
                 const Mask ours = raster.fill_mask(outline, font.glyph_transform(size, origin), opts);
                 const Gray ref = ft.render_supersampled(gid, size, origin, supersampling_for(size));
                 const Gray ft1 = ft.render(gid, size, origin);
@@ -506,19 +520,16 @@ TEST_CASE("The text tolerance keeps glyph masks within a quarter of FreeType's e
         const Font font = Font::load(path);
         FtRenderer ft(path);
         Rasterizer raster;
-        FillOptions opts;
-        opts.tolerance = kTextTolerance;
+        const FillOptions opts = text_fill();
         const std::string name = path.substr(path.rfind('/') + 1);
         int k = 0;
         for (double size : sizes) {
             ExactError ours, theirs;  // over the whole set
             std::string worst;
-            for (char32_t c = 0x21; c <= 0x17f; ++c) {
-                if (c > 0x7e && c < 0xa1) continue;
+            for (char32_t c : latin_chars()) {
                 const std::uint32_t gid = font.glyph_index(c);
                 if (gid == 0) continue;
-                const Point origin{10 + 0.25 * (k % 4), 300 + 0.25 * ((k / 4) % 4)};
-                ++k;
+                const Point origin = quarter_origin(k++);
                 const Path outline = font.glyph_path(gid);
                 const Affine m = font.glyph_transform(size, origin);
                 const Mask mask = raster.fill_mask(outline, m, opts);
@@ -566,8 +577,7 @@ TEST_CASE("Exact overlap cells never add coverage to glyphs", "[font]") {
             if (gid == 0) continue;
             const Path outline = font.glyph_path(gid);
             for (double size : {9.0, 10.0, 12.0, 15.0, 22.0}) {
-                const Point origin{10 + 0.25 * (k % 4), 300 + 0.25 * ((k / 4) % 4)};
-                ++k;
+                const Point origin = quarter_origin(k++);
                 const Affine m = font.glyph_transform(size, origin);
                 const Mask a = raster.fill_mask(outline, m, exact), b = raster.fill_mask(outline, m, plain);
                 for (int y = a.bounds.y0; y < a.bounds.y1; ++y)
