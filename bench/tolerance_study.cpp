@@ -284,8 +284,7 @@ int main(int argc, char** argv) {
                     kReferenceTolerance, opt.tolerances[base]);
         std::printf(
             "| px | tolerance | k glyphs/s | speed | edges/glyph | curvature-placed | mean err | mean err (edge px) | "
-            "max err | px off > "
-            "1 |\n");
+            "max err | px off > 1 |\n");
         std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
         for (std::size_t si = 0; si < opt.sizes.size(); ++si) {
             for (std::size_t ti = 0; ti < opt.tolerances.size(); ++ti) {

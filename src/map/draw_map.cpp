@@ -181,6 +181,10 @@ private:
         FillOptions o = fo_;
         o.topology = d.topology;
         if (lw.covered) o.hidden = &lw.cover.full();
+        // Seamless fills that need exactness take the per-cell check, not the winding sweep: a
+        // coastline folds into short monotone chains, so the sweep's strips cost more than the
+        // check's boundary pixels (countries-land-10km at 4096 px: 2 % more instructions).
+        o.winding_sweep = !opts_.seamless;
         return o;
     }
     void fill_seamless(LayerWork& lw);
@@ -398,8 +402,8 @@ void MapDrawing::fill_seamless(LayerWork& lw) {
     bool drew = false;
     auto make = [&](int w, std::size_t feature, std::optional<Drawable>& out) { make_fill(lw, w, feature, out); };
     chunked(order, make, [&](const Chunk& chunk) {
-        // A layer whose polygons have no stroke colour strokes only its lines (a fill colour
-        // strokes lines only): with none, nothing is hidden and no cover is swept.
+        // A layer without a stroke colour strokes only its lines: with none, there is no cover
+        // and nothing is hidden.
         std::vector<LineSegment> segments;
         if (occlude) segments = lw.gathered_segments();
         if (!segments.empty()) {
@@ -416,13 +420,7 @@ void MapDrawing::fill_seamless(LayerWork& lw) {
                     start_compositor(band, bands_[b], direct);
                     into = &*band;
                 }
-                // The features that need exactness take the per-cell check, not the winding
-                // sweep: a coastline folds into short monotone chains, so the sweep's strips
-                // cost more than the check's boundary pixels (countries-land-10km at 4096 px:
-                // 2 % more instructions through the sweep).
-                FillOptions o = fill_options(lw, *d);
-                o.winding_sweep = false;
-                into->add(raster, d->path, o, d->color, lw.layer.opacity, bands_[b]);
+                into->add(raster, d->path, fill_options(lw, *d), d->color, lw.layer.opacity, bands_[b]);
             }
             if (banded && into) {
                 if (background_due_[b])
