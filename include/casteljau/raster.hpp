@@ -109,6 +109,28 @@ double similarity_scale(const Affine& m);
 // FillOptions::topology, instead of fill() classifying it again for every piece. Thread-safe.
 Topology decide_topology(const Path& path, const Affine& m, double tolerance, double box_width, double box_height);
 
+// Where plain accumulation of a polygon may be inexact (find_overlap_region).
+struct OverlapRegion {
+    // Simple: plain accumulation is exact everywhere (no box); Overlapping: exact outside the
+    // boxes; Unknown: not decided (the path has curves, or its segments crowd together beyond
+    // the analysis' linear budget: see below), `boxes` empty.
+    Topology topology = Topology::Unknown;
+    std::vector<Rect> boxes;  // in the path's coordinates
+};
+
+// For a path of straight lines only (a map's polygons): the boxes of the segments near which
+// plain accumulation may be inexact, because they meet another segment (cross it, touch it, run
+// along it) or have a winding number outside {0, 1} (or {0, -1}) on one of their sides. Outside
+// the boxes every pixel is exact without the overlap check; FillOptions::overlap_boxes takes them
+// (mapped to pixels) so that the check looks only inside. The analysis holds under any affine map
+// (meetings and winding numbers are affine invariants), with a margin of 2^-30 of the path's
+// extent for every decision. Cost: segments paired on a uniform grid, and one ray along a row of
+// it for each run of segments between those that meet: about as much as classify_topology for a
+// polygon, and linear in its segments: a path whose segments crowd into few cells (stacked copies)
+// or rows beyond a fixed budget per segment is left Unknown (src/raster/overlap_region.cpp).
+// Thread-safe.
+OverlapRegion find_overlap_region(const Path& path);
+
 // A set of pixels over a rectangle (pixel space), one bit each; pixels outside the rectangle are
 // never in it. Inserting on different rows from different threads is safe (each row has words of
 // its own); anything else needs the caller's synchronisation.
@@ -162,6 +184,14 @@ struct FillOptions {
     // cover fully from the fills under them. A shape given hidden pixels takes the overlap check,
     // not the winding sweep (map features with their hidden pixels are faster that way).
     const PixelSet* hidden = nullptr;
+    // Boxes (pixel space) outside which the caller knows plain accumulation to be exact: the boxes
+    // of find_overlap_region for this path, mapped to the target (render_map draws its polygons in
+    // pixel coordinates and passes them as they are). The overlap check then visits only the
+    // pixels the boxes meet (grown by a pixel for rounding). Empty, or boxes of more pixels in all
+    // than the shape's box (long segments crossing it many times): the check looks everywhere.
+    // Read only when the check runs (exact_overlaps, a shape not proven simple); the span must
+    // outlive the fill. A shape given boxes takes the overlap check, not the winding sweep.
+    std::span<const Rect> overlap_boxes;
     // Shapes that need exactness may take the winding sweep (see the top of this header); false
     // sends every one to the per-cell overlap check. Both are exact; the pixels they give differ
     // by at most one level, where float and double accumulation round differently.

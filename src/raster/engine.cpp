@@ -166,6 +166,7 @@ void Engine::begin(int w, int h, bool track) {
         grow_zeroed(head_, cells);
         grow_zeroed(cand_, cells);
     }
+    clear_region();
     dirty_ = true;
     const int lanes = row_vector_lanes();
     vec_ = !track && w <= std::min(kRowVectorMax * lanes, kRowVectorMaxPixels);
@@ -198,6 +199,45 @@ void Engine::begin(int w, int h, bool track) {
     contour_visit_ = 0;
     contour_started_ = false;
     px_ = py_ = NAN;
+}
+
+void Engine::clear_region() {
+    for (const IRect& r : region_rects_)
+        for (int y = r.y0; y < r.y1; ++y)
+            std::fill_n(region_.data() + static_cast<std::size_t>(y) * region_stride_ + r.x0, r.x1 - r.x0,
+                        std::uint8_t(0));
+    region_rects_.clear();
+    region_on_ = false;
+}
+
+void Engine::set_region(std::span<const Rect> boxes, double dx, double dy) {
+    if (!track_) return;
+    const double wmax = static_cast<double>(stride_), hmax = h_;
+    // The cells of each box, and their total: boxes that would mark more cells than the shape has
+    // (long segments crossing it many times) leave the check looking everywhere, so that marking
+    // costs at most the shape's cells.
+    std::size_t marked = 0;
+    for (const Rect& b : boxes) {
+        // Cells floor(x0) - 1 .. floor(x1) + 1: the closed box and a cell of slack each way.
+        const double x0 = std::clamp(std::floor(b.x0 + dx) - 1, 0.0, wmax),
+                     x1 = std::clamp(std::floor(b.x1 + dx) + 2, 0.0, wmax);
+        const double y0 = std::clamp(std::floor(b.y0 + dy) - 1, 0.0, hmax),
+                     y1 = std::clamp(std::floor(b.y1 + dy) + 2, 0.0, hmax);
+        if (!(x1 > x0 && y1 > y0)) continue;
+        const IRect r{static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1), static_cast<int>(y1)};
+        marked += static_cast<std::size_t>(r.x1 - r.x0) * static_cast<std::size_t>(r.y1 - r.y0);
+        if (marked > stride_ * static_cast<std::size_t>(h_)) {
+            region_rects_.clear();
+            return;
+        }
+        region_rects_.push_back(r);
+    }
+    grow_zeroed(region_, stride_ * static_cast<std::size_t>(h_));
+    region_on_ = true;
+    region_stride_ = stride_;
+    for (const IRect& r : region_rects_)
+        for (int y = r.y0; y < r.y1; ++y)
+            std::fill_n(region_.data() + static_cast<std::size_t>(y) * stride_ + r.x0, r.x1 - r.x0, std::uint8_t(1));
 }
 
 void Engine::contour_end() {

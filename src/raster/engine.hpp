@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,11 @@ public:
     void push_polyline(const double* xy, std::size_t n);
     // The current contour is complete (its closing edge was pushed).
     void contour_end();
+    // Restricts the overlap check to the cells that meet `boxes` (moved by (dx, dy) into cell
+    // coordinates), grown by one cell for rounding: FillOptions::overlap_boxes. Boxes that would
+    // mark more cells in all than the shape has are ignored (the check looks everywhere), so
+    // marking costs at most the shape's cells. After begin(), before the first edge.
+    void set_region(std::span<const Rect> boxes, double dx, double dy);
     // Resolves the marked cells and hands the rows to the sink, at pixel offset (ox, oy). Marked
     // cells wholly inside one of `inside` (pixel space) are full under the nonzero rule; cells of
     // pixels in `hidden` keep their accumulated coverage (FillOptions::hidden).
@@ -143,6 +149,13 @@ private:
     platform::LargeVector<double> acc_;         // cover/area, (w + 2) x h, all zero between shapes
     platform::LargeVector<std::int32_t> head_;  // per cell: last visit + 1 (0: none), all zero between shapes
     platform::LargeVector<std::uint8_t> cand_;  // per cell: listed in cands_ (1) or not, all zero between shapes
+    // set_region: per cell, 1 where the overlap check looks (only read while region_on_); the
+    // rectangles of cells set, to clear them again.
+    platform::LargeVector<std::uint8_t> region_;
+    std::vector<IRect> region_rects_;
+    std::size_t region_stride_ = 0;
+    bool region_on_ = false;
+    void clear_region();
     // Touched cells, per row, in blocks of kBlock cells: bit b of the row's words is block b. The
     // scan only sums touched blocks; between them the coverage is constant.
     static constexpr int kBlockShift = kScanBlockShift;
@@ -182,6 +195,10 @@ private:
 };
 
 [[gnu::always_inline]] inline void Engine::touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits) {
+    if (region_on_ && !region_[cell]) {
+        cur_cell_ = kNoCell;  // accumulation is exact here: no visit
+        return;
+    }
     if (cell == cur_cell_) {
         Visit& v = visits_[static_cast<std::size_t>(cur_visit_)];
         v.s1 = sid;

@@ -225,12 +225,14 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opti
     }
     const Affine local = Affine::translate(-ox, -oy) * m;
     if ((fx1 - fx0) * (fy1 - fy0) <= static_cast<double>(kMaxStripCells)) {
-        const bool sweep = opts.exact_overlaps && opts.winding_sweep && opts.inside.empty() && !opts.hidden;
+        const bool sweep = opts.exact_overlaps && opts.winding_sweep && opts.inside.empty() && !opts.hidden &&
+                           opts.overlap_boxes.empty();
         if (sweep && impl_->fill_swept(path, local, opts, inside, ox, oy, bw, bh, sink, stats_)) return;
         // The box fits one dense buffer: edges go into the engine as the flattener makes them (after
         // a sweep that gave up, flattened again for the overlap check).
         raster::Engine& d = impl_->engine;
         d.begin(bw, bh, opts.exact_overlaps);
+        if (!opts.overlap_boxes.empty()) d.set_region(opts.overlap_boxes, -ox, -oy);
         raster::build_edges(path, local, opts.tolerance, inside, bw, bh, d);
         d.finish(opts.rule, ox, oy, sink, stats_, opts.inside, opts.hidden);
         return;
@@ -293,6 +295,7 @@ void Rasterizer::Impl::run_bands(const FillOptions& opts, int ox, int oy, int bw
         const int y0 = static_cast<int>(k) * rows;
         const int h = std::min(rows, bh - y0);
         engine.begin(bw, h, opts.exact_overlaps);
+        if (!opts.overlap_boxes.empty()) engine.set_region(opts.overlap_boxes, -ox, -(oy + y0));
         std::uint32_t c = contour[band[k].front()];
         for (std::uint32_t i : band[k]) {
             if (contour[i] != c) {
