@@ -1,9 +1,10 @@
 // bench/map_bench: filling a world map, casteljau side by side with AGG and Cairo in one process.
 //
-// Usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME] [--profile render_map|agg|both]
+// Usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME] [--profile render_map|cached|agg|both|both-cached]
 //   (FILE: GeoJSON or TopoJSON; bench/setup_map_data.sh installs world-atlas 10m from npm.)
-//   --profile runs one case alone, render_map's fill or AGG's, for a profiler; "both" times the
-//   two in turn in one process.
+//   --profile runs one case alone, render_map's fill (with a MapCache kept across the rounds:
+//   "cached") or AGG's, for a profiler; "both" ("both-cached") times render_map (with a MapCache)
+//   and AGG in turn in one process.
 // The map is read and projected (equirectangular, --bbox -180,-90,180,90 onto width x width/2)
 // once, outside the timed region, into pixel-space polygons per feature (antimeridian split with
 // casteljau's public split_ring_at_antimeridian). Timed, per round (thread CPU time, best of
@@ -18,11 +19,12 @@
 //                 map command does it (all outlines in one nonzero path: shared borders drawn once),
 //                 AGG conv_stroke per feature, Cairo cairo_stroke per feature.
 //   render_map:   casteljau's whole map stage from MapData (projection + paths + seamless + strokes),
-//                 into a new Pixmap and into one kept across the rounds (cleared by each render).
+//                 into a new Pixmap and into one kept across the rounds (cleared by each render);
+//                 with a MapCache, the first render of a new cache and the renders with one kept.
 //   threads:      render_map fill on 1 and 2 threads, wall time, into a new and into a kept Pixmap.
 // Prints peak RSS at the end. Exits 1 when the fills with a topology verdict differ from the
 // exact cells, or the borders stroked once from the union of every ring's stroke, by more than
-// 1/255 at a pixel.
+// 1/255 at a pixel, or render_map's pixels with a MapCache from those without.
 #include <agg_conv_stroke.h>
 #include <agg_path_storage.h>
 #include <agg_pixfmt_rgba.h>
@@ -146,8 +148,10 @@ private:
 int run_profile(const std::string& name, const MapData& data, const std::vector<Rings>& features, int w, int h,
                 int rounds) {
     const MapStyle style = grey_fill();
-    const MapOptions mo = world_options(w, h);
-    const bool agg = name != "render_map", ours = name != "agg";
+    MapOptions mo = world_options(w, h);
+    const bool agg = name == "agg" || name == "both" || name == "both-cached", ours = name != "agg";
+    MapCache cache;
+    if (name == "cached" || name == "both-cached") mo.cache = &cache;
     std::optional<AggMap> agg_map;
     if (agg) agg_map.emplace(features, w, h);
     double best_ours = 1e300, best_agg = 1e300;
@@ -174,9 +178,9 @@ int main(int argc, char** argv) {
 
 int run(int argc, char** argv) {
     auto usage = [] {
-        std::fprintf(
-            stderr,
-            "usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME] [--profile render_map|agg|both]\n");
+        std::fprintf(stderr,
+                     "usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME] [--profile "
+                     "render_map|cached|agg|both|both-cached]\n");
         return 2;
     };
     if (argc < 2 || argv[1][0] == '-') return usage();
@@ -195,7 +199,9 @@ int run(int argc, char** argv) {
         else
             return usage();
     }
-    if (W < 2 || rounds < 1 || !(profile.empty() || profile == "render_map" || profile == "agg" || profile == "both"))
+    if (W < 2 || rounds < 1 ||
+        !(profile.empty() || profile == "render_map" || profile == "cached" || profile == "agg" || profile == "both" ||
+          profile == "both-cached"))
         return usage();
     const int H = W / 2;
     const auto bytes = read_file(argv[1]);
@@ -382,6 +388,34 @@ int run(int argc, char** argv) {
                 wall[kept][t - 1] = std::min(wall[kept][t - 1], sec);
             }
     mo.threads = 1;
+    // With a MapCache: the first render of each fresh cache (which finds the analyses), and the
+    // renders that follow with one kept across the rounds. The pixels must not move.
+    double t_map_first = 1e300;
+    for (int r = 0; r < rounds; ++r) {
+        MapCache fresh;
+        mo.cache = &fresh;
+        t_map_first = std::min(t_map_first, best_of(1, [&] { (void)render_map(data, eq, style, mo); }));
+    }
+    MapCache cache;
+    mo.cache = &cache;
+    const Pixmap with_cache = render_map(data, eq, style, mo);
+    const double t_map_cached = best_of(rounds, [&] { (void)render_map(data, eq, style, mo); });
+    const double t_map_cached_reused = best_of(rounds, [&] { render_map(data, eq, frame, style, mo, reused); });
+    mo.cache = nullptr;
+    const Pixmap without_cache = render_map(data, eq, style, mo);
+    // Both exact: a pixel the analysis proves plain where the per-cell check computed it again
+    // may round to the neighbouring level.
+    int cache_max_diff = 0;
+    std::size_t cache_diff_pixels = 0;
+    for (int y = 0; y < with_cache.height(); ++y)
+        for (int x = 0; x < with_cache.width(); ++x) {
+            const std::uint8_t* a = with_cache.data() + y * with_cache.stride() + 4 * x;
+            const std::uint8_t* b = without_cache.data() + y * without_cache.stride() + 4 * x;
+            int d = 0;
+            for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(int(a[c]) - int(b[c])));
+            cache_max_diff = std::max(cache_max_diff, d);
+            cache_diff_pixels += d > 0;
+        }
     mo.exact_overlaps = false;
     const double t_map_plain = best_of(rounds, [&] { (void)render_map(data, eq, style, mo); });
     mo.exact_overlaps = true;
@@ -412,6 +446,9 @@ int run(int argc, char** argv) {
     row("render_map fill (projection included)", t_map, peer_fill);
     row("render_map fill, into a kept Pixmap", t_map_reused, peer_fill);
     row("render_map fill, exact_overlaps off", t_map_plain, peer_fill);
+    row("render_map fill, first render, new MapCache", t_map_first, peer_fill);
+    row("render_map fill, MapCache kept", t_map_cached, peer_fill);
+    row("render_map fill, MapCache kept, kept Pixmap", t_map_cached_reused, peer_fill);
     row("render_map fill+stroke", t_map_stroke, peer_stroke);
     row("render_map fill+stroke, into a kept Pixmap", t_map_stroke_reused, peer_stroke);
     for (int kept : {0, 1})
@@ -428,7 +465,9 @@ int run(int argc, char** argv) {
     std::printf("peak RSS: %.1f MB (input file %.1f MB)\n", ru.ru_maxrss / 1024.0, bytes.size() / 1e6);
     // Both comparisons are of exact renders of the same region: more than a rounding step apart
     // means one of them is broken, and its time is not worth reporting.
-    if (verdict_max_diff > 1 || once_max_diff > 1) {
+    std::printf("render_map fill with a MapCache against without: %zu pixels differ, max |difference| %d/255\n",
+                cache_diff_pixels, cache_max_diff);
+    if (verdict_max_diff > 1 || once_max_diff > 1 || cache_max_diff > 1) {
         std::fprintf(stderr, "map_bench: error: renders that must agree differ by more than 1/255\n");
         return 1;
     }

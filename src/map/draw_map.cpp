@@ -62,9 +62,12 @@ struct Drawable {
     Color color;
     Path rings;  // strokes: polygon rings still to be stroked, after SharedBorders
     // Fills: the control bounds of path, and the rasterizer's verdict on it, decided once for the
-    // whole image rather than by every band the feature reaches (decide_topology).
+    // whole image rather than by every band the feature reaches: from the kept overlap analysis
+    // (fill_analyses.hpp), whose boxes confine the overlap check to the pixels near the segments
+    // that need it, or else by decide_topology.
     Rect box{};
     Topology topology = Topology::Unknown;
+    std::vector<Rect> overlap_boxes{};
 };
 using Chunk = std::vector<std::optional<Drawable>>;
 
@@ -140,7 +143,7 @@ struct LayerWork {
 class MapDrawing {
 public:
     MapDrawing(const MapData& data, const SimplifiedMap* simplified, const MapProjection& proj, const MapFrame& frame,
-               const MapStyle& style, const MapOptions& opts, Pixmap& target, bool cleared);
+               const MapStyle& style, const MapOptions& opts, Pixmap& target, bool cleared, KeptMap* cache);
 
     void draw() {
         for (const MapLayerStyle& layer : style_.layers) draw_layer(layer);
@@ -165,6 +168,9 @@ private:
         return n;
     }
     void build(int w, std::size_t feature, PathVisitor& v) const;
+    // Feature `feature`'s overlap analysis in this frame: the cache's, found and kept by the first
+    // render that fills it; nullopt without a cache.
+    std::optional<OverlapRegion> overlap_region(std::size_t feature, const Path& path) const;
     // Calls make(worker, feature, out) for the features in `order`, a chunk at a time built in
     // parallel, then draw(chunk) with the chunk's drawables in the same order.
     template <class Make, class Draw>
@@ -180,6 +186,7 @@ private:
     FillOptions fill_options(const LayerWork& lw, const Drawable& d) const {
         FillOptions o = fo_;
         o.topology = d.topology;
+        o.overlap_boxes = d.overlap_boxes;
         if (lw.covered) o.hidden = &lw.cover.full();
         // Seamless fills that need exactness take the per-cell check, not the winding sweep: a
         // coastline folds into short monotone chains, so the sweep's strips cost more than the
@@ -194,6 +201,11 @@ private:
 
     const MapData& data_;
     const SimplifiedMap* simplified_;
+    KeptMap* cache_;
+    // The cache's analyses of the geometry drawn: the data's own, or those of held_, the cache's
+    // copy simplified to this frame's scale.
+    FillAnalyses* kept_;
+    std::shared_ptr<ScaledMap> held_;
     std::optional<SimplifiedMap> own_;
     const MapProjection& proj_;
     const MapFrame& frame_;
@@ -221,9 +233,11 @@ private:
 
 MapDrawing::MapDrawing(const MapData& data, const SimplifiedMap* simplified, const MapProjection& proj,
                        const MapFrame& frame, const MapStyle& style, const MapOptions& opts, Pixmap& target,
-                       bool cleared)
+                       bool cleared, KeptMap* cache)
     : data_(data),
       simplified_(simplified),
+      cache_(simplified ? nullptr : cache),
+      kept_(cache_ ? &cache_->as_is() : nullptr),
       proj_(proj),
       frame_(frame),
       style_(style),
@@ -273,8 +287,21 @@ MapDrawing::MapDrawing(const MapData& data, const SimplifiedMap* simplified, con
 void MapDrawing::simplify_once() {
     if (simplified_ || !(opts_.simplify > 0)) return;
     // Sparse data are drawn as they are (worth_simplifying), with their features' bounds for
-    // leaving out what cannot reach the image.
-    if (worth_simplifying(data_, proj_, frame_.to_pixel))
+    // leaving out what cannot reach the image. A cache keeps both for the next renders.
+    const bool worth = worth_simplifying(data_, proj_, frame_.to_pixel);
+    if (cache_ && worth) {
+        held_ = cache_->scaled(frame_.to_pixel, opts_.simplify, [&] {
+            return simplify_map(data_, cache_->nodes(data_), proj_, frame_.to_pixel, opts_.simplify, threads_);
+        });
+        simplified_ = &held_->map;
+        kept_ = held_->analyses.get();
+        return;
+    }
+    if (cache_) {
+        simplified_ = &cache_->as_is_bounds(data_, proj_, threads_);
+        return;
+    }
+    if (worth)
         own_ = simplify_map(data_, find_border_nodes(data_), proj_, frame_.to_pixel, opts_.simplify, threads_);
     else
         own_ = bounds_only(data_, proj_, threads_);
@@ -379,8 +406,24 @@ void MapDrawing::make_fill(LayerWork& lw, int w, std::size_t feature, std::optio
         const Rect& b = out->box;
         const double bw = std::min(b.x1, double(frame_.width)) - std::max(b.x0, 0.0);
         const double bh = std::min(b.y1, double(frame_.height)) - std::max(b.y0, 0.0);
-        if (bw > 0 && bh > 0) out->topology = decide_topology(out->path, Affine{}, fo_.tolerance, bw, bh);
+        if (bw > 0 && bh > 0) {
+            std::optional<OverlapRegion> region = overlap_region(feature, out->path);
+            if (region && region->topology != Topology::Unknown) {
+                out->topology = region->topology;
+                out->overlap_boxes = std::move(region->boxes);
+            } else {
+                out->topology = decide_topology(out->path, Affine{}, fo_.tolerance, bw, bh);
+            }
+        }
     }
+}
+
+std::optional<OverlapRegion> MapDrawing::overlap_region(std::size_t feature, const Path& path) const {
+    FillAnalyses* const k = kept_;
+    if (!k) return std::nullopt;
+    if (const OverlapRegion* r = k->find(feature)) return FillAnalyses::in_frame(*r, frame_.to_pixel);
+    if (k->claim(feature)) return k->keep(feature, path, frame_.to_pixel);
+    return std::nullopt;
 }
 
 // Seamless fills (SeamlessCompositor), last feature first so that later features win.
@@ -558,12 +601,12 @@ void MapDrawing::stroke_outlines(LayerWork& lw) {
 }  // namespace
 
 void draw_map(const MapData& data, const SimplifiedMap* simplified, const MapProjection& proj, const MapFrame& frame,
-              const MapStyle& style, const MapOptions& opts, Pixmap& target, bool cleared) {
+              const MapStyle& style, const MapOptions& opts, Pixmap& target, bool cleared, KeptMap* cache) {
     if (target.width() != frame.width || target.height() != frame.height)
         throw Error(ErrorKind::InvalidArgument, "render_map: the pixmap does not have the frame's size");
     if (!(opts.simplify >= 0) || !std::isfinite(opts.simplify))
         throw Error(ErrorKind::InvalidArgument, "simplify must be a finite number of pixels >= 0");
-    MapDrawing(data, simplified, proj, frame, style, opts, target, cleared).draw();
+    MapDrawing(data, simplified, proj, frame, style, opts, target, cleared, cache).draw();
 }
 
 }  // namespace casteljau::map_detail

@@ -196,7 +196,8 @@ int map_threads(int requested) {
 
 void render_map(const MapData& data, const MapProjection& proj, const MapFrame& frame, const MapStyle& style,
                 const MapOptions& opts, Pixmap& target) {
-    map_detail::draw_map(data, nullptr, proj, frame, style, opts, target, false);
+    map_detail::KeptMap* cache = opts.cache ? &map_detail::MapCacheAccess::bind(*opts.cache, data, proj) : nullptr;
+    map_detail::draw_map(data, nullptr, proj, frame, style, opts, target, false, cache);
 }
 
 namespace map_detail {
@@ -211,7 +212,8 @@ void render_simplified_map(const MapData& data, const SimplifiedMap& simplified,
 Pixmap render_map(const MapData& data, const MapProjection& proj, const MapStyle& style, const MapOptions& opts) {
     const MapFrame fr = fit_map(data, proj, opts);
     Pixmap pm(fr.width, fr.height);
-    map_detail::draw_map(data, nullptr, proj, fr, style, opts, pm, true);
+    map_detail::KeptMap* cache = opts.cache ? &map_detail::MapCacheAccess::bind(*opts.cache, data, proj) : nullptr;
+    map_detail::draw_map(data, nullptr, proj, fr, style, opts, pm, true, cache);
     return pm;
 }
 
