@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <thread>
+#include <vector>
 
 #include "casteljau/error.hpp"
 #include "casteljau/map.hpp"
@@ -110,4 +112,40 @@ TEST_CASE("MapCache: serves only the data and the projection it was first used w
     Pixmap target(100, 50);
     CHECK_THROWS_AS(render_map(copy, MapProjection{}, MapFrame{Affine{}, 100, 50}, st, o, target), Error);
     CHECK_NOTHROW(render_map(d, MapProjection{}, st, o));
+}
+
+TEST_CASE("MapCache: renders on several threads share one cache", "[map][cache]") {
+    const MapData world = test::load_world();
+    const MapStyle st;
+    // Small enough for the data to be simplified: the threads share the scaled copy too.
+    MapOptions o = frame_options(120, 60, Rect{-180, -90, 180, 90});
+    o.threads = 1;
+    const Pixmap without = render_map(world, MapProjection{}, st, o);
+    MapCache cache;
+    o.cache = &cache;
+    std::vector<Pixmap> out(4, Pixmap(1, 1));
+    std::vector<std::thread> threads;
+    for (std::size_t t = 0; t < out.size(); ++t)
+        threads.emplace_back([&, t] { out[t] = render_map(world, MapProjection{}, st, o); });
+    for (std::thread& t : threads) t.join();
+    for (const Pixmap& p : out) CHECK(max_difference(p, without) <= 1);
+    CHECK(cache.kept() > 0);
+}
+
+TEST_CASE("MapCache: each scale's simplified copy serves every window of that scale", "[map][cache]") {
+    // At 3 and 1.5 degrees per pixel the world is simplified: one copy per scale, kept, and used
+    // by windows of the same scale at other offsets.
+    const MapData world = test::load_world();
+    const MapStyle st;
+    MapCache cache;
+    const MapOptions frames[] = {
+        frame_options(120, 60, Rect{-180, -90, 180, 90}), frame_options(240, 120, Rect{-180, -90, 180, 90}),
+        frame_options(60, 60, Rect{-180, -90, 0, 90}), frame_options(90, 40, Rect{-45, -60, 90, 0}),
+        frame_options(120, 60, Rect{-180, -90, 180, 90})};
+    for (MapOptions o : frames) {
+        INFO("frame " << o.width << " x " << o.height);
+        const Pixmap without = render_map(world, MapProjection{}, st, o);
+        o.cache = &cache;
+        CHECK(max_difference(render_map(world, MapProjection{}, st, o), without) <= 1);
+    }
 }
