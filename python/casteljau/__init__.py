@@ -26,7 +26,7 @@ from typing import Any, Optional, Sequence, Tuple, Union
 
 __all__ = ["Error", "Path", "Stroke", "Paint", "Image", "Font", "Canvas", "version", "BLEND_MODES",
            "set_thread_count", "thread_count", "limits", "set_limits", "reset_limits", "parse_color",
-           "SvgDocument", "svg_to_png", "render_svg", "MapData", "render_map", "render_tiles", "TextLayout",
+           "SvgDocument", "svg_to_png", "render_svg", "MapData", "MapCache", "render_map", "render_tiles", "TextLayout",
            "TextLine"]
 
 Color = Union[str, Sequence[int]]
@@ -567,5 +567,5 @@ class Canvas(_Handle):
 
 
 from ._svg import SvgDocument, render_svg, svg_to_png  # noqa: E402
-from ._map import MapData, render_map, render_tiles  # noqa: E402
+from ._map import MapCache, MapData, render_map, render_tiles  # noqa: E402
 from ._text import TextLayout, TextLine  # noqa: E402

@@ -62,6 +62,9 @@ struct casteljau_map_style {
     casteljau::MapStyle style;
 };
 // The image options of `casteljau map`, the projection parsed when it is set.
+struct casteljau_map_cache {
+    casteljau::MapCache cache;
+};
 struct casteljau_map_options {
     casteljau::MapOptions options;
     casteljau::MapProjection projection;

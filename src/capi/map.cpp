@@ -228,6 +228,14 @@ casteljau_status casteljau_map_options_set_tolerance(casteljau_map_options* opti
     });
 }
 
+casteljau_map_cache* casteljau_map_cache_create(void) { return casteljau::capi::create_default<casteljau_map_cache>(); }
+
+void casteljau_map_cache_destroy(casteljau_map_cache* cache) { delete cache; }
+
+casteljau_status casteljau_map_options_set_cache(casteljau_map_options* options, casteljau_map_cache* cache) {
+    return edit_options(options, [&](casteljau_map_options& o) { o.options.cache = cache ? &cache->cache : nullptr; });
+}
+
 casteljau_status casteljau_map_render_image(const casteljau_map* map, const casteljau_map_style* style,
                                             const casteljau_map_options* options, casteljau_image** out) {
     return create(out, [&] { return map_image(map, style, options); });

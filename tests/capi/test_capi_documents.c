@@ -46,6 +46,19 @@ static int same_pixels(casteljau_image* a, casteljau_image* b) {
     return 1;
 }
 
+/* Whether no channel of a pixel differs by more than `levels`. */
+static int close_pixels(casteljau_image* a, casteljau_image* b, int levels) {
+    int x, y;
+    const int w = casteljau_image_width(a), h = casteljau_image_height(a);
+    if (w != casteljau_image_width(b) || h != casteljau_image_height(b)) return 0;
+    for (y = 0; y < h; ++y)
+        for (x = 0; x < 4 * w; ++x) {
+            const int d = (int)pixel(a, 0, y)[x] - (int)pixel(b, 0, y)[x];
+            if (d > levels || d < -levels) return 0;
+        }
+    return 1;
+}
+
 static void check_svg(void) {
     casteljau_svg_options* options = casteljau_svg_options_create();
     casteljau_svg *doc = NULL, *text = NULL, *bad = (casteljau_svg*)1;
@@ -261,6 +274,28 @@ static void check_map(void) {
     CHECK_OK(casteljau_map_render_image(world, style, options, &image));
     CHECK(same_pixels(image, target));
     CHECK_OK(casteljau_image_write_png(image, in_scratch("capi-world.png")));
+
+    /* A cache kept across renders of the world draws its pixels, to rounding; another map
+     * through it is refused. */
+    {
+        casteljau_map_cache* cache = casteljau_map_cache_create();
+        casteljau_image* cached = NULL;
+        int round;
+        CHECK(cache != NULL);
+        CHECK_OK(casteljau_map_options_set_cache(options, cache));
+        for (round = 0; round < 2; ++round) {
+            CHECK_OK(casteljau_map_render_image(world, style, options, &cached));
+            CHECK(close_pixels(cached, image, 1));
+            casteljau_image_destroy(cached);
+            cached = NULL;
+        }
+        CHECK_ERROR(casteljau_map_render_image(map, style, options, &cached), CASTELJAU_ERROR_INVALID_ARGUMENT,
+                    "MapCache");
+        CHECK(cached == NULL);
+        CHECK_OK(casteljau_map_options_set_cache(options, NULL));
+        casteljau_map_cache_destroy(cache);
+        CHECK_ERROR(casteljau_map_options_set_cache(NULL, NULL), CASTELJAU_ERROR_INVALID_ARGUMENT, "options");
+    }
 
     /* Bad input */
     CHECK_ERROR(casteljau_map_parse("{\"type\": \"Point\", \"coordinates\": [NaN, 1]}", 42, NULL, &bad),

@@ -123,6 +123,21 @@ def check_map():
     if not np.array_equal(canvas.array(), image.array()):
         failures.append("render_map onto a canvas differs from the image")
 
+    # A MapCache kept across renders of one MapData, in two sizes: the pixels of renders without it,
+    # to rounding; another MapData through it is refused.
+    cache = cj.MapCache()
+    look = dict(projection="+proj=robin", fill_by="name", stroke="#4a4a4a", stroke_width=0.6, background="white")
+    for width in (480, 300, 480):
+        plain = cj.render_map(world, width, **look).array().astype(int)
+        kept = cj.render_map(world, width, cache=cache, **look).array().astype(int)
+        if np.abs(plain - kept).max() > 1:
+            failures.append("render_map with a MapCache differs by more than one level at width %d" % width)
+    try:
+        cj.render_map(cj.MapData(WORLD, layer="countries"), 100, cache=cache)
+        failures.append("a MapCache drew another MapData")
+    except ValueError:
+        pass
+
     style = out("style.json")
     with open(style, "w") as f:
         f.write('{"background": "#dfeaf2", "layers": [{"fill": "#c8c8c8", "stroke": "#ffffff", "width": 0.5},'
