@@ -15,34 +15,12 @@
 
 using namespace casteljau;
 using casteljau::testing::compare;
+using casteljau::testing::join;
+using casteljau::testing::polygon;
 using casteljau::testing::render;
+using casteljau::testing::square;
 
 namespace {
-
-Path polygon(std::initializer_list<Point> pts) {
-    Path p;
-    bool first = true;
-    for (Point q : pts) {
-        if (first)
-            p.move_to(q);
-        else
-            p.line_to(q);
-        first = false;
-    }
-    p.close();
-    return p;
-}
-
-Path square(double x0, double y0, double s, bool clockwise = true) {
-    if (clockwise) return polygon({{x0, y0}, {x0 + s, y0}, {x0 + s, y0 + s}, {x0, y0 + s}});
-    return polygon({{x0, y0}, {x0, y0 + s}, {x0 + s, y0 + s}, {x0 + s, y0}});
-}
-
-Path join(const Path& a, const Path& b) {
-    Path p = a;
-    p.append(b);
-    return p;
-}
 
 bool covers(const std::vector<Rect>& boxes, Point p) {
     return std::any_of(boxes.begin(), boxes.end(),

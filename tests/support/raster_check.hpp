@@ -53,9 +53,38 @@ Pixmap coverage_pixmap(const Rendered& r);
 
 }  // namespace casteljau::testing
 
+#include <initializer_list>
 #include <random>
 
 namespace casteljau::testing {
+
+// A closed polygon through `pts`.
+inline Path polygon(std::initializer_list<Point> pts) {
+    Path p;
+    bool first = true;
+    for (Point q : pts) {
+        if (first)
+            p.move_to(q);
+        else
+            p.line_to(q);
+        first = false;
+    }
+    p.close();
+    return p;
+}
+
+// An axis-aligned square of side s from (x0, y0), clockwise on screen (y down) or not.
+inline Path square(double x0, double y0, double s, bool clockwise = true) {
+    if (clockwise) return polygon({{x0, y0}, {x0 + s, y0}, {x0 + s, y0 + s}, {x0, y0 + s}});
+    return polygon({{x0, y0}, {x0, y0 + s}, {x0 + s, y0 + s}, {x0 + s, y0}});
+}
+
+// The contours of a, then those of b.
+inline Path join(const Path& a, const Path& b) {
+    Path p = a;
+    p.append(b);
+    return p;
+}
 
 // Seeded shape generators.
 // A simple polygon (n >= 3): n vertices at jittered angles and random radii in [rmin, rmax] around c.
