@@ -32,7 +32,8 @@
 // Thread-safety: free functions; a MapProjection must not be shared between threads (clone it).
 // render_map() works on up to MapOptions::threads threads of the process-wide pool
 // (casteljau/threads.hpp; each with a clone of the projection) and returns when they are done;
-// MapData is only read.
+// MapData is only read. A MapCache (MapOptions::cache) is written by the renders that use it and
+// may be shared by renders of its map on several threads.
 #pragma once
 
 #include <cstddef>
@@ -106,7 +107,6 @@ MapStyle read_map_style(std::string_view json);
 inline constexpr double kDefaultMapSimplify = 0.0125;
 
 namespace map_detail {
-class FillAnalyses;
 struct MapCacheAccess;
 }  // namespace map_detail
 
