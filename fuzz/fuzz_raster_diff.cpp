@@ -217,15 +217,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             const OverlapRegion region = find_overlap_region(path);
             if (region.topology != Topology::Unknown) {
                 std::vector<Rect> boxes;
-                for (const Rect& b : region.boxes) {
-                    Rect mb{INFINITY, INFINITY, -INFINITY, -INFINITY};
-                    for (Point c : {Point{b.x0, b.y0}, Point{b.x1, b.y0}, Point{b.x0, b.y1}, Point{b.x1, b.y1}}) {
-                        const Point q = m.apply(c);
-                        mb = Rect{std::min(mb.x0, q.x), std::min(mb.y0, q.y), std::max(mb.x1, q.x),
-                                  std::max(mb.y1, q.y)};
-                    }
-                    boxes.push_back(mb);
-                }
+                for (const Rect& b : region.boxes) boxes.push_back(m.map_bounds(b));
                 FillOptions confined = exact;
                 confined.topology = region.topology;
                 confined.overlap_boxes = boxes;

@@ -93,6 +93,8 @@ struct Affine {
     constexpr Point apply(Point p) const { return {a * p.x + c * p.y + e, b * p.x + d * p.y + f}; }
     constexpr Vec apply_vector(Vec v) const { return {a * v.x + c * v.y, b * v.x + d * v.y}; }
     constexpr Point operator()(Point p) const { return apply(p); }
+    // The bounds of rectangle r's four corners mapped (the mapped rectangle's bounds).
+    Rect map_bounds(const Rect& r) const;
 
     // (*this * o).apply(p) == this->apply(o.apply(p)): o is applied first.
     constexpr Affine operator*(const Affine& o) const {

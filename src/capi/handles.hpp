@@ -61,10 +61,10 @@ struct casteljau_map {
 struct casteljau_map_style {
     casteljau::MapStyle style;
 };
-// The image options of `casteljau map`, the projection parsed when it is set.
 struct casteljau_map_cache {
     casteljau::MapCache cache;
 };
+// The image options of `casteljau map`, the projection parsed when it is set.
 struct casteljau_map_options {
     casteljau::MapOptions options;
     casteljau::MapProjection projection;

@@ -21,6 +21,15 @@ void Rect::include(Point p) {
     y1 = std::max(y1, p.y);
 }
 
+Rect Affine::map_bounds(const Rect& r) const {
+    const Point p = apply({r.x0, r.y0});
+    Rect out{p.x, p.y, p.x, p.y};
+    out.include(apply({r.x1, r.y0}));
+    out.include(apply({r.x0, r.y1}));
+    out.include(apply({r.x1, r.y1}));
+    return out;
+}
+
 Affine Affine::rotate(double radians) {
     const double c = std::cos(radians), s = std::sin(radians);
     return {c, s, -s, c, 0, 0};

@@ -97,11 +97,7 @@ double draw_reach(const MapStyle& style) {
 bool reaches_image(const Rect& b, const MapFrame& frame, double reach) {
     if (!(b.x0 <= b.x1) || !(b.y0 <= b.y1)) return false;  // nothing projected
     if (!std::isfinite(b.x0) || !std::isfinite(b.x1) || !std::isfinite(b.y0) || !std::isfinite(b.y1)) return true;
-    Rect r{INFINITY, INFINITY, -INFINITY, -INFINITY};
-    for (Point c : {Point{b.x0, b.y0}, Point{b.x1, b.y0}, Point{b.x0, b.y1}, Point{b.x1, b.y1}}) {
-        const Point p = frame.to_pixel.apply(c);
-        r = Rect{std::min(r.x0, p.x), std::min(r.y0, p.y), std::max(r.x1, p.x), std::max(r.y1, p.y)};
-    }
+    const Rect r = frame.to_pixel.map_bounds(b);
     return r.x1 >= -reach && r.y1 >= -reach && r.x0 <= frame.width + reach && r.y0 <= frame.height + reach;
 }
 
@@ -294,7 +290,7 @@ void MapDrawing::simplify_once() {
             return simplify_map(data_, cache_->nodes(data_), proj_, frame_.to_pixel, opts_.simplify, threads_);
         });
         simplified_ = &held_->map;
-        kept_ = held_->analyses.get();
+        kept_ = &held_->analyses;
         return;
     }
     if (cache_) {

@@ -1,28 +1,15 @@
 // Map stage: each feature's overlap analysis kept across renders (src/map/fill_analyses.hpp).
 #include "map/fill_analyses.hpp"
 
-#include <algorithm>
-#include <cmath>
-
 namespace casteljau::map_detail {
 
 namespace {
-
-// The bounds of box `b` mapped by `m`.
-Rect mapped_box(const Rect& b, const Affine& m) {
-    Rect r{INFINITY, INFINITY, -INFINITY, -INFINITY};
-    for (Point c : {Point{b.x0, b.y0}, Point{b.x1, b.y0}, Point{b.x0, b.y1}, Point{b.x1, b.y1}}) {
-        const Point p = m.apply(c);
-        r = Rect{std::min(r.x0, p.x), std::min(r.y0, p.y), std::max(r.x1, p.x), std::max(r.y1, p.y)};
-    }
-    return r;
-}
 
 OverlapRegion mapped(const OverlapRegion& r, const Affine& m) {
     OverlapRegion out;
     out.topology = r.topology;
     out.boxes.reserve(r.boxes.size());
-    for (const Rect& b : r.boxes) out.boxes.push_back(mapped_box(b, m));
+    for (const Rect& b : r.boxes) out.boxes.push_back(m.map_bounds(b));
     return out;
 }
 

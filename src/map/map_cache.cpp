@@ -38,38 +38,30 @@ const SimplifiedMap& KeptMap::as_is_bounds(const MapData& data, const MapProject
 std::size_t KeptMap::kept() {
     std::lock_guard<std::mutex> lock(mu_);
     std::size_t n = as_is_.kept();
-    for (const auto& s : scaled_)
-        if (s->analyses) n += s->analyses->kept();
+    for (const auto& s : scaled_) n += s->analyses.kept();
     return n;
 }
 
 std::shared_ptr<ScaledMap> KeptMap::scaled(const Affine& m, double simplify,
                                            const std::function<SimplifiedMap()>& make) {
+    const Affine linear{m.a, m.b, m.c, m.d, 0, 0};
     std::shared_ptr<ScaledMap> s;
     {
         std::lock_guard<std::mutex> lock(mu_);
         for (const auto& k : scaled_)
-            if (k->a == m.a && k->b == m.b && k->c == m.c && k->d == m.d && k->simplify == simplify) s = k;
+            if (k->linear == linear && k->simplify == simplify) s = k;
         if (!s) {
             if (scaled_.size() == kMaxScales) {
                 const auto oldest = std::min_element(scaled_.begin(), scaled_.end(),
                                                      [](const auto& x, const auto& y) { return x->used < y->used; });
                 scaled_.erase(oldest);
             }
-            s = std::make_shared<ScaledMap>();
-            s->a = m.a;
-            s->b = m.b;
-            s->c = m.c;
-            s->d = m.d;
-            s->simplify = simplify;
+            s = std::make_shared<ScaledMap>(linear, simplify, as_is_.size());
             scaled_.push_back(s);
         }
         s->used = ++clock_;
     }
-    std::call_once(s->made, [&] {
-        s->map = make();
-        s->analyses = std::make_unique<FillAnalyses>(as_is_.size());
-    });
+    std::call_once(s->made, [&] { s->map = make(); });
     return s;
 }
 

@@ -30,10 +30,12 @@ namespace casteljau::map_detail {
 
 // The data simplified for one output scale, with its fills' analyses.
 struct ScaledMap {
-    double a, b, c, d, simplify;  // the linear part of to_pixel, and the distance in pixels
+    ScaledMap(const Affine& l, double s, std::size_t features) : linear(l), simplify(s), analyses(features) {}
+    Affine linear;    // to_pixel without its translation
+    double simplify;  // the distance, in pixels
     std::once_flag made;
-    SimplifiedMap map;
-    std::unique_ptr<FillAnalyses> analyses;
+    SimplifiedMap map;  // made once, by the first render of this scale
+    FillAnalyses analyses;
     std::uint64_t used = 0;  // KeptMap's clock at its last use
 };
 

@@ -380,16 +380,7 @@ bool draw_color_glyph(Canvas& canvas, const Font& font, std::uint32_t glyph, dou
     const Affine to_pixels = to_device * Affine{s, 0, 0, -s, origin.x, origin.y};
     const Rect b = kind == ColorGlyphKind::Svg ? svg_glyph_bounds(font, glyph) : colr_glyph_bounds(font, glyph);
     if (b.empty()) return true;
-    Rect device;
-    bool first = true;
-    for (Point p : {Point{b.x0, b.y0}, Point{b.x1, b.y0}, Point{b.x0, b.y1}, Point{b.x1, b.y1}}) {
-        const Point q = to_pixels.apply(p);
-        if (first)
-            device = {q.x, q.y, q.x, q.y};
-        else
-            device.include(q);
-        first = false;
-    }
+    const Rect device = to_pixels.map_bounds(b);
     const IRect& clip = canvas.clip();
     const double x0 = std::max(std::floor(device.x0), static_cast<double>(clip.x0));
     const double y0 = std::max(std::floor(device.y0), static_cast<double>(clip.y0));

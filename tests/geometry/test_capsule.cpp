@@ -1,4 +1,4 @@
-// Capsule::contains and Affine::min_scale, against values worked out by hand.
+// Capsule::contains, Affine::min_scale and Affine::map_bounds, against values worked out by hand.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -28,4 +28,16 @@ TEST_CASE("Affine::min_scale: the smaller singular value", "[geometry]") {
     // [1 1; 0 1] (a shear): singular values (sqrt(5) -/+ 1) / 2.
     CHECK(Affine{1, 0, 1, 1, 0, 0}.min_scale() == Approx((std::sqrt(5.0) - 1) / 2));
     CHECK(Affine::scale(1, 0).min_scale() == 0);
+}
+
+TEST_CASE("Affine::map_bounds: the bounds of the four mapped corners", "[geometry]") {
+    const Rect r{1, 2, 4, 6};
+    CHECK(Affine{}.map_bounds(r) == r);
+    CHECK(Affine::translate(10, -1).map_bounds(r) == Rect{11, 1, 14, 5});
+    CHECK(Affine::scale(-2, 0.5).map_bounds(r) == Rect{-8, 1, -2, 3});  // a mirror swaps the ends
+    // A quarter turn: (x, y) -> (-y, x).
+    const Rect q = Affine{0, 1, -1, 0, 0, 0}.map_bounds(r);
+    CHECK(q == Rect{-6, 1, -2, 4});
+    // A shear: (x, y) -> (x + y, y); the corner (4, 6) reaches x = 10, (1, 2) x = 3.
+    CHECK(Affine{1, 0, 1, 1, 0, 0}.map_bounds(r) == Rect{3, 2, 10, 6});
 }

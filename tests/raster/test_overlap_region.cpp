@@ -131,14 +131,7 @@ TEST_CASE("overlap region: boxes found in one frame keep the fill exact in anoth
         for (const Affine& frame : frames) {
             const Affine to_frame = frame * *back;
             std::vector<Rect> boxes;
-            for (const Rect& b : found.boxes) {
-                Rect m{INFINITY, INFINITY, -INFINITY, -INFINITY};
-                for (Point c : {Point{b.x0, b.y0}, Point{b.x1, b.y0}, Point{b.x0, b.y1}, Point{b.x1, b.y1}}) {
-                    const Point q = to_frame.apply(c);
-                    m = Rect{std::min(m.x0, q.x), std::min(m.y0, q.y), std::max(m.x1, q.x), std::max(m.y1, q.y)};
-                }
-                boxes.push_back(m);
-            }
+            for (const Rect& b : found.boxes) boxes.push_back(to_frame.map_bounds(b));
             FillOptions fo;
             fo.winding_sweep = false;
             fo.topology = found.topology;
