@@ -242,13 +242,18 @@ void RowVectorEmitImpl(const RowVectorRows& s, SpanSink& sink) {
     const int N = static_cast<int>(hn::Lanes(d));
     const auto zero = hn::Zero(d);
     for (int r = 0; r < s.h; ++r) {
-        const int from = s.from[r];
-        if (from == INT_MAX) continue;
         float* HWY_RESTRICT row = s.acc + static_cast<std::size_t>(r) * static_cast<std::size_t>(s.stride);
+        // Cells left of a row's first piece hold exactly zero (a piece adds nothing left of it):
+        // the row goes out from its first non-zero cell, and not at all when it has none.
+        int from = INT_MAX;
         for (int i = 0; i < s.stride; i += N) {
-            const auto v = ApplyRule(d, hn::LoadU(d, row + i), s.rule);
+            const auto a = hn::LoadU(d, row + i);
+            if (from == INT_MAX) {
+                const std::intptr_t k = hn::FindFirstTrue(d, hn::Ne(a, zero));
+                if (k >= 0) from = i + static_cast<int>(k);
+            }
             hn::StoreU(zero, d, row + i);
-            StoreCoverage(d, v, s.cov + i);
+            StoreCoverage(d, ApplyRule(d, a, s.rule), s.cov + i);
         }
         if (from < s.w) sink.row(s.oy + r, s.ox + from, s.w - from, s.cov + from);
     }

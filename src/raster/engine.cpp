@@ -175,7 +175,6 @@ void Engine::begin(int w, int h, bool track) {
         vstride_ = std::max(1, (w + lanes - 1) / lanes) * lanes;
         const std::size_t n = static_cast<std::size_t>(vstride_) * static_cast<std::size_t>(h);
         grow_zeroed(facc_, n);
-        row_from_.assign(static_cast<std::size_t>(h), INT_MAX);
         pieces_.clear();
     } else {
         if (fcells_) {
@@ -620,7 +619,7 @@ void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
     if (vec_) {  // no overlap check, so no exact cells
         row_vector_accumulate(pieces_.data(), pieces_.size(), facc_.data(), vstride_);
         if (cov_.size() < static_cast<std::size_t>(vstride_)) cov_.resize(static_cast<std::size_t>(vstride_));
-        const RowVectorRows rows{facc_.data(), vstride_, w_, h_, row_from_.data(), rule, cov_.data(), ox, oy};
+        const RowVectorRows rows{facc_.data(), vstride_, w_, h_, rule, cov_.data(), ox, oy};
         row_vector_emit(rows, sink);
         dirty_ = false;
         return;

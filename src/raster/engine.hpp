@@ -144,7 +144,6 @@ private:
     int vstride_ = 0;                    // floats per row of facc_ (w rounded up to whole vectors)
     platform::LargeVector<float> facc_;  // row vectors or float cells, all zero between shapes
     AppendList<RowPiece> pieces_;
-    std::vector<int> row_from_;                 // per row: first column a piece touches (INT_MAX: none)
     bool dirty_ = false;                        // buffers may hold data from an interrupted shape
     platform::LargeVector<double> acc_;         // cover/area, (w + 2) x h, all zero between shapes
     platform::LargeVector<std::int32_t> head_;  // per cell: last visit + 1 (0: none), all zero between shapes
@@ -406,14 +405,12 @@ template <bool kTrack, class T>
 [[gnu::always_inline]] inline void Engine::list_pieces(double x0, double y0, double x1, double y1) {
     if (y0 == y1) return;  // no cover
     RowPiece* out = pieces_.room(static_cast<std::size_t>(std::abs(y1 - y0)) + 2);
-    int* const from = row_from_.data();
     for_each_row(
         x0, y0, x1, y1, [&](int r, double xa, double ya, double xb, double yb) __attribute__((always_inline)) {
-            // Selects, not branches: the order of xa and xb and the row's leftmost piece follow
-            // the outline, which a branch predictor cannot.
+            // Selects, not branches: the order of xa and xb follows the outline, which a branch
+            // predictor cannot.
             const double xl = std::min(xa, xb), xr = std::max(xa, xb);
             *out++ = {static_cast<float>(xl), static_cast<float>(xr), static_cast<float>(yb - ya), r};  // k: dy
-            from[r] = std::min(from[r], floor_nn(xl));
         });
     pieces_.commit(out);
 }

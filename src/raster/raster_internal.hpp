@@ -201,7 +201,6 @@ void row_vector_accumulate(RowPiece* pieces, std::size_t n, float* acc, int stri
 struct RowVectorRows {
     float* acc;
     int stride, w, h;
-    const int* from;
     FillRule rule;
     std::uint8_t* cov;
     int ox, oy;
