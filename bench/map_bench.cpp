@@ -1,10 +1,12 @@
 // bench/map_bench: filling a world map, casteljau side by side with AGG and Cairo in one process.
 //
-// Usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME] [--profile render_map|cached|agg|both|both-cached]
+// Usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME]
+//                  [--profile render_map|cached|agg|both|both-cached|analysis]
 //   (FILE: GeoJSON or TopoJSON; bench/setup_map_data.sh installs world-atlas 10m from npm.)
 //   --profile runs one case alone, render_map's fill (with a MapCache kept across the rounds:
-//   "cached") or AGG's, for a profiler; "both" ("both-cached") times render_map (with a MapCache)
-//   and AGG in turn in one process.
+//   "cached"), AGG's, or the overlap analysis of every feature ("analysis": find_overlap_region,
+//   which a MapCache runs once per feature), for a profiler; "both" ("both-cached") times
+//   render_map (with a MapCache) and AGG in turn in one process.
 // The map is read and projected (equirectangular, --bbox -180,-90,180,90 onto width x width/2)
 // once, outside the timed region, into pixel-space polygons per feature (antimeridian split with
 // casteljau's public split_ring_at_antimeridian). Timed, per round (thread CPU time, best of
@@ -20,7 +22,8 @@
 //                 AGG conv_stroke per feature, Cairo cairo_stroke per feature.
 //   render_map:   casteljau's whole map stage from MapData (projection + paths + seamless + strokes),
 //                 into a new Pixmap and into one kept across the rounds (cleared by each render);
-//                 with a MapCache, the first render of a new cache and the renders with one kept.
+//                 with a MapCache, the first render of a new cache and the renders with one kept;
+//                 the overlap analysis alone (find_overlap_region of every feature in pixels).
 //   threads:      render_map fill on 1 and 2 threads, wall time, into a new and into a kept Pixmap.
 // Prints peak RSS at the end. Exits 1 when the fills with a topology verdict differ from the
 // exact cells, or the borders stroked once from the union of every ring's stroke, by more than
@@ -180,7 +183,7 @@ int run(int argc, char** argv) {
     auto usage = [] {
         std::fprintf(stderr,
                      "usage: map_bench FILE [--width 4096] [--rounds 5] [--layer NAME] [--profile "
-                     "render_map|cached|agg|both|both-cached]\n");
+                     "render_map|cached|agg|both|both-cached|analysis]\n");
         return 2;
     };
     if (argc < 2 || argv[1][0] == '-') return usage();
@@ -201,7 +204,7 @@ int run(int argc, char** argv) {
     }
     if (W < 2 || rounds < 1 ||
         !(profile.empty() || profile == "render_map" || profile == "cached" || profile == "agg" || profile == "both" ||
-          profile == "both-cached"))
+          profile == "both-cached" || profile == "analysis"))
         return usage();
     const int H = W / 2;
     const auto bytes = read_file(argv[1]);
@@ -237,6 +240,22 @@ int run(int argc, char** argv) {
     std::printf("map_bench: %s, %zu features, %zu vertices, %d x %d, best of %d rounds (thread CPU time)\n", argv[1],
                 features.size(), vertices, W, H, rounds);
 
+    // The overlap analysis of every feature's rings in pixels: what a MapCache's first render adds
+    // (it analyses render_map's own paths of the same rings). The count of boxes found must be the
+    // same in every round.
+    std::size_t analysis_boxes = 0;
+    auto analyse = [&] {
+        std::size_t n = 0;
+        for (const Path& p : paths) n += find_overlap_region(p).boxes.size();
+        if (analysis_boxes != 0 && n != analysis_boxes) std::abort();
+        analysis_boxes = n;
+    };
+    if (profile == "analysis") {
+        const double t = best_of(rounds, analyse);
+        std::printf("profile find_overlap_region: best of %d rounds %.2f ms, %zu boxes\n", rounds, t * 1e3,
+                    analysis_boxes);
+        return 0;
+    }
     if (!profile.empty()) return run_profile(profile, data, features, W, H, rounds);
 
     Pixmap pm(W, H);
@@ -401,6 +420,7 @@ int run(int argc, char** argv) {
     const Pixmap with_cache = render_map(data, eq, style, mo);
     const double t_map_cached = best_of(rounds, [&] { (void)render_map(data, eq, style, mo); });
     const double t_map_cached_reused = best_of(rounds, [&] { render_map(data, eq, frame, style, mo, reused); });
+    const double t_analysis = best_of(rounds, analyse);
     mo.cache = nullptr;
     const Pixmap without_cache = render_map(data, eq, style, mo);
     // Both exact: a pixel the analysis proves plain where the per-cell check computed it again
@@ -449,6 +469,7 @@ int run(int argc, char** argv) {
     row("render_map fill, first render, new MapCache", t_map_first, peer_fill);
     row("render_map fill, MapCache kept", t_map_cached, peer_fill);
     row("render_map fill, MapCache kept, kept Pixmap", t_map_cached_reused, peer_fill);
+    row("  find_overlap_region alone", t_analysis, peer_fill);
     row("render_map fill+stroke", t_map_stroke, peer_stroke);
     row("render_map fill+stroke, into a kept Pixmap", t_map_stroke_reused, peer_stroke);
     for (int kept : {0, 1})
