@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -370,6 +371,63 @@ TEST_CASE("Seamless: earlier fills take precedence where fills overlap", "[map][
     CHECK(pm.pixel(1, 1) == PremulPixel{255, 0, 0, 255});
     CHECK(pm.pixel(6, 1) == PremulPixel{0, 0, 255, 255});
     CHECK(pm.pixel(4, 1) == PremulPixel{128, 0, 127, 255});  // half red, half blue, no white
+}
+
+// The model of seamless.hpp, pixel by pixel from each fill's own coverage: c_i = min(coverage_i,
+// 1 - taken), the last 1/255 given when a later fill would leave exactly 1/255, and the layer adds c_i
+// times the premultiplied colour (rounded per channel, clamped to the alpha). Opaque and
+// translucent fills in random order and positions, so that rows go from the layer's alpha to the
+// coverage plane at every stage of their fills.
+TEST_CASE("Seamless: opaque and translucent fills in any order give the model's coverage and pixels",
+          "[map][seamless]") {
+    auto mul = [](unsigned a, unsigned b) { return (a * b + 127) / 255; };  // round(a b / 255)
+    std::mt19937 rng(33);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Rasterizer raster;
+    const int W = 40, H = 24;
+    for (int trial = 0; trial < 60; ++trial) {
+        SeamlessCompositor ac(W, H);
+        std::vector<unsigned> taken(W * H, 0);
+        std::vector<std::array<unsigned, 4>> layer(W * H, {0, 0, 0, 0});
+        const int fills = 2 + static_cast<int>(u(rng) * 6);
+        for (int f = 0; f < fills; ++f) {
+            const double x0 = u(rng) * 30, y0 = u(rng) * 18, x1 = x0 + 2 + u(rng) * 20, y1 = y0 + 2 + u(rng) * 10;
+            Path p;
+            p.move_to(x0, y0).line_to(x1, y0 + u(rng) * 3).line_to(x1 - u(rng) * 2, y1).line_to(x0, y1).close();
+            const bool opaque = u(rng) < 0.6;
+            const Color col = Color::rgba(
+                static_cast<std::uint8_t>(u(rng) * 255), static_cast<std::uint8_t>(u(rng) * 255),
+                static_cast<std::uint8_t>(u(rng) * 255), opaque ? 255 : static_cast<std::uint8_t>(40 + u(rng) * 200));
+            ac.add(raster, p, FillOptions{}, col);
+            const PremulPixel c = premultiply(col);
+            const Mask m = raster.fill_mask(p, Affine{}, FillOptions{}, IRect{0, 0, W, H});
+            for (int y = 0; y < H; ++y)
+                for (int x = 0; x < W; ++x) {
+                    const unsigned a = m.at(x, y);
+                    unsigned& t = taken[static_cast<std::size_t>(y * W + x)];
+                    auto& l = layer[static_cast<std::size_t>(y * W + x)];
+                    if (a == 0 || t == 255) continue;
+                    const unsigned rem = 255 - t;
+                    unsigned take = std::min(a, rem);
+                    if (t > 0 && take + 1 == rem) take = rem;  // a second fill meeting the first
+                    t += take;
+                    const unsigned na = std::min(255u, l[3] + mul(take, c.a));
+                    l = {std::min(na, l[0] + mul(take, c.r)), std::min(na, l[1] + mul(take, c.g)),
+                         std::min(na, l[2] + mul(take, c.b)), na};
+                }
+        }
+        Pixmap pm(W, H);
+        ac.composite_onto(pm);  // onto transparent: the layer itself
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const auto& l = layer[static_cast<std::size_t>(y * W + x)];
+                INFO("trial " << trial << ", pixel (" << x << ", " << y << ")");
+                REQUIRE(int(ac.taken(x, y)) == int(taken[static_cast<std::size_t>(y * W + x)]));
+                REQUIRE(pm.pixel(x, y) == PremulPixel{static_cast<std::uint8_t>(l[0]), static_cast<std::uint8_t>(l[1]),
+                                                      static_cast<std::uint8_t>(l[2]),
+                                                      static_cast<std::uint8_t>(l[3])});
+            }
+    }
 }
 
 TEST_CASE("Seamless: reset() and clear() forget every earlier fill, composite_onto() leaves untouched rows alone",
