@@ -27,7 +27,9 @@
 //      far square of 6: within 1/255 of the exact cells;
 //   8. for straight-edged paths, the overlap check confined to find_overlap_region's boxes (found
 //      on the untransformed path, mapped by the transform; plain accumulation for a path it
-//      proves Simple): within 1/255 of the exact cells.
+//      proves Simple): within 1/255 of the exact cells;
+//   9. the exact cells with a far square that makes the overlap check take bands of 27 rows
+//      across the path: within 1/255 of the exact cells in one dense buffer.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -58,15 +60,16 @@ struct Reader {
     }
 };
 
-// The path mapped by m, with a 1 x 1 square at x = 600: a box too wide for the row vectors, so
-// plain accumulation takes the float cells.
-Path with_far_square(const Path& path, const Affine& m) {
+// The path mapped by m, with a 1 x 1 square at x = far: at 600 a box too wide for the row
+// vectors, so plain accumulation takes the float cells; at 1200 a box of more cells than the
+// overlap check takes in one dense buffer, so it takes bands of 27 rows.
+Path with_far_square(const Path& path, const Affine& m, double far = 600) {
     Path wide;
     wide.append(path, m);
-    wide.move_to({600, 0});
-    wide.line_to({601, 0});
-    wide.line_to({601, 1});
-    wide.line_to({600, 1});
+    wide.move_to({far, 0});
+    wide.line_to({far + 1, 0});
+    wide.line_to({far + 1, 1});
+    wide.line_to({far, 1});
     wide.close();
     return wide;
 }
@@ -159,6 +162,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         // Exact everywhere: no cell fell back to lines or to accumulation for want of budget.
         const bool all_exact = r.last_stats().dense_cells == 0 && r.last_stats().accumulated_cells == 0;
         expect_close("default vs exact cells", fast, cells);
+        expect_close("the exact cells in bands vs exact cells",
+                     r.fill_mask(with_far_square(path, m, 1200), Affine{}, exact, IRect{0, 0, 1210, kSize}), cells);
         // The verdict: a path classify_topology proves simple, filled with that verdict (plain
         // accumulation) and with exact overlaps off, must match the exact cells.
         if (verdict == Topology::Simple || classify_topology(path) == Topology::Simple) {

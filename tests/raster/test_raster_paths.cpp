@@ -75,6 +75,38 @@ TEST_CASE("raster paths: banded and dense storage (tiles, clipped) agree", "[ras
     }
 }
 
+TEST_CASE("raster paths: the overlap check takes smaller bands than plain accumulation, with the same pixels",
+          "[raster]") {
+    // A self-crossing star, and the same star with a dot 1200 px to its right: a box of 1201 x 80
+    // cells, one dense buffer for plain accumulation (at most 2^18 cells) but bands of 27 rows
+    // for the overlap check (at most 2^15 cells).
+    Path star;
+    star.add_polygon(star_polygon({40, 40}, 38, 7, 3, 0.3));
+    Path wide = star;
+    wide.add_rect(Rect{1200, 10, 1201, 11});
+    Rasterizer r;
+    FillOptions exact;
+    exact.topology = Topology::Overlapping;
+    exact.winding_sweep = false;
+    for (FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
+        exact.rule = rule;
+        const Mask alone = r.fill_mask(star, Affine{}, exact, IRect{0, 0, 80, 80});
+        CHECK(r.last_stats().strips == 1);
+        const Mask banded = r.fill_mask(wide, Affine{}, exact, IRect{0, 0, 1210, 80});
+        CHECK(r.last_stats().strips >= 3);
+        FillOptions plain = exact;
+        plain.topology = Topology::Unknown;
+        plain.exact_overlaps = false;
+        (void)r.fill_mask(wide, Affine{}, plain, IRect{0, 0, 1210, 80});
+        CHECK(r.last_stats().strips == 1);
+        int worst = 0;
+        for (int y = 0; y < 80; ++y)
+            for (int x = 0; x < 80; ++x) worst = std::max(worst, std::abs(banded.at(x, y) - alone.at(x, y)));
+        CHECK(worst <= 1);
+        CHECK(alone.at(40, 40) > 0);
+    }
+}
+
 TEST_CASE("raster paths: a sink that throws leaves the rasterizer usable", "[raster]") {
     struct Throwing : SpanSink {
         int rows = 0;
