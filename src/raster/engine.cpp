@@ -200,11 +200,14 @@ void Engine::begin(int w, int h, bool track) {
     px_ = py_ = NAN;
 }
 
-void Engine::clear_region() {
+void Engine::mark_region(std::uint8_t value) {
     for (const IRect& r : region_rects_)
         for (int y = r.y0; y < r.y1; ++y)
-            std::fill_n(region_.data() + static_cast<std::size_t>(y) * region_stride_ + r.x0, r.x1 - r.x0,
-                        std::uint8_t(0));
+            std::fill_n(region_.data() + static_cast<std::size_t>(y) * region_stride_ + r.x0, r.x1 - r.x0, value);
+}
+
+void Engine::clear_region() {
+    mark_region(0);
     region_rects_.clear();
     region_on_ = false;
 }
@@ -234,9 +237,7 @@ void Engine::set_region(std::span<const Rect> boxes, double dx, double dy) {
     grow_zeroed(region_, stride_ * static_cast<std::size_t>(h_));
     region_on_ = true;
     region_stride_ = stride_;
-    for (const IRect& r : region_rects_)
-        for (int y = r.y0; y < r.y1; ++y)
-            std::fill_n(region_.data() + static_cast<std::size_t>(y) * stride_ + r.x0, r.x1 - r.x0, std::uint8_t(1));
+    mark_region(1);
 }
 
 void Engine::contour_end() {

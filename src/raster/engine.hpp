@@ -154,6 +154,7 @@ private:
     std::vector<IRect> region_rects_;
     std::size_t region_stride_ = 0;
     bool region_on_ = false;
+    void mark_region(std::uint8_t value);  // region_ set to value in region_rects_
     void clear_region();
     // Touched cells, per row, in blocks of kBlock cells: bit b of the row's words is block b. The
     // scan only sums touched blocks; between them the coverage is constant.
