@@ -115,6 +115,7 @@ private:
         cy1_ = p.y > cy1_ ? p.y : cy1_;
     }
     void recompute_cache();
+    void include_all(std::span<const Point> pts);  // include() for each of pts
     std::vector<Verb> verbs_;
     std::vector<Point> points_;
     std::vector<double> weights_;

@@ -20,12 +20,21 @@ double ring_area2(std::span<const Point> r) {
     return s;
 }
 
-// Whether some step of the ring or line goes more than half way round (split_ring_at_antimeridian
-// then cuts it).
-bool crosses_antimeridian(std::span<const Point> r) {
-    for (std::size_t i = 1; i < r.size(); ++i)
-        if (std::fabs(r[i].x - r[i - 1].x) > 180) return true;
-    return false;
+// Whether some step of the ring goes more than half way round (split_ring_at_antimeridian then
+// cuts it), and ring_area2, in one pass over it.
+struct RingScan {
+    bool crosses = false;
+    double area2 = 0;
+};
+RingScan scan_ring(std::span<const Point> r) {
+    RingScan s;
+    const std::size_t n = r.size();
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        s.crosses = s.crosses || std::fabs(r[i + 1].x - r[i].x) > 180;
+        s.area2 += r[i].x * r[i + 1].y - r[i + 1].x * r[i].y;
+    }
+    if (n > 0) s.area2 += r[n - 1].x * r[0].y - r[0].x * r[n - 1].y;
+    return s;
 }
 
 }  // namespace
@@ -78,28 +87,32 @@ void Projector::geometry(const Geometry& g, PieceVisitor& v) const {
             const std::uint32_t end = g.ring_ends[ring];
             std::span<const Point> r = std::span<const Point>(g.points).subspan(start, end - start);
             start = end;
-            if (!crosses_antimeridian(r)) {
+            const RingScan scan = scan_ring(r);
+            if (!scan.crosses) {
                 // What split_ring_at_antimeridian gives such a ring, without its copies: the
-                // ring less its repeated closing position.
+                // ring less its repeated closing position (which adds nothing to the area).
                 if (r.size() < 3) continue;
                 if (r.front() == r.back()) r = r.first(r.size() - 1);
-                ring_piece(r, exterior, v);
+                ring_piece(r, exterior, scan.area2, v);
                 continue;
             }
             pieces_.clear();
             split_ring_at_antimeridian(r, pieces_);
-            for (const auto& piece : pieces_) ring_piece(piece, exterior, v);
+            for (const auto& piece : pieces_) ring_piece(piece, exterior, ring_area2(piece), v);
         }
     }
 }
 
 // One piece of a ring: oriented (exteriors counter-clockwise in lon/lat, positive area; holes
 // clockwise), projected, handed to the visitor.
-void Projector::ring_piece(std::span<const Point> r, bool exterior, PieceVisitor& v) const {
-    const double a = ring_area2(r);
-    if ((exterior && a < 0) || (!exterior && a > 0)) {
+void Projector::ring_piece(std::span<const Point> r, bool exterior, double area2, PieceVisitor& v) const {
+    if ((exterior && area2 < 0) || (!exterior && area2 > 0)) {
         reversed_.assign(r.rbegin(), r.rend());
         r = reversed_;
+    }
+    if (proj_.kind() == MapProjection::Kind::Equirectangular) {  // the identity, all positions kept
+        if (r.size() >= 3) v.ring(r);
+        return;
     }
     project(r, true, projected_);
     if (projected_.size() >= 3) v.ring(projected_);
@@ -123,9 +136,14 @@ void append_segments(const Path& path, double tolerance, Polyline& flat, std::ve
     }
 }
 
-void PathVisitor::ring(const std::vector<Point>& pts) {
-    mapped.resize(pts.size());
-    for (std::size_t i = 0; i < pts.size(); ++i) mapped[i] = m.apply(pts[i]);
+void PathVisitor::ring(std::span<const Point> pts) {
+    if (fill_only && !ring_segments) {
+        map_without_spikes(pts, m, mapped);
+        if (mapped.size() < 3) return;
+    } else {
+        mapped.resize(pts.size());
+        for (std::size_t i = 0; i < pts.size(); ++i) mapped[i] = m.apply(pts[i]);
+    }
     if (ring_segments) {
         if (!stroke_clip || inside(mapped, *stroke_clip)) {
             append_polyline_segments(mapped, true, *ring_segments);
@@ -134,7 +152,7 @@ void PathVisitor::ring(const std::vector<Point>& pts) {
             if (clipped.size() >= 3) append_polyline_segments(clipped, true, *ring_segments);
         }
     }
-    if (fill_only) {
+    if (fill_only && ring_segments) {
         drop_spikes(mapped);
         if (mapped.size() < 3) return;
     }

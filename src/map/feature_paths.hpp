@@ -24,7 +24,7 @@ namespace casteljau::map_detail {
 // Receives the projected pieces of one geometry.
 struct PieceVisitor {
     virtual ~PieceVisitor() = default;
-    virtual void ring(const std::vector<Point>& pts) = 0;
+    virtual void ring(std::span<const Point> pts) = 0;
     virtual void line(const std::vector<Point>& pts) = 0;
     virtual void point(Point p) = 0;
 };
@@ -39,7 +39,8 @@ public:
     void geometry(const Geometry& g, PieceVisitor& v) const;
 
 private:
-    void ring_piece(std::span<const Point> r, bool exterior, PieceVisitor& v) const;
+    // `area2`: twice the piece's signed area in lon/lat (its orientation).
+    void ring_piece(std::span<const Point> r, bool exterior, double area2, PieceVisitor& v) const;
 
     const MapProjection& proj_;
     bool densify_;
@@ -57,7 +58,7 @@ struct BoundsVisitor final : PieceVisitor {
         r.x1 = std::max(r.x1, p.x);
         r.y1 = std::max(r.y1, p.y);
     }
-    void ring(const std::vector<Point>& pts) override {
+    void ring(std::span<const Point> pts) override {
         for (const Point& p : pts) add(p);
     }
     void line(const std::vector<Point>& pts) override {
@@ -93,7 +94,7 @@ struct PathVisitor final : PieceVisitor {
     std::optional<Rect> stroke_clip;
     double disk_tolerance = 0;
     Polyline flat;
-    void ring(const std::vector<Point>& pts) override;
+    void ring(std::span<const Point> pts) override;
     void line(const std::vector<Point>& pts) override;
     void point(Point p) override;
 };

@@ -3,12 +3,18 @@
 
 namespace casteljau::map_detail {
 
-void drop_spikes(std::vector<Point>& r) {
+namespace {
+
+// The stack pass of drop_spikes over the positions at(0), ..., at(n - 1), written into `r` (which
+// may be where they are read from: the stack never gets ahead of the reading). Returns the
+// positions kept.
+template <class At>
+std::size_t stack_spikes(std::size_t n, At&& at, std::vector<Point>& r) {
     // One pass keeps a stack of the positions so far: a repeat of the top is dropped, a return to
     // the position under the top drops the top (the tip of a spike).
     std::size_t k = 0;
-    for (std::size_t i = 0; i < r.size(); ++i) {
-        const Point p = r[i];
+    for (std::size_t i = 0; i < n; ++i) {
+        const Point p = at(i);
         if (k > 0 && r[k - 1] == p) continue;
         if (k > 1 && r[k - 2] == p) {
             --k;
@@ -16,6 +22,11 @@ void drop_spikes(std::vector<Point>& r) {
         }
         r[k++] = p;
     }
+    return k;
+}
+
+// The rest of drop_spikes once the first k positions of r are the stack's.
+void close_spikes(std::vector<Point>& r, std::size_t k) {
     // Across the start, where the ring closes: [s, k) is what remains.
     std::size_t s = 0;
     while (k - s >= 3) {
@@ -35,6 +46,19 @@ void drop_spikes(std::vector<Point>& r) {
     }
     r.erase(r.begin() + static_cast<std::ptrdiff_t>(k), r.end());
     r.erase(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(s));
+}
+
+}  // namespace
+
+void drop_spikes(std::vector<Point>& r) {
+    close_spikes(r, stack_spikes(
+                        r.size(), [&](std::size_t i) { return r[i]; }, r));
+}
+
+void map_without_spikes(std::span<const Point> in, const Affine& m, std::vector<Point>& out) {
+    out.resize(in.size());
+    close_spikes(out, stack_spikes(
+                          in.size(), [&](std::size_t i) { return m.apply(in[i]); }, out));
 }
 
 }  // namespace casteljau::map_detail

@@ -10,6 +10,7 @@
 // Thread-safety: a free function.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "casteljau/geometry.hpp"
@@ -21,5 +22,9 @@ namespace casteljau::map_detail {
 // those left when an inner one goes (A, B, C, B, A becomes A). Fewer than three positions left:
 // the ring is emptied (it enclosed nothing).
 void drop_spikes(std::vector<Point>& r);
+
+// The ring `in` mapped by `m` into `out` without its spikes: drop_spikes of the mapped ring, in one
+// pass over it.
+void map_without_spikes(std::span<const Point> in, const Affine& m, std::vector<Point>& out);
 
 }  // namespace casteljau::map_detail

@@ -91,7 +91,25 @@ void Path::recompute_cache() {
     cx0_ = cy0_ = INFINITY;
     cx1_ = cy1_ = -INFINITY;
     finite_ = true;
-    for (const Point& p : points_) include(p);
+    include_all(points_);
+}
+
+void Path::include_all(std::span<const Point> pts) {
+    // include() for each point, with the running values in registers. A coordinate times zero is
+    // zero when it is finite and NaN when it is not, so their sum says whether all were finite.
+    double x0 = cx0_, y0 = cy0_, x1 = cx1_, y1 = cy1_, zero = 0;
+    for (const Point& p : pts) {
+        zero += p.x * 0.0 + p.y * 0.0;
+        x0 = p.x < x0 ? p.x : x0;
+        y0 = p.y < y0 ? p.y : y0;
+        x1 = p.x > x1 ? p.x : x1;
+        y1 = p.y > y1 ? p.y : y1;
+    }
+    cx0_ = x0;
+    cy0_ = y0;
+    cx1_ = x1;
+    cy1_ = y1;
+    finite_ = finite_ && zero == 0;
 }
 
 std::size_t Path::contour_count() const {
@@ -140,9 +158,11 @@ Path& Path::add_round_rect(const Rect& r, double rx, double ry) {
 Path& Path::add_polygon(std::span<const Point> pts, bool close_it) {
     if (pts.empty()) return *this;
     move_to(pts[0]);
-    // The lines in one piece: what line_to does for each point once the contour is open.
+    // The lines in one piece: what line_to does for each point once the contour is open, with the
+    // bounds and finiteness taken in one loop over the new points.
     verbs_.insert(verbs_.end(), pts.size() - 1, Verb::Line);
-    for (std::size_t i = 1; i < pts.size(); ++i) push_point(pts[i]);
+    points_.insert(points_.end(), pts.begin() + 1, pts.end());
+    include_all(pts.subspan(1));
     current_ = pts.back();
     if (close_it) close();
     return *this;

@@ -483,6 +483,22 @@ TEST_CASE("drop_spikes: steps out and straight back leave a ring, nothing else d
     CHECK(spikes_out({}).empty());
 }
 
+TEST_CASE("map_without_spikes: the mapped ring without its spikes, as drop_spikes leaves it", "[map][simplify]") {
+    std::mt19937 rng(11);
+    for (int iter = 0; iter < 300; ++iter) {
+        // Positions from a small grid, so that repeats, spikes and returns across the start are common.
+        std::vector<Point> ring(rng() % 9);
+        for (Point& p : ring) p = Point{double(rng() % 4), double(rng() % 4)};
+        const Affine m = Affine::translate(0.5 * (rng() % 7), -3) * Affine::scale(1.5, -0.25 * (1 + rng() % 4));
+        std::vector<Point> want(ring.size());
+        for (std::size_t i = 0; i < ring.size(); ++i) want[i] = m.apply(ring[i]);
+        map_detail::drop_spikes(want);
+        std::vector<Point> got{{9, 9}};  // what the output held before is replaced
+        map_detail::map_without_spikes(ring, m, got);
+        REQUIRE(got == want);
+    }
+}
+
 TEST_CASE("Maps: a polygon with spikes fills as without them, and its stroke keeps them", "[map][simplify]") {
     const char* with =
         R"({"type":"Polygon","coordinates":[[[0,0],[10,0],[15,3],[10,0],[10,10],[0,10],[-4,12],[0,10],[0,0]]]})";

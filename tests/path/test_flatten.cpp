@@ -557,6 +557,18 @@ TEST_CASE("Path: control bounds and finiteness are kept up to date as the path c
     CHECK(p.control_bounds() == Rect{0, 0, 10, 5});
     p.line_to(INFINITY, 0);
     CHECK_FALSE(p.is_finite());
+    // add_polygon takes its points' bounds and finiteness in one piece: a NaN or an infinity
+    // anywhere among them makes the path not finite, and a NaN leaves the bounds of the others.
+    for (double bad : {double(NAN), double(INFINITY), -double(INFINITY)}) {
+        for (std::size_t at = 0; at < 4; ++at) {
+            std::vector<Point> pts{{1, 2}, {-3, 4}, {5, -6}, {7, 8}};
+            pts[at] = Point{bad, bad};
+            Path q;
+            q.add_polygon(pts);
+            CHECK_FALSE(q.is_finite());
+            if (std::isnan(bad)) CHECK(q.control_bounds() == loop_bounds(q));
+        }
+    }
     Polyline pl;
     CHECK_THROWS_AS(flatten(p, Affine::scale(2), 0.05, pl), Error);  // the O(1) path sees it too
     p.clear();
