@@ -50,7 +50,7 @@ public:
     // reports an error or a non-finite result).
     bool project(Point lonlat, Point& out) const {
         if (kind_ == Kind::Equirectangular) {
-            out = lonlat;  // the identity, inline: maps project every position, often three times
+            out = lonlat;  // the identity, inline: a map projects every position more than once
             return true;
         }
         // By value, so that the caller's `out` need not live in memory (reading it back right
