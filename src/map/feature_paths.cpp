@@ -12,16 +12,8 @@ namespace casteljau::map_detail {
 
 namespace {
 
-double ring_area2(std::span<const Point> r) {
-    double s = 0;
-    const std::size_t n = r.size();
-    for (std::size_t i = 0; i + 1 < n; ++i) s += r[i].x * r[i + 1].y - r[i + 1].x * r[i].y;
-    if (n > 0) s += r[n - 1].x * r[0].y - r[0].x * r[n - 1].y;
-    return s;
-}
-
 // Whether some step of the ring goes more than half way round (split_ring_at_antimeridian then
-// cuts it), and ring_area2, in one pass over it.
+// cuts it), and twice its signed area (its orientation), in one pass over it.
 struct RingScan {
     bool crosses = false;
     double area2 = 0;
@@ -39,7 +31,9 @@ RingScan scan_ring(std::span<const Point> r) {
 
 }  // namespace
 
-void Projector::project(std::span<const Point> in, bool closed, std::vector<Point>& out) const {
+std::span<const Point> Projector::projected(std::span<const Point> in, bool closed) const {
+    if (proj_.kind() == MapProjection::Kind::Equirectangular) return in;  // the identity: no copy
+    std::vector<Point>& out = projected_;
     out.clear();
     out.reserve(in.size());
     Point q;
@@ -48,7 +42,7 @@ void Projector::project(std::span<const Point> in, bool closed, std::vector<Poin
     if (!densify_) {
         for (const Point& p : in)
             if (proj_.project(p, q)) out.push_back(q);
-        return;
+        return out;
     }
     for (std::size_t i = 0; i < n; ++i) {
         if (proj_.project(in[i], q)) out.push_back(q);
@@ -59,6 +53,7 @@ void Projector::project(std::span<const Point> in, bool closed, std::vector<Poin
         for (int s = 1; s < steps && steps <= 4096; ++s)
             if (proj_.project(lerp(a, b, static_cast<double>(s) / steps), q)) out.push_back(q);
     }
+    return out;
 }
 
 void Projector::geometry(const Geometry& g, PieceVisitor& v) const {
@@ -74,8 +69,8 @@ void Projector::geometry(const Geometry& g, PieceVisitor& v) const {
             pieces_.clear();
             split_line_at_antimeridian(std::span<const Point>(g.points).subspan(start, end - start), pieces_);
             for (const auto& piece : pieces_) {
-                project(piece, false, projected_);
-                if (projected_.size() >= 2) v.line(projected_);
+                const std::span<const Point> line = projected(piece, false);
+                if (line.size() >= 2) v.line(line);
             }
             start = end;
         }
@@ -98,7 +93,7 @@ void Projector::geometry(const Geometry& g, PieceVisitor& v) const {
             }
             pieces_.clear();
             split_ring_at_antimeridian(r, pieces_);
-            for (const auto& piece : pieces_) ring_piece(piece, exterior, ring_area2(piece), v);
+            for (const auto& piece : pieces_) ring_piece(piece, exterior, scan_ring(piece).area2, v);
         }
     }
 }
@@ -110,12 +105,8 @@ void Projector::ring_piece(std::span<const Point> r, bool exterior, double area2
         reversed_.assign(r.rbegin(), r.rend());
         r = reversed_;
     }
-    if (proj_.kind() == MapProjection::Kind::Equirectangular) {  // the identity, all positions kept
-        if (r.size() >= 3) v.ring(r);
-        return;
-    }
-    project(r, true, projected_);
-    if (projected_.size() >= 3) v.ring(projected_);
+    const std::span<const Point> ring = projected(r, true);
+    if (ring.size() >= 3) v.ring(ring);
 }
 
 void append_polyline_segments(std::span<const Point> pts, bool closed, std::vector<LineSegment>& out) {
@@ -136,26 +127,27 @@ void append_segments(const Path& path, double tolerance, Polyline& flat, std::ve
     }
 }
 
+void PathVisitor::map_all(std::span<const Point> pts) {
+    mapped.resize(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) mapped[i] = m.apply(pts[i]);
+}
+
 void PathVisitor::ring(std::span<const Point> pts) {
-    if (fill_only && !ring_segments) {
-        map_without_spikes(pts, m, mapped);
-        if (mapped.size() < 3) return;
-    } else {
-        mapped.resize(pts.size());
-        for (std::size_t i = 0; i < pts.size(); ++i) mapped[i] = m.apply(pts[i]);
-    }
     if (ring_segments) {
+        map_all(pts);  // the stroke keeps the spikes
         if (!stroke_clip || inside(mapped, *stroke_clip)) {
             append_polyline_segments(mapped, true, *ring_segments);
         } else {
             clip_ring(mapped, *stroke_clip, clipped);
             if (clipped.size() >= 3) append_polyline_segments(clipped, true, *ring_segments);
         }
+        if (fill_only) drop_spikes(mapped);
+    } else if (fill_only) {
+        map_without_spikes(pts, m, mapped);
+    } else {
+        map_all(pts);
     }
-    if (fill_only && ring_segments) {
-        drop_spikes(mapped);
-        if (mapped.size() < 3) return;
-    }
+    if (mapped.size() < 3) return;  // nothing but spikes
     if (clip && !inside(mapped, *clip)) {
         clip_ring(mapped, *clip, clipped);
         if (clipped.size() >= 3) fill.add_polygon(clipped);
@@ -164,9 +156,8 @@ void PathVisitor::ring(std::span<const Point> pts) {
     fill.add_polygon(mapped);
 }
 
-void PathVisitor::line(const std::vector<Point>& pts) {
-    mapped.resize(pts.size());
-    for (std::size_t i = 0; i < pts.size(); ++i) mapped[i] = m.apply(pts[i]);
+void PathVisitor::line(std::span<const Point> pts) {
+    map_all(pts);
     const std::optional<Rect>& cut = clip ? clip : stroke_clip;
     if (cut && !inside(mapped, *cut)) {
         clip_line(mapped, *cut, lines);

@@ -25,7 +25,7 @@ namespace casteljau::map_detail {
 struct PieceVisitor {
     virtual ~PieceVisitor() = default;
     virtual void ring(std::span<const Point> pts) = 0;
-    virtual void line(const std::vector<Point>& pts) = 0;
+    virtual void line(std::span<const Point> pts) = 0;
     virtual void point(Point p) = 0;
 };
 
@@ -33,12 +33,13 @@ class Projector {
 public:
     explicit Projector(const MapProjection& p) : proj_(p), densify_(!p.preserves_graticule_lines()) {}
 
-    // Projects a lon/lat polyline into `out` (points that cannot be projected are dropped).
-    void project(std::span<const Point> in, bool closed, std::vector<Point>& out) const;
     // Hands every piece of `g` to `v`.
     void geometry(const Geometry& g, PieceVisitor& v) const;
 
 private:
+    // A lon/lat polyline projected (points that cannot be projected are dropped): `in` itself
+    // under the identity (equirectangular), else projected_.
+    std::span<const Point> projected(std::span<const Point> in, bool closed) const;
     // `area2`: twice the piece's signed area in lon/lat (its orientation).
     void ring_piece(std::span<const Point> r, bool exterior, double area2, PieceVisitor& v) const;
 
@@ -61,7 +62,7 @@ struct BoundsVisitor final : PieceVisitor {
     void ring(std::span<const Point> pts) override {
         for (const Point& p : pts) add(p);
     }
-    void line(const std::vector<Point>& pts) override {
+    void line(std::span<const Point> pts) override {
         for (const Point& p : pts) add(p);
     }
     void point(Point p) override { add(p); }
@@ -95,8 +96,11 @@ struct PathVisitor final : PieceVisitor {
     double disk_tolerance = 0;
     Polyline flat;
     void ring(std::span<const Point> pts) override;
-    void line(const std::vector<Point>& pts) override;
+    void line(std::span<const Point> pts) override;
     void point(Point p) override;
+
+private:
+    void map_all(std::span<const Point> pts);  // mapped = pts mapped by m
 };
 
 }  // namespace casteljau::map_detail

@@ -51,14 +51,16 @@ void close_spikes(std::vector<Point>& r, std::size_t k) {
 }  // namespace
 
 void drop_spikes(std::vector<Point>& r) {
-    close_spikes(r, stack_spikes(
-                        r.size(), [&](std::size_t i) { return r[i]; }, r));
+    const std::size_t kept = stack_spikes(
+        r.size(), [&](std::size_t i) { return r[i]; }, r);
+    close_spikes(r, kept);
 }
 
 void map_without_spikes(std::span<const Point> in, const Affine& m, std::vector<Point>& out) {
     out.resize(in.size());
-    close_spikes(out, stack_spikes(
-                          in.size(), [&](std::size_t i) { return m.apply(in[i]); }, out));
+    const std::size_t kept = stack_spikes(
+        in.size(), [&](std::size_t i) { return m.apply(in[i]); }, out);
+    close_spikes(out, kept);
 }
 
 }  // namespace casteljau::map_detail
