@@ -248,8 +248,11 @@ struct Mask {
 };
 
 struct RasterStats {
-    std::size_t segments = 0;     // line segments accumulated
-    bool swept = false;           // the winding sweep made the shape exact (no cell below is counted)
+    std::size_t segments = 0;  // line segments accumulated
+    bool swept = false;        // the winding sweep made the shape exact (no cell below is counted)
+    // The sweep found that the shape winds 0 and one other value only (as glyphs do), so its own
+    // edges were accumulated rather than the boundary of its region.
+    bool swept_simple = false;
     std::size_t exact_cells = 0;  // cells recomputed exactly
     // Of those, cells where the exact method would cost too much (thousands of pieces crossing in
     // one pixel, or the fill's exact-work budget spent: Limits::exact_work piece visits plus 2000 per

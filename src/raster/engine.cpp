@@ -149,6 +149,18 @@ void Engine::push_polyline(const double* xy, std::size_t n) {
     }
 }
 
+void Engine::push_chain(const double* xy, std::size_t n, bool reverse) {
+    if (!reverse) return push_polyline(xy, n);
+    for (std::size_t i = n - 1; i > 0; --i) {
+        const double x0 = xy[2 * i], x1 = xy[2 * i - 2];
+        double y0 = xy[2 * i + 1], y1 = xy[2 * i - 1];
+        if (!vec_)
+            push(x0, y0, x1, y1);
+        else if (admit(x0, y0, x1, y1))
+            list_pieces(x0, y0, x1, y1);
+    }
+}
+
 void Engine::begin(int w, int h, bool track) {
     w_ = w;
     h_ = h;

@@ -65,6 +65,8 @@ public:
     inline void push(double x0, double y0, double x1, double y1);
     // The edges between n consecutive points (x and y interleaved), as push() for each.
     void push_polyline(const double* xy, std::size_t n);
+    // The same edges in the opposite direction when `reverse` (from point n - 1 to point 0).
+    void push_chain(const double* xy, std::size_t n, bool reverse);
     // The current contour is complete (its closing edge was pushed).
     void contour_end();
     // Restricts the overlap check to the cells that meet `boxes` (moved by (dx, dy) into cell

@@ -47,6 +47,30 @@ void WindingSweep::close_chain() {
     open_ = false;
 }
 
+void WindingSweep::push_polyline(const double* xy, std::size_t n) {
+    // The direction of the open chain when these edges continue it, else 0.
+    std::int8_t dir = open_ && pts_.back().x == xy[0] && pts_.back().y == xy[1] ? chains_.back().dir : 0;
+    if (pts_.capacity() < pts_.size() + n + 1) pts_.reserve(std::max(2 * pts_.capacity(), pts_.size() + n + 1));
+    for (std::size_t i = 1; i < n; ++i) {
+        const double x0 = xy[2 * i - 2], y0 = xy[2 * i - 1], x1 = xy[2 * i], y1 = xy[2 * i + 1];
+        if (x0 == x1 && y0 == y1) continue;
+        if (++count_ > max_edges_) too_many();
+        if (y0 == y1) {
+            dir = 0;  // bounds no strip; the next edge starts a chain
+            continue;
+        }
+        const std::int8_t d = y1 > y0 ? 1 : -1;
+        if (d != dir) {
+            close_chain();
+            chains_.push_back({static_cast<std::uint32_t>(pts_.size()), 0, d, 0, 0});
+            pts_.push_back({x0, y0});
+            open_ = true;
+            dir = d;
+        }
+        pts_.push_back({x1, y1});
+    }
+}
+
 void WindingSweep::trim(std::size_t points) {
     if (pts_.capacity() <= points) return;
     std::vector<Pt>().swap(pts_);
@@ -137,12 +161,13 @@ double WindingSweep::first_crossing(const Active& a, const Active& b, double y, 
     }
 }
 
-[[gnu::always_inline]] inline void WindingSweep::advance(double y, Engine& out) {
+template <bool kEmit>
+[[gnu::always_inline]] inline void WindingSweep::advance(double y, Engine* out) {
     std::size_t kept = 0;
     for (std::size_t i = 0; i < active_.size(); ++i) {
         const Active& a = active_[i];
         if (a.bottom <= y) {
-            flush(a, a.bottom, out);
+            if constexpr (kEmit) flush(a, a.bottom, *out);
             continue;
         }
         std::uint32_t s = a.seg;
@@ -157,9 +182,21 @@ double WindingSweep::first_crossing(const Active& a, const Active& b, double y, 
     active_.resize(kept);
 }
 
-bool WindingSweep::run(FillRule rule, std::size_t budget, Engine& out) {
+[[gnu::always_inline]] inline bool WindingSweep::one_value() {
+    int w = 0;
+    for (const Active& a : active_) {
+        w += a.dir;
+        if (w == 0) continue;
+        if (s_ == 0) s_ = w;
+        if (w != s_) return false;
+    }
+    return true;
+}
+
+template <bool kEmit, class Step>
+WindingSweep::Verdict WindingSweep::sweep(std::size_t budget, Engine* out, Step&& step) {
     close_chain();
-    if (chains_.empty()) return true;
+    if (chains_.empty()) return Verdict::Simple;
     order_.clear();
     for (std::uint32_t c = 0; c < chains_.size(); ++c) order_.emplace_back(pts_[chains_[c].first].y, c);
     std::sort(order_.begin(), order_.end());
@@ -170,18 +207,35 @@ bool WindingSweep::run(FillRule rule, std::size_t budget, Engine& out) {
     while (true) {
         enter(y);
         if (active_.empty()) {
-            if (next_top_ == order_.size()) return true;
+            if (next_top_ == order_.size()) return Verdict::Simple;
             y = order_[next_top_].first;
             continue;
         }
         const double top =
             next_top_ < order_.size() ? order_[next_top_].first : std::numeric_limits<double>::infinity();
         const double next = strip_end(y, top, work);
-        if (work > budget || !(next > y)) return false;
-        choose(rule, y, out);
-        advance(next, out);
+        if (work > budget || !(next > y)) return Verdict::Unknown;
+        if (!step(y)) return Verdict::NotSimple;
+        advance<kEmit>(next, out);
         y = next;
     }
+}
+
+bool WindingSweep::run(FillRule rule, std::size_t budget, Engine& out) {
+    return sweep<true>(budget, &out, [&](double y) {
+               choose(rule, y, out);
+               return true;
+           }) == Verdict::Simple;
+}
+
+WindingSweep::Verdict WindingSweep::simple(std::size_t budget) {
+    s_ = 0;
+    return sweep<false>(budget, nullptr, [&](double) { return one_value(); });
+}
+
+void WindingSweep::push_chains(Engine& out) const {
+    static_assert(sizeof(Pt) == 2 * sizeof(double));
+    for (const Chain& c : chains_) out.push_chain(&pts_[c.first].x, c.last - c.first + 1, c.dir < 0);
 }
 
 }  // namespace casteljau::raster

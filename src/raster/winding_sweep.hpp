@@ -34,6 +34,8 @@ public:
     void begin(std::size_t max_edges);
     // One edge in box coordinates, in contour order (the edge builder's interface).
     inline void push(double x0, double y0, double x1, double y1);
+    // The edges between n consecutive points (x and y interleaved), as push() for each.
+    void push_polyline(const double* xy, std::size_t n);
     void contour_end() {}
     std::size_t edges() const { return count_; }
     // Frees the buffers that hold room for more than `points` points (between shapes).
@@ -43,6 +45,16 @@ public:
     // pushed, when the sweep would take more than `budget` steps (a chain passed in a strip, or a
     // point passed when looking for crossings).
     bool run(FillRule rule, std::size_t budget, Engine& out);
+    // Whether the pushed edges wind only 0 and one nonzero value s (+1 or -1) everywhere: then
+    // plain accumulation of them is already exact under either rule, and push_chains() hands
+    // them on as they are. The same sweep as run(), stopping at the first strip where the winding
+    // number between two chains takes another value (two chains that cross always make one, on
+    // one side of the crossing or the other) and emitting nothing. Over the budget is Unknown.
+    enum class Verdict { Simple, NotSimple, Unknown };
+    Verdict simple(std::size_t budget);
+    // After simple() says Simple: every pushed edge that is not horizontal into `out`, in its own
+    // direction (chain by chain; accumulation does not depend on the order).
+    void push_chains(Engine& out) const;
 
 private:
     struct Pt {
@@ -84,8 +96,15 @@ private:
     double strip_end(double y, double next, std::size_t& work);
     // Keeps the chains that bound the filled region in the strip from y, drops the others.
     void choose(FillRule rule, double y, Engine& out);
+    // simple()'s test of the strip from y: false when a winding number other than 0 and s occurs
+    // (s: the first nonzero one met, kept in s_).
+    bool one_value();
     // Moves the chains to the next strip's top y; the ones ending there are flushed and leave.
-    void advance(double y, Engine& out);
+    template <bool kEmit>
+    void advance(double y, Engine* out);
+    // run() and simple(): the sweep with `step` deciding each strip (false: stop, not simple).
+    template <bool kEmit, class Step>
+    Verdict sweep(std::size_t budget, Engine* out, Step&& step);
     // The first y in (y, end] where chain a (left of b at y) is right of b, or `end`; the
     // crossing's y when there is one. Counts the points it passes in `work`.
     double first_crossing(const Active& a, const Active& b, double y, double end, std::size_t& work) const;
@@ -97,6 +116,7 @@ private:
     std::vector<std::pair<double, std::uint32_t>> order_;  // chains' tops, in order
     std::size_t next_top_ = 0;                             // the first of order_ not entered yet
     std::vector<Active> active_;                           // by x at the strip's top
+    int s_ = 0;                                            // simple(): the nonzero winding number
 };
 
 inline void WindingSweep::push(double x0, double y0, double x1, double y1) {

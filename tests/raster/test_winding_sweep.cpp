@@ -87,6 +87,51 @@ TEST_CASE("winding sweep: stacked, touching and nested contours", "[raster][swee
     for (int y = 3; y < 15; ++y) CHECK(out.at(9, y) == 255);
 }
 
+// Shapes that wind 0 and one other value only keep their own edges; the sweep must find every
+// other value, or the crossing that makes one, and then keep only the region's boundary.
+TEST_CASE("winding sweep: shapes winding one value keep their edges, others do not", "[raster][sweep]") {
+    Rasterizer r;
+    const IRect clip{0, 0, 24, 24};
+    struct Case {
+        const char* what;
+        Contours shape;
+        bool one_value;
+    };
+    const std::vector<Case> cases{
+        {"square", {rect(2.3, 2.3, 17.6, 15.2)}, true},
+        {"square the other way round", {reversed(rect(2.3, 2.3, 17.6, 15.2))}, true},
+        {"hole and island",
+         {rect(2.3, 2.3, 20.6, 20.2), reversed(rect(5.5, 5.5, 15.1, 15.1)), rect(8.2, 8.2, 9.9, 12.7)},
+         true},
+        // Steps: a horizontal edge between two edges going down ends one chain and starts another.
+        {"staircase", {{{2.5, 2.5}, {2.5, 8.5}, {6.5, 8.5}, {6.5, 16.5}, {14.5, 16.5}, {14.5, 2.5}}}, true},
+        {"two apart", {rect(2.3, 2.3, 8.6, 15.2), rect(12.5, 2.5, 20.1, 18.1)}, true},
+        // Windings 1 and -1, apart here, but the test is for the whole shape.
+        {"two apart, opposite orientations", {rect(2.3, 2.3, 8.6, 15.2), reversed(rect(12.5, 2.5, 20.1, 18.1))}, false},
+        {"stacked copy", {rect(2.3, 2.3, 17.6, 15.2), rect(2.3, 2.3, 17.6, 15.2)}, false},
+        {"island the same way round as its square", {rect(2.3, 2.3, 20.6, 20.2), rect(5.5, 5.5, 15.1, 15.1)}, false},
+        {"opposite orientations", {rect(2.3, 2.3, 12.6, 12.2), reversed(rect(7.5, 7.5, 20.1, 18.1))}, false},
+        {"bow-tie", {{{2.3, 2.1}, {12.7, 13.3}, {12.2, 2.6}, {2.5, 12.9}}}, false},
+        // A side crossed twice in one strip (no chain starts or ends between the crossings), by a
+        // contour of either orientation.
+        {"zigzag over a side", {rect(5, 2, 12, 20), {{4, 2}, {6, 10}, {4, 18}, {1, 18}, {1, 2}}}, false},
+        {"zigzag over a side, reversed",
+         {rect(5, 2, 12, 20), reversed({{4, 2}, {6, 10}, {4, 18}, {1, 18}, {1, 2}})},
+         false},
+    };
+    for (const Case& c : cases)
+        for (FillRule rule : kRules) {
+            FillOptions o;
+            o.rule = rule;
+            o.topology = Topology::Overlapping;
+            const Rendered out = render(r, ref::to_path(c.shape), Affine::identity(), o, clip);
+            INFO(c.what);
+            CHECK(out.stats.swept);
+            CHECK(out.stats.swept_simple == c.one_value);
+            check_swept(r, c.shape, rule, clip, c.what);
+        }
+}
+
 TEST_CASE("winding sweep: shapes reaching outside the target", "[raster][sweep]") {
     Rasterizer r;
     std::mt19937 rng(7);
