@@ -278,20 +278,11 @@ bool Rasterizer::Impl::fill_swept(const Path& path, const Affine& local, const F
     raster::build_edges(path, local, opts.tolerance, inside, bw, bh, sweep);
     engine.begin(bw, bh, false);
     const std::size_t budget = kSweepWorkPerEdge * sweep.edges() + kSweepWorkBase;
-    // Most shapes without a verdict wind 0 and 1 only (glyphs, icons): the sweep proves it without
-    // emitting anything, and their own edges go on as they are. The others are swept again, keeping
-    // only their region's boundary.
-    switch (sweep.simple(budget)) {
-        case raster::WindingSweep::Verdict::Simple:
-            sweep.push_chains(engine);
-            stats.swept_simple = true;
-            break;
-        case raster::WindingSweep::Verdict::NotSimple:
-            if (!sweep.run(opts.rule, budget, engine)) return false;
-            break;
-        case raster::WindingSweep::Verdict::Unknown: return false;
-    }
-    // The kept edges wind 0 and 1 only, so the nonzero rule renders either rule's region.
+    const raster::WindingSweep::Outcome outcome = sweep.fill(opts.rule, budget, engine);
+    if (outcome == raster::WindingSweep::Outcome::TooCostly) return false;
+    stats.swept_simple = outcome == raster::WindingSweep::Outcome::Simple;
+    // The pushed edges wind 0 and one other value only, so the nonzero rule renders either rule's
+    // region.
     engine.finish(FillRule::NonZero, ox, oy, sink, stats);
     stats.segments = sweep.edges();
     stats.swept = true;

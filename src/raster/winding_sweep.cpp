@@ -162,12 +162,12 @@ double WindingSweep::first_crossing(const Active& a, const Active& b, double y, 
 }
 
 template <bool kEmit>
-[[gnu::always_inline]] inline void WindingSweep::advance(double y, Engine* out) {
+[[gnu::always_inline]] inline void WindingSweep::advance(double y, Engine& out) {
     std::size_t kept = 0;
     for (std::size_t i = 0; i < active_.size(); ++i) {
         const Active& a = active_[i];
         if (a.bottom <= y) {
-            if constexpr (kEmit) flush(a, a.bottom, *out);
+            if constexpr (kEmit) flush(a, a.bottom, out);
             continue;
         }
         std::uint32_t s = a.seg;
@@ -193,49 +193,57 @@ template <bool kEmit>
     return true;
 }
 
-template <bool kEmit, class Step>
-WindingSweep::Verdict WindingSweep::sweep(std::size_t budget, Engine* out, Step&& step) {
+void WindingSweep::take_over(double y, Engine& out) {
+    // Above y every strip wound 0 and s_ only, where each chain bounds the region: run down where
+    // the region starts, so a chain is kept in its own direction times s_ and the region winds +1,
+    // as choose() keeps it from here on.
+    for (std::size_t i = 0; i < next_top_; ++i) {
+        const Chain& c = chains_[order_[i].second];
+        if (pts_[c.last].y <= y) out.push_chain(&pts_[c.first].x, c.last - c.first + 1, c.dir * s_ < 0);
+    }
+    // The chains still active have kept their pieces from their tops (ys, seg_s) on.
+    for (Active& a : active_) a.keep = static_cast<std::int8_t>(a.dir * s_);
+}
+
+WindingSweep::Outcome WindingSweep::fill(FillRule rule, std::size_t budget, Engine& out) {
+    static_assert(sizeof(Pt) == 2 * sizeof(double));
     close_chain();
-    if (chains_.empty()) return Verdict::Simple;
+    if (chains_.empty()) return Outcome::Simple;
     order_.clear();
     for (std::uint32_t c = 0; c < chains_.size(); ++c) order_.emplace_back(pts_[chains_[c].first].y, c);
     std::sort(order_.begin(), order_.end());
     active_.clear();
     next_top_ = 0;
+    s_ = 0;
+    bool proving = true;  // every strip so far wound 0 and s_ only
     std::size_t work = 0;
     double y = order_[0].first;
     while (true) {
         enter(y);
         if (active_.empty()) {
-            if (next_top_ == order_.size()) return Verdict::Simple;
+            if (next_top_ == order_.size()) break;
             y = order_[next_top_].first;
             continue;
         }
         const double top =
             next_top_ < order_.size() ? order_[next_top_].first : std::numeric_limits<double>::infinity();
         const double next = strip_end(y, top, work);
-        if (work > budget || !(next > y)) return Verdict::Unknown;
-        if (!step(y)) return Verdict::NotSimple;
-        advance<kEmit>(next, out);
+        if (work > budget || !(next > y)) return Outcome::TooCostly;
+        if (proving && !one_value()) {
+            proving = false;
+            take_over(y, out);
+        }
+        if (proving) {
+            advance<false>(next, out);
+        } else {
+            choose(rule, y, out);
+            advance<true>(next, out);
+        }
         y = next;
     }
-}
-
-bool WindingSweep::run(FillRule rule, std::size_t budget, Engine& out) {
-    return sweep<true>(budget, &out, [&](double y) {
-               choose(rule, y, out);
-               return true;
-           }) == Verdict::Simple;
-}
-
-WindingSweep::Verdict WindingSweep::simple(std::size_t budget) {
-    s_ = 0;
-    return sweep<false>(budget, nullptr, [&](double) { return one_value(); });
-}
-
-void WindingSweep::push_chains(Engine& out) const {
-    static_assert(sizeof(Pt) == 2 * sizeof(double));
+    if (!proving) return Outcome::Swept;
     for (const Chain& c : chains_) out.push_chain(&pts_[c.first].x, c.last - c.first + 1, c.dir < 0);
+    return Outcome::Simple;
 }
 
 }  // namespace casteljau::raster

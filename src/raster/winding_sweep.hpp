@@ -13,6 +13,11 @@
 // every one (even-odd). The others (inside an overlap) are dropped; a bounding chain is kept for
 // as many strips as it stays bounding. Horizontal edges bound no strip and are dropped.
 //
+// Most shapes (glyphs, icons) wind 0 and one other value only; every chain bounds their region,
+// and their own edges are already exact. The sweep first only checks each strip for that, and
+// cuts nothing: a shape that passes every strip goes on with its edges whole, and one that fails
+// a strip is cut into its region's boundary from there down.
+//
 // Cost: the edges, plus the strips times the chains spanning them. A shape with many crossings
 // (each one a strip) may cost more than the per-cell check, so the sweep stops at a budget and
 // says so.
@@ -40,21 +45,18 @@ public:
     std::size_t edges() const { return count_; }
     // Frees the buffers that hold room for more than `points` points (between shapes).
     void trim(std::size_t points);
-    // Pushes the boundary edges of the region the pushed edges fill under `rule` into `out`, an
-    // engine begun without the overlap check on the same box. Returns false, with part of them
-    // pushed, when the sweep would take more than `budget` steps (a chain passed in a strip, or a
-    // point passed when looking for crossings).
-    bool run(FillRule rule, std::size_t budget, Engine& out);
-    // Whether the pushed edges wind only 0 and one nonzero value s (+1 or -1) everywhere: then
-    // plain accumulation of them is already exact under either rule, and push_chains() hands
-    // them on as they are. The same sweep as run(), stopping at the first strip where the winding
-    // number between two chains takes another value (two chains that cross always make one, on
-    // one side of the crossing or the other) and emitting nothing. Over the budget is Unknown.
-    enum class Verdict { Simple, NotSimple, Unknown };
-    Verdict simple(std::size_t budget);
-    // After simple() says Simple: every pushed edge that is not horizontal into `out`, in its own
-    // direction (chain by chain; accumulation does not depend on the order).
-    void push_chains(Engine& out) const;
+    // Pushes into `out`, an engine begun without the overlap check on the same box, edges whose
+    // plain accumulation renders the region the pushed edges fill under `rule` exactly:
+    // - Simple: the shape winds 0 and one other value only (as glyphs do), under either rule
+    //   exact as it is; its own edges are pushed whole once the sweep has proven it.
+    // - Swept: from the first strip where the running winding number takes a second nonzero
+    //   value (two chains that cross always make one, on one side of the crossing or the other),
+    //   only the boundary of the region is kept, cut at every strip where it changes; the proven
+    //   strips above are pushed as they are.
+    // - TooCostly, with part of the edges pushed: the sweep would take more than `budget` steps
+    //   (a chain passed in a strip, or a point passed when looking for crossings).
+    enum class Outcome { Simple, Swept, TooCostly };
+    Outcome fill(FillRule rule, std::size_t budget, Engine& out);
 
 private:
     struct Pt {
@@ -96,15 +98,14 @@ private:
     double strip_end(double y, double next, std::size_t& work);
     // Keeps the chains that bound the filled region in the strip from y, drops the others.
     void choose(FillRule rule, double y, Engine& out);
-    // simple()'s test of the strip from y: false when a winding number other than 0 and s occurs
-    // (s: the first nonzero one met, kept in s_).
+    // Whether the strip from y winds 0 and s only (s: the first nonzero number met, kept in s_).
     bool one_value();
-    // Moves the chains to the next strip's top y; the ones ending there are flushed and leave.
+    // Moves the chains to the next strip's top y; the ones ending there leave (flushed if kEmit).
     template <bool kEmit>
-    void advance(double y, Engine* out);
-    // run() and simple(): the sweep with `step` deciding each strip (false: stop, not simple).
-    template <bool kEmit, class Step>
-    Verdict sweep(std::size_t budget, Engine* out, Step&& step);
+    void advance(double y, Engine& out);
+    // The switch from proving to keeping the boundary at strip top y: the chains that ended above
+    // y are pushed, the active ones keep their pieces so far.
+    void take_over(double y, Engine& out);
     // The first y in (y, end] where chain a (left of b at y) is right of b, or `end`; the
     // crossing's y when there is one. Counts the points it passes in `work`.
     double first_crossing(const Active& a, const Active& b, double y, double end, std::size_t& work) const;
@@ -116,7 +117,7 @@ private:
     std::vector<std::pair<double, std::uint32_t>> order_;  // chains' tops, in order
     std::size_t next_top_ = 0;                             // the first of order_ not entered yet
     std::vector<Active> active_;                           // by x at the strip's top
-    int s_ = 0;                                            // simple(): the nonzero winding number
+    int s_ = 0;                                            // the nonzero winding number of the proven strips
 };
 
 inline void WindingSweep::push(double x0, double y0, double x1, double y1) {

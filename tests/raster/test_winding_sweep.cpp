@@ -111,6 +111,11 @@ TEST_CASE("winding sweep: shapes winding one value keep their edges, others do n
         {"stacked copy", {rect(2.3, 2.3, 17.6, 15.2), rect(2.3, 2.3, 17.6, 15.2)}, false},
         {"island the same way round as its square", {rect(2.3, 2.3, 20.6, 20.2), rect(5.5, 5.5, 15.1, 15.1)}, false},
         {"opposite orientations", {rect(2.3, 2.3, 12.6, 12.2), reversed(rect(7.5, 7.5, 20.1, 18.1))}, false},
+        // Strips winding -1 only above the first that is not simple: they must keep winding the
+        // same way as the region's boundary below them.
+        {"opposite orientations, the reversed one above",
+         {reversed(rect(2.3, 2.3, 12.6, 12.2)), rect(7.5, 7.5, 20.1, 18.1)},
+         false},
         {"bow-tie", {{{2.3, 2.1}, {12.7, 13.3}, {12.2, 2.6}, {2.5, 12.9}}}, false},
         // A side crossed twice in one strip (no chain starts or ends between the crossings), by a
         // contour of either orientation.
