@@ -13,15 +13,19 @@
 //   - the winding sweep (src/raster/winding_sweep.hpp), for shapes of one dense buffer (below)
 //     without FillOptions::inside or hidden: a sweep down the shape keeps its edges in x order
 //     and replaces them by the boundary of the region it fills, which plain accumulation renders
-//     exactly. It costs per edge and per crossing, not per pixel; a shape with too many crossings
-//     for its size (past 32 strip steps per edge, plus 1024) takes the overlap check instead;
+//     exactly. A shape that winds 0 and one other value only in every strip keeps its own edges
+//     (RasterStats::swept_simple); one that does not is cut into that boundary from the first
+//     strip that winds a second value. It costs per edge and per crossing, not per pixel; a
+//     shape with too many crossings for its size (past 32 strip steps per edge, plus 1024) takes
+//     the overlap check instead;
 //   - the overlap check, where every pixel in which edges could make accumulation inexact
 //     (crossings, overlapping or stacked contours) is recomputed exactly from the edges inside it
 //     (see src/raster/exact_cell.cpp).
-// A shape whose topology the caller did not give is classified by fill() when its box is large for
-// its number of segments (width + height at least 16 pixels per path verb: there the per-cell
-// check would cost more than the classification; under a similarity map with the verdict for
-// that map and tolerance), and otherwise made exact as above.
+// A shape whose topology the caller did not give goes to the winding sweep when it can take it
+// (the sweep proves a simple shape for less than classifying it costs). Any other is classified
+// by fill() when its box is large for its number of segments (width + height at least 16 pixels
+// per path verb: there the per-cell check would cost more than the classification; under a
+// similarity map with the verdict for that map and tolerance), and otherwise made exact as above.
 // Precision: shapes with the overlap check, and shapes wider than 1024 px, accumulate in double,
 // which rounds the area correctly but for values within about 1e-12 of a level of half-way
 // between two levels. Narrower shapes without it (most glyphs) accumulate in float: the area
@@ -100,13 +104,15 @@ Topology classify_topology(const Path& path, double max_tolerance);
 // max_tolerance) asks of the map, with tolerance / s to compare against max_tolerance.
 double similarity_scale(const Affine& m);
 
-// The verdict Rasterizer::fill reaches for `path` under `m` at `tolerance` (pixels) when it is given
-// none and the shape's box on the target measures box_width x box_height pixels: classify_topology
-// (for this map and tolerance when m is a similarity) when width + height is at least 16 pixels per
-// path verb, else Unknown: not worth classifying, the per-cell check costs per boundary pixel and
-// the classification per segment (fill() then takes the per-cell check). A caller filling one
-// path in several pieces (bands, tiles) decides once with the whole box and passes the verdict in
-// FillOptions::topology, instead of fill() classifying it again for every piece. Thread-safe.
+// The verdict Rasterizer::fill reaches for `path` under `m` at `tolerance` (pixels) when it is
+// given none, cannot take the winding sweep (a box of more than 2^18 pixels, FillOptions::inside,
+// hidden or overlap_boxes, or winding_sweep off) and the shape's box on the target measures
+// box_width x box_height pixels: classify_topology (for this map and tolerance when m is a
+// similarity) when width + height is at least 16 pixels per path verb, else Unknown: not worth
+// classifying, the per-cell check costs per boundary pixel and the classification per segment
+// (fill() then takes the per-cell check). A caller filling one path in several pieces (bands,
+// tiles) decides once with the whole box and passes the verdict in FillOptions::topology, instead
+// of fill() classifying it again for every piece. Thread-safe.
 Topology decide_topology(const Path& path, const Affine& m, double tolerance, double box_width, double box_height);
 
 // Where plain accumulation of a polygon may be inexact (find_overlap_region).

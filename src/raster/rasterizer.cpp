@@ -53,12 +53,12 @@ constexpr std::size_t kMaxTrackedStripCells = std::size_t(1) << 15;
 constexpr std::size_t kMaxSpare = 8;
 constexpr std::size_t kMaxSpareEdges = std::size_t(1) << 16;
 
-// A path without a topology verdict is classified before filling when its box's width + height
-// reaches this many pixels per verb (see Rasterizer::fill). Classifying a glyph costs 2.4 to 6 us,
-// about what the per-cell check costs over its boundary at 100 to 250 px: raw DejaVu Sans and
-// Linux Libertine glyphs (compare_glyphs, column "casteljau") fill fastest with the limit at 12
-// to 32; at 4 they were 12 % and 26 % slower at 96 px, 10 % (Libertine) at 256 px. canvas_scene
-// and curve_stress (large shapes of few verbs) do not change between 4 and 16.
+// A path without a topology verdict that the winding sweep does not take is classified before
+// filling when its box's width + height reaches this many pixels per verb (see Rasterizer::fill
+// and decide_topology). Classifying a glyph costs 2.4 to 6 us, about what the per-cell check costs
+// over its boundary at 100 to 250 px: glyphs through the per-cell check (compare_glyphs, DejaVu
+// Sans and Linux Libertine) filled fastest with the limit at 12 to 32; at 4 they were 12 % and
+// 26 % slower at 96 px.
 constexpr double kClassifyPixelsPerSegment = 16.0;
 
 // The winding sweep's budget, in edge-strip steps: kSweepWorkPerEdge per edge plus kSweepWorkBase.
@@ -221,25 +221,27 @@ void Rasterizer::fill(const Path& path, const Affine& m, const FillOptions& opti
     const int ox = static_cast<int>(fx0), oy = static_cast<int>(fy0);
     const int bw = static_cast<int>(fx1) - ox, bh = static_cast<int>(fy1) - oy;
     // Exactness is decided before rasterizing, once for the shape: one proven simple
-    // (classify_topology) is accumulated plainly, exact for it; any other takes the per-cell
-    // overlap check. A verdict the caller gives (the glyph cache's, cached per outline) is used
-    // as it is; an unknown one is decided here by decide_topology's rule: classifying costs about
-    // 0.1 us per segment whatever the size, while the per-cell check costs per boundary pixel, so
-    // it pays from kClassifyPixelsPerSegment pixels of box side per segment.
+    // (classify_topology) is accumulated plainly, exact for it; any other is made exact by the
+    // winding sweep or the per-cell overlap check. A verdict the caller gives (the glyph cache's,
+    // cached per outline) is used as it is. Without one, a shape the sweep can take goes to it
+    // unclassified: the sweep proves a simple shape for about 5 ns per flattened edge, less than
+    // classifying costs (0.1 us per segment) at any size that fits its buffer. Any other shape is
+    // decided by decide_topology's rule: the per-cell check costs per boundary pixel, so
+    // classifying pays from kClassifyPixelsPerSegment pixels of box side per segment.
     FillOptions opts = options;
+    const double cells = (fx1 - fx0) * (fy1 - fy0);
+    const bool sweepable = cells <= static_cast<double>(kMaxStripCells) && opts.winding_sweep && opts.inside.empty() &&
+                           !opts.hidden && opts.overlap_boxes.empty();
     if (opts.exact_overlaps) {
-        if (opts.topology == Topology::Unknown) opts.topology = decide_topology(path, m, opts.tolerance, bw, bh);
+        if (opts.topology == Topology::Unknown && !sweepable)
+            opts.topology = decide_topology(path, m, opts.tolerance, bw, bh);
         stats_.topology = opts.topology;
         opts.exact_overlaps = opts.topology != Topology::Simple;
     }
     const Affine local = Affine::translate(-ox, -oy) * m;
-    const double cells = (fx1 - fx0) * (fy1 - fy0);
     const std::size_t max_cells = opts.exact_overlaps ? kMaxTrackedStripCells : kMaxStripCells;
-    if (cells <= static_cast<double>(kMaxStripCells)) {
-        const bool sweep = opts.exact_overlaps && opts.winding_sweep && opts.inside.empty() && !opts.hidden &&
-                           opts.overlap_boxes.empty();
-        if (sweep && impl_->fill_swept(path, local, opts, inside, ox, oy, bw, bh, sink, stats_)) return;
-    }
+    if (sweepable && opts.exact_overlaps && impl_->fill_swept(path, local, opts, inside, ox, oy, bw, bh, sink, stats_))
+        return;
     if (cells <= static_cast<double>(max_cells)) {
         // The box fits one dense buffer: edges go into the engine as the flattener makes them (after
         // a sweep that gave up, flattened again for the overlap check).

@@ -329,7 +329,10 @@ TEST_CASE("topology: the rasterizer uses the verdict and the caller's verdict", 
 TEST_CASE("topology: the rasterizer classifies shapes large for their number of segments", "[raster][topology]") {
     Rasterizer r;
     const IRect clip{0, 0, 300, 300};
+    // Shapes the winding sweep does not take are classified (the sweep proves or cuts the others
+    // without a verdict).
     FillOptions exact;
+    exact.winding_sweep = false;
     // A ring: classified Simple, accumulated plainly, and within 1/255 of the per-cell check on
     // the same outline.
     const Path rings = ring();
@@ -341,26 +344,38 @@ TEST_CASE("topology: the rasterizer classifies shapes large for their number of 
     checked.winding_sweep = false;
     const auto with_check = render(r, rings, Affine::identity(), checked, clip);
     CHECK(max_difference(out, with_check) <= 1);
-    // Two large squares stacked: classified Overlapping, and exact (a stacked copy adds nothing).
+    // With the sweep: not classified, proven simple by the sweep, the same pixels.
+    const auto swept = render(r, rings, Affine::identity(), {}, clip);
+    CHECK(r.last_stats().topology == Topology::Unknown);
+    CHECK(r.last_stats().swept_simple);
+    CHECK(r.last_stats().exact_cells == 0);
+    CHECK(max_difference(swept, with_check) <= 1);
+    // Two large squares stacked: classified Overlapping, and exact (a stacked copy adds nothing),
+    // through the per-cell check and through the sweep.
     const Path stacked = join(square(20.25, 20.25, 200), square(20.25, 20.25, 200));
+    const auto reference = ref::path_reference(square(20.25, 20.25, 200), Affine::identity(), FillRule::NonZero, clip);
     out = render(r, stacked, Affine::identity(), exact, clip);
     CHECK(r.last_stats().topology == Topology::Overlapping);
-    CHECK(r.last_stats().swept);
-    const auto cmp =
-        compare(out, ref::path_reference(square(20.25, 20.25, 200), Affine::identity(), FillRule::NonZero, clip));
-    INFO(cmp.text());
-    CHECK(cmp.max_err <= 1.0);
-    CHECK(out.at(20, 100) == 191);  // three quarters of the pixel, not clamped double coverage (255)
+    CHECK(r.last_stats().exact_cells > 0);
+    for (const FillOptions& o : {exact, FillOptions{}}) {
+        out = render(r, stacked, Affine::identity(), o, clip);
+        CHECK(r.last_stats().swept == o.winding_sweep);
+        const auto cmp = compare(out, reference);
+        INFO(cmp.text());
+        CHECK(cmp.max_err <= 1.0);
+        CHECK(out.at(20, 100) == 191);  // three quarters of the pixel, not clamped double coverage (255)
+    }
     // A glyph-sized box with as many segments: not classified (the per-cell check is cheaper).
     (void)render(r, join(square(1.5, 1.5, 8), square(1.5, 1.5, 8)), Affine::identity(), exact, clip);
     CHECK(r.last_stats().topology == Topology::Unknown);
-    CHECK(r.last_stats().swept);
+    CHECK(r.last_stats().exact_cells > 0);
 }
 
 TEST_CASE("topology: decide_topology is the verdict fill reaches for a shape given none", "[raster][topology]") {
     Rasterizer r;
     const IRect clip{0, 0, 300, 300};
-    FillOptions exact;
+    FillOptions exact;  // a shape the winding sweep does not take
+    exact.winding_sweep = false;
     const Path rings = ring();
     const Path stacked = join(square(20.25, 20.25, 200), square(20.25, 20.25, 200));
     const Path small = join(square(1.5, 1.5, 8), square(1.5, 1.5, 8));
@@ -607,12 +622,14 @@ TEST_CASE("topology: the rasterizer classifies a path under a similarity map wit
     REQUIRE(classify_topology(o) == Topology::Overlapping);
     Rasterizer r;
     const double s = 500 * font.glyph_transform(1, {0, 0}).a;  // 500 px: large enough to be classified
-    (void)r.fill_mask(o, Affine{s, 0, 0, -s, 10, 600}, {});
+    FillOptions unswept;                                       // (the sweep takes it unclassified)
+    unswept.winding_sweep = false;
+    (void)r.fill_mask(o, Affine{s, 0, 0, -s, 10, 600}, unswept);
     CHECK(r.last_stats().topology == Topology::Simple);
-    (void)r.fill_mask(o, Affine::rotate(0.5) * Affine{-s, 0, 0, -s, 10, 600}, {});
+    (void)r.fill_mask(o, Affine::rotate(0.5) * Affine{-s, 0, 0, -s, 10, 600}, unswept);
     CHECK(r.last_stats().topology == Topology::Simple);
     // A shear flattens differently: only the verdict for every map applies.
-    (void)r.fill_mask(o, Affine::skew_x(0.3) * Affine{s, 0, 0, -s, 10, 600}, {});
+    (void)r.fill_mask(o, Affine::skew_x(0.3) * Affine{s, 0, 0, -s, 10, 600}, unswept);
     CHECK(r.last_stats().topology == Topology::Overlapping);
 }
 
