@@ -211,13 +211,19 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
             MetatileTiles out = render(m);
             std::lock_guard<std::mutex> lock(mu);
             if (stop.load()) return;
-            for (auto& [x, y, png] : out.tiles) sink(m.z, x, y, png);
-            stats.metatiles += 1;
-            stats.written += out.tiles.size();
-            stats.skipped_empty += out.empty;
-            stats.skipped_existing += out.existing;
-            ++done;
-            if (progress) progress(done, mine.size());
+            try {
+                for (auto& [x, y, png] : out.tiles) sink(m.z, x, y, png);
+                stats.metatiles += 1;
+                stats.written += out.tiles.size();
+                stats.skipped_empty += out.empty;
+                stats.skipped_existing += out.existing;
+                ++done;
+                if (progress) progress(done, mine.size());
+            } catch (...) {
+                // Set while the lock is held: a worker waiting for it must not hand on its tiles.
+                stop.store(true);
+                throw;
+            }
         } catch (...) {
             stop.store(true);
             throw;

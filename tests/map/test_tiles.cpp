@@ -3,11 +3,14 @@
 #include <catch2/catch.hpp>
 #include <sqlite3.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <numbers>
+#include <stdexcept>
+#include <thread>
 
 #include "casteljau/file_io.hpp"
 #include "casteljau/png.hpp"
@@ -241,4 +244,48 @@ TEST_CASE("tiles: write_tiles picks the store by the output's name and resumes f
     CHECK(folder_files(dir / "folder") == files);
     CHECK_THROWS_AS(write_tiles(data, MapStyle{}, to, (dir / "r.mbtiles").string(), "w"), Error);
     CHECK(!fs::exists(dir / "r.mbtiles"));
+}
+
+TEST_CASE("tiles: after the sink or progress throws, no other metatile reaches either", "[tiles][errors]") {
+    // A small pyramid of small metatiles on several threads: when a callback throws, the other
+    // workers are waiting to hand their metatiles on. The callback that throws first waits a
+    // moment, so that one is waiting for certain.
+    const MapData d = read_geojson(R"({"type":"FeatureCollection","features":[
+      {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[-20,-20],[20,-20],[20,20],[-20,20],[-20,-20]]]}}]})");
+    MapStyle st;
+    st.layers[0].fill = Color::rgba(200, 120, 40);
+    TileOptions to;
+    to.min_zoom = 0;
+    to.max_zoom = 3;  // 85 metatiles of one tile
+    to.metatile = 1;
+    to.tile_px = 16;
+    to.buffer = 0;
+    to.threads = 4;
+    for (int round = 0; round < 10; ++round) {
+        int progress_calls = 0, sink_calls_after = 0;
+        bool thrown = false;
+        auto sink = [&](int, int, int, const std::vector<std::uint8_t>&) {
+            if (thrown) ++sink_calls_after;
+        };
+        auto progress = [&](std::uint64_t, std::uint64_t) {
+            if (++progress_calls == 3) {
+                thrown = true;
+                std::this_thread::sleep_for(std::chrono::milliseconds(2));
+                throw std::runtime_error("stop");
+            }
+        };
+        CHECK_THROWS_WITH(render_tiles(d, st, to, sink, {}, progress), "stop");
+        CHECK(progress_calls == 3);
+        CHECK(sink_calls_after == 0);
+        // The same for a sink that throws.
+        int sink_calls = 0;
+        auto failing_sink = [&](int, int, int, const std::vector<std::uint8_t>&) {
+            if (++sink_calls == 3) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(2));
+                throw std::runtime_error("full");
+            }
+        };
+        CHECK_THROWS_WITH(render_tiles(d, st, to, failing_sink), "full");
+        CHECK(sink_calls == 3);
+    }
 }
