@@ -201,29 +201,26 @@ TileStats render_tiles(const MapData& data, const MapStyle& style, const TileOpt
     std::atomic<bool> stop{false};  // a metatile failed: later ones are not handed to the sink
     std::uint64_t done = 0;
     auto metatile = [&](int, std::size_t index) {
+        const Metatile& m = mine[index];
+        struct Done {
+            ZoomLevels& levels;
+            int z;
+            ~Done() { levels.finished(z); }
+        } done_guard{levels, m.z};
+        // Outside the try: a failure once it is taken sets `stop` before it is released, so a
+        // worker waiting for it does not hand on its tiles.
+        std::unique_lock<std::mutex> lock(mu, std::defer_lock);
         try {
-            const Metatile& m = mine[index];
-            struct Done {
-                ZoomLevels& levels;
-                int z;
-                ~Done() { levels.finished(z); }
-            } done_guard{levels, m.z};
             MetatileTiles out = render(m);
-            std::lock_guard<std::mutex> lock(mu);
+            lock.lock();
             if (stop.load()) return;
-            try {
-                for (auto& [x, y, png] : out.tiles) sink(m.z, x, y, png);
-                stats.metatiles += 1;
-                stats.written += out.tiles.size();
-                stats.skipped_empty += out.empty;
-                stats.skipped_existing += out.existing;
-                ++done;
-                if (progress) progress(done, mine.size());
-            } catch (...) {
-                // Set while the lock is held: a worker waiting for it must not hand on its tiles.
-                stop.store(true);
-                throw;
-            }
+            for (auto& [x, y, png] : out.tiles) sink(m.z, x, y, png);
+            stats.metatiles += 1;
+            stats.written += out.tiles.size();
+            stats.skipped_empty += out.empty;
+            stats.skipped_existing += out.existing;
+            ++done;
+            if (progress) progress(done, mine.size());
         } catch (...) {
             stop.store(true);
             throw;

@@ -47,6 +47,18 @@ void WindingSweep::close_chain() {
     open_ = false;
 }
 
+void WindingSweep::start_chain(double x0, double y0, std::int8_t dir) {
+    close_chain();
+    chains_.push_back({static_cast<std::uint32_t>(pts_.size()), 0, dir, 0, 0});
+    pts_.push_back({x0, y0});
+    open_ = true;
+}
+
+void WindingSweep::push_whole(const Chain& c, int sign, Engine& out) const {
+    static_assert(sizeof(Pt) == 2 * sizeof(double));
+    out.push_chain(&pts_[c.first].x, c.last - c.first + 1, c.dir * sign < 0);
+}
+
 void WindingSweep::push_polyline(const double* xy, std::size_t n) {
     // The direction of the open chain when these edges continue it, else 0.
     std::int8_t dir = open_ && pts_.back().x == xy[0] && pts_.back().y == xy[1] ? chains_.back().dir : 0;
@@ -61,10 +73,7 @@ void WindingSweep::push_polyline(const double* xy, std::size_t n) {
         }
         const std::int8_t d = y1 > y0 ? 1 : -1;
         if (d != dir) {
-            close_chain();
-            chains_.push_back({static_cast<std::uint32_t>(pts_.size()), 0, d, 0, 0});
-            pts_.push_back({x0, y0});
-            open_ = true;
+            start_chain(x0, y0, d);
             dir = d;
         }
         pts_.push_back({x1, y1});
@@ -199,14 +208,13 @@ void WindingSweep::take_over(double y, Engine& out) {
     // as choose() keeps it from here on.
     for (std::size_t i = 0; i < next_top_; ++i) {
         const Chain& c = chains_[order_[i].second];
-        if (pts_[c.last].y <= y) out.push_chain(&pts_[c.first].x, c.last - c.first + 1, c.dir * s_ < 0);
+        if (pts_[c.last].y <= y) push_whole(c, s_, out);
     }
     // The chains still active have kept their pieces from their tops (ys, seg_s) on.
     for (Active& a : active_) a.keep = static_cast<std::int8_t>(a.dir * s_);
 }
 
 WindingSweep::Outcome WindingSweep::fill(FillRule rule, std::size_t budget, Engine& out) {
-    static_assert(sizeof(Pt) == 2 * sizeof(double));
     close_chain();
     if (chains_.empty()) return Outcome::Simple;
     order_.clear();
@@ -242,7 +250,7 @@ WindingSweep::Outcome WindingSweep::fill(FillRule rule, std::size_t budget, Engi
         y = next;
     }
     if (!proving) return Outcome::Swept;
-    for (const Chain& c : chains_) out.push_chain(&pts_[c.first].x, c.last - c.first + 1, c.dir < 0);
+    for (const Chain& c : chains_) push_whole(c, 1, out);
     return Outcome::Simple;
 }
 

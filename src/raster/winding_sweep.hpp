@@ -83,6 +83,10 @@ private:
         std::int8_t keep;  // current piece: +1 kept running down, -1 kept running up, 0 dropped
     };
     void close_chain();
+    // Closes the open chain and opens one going `dir` from (x0, y0).
+    void start_chain(double x0, double y0, std::int8_t dir);
+    // Every edge of chain c into `out`, in its contour's direction times `sign`.
+    void push_whole(const Chain& c, int sign, Engine& out) const;
     [[noreturn]] void too_many() const;
     double x_on(std::uint32_t seg, double y) const {
         const Pt& a = pts_[seg];
@@ -125,12 +129,7 @@ inline void WindingSweep::push(double x0, double y0, double x1, double y1) {
     if (++count_ > max_edges_) too_many();
     if (y0 == y1) return;  // bounds no strip; the next edge starts elsewhere, so a chain ends
     const std::int8_t dir = y1 > y0 ? 1 : -1;
-    if (!(open_ && chains_.back().dir == dir && pts_.back().x == x0 && pts_.back().y == y0)) {
-        close_chain();
-        chains_.push_back({static_cast<std::uint32_t>(pts_.size()), 0, dir, 0, 0});
-        pts_.push_back({x0, y0});
-        open_ = true;
-    }
+    if (!(open_ && chains_.back().dir == dir && pts_.back().x == x0 && pts_.back().y == y0)) start_chain(x0, y0, dir);
     pts_.push_back({x1, y1});
 }
 
