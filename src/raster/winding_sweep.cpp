@@ -39,11 +39,8 @@ void WindingSweep::close_chain() {
     Chain& c = chains_.back();
     c.last = static_cast<std::uint32_t>(pts_.size() - 1);
     if (c.dir < 0) std::reverse(pts_.begin() + c.first, pts_.end());
-    c.xmin = c.xmax = pts_[c.first].x;
-    for (std::size_t i = c.first + 1; i < pts_.size(); ++i) {
-        c.xmin = std::min(c.xmin, pts_[i].x);
-        c.xmax = std::max(c.xmax, pts_[i].x);
-    }
+    c.xmin = open_xmin_;
+    c.xmax = open_xmax_;
     open_ = false;
 }
 
@@ -51,6 +48,7 @@ void WindingSweep::start_chain(double x0, double y0, std::int8_t dir) {
     close_chain();
     chains_.push_back({static_cast<std::uint32_t>(pts_.size()), 0, dir, 0, 0});
     pts_.push_back({x0, y0});
+    open_xmin_ = open_xmax_ = x0;
     open_ = true;
 }
 
@@ -63,21 +61,34 @@ void WindingSweep::push_polyline(const double* xy, std::size_t n) {
     // The direction of the open chain when these edges continue it, else 0.
     std::int8_t dir = open_ && pts_.back().x == xy[0] && pts_.back().y == xy[1] ? chains_.back().dir : 0;
     if (pts_.capacity() < pts_.size() + n + 1) pts_.reserve(std::max(2 * pts_.capacity(), pts_.size() + n + 1));
+    // The edge count and the open chain's x range are kept in registers here and stored once; the
+    // limit is checked at the end, which lets at most this polyline's points past it.
+    std::size_t edges = 0;
+    double xmin = open_xmin_, xmax = open_xmax_;
     for (std::size_t i = 1; i < n; ++i) {
         const double x0 = xy[2 * i - 2], y0 = xy[2 * i - 1], x1 = xy[2 * i], y1 = xy[2 * i + 1];
         if (x0 == x1 && y0 == y1) continue;
-        if (++count_ > max_edges_) too_many();
+        ++edges;
         if (y0 == y1) {
             dir = 0;  // bounds no strip; the next edge starts a chain
             continue;
         }
         const std::int8_t d = y1 > y0 ? 1 : -1;
         if (d != dir) {
+            open_xmin_ = xmin;
+            open_xmax_ = xmax;
             start_chain(x0, y0, d);
+            xmin = xmax = x0;
             dir = d;
         }
         pts_.push_back({x1, y1});
+        xmin = std::min(xmin, x1);
+        xmax = std::max(xmax, x1);
     }
+    open_xmin_ = xmin;
+    open_xmax_ = xmax;
+    count_ += edges;
+    if (count_ > max_edges_) too_many();
 }
 
 void WindingSweep::trim(std::size_t points) {
@@ -86,6 +97,7 @@ void WindingSweep::trim(std::size_t points) {
     std::vector<Chain>().swap(chains_);
     std::vector<std::pair<double, std::uint32_t>>().swap(order_);
     std::vector<Active>().swap(active_);
+    std::vector<Probe>().swap(probes_);
     open_ = false;
 }
 
@@ -120,6 +132,95 @@ double WindingSweep::first_crossing(const Active& a, const Active& b, double y, 
         fprev = f;
     }
     return end;
+}
+
+bool WindingSweep::probes_cross(const Probe& a, const Probe& b, double y, std::size_t& work) const {
+    const Chain& ca = chains_[a.chain];
+    const Chain& cb = chains_[b.chain];
+    if (ca.xmax <= cb.xmin + kTouch) return false;  // a lies left of b all along
+    // x_a - x_b is linear between the points of either chain, and at most kTouch at y: the two
+    // cross if and only if it exceeds kTouch at one of those points. Each point is tested against
+    // the other chain's segment at its height by a cross product, with no division.
+    const double end = std::min(a.bottom, b.bottom);
+    std::uint32_t ia = a.seg, ib = b.seg;
+    while (pts_[ia + 1].y <= y) ++ia;
+    while (pts_[ib + 1].y <= y) ++ib;
+    while (true) {
+        ++work;
+        const Pt& a0 = pts_[ia];
+        const Pt& a1 = pts_[ia + 1];
+        const Pt& b0 = pts_[ib];
+        const Pt& b1 = pts_[ib + 1];
+        if (a1.y <= b1.y) {
+            const double dy = b1.y - b0.y;
+            if ((a1.x - b0.x) * dy - (b1.x - b0.x) * (a1.y - b0.y) > kTouch * dy) return true;
+            if (a1.y >= end) return false;
+            if (a1.y == b1.y) ++ib;
+            ++ia;
+        } else {
+            const double dy = a1.y - a0.y;
+            if ((a0.x - b1.x) * dy + (a1.x - a0.x) * (b1.y - a0.y) > kTouch * dy) return true;
+            if (b1.y >= end) return false;
+            ++ib;
+        }
+    }
+}
+
+bool WindingSweep::insert_probe(std::uint32_t c, double y) {
+    const Chain& ch = chains_[c];
+    const Pt p = pts_[ch.first], q = pts_[ch.first + 1];
+    std::size_t at = 0;
+    for (; at < probes_.size(); ++at) {
+        // Most chains lie wholly on one side of p: their x range tells, without their segments.
+        const Chain& other = chains_[probes_[at].chain];
+        if (p.x > other.xmax + kTouch) continue;
+        if (p.x < other.xmin - kTouch) break;
+        const Pt& a0 = pts_[segment_at(probes_[at], y)];
+        const Pt& a1 = pts_[probes_[at].seg + 1];
+        // Which side of the chain at `at` p lies, scaled by that segment's height: left below 0.
+        const double dy = a1.y - a0.y;
+        const double side = (p.x - a0.x) * dy - (a1.x - a0.x) * (p.y - a0.y);
+        if (side < -kTouch * dy) break;
+        if (side > kTouch * dy) continue;
+        // p touches it: the one further left just below comes first.
+        const double turn = (q.x - p.x) * dy - (a1.x - a0.x) * (q.y - p.y);
+        if (turn < 0) break;
+        if (!(turn > 0)) return false;
+    }
+    probes_.insert(probes_.begin() + static_cast<std::ptrdiff_t>(at),
+                   Probe{pts_[ch.last].y, c, ch.first, std::numeric_limits<std::uint32_t>::max(), ch.dir});
+    return true;
+}
+
+bool WindingSweep::prove_one_value(std::size_t budget) {
+    probes_.clear();
+    std::size_t next_top = 0, work = 0;
+    int s = 0;
+    double y = order_[0].first;
+    while (true) {
+        // The chains ending at y leave, those starting there enter.
+        std::erase_if(probes_, [y](const Probe& p) { return p.bottom <= y; });
+        for (; next_top < order_.size() && order_[next_top].first <= y; ++next_top) {
+            work += probes_.size();  // the insertion's search
+            if (work > budget || !insert_probe(order_[next_top].second, y)) return false;
+        }
+        if (s == 0 && !probes_.empty()) s = probes_[0].dir;
+        // Below y, up to the next top or bottom: the directions alternate from s, and no two
+        // neighbours cross (each pair checked once over the height both span).
+        double next = next_top < order_.size() ? order_[next_top].first : std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < probes_.size(); ++i) {
+            Probe& p = probes_[i];
+            if (p.dir != ((i & 1) ? -s : s)) return false;
+            next = std::min(next, p.bottom);
+            if (i + 1 == probes_.size() || p.right == probes_[i + 1].chain) continue;
+            if (probes_cross(p, probes_[i + 1], y, work)) return false;
+            p.right = probes_[i + 1].chain;
+        }
+        work += probes_.size();
+        if (work > budget) return false;
+        if (next == std::numeric_limits<double>::infinity()) return true;
+        y = next;
+    }
 }
 
 [[gnu::always_inline]] inline void WindingSweep::enter(double y) {
@@ -220,6 +321,10 @@ WindingSweep::Outcome WindingSweep::fill(FillRule rule, std::size_t budget, Engi
     order_.clear();
     for (std::uint32_t c = 0; c < chains_.size(); ++c) order_.emplace_back(pts_[chains_[c].first].y, c);
     std::sort(order_.begin(), order_.end());
+    if (prove_one_value(budget)) {
+        for (const Chain& c : chains_) push_whole(c, 1, out);
+        return Outcome::Simple;
+    }
     active_.clear();
     next_top_ = 0;
     s_ = 0;

@@ -14,15 +14,22 @@
 // as many strips as it stays bounding. Horizontal edges bound no strip and are dropped.
 //
 // Most shapes (glyphs, icons) wind 0 and one other value only; every chain bounds their region,
-// and their own edges are already exact. The sweep first only checks each strip for that, and
-// cuts nothing: a shape that passes every strip goes on with its edges whole, and one that fails
-// a strip is cut into its region's boundary from there down.
+// and their own edges are already exact. Such a shape is proven first, without strips: it winds
+// one value if no two chains cross and the chains' directions alternate from left to right (the
+// first one's direction, s, then -s, s, ...) after every chain top and bottom. As in a
+// Bentley-Ottmann sweep, the first crossing below any y is between chains that are neighbours at
+// y, so each pair of chains that becomes neighbours is checked once, over the height both span,
+// and nothing is done between the tops and bottoms. A shape that passes goes on with its edges
+// whole. Any other, or one the proof cannot order (two chains starting along one line), goes to
+// the strips: they check each strip for one value, cut nothing while it holds, and cut the shape
+// into its region's boundary from the first strip that fails.
 //
 // Cost: the edges, plus the strips times the chains spanning them. A shape with many crossings
 // (each one a strip) may cost more than the per-cell check, so the sweep stops at a budget and
 // says so.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -68,6 +75,14 @@ private:
         std::int8_t dir;            // +1: the contour runs down along it, -1: up
         double xmin, xmax;          // its points' x range
     };
+    // A chain spanning the proof's current y.
+    struct Probe {
+        double bottom;        // pts_[chain.last].y
+        std::uint32_t chain;  // into chains_
+        std::uint32_t seg;    // a segment at or above the current y (moved down when read)
+        std::uint32_t right;  // the chain below which this one is proven not to cross, or none
+        std::int8_t dir;
+    };
     // A chain spanning the current strip.
     struct Active {
         double x;             // at the strip's top
@@ -83,6 +98,19 @@ private:
         std::int8_t keep;  // current piece: +1 kept running down, -1 kept running up, 0 dropped
     };
     void close_chain();
+    // Whether the shape winds 0 and one other value only, proven without strips (see the top of
+    // this file); false also when the proof cannot tell or would take more than `budget` steps.
+    bool prove_one_value(std::size_t budget);
+    // Inserts chain c, whose top is y, where it belongs among probes_; false when it starts along
+    // a chain already there (the order is then unknown).
+    bool insert_probe(std::uint32_t c, double y);
+    // Whether chains a (left at y) and b cross below y, over the height both span.
+    bool probes_cross(const Probe& a, const Probe& b, double y, std::size_t& work) const;
+    // The segment of probe p that holds y (y between its top and bottom).
+    std::uint32_t segment_at(Probe& p, double y) const {
+        while (pts_[p.seg + 1].y <= y) ++p.seg;
+        return p.seg;
+    }
     // Closes the open chain and opens one going `dir` from (x0, y0).
     void start_chain(double x0, double y0, std::int8_t dir);
     // Every edge of chain c into `out`, in its contour's direction times `sign`.
@@ -116,11 +144,13 @@ private:
 
     std::vector<Pt> pts_;  // the open chain's in travel order, the others' by y
     std::vector<Chain> chains_;
-    bool open_ = false;  // the last chain takes more points
+    bool open_ = false;                     // the last chain takes more points
+    double open_xmin_ = 0, open_xmax_ = 0;  // the open chain's x range so far
     std::size_t count_ = 0, max_edges_ = 0;
     std::vector<std::pair<double, std::uint32_t>> order_;  // chains' tops, in order
     std::size_t next_top_ = 0;                             // the first of order_ not entered yet
     std::vector<Active> active_;                           // by x at the strip's top
+    std::vector<Probe> probes_;                            // the proof's chains, by x
     int s_ = 0;                                            // the nonzero winding number of the proven strips
 };
 
@@ -131,6 +161,8 @@ inline void WindingSweep::push(double x0, double y0, double x1, double y1) {
     const std::int8_t dir = y1 > y0 ? 1 : -1;
     if (!(open_ && chains_.back().dir == dir && pts_.back().x == x0 && pts_.back().y == y0)) start_chain(x0, y0, dir);
     pts_.push_back({x1, y1});
+    open_xmin_ = std::min(open_xmin_, x1);
+    open_xmax_ = std::max(open_xmax_, x1);
 }
 
 }  // namespace casteljau::raster

@@ -123,6 +123,28 @@ TEST_CASE("winding sweep: shapes winding one value keep their edges, others do n
         {"zigzag over a side, reversed",
          {rect(5, 2, 12, 20), reversed({{4, 2}, {6, 10}, {4, 18}, {1, 18}, {1, 2}})},
          false},
+        // Two contours meeting at one point: the first's bottom is the second's top, or a corner
+        // of one touches a side of the other from outside.
+        {"diamonds corner to corner",
+         {{{10, 2}, {14, 10}, {10, 18}, {6, 10}}, {{10, 18}, {14, 20}, {10, 22}, {6, 20}}},
+         true},
+        {"corner on a side", {rect(2, 2, 10, 20), {{10, 8}, {18, 4}, {18, 14}}}, true},
+        {"corner through a side", {rect(2, 2, 10, 20), {{9.5, 8}, {18, 4}, {18, 14}}}, false},
+        // A contour starting (its top) at a point of another's side, inside it: windings 1 and 2.
+        {"inner wedge from a side", {rect(2, 2, 18, 20), {{2, 6}, {12, 14}, {6, 16}}}, false},
+        // Chains a and b are neighbours, then c passes between them and leaves; below it, a
+        // crosses b (the crossing can only be found over the height a and b span together).
+        {"crossing below a passing contour",
+         {{{3, 2}, {9, 20}, {1, 20}}, {{8, 2}, {10, 2}, {4, 21}, {2, 21}}, {{5.5, 1}, {6.5, 1}, {6, 6}}},
+         false},
+        {"no crossing below a passing contour",
+         {{{1, 2}, {3, 2}, {3, 20}, {1, 20}}, {{8, 2}, {10, 2}, {10, 21}, {8, 21}}, {{5.5, 1}, {6.5, 1}, {6, 6}}},
+         true},
+        // Many nested rings, alternating orientation: every chain has a neighbour on either side.
+        {"nested rings",
+         {rect(1, 1, 22, 22), reversed(rect(3, 3, 20, 20)), rect(5, 5, 18, 18), reversed(rect(7, 7, 16, 16)),
+          rect(9, 9, 14, 14)},
+         true},
     };
     for (const Case& c : cases)
         for (FillRule rule : kRules) {
