@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -145,10 +146,18 @@ TEST_CASE("faults: a tile run killed in the middle and resumed equals an uninter
         "tiles " + shell_quote(kWorld) +
         " --layer countries --zoom 0-5 --metatile 2 --threads 1 --fill-by name --stroke '#333' -o ";
     const fs::path whole = dir / "whole", killed = dir / "killed";
+    const auto start = std::chrono::steady_clock::now();
     auto r = run_cli(args + shell_quote(whole.string()));
     REQUIRE(r.status == 0);
-    // Killed with SIGKILL after a moment: some metatiles are written, some not.
-    r = run_with("timeout -s KILL 1", args + shell_quote(killed.string()));
+    // Killed with SIGKILL part-way (some metatiles written, some not). The kill comes at half of
+    // the uninterrupted run's time, halved again whenever the run still got to its end: a fixed
+    // delay would outlast the whole run on a fast machine.
+    double after = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 2;
+    for (int attempt = 0; attempt < 6; ++attempt, after /= 2) {
+        fs::remove_all(killed);
+        r = run_with("timeout -s KILL " + std::to_string(after), args + shell_quote(killed.string()));
+        if (r.status != 0) break;
+    }
     CHECK(r.status == 128 + 9);  // really killed before the end (SIGKILL)
     if (fs::exists(killed))
         for (const auto& [name, bytes] : tiles_in(killed)) CHECK_NOTHROW(casteljau::decode_png(bytes));
