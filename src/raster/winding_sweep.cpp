@@ -142,9 +142,7 @@ bool WindingSweep::probes_cross(const Probe& a, const Probe& b, double y, std::s
     // cross if and only if it exceeds kTouch at one of those points. Each point is tested against
     // the other chain's segment at its height by a cross product, with no division.
     const double end = std::min(a.bottom, b.bottom);
-    std::uint32_t ia = a.seg, ib = b.seg;
-    while (pts_[ia + 1].y <= y) ++ia;
-    while (pts_[ib + 1].y <= y) ++ib;
+    std::uint32_t ia = segment_below(a.seg, y), ib = segment_below(b.seg, y);
     while (true) {
         ++work;
         const Pt& a0 = pts_[ia];
@@ -152,14 +150,12 @@ bool WindingSweep::probes_cross(const Probe& a, const Probe& b, double y, std::s
         const Pt& b0 = pts_[ib];
         const Pt& b1 = pts_[ib + 1];
         if (a1.y <= b1.y) {
-            const double dy = b1.y - b0.y;
-            if ((a1.x - b0.x) * dy - (b1.x - b0.x) * (a1.y - b0.y) > kTouch * dy) return true;
+            if (side(a1, b0, b1) > kTouch * (b1.y - b0.y)) return true;  // a's point right of b
             if (a1.y >= end) return false;
             if (a1.y == b1.y) ++ib;
             ++ia;
         } else {
-            const double dy = a1.y - a0.y;
-            if ((a0.x - b1.x) * dy + (a1.x - a0.x) * (b1.y - a0.y) > kTouch * dy) return true;
+            if (-side(b1, a0, a1) > kTouch * (a1.y - a0.y)) return true;  // b's point left of a
             if (b1.y >= end) return false;
             ++ib;
         }
@@ -177,11 +173,9 @@ bool WindingSweep::insert_probe(std::uint32_t c, double y) {
         if (p.x < other.xmin - kTouch) break;
         const Pt& a0 = pts_[segment_at(probes_[at], y)];
         const Pt& a1 = pts_[probes_[at].seg + 1];
-        // Which side of the chain at `at` p lies, scaled by that segment's height: left below 0.
-        const double dy = a1.y - a0.y;
-        const double side = (p.x - a0.x) * dy - (a1.x - a0.x) * (p.y - a0.y);
-        if (side < -kTouch * dy) break;
-        if (side > kTouch * dy) continue;
+        const double dy = a1.y - a0.y, at_side = side(p, a0, a1);
+        if (at_side < -kTouch * dy) break;
+        if (at_side > kTouch * dy) continue;
         // p touches it: the one further left just below comes first.
         const double turn = (q.x - p.x) * dy - (a1.x - a0.x) * (q.y - p.y);
         if (turn < 0) break;
@@ -280,8 +274,7 @@ template <bool kEmit>
             if constexpr (kEmit) flush(a, a.bottom, out);
             continue;
         }
-        std::uint32_t s = a.seg;
-        while (pts_[s + 1].y <= y) ++s;
+        const std::uint32_t s = segment_below(a.seg, y);
         // Copy first, then set x: writing x before copying the whole record stalls the copy.
         if (kept != i) active_[kept] = a;
         Active& k = active_[kept++];

@@ -106,10 +106,17 @@ private:
     bool insert_probe(std::uint32_t c, double y);
     // Whether chains a (left at y) and b cross below y, over the height both span.
     bool probes_cross(const Probe& a, const Probe& b, double y, std::size_t& work) const;
-    // The segment of probe p that holds y (y between its top and bottom).
-    std::uint32_t segment_at(Probe& p, double y) const {
-        while (pts_[p.seg + 1].y <= y) ++p.seg;
-        return p.seg;
+    // The first segment from `seg` on whose end lies below y (y above the chain's bottom).
+    std::uint32_t segment_below(std::uint32_t seg, double y) const {
+        while (pts_[seg + 1].y <= y) ++seg;
+        return seg;
+    }
+    // The segment of probe p that holds y (y between its top and bottom), kept in p.
+    std::uint32_t segment_at(Probe& p, double y) const { return p.seg = segment_below(p.seg, y); }
+    // Where p lies against the line through s0 and s1 (s0.y < s1.y), scaled by the segment's
+    // height: (x_p - x_s) (s1.y - s0.y), x_s the line's x at p's height; negative on the left.
+    static double side(const Pt& p, const Pt& s0, const Pt& s1) {
+        return (p.x - s0.x) * (s1.y - s0.y) - (s1.x - s0.x) * (p.y - s0.y);
     }
     // Closes the open chain and opens one going `dir` from (x0, y0).
     void start_chain(double x0, double y0, std::int8_t dir);
