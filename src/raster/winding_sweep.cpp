@@ -189,22 +189,23 @@ bool WindingSweep::insert_probe(std::uint32_t c, double y) {
 bool WindingSweep::prove_one_value(std::size_t budget) {
     probes_.clear();
     std::size_t next_top = 0, work = 0;
-    int s = 0;
+    s_ = 0;
     double y = order_[0].first;
     while (true) {
+        proven_to_ = y;
         // The chains ending at y leave, those starting there enter.
         std::erase_if(probes_, [y](const Probe& p) { return p.bottom <= y; });
         for (; next_top < order_.size() && order_[next_top].first <= y; ++next_top) {
             work += probes_.size();  // the insertion's search
             if (work > budget || !insert_probe(order_[next_top].second, y)) return false;
         }
-        if (s == 0 && !probes_.empty()) s = probes_[0].dir;
+        if (s_ == 0 && !probes_.empty()) s_ = probes_[0].dir;
         // Below y, up to the next top or bottom: the directions alternate from s, and no two
         // neighbours cross (each pair checked once over the height both span).
         double next = next_top < order_.size() ? order_[next_top].first : std::numeric_limits<double>::infinity();
         for (std::size_t i = 0; i < probes_.size(); ++i) {
             Probe& p = probes_[i];
-            if (p.dir != ((i & 1) ? -s : s)) return false;
+            if (p.dir != ((i & 1) ? -s_ : s_)) return false;
             next = std::min(next, p.bottom);
             if (i + 1 == probes_.size() || p.right == probes_[i + 1].chain) continue;
             if (probes_cross(p, probes_[i + 1], y, work)) return false;
@@ -214,6 +215,19 @@ bool WindingSweep::prove_one_value(std::size_t budget) {
         if (work > budget) return false;
         if (next == std::numeric_limits<double>::infinity()) return true;
         y = next;
+    }
+}
+
+void WindingSweep::resume_strips() {
+    const double y = proven_to_;
+    active_.clear();
+    for (next_top_ = 0; next_top_ < order_.size() && order_[next_top_].first < y; ++next_top_) {
+        const Chain& c = chains_[order_[next_top_].second];
+        if (pts_[c.last].y <= y) continue;  // ended above y: take_over() pushes it whole if needed
+        const std::uint32_t seg = segment_below(c.first, y);
+        // Kept (once kept) from its top, as enter() would have made it there.
+        active_.push_back({x_on(seg, y), slope(seg), pts_[c.last].y, order_[next_top_].first, seg, c.first, c.last,
+                           c.xmin, c.xmax, c.dir, 0});
     }
 }
 
@@ -318,12 +332,11 @@ WindingSweep::Outcome WindingSweep::fill(FillRule rule, std::size_t budget, Engi
         for (const Chain& c : chains_) push_whole(c, 1, out);
         return Outcome::Simple;
     }
-    active_.clear();
-    next_top_ = 0;
-    s_ = 0;
+    // The strips go on from where the proof stopped, with its s_.
+    resume_strips();
     bool proving = true;  // every strip so far wound 0 and s_ only
     std::size_t work = 0;
-    double y = order_[0].first;
+    double y = proven_to_;
     while (true) {
         enter(y);
         if (active_.empty()) {

@@ -21,8 +21,9 @@
 // y, so each pair of chains that becomes neighbours is checked once, over the height both span,
 // and nothing is done between the tops and bottoms. A shape that passes goes on with its edges
 // whole. Any other, or one the proof cannot order (two chains starting along one line), goes to
-// the strips: they check each strip for one value, cut nothing while it holds, and cut the shape
-// into its region's boundary from the first strip that fails.
+// the strips from the y where the proof stopped (everything above it is proven): they check each
+// strip for one value, cut nothing while it holds, and cut the shape into its region's boundary
+// from the first strip that fails.
 //
 // Cost: the edges, plus the strips times the chains spanning them. A shape with many crossings
 // (each one a strip) may cost more than the per-cell check, so the sweep stops at a budget and
@@ -100,7 +101,11 @@ private:
     void close_chain();
     // Whether the shape winds 0 and one other value only, proven without strips (see the top of
     // this file); false also when the proof cannot tell or would take more than `budget` steps.
+    // Either way every strip above proven_to_ winds 0 and s_ only.
     bool prove_one_value(std::size_t budget);
+    // Sets the strips up at y = proven_to_ as if they had swept the proven part above it: the
+    // chains spanning y active from their tops, the others above it entered.
+    void resume_strips();
     // Inserts chain c, whose top is y, where it belongs among probes_; false when it starts along
     // a chain already there (the order is then unknown).
     bool insert_probe(std::uint32_t c, double y);
@@ -159,6 +164,7 @@ private:
     std::vector<Active> active_;                           // by x at the strip's top
     std::vector<Probe> probes_;                            // the proof's chains, by x
     int s_ = 0;                                            // the nonzero winding number of the proven strips
+    double proven_to_ = 0;                                 // see prove_one_value()
 };
 
 inline void WindingSweep::push(double x0, double y0, double x1, double y1) {
