@@ -65,6 +65,11 @@ struct Flattener {
     const Rect* cull;  // when set, curves whose control box misses it become their chord
     Sink& out;
     bool balanced = false;  // area-balanced pieces (see quad() and balanced_cubic()); only for filling
+    double tol = std::sqrt(tol2);
+    // The current point and the contour's start, transformed: every segment starts where the one
+    // before it ended (the visitor calls move, line, ... close in path order), so its first control
+    // point needs no second transform.
+    Point last{}, start{};
 
     void emit(Point p) { out.point(p); }
     void finish_contour() { out.end(); }
@@ -81,12 +86,15 @@ struct Flattener {
         return x1 < cull->x0 || x0 > cull->x1 || y1 < cull->y0 || y0 > cull->y1;
     }
 
-    void move(Point p) { out.begin(m(p)); }
-    void line(Point, Point p) { emit(m(p)); }
-    void close(Point, Point) { out.mark_closed(); }
+    void move(Point p) { out.begin(last = start = m(p)); }
+    void line(Point, Point p) { emit(last = m(p)); }
+    void close(Point, Point) {
+        out.mark_closed();
+        last = start;
+    }
 
-    void quad(Point a, Point b, Point c) {
-        const Point p0 = m(a), p1 = m(b), p2 = m(c);
+    void quad(Point, Point b, Point c) {
+        const Point p0 = last, p1 = m(b), p2 = last = m(c);
         if (culled({p0, p1, p2})) return emit(p2);
         // For a quadratic the second difference of the piece over any parameter interval of
         // length h is h^2 times the whole curve's, so n uniform pieces each stay within
@@ -146,8 +154,8 @@ struct Flattener {
     // emits B(t0 + h), evaluated in the power basis; the last one emits P3 itself. This is the
     // same rule and the same chords as de Casteljau halving, at a fraction of its cost (no control
     // points are split or stacked), up to rounding in the last bits of the points and bounds.
-    [[gnu::always_inline]] inline void cubic(Point a, Point b, Point c, Point d) {
-        const Point p0 = m(a), p1 = m(b), p2 = m(c), p3 = m(d);
+    [[gnu::always_inline]] inline void cubic(Point, Point b, Point c, Point d) {
+        const Point p0 = last, p1 = m(b), p2 = m(c), p3 = last = m(d);
         if (culled({p0, p1, p2, p3})) return emit(p3);
         const Point D0 = p0 - p1 * 2 + p2, D1 = p1 - p2 * 2 + p3;
         const double s0 = sq(D0), s1 = sq(D1);
@@ -206,7 +214,7 @@ struct Flattener {
     // weights, so they stay in the control points' hull.
     void balanced_cubic(Point p0, Point p1, Point p3, Point D0, Point D1, double m2) {
         const Point E = D1 - D0, C1 = (p1 - p0) * 3, C2 = D0 * 3;
-        const double M = std::sqrt(m2), e = std::sqrt(sq(E)), tol = std::sqrt(tol2);
+        const double M = std::sqrt(m2), e = std::sqrt(sq(E));
         constexpr int kMaxPieces = 1 << limits::kMaxFlattenDepth;
         auto fits = [&](double n) { return (25.0 / 48.0) * M * n + 0.5 * e <= tol * n * n * n; };
         int n = 2;
@@ -225,8 +233,8 @@ struct Flattener {
         emit(p3);
     }
 
-    void conic(Point a, Point b, Point c, double w) {
-        const Point p0 = m(a), p1 = m(b), p2 = m(c);
+    void conic(Point, Point b, Point c, double w) {
+        const Point p0 = last, p1 = m(b), p2 = last = m(c);
         if (culled({p0, p1, p2})) return emit(p2);
         struct K {
             Point p0, p1, p2;
