@@ -38,6 +38,7 @@
 // Only positive-length pieces inside the open cell count as visits: an edge along a cell's
 // boundary only moves cover, which accumulation gets right.
 #include <algorithm>
+#include <cassert>
 #include <climits>
 #include <cmath>
 #include <cstring>
@@ -136,29 +137,56 @@ void Engine::trim(std::size_t records) {
     release(exact_ids_);
 }
 
-void Engine::push_polyline(const double* xy, std::size_t n) {
-    if (!vec_) {
-        for (std::size_t i = 1; i < n; ++i) push(xy[2 * i - 2], xy[2 * i - 1], xy[2 * i], xy[2 * i + 1]);
-        return;
-    }
-    // The row vectors (most glyphs): push()'s steps with its choice of walk made once.
+// push()'s steps for the row vectors (most glyphs), with its choice of walk made once: each point
+// held at the box's bottom once, the pieces of all the edges written through a local pointer into
+// room reserved for them (an edge over |dy| rows makes at most |dy| + 2 pieces), and the edge count
+// added and checked once, after the last edge (which lets at most these edges past the limit), so
+// that nothing goes back to memory per edge.
+template <bool kReverse>
+void Engine::push_rows(const double* xy, std::size_t n, double rows) {
+    auto x_at = [&](std::size_t i) { return xy[2 * (kReverse ? n - 1 - i : i)]; };
+    auto y_at = [&](std::size_t i) {
+        const double y = xy[2 * (kReverse ? n - 1 - i : i) + 1];
+        return y < fh_ ? y : fh_;
+    };
+    RowPiece* out = pieces_.room(static_cast<std::size_t>(rows) + 2 * n);
+    std::size_t edges = 0;
+    double x0 = x_at(0), y0 = y_at(0);
     for (std::size_t i = 1; i < n; ++i) {
-        const double x0 = xy[2 * i - 2], x1 = xy[2 * i];
-        double y0 = xy[2 * i - 1], y1 = xy[2 * i + 1];
-        if (admit(x0, y0, x1, y1)) list_pieces(x0, y0, x1, y1);
+        const double x1 = x_at(i), y1 = y_at(i);
+        if (x0 != x1 || y0 != y1) {
+            ++edges;
+            if (y0 != y1) out = list_pieces_at(out, x0, y0, x1, y1);  // a horizontal edge has no cover
+        }
+        x0 = x1;
+        y0 = y1;
     }
+    pieces_.commit(out);
+    count_ += edges;
+    if (count_ > max_edges_)
+        throw Error(ErrorKind::Limit, "path too complex: more than " + std::to_string(max_edges_) + " edges");
+}
+
+void Engine::push_polyline(const double* xy, std::size_t n) {
+    if (vec_) {
+        double rows = 0;
+        for (std::size_t i = 1; i < n; ++i) rows += std::abs(xy[2 * i + 1] - xy[2 * i - 1]);
+        return push_rows<false>(xy, n, rows);
+    }
+    for (std::size_t i = 1; i < n; ++i) push(xy[2 * i - 2], xy[2 * i - 1], xy[2 * i], xy[2 * i + 1]);
 }
 
 void Engine::push_chain(const double* xy, std::size_t n, bool reverse) {
-    if (!reverse) return push_polyline(xy, n);
-    for (std::size_t i = n - 1; i > 0; --i) {
-        const double x0 = xy[2 * i], x1 = xy[2 * i - 2];
-        double y0 = xy[2 * i + 1], y1 = xy[2 * i - 1];
-        if (!vec_)
-            push(x0, y0, x1, y1);
-        else if (admit(x0, y0, x1, y1))
-            list_pieces(x0, y0, x1, y1);
+    if (vec_) {
+        // The points are monotone in y, so the edges' heights add up to the chain's.
+        const double rows = std::abs(xy[2 * n - 1] - xy[1]);
+#ifndef NDEBUG
+        for (std::size_t i = 1; i < n; ++i) assert((xy[2 * i + 1] - xy[2 * i - 1]) * (xy[2 * n - 1] - xy[1]) >= 0);
+#endif
+        return reverse ? push_rows<true>(xy, n, rows) : push_rows<false>(xy, n, rows);
     }
+    if (!reverse) return push_polyline(xy, n);
+    for (std::size_t i = n - 1; i > 0; --i) push(xy[2 * i], xy[2 * i + 1], xy[2 * i - 2], xy[2 * i - 1]);
 }
 
 void Engine::begin(int w, int h, bool track) {

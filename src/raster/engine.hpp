@@ -65,7 +65,8 @@ public:
     inline void push(double x0, double y0, double x1, double y1);
     // The edges between n consecutive points (x and y interleaved), as push() for each.
     void push_polyline(const double* xy, std::size_t n);
-    // The same edges in the opposite direction when `reverse` (from point n - 1 to point 0).
+    // The edges of a chain, n points monotone in y (the winding sweep's), in the opposite
+    // direction when `reverse` (from point n - 1 to point 0).
     void push_chain(const double* xy, std::size_t n, bool reverse);
     // The current contour is complete (its closing edge was pushed).
     void contour_end();
@@ -102,6 +103,13 @@ private:
     T* cells();
     // The row vectors' walk: lists the edge's pieces.
     inline void list_pieces(double x0, double y0, double x1, double y1);
+    // list_pieces() for an edge with y0 != y1, writing from `out` (room for floor(|y1 - y0|) + 2
+    // pieces); returns the new end.
+    inline RowPiece* list_pieces_at(RowPiece* out, double x0, double y0, double x1, double y1);
+    // The row vectors' push of the edges between n consecutive points (reversed: from the last);
+    // `rows`: at least the sum of the edges' heights.
+    template <bool kReverse>
+    void push_rows(const double* xy, std::size_t n, double rows);
     inline bool admit(double x0, double& y0, double x1, double& y1);
     inline void touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits);
     bool harmless_two(const Visit& a, const Visit& b, int col, int row);
@@ -408,6 +416,11 @@ template <bool kTrack, class T>
 [[gnu::always_inline]] inline void Engine::list_pieces(double x0, double y0, double x1, double y1) {
     if (y0 == y1) return;  // no cover
     RowPiece* out = pieces_.room(static_cast<std::size_t>(std::abs(y1 - y0)) + 2);
+    pieces_.commit(list_pieces_at(out, x0, y0, x1, y1));
+}
+
+[[gnu::always_inline]] inline RowPiece* Engine::list_pieces_at(RowPiece* out, double x0, double y0, double x1,
+                                                               double y1) {
     for_each_row(
         x0, y0, x1, y1, [&](int r, double xa, double ya, double xb, double yb) __attribute__((always_inline)) {
             // Selects, not branches: the order of xa and xb follows the outline, which a branch
@@ -415,7 +428,7 @@ template <bool kTrack, class T>
             const double xl = std::min(xa, xb), xr = std::max(xa, xb);
             *out++ = {static_cast<float>(xl), static_cast<float>(xr), static_cast<float>(yb - ya), r};  // k: dy
         });
-    pieces_.commit(out);
+    return out;
 }
 
 }  // namespace casteljau::raster
