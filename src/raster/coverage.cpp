@@ -192,11 +192,26 @@ int RowVectorLanesImpl() {
     return static_cast<int>(hn::Lanes(d));
 }
 
+// Pieces listed in outline order: consecutive ones often lie in one row (a curve's short edges),
+// and adding them one after the other would chain each row's additions through memory, every one
+// waiting for the store of the one before. Taking the list's four quarters in turn puts pieces from
+// distant parts of the outline next to each other. Each row still gets the same pieces; only the
+// order of their float additions changes.
 template <int kVectors, class D>
-HWY_INLINE void AccumulateFixed(D d, const RowPiece* HWY_RESTRICT pieces, std::size_t n, float* HWY_RESTRICT acc) {
+HWY_INLINE void AccumulateFixed(D d, const RowPiece* HWY_RESTRICT pieces, std::size_t n, bool outline_order,
+                                float* HWY_RESTRICT acc) {
     const std::size_t stride = kVectors * hn::Lanes(d);
-    for (std::size_t k = 0; k < n; ++k)
-        AddRowPieceFixed<kVectors>(d, pieces[k], acc + static_cast<std::size_t>(pieces[k].r) * stride);
+    auto add = [&](const RowPiece& p) {
+        AddRowPieceFixed<kVectors>(d, p, acc + static_cast<std::size_t>(p.r) * stride);
+    };
+    const std::size_t q = outline_order ? n / 4 : 0;
+    for (std::size_t k = 0; k < q; ++k) {
+        add(pieces[k]);
+        add(pieces[q + k]);
+        add(pieces[2 * q + k]);
+        add(pieces[3 * q + k]);
+    }
+    for (std::size_t k = 4 * q; k < n; ++k) add(pieces[k]);
 }
 
 // Listed pieces {xl, xr, dy, r} to make_row_piece's {xl, xr, k, r}, with the same arithmetic (so
@@ -222,14 +237,15 @@ HWY_INLINE void PreparePieces(RowPiece* HWY_RESTRICT pieces, std::size_t n) {
     for (; i < n; ++i) pieces[i] = make_row_piece(pieces[i].r, pieces[i].xl, pieces[i].xr, pieces[i].k);
 }
 
-void RowVectorAccumulateImpl(RowPiece* HWY_RESTRICT pieces, std::size_t n, float* HWY_RESTRICT acc, int stride) {
+void RowVectorAccumulateImpl(RowPiece* HWY_RESTRICT pieces, std::size_t n, bool outline_order, float* HWY_RESTRICT acc,
+                             int stride) {
     PreparePieces(pieces, n);
     const hn::ScalableTag<float> d;
     switch (stride / static_cast<int>(hn::Lanes(d))) {  // rows of up to four vectors: unrolled
-        case 1: return AccumulateFixed<1>(d, pieces, n, acc);
-        case 2: return AccumulateFixed<2>(d, pieces, n, acc);
-        case 3: return AccumulateFixed<3>(d, pieces, n, acc);
-        case 4: return AccumulateFixed<4>(d, pieces, n, acc);
+        case 1: return AccumulateFixed<1>(d, pieces, n, outline_order, acc);
+        case 2: return AccumulateFixed<2>(d, pieces, n, outline_order, acc);
+        case 3: return AccumulateFixed<3>(d, pieces, n, outline_order, acc);
+        case 4: return AccumulateFixed<4>(d, pieces, n, outline_order, acc);
         default: break;
     }
     for (std::size_t k = 0; k < n; ++k)
@@ -275,8 +291,8 @@ void scan_rows(const ScanRows& rows, SpanSink& sink) { CASTELJAU_SIMD_DISPATCH(S
 
 // Not cached: tests switch targets, and the stride must be whole vectors of the kernels' target.
 int row_vector_lanes() { return CASTELJAU_SIMD_DISPATCH(RowVectorLanesImpl)(); }
-void row_vector_accumulate(RowPiece* pieces, std::size_t n, float* acc, int stride) {
-    CASTELJAU_SIMD_DISPATCH(RowVectorAccumulateImpl)(pieces, n, acc, stride);
+void row_vector_accumulate(RowPiece* pieces, std::size_t n, bool outline_order, float* acc, int stride) {
+    CASTELJAU_SIMD_DISPATCH(RowVectorAccumulateImpl)(pieces, n, outline_order, acc, stride);
 }
 void row_vector_emit(const RowVectorRows& rows, SpanSink& sink) {
     CASTELJAU_SIMD_DISPATCH(RowVectorEmitImpl)(rows, sink);

@@ -178,6 +178,7 @@ void Engine::push_polyline(const double* xy, std::size_t n) {
 
 void Engine::push_chain(const double* xy, std::size_t n, bool reverse) {
     if (vec_) {
+        chains_ = true;
         // The points are monotone in y, so the edges' heights add up to the chain's.
         const double rows = std::abs(xy[2 * n - 1] - xy[1]);
 #ifndef NDEBUG
@@ -216,6 +217,7 @@ void Engine::begin(int w, int h, bool track) {
         const std::size_t n = static_cast<std::size_t>(vstride_) * static_cast<std::size_t>(h);
         grow_zeroed(facc_, n);
         pieces_.clear();
+        chains_ = false;
     } else {
         if (fcells_) {
             stride_ = (stride_ + 7) & ~std::size_t(7);  // whole 8-cell blocks: the scan's vectors
@@ -658,7 +660,7 @@ void Engine::finish(FillRule rule, int ox, int oy, SpanSink& sink, RasterStats& 
         exact_.clear();
     }
     if (vec_) {  // no overlap check, so no exact cells
-        row_vector_accumulate(pieces_.data(), pieces_.size(), facc_.data(), vstride_);
+        row_vector_accumulate(pieces_.data(), pieces_.size(), !chains_, facc_.data(), vstride_);
         if (cov_.size() < static_cast<std::size_t>(vstride_)) cov_.resize(static_cast<std::size_t>(vstride_));
         const RowVectorRows rows{facc_.data(), vstride_, w_, h_, rule, cov_.data(), ox, oy};
         row_vector_emit(rows, sink);

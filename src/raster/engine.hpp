@@ -154,6 +154,7 @@ private:
     int vstride_ = 0;                    // floats per row of facc_ (w rounded up to whole vectors)
     platform::LargeVector<float> facc_;  // row vectors or float cells, all zero between shapes
     AppendList<RowPiece> pieces_;
+    bool chains_ = false;                       // the pieces came chain by chain (push_chain), not along the outline
     bool dirty_ = false;                        // buffers may hold data from an interrupted shape
     platform::LargeVector<double> acc_;         // cover/area, (w + 2) x h, all zero between shapes
     platform::LargeVector<std::int32_t> head_;  // per cell: last visit + 1 (0: none), all zero between shapes

@@ -193,7 +193,10 @@ int row_vector_lanes();
 // come as the walk lists them, {xl, xr, dy, r} (k holding dy), and are first turned into
 // make_row_piece's form in place, a SIMD vector of pieces at a time: the division and the test for
 // vertical pieces cost a few cycles and a mispredicted branch each when done one piece at a time.
-void row_vector_accumulate(RowPiece* pieces, std::size_t n, float* acc, int stride);
+// `outline_order`: the pieces were listed along the outline (not chain by chain, as the winding
+// sweep hands them on), so consecutive ones often share a row, and they are added in an order that
+// separates them.
+void row_vector_accumulate(RowPiece* pieces, std::size_t n, bool outline_order, float* acc, int stride);
 // Maps rows [0, h) of acc through the fill rule to 8-bit coverage and clears them; rows with
 // from[r] == INT_MAX (no piece) are skipped (they are zero). Each row goes to the sink from column
 // from[r] to w, at (ox, oy). `cov`: stride bytes of scratch. (Rows this narrow fit a vector or
