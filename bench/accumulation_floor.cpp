@@ -28,6 +28,7 @@
 // cannot report a fast time.
 //
 // Usage: accumulation_floor [--quick] [--runs R] [--min-time S] [--sizes 12,24,...] [--tolerance PX]
+//                           [--font FILE]
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "accumulation_floor.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -211,12 +212,13 @@ using floorbench::Seg;
 
 struct Options : bench::CommonOptions {
     double tolerance = casteljau::kDefaultTolerance;
+    std::string font = CASTELJAU_BENCH_FONT;
 };
 
 [[noreturn]] void usage(const char* msg) {
     std::fprintf(stderr,
                  "accumulation_floor: %s\nusage: accumulation_floor [--quick] [--runs R] [--min-time S] [--sizes "
-                 "12,24,...] [--tolerance PX]\n",
+                 "12,24,...] [--tolerance PX] [--font FILE]\n",
                  msg);
     std::exit(2);
 }
@@ -230,6 +232,9 @@ Options parse(int argc, char** argv) {
             if (i + 1 >= argc) usage("missing value after --tolerance");
             o.tolerance = std::atof(argv[++i]);
             if (!(o.tolerance > 0)) usage("--tolerance must be positive");
+        } else if (a == "--font") {
+            if (i + 1 >= argc) usage("missing value after --font");
+            o.font = argv[++i];
         } else if (a == "--help" || a == "-h") {
             usage("lower bounds of accumulation designs on the compare_glyphs glyph set");
         } else {
@@ -269,7 +274,7 @@ double time_ns(const Options& o, std::size_t glyphs, F&& pass) {
 }
 
 int run(const Options& o) {
-    const bench::Font font;
+    const bench::Font font(o.font);
     std::printf("accumulation_floor: %s, glyph set of compare_glyphs, unhinted, tolerance %g px\n", font.path().c_str(),
                 o.tolerance);
     std::printf(
