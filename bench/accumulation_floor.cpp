@@ -6,8 +6,9 @@
 //
 //   FreeType          FT_Outline_Render of the outline: everything (flattening, cells, sweep, spans)
 //   budget            FreeType's time / 1.5: what casteljau may spend on everything to be 1.5x as fast
-//   flatten           casteljau::flatten of the outline into a polygon (area-balanced, the polygon
-//                     fill scan-converts), nothing else: what any chord-based design pays first
+//   flatten           the fill's own flattener (flatten_into, area-balanced, as Rasterizer::fill
+//                     runs it) of the outline into a batch of 64 points handed on and dropped,
+//                     nothing else: what any chord-based design pays first
 //   casteljau         Rasterizer::fill of the *already flattened* polygon (exact overlaps on; no
 //                     flattening timed), and the same with exact overlaps off
 //   dense float       font-rs's design: every edge walked through a dense float buffer (cover/area),
@@ -49,6 +50,7 @@
 #include "casteljau/flatten.hpp"
 #include "casteljau/raster.hpp"
 #include "glyph_set.hpp"
+#include "path/flatten_internal.hpp"
 #include "timer.hpp"
 
 #ifndef ACCUMULATION_FLOOR_SHARED
@@ -244,6 +246,42 @@ Options parse(int argc, char** argv) {
     return o;
 }
 
+// Takes the fill flattener's points as the rasterizer's batch sink does (64 points at a time, each
+// contour closed) and keeps only a checksum of each batch, so that the time is the flattening's
+// alone.
+struct BatchSink {
+    static constexpr std::size_t kBatch = 64;
+    double xy[2 * kBatch];
+    std::size_t n = 0;
+    casteljau::Point start{};
+    unsigned checksum = 0;
+    void begin(casteljau::Point p) {
+        end();
+        start = p;
+        xy[0] = p.x;
+        xy[1] = p.y;
+        n = 1;
+    }
+    void point(casteljau::Point p) {
+        xy[2 * n] = p.x;
+        xy[2 * n + 1] = p.y;
+        if (++n == kBatch) {
+            hand_on();
+            xy[0] = xy[2 * kBatch - 2];
+            xy[1] = xy[2 * kBatch - 1];
+            n = 1;
+        }
+    }
+    void mark_closed() {}
+    void end() {
+        if (n == 0) return;
+        point(start);  // fills close every contour
+        if (n > 1) hand_on();
+        n = 0;
+    }
+    void hand_on() { checksum += static_cast<unsigned>(n) + static_cast<unsigned>(xy[2 * n - 1]); }
+};
+
 // One glyph, flattened once (the polygon casteljau's fill scan-converts at this tolerance).
 struct Flat {
     int w = 0, h = 0;
@@ -378,14 +416,14 @@ int run(const Options& o) {
             });
         };
         const double on = cast(true), offt = cast(false);
-        casteljau::Polyline scratch_polyline;
+        BatchSink batches;
         const double flat = time_ns(o, flats.size(), [&] {
             for (const bench::Glyph& g : set.glyphs()) {
-                casteljau::flatten(g.path, g.to_box, o.tolerance, scratch_polyline,
-                                   casteljau::FlattenMode::AreaBalanced);
-                checksum += static_cast<unsigned>(scratch_polyline.points.size());
+                casteljau::flatten_into(g.path, g.to_box, o.tolerance, nullptr, batches, true);
+                batches.end();
             }
         });
+        checksum += batches.checksum;
         const double dense = time_ns(o, flats.size(), [&] {
             for (const Flat& f : flats) {
                 floorbench::dense_float(job(f, f.w + 2));
