@@ -6,8 +6,8 @@
 //
 //   FreeType          FT_Outline_Render of the outline: everything (flattening, cells, sweep, spans)
 //   budget            FreeType's time / 1.5: what casteljau may spend on everything to be 1.5x as fast
-//   flatten           the fill's own flattener (flatten_into, area-balanced, as Rasterizer::fill
-//                     runs it) of the outline into a batch of 64 points handed on and dropped,
+//   flatten           the fill's own flattener (flatten_into, area-balanced, into the fill's batch
+//                     sink, as Rasterizer::fill runs them), its polylines handed on and dropped,
 //                     nothing else: what any chord-based design pays first
 //   casteljau         Rasterizer::fill of the *already flattened* polygon (exact overlaps on; no
 //                     flattening timed), and the same with exact overlaps off
@@ -51,6 +51,7 @@
 #include "casteljau/raster.hpp"
 #include "glyph_set.hpp"
 #include "path/flatten_internal.hpp"
+#include "raster/edge_builder.hpp"
 #include "timer.hpp"
 
 #ifndef ACCUMULATION_FLOOR_SHARED
@@ -246,40 +247,14 @@ Options parse(int argc, char** argv) {
     return o;
 }
 
-// Takes the fill flattener's points as the rasterizer's batch sink does (64 points at a time, each
-// contour closed) and keeps only a checksum of each batch, so that the time is the flattening's
-// alone.
-struct BatchSink {
-    static constexpr std::size_t kBatch = 64;
-    double xy[2 * kBatch];
-    std::size_t n = 0;
-    casteljau::Point start{};
+// Where the fill's batch sink (raster::PolylineSink) hands its polylines: only a checksum is kept,
+// so that the time is the flattening's alone.
+struct ChecksumOut {
     unsigned checksum = 0;
-    void begin(casteljau::Point p) {
-        end();
-        start = p;
-        xy[0] = p.x;
-        xy[1] = p.y;
-        n = 1;
+    void push_polyline(const double* xy, std::size_t n) {
+        checksum += static_cast<unsigned>(n) + static_cast<unsigned>(xy[2 * n - 1]);
     }
-    void point(casteljau::Point p) {
-        xy[2 * n] = p.x;
-        xy[2 * n + 1] = p.y;
-        if (++n == kBatch) {
-            hand_on();
-            xy[0] = xy[2 * kBatch - 2];
-            xy[1] = xy[2 * kBatch - 1];
-            n = 1;
-        }
-    }
-    void mark_closed() {}
-    void end() {
-        if (n == 0) return;
-        point(start);  // fills close every contour
-        if (n > 1) hand_on();
-        n = 0;
-    }
-    void hand_on() { checksum += static_cast<unsigned>(n) + static_cast<unsigned>(xy[2 * n - 1]); }
+    void contour_end() {}
 };
 
 // One glyph, flattened once (the polygon casteljau's fill scan-converts at this tolerance).
@@ -416,11 +391,12 @@ int run(const Options& o) {
             });
         };
         const double on = cast(true), offt = cast(false);
-        BatchSink batches;
+        ChecksumOut batches;
         const double flat = time_ns(o, flats.size(), [&] {
             for (const bench::Glyph& g : set.glyphs()) {
-                casteljau::flatten_into(g.path, g.to_box, o.tolerance, nullptr, batches, true);
-                batches.end();
+                casteljau::raster::PolylineSink<ChecksumOut> sink(batches);
+                casteljau::flatten_into(g.path, g.to_box, o.tolerance, nullptr, sink, true);
+                sink.end();
             }
         });
         checksum += batches.checksum;

@@ -152,8 +152,9 @@ void Engine::push_rows(const double* xy, std::size_t n, double rows) {
         const double y = xy[2 * (kReverse ? n - 1 - i : i) + 1];
         return y < fh_ ? y : fh_;
     };
-    RowPiece* out = pieces_.room(static_cast<std::size_t>(rows) + 2 * n);
-    [[maybe_unused]] const RowPiece* const room_end = out + static_cast<std::size_t>(rows) + 2 * n;
+    const std::size_t room = static_cast<std::size_t>(rows) + 2 * n;
+    RowPiece* out = pieces_.room(room);
+    [[maybe_unused]] const RowPiece* const room_end = out + room;
     std::size_t edges = 0;
     double x0 = x_at(0), y0 = y_at(0);
     for (std::size_t i = 1; i < n; ++i) {
