@@ -68,7 +68,7 @@ struct Job {
     int w, h;
     float* acc;         // `stride` floats per row, zero on entry and on return
     std::uint8_t* out;  // row vector: `stride` bytes per row; dense float: w bytes per row
-    int stride;         // row vector: w rounded up to whole vectors (row_vector_stride); dense float: w + 2
+    int stride;         // row vector: w rounded up to whole granules (row_vector_stride); dense float: w + 2
 };
 }  // namespace floorbench
 #endif
@@ -151,9 +151,9 @@ void DenseFloatImpl(const Job& job) {
     }
 }
 
+// Rows of whole granules, as the library's (raster_internal.hpp).
 int StrideImpl(int w) {
-    const hn::ScalableTag<float> d;
-    const int n = static_cast<int>(hn::Lanes(d));
+    const int n = static_cast<int>(hn::Lanes(hn::CappedTag<float, casteljau::raster::kRowGranule>()));
     return (w + n - 1) / n * n;
 }
 
@@ -178,18 +178,20 @@ void RowVectorImpl(const Job& job) {
     }
     // Nonzero rule, 8-bit, and clear the rows.
     const int N = static_cast<int>(hn::Lanes(d));
-    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
-    const hn::Rebind<std::int32_t, decltype(d)> di;
-    const hn::Rebind<std::uint8_t, decltype(d)> du8;
-    const auto scale = hn::Set(d, 255.0f);
     for (int r = 0; r < job.h; ++r) {
         float* row = job.acc + static_cast<std::size_t>(r) * static_cast<std::size_t>(job.stride);
         std::uint8_t* o = job.out + static_cast<std::size_t>(r) * static_cast<std::size_t>(job.stride);
-        for (int i = 0; i < job.stride; i += N) {
-            const auto v = hn::Min(hn::Abs(hn::LoadU(d, row + i)), one);
-            hn::StoreU(zero, d, row + i);
-            hn::StoreU(hn::DemoteTo(du8, hn::ConvertTo(di, hn::MulAdd(v, scale, half))), du8, o + i);
-        }
+        auto put = [&](auto dv, int i) {
+            const hn::Rebind<std::int32_t, decltype(dv)> di;
+            const hn::Rebind<std::uint8_t, decltype(dv)> du8;
+            const auto v = hn::Min(hn::Abs(hn::LoadU(dv, row + i)), hn::Set(dv, 1.0f));
+            hn::StoreU(hn::Zero(dv), dv, row + i);
+            hn::StoreU(hn::DemoteTo(du8, hn::ConvertTo(di, hn::MulAdd(v, hn::Set(dv, 255.0f), hn::Set(dv, 0.5f)))), du8,
+                       o + i);
+        };
+        int i = 0;
+        for (; i + N <= job.stride; i += N) put(d, i);
+        if (i < job.stride) put(hn::CappedTag<float, casteljau::raster::kRowGranule>(), i);
     }
 }
 

@@ -192,17 +192,19 @@ int RowVectorLanesImpl() {
     return static_cast<int>(hn::Lanes(d));
 }
 
+int RowVectorGranuleImpl() { return static_cast<int>(hn::Lanes(hn::CappedTag<float, kRowGranule>())); }
+
 // Pieces listed in outline order: consecutive ones often lie in one row (a curve's short edges),
 // and adding them one after the other would chain each row's additions through memory, every one
 // waiting for the store of the one before. Taking the list's four quarters in turn puts pieces from
 // distant parts of the outline next to each other. Each row still gets the same pieces; only the
 // order of their float additions changes.
-template <int kVectors, class D>
+template <int kGranules, class D>
 HWY_INLINE void AccumulateFixed(D d, const RowPiece* HWY_RESTRICT pieces, std::size_t n, bool outline_order,
                                 float* HWY_RESTRICT acc) {
-    const std::size_t stride = kVectors * hn::Lanes(d);
+    const std::size_t stride = kGranules * hn::Lanes(hn::CappedTag<float, kRowGranule>());
     auto add = [&](const RowPiece& p) {
-        AddRowPieceFixed<kVectors>(d, p, acc + static_cast<std::size_t>(p.r) * stride);
+        AddRowPieceFixed<kGranules>(d, p, acc + static_cast<std::size_t>(p.r) * stride);
     };
     const std::size_t q = outline_order ? n / 4 : 0;
     for (std::size_t k = 0; k < q; ++k) {
@@ -241,7 +243,8 @@ void RowVectorAccumulateImpl(RowPiece* HWY_RESTRICT pieces, std::size_t n, bool 
                              int stride) {
     PreparePieces(pieces, n);
     const hn::ScalableTag<float> d;
-    switch (stride / static_cast<int>(hn::Lanes(d))) {  // rows of up to four vectors: unrolled
+    // Rows of up to four vectors: unrolled, in whole vectors and a granule.
+    switch (stride / static_cast<int>(hn::Lanes(hn::CappedTag<float, kRowGranule>()))) {
         case 1: return AccumulateFixed<1>(d, pieces, n, outline_order, acc);
         case 2: return AccumulateFixed<2>(d, pieces, n, outline_order, acc);
         case 3: return AccumulateFixed<3>(d, pieces, n, outline_order, acc);
@@ -256,21 +259,23 @@ void RowVectorAccumulateImpl(RowPiece* HWY_RESTRICT pieces, std::size_t n, bool 
 void RowVectorEmitImpl(const RowVectorRows& s, SpanSink& sink) {
     const hn::ScalableTag<float> d;
     const int N = static_cast<int>(hn::Lanes(d));
-    const auto zero = hn::Zero(d);
     for (int r = 0; r < s.h; ++r) {
         float* HWY_RESTRICT row = s.acc + static_cast<std::size_t>(r) * static_cast<std::size_t>(s.stride);
         // Cells left of a row's first piece hold exactly zero (a piece adds nothing left of it):
         // the row goes out from its first non-zero cell, and not at all when it has none.
         int from = INT_MAX;
-        for (int i = 0; i < s.stride; i += N) {
-            const auto a = hn::LoadU(d, row + i);
+        auto emit = [&](auto dv, int i) {
+            const auto a = hn::LoadU(dv, row + i);
             if (from == INT_MAX) {
-                const std::intptr_t k = hn::FindFirstTrue(d, hn::Ne(a, zero));
+                const std::intptr_t k = hn::FindFirstTrue(dv, hn::Ne(a, hn::Zero(dv)));
                 if (k >= 0) from = i + static_cast<int>(k);
             }
-            hn::StoreU(zero, d, row + i);
-            StoreCoverage(d, ApplyRule(d, a, s.rule), s.cov + i);
-        }
+            hn::StoreU(hn::Zero(dv), dv, row + i);
+            StoreCoverage(dv, ApplyRule(dv, a, s.rule), s.cov + i);
+        };
+        int i = 0;
+        for (; i + N <= s.stride; i += N) emit(d, i);
+        if (i < s.stride) emit(hn::CappedTag<float, kRowGranule>(), i);  // a row ending in a granule
         if (from < s.w) sink.row(s.oy + r, s.ox + from, s.w - from, s.cov + from);
     }
 }
@@ -284,13 +289,15 @@ namespace casteljau::raster {
 CASTELJAU_SIMD_EXPORT(ScanRowsImpl);
 
 CASTELJAU_SIMD_EXPORT(RowVectorLanesImpl);
+CASTELJAU_SIMD_EXPORT(RowVectorGranuleImpl);
 CASTELJAU_SIMD_EXPORT(RowVectorAccumulateImpl);
 CASTELJAU_SIMD_EXPORT(RowVectorEmitImpl);
 
 void scan_rows(const ScanRows& rows, SpanSink& sink) { CASTELJAU_SIMD_DISPATCH(ScanRowsImpl)(rows, sink); }
 
-// Not cached: tests switch targets, and the stride must be whole vectors of the kernels' target.
+// Not cached: tests switch targets, and the stride must be whole granules of the kernels' target.
 int row_vector_lanes() { return CASTELJAU_SIMD_DISPATCH(RowVectorLanesImpl)(); }
+int row_vector_granule() { return CASTELJAU_SIMD_DISPATCH(RowVectorGranuleImpl)(); }
 void row_vector_accumulate(RowPiece* pieces, std::size_t n, bool outline_order, float* acc, int stride) {
     CASTELJAU_SIMD_DISPATCH(RowVectorAccumulateImpl)(pieces, n, outline_order, acc, stride);
 }

@@ -225,7 +225,8 @@ void Engine::begin(int w, int h, bool track) {
     vec_ = !track && w <= std::min(kRowVectorMax * lanes, kRowVectorMaxPixels);
     fcells_ = !track && !vec_ && w <= kFloatCellsMax;
     if (vec_) {
-        vstride_ = std::max(1, (w + lanes - 1) / lanes) * lanes;
+        const int granule = row_vector_granule();
+        vstride_ = std::max(1, (w + granule - 1) / granule) * granule;
         const std::size_t n = static_cast<std::size_t>(vstride_) * static_cast<std::size_t>(h);
         grow_zeroed(facc_, n);
         pieces_.clear();

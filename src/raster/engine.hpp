@@ -151,7 +151,7 @@ private:
     // kFloatCellsMax x 2^-24 of the coverage (0.016/255 at most); wider shapes take double cells.
     bool fcells_ = false;
     static constexpr int kFloatCellsMax = 1024;
-    int vstride_ = 0;                    // floats per row of facc_ (w rounded up to whole vectors)
+    int vstride_ = 0;                    // floats per row of facc_ (w rounded up to whole granules)
     platform::LargeVector<float> facc_;  // row vectors or float cells, all zero between shapes
     AppendList<RowPiece> pieces_;
     bool chains_ = false;                       // the pieces came chain by chain (push_chain), not along the outline

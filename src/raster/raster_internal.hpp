@@ -187,9 +187,13 @@ inline RowPiece make_row_piece(int r, float xl, float xr, float dy) {
     return {xl, xr, dy / (xr - xl), r};
 }
 // The kernel that adds a piece to its row is AddRowPiece in row_vector-inl.h.
-// Floats per SIMD vector of the best target this CPU runs (rows are whole vectors).
+// Floats per SIMD vector of the best target this CPU runs.
 int row_vector_lanes();
-// Adds every piece to acc (`stride` floats per row, a multiple of row_vector_lanes()). The pieces
+// Rows are whole granules: at most kRowGranule floats, at most one vector (8 with AVX2 and AVX-512,
+// so that a shape at most 8 px wide takes a half-width vector under AVX-512; 4 with SSE4).
+constexpr int kRowGranule = 8;
+int row_vector_granule();
+// Adds every piece to acc (`stride` floats per row, a multiple of row_vector_granule()). The pieces
 // come as the walk lists them, {xl, xr, dy, r} (k holding dy), and are first turned into
 // make_row_piece's form in place, a SIMD vector of pieces at a time: the division and the test for
 // vertical pieces cost a few cycles and a mispredicted branch each when done one piece at a time.

@@ -41,21 +41,30 @@ HWY_INLINE void AddPieceVector(D d, const RowPiece& p, int i, float* HWY_RESTRIC
     hn::StoreU(hn::MulAdd(k, hn::MulAdd(len, mid, left), hn::LoadU(d, row + i)), d, row + i);
 }
 
-// Adds piece p's area to row[0, stride) (stride: whole vectors of d), from the vector holding
-// pixel floor(xl) (xl >= 0: the walk's coordinates are clamped to the box).
+// Adds piece p's area to row[0, stride) (stride: whole granules), from the vector holding pixel
+// floor(xl) (xl >= 0: the walk's coordinates are clamped to the box): whole vectors of d, then the
+// row's last granule when the row does not end on a whole vector.
 template <class D>
 HWY_INLINE void AddRowPiece(D d, const RowPiece& p, float* HWY_RESTRICT row, int stride) {
     const int N = static_cast<int>(hwy::HWY_NAMESPACE::Lanes(d));
-    for (int i = static_cast<int>(p.xl) & -N; i < stride; i += N) AddPieceVector(d, p, i, row);  // N: a power of two
+    int i = static_cast<int>(p.xl) & -N;  // N: a power of two
+    for (; i + N <= stride; i += N) AddPieceVector(d, p, i, row);
+    if (i < stride) AddPieceVector(hwy::HWY_NAMESPACE::CappedTag<float, kRowGranule>(), p, i, row);
 }
 
-// AddRowPiece for rows of exactly kVectors vectors of d (a glyph's rows at text sizes): every
-// vector of the row, unrolled, so there is no loop to set up per piece (the vectors left of xl
-// add zero).
-template <int kVectors, class D>
+// AddRowPiece for rows of exactly kGranules granules (a glyph's rows at text sizes): every vector
+// of the row, unrolled, so there is no loop to set up per piece (the vectors left of xl add zero).
+// A row that ends in half a vector takes a half-width vector there: where wide vectors run at half
+// rate (AVX-512 on Zen 4), that halves the work of a row of one granule.
+template <int kGranules, class D>
 HWY_INLINE void AddRowPieceFixed(D d, const RowPiece& p, float* HWY_RESTRICT row) {
-    const int N = static_cast<int>(hwy::HWY_NAMESPACE::Lanes(d));
-    for (int v = 0; v < kVectors; ++v) AddPieceVector(d, p, v * N, row);
+    namespace hn = hwy::HWY_NAMESPACE;
+    const hn::CappedTag<float, kRowGranule> dg;
+    constexpr int kPer = static_cast<int>(hn::MaxLanes(D()) / hn::MaxLanes(decltype(dg)()));  // granules per vector
+    constexpr int kWhole = kGranules / kPer;
+    const int N = static_cast<int>(hn::Lanes(d));
+    for (int v = 0; v < kWhole; ++v) AddPieceVector(d, p, v * N, row);
+    for (int g = kWhole * kPer; g < kGranules; ++g) AddPieceVector(dg, p, g * static_cast<int>(hn::Lanes(dg)), row);
 }
 
 }  // namespace HWY_NAMESPACE
