@@ -53,6 +53,10 @@ class Pixmap {
 public:
     Pixmap() = default;
     // A transparent pixmap that owns its pixels (stride = 4 x width).
+    // Memory kept: the pixels of released pixmaps of 2 MiB and more (up to 4 of them, 256 MiB in
+    // all) stay mapped for the next pixmap of the same size, which then costs no page faults;
+    // the kernel may reclaim them when it needs memory (MADV_FREE), and a large pixmap or buffer of
+    // another size unmaps them.
     // Throws Error(Limit) when width or height exceeds Limits::canvas_dimension or the area
     // exceeds Limits::canvas_pixels (casteljau/limits.hpp), Error(InvalidArgument) when either is below 1.
     Pixmap(int width, int height);
@@ -92,8 +96,8 @@ private:
     std::size_t stride_ = 0;
     // Owned pixels (null when borrowed), zeroed memory from calloc or, for large pixmaps, mapped
     // on 2 MiB pages where the system allows: a large pixmap starts as zero pages that the kernel
-    // maps on first touch, so creating one costs nothing until it is drawn into (and whoever
-    // touches a row first, possibly a worker thread, pays for its pages).
+    // maps on first touch (and whoever touches a row first, possibly a worker thread, pays for
+    // its pages), or in the memory of a released pixmap of the same size, cleared when made.
     struct Free {
         Free() noexcept : bytes(0) {}
         explicit Free(std::size_t n) noexcept : bytes(n) {}
