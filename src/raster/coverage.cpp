@@ -243,12 +243,16 @@ void RowVectorAccumulateImpl(RowPiece* HWY_RESTRICT pieces, std::size_t n, bool 
                              int stride) {
     PreparePieces(pieces, n);
     const hn::ScalableTag<float> d;
-    // Rows of up to four vectors: unrolled, in whole vectors and a granule.
+    // Rows of up to eight granules (64 px): unrolled, in whole vectors and a granule.
     switch (stride / static_cast<int>(hn::Lanes(hn::CappedTag<float, kRowGranule>()))) {
         case 1: return AccumulateFixed<1>(d, pieces, n, outline_order, acc);
         case 2: return AccumulateFixed<2>(d, pieces, n, outline_order, acc);
         case 3: return AccumulateFixed<3>(d, pieces, n, outline_order, acc);
         case 4: return AccumulateFixed<4>(d, pieces, n, outline_order, acc);
+        case 5: return AccumulateFixed<5>(d, pieces, n, outline_order, acc);
+        case 6: return AccumulateFixed<6>(d, pieces, n, outline_order, acc);
+        case 7: return AccumulateFixed<7>(d, pieces, n, outline_order, acc);
+        case 8: return AccumulateFixed<8>(d, pieces, n, outline_order, acc);
         default: break;
     }
     for (std::size_t k = 0; k < n; ++k)
