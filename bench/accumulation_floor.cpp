@@ -153,7 +153,7 @@ void DenseFloatImpl(const Job& job) {
 
 // Rows of whole granules, as the library's (raster_internal.hpp).
 int StrideImpl(int w) {
-    const int n = static_cast<int>(hn::Lanes(hn::CappedTag<float, casteljau::raster::kRowGranule>()));
+    const int n = casteljau::raster::HWY_NAMESPACE::GranuleLanes();
     return (w + n - 1) / n * n;
 }
 
@@ -177,21 +177,17 @@ void RowVectorImpl(const Job& job) {
         });
     }
     // Nonzero rule, 8-bit, and clear the rows.
-    const int N = static_cast<int>(hn::Lanes(d));
     for (int r = 0; r < job.h; ++r) {
         float* row = job.acc + static_cast<std::size_t>(r) * static_cast<std::size_t>(job.stride);
         std::uint8_t* o = job.out + static_cast<std::size_t>(r) * static_cast<std::size_t>(job.stride);
-        auto put = [&](auto dv, int i) {
+        casteljau::raster::HWY_NAMESPACE::ForRowVectors(d, 0, job.stride, [&](auto dv, int i) {
             const hn::Rebind<std::int32_t, decltype(dv)> di;
             const hn::Rebind<std::uint8_t, decltype(dv)> du8;
             const auto v = hn::Min(hn::Abs(hn::LoadU(dv, row + i)), hn::Set(dv, 1.0f));
             hn::StoreU(hn::Zero(dv), dv, row + i);
             hn::StoreU(hn::DemoteTo(du8, hn::ConvertTo(di, hn::MulAdd(v, hn::Set(dv, 255.0f), hn::Set(dv, 0.5f)))), du8,
                        o + i);
-        };
-        int i = 0;
-        for (; i + N <= job.stride; i += N) put(d, i);
-        if (i < job.stride) put(hn::CappedTag<float, casteljau::raster::kRowGranule>(), i);
+        });
     }
 }
 

@@ -192,7 +192,7 @@ int RowVectorLanesImpl() {
     return static_cast<int>(hn::Lanes(d));
 }
 
-int RowVectorGranuleImpl() { return static_cast<int>(hn::Lanes(hn::CappedTag<float, kRowGranule>())); }
+int RowVectorGranuleImpl() { return GranuleLanes(); }
 
 // Pieces listed in outline order: consecutive ones often lie in one row (a curve's short edges),
 // and adding them one after the other would chain each row's additions through memory, every one
@@ -202,7 +202,7 @@ int RowVectorGranuleImpl() { return static_cast<int>(hn::Lanes(hn::CappedTag<flo
 template <int kGranules, class D>
 HWY_INLINE void AccumulateFixed(D d, const RowPiece* HWY_RESTRICT pieces, std::size_t n, bool outline_order,
                                 float* HWY_RESTRICT acc) {
-    const std::size_t stride = kGranules * hn::Lanes(hn::CappedTag<float, kRowGranule>());
+    const std::size_t stride = static_cast<std::size_t>(kGranules * GranuleLanes());
     auto add = [&](const RowPiece& p) {
         AddRowPieceFixed<kGranules>(d, p, acc + static_cast<std::size_t>(p.r) * stride);
     };
@@ -244,7 +244,7 @@ void RowVectorAccumulateImpl(RowPiece* HWY_RESTRICT pieces, std::size_t n, bool 
     PreparePieces(pieces, n);
     const hn::ScalableTag<float> d;
     // Rows of up to eight granules (64 px): unrolled, in whole vectors and a granule.
-    switch (stride / static_cast<int>(hn::Lanes(hn::CappedTag<float, kRowGranule>()))) {
+    switch (stride / GranuleLanes()) {
         case 1: return AccumulateFixed<1>(d, pieces, n, outline_order, acc);
         case 2: return AccumulateFixed<2>(d, pieces, n, outline_order, acc);
         case 3: return AccumulateFixed<3>(d, pieces, n, outline_order, acc);
@@ -262,13 +262,12 @@ void RowVectorAccumulateImpl(RowPiece* HWY_RESTRICT pieces, std::size_t n, bool 
 
 void RowVectorEmitImpl(const RowVectorRows& s, SpanSink& sink) {
     const hn::ScalableTag<float> d;
-    const int N = static_cast<int>(hn::Lanes(d));
     for (int r = 0; r < s.h; ++r) {
         float* HWY_RESTRICT row = s.acc + static_cast<std::size_t>(r) * static_cast<std::size_t>(s.stride);
         // Cells left of a row's first piece hold exactly zero (a piece adds nothing left of it):
         // the row goes out from its first non-zero cell, and not at all when it has none.
         int from = INT_MAX;
-        auto emit = [&](auto dv, int i) {
+        ForRowVectors(d, 0, s.stride, [&](auto dv, int i) {
             const auto a = hn::LoadU(dv, row + i);
             if (from == INT_MAX) {
                 const std::intptr_t k = hn::FindFirstTrue(dv, hn::Ne(a, hn::Zero(dv)));
@@ -276,10 +275,7 @@ void RowVectorEmitImpl(const RowVectorRows& s, SpanSink& sink) {
             }
             hn::StoreU(hn::Zero(dv), dv, row + i);
             StoreCoverage(dv, ApplyRule(dv, a, s.rule), s.cov + i);
-        };
-        int i = 0;
-        for (; i + N <= s.stride; i += N) emit(d, i);
-        if (i < s.stride) emit(hn::CappedTag<float, kRowGranule>(), i);  // a row ending in a granule
+        });
         if (from < s.w) sink.row(s.oy + r, s.ox + from, s.w - from, s.cov + from);
     }
 }

@@ -41,15 +41,27 @@ HWY_INLINE void AddPieceVector(D d, const RowPiece& p, int i, float* HWY_RESTRIC
     hn::StoreU(hn::MulAdd(k, hn::MulAdd(len, mid, left), hn::LoadU(d, row + i)), d, row + i);
 }
 
+// One granule of a row (kRowGranule floats, raster_internal.hpp) and its lane count.
+using GranuleTag = hwy::HWY_NAMESPACE::CappedTag<float, kRowGranule>;
+HWY_INLINE int GranuleLanes() { return static_cast<int>(hwy::HWY_NAMESPACE::Lanes(GranuleTag())); }
+
+// Calls f(tag, i) for the vectors of a row of `stride` floats (whole granules) from float `from` (a
+// multiple of d's lanes): whole vectors of d, then the row's last granule when the row does not end
+// on a whole vector.
+template <class D, class F>
+HWY_INLINE void ForRowVectors(D d, int from, int stride, F&& f) {
+    const int N = static_cast<int>(hwy::HWY_NAMESPACE::Lanes(d));
+    int i = from;
+    for (; i + N <= stride; i += N) f(d, i);
+    if (i < stride) f(GranuleTag(), i);
+}
+
 // Adds piece p's area to row[0, stride) (stride: whole granules), from the vector holding pixel
-// floor(xl) (xl >= 0: the walk's coordinates are clamped to the box): whole vectors of d, then the
-// row's last granule when the row does not end on a whole vector.
+// floor(xl) (xl >= 0: the walk's coordinates are clamped to the box).
 template <class D>
 HWY_INLINE void AddRowPiece(D d, const RowPiece& p, float* HWY_RESTRICT row, int stride) {
-    const int N = static_cast<int>(hwy::HWY_NAMESPACE::Lanes(d));
-    int i = static_cast<int>(p.xl) & -N;  // N: a power of two
-    for (; i + N <= stride; i += N) AddPieceVector(d, p, i, row);
-    if (i < stride) AddPieceVector(hwy::HWY_NAMESPACE::CappedTag<float, kRowGranule>(), p, i, row);
+    const int N = static_cast<int>(hwy::HWY_NAMESPACE::Lanes(d));  // a power of two
+    ForRowVectors(d, static_cast<int>(p.xl) & -N, stride, [&](auto dv, int i) { AddPieceVector(dv, p, i, row); });
 }
 
 // AddRowPiece for rows of exactly kGranules granules (a glyph's rows at text sizes): every vector
@@ -59,12 +71,11 @@ HWY_INLINE void AddRowPiece(D d, const RowPiece& p, float* HWY_RESTRICT row, int
 template <int kGranules, class D>
 HWY_INLINE void AddRowPieceFixed(D d, const RowPiece& p, float* HWY_RESTRICT row) {
     namespace hn = hwy::HWY_NAMESPACE;
-    const hn::CappedTag<float, kRowGranule> dg;
-    constexpr int kPer = static_cast<int>(hn::MaxLanes(D()) / hn::MaxLanes(decltype(dg)()));  // granules per vector
+    constexpr int kPer = static_cast<int>(hn::MaxLanes(D()) / hn::MaxLanes(GranuleTag()));  // granules per vector
     constexpr int kWhole = kGranules / kPer;
     const int N = static_cast<int>(hn::Lanes(d));
     for (int v = 0; v < kWhole; ++v) AddPieceVector(d, p, v * N, row);
-    for (int g = kWhole * kPer; g < kGranules; ++g) AddPieceVector(dg, p, g * static_cast<int>(hn::Lanes(dg)), row);
+    for (int g = kWhole * kPer; g < kGranules; ++g) AddPieceVector(GranuleTag(), p, g * GranuleLanes(), row);
 }
 
 }  // namespace HWY_NAMESPACE
