@@ -103,9 +103,6 @@ private:
     T* cells();
     // The row vectors' walk: lists the edge's pieces.
     inline void list_pieces(double x0, double y0, double x1, double y1);
-    // list_pieces() for an edge with y0 != y1, writing from `out` (room for floor(|y1 - y0|) + 2
-    // pieces); returns the new end.
-    inline RowPiece* list_pieces_at(RowPiece* out, double x0, double y0, double x1, double y1);
     // The row vectors' push of the edges between n consecutive points (reversed: from the last);
     // `rows`: at least the sum of the edges' heights.
     template <bool kReverse>
@@ -370,6 +367,26 @@ template <class F>
     }
 }
 
+// The row vectors' pieces {xl, xr, dy, r} of an edge with y0 != y1, one per row it crosses, written
+// from `out` (room for floor(|y1 - y0|) + 2 pieces); returns the new end.
+[[gnu::always_inline]] inline RowPiece* list_edge_pieces(RowPiece* out, double x0, double y0, double x1, double y1) {
+    for_each_row(
+        x0, y0, x1, y1, [&](int r, double xa, double ya, double xb, double yb) __attribute__((always_inline)) {
+            // Selects, not branches: the order of xa and xb follows the outline, which a branch
+            // predictor cannot.
+            const double xl = std::min(xa, xb), xr = std::max(xa, xb);
+            *out++ = {static_cast<float>(xl), static_cast<float>(xr), static_cast<float>(yb - ya), r};  // k: dy
+        });
+    return out;
+}
+
+// The row pieces of the edges between n consecutive points xy (x, y pairs, y held at fh), in edge
+// order, each edge's in travel order: the pieces list_edge_pieces() lists for each edge of
+// positive height, bit for bit, a SIMD vector of edges at a time (row_listing.cpp). `out` has room
+// for the edges' pieces plus two. Returns the new end; adds the edges of positive length to
+// `edges`.
+RowPiece* list_row_pieces(const double* xy, std::size_t n, double fh, RowPiece* out, std::size_t& edges);
+
 template <bool kTrack, class T>
 [[gnu::always_inline]] inline void Engine::walk(double x0, double y0, double x1, double y1) {
     std::uint32_t sid = 0;
@@ -417,19 +434,7 @@ template <bool kTrack, class T>
 [[gnu::always_inline]] inline void Engine::list_pieces(double x0, double y0, double x1, double y1) {
     if (y0 == y1) return;  // no cover
     RowPiece* out = pieces_.room(static_cast<std::size_t>(std::abs(y1 - y0)) + 2);
-    pieces_.commit(list_pieces_at(out, x0, y0, x1, y1));
-}
-
-[[gnu::always_inline]] inline RowPiece* Engine::list_pieces_at(RowPiece* out, double x0, double y0, double x1,
-                                                               double y1) {
-    for_each_row(
-        x0, y0, x1, y1, [&](int r, double xa, double ya, double xb, double yb) __attribute__((always_inline)) {
-            // Selects, not branches: the order of xa and xb follows the outline, which a branch
-            // predictor cannot.
-            const double xl = std::min(xa, xb), xr = std::max(xa, xb);
-            *out++ = {static_cast<float>(xl), static_cast<float>(xr), static_cast<float>(yb - ya), r};  // k: dy
-        });
-    return out;
+    pieces_.commit(list_edge_pieces(out, x0, y0, x1, y1));
 }
 
 }  // namespace casteljau::raster
