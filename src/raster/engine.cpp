@@ -140,12 +140,16 @@ void Engine::trim(std::size_t records) {
 // The most rows of room push_polyline() reserves from the box's height alone (128 KiB of pieces).
 constexpr double kRoomByHeight = 8192;
 
+// Polylines of more points than this are listed a SIMD vector of edges at a time (list_row_pieces);
+// shorter ones one edge at a time, here: through the dispatched call, a 12 px DejaVu glyph (whose
+// contours are short) measured a few per cent slower.
+constexpr std::size_t kListVectorMin = 16;
+
 // push()'s steps for the row vectors (most glyphs), with its choice of walk made once: each point
 // held at the box's bottom once, the pieces of all the edges written through a local pointer into
 // room reserved for them (an edge over |dy| rows makes at most |dy| + 2 pieces), and the edge count
 // added and checked once, after the last edge (which lets at most these edges past the limit), so
 // that nothing goes back to memory per edge.
-constexpr std::size_t kListVectorMin = 16;
 
 template <bool kReverse>
 void Engine::push_rows(const double* xy, std::size_t n, double rows) {
@@ -153,8 +157,8 @@ void Engine::push_rows(const double* xy, std::size_t n, double rows) {
     RowPiece* out = pieces_.room(room);
     [[maybe_unused]] const RowPiece* const room_end = out + room;
     std::size_t edges = 0;
-    if (!kReverse && n > kListVectorMin) {
-        out = list_row_pieces(xy, n, fh_, out, edges);
+    if (n > kListVectorMin) {
+        out = list_row_pieces(xy, n, kReverse, fh_, out, edges);
     } else {
         auto x_at = [&](std::size_t i) { return xy[2 * (kReverse ? n - 1 - i : i)]; };
         auto y_at = [&](std::size_t i) {

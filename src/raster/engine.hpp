@@ -380,12 +380,12 @@ template <class F>
     return out;
 }
 
-// The row pieces of the edges between n consecutive points xy (x, y pairs, y held at fh), in edge
-// order, each edge's in travel order: the pieces list_edge_pieces() lists for each edge of
-// positive height, bit for bit, a SIMD vector of edges at a time (row_listing.cpp). `out` has room
-// for the edges' pieces plus two. Returns the new end; adds the edges of positive length to
-// `edges`.
-RowPiece* list_row_pieces(const double* xy, std::size_t n, double fh, RowPiece* out, std::size_t& edges);
+// The row pieces of the edges between n consecutive points xy (x, y pairs, y held at fh), taken
+// from the first point to the last (or the reverse), in edge order, each edge's in travel order:
+// the pieces list_edge_pieces() lists for each edge of positive height, bit for bit, a SIMD vector
+// of edges at a time (row_listing.cpp). `out` has room for the edges' pieces plus two. Returns the
+// new end; adds the edges of positive length to `edges`.
+RowPiece* list_row_pieces(const double* xy, std::size_t n, bool reverse, double fh, RowPiece* out, std::size_t& edges);
 
 template <bool kTrack, class T>
 [[gnu::always_inline]] inline void Engine::walk(double x0, double y0, double x1, double y1) {

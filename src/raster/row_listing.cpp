@@ -28,12 +28,17 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // The edges one at a time: on targets with fewer than four double lanes, and the last edges of a
 // polyline, fewer than a vector.
+template <bool kReverse>
 HWY_INLINE RowPiece* ListOneByOne(const double* xy, std::size_t n, double fh, RowPiece* out, std::size_t& edges) {
     if (n < 2) return out;
-    auto y_at = [&](std::size_t i) { return xy[2 * i + 1] < fh ? xy[2 * i + 1] : fh; };
-    double x0 = xy[0], y0 = y_at(0);
+    auto x_at = [&](std::size_t i) { return xy[2 * (kReverse ? n - 1 - i : i)]; };
+    auto y_at = [&](std::size_t i) {
+        const double y = xy[2 * (kReverse ? n - 1 - i : i) + 1];
+        return y < fh ? y : fh;
+    };
+    double x0 = x_at(0), y0 = y_at(0);
     for (std::size_t i = 1; i < n; ++i) {
-        const double x1 = xy[2 * i], y1 = y_at(i);
+        const double x1 = x_at(i), y1 = y_at(i);
         if (x0 != x1 || y0 != y1) {
             ++edges;
             if (y0 != y1) out = list_edge_pieces(out, x0, y0, x1, y1);
@@ -94,14 +99,22 @@ HWY_INLINE void StorePiece(const VF* v, int j, RowPiece* p) {
     }
 }
 
-// The edges from point i to point i + L (L: lanes of dd), all read from xy.
-template <class DD>
+// The L edges (L: lanes of dd) between the L + 1 points from xy: from the first point to the last,
+// or reversed, from the last to the first.
+template <bool kReverse, class DD>
 HWY_INLINE RowPiece* ListBlock(DD dd, const double* xy, double fh, RowPiece* out, std::size_t& edges) {
     constexpr int L = static_cast<int>(hn::MaxLanes(DD()));
     using V = hn::Vec<DD>;
     V x0, y0, x1, y1;
-    hn::LoadInterleaved2(dd, xy, x0, y0);
-    hn::LoadInterleaved2(dd, xy + 2, x1, y1);
+    // Lane j holds the edge between points j and j + 1, taken backwards when reversed (and then
+    // listed last to first).
+    if constexpr (kReverse) {
+        hn::LoadInterleaved2(dd, xy + 2, x0, y0);
+        hn::LoadInterleaved2(dd, xy, x1, y1);
+    } else {
+        hn::LoadInterleaved2(dd, xy, x0, y0);
+        hn::LoadInterleaved2(dd, xy + 2, x1, y1);
+    }
     const V fhv = hn::Set(dd, fh), one = hn::Set(dd, 1.0), zero = hn::Zero(dd);
     y0 = hn::IfThenElse(hn::Lt(y0, fhv), y0, fhv);
     y1 = hn::IfThenElse(hn::Lt(y1, fhv), y1, fhv);
@@ -130,7 +143,8 @@ HWY_INLINE RowPiece* ListBlock(DD dd, const double* xy, double fh, RowPiece* out
     alignas(64) std::int32_t counts[L];
     hn::Store(hn::DemoteTo(hn::Rebind<std::int32_t, DD>(), count), hn::Rebind<std::int32_t, DD>(), counts);
     RowPiece* at[L];
-    for (int j = 0; j < L; ++j) {
+    for (int i = 0; i < L; ++i) {
+        const int j = kReverse ? L - 1 - i : i;
         StorePiece<L>(first, j, out);
         StorePiece<L>(second, j, out + 1);
         at[j] = out;
@@ -156,20 +170,23 @@ HWY_INLINE RowPiece* ListBlock(DD dd, const double* xy, double fh, RowPiece* out
 
 #endif  // CASTELJAU_ROW_LISTING_SIMD
 
-template <class DD>
+template <bool kReverse, class DD>
 HWY_INLINE RowPiece* ListAll(DD dd, const double* xy, std::size_t n, double fh, RowPiece* out, std::size_t& edges) {
-    std::size_t i = 0;  // first point of the edges not listed yet
+    std::size_t i = 0;  // edges listed so far
 #ifdef CASTELJAU_ROW_LISTING_SIMD
     constexpr std::size_t L = hn::MaxLanes(DD());
-    for (; i + L < n; i += L) out = ListBlock(dd, xy + 2 * i, fh, out, edges);
+    for (; i + L < n; i += L) out = ListBlock<kReverse>(dd, xy + 2 * (kReverse ? n - 1 - i - L : i), fh, out, edges);
 #else
     (void)dd;
 #endif
-    return ListOneByOne(xy + 2 * i, n - i, fh, out, edges);
+    // The last edges (fewer than a vector) one by one.
+    return ListOneByOne<kReverse>(kReverse ? xy : xy + 2 * i, n - i, fh, out, edges);
 }
 
-RowPiece* ListRowPiecesImpl(const double* xy, std::size_t n, double fh, RowPiece* out, std::size_t& edges) {
-    return ListAll(hn::CappedTag<double, 8>(), xy, n, fh, out, edges);
+RowPiece* ListRowPiecesImpl(const double* xy, std::size_t n, bool reverse, double fh, RowPiece* out,
+                            std::size_t& edges) {
+    const hn::CappedTag<double, 8> dd;
+    return reverse ? ListAll<true>(dd, xy, n, fh, out, edges) : ListAll<false>(dd, xy, n, fh, out, edges);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -180,8 +197,8 @@ HWY_AFTER_NAMESPACE();
 namespace casteljau::raster {
 CASTELJAU_SIMD_EXPORT(ListRowPiecesImpl);
 
-RowPiece* list_row_pieces(const double* xy, std::size_t n, double fh, RowPiece* out, std::size_t& edges) {
-    return CASTELJAU_SIMD_DISPATCH(ListRowPiecesImpl)(xy, n, fh, out, edges);
+RowPiece* list_row_pieces(const double* xy, std::size_t n, bool reverse, double fh, RowPiece* out, std::size_t& edges) {
+    return CASTELJAU_SIMD_DISPATCH(ListRowPiecesImpl)(xy, n, reverse, fh, out, edges);
 }
 }  // namespace casteljau::raster
 #endif

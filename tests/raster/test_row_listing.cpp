@@ -1,5 +1,6 @@
-// The row vectors' listing of a polyline's pieces (list_row_pieces, src/raster/row_listing.cpp)
-// against the edge-by-edge walk it replaces (list_edge_pieces), on every SIMD target this CPU runs.
+// The row vectors' listing of a polyline's pieces (list_row_pieces, src/raster/row_listing.cpp),
+// forward and reversed, against the edge-by-edge walk it replaces (list_edge_pieces), on every SIMD
+// target this CPU runs.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -15,14 +16,16 @@ using namespace casteljau::raster;
 
 namespace {
 
-// What the engine listed before the vector listing: each edge through list_edge_pieces.
-std::vector<RowPiece> one_by_one(const std::vector<double>& xy, double fh, std::size_t& edges) {
+// What the engine listed before the vector listing: each edge through list_edge_pieces, from the
+// first point to the last or (reverse) from the last to the first.
+std::vector<RowPiece> one_by_one(const std::vector<double>& xy, bool reverse, double fh, std::size_t& edges) {
     const std::size_t n = xy.size() / 2;
     std::vector<RowPiece> out(64 * n + 8);
     RowPiece* p = out.data();
-    auto y_at = [&](std::size_t i) { return xy[2 * i + 1] < fh ? xy[2 * i + 1] : fh; };
+    auto at = [&](std::size_t i) { return reverse ? n - 1 - i : i; };
+    auto y_at = [&](std::size_t i) { return xy[2 * at(i) + 1] < fh ? xy[2 * at(i) + 1] : fh; };
     for (std::size_t i = 1; i < n; ++i) {
-        const double x0 = xy[2 * i - 2], y0 = y_at(i - 1), x1 = xy[2 * i], y1 = y_at(i);
+        const double x0 = xy[2 * at(i - 1)], y0 = y_at(i - 1), x1 = xy[2 * at(i)], y1 = y_at(i);
         if (x0 == x1 && y0 == y1) continue;
         ++edges;
         if (y0 != y1) p = list_edge_pieces(p, x0, y0, x1, y1);
@@ -72,11 +75,12 @@ TEST_CASE("row listing: every target lists the pieces of the edge-by-edge walk, 
     const auto targets = simd::available_targets();
     REQUIRE(!targets.empty());
     for (int trial = 0; trial < 4000; ++trial) {
-        const std::size_t n = 1 + static_cast<std::size_t>(trial % 37);
+        const std::size_t n = 1 + static_cast<std::size_t>((trial / 2) % 37);
         const double w = 1 + trial % 64, h = 1 + (trial * 7) % 40;
         const std::vector<double> xy = random_polyline(rng, n, w, h);
+        const bool reverse = trial % 2 == 1;
         std::size_t want_edges = 0;
-        const std::vector<RowPiece> want = one_by_one(xy, h, want_edges);
+        const std::vector<RowPiece> want = one_by_one(xy, reverse, h, want_edges);
         // The engine's room: the sum of the edges' heights plus two pieces per point. Past it, a
         // guard that must stay untouched.
         double rows = 0;
@@ -84,12 +88,13 @@ TEST_CASE("row listing: every target lists the pieces of the edge-by-edge walk, 
         const std::size_t room = static_cast<std::size_t>(rows) + 2 * n;
         REQUIRE(want.size() + 2 <= room);
         for (std::int64_t t : targets) {
-            INFO("target " << simd::target_name(t) << ", trial " << trial << ", " << n << " points");
+            INFO("target " << simd::target_name(t) << ", trial " << trial << ", " << n << " points"
+                           << (reverse ? ", reversed" : ""));
             simd::restrict_targets(t);
             std::vector<RowPiece> got(room + 16);
             std::memset(got.data(), 0xA5, got.size() * sizeof(RowPiece));
             std::size_t edges = 0;
-            const RowPiece* end = list_row_pieces(xy.data(), n, h, got.data(), edges);
+            const RowPiece* end = list_row_pieces(xy.data(), n, reverse, h, got.data(), edges);
             REQUIRE(static_cast<std::size_t>(end - got.data()) == want.size());
             CHECK(edges == want_edges);
             CHECK(std::memcmp(got.data(), want.data(), want.size() * sizeof(RowPiece)) == 0);
