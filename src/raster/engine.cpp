@@ -157,25 +157,8 @@ void Engine::push_rows(const double* xy, std::size_t n, double rows) {
     RowPiece* out = pieces_.room(room);
     [[maybe_unused]] const RowPiece* const room_end = out + room;
     std::size_t edges = 0;
-    if (n > kListVectorMin) {
-        out = list_row_pieces(xy, n, kReverse, fh_, out, edges);
-    } else {
-        auto x_at = [&](std::size_t i) { return xy[2 * (kReverse ? n - 1 - i : i)]; };
-        auto y_at = [&](std::size_t i) {
-            const double y = xy[2 * (kReverse ? n - 1 - i : i) + 1];
-            return y < fh_ ? y : fh_;
-        };
-        double x0 = x_at(0), y0 = y_at(0);
-        for (std::size_t i = 1; i < n; ++i) {
-            const double x1 = x_at(i), y1 = y_at(i);
-            if (x0 != x1 || y0 != y1) {
-                ++edges;
-                if (y0 != y1) out = list_edge_pieces(out, x0, y0, x1, y1);  // a horizontal edge has no cover
-            }
-            x0 = x1;
-            y0 = y1;
-        }
-    }
+    out = n > kListVectorMin ? list_row_pieces(xy, n, kReverse, fh_, out, edges)
+                             : list_polyline_pieces<kReverse>(xy, n, fh_, out, edges);
     assert(out <= room_end);
     pieces_.commit(out);
     count_ += edges;

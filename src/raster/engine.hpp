@@ -380,6 +380,30 @@ template <class F>
     return out;
 }
 
+// list_row_pieces() one edge at a time: its way for short polylines, and for the edges left over
+// after its last whole vector.
+template <bool kReverse>
+[[gnu::always_inline]] inline RowPiece* list_polyline_pieces(const double* xy, std::size_t n, double fh, RowPiece* out,
+                                                             std::size_t& edges) {
+    if (n < 2) return out;
+    auto x_at = [&](std::size_t i) { return xy[2 * (kReverse ? n - 1 - i : i)]; };
+    auto y_at = [&](std::size_t i) {
+        const double y = xy[2 * (kReverse ? n - 1 - i : i) + 1];
+        return y < fh ? y : fh;
+    };
+    double x0 = x_at(0), y0 = y_at(0);
+    for (std::size_t i = 1; i < n; ++i) {
+        const double x1 = x_at(i), y1 = y_at(i);
+        if (x0 != x1 || y0 != y1) {
+            ++edges;
+            if (y0 != y1) out = list_edge_pieces(out, x0, y0, x1, y1);  // a horizontal edge has no cover
+        }
+        x0 = x1;
+        y0 = y1;
+    }
+    return out;
+}
+
 // The row pieces of the edges between n consecutive points xy (x, y pairs, y held at fh), taken
 // from the first point to the last (or the reverse), in edge order, each edge's in travel order:
 // the pieces list_edge_pieces() lists for each edge of positive height, bit for bit, a SIMD vector

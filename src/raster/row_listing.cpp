@@ -26,29 +26,6 @@ namespace casteljau::raster {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// The edges one at a time: on targets with fewer than four double lanes, and the last edges of a
-// polyline, fewer than a vector.
-template <bool kReverse>
-HWY_INLINE RowPiece* ListOneByOne(const double* xy, std::size_t n, double fh, RowPiece* out, std::size_t& edges) {
-    if (n < 2) return out;
-    auto x_at = [&](std::size_t i) { return xy[2 * (kReverse ? n - 1 - i : i)]; };
-    auto y_at = [&](std::size_t i) {
-        const double y = xy[2 * (kReverse ? n - 1 - i : i) + 1];
-        return y < fh ? y : fh;
-    };
-    double x0 = x_at(0), y0 = y_at(0);
-    for (std::size_t i = 1; i < n; ++i) {
-        const double x1 = x_at(i), y1 = y_at(i);
-        if (x0 != x1 || y0 != y1) {
-            ++edges;
-            if (y0 != y1) out = list_edge_pieces(out, x0, y0, x1, y1);
-        }
-        x0 = x1;
-        y0 = y1;
-    }
-    return out;
-}
-
 // The vector listing needs four double lanes and 256-bit float vectors: x86 with AVX2 or better.
 #undef CASTELJAU_ROW_LISTING_SIMD  // set by the previous target's pass
 #if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX2
@@ -179,8 +156,8 @@ HWY_INLINE RowPiece* ListAll(DD dd, const double* xy, std::size_t n, double fh, 
 #else
     (void)dd;
 #endif
-    // The last edges (fewer than a vector) one by one.
-    return ListOneByOne<kReverse>(kReverse ? xy : xy + 2 * i, n - i, fh, out, edges);
+    // The last edges (fewer than a vector; all of them on targets without the vector listing).
+    return list_polyline_pieces<kReverse>(kReverse ? xy : xy + 2 * i, n - i, fh, out, edges);
 }
 
 RowPiece* ListRowPiecesImpl(const double* xy, std::size_t n, bool reverse, double fh, RowPiece* out,
