@@ -150,7 +150,6 @@ constexpr std::size_t kListVectorMin = 16;
 // room reserved for them (an edge over |dy| rows makes at most |dy| + 2 pieces), and the edge count
 // added and checked once, after the last edge (which lets at most these edges past the limit), so
 // that nothing goes back to memory per edge.
-
 template <bool kReverse>
 void Engine::push_rows(const double* xy, std::size_t n, double rows) {
     const std::size_t room = static_cast<std::size_t>(rows) + 2 * n;

@@ -45,12 +45,11 @@ HWY_INLINE V StdMax(V a, V b) {
 // Pieces {xl, xr, dy, r} of the lanes of dd as four-float vectors: piece j is 128-bit block j / 4
 // of out[j % 4].
 template <class DD, class V = hn::Vec<DD>>
-HWY_INLINE void Transpose(DD dd, V xl, V xr, V dy, V r, hn::Vec<hn::Rebind<float, DD>>* out) {
+HWY_INLINE void Transpose(DD, V xl, V xr, V dy, V r, hn::Vec<hn::Rebind<float, DD>>* out) {
     const hn::Rebind<float, DD> df;
     const hn::Rebind<std::int32_t, DD> di;
     const auto fxl = hn::DemoteTo(df, xl), fxr = hn::DemoteTo(df, xr), fdy = hn::DemoteTo(df, dy);
     const auto fr = hn::BitCast(df, hn::DemoteTo(di, r));
-    (void)dd;
     const auto a = hn::InterleaveLower(df, fxl, fdy), b = hn::InterleaveLower(df, fxr, fr);
     const auto c = hn::InterleaveUpper(df, fxl, fdy), e = hn::InterleaveUpper(df, fxr, fr);
     out[0] = hn::InterleaveLower(df, a, b);
@@ -66,13 +65,11 @@ HWY_INLINE void StorePiece(const VF* v, int j, RowPiece* p) {
     if constexpr (kLanes == 4) {
         hn::StoreU(v[j], hn::Full128<float>(), f);
     } else {
-        const hn::Full256<float> df;
         const hn::Full128<float> dh;
         if (j < 4)
             hn::StoreU(hn::LowerHalf(dh, v[j]), dh, f);
         else
             hn::StoreU(hn::UpperHalf(dh, v[j - 4]), dh, f);
-        (void)df;
     }
 }
 
