@@ -105,6 +105,20 @@ struct Flattener {
         last = start;
     }
 
+    // The smallest n >= 2 with n^4 tol^2 >= need: n pieces whose error is at most
+    // sqrt(need) / n^2 meet the tolerance. Counted up for the common small n (no square roots or
+    // divisions on the glyph path), closed form beyond.
+    int piece_count(double need) const {
+        int n = 2;
+        while (n < 16 && double(n * n) * double(n * n) * tol2 < need) ++n;
+        if (n == 16 && 65536.0 * tol2 < need) {
+            const double q = std::sqrt(std::sqrt(need / tol2));  // sqrt(bound / tolerance)
+            constexpr int kMaxPieces = 1 << limits::kMaxFlattenDepth;
+            n = q < kMaxPieces ? static_cast<int>(std::ceil(q)) : kMaxPieces;
+        }
+        return n;
+    }
+
     void quad(Point, Point b, Point c) {
         const Point p0 = last, p1 = m(b), p2 = m(c);
         last = p2;
@@ -129,16 +143,7 @@ struct Flattener {
         // anywhere in its hull, which the area-balanced vertices keep to as well.)
         const double b2 = bound2_quad(p0, p1, p2);
         if (!(b2 > tol2)) return emit(p2);
-        const double need = balanced ? b2 * (625.0 / 1296.0) : b2;  // (25/36)^2 of the bound squared
-        // Smallest n >= 2 with n^4 tol^2 >= need: counted up for the common small n (no square
-        // roots or divisions on the glyph path), closed form beyond.
-        int n = 2;
-        while (n < 16 && double(n * n) * double(n * n) * tol2 < need) ++n;
-        if (n == 16 && 65536.0 * tol2 < need) {
-            const double q = std::sqrt(std::sqrt(need / tol2));  // sqrt(bound / tolerance)
-            constexpr int kMaxPieces = 1 << limits::kMaxFlattenDepth;
-            n = q < kMaxPieces ? static_cast<int>(std::ceil(q)) : kMaxPieces;
-        }
+        const int n = piece_count(balanced ? b2 * (625.0 / 1296.0) : b2);  // (25/36)^2 of the bound squared
         const double h = 1.0 / n;
         // B(t) = p0 + 2 t (p1 - p0) + t^2 (p0 - 2 p1 + p2): first and second forward differences.
         const Point A = p0 - p1 * 2 + p2, B = (p1 - p0) * 2;
@@ -217,27 +222,20 @@ struct Flattener {
     }
 
     // Area-balanced cubic pieces (`balanced`): n pieces of equal parameter length h = 1 / n, every
-    // interior vertex B(t) moved by -(h^2 / 2) L(t). With L linear, on a piece starting at L0 with
-    // slope E (L = L0 + u h E), the curve minus the line between the moved vertices is
-    //   e(u) = h^2 L0 (1/2 - 3 u (1 - u)) + h^3 E (u^3 - u / 2),
-    // and both terms integrate to zero over u in [0, 1]: interior pieces lose no area, as the
-    // balanced quadratic pieces (the quadratic is the case E = 0). |e| <= (1/2) h^2 |L0| +
-    // (1/2) h^3 |E| there; on the two end pieces (one end fixed) the first coefficient becomes
-    // max|u (3 u - 5/2)| = 25/48. So n is the smallest with h^2 (25/48 M + h |E| / 2) <= tol,
-    // M = max(|D0|, |D1|) >= |L| everywhere. The moved vertices keep non-negative Bernstein
-    // weights, so they stay in the control points' hull.
+    // interior vertex B(t) moved by -(h^2 / 2) L(t). On a piece whose ends have L0 and L1 (L is
+    // linear), the curve minus the line between the moved vertices is, for u in [0, 1] along it,
+    //   e(u) = h^2 (a(u) L0 + a(1 - u) L1),  a(u) = 1/2 - 5u/2 + 3u^2 - u^3,
+    // which integrates to zero: interior pieces lose no area, as the balanced quadratic pieces (the
+    // quadratic is the case L0 = L1). |a(u)| + |a(1 - u)| is at most 1/2 (at the ends; 1/4 at the
+    // middle), so |e| <= (h^2 / 2) max(|L0|, |L1|). On the two end pieces (one end fixed, not
+    // moved) the weight of the fixed end's L becomes u (1 - u) (2 - u) and the sum of the two
+    // weights' sizes is at most 25/48 (at u = 5/12). |L| is at most M = max(|D0|, |D1|)
+    // everywhere, so n is the smallest with (25/48) M h^2 <= tol: the quadratic's count, with
+    // M in place of |A| / 3 (a quadratic raised to a cubic has D0 = D1 = A / 3). The moved
+    // vertices keep non-negative Bernstein weights, so they stay in the control points' hull.
     void balanced_cubic(Point p0, Point p1, Point p3, Point D0, Point D1, double m2) {
         const Point E = D1 - D0, C1 = (p1 - p0) * 3, C2 = D0 * 3;
-        const double M = std::sqrt(m2), e = std::sqrt(sq(E));
-        constexpr int kMaxPieces = 1 << limits::kMaxFlattenDepth;
-        auto fits = [&](double n) { return (25.0 / 48.0) * M * n + 0.5 * e <= tol * n * n * n; };
-        int n = 2;
-        while (n < 16 && !fits(n)) ++n;
-        if (n == 16 && !fits(n)) {
-            const double q = std::ceil(std::sqrt((25.0 / 48.0) * M / tol));
-            n = q < kMaxPieces ? static_cast<int>(q) : kMaxPieces;
-            while (n < kMaxPieces && !fits(n)) ++n;
-        }
+        const int n = piece_count(m2 * (625.0 / 2304.0));  // ((25/48) M)^2
         const double h = 1.0 / n, k = 0.5 * h * h;
         const Point base = p0 - D0 * k, slope = E * k;
         for (int i = 1; i < n; ++i) {

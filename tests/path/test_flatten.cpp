@@ -258,6 +258,39 @@ TEST_CASE("flatten: area-balanced cubics stay within the tolerance, in the hull,
     CHECK(monotone >= 150);
 }
 
+TEST_CASE("flatten: an area-balanced cubic takes the fewest pieces its error bound allows", "[flatten]") {
+    // The bound (src/path/flatten_internal.hpp): n pieces are within (25/48) M / n^2 of the curve,
+    // M = max(|P0 - 2 P1 + P2|, |P1 - 2 P2 + P3|); the flattener takes the smallest n >= 2 that
+    // meets the tolerance (a curve within (3/4) M of its chord is its chord), so n - 1 pieces
+    // would not. Curves whose second differences differ most (|E| large against M) are where a
+    // bound that also counts |E| would cut more pieces than needed.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0, 40);
+    int cut = 0;
+    for (double tol : {0.015, 0.1})
+        for (int i = 0; i < 300; ++i) {
+            Point q[4];
+            for (Point& pt : q) pt = Point{u(rng), u(rng)};
+            Path p;
+            p.move_to(q[0]).cubic_to(q[1], q[2], q[3]);
+            Polyline pl;
+            flatten(p, Affine{}, tol, pl, FlattenMode::AreaBalanced);
+            const double n = static_cast<double>(pl.points.size() - 1);
+            const double M = std::max((q[0] - q[1] * 2 + q[2]).length(), (q[1] - q[2] * 2 + q[3]).length());
+            const double need = (25.0 / 48.0) * M / tol;  // n^2 must reach it
+            INFO("tolerance " << tol << ", M " << M << ", " << n << " pieces");
+            if (0.75 * M <= tol * (1 - 1e-12)) {
+                CHECK(n == 1);
+                continue;
+            }
+            if (0.75 * M <= tol * (1 + 1e-12)) continue;  // on the chord test's rounding edge
+            ++cut;
+            CHECK(n * n >= need * (1 - 1e-12));
+            if (n > 2) CHECK((n - 1) * (n - 1) < need * (1 + 1e-12));
+        }
+    CHECK(cut > 500);
+}
+
 TEST_CASE("flatten: area-balanced cubics lose far less area than chords", "[flatten]") {
     // A cubic arch closed by its chord, against its closed-form area (P0 at the origin, so the
     // chord adds nothing): (1/20) (6 P0xP1 + 3 P0xP2 + P0xP3 + 3 P1xP2 + 3 P1xP3 + 6 P2xP3).
