@@ -128,10 +128,12 @@ private:
     // Every edge of chain c into `out`, in its contour's direction times `sign`.
     void push_whole(const Chain& c, int sign, Engine& out) const;
     [[noreturn]] void too_many() const;
+    // The segment's x at height y (between its ends). The share of its height comes first: the
+    // slope itself overflows for an edge of subnormal height.
     double x_on(std::uint32_t seg, double y) const {
         const Pt& a = pts_[seg];
         const Pt& b = pts_[seg + 1];
-        return y == a.y ? a.x : y == b.y ? b.x : a.x + (y - a.y) * ((b.x - a.x) / (b.y - a.y));
+        return y == a.y ? a.x : y == b.y ? b.x : a.x + (b.x - a.x) * ((y - a.y) / (b.y - a.y));
     }
     double slope(std::uint32_t seg) const { return (pts_[seg + 1].x - pts_[seg].x) / (pts_[seg + 1].y - pts_[seg].y); }
     void flush(const Active& a, double y, Engine& out) const;

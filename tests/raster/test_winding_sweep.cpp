@@ -159,6 +159,21 @@ TEST_CASE("winding sweep: shapes winding one value keep their edges, others do n
         }
 }
 
+TEST_CASE("winding sweep: edges of subnormal height", "[raster][sweep]") {
+    // A zigzag whose edges rise by 1e-309 px each (subnormal heights) while moving by 0.1875 px:
+    // a strip's edge taken at a y inside one of them must not divide the width by the height
+    // first (that overflows to infinity, and an infinite x reaches the cell walk).
+    Contour zigzag{{0, 0}};
+    for (int i = 1; i <= 556; ++i) {
+        const int k = i / 2;
+        zigzag.push_back({i % 2 ? 0.1875 * (k - 1) : 0.1875 * k, i * 1.0846046641719174e-309});
+    }
+    zigzag.push_back({1, 262});
+    zigzag.push_back({225, 225});
+    Rasterizer r;
+    for (FillRule rule : kRules) check_swept(r, {zigzag}, rule, {-32, -50, 206, 58}, "subnormal zigzag");
+}
+
 TEST_CASE("winding sweep: shapes reaching outside the target", "[raster][sweep]") {
     Rasterizer r;
     std::mt19937 rng(7);
