@@ -23,6 +23,8 @@ inline bool before(const auto& a, const auto& b) { return a.x < b.x - kTouch || 
 }  // namespace
 
 void WindingSweep::begin(std::size_t max_edges) {
+    outline_.clear();
+    outline_ends_.clear();
     pts_.clear();
     chains_.clear();
     open_ = false;
@@ -57,7 +59,17 @@ void WindingSweep::push_whole(const Chain& c, int sign, Engine& out) const {
     out.push_chain(&pts_[c.first].x, c.last - c.first + 1, c.dir * sign < 0);
 }
 
+void WindingSweep::push_outline(Engine& out) const {
+    std::size_t start = 0;
+    for (const std::uint32_t end : outline_ends_) {
+        out.push_polyline(outline_.data() + 2 * start, end - start);
+        start = end;
+    }
+}
+
 void WindingSweep::push_polyline(const double* xy, std::size_t n) {
+    outline_.insert(outline_.end(), xy, xy + 2 * n);
+    outline_ends_.push_back(static_cast<std::uint32_t>(outline_.size() / 2));
     // The direction of the open chain when these edges continue it, else 0.
     std::int8_t dir = open_ && pts_.back().x == xy[0] && pts_.back().y == xy[1] ? chains_.back().dir : 0;
     if (pts_.capacity() < pts_.size() + n + 1) pts_.reserve(std::max(2 * pts_.capacity(), pts_.size() + n + 1));
@@ -93,6 +105,8 @@ void WindingSweep::push_polyline(const double* xy, std::size_t n) {
 
 void WindingSweep::trim(std::size_t points) {
     if (pts_.capacity() <= points) return;
+    std::vector<double>().swap(outline_);
+    std::vector<std::uint32_t>().swap(outline_ends_);
     std::vector<Pt>().swap(pts_);
     std::vector<Chain>().swap(chains_);
     std::vector<std::pair<double, std::uint32_t>>().swap(order_);
@@ -329,7 +343,7 @@ WindingSweep::Outcome WindingSweep::fill(FillRule rule, std::size_t budget, Engi
     for (std::uint32_t c = 0; c < chains_.size(); ++c) order_.emplace_back(pts_[chains_[c].first].y, c);
     std::sort(order_.begin(), order_.end());
     if (prove_one_value(budget)) {
-        for (const Chain& c : chains_) push_whole(c, 1, out);
+        push_outline(out);
         return Outcome::Simple;
     }
     // The strips go on from where the proof stopped, with its s_.
@@ -361,7 +375,7 @@ WindingSweep::Outcome WindingSweep::fill(FillRule rule, std::size_t budget, Engi
         y = next;
     }
     if (!proving) return Outcome::Swept;
-    for (const Chain& c : chains_) push_whole(c, 1, out);
+    push_outline(out);
     return Outcome::Simple;
 }
 

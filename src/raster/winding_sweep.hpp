@@ -20,7 +20,8 @@
 // Bentley-Ottmann sweep, the first crossing below any y is between chains that are neighbours at
 // y, so each pair of chains that becomes neighbours is checked once, over the height both span,
 // and nothing is done between the tops and bottoms. A shape that passes goes on with its edges
-// whole. Any other, or one the proof cannot order (two chains starting along one line), goes to
+// whole, as they came (the polylines are kept beside the chains): the engine then gets what it
+// would have got without the sweep, in outline order. Any other, or one the proof cannot order (two chains starting along one line), goes to
 // the strips from the y where the proof stopped (everything above it is proven): they check each
 // strip for one value, cut nothing while it holds, and cut the shape into its region's boundary
 // from the first strip that fails.
@@ -156,6 +157,15 @@ private:
     // crossing's y when there is one. Counts the points it passes in `work`.
     double first_crossing(const Active& a, const Active& b, double y, double end, std::size_t& work) const;
 
+    // The edges as pushed, in polylines of consecutive points (x and y interleaved); outline_ends_
+    // holds where each one ends, in points.
+    std::vector<double> outline_;
+    std::vector<std::uint32_t> outline_ends_;
+    // Appends the edge to the last polyline when it starts where that one ends, else starts one.
+    inline void keep_edge(double x0, double y0, double x1, double y1);
+    // Every kept polyline into `out`, as pushed.
+    void push_outline(Engine& out) const;
+
     std::vector<Pt> pts_;  // the open chain's in travel order, the others' by y
     std::vector<Chain> chains_;
     bool open_ = false;                     // the last chain takes more points
@@ -169,9 +179,21 @@ private:
     double proven_to_ = 0;                                 // see prove_one_value()
 };
 
+inline void WindingSweep::keep_edge(double x0, double y0, double x1, double y1) {
+    const std::size_t m = outline_.size();
+    if (m != 0 && outline_[m - 2] == x0 && outline_[m - 1] == y0) {
+        outline_.insert(outline_.end(), {x1, y1});
+        ++outline_ends_.back();
+        return;
+    }
+    outline_.insert(outline_.end(), {x0, y0, x1, y1});
+    outline_ends_.push_back(static_cast<std::uint32_t>(m / 2 + 2));
+}
+
 inline void WindingSweep::push(double x0, double y0, double x1, double y1) {
     if (x0 == x1 && y0 == y1) return;
     if (++count_ > max_edges_) too_many();
+    keep_edge(x0, y0, x1, y1);
     if (y0 == y1) return;  // bounds no strip; the next edge starts elsewhere, so a chain ends
     const std::int8_t dir = y1 > y0 ? 1 : -1;
     if (!(open_ && chains_.back().dir == dir && pts_.back().x == x0 && pts_.back().y == y0)) start_chain(x0, y0, dir);

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "accuracy_util.hpp"
+#include "glyph_outline.hpp"
 
 using namespace casteljau;
 using namespace casteljau::testing;
@@ -157,6 +158,44 @@ TEST_CASE("winding sweep: shapes winding one value keep their edges, others do n
             CHECK(out.stats.swept_simple == c.one_value);
             check_swept(r, c.shape, rule, clip, c.what);
         }
+}
+
+TEST_CASE("winding sweep: a shape it proves simple renders as with the verdict given", "[raster][sweep]") {
+    // Once proven, the shape's edges go to the engine as they came, in outline order: the same
+    // pieces in the same order as a fill told the shape is simple, so the same bits. Lines of real
+    // glyphs (TrueType quadratics and CFF cubics) at text and display sizes, inside the target
+    // (flattened in batches of points), and a ring reaching past the target's left side (its
+    // edges clipped one by one).
+    Rasterizer r;
+    auto same = [&](const Path& p, const IRect& clip, const std::string& what) {
+        for (FillRule rule : kRules) {
+            FillOptions swept;
+            swept.rule = rule;
+            FillOptions given = swept;
+            given.topology = Topology::Simple;
+            const Rendered a = render(r, p, Affine::identity(), swept, clip);
+            const Rendered v = render(r, p, Affine::identity(), given, clip);
+            INFO(what);
+            REQUIRE(a.stats.swept);
+            CHECK(a.stats.swept_simple);
+            CHECK(!v.stats.swept);
+            CHECK(a.cov == v.cov);
+        }
+    };
+    for (const std::string& font :
+         {dejavu_sans_path(), std::string(CASTELJAU_SOURCE_DIR) + "/fonts/LinLibertine_R.otf"})
+        for (double px : {12.0, 40.0}) {
+            GlyphFont g(font);
+            const Path p = g.text(U"Casteljau Bezier", px, {1.25, px + 0.5});
+            const Rect b = p.control_bounds();
+            same(p, IRect{0, 0, static_cast<int>(b.x1) + 2, static_cast<int>(b.y1) + 2},
+                 font + " at " + std::to_string(px) + " px");
+        }
+    // The inner ellipse the other way round: a ring winding one value.
+    Path p;
+    p.add_ellipse({6.3, 20.7}, 17.2, 12.9);
+    p.append(Path().add_ellipse({6.3, 20.7}, 9.4, 6.1).reversed());
+    same(p, IRect{0, 0, 40, 40}, "ring past the left side");
 }
 
 TEST_CASE("winding sweep: edges of subnormal height", "[raster][sweep]") {
