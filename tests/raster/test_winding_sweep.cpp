@@ -183,14 +183,15 @@ TEST_CASE("winding sweep: a shape it proves simple renders as with the verdict g
         }
     };
     for (const std::string& font :
-         {dejavu_sans_path(), std::string(CASTELJAU_SOURCE_DIR) + "/fonts/LinLibertine_R.otf"})
+         {dejavu_sans_path(), std::string(CASTELJAU_SOURCE_DIR) + "/fonts/LinLibertine_R.otf"}) {
+        const GlyphFont g(font);
         for (double px : {12.0, 40.0}) {
-            GlyphFont g(font);
             const Path p = g.text(U"Casteljau Bezier", px, {1.25, px + 0.5});
             const Rect b = p.control_bounds();
             same(p, IRect{0, 0, static_cast<int>(b.x1) + 2, static_cast<int>(b.y1) + 2},
                  font + " at " + std::to_string(px) + " px");
         }
+    }
     // The inner ellipse the other way round: a ring winding one value.
     Path p;
     p.add_ellipse({6.3, 20.7}, 17.2, 12.9);
