@@ -10,6 +10,8 @@
 //                     (Highway, runtime dispatch)
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -213,5 +215,45 @@ struct RowVectorRows {
     int ox, oy;
 };
 void row_vector_emit(const RowVectorRows& rows, SpanSink& sink);
+
+// An append-only list (the engine's per-cell and per-edge records, the winding sweep's points):
+// the append is a compare and a store inline, growth (doubling) out of line. Cleared lists keep
+// their memory.
+template <class T>
+class AppendList {
+public:
+    [[gnu::always_inline]] void push(const T& v) {
+        if (n_ == buf_.size()) [[unlikely]]
+            grow();
+        buf_[n_++] = v;
+    }
+    void clear() { n_ = 0; }
+    // Room for n more records: write them from the returned end, then pass the new end to commit().
+    T* room(std::size_t n) {
+        while (buf_.size() - n_ < n) grow();
+        return buf_.data() + n_;
+    }
+    void commit(const T* end) { n_ = static_cast<std::size_t>(end - buf_.data()); }
+    // Frees the memory when it holds room for more than `n` records (the list is then empty).
+    void release_above(std::size_t n) {
+        if (buf_.size() > n) {
+            std::vector<T>().swap(buf_);
+            n_ = 0;
+        }
+    }
+    std::size_t size() const { return n_; }
+    std::size_t capacity() const { return buf_.size(); }
+    T& operator[](std::size_t i) { return buf_[i]; }
+    const T& operator[](std::size_t i) const { return buf_[i]; }
+    T* data() { return buf_.data(); }
+    const T* data() const { return buf_.data(); }
+    const T* begin() const { return buf_.data(); }
+    const T* end() const { return buf_.data() + n_; }
+
+private:
+    [[gnu::noinline]] void grow() { buf_.resize(std::max<std::size_t>(256, 2 * buf_.size())); }
+    std::vector<T> buf_;
+    std::size_t n_ = 0;
+};
 
 }  // namespace casteljau::raster
