@@ -40,17 +40,26 @@ void WindingSweep::close_chain() {
     if (!open_) return;
     Chain& c = chains_.back();
     c.last = static_cast<std::uint32_t>(pts_.size() - 1);
-    if (c.dir < 0) std::reverse(pts_.begin() + c.first, pts_.end());
-    c.xmin = open_xmin_;
-    c.xmax = open_xmax_;
+    Pt* const first = pts_.data() + c.first;
+    Pt* const end = pts_.data() + pts_.size();
+    if (c.dir < 0) std::reverse(first, end);
+    // The x range in a pass of its own: kept while the points arrive, it costs more (the
+    // compiler packs it into vectors along with the points).
+    double xmin = first->x, xmax = first->x;
+    for (const Pt* q = first + 1; q < end; ++q) {
+        // One minsd and one maxsd each (std::min's argument order costs a move per point).
+        xmin = q->x < xmin ? q->x : xmin;
+        xmax = q->x > xmax ? q->x : xmax;
+    }
+    c.xmin = xmin;
+    c.xmax = xmax;
     open_ = false;
 }
 
 void WindingSweep::start_chain(double x0, double y0, std::int8_t dir) {
     close_chain();
     chains_.push_back({static_cast<std::uint32_t>(pts_.size()), 0, dir, 0, 0});
-    pts_.push_back({x0, y0});
-    open_xmin_ = open_xmax_ = x0;
+    pts_.push({x0, y0});
     open_ = true;
 }
 
@@ -70,36 +79,38 @@ void WindingSweep::push_outline(Engine& out) const {
 void WindingSweep::push_polyline(const double* xy, std::size_t n) {
     outline_.insert(outline_.end(), xy, xy + 2 * n);
     outline_ends_.push_back(static_cast<std::uint32_t>(outline_.size() / 2));
+    if (n < 2) return;
     // The direction of the open chain when these edges continue it, else 0.
-    std::int8_t dir = open_ && pts_.back().x == xy[0] && pts_.back().y == xy[1] ? chains_.back().dir : 0;
-    if (pts_.capacity() < pts_.size() + n + 1) pts_.reserve(std::max(2 * pts_.capacity(), pts_.size() + n + 1));
-    // The edge count and the open chain's x range are kept in registers here and stored once; the
-    // limit is checked at the end, which lets at most this polyline's points past it.
-    std::size_t edges = 0;
-    double xmin = open_xmin_, xmax = open_xmax_;
+    std::int8_t dir = open_ && continues(xy[0], xy[1]) ? chains_.back().dir : 0;
+    // Each edge adds its end, and at most one chain start: room for 2 n points. The points are
+    // written through p, which is committed before a chain starts and at the end.
+    Pt* p = pts_.room(2 * n);
+    std::size_t zero = 0;  // point-like edges, which are dropped
+    double x0 = xy[0], y0 = xy[1];
     for (std::size_t i = 1; i < n; ++i) {
-        const double x0 = xy[2 * i - 2], y0 = xy[2 * i - 1], x1 = xy[2 * i], y1 = xy[2 * i + 1];
-        if (x0 == x1 && y0 == y1) continue;
-        ++edges;
-        if (y0 == y1) {
-            dir = 0;  // bounds no strip; the next edge starts a chain
+        const double x1 = xy[2 * i], y1 = xy[2 * i + 1];
+        if (y1 == y0) [[unlikely]] {
+            if (x1 == x0)
+                ++zero;
+            else
+                dir = 0;  // bounds no strip; the next edge starts a chain
+            x0 = x1;
             continue;
         }
         const std::int8_t d = y1 > y0 ? 1 : -1;
-        if (d != dir) {
-            open_xmin_ = xmin;
-            open_xmax_ = xmax;
+        if (d != dir) [[unlikely]] {
+            pts_.commit(p);
             start_chain(x0, y0, d);
-            xmin = xmax = x0;
+            p = pts_.data() + pts_.size();
             dir = d;
         }
-        pts_.push_back({x1, y1});
-        xmin = std::min(xmin, x1);
-        xmax = std::max(xmax, x1);
+        *p++ = {x1, y1};
+        x0 = x1;
+        y0 = y1;
     }
-    open_xmin_ = xmin;
-    open_xmax_ = xmax;
-    count_ += edges;
+    pts_.commit(p);
+    // The limit is checked once per polyline, which lets at most its points past it.
+    count_ += n - 1 - zero;
     if (count_ > max_edges_) too_many();
 }
 
@@ -107,7 +118,7 @@ void WindingSweep::trim(std::size_t points) {
     if (pts_.capacity() <= points) return;
     std::vector<double>().swap(outline_);
     std::vector<std::uint32_t>().swap(outline_ends_);
-    std::vector<Pt>().swap(pts_);
+    pts_.release_above(0);
     std::vector<Chain>().swap(chains_);
     std::vector<std::pair<double, std::uint32_t>>().swap(order_);
     std::vector<Active>().swap(active_);
@@ -148,7 +159,7 @@ double WindingSweep::first_crossing(const Active& a, const Active& b, double y, 
     return end;
 }
 
-bool WindingSweep::probes_cross(const Probe& a, const Probe& b, double y, std::size_t& work) const {
+bool WindingSweep::probes_cross(Probe& a, Probe& b, double y, std::size_t& work) const {
     const Chain& ca = chains_[a.chain];
     const Chain& cb = chains_[b.chain];
     if (ca.xmax <= cb.xmin + kTouch) return false;  // a lies left of b all along
@@ -156,7 +167,8 @@ bool WindingSweep::probes_cross(const Probe& a, const Probe& b, double y, std::s
     // cross if and only if it exceeds kTouch at one of those points. Each point is tested against
     // the other chain's segment at its height by a cross product, with no division.
     const double end = std::min(a.bottom, b.bottom);
-    std::uint32_t ia = segment_below(a.seg, y), ib = segment_below(b.seg, y);
+    // From the segments at y (kept in the probes: the next check of either starts there).
+    std::uint32_t ia = segment_at(a, y), ib = segment_at(b, y);
     while (true) {
         ++work;
         const Pt& a0 = pts_[ia];

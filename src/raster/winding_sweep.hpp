@@ -100,6 +100,11 @@ private:
         std::int8_t keep;  // current piece: +1 kept running down, -1 kept running up, 0 dropped
     };
     void close_chain();
+    // Whether the last point is (x, y).
+    bool continues(double x, double y) const {
+        const Pt& p = pts_[pts_.size() - 1];
+        return p.x == x && p.y == y;
+    }
     // Whether the shape winds 0 and one other value only, proven without strips (see the top of
     // this file); false also when the proof cannot tell or would take more than `budget` steps.
     // Either way every strip above proven_to_ winds 0 and s_ only.
@@ -111,7 +116,7 @@ private:
     // a chain already there (the order is then unknown).
     bool insert_probe(std::uint32_t c, double y);
     // Whether chains a (left at y) and b cross below y, over the height both span.
-    bool probes_cross(const Probe& a, const Probe& b, double y, std::size_t& work) const;
+    bool probes_cross(Probe& a, Probe& b, double y, std::size_t& work) const;
     // The first segment from `seg` on whose end lies below y (y above the chain's bottom).
     std::uint32_t segment_below(std::uint32_t seg, double y) const {
         while (pts_[seg + 1].y <= y) ++seg;
@@ -166,10 +171,9 @@ private:
     // Every kept polyline into `out`, as pushed.
     void push_outline(Engine& out) const;
 
-    std::vector<Pt> pts_;  // the open chain's in travel order, the others' by y
+    AppendList<Pt> pts_;  // the open chain's in travel order, the others' by y
     std::vector<Chain> chains_;
-    bool open_ = false;                     // the last chain takes more points
-    double open_xmin_ = 0, open_xmax_ = 0;  // the open chain's x range so far
+    bool open_ = false;  // the last chain takes more points
     std::size_t count_ = 0, max_edges_ = 0;
     std::vector<std::pair<double, std::uint32_t>> order_;  // chains' tops, in order
     std::size_t next_top_ = 0;                             // the first of order_ not entered yet
@@ -196,10 +200,8 @@ inline void WindingSweep::push(double x0, double y0, double x1, double y1) {
     keep_edge(x0, y0, x1, y1);
     if (y0 == y1) return;  // bounds no strip; the next edge starts elsewhere, so a chain ends
     const std::int8_t dir = y1 > y0 ? 1 : -1;
-    if (!(open_ && chains_.back().dir == dir && pts_.back().x == x0 && pts_.back().y == y0)) start_chain(x0, y0, dir);
-    pts_.push_back({x1, y1});
-    open_xmin_ = std::min(open_xmin_, x1);
-    open_xmax_ = std::max(open_xmax_, x1);
+    if (!(open_ && chains_.back().dir == dir && continues(x0, y0))) start_chain(x0, y0, dir);
+    pts_.push({x1, y1});
 }
 
 }  // namespace casteljau::raster
