@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <span>
 #include <string>
 #include <vector>
@@ -32,6 +33,17 @@ public:
     void push_chain(const double* xy, std::size_t n, bool reverse);
     // The current contour is complete (its closing edge was pushed).
     void contour_end();
+    // Whether the edges pushed so far only wait in a list until finish() (the row vectors), so
+    // that restart() is cheap.
+    bool defers_accumulation() const { return vec_; }
+    // Drops every edge pushed since begin(), as if begun again on the same box; only while
+    // defers_accumulation().
+    void restart() {
+        assert(vec_);
+        pieces_.clear();
+        chains_ = false;
+        count_ = 0;
+    }
     // Restricts the overlap check to the cells that meet `boxes` (moved by (dx, dy) into cell
     // coordinates), grown by one cell for rounding: FillOptions::overlap_boxes. Boxes that would
     // mark more cells in all than the shape has are ignored (the check looks everywhere), so

@@ -83,6 +83,25 @@ struct EdgeList {
     void contour_end() { ++current; }
 };
 
+// The edges of a shape to the winding sweep and to an engine at once (the edge builder's interface).
+struct SweepAndEngine {
+    raster::WindingSweep& sweep;
+    raster::Engine& engine;
+
+    void push(double x0, double y0, double x1, double y1) {
+        sweep.push(x0, y0, x1, y1);
+        engine.push(x0, y0, x1, y1);
+    }
+    void push_polyline(const double* xy, std::size_t n) {
+        sweep.push_polyline(xy, n);
+        engine.push_polyline(xy, n);
+    }
+    void contour_end() {
+        sweep.contour_end();
+        engine.contour_end();
+    }
+};
+
 class MaskSink final : public SpanSink {
 public:
     explicit MaskSink(Mask& m) : mask_(m) {}
@@ -276,9 +295,17 @@ void Rasterizer::fill(const Polyline& poly, const FillOptions& opts, const IRect
 
 bool Rasterizer::Impl::fill_swept(const Path& path, const Affine& local, const FillOptions& opts, bool inside, int ox,
                                   int oy, int bw, int bh, SpanSink& sink, RasterStats& stats) {
-    sweep.begin(current_limits().flattened_segments);
-    raster::build_edges(path, local, opts.tolerance, inside, bw, bh, sweep);
     engine.begin(bw, bh, false);
+    // An engine that only lists the edges until finish() takes them as the sweep does, while they
+    // are in the cache: most shapes prove simple, and then the sweep needs to hand nothing over.
+    const bool both = engine.defers_accumulation();
+    sweep.begin(current_limits().flattened_segments, !both);
+    if (both) {
+        SweepAndEngine tee{sweep, engine};
+        raster::build_edges(path, local, opts.tolerance, inside, bw, bh, tee);
+    } else {
+        raster::build_edges(path, local, opts.tolerance, inside, bw, bh, sweep);
+    }
     const std::size_t budget = kSweepWorkPerEdge * sweep.edges() + kSweepWorkBase;
     const raster::WindingSweep::Outcome outcome = sweep.fill(opts.rule, budget, engine);
     if (outcome == raster::WindingSweep::Outcome::TooCostly) return false;

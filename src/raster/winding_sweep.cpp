@@ -22,7 +22,8 @@ inline bool before(const auto& a, const auto& b) { return a.x < b.x - kTouch || 
 
 }  // namespace
 
-void WindingSweep::begin(std::size_t max_edges) {
+void WindingSweep::begin(std::size_t max_edges, bool keep_outline) {
+    keep_outline_ = keep_outline;
     outline_.clear();
     outline_ends_.clear();
     pts_.clear();
@@ -77,8 +78,10 @@ void WindingSweep::push_outline(Engine& out) const {
 }
 
 void WindingSweep::push_polyline(const double* xy, std::size_t n) {
-    outline_.insert(outline_.end(), xy, xy + 2 * n);
-    outline_ends_.push_back(static_cast<std::uint32_t>(outline_.size() / 2));
+    if (keep_outline_) {
+        outline_.insert(outline_.end(), xy, xy + 2 * n);
+        outline_ends_.push_back(static_cast<std::uint32_t>(outline_.size() / 2));
+    }
     if (n < 2) return;
     // The direction of the open chain when these edges continue it, else 0.
     std::int8_t dir = open_ && continues(xy[0], xy[1]) ? chains_.back().dir : 0;
@@ -337,6 +340,7 @@ template <bool kEmit>
 }
 
 void WindingSweep::take_over(double y, Engine& out) {
+    if (!keep_outline_) out.restart();  // it holds the pushed edges: the boundary replaces them
     // Above y every strip wound 0 and s_ only, where each chain bounds the region: run down where
     // the region starts, so a chain is kept in its own direction times s_ and the region winds +1,
     // as choose() keeps it from here on.
@@ -355,7 +359,7 @@ WindingSweep::Outcome WindingSweep::fill(FillRule rule, std::size_t budget, Engi
     for (std::uint32_t c = 0; c < chains_.size(); ++c) order_.emplace_back(pts_[chains_[c].first].y, c);
     std::sort(order_.begin(), order_.end());
     if (prove_one_value(budget)) {
-        push_outline(out);
+        if (keep_outline_) push_outline(out);
         return Outcome::Simple;
     }
     // The strips go on from where the proof stopped, with its s_.
@@ -387,7 +391,7 @@ WindingSweep::Outcome WindingSweep::fill(FillRule rule, std::size_t budget, Engi
         y = next;
     }
     if (!proving) return Outcome::Swept;
-    push_outline(out);
+    if (keep_outline_) push_outline(out);
     return Outcome::Simple;
 }
 

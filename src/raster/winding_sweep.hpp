@@ -44,8 +44,10 @@ class Engine;
 
 class WindingSweep {
 public:
-    // Starts a shape; more than `max_edges` edges pushed is a Limit error.
-    void begin(std::size_t max_edges);
+    // Starts a shape; more than `max_edges` edges pushed is a Limit error. `keep_outline`: keep the
+    // pushed edges to hand them to fill()'s engine if the shape is simple; without it the caller
+    // pushes every edge into that engine too, as it pushes them here (see fill()).
+    void begin(std::size_t max_edges, bool keep_outline = true);
     // One edge in box coordinates, in contour order (the edge builder's interface).
     inline void push(double x0, double y0, double x1, double y1);
     // The edges between n consecutive points (x and y interleaved), as push() for each.
@@ -64,6 +66,9 @@ public:
     //   strips above are pushed as they are.
     // - TooCostly, with part of the edges pushed: the sweep would take more than `budget` steps
     //   (a chain passed in a strip, or a point passed when looking for crossings).
+    // Without the outline kept, `out` holds the pushed edges already (an engine that defers its
+    // accumulation, Engine::restart()): a simple shape leaves them there, any other restarts `out`
+    // before its first edge.
     enum class Outcome { Simple, Swept, TooCostly };
     Outcome fill(FillRule rule, std::size_t budget, Engine& out);
 
@@ -166,6 +171,7 @@ private:
     // holds where each one ends, in points.
     std::vector<double> outline_;
     std::vector<std::uint32_t> outline_ends_;
+    bool keep_outline_ = true;
     // Appends the edge to the last polyline when it starts where that one ends, else starts one.
     inline void keep_edge(double x0, double y0, double x1, double y1);
     // Every kept polyline into `out`, as pushed.
@@ -197,7 +203,7 @@ inline void WindingSweep::keep_edge(double x0, double y0, double x1, double y1) 
 inline void WindingSweep::push(double x0, double y0, double x1, double y1) {
     if (x0 == x1 && y0 == y1) return;
     if (++count_ > max_edges_) too_many();
-    keep_edge(x0, y0, x1, y1);
+    if (keep_outline_) keep_edge(x0, y0, x1, y1);
     if (y0 == y1) return;  // bounds no strip; the next edge starts elsewhere, so a chain ends
     const std::int8_t dir = y1 > y0 ? 1 : -1;
     if (!(open_ && chains_.back().dir == dir && continues(x0, y0))) start_chain(x0, y0, dir);
