@@ -2,6 +2,7 @@
 #include "raster/winding_sweep.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -89,26 +90,25 @@ void WindingSweep::push_polyline(const double* xy, std::size_t n) {
     // written through p, which is committed before a chain starts and at the end.
     Pt* p = pts_.room(2 * n);
     std::size_t zero = 0;  // point-like edges, which are dropped
-    double x0 = xy[0], y0 = xy[1];
-    for (std::size_t i = 1; i < n; ++i) {
-        const double x1 = xy[2 * i], y1 = xy[2 * i + 1];
+    // Only the start's y is carried from edge to edge; the rare paths read its x back.
+    double y0 = xy[1];
+    for (const double *e = xy + 2, *const stop = xy + 2 * n; e != stop; e += 2) {
+        const double y1 = e[1];
         if (y1 == y0) [[unlikely]] {
-            if (x1 == x0)
+            if (e[0] == e[-2])
                 ++zero;
             else
                 dir = 0;  // bounds no strip; the next edge starts a chain
-            x0 = x1;
             continue;
         }
         const std::int8_t d = y1 > y0 ? 1 : -1;
         if (d != dir) [[unlikely]] {
             pts_.commit(p);
-            start_chain(x0, y0, d);
+            start_chain(e[-2], y0, d);
             p = pts_.data() + pts_.size();
             dir = d;
         }
-        *p++ = {x1, y1};
-        x0 = x1;
+        std::memcpy(p++, e, sizeof(Pt));  // the point as it is: x and y, as Pt lays them out
         y0 = y1;
     }
     pts_.commit(p);
