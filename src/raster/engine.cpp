@@ -221,8 +221,7 @@ void Engine::begin(int w, int h, bool track) {
         vstride_ = std::max(1, (w + granule - 1) / granule) * granule;
         const std::size_t n = static_cast<std::size_t>(vstride_) * static_cast<std::size_t>(h);
         grow_zeroed(facc_, n);
-        pieces_.clear();
-        chains_ = false;
+        restart();
     } else {
         if (fcells_) {
             stride_ = (stride_ + 7) & ~std::size_t(7);  // whole 8-cell blocks: the scan's vectors

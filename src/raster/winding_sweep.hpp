@@ -20,11 +20,12 @@
 // Bentley-Ottmann sweep, the first crossing below any y is between chains that are neighbours at
 // y, so each pair of chains that becomes neighbours is checked once, over the height both span,
 // and nothing is done between the tops and bottoms. A shape that passes goes on with its edges
-// whole, as they came (the polylines are kept beside the chains): the engine then gets what it
-// would have got without the sweep, in outline order. Any other, or one the proof cannot order
-// (two chains starting along one line), goes to the strips from the y where the proof stopped
-// (everything above it is proven): they check each strip for one value, cut nothing while it
-// holds, and cut the shape into its region's boundary from the first strip that fails.
+// whole, as they came (the polylines are kept beside the chains, or the caller gave them to the
+// engine as well): the engine then gets what it would have got without the sweep, in outline
+// order. Any other, or one the proof cannot order (two chains starting along one line), goes to
+// the strips from the y where the proof stopped (everything above it is proven): they check each
+// strip for one value, cut nothing while it holds, and cut the shape into its region's boundary
+// from the first strip that fails.
 //
 // Cost: the edges, plus the strips times the chains spanning them. A shape with many crossings
 // (each one a strip) may cost more than the per-cell check, so the sweep stops at a budget and
