@@ -2,11 +2,14 @@
 // shape (FillOptions::inside), asked cell after cell in increasing rows by Engine::finish.
 //
 // The capsules (possibly cut by lines) that can hold a unit square (radius at least sqrt(1/2)) and
-// reach the engine's box are kept in cell coordinates, bucketed by the first row their boxes span whole. A sweep down the
-// rows keeps the ones whose box spans the current row; a cell is inside when one of them holds all four corners
-// (a cut capsule is convex). Each query costs the active capsules it tests, and the tests of one fill
-// stop at a budget of kTestsPerItem per capsule and per query: past it every cell gets "no",
-// which only sends it to the exact computation.
+// reach the engine's box are kept in cell coordinates, bucketed by the first row their boxes span
+// whole. A sweep down the rows keeps the ones whose box spans the current row. A cut capsule is
+// convex, so the cells of one row it holds whole are a run of consecutive cells: the first row a
+// question is asked in, each active capsule gives its run (from its chords along the row's top
+// and bottom, its two end cells checked corner by corner), and the runs, sorted by first cell,
+// answer the row's questions in one pass. Work: one run per active capsule and row asked, within
+// a budget of kWorkPerItem per capsule and per question; past it every cell gets "no", which only
+// sends it to the exact computation.
 #pragma once
 
 #include <cstddef>
@@ -22,22 +25,34 @@ public:
     // Takes the capsules (pixel space) that can hold a cell of the box of w x h cells whose
     // top-left cell is pixel (ox, oy). `queries` bounds the number of covers() calls to come.
     void reset(std::span<const CutCapsule> capsules, int ox, int oy, int w, int h, std::size_t queries);
-    // Whether cell (col, row) lies wholly inside one of the capsules; rows may not decrease
-    // between calls.
+    // Whether cell (col, row) lies wholly inside one of the capsules. Rows may not decrease between
+    // calls; within a row, columns in increasing order are answered fastest.
     bool covers(int col, int row);
 
 private:
     struct Item {
-        CutCapsule cap;                   // cell coordinates
-        double top, bottom, left, right;  // top: the first row whose cells may lie inside
+        CutCapsule cap;      // cell coordinates
+        double top, bottom;  // top: the first row whose cells may lie inside
     };
-    static constexpr std::size_t kTestsPerItem = 8;
+    struct Run {
+        int first, last;  // cells first .. last of the row lie inside
+    };
+    void enter_row(int row);
+    bool run_of(const CutCapsule& c, int row, Run& out) const;
+
+    static constexpr std::size_t kWorkPerItem = 8;
+    int w_ = 0, h_ = 0;
     std::vector<Item> items_;
     std::vector<std::size_t> row_start_;  // per row: where its bucket starts in order_ (h + 1 entries)
     std::vector<std::size_t> fill_;
     std::vector<std::size_t> order_;  // items by first row
     std::vector<std::size_t> active_;
-    int next_row_ = 0;  // rows before it have been swept
+    int next_row_ = 0;       // rows before it have been swept
+    std::vector<Run> runs_;  // the current row's, by first cell
+    int row_ = -1;           // the row runs_ belongs to
+    std::size_t next_run_ = 0;
+    int reach_ = -1;     // the farthest last cell of runs_[0 .. next_run_)
+    int last_col_ = -1;  // the column asked last in row_
     std::size_t budget_ = 0;
 };
 

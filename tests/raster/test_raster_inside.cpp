@@ -2,6 +2,11 @@
 // them full without the exact computation; everything else stays as it is.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <random>
+#include <utility>
+#include <vector>
+
 #include "casteljau/raster.hpp"
 #include "raster_check.hpp"
 
@@ -73,4 +78,61 @@ TEST_CASE("FillOptions::inside: a capsule that is not inside is believed", "[ras
     const Mask hinted = r.fill_mask(p, Affine{}, fo);
     CHECK(plain.at(0, 10) == 128);
     CHECK(hinted.at(0, 10) == 255);
+}
+
+TEST_CASE("FillOptions::inside: every recomputed cell inside a capsule is found among thousands", "[raster][inside]") {
+    // A rectangle drawn twice: its boundary cells, and only they, are recomputed exactly. Thousands
+    // of capsules (some cut by lines) cross its rows; the contract is the caller's, so each cell
+    // of the boundary that one of them holds whole must come out full, and every other pixel as
+    // without capsules. A row's questions see every capsule that spans it, however many.
+    Rasterizer r;
+    const Rect box{0.5, 0.5, 200.5, 60.5};
+    Path p;
+    p.add_rect(box);
+    p.add_rect(box);
+    FillOptions plain_fo;
+    plain_fo.winding_sweep = false;
+    const Mask plain = r.fill_mask(p, Affine{}, plain_fo);
+    std::vector<std::pair<int, int>> boundary;  // (col, row): the cells the rectangle's sides cross
+    for (int y = 0; y <= 60; ++y)
+        for (int x = 0; x <= 200; ++x)
+            if (x == 0 || x == 200 || y == 0 || y == 60) boundary.emplace_back(x, y);
+    REQUIRE(r.last_stats().exact_cells == boundary.size());
+
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> ux(-4, 205), uy(-4, 65), ur(0.7, 2.2), ul(-6, 6), ua(0, 6.283185307179586);
+    std::vector<CutCapsule> caps;
+    for (int i = 0; i < 4000; ++i) {
+        const Point a{ux(rng), uy(rng)};
+        CutCapsule c(Capsule{a, a + Vec{ul(rng), ul(rng)}, ur(rng)});
+        c.cut_count = i % 3;
+        for (int k = 0; k < c.cut_count; ++k) {
+            const double t = ua(rng);
+            c.cuts[k] = {a + Vec{ul(rng) / 3, ul(rng) / 3}, Vec{std::cos(t), std::sin(t)}};
+        }
+        caps.push_back(c);
+    }
+    auto held = [&](int x, int y) {
+        for (const CutCapsule& c : caps)
+            if (c.contains({double(x), double(y)}) && c.contains({x + 1.0, double(y)}) &&
+                c.contains({double(x), y + 1.0}) && c.contains({x + 1.0, y + 1.0}))
+                return true;
+        return false;
+    };
+    FillOptions fo;
+    fo.inside = caps;
+    const Mask hinted = r.fill_mask(p, Affine{}, fo);
+    std::size_t expected = 0;
+    for (auto [x, y] : boundary) {
+        const bool full = held(x, y);
+        expected += full;
+        INFO("cell " << x << ", " << y);
+        CHECK(hinted.at(x, y) == (full ? 255 : plain.at(x, y)));
+    }
+    REQUIRE(expected > 100);  // both kinds of cells are there
+    REQUIRE(expected + 100 < boundary.size());
+    CHECK(r.last_stats().inside_cells == expected);
+    CHECK(r.last_stats().inside_cells + r.last_stats().exact_cells == boundary.size());
+    for (int y = 1; y < 60; ++y)
+        for (int x = 1; x < 200; ++x) REQUIRE(hinted.at(x, y) == plain.at(x, y));
 }
