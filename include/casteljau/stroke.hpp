@@ -90,8 +90,10 @@ Path stroke(const Path& path, const StrokeStyle& style, const Affine& m = {}, do
 // path turns sharply within its first chord. The stroke holds every point within width / 2 of its
 // centre line except beyond or near its open ends (caps, and the cuts of tight ends) and, with
 // other joins, outside corners; the margin covers the flattening of round joins and the swept
-// wedges left out when shallower than the tolerance. Other joins give no capsules for contours
-// with a corner. Capsules that cannot hold a pixel (radius under sqrt(1/2) pixel) are left out.
+// wedges left out when shallower than the tolerance. A contour with a corner joined otherwise
+// gives only its segments' rectangles (the capsule cut square at both ends of its segment), none
+// for the segments an open end would cut. Capsules that cannot hold a pixel (radius under
+// sqrt(1/2) pixel) are left out.
 struct StrokeOutline {
     Path outline;
     std::vector<CutCapsule> inside;
@@ -100,6 +102,10 @@ StrokeOutline stroke_outline(const Path& path, const StrokeStyle& style, const A
 // The same into `out`, whose lists keep their memory: for a caller that strokes many paths in turn
 // (a canvas). On an exception `out` holds no outline.
 void stroke_outline(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance, StrokeOutline& out);
+// The capsules stroke_outline() gives, without making the outline: for a caller that draws a
+// stroke through other outlines whose union is the same (SharedBorders' chains, map.hpp).
+std::vector<CutCapsule> stroke_interior(const Path& path, const StrokeStyle& style, const Affine& m = {},
+                                        double tolerance = 0.05);
 
 // The distance, in the path's units, under which stroke(path, style, m, tolerance) merges a
 // point into the one before it (their direction would be noise): 1/1000 of the user-space

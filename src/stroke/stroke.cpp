@@ -658,12 +658,12 @@ double stroke_merge_distance(const Affine& m, double tolerance) {
 
 namespace {
 
-// stroke() and stroke_outline(): the outline into `out` (cleared first), and the capsules inside it
-// into `inside` (cleared first) when it is given.
-void stroke_with(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance, Path& out,
+// stroke(), stroke_outline() and stroke_interior(): the outline into `out` and the capsules inside
+// it into `inside`, each when given (and cleared first).
+void stroke_with(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance, Path* out,
                  std::vector<CutCapsule>* inside) {
     using namespace stroke_detail;
-    out.clear();
+    if (out) out->clear();
     if (inside) inside->clear();
     const double tol = user_tolerance(m, tolerance);
     check_finite(path);
@@ -680,13 +680,13 @@ void stroke_with(const Path& path, const StrokeStyle& style, const Affine& m, do
     FlatContours& flat = sc.flat;
     flatten_for_stroke(path, tol, tangent_resolution(style.width, tol), flat);
     if (pattern.empty()) {
-        stroke_polyline(flat, {}, style, tol, out);
+        if (out) stroke_polyline(flat, {}, style, tol, *out);
         if (inside) interior_capsules(flat, style, tol, m, *inside);
     } else {
         FlatContours& dashed = sc.dashed;
         std::vector<Point>& dirs = sc.dirs;
         dash_polyline(flat, pattern, style.dash_offset, dashed, dirs);
-        stroke_polyline(dashed, dirs, style, tol, out);
+        if (out) stroke_polyline(dashed, dirs, style, tol, *out);
         if (inside) interior_capsules(dashed, style, tol, m, *inside);
     }
 }
@@ -695,24 +695,30 @@ void stroke_with(const Path& path, const StrokeStyle& style, const Affine& m, do
 
 Path stroke(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance) {
     Path out;
-    stroke_with(path, style, m, tolerance, out, nullptr);
+    stroke_with(path, style, m, tolerance, &out, nullptr);
     return out;
 }
 
 StrokeOutline stroke_outline(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance) {
     StrokeOutline o;
-    stroke_with(path, style, m, tolerance, o.outline, &o.inside);
+    stroke_with(path, style, m, tolerance, &o.outline, &o.inside);
     return o;
 }
 
 void stroke_outline(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance, StrokeOutline& out) {
     try {
-        stroke_with(path, style, m, tolerance, out.outline, &out.inside);
+        stroke_with(path, style, m, tolerance, &out.outline, &out.inside);
     } catch (...) {
         out.outline.clear();
         out.inside.clear();
         throw;
     }
+}
+
+std::vector<CutCapsule> stroke_interior(const Path& path, const StrokeStyle& style, const Affine& m, double tolerance) {
+    std::vector<CutCapsule> inside;
+    stroke_with(path, style, m, tolerance, nullptr, &inside);
+    return inside;
 }
 
 Path dash(const Path& path, std::span<const double> dashes, double offset, const Affine& m, double tolerance) {

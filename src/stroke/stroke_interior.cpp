@@ -17,6 +17,9 @@
 //     segment's capsule is cut where it could reach those places (OpenEnd below): by L, or by a
 //     line that keeps it out of the disc around E that holds them; at a tight end, capsules
 //     within 4h of E are dropped.
+// With other joins a corner's outer cone may be short of h, and a capsule reaching into it from a
+// nearby segment would not be inside: a contour with such a corner gives only its segments'
+// rectangles (the first case above holds for every join), none for a segment an end cuts or drops.
 // The outline is short of this ideal by the flattening of round arcs (chords within the
 // tolerance) and the swept wedges it leaves out when they reach less than the tolerance: radius
 // h - 3 tol keeps clear of both. Under m the capsule's image holds the capsule of radius
@@ -99,6 +102,20 @@ HalfPlane to_pixels(const HalfPlane& hp, const Affine& m) {
     return {m.apply(hp.at), n};
 }
 
+// Cuts `cc` (the capsule from a to b) square to the segment at both ends: what is left is the
+// segment's rectangle, which the outline holds whole whatever the joins. False for a segment of no
+// length.
+bool cut_square(Point a, Point b, const Affine& m, CutCapsule& cc) {
+    const Vec d = b - a;
+    const double len = length_of(d);
+    if (!(len > 0)) return false;
+    const Vec u = d / len;
+    cc.cuts[0] = to_pixels(HalfPlane{a, -u}, m);
+    cc.cuts[1] = to_pixels(HalfPlane{b, u}, m);
+    cc.cut_count = 2;
+    return true;
+}
+
 }  // namespace
 
 void interior_capsules(const FlatContours& flat, const StrokeStyle& style, double tol, const Affine& m,
@@ -115,13 +132,13 @@ void interior_capsules(const FlatContours& flat, const StrokeStyle& style, doubl
         start = end;
         if (pts.size() < 2) continue;
         const bool closed = poly.closed[c];
-        if (style.join != LineJoin::Round) {
-            // A corner joined otherwise may leave its normal cone short of h: no capsules.
-            bool corner = false;
-            for (std::size_t i = closed ? 0 : 1; i + (closed ? 0 : 1) < pts.size() && !corner; ++i)
-                corner = smooth[i] == 0;
-            if (corner) continue;
-        }
+        // A corner joined otherwise than round may leave its normal cone short of h, and a capsule
+        // around a nearby segment may reach into it: such contours give only their segments'
+        // rectangles, each cut square at both ends.
+        bool rectangles = false;
+        if (style.join != LineJoin::Round)
+            for (std::size_t i = closed ? 0 : 1; i + (closed ? 0 : 1) < pts.size() && !rectangles; ++i)
+                rectangles = smooth[i] == 0;
         double length = 0;
         for (std::size_t i = 1; i < pts.size() && length < style.width; ++i) length += length_of(pts[i] - pts[i - 1]);
         if (closed) length += length_of(pts.front() - pts.back());
@@ -136,14 +153,16 @@ void interior_capsules(const FlatContours& flat, const StrokeStyle& style, doubl
         }
         const std::size_t segs = closed ? pts.size() : pts.size() - 1;
         for (std::size_t i = 0; i < segs; ++i) {
-            const Point a = pts[i], b = pts[(i + 1) % pts.size()];
+            const std::size_t j = (i + 1) % pts.size();
+            const Point a = pts[i], b = pts[j];
             CutCapsule cc(Capsule{m.apply(a), m.apply(b), r * scale});
+            if (rectangles && !cut_square(a, b, m, cc)) continue;
             bool keep = true;
             for (int k = 0; k < (closed ? 0 : 2) && keep; ++k) {
                 HalfPlane cut;
                 const OpenEnd::Effect e = ends[k].effect(a, b, r, tol, h, cut);
-                keep = e != OpenEnd::Drop;
-                if (e == OpenEnd::Cut) cc.cuts[cc.cut_count++] = to_pixels(cut, m);
+                keep = e == OpenEnd::Keep || (e == OpenEnd::Cut && !rectangles);
+                if (keep && e == OpenEnd::Cut) cc.cuts[cc.cut_count++] = to_pixels(cut, m);
             }
             if (keep) out.push_back(cc);
         }

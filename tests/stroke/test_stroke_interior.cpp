@@ -55,7 +55,7 @@ TEST_CASE("stroke_outline: interior capsules leave every pixel of random strokes
         const Path path = random_path(rng);
         StrokeStyle st;
         st.width = 0.3 + 24 * u(rng) * u(rng);
-        st.join = rng() % 4 ? LineJoin::Round : LineJoin::Miter;
+        st.join = static_cast<LineJoin>(rng() % 4);
         st.cap = static_cast<LineCap>(rng() % 3);
         if (rng() % 4 == 0) st.dashes = {2 + 20 * u(rng), 1 + 10 * u(rng)};
         Affine m;
@@ -153,9 +153,24 @@ TEST_CASE("stroke_outline: the capsules of an open polyline are cut at its ends"
     CHECK(s2.inside[0].cuts[0].at.x == Approx(2 * 0.05 / 3));
     CHECK(s2.inside[0].cuts[0].out.x < 0);
     CHECK(s2.inside[0].cuts[0].out.y == Approx(0).margin(1e-12));
-    // Miter joins may leave a corner's outside short of the pen: no capsules.
-    st.join = LineJoin::Miter;
-    CHECK(stroke_outline(p, st, Affine{}, 0.05).inside.empty());
+    // Miter and bevel joins may leave a corner's outside short of the pen: the capsules keep to
+    // the segments' rectangles, cut square at both ends, and the segments an open end would cut
+    // give none.
+    for (LineJoin join : {LineJoin::Miter, LineJoin::Bevel}) {
+        st.join = join;
+        const StrokeOutline cut = stroke_outline(p, st, Affine{}, 0.05);
+        REQUIRE(cut.inside.size() == 1);
+        const CutCapsule& middle = cut.inside[0];
+        CHECK(middle.capsule.a == Point{100, 0});
+        REQUIRE(middle.cut_count == 2);
+        CHECK(middle.contains({104.8, 0.01}));
+        CHECK(middle.contains({95.2, 99.99}));
+        CHECK_FALSE(middle.contains({104, -0.5}));
+        CHECK_FALSE(middle.contains({100, 101}));
+        Path ring = p;
+        ring.close();
+        CHECK(stroke_outline(ring, st, Affine{}, 0.05).inside.size() == 4);
+    }
     // Closed, every segment keeps one.
     st.join = LineJoin::Round;
     p.close();
