@@ -52,6 +52,18 @@ bool overlaps(const Rect& r, const IRect& band) { return r.y1 >= band.y0 && r.y0
 // its boundary while the capsules' would grow with their area.
 constexpr double kThinStrokeWidth = 2;
 
+// Whether the outline of `path` stroked `width` wide piles up: its points lie closer together, on
+// average, than half the width, so that the outline's pieces crowd the pixels and the overlap check
+// would recompute many of them exactly. Only such strokes collect their interior capsules
+// (stroke_interior): elsewhere the capsules find few cells and cost as much memory as the outline.
+bool crowded(const Path& path, double width) {
+    const auto pts = path.points();
+    if (pts.size() < 2) return false;
+    double length = 0;
+    for (std::size_t i = 1; i < pts.size(); ++i) length += distance(pts[i - 1], pts[i]);
+    return length < 0.5 * width * static_cast<double>(pts.size() - 1);
+}
+
 bool thin_round(const StrokeStyle& ss) {
     return ss.join == LineJoin::Round && ss.cap == LineCap::Round && ss.width <= kThinStrokeWidth;
 }
@@ -61,6 +73,9 @@ struct Drawable {
     Path path;
     Color color;
     Path rings;  // strokes: polygon rings still to be stroked, after SharedBorders
+    // Strokes: capsules (pixel space) inside the stroke of the lines in path, and inside the whole
+    // stroke of the rings.
+    std::vector<CutCapsule> inside{}, ring_inside{};
     // Fills: the control bounds of path, and the rasterizer's verdict on it, decided once for the
     // whole image rather than by every band the feature reaches: from the kept overlap analysis
     // (fill_analyses.hpp), whose boxes confine the overlap check to the pixels near the segments
@@ -546,6 +561,7 @@ void MapDrawing::stroke_outlines(LayerWork& lw) {
     StrokeStyle chain_style = ss_;
     chain_style.cap = LineCap::Butt;  // chain ends lie on segments or joins drawn by another chain
     Path outline;
+    std::vector<CutCapsule> inside;
     SharedBorders borders;
     const double merge_distance = stroke_merge_distance(Affine{}, opts_.tolerance);
     auto flush = [&] {
@@ -557,22 +573,30 @@ void MapDrawing::stroke_outlines(LayerWork& lw) {
         on_regions(bands_, [&](Canvas& canvas, std::size_t b) {
             if (!overlaps(box, bands_[b])) return;
             canvas.fill_options() = outline_fo_;
+            canvas.fill_options().inside = inside;
             canvas.fill_path(outline, paint, FillRule::NonZero);
             canvas.fill_options() = fo_;
         });
         outline.clear();
+        inside.clear();
         borders.clear();  // bounds its memory; a border split by a flush is drawn twice
     };
     auto make_outline = [&](int w, std::size_t feature, std::optional<Drawable>& out) {
         PathVisitor v;
         v.clip = stroke_clip_;
         build(w, feature, v);
-        Path o;
+        StrokeOutline o;
         // Lines are always stroked; polygon outlines (point disks too) take the stroke colour.
-        if (!v.lines.empty()) o = stroke(v.lines, ss_, Affine{}, opts_.tolerance);
+        if (!v.lines.empty() && crowded(v.lines, ss_.width))
+            o = stroke_outline(v.lines, ss_, Affine{}, opts_.tolerance);
+        else if (!v.lines.empty())
+            o.outline = stroke(v.lines, ss_, Affine{}, opts_.tolerance);
         Path rings;
         if (lw.layer.stroke && !v.fill.empty()) rings = std::move(v.fill);
-        if (!o.empty() || !rings.empty()) out = Drawable{std::move(o), *lw.line_color, std::move(rings)};
+        if (!o.outline.empty() || !rings.empty()) {
+            out = Drawable{std::move(o.outline), *lw.line_color, std::move(rings)};
+            out->inside = std::move(o.inside);
+        }
     };
     std::vector<Path> chains, whole;
     chunked(lw.order, make_outline, [&](Chunk& chunk) {
@@ -584,11 +608,22 @@ void MapDrawing::stroke_outlines(LayerWork& lw) {
         parallel::for_each_index(threads_, chunk.size(), [&](int, std::size_t i) {
             if (!chains[i].empty()) chunk[i]->path.append(stroke(chains[i], chain_style, Affine{}, opts_.tolerance));
             if (!whole[i].empty()) chunk[i]->path.append(stroke(whole[i], ss_, Affine{}, opts_.tolerance));
+            if (chunk[i] && crowded(chunk[i]->rings, ss_.width))
+                chunk[i]->ring_inside = stroke_interior(chunk[i]->rings, ss_, Affine{}, opts_.tolerance);
         });
+        // A ring's capsules lie inside its whole stroke, which the chains of the rings SharedBorders
+        // has seen since its last clear() draw together. A flush clears it after this chunk's rings
+        // went in: from then on, the chunk's rings are drawn only in part.
+        bool flushed = false;
         for (const auto& d : chunk) {
             if (!d) continue;
-            if (outline.points().size() + d->path.points().size() > limits::kMaxPathPoints / 2) flush();
+            if (outline.points().size() + d->path.points().size() > limits::kMaxPathPoints / 2) {
+                flush();
+                flushed = true;
+            }
             outline.append(d->path);
+            inside.insert(inside.end(), d->inside.begin(), d->inside.end());
+            if (!flushed) inside.insert(inside.end(), d->ring_inside.begin(), d->ring_inside.end());
         }
     });
     flush();

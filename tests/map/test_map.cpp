@@ -527,6 +527,72 @@ TEST_CASE("Map strokes: a shared border is stroked once, not twice darker", "[ma
     CHECK(shared == 128);
 }
 
+TEST_CASE("Map strokes: a wide stroke over crowded borders is the union of its rings' strokes", "[map][stroke]") {
+    // A grid of small jittered cells sharing their borders, stroked far wider than a cell: the
+    // outlines pile up in every pixel, as a world map's do at a small scale. render_map strokes the
+    // borders once (SharedBorders) and marks the pixels its capsules hold full; the reference
+    // strokes every ring whole and fills the union exactly. Both give the same coverage.
+    constexpr int kCols = 16, kRows = 8;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> jitter(-0.6, 0.6);
+    std::vector<std::vector<Point>> node(kCols + 1, std::vector<Point>(kRows + 1));
+    for (int i = 0; i <= kCols; ++i)
+        for (int j = 0; j <= kRows; ++j) node[i][j] = {20 + 3.5 * i + jitter(rng), 12 + 3 * j + jitter(rng)};
+    std::string json = R"({"type":"FeatureCollection","features":[)";
+    for (int i = 0; i < kCols; ++i)
+        for (int j = 0; j < kRows; ++j) {
+            const Point ring[] = {node[i][j], node[i + 1][j], node[i + 1][j + 1], node[i][j + 1], node[i][j]};
+            json += (i || j) ? "," : "";
+            json += R"({"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[)";
+            for (int k = 0; k < 5; ++k) {
+                char buf[64];
+                std::snprintf(buf, sizeof buf, "%s[%.17g,%.17g]", k ? "," : "", ring[k].x, ring[k].y);
+                json += buf;
+            }
+            json += "]]}}";
+        }
+    json += "]}";
+    const MapData d = read_geojson(json);
+    for (LineJoin join : {LineJoin::Round, LineJoin::Bevel}) {
+        MapStyle st;
+        st.layers[0].fill.reset();
+        st.layers[0].stroke = Color::rgba(0, 0, 0, 255);
+        st.layers[0].stroke_width = 9;
+        st.join = join;
+        MapOptions o;
+        o.width = 100;
+        o.height = 50;
+        o.bbox = Rect{0, 0, 100, 50};
+        o.simplify = 0;
+        o.threads = 1;
+        const Pixmap pm = render_map(d, MapProjection{}, st, o);
+        const Affine to_pixel = fit_map(d, MapProjection{}, o).to_pixel;
+        StrokeStyle ss;
+        ss.width = 9;
+        ss.join = join;
+        Path outlines;
+        for (int i = 0; i < kCols; ++i)
+            for (int j = 0; j < kRows; ++j) {
+                Path ring;
+                ring.move_to(to_pixel.apply(node[i][j]));
+                ring.line_to(to_pixel.apply(node[i + 1][j]));
+                ring.line_to(to_pixel.apply(node[i + 1][j + 1]));
+                ring.line_to(to_pixel.apply(node[i][j + 1]));
+                ring.close();
+                outlines.append(stroke(ring, ss, Affine{}, MapOptions{}.tolerance));
+            }
+        Rasterizer r;
+        FillOptions fo;
+        fo.tolerance = MapOptions{}.tolerance;
+        const Mask ref = r.fill_mask(outlines, Affine{}, fo);
+        int worst = 0;
+        for (int y = 0; y < 50; ++y)
+            for (int x = 0; x < 100; ++x) worst = std::max(worst, std::abs(int(pm.pixel(x, y).a) - int(ref.at(x, y))));
+        INFO("join " << int(join));
+        CHECK(worst <= 1);
+    }
+}
+
 TEST_CASE("Map styles: categorical palette, numeric ramp, points, style file", "[map][style]") {
     const MapData d = read_geojson(R"({"type":"FeatureCollection","features":[
       {"type":"Feature","properties":{"kind":"a","v":0},"geometry":{"type":"Polygon","coordinates":[[[0,0],[10,0],[10,10],[0,10],[0,0]]]}},
