@@ -587,7 +587,7 @@ void MapDrawing::stroke_outlines(LayerWork& lw) {
         build(w, feature, v);
         StrokeOutline o;
         // Lines are always stroked; polygon outlines (point disks too) take the stroke colour.
-        if (!v.lines.empty() && crowded(v.lines, ss_.width))
+        if (crowded(v.lines, ss_.width))
             o = stroke_outline(v.lines, ss_, Affine{}, opts_.tolerance);
         else if (!v.lines.empty())
             o.outline = stroke(v.lines, ss_, Affine{}, opts_.tolerance);

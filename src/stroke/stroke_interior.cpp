@@ -153,8 +153,7 @@ void interior_capsules(const FlatContours& flat, const StrokeStyle& style, doubl
         }
         const std::size_t segs = closed ? pts.size() : pts.size() - 1;
         for (std::size_t i = 0; i < segs; ++i) {
-            const std::size_t j = (i + 1) % pts.size();
-            const Point a = pts[i], b = pts[j];
+            const Point a = pts[i], b = pts[(i + 1) % pts.size()];
             CutCapsule cc(Capsule{m.apply(a), m.apply(b), r * scale});
             if (rectangles && !cut_square(a, b, m, cc)) continue;
             bool keep = true;
