@@ -65,6 +65,7 @@ INTERNAL_INTERFACES = {
     "curves/curve_util.hpp",
     "paint/pixel_math.hpp",
     "paint/pipeline.hpp",
+    "paint/pixmap_memory.hpp",
     "json/json_support.hpp",
     "formats/json_properties.hpp",  # JSON values as feature property values, for map's style reader
 }

@@ -92,6 +92,8 @@ public:
     void fill_rows(int y0, int y1, Color c);
 
 private:
+    // Internal (src/paint/pixmap_memory.hpp): a pixmap whose reused memory its maker clears.
+    friend struct PixmapMemory;
     int width_ = 0, height_ = 0;
     std::size_t stride_ = 0;
     // Owned pixels (null when borrowed), zeroed memory from calloc or, for large pixmaps, mapped

@@ -85,37 +85,60 @@ bool keep_spare(void* p, std::size_t size) {
     s.bytes += size;
     return true;
 }
+
+// A block of kHugeBlock bytes or more: a waiting spare (`reused`: of any content) or a new
+// mapping (reading as zero); null when the memory is not available.
+void* huge_block(std::size_t bytes, bool& reused) noexcept {
+    const std::size_t size = mapped_size(bytes);
+    reused = false;
+    if (void* spare = take_spare(size)) {
+        reused = true;
+        return spare;
+    }
+    // Map one huge page more than needed, then unmap the parts before the first 2 MiB boundary
+    // and after the block, so that the block starts on a huge page.
+    void* raw = mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (raw == MAP_FAILED) return nullptr;
+    const auto start = reinterpret_cast<std::uintptr_t>(raw);
+    const std::uintptr_t aligned = (start + kHugePage - 1) / kHugePage * kHugePage;
+    if (aligned > start) munmap(raw, aligned - start);
+    const std::size_t tail = (start + size + kHugePage) - (aligned + size);
+    if (tail > 0) munmap(reinterpret_cast<void*>(aligned + size), tail);
+    void* p = reinterpret_cast<void*>(aligned);
+    // A hint: without huge pages the block still works. A last part of less than half a huge
+    // page is left to small pages, whose faults cost less than zeroing the whole huge page.
+    const std::size_t tail_bytes = bytes % kHugePage;
+    (void)madvise(p, tail_bytes && tail_bytes < kHugePage / 2 ? size - kHugePage : size, MADV_HUGEPAGE);
+    return p;
+}
 }  // namespace
 #endif
 
 void* allocate(std::size_t bytes, bool zeroed) noexcept {
 #if defined(__linux__)
     if (bytes >= kHugeBlock) {
-        // Map one huge page more than needed, then unmap the parts before the first 2 MiB
-        // boundary and after the block, so that the block starts on a huge page.
-        const std::size_t size = mapped_size(bytes);
-        if (void* spare = take_spare(size)) {
-            if (zeroed) std::memset(spare, 0, bytes);
-            return spare;
-        }
-        void* raw = mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-        if (raw == MAP_FAILED) return nullptr;
-        const auto start = reinterpret_cast<std::uintptr_t>(raw);
-        const std::uintptr_t aligned = (start + kHugePage - 1) / kHugePage * kHugePage;
-        if (aligned > start) munmap(raw, aligned - start);
-        const std::size_t tail = (start + size + kHugePage) - (aligned + size);
-        if (tail > 0) munmap(reinterpret_cast<void*>(aligned + size), tail);
-        void* p = reinterpret_cast<void*>(aligned);
-        // A hint: without huge pages the block still works. A last part of less than half a huge
-        // page is left to small pages, whose faults cost less than zeroing the whole huge page.
-        const std::size_t tail_bytes = bytes % kHugePage;
-        (void)madvise(p, tail_bytes && tail_bytes < kHugePage / 2 ? size - kHugePage : size, MADV_HUGEPAGE);
+        bool reused = false;
+        void* p = huge_block(bytes, reused);
+        if (p && reused && zeroed) std::memset(p, 0, bytes);
         return p;
     }
 #endif
     if (zeroed) return std::calloc(bytes == 0 ? 1 : bytes, 1);
     constexpr std::size_t kAlign = 64;
     return std::aligned_alloc(kAlign, (std::max<std::size_t>(bytes, 1) + kAlign - 1) / kAlign * kAlign);
+}
+
+void* allocate_uncleared(std::size_t bytes, bool& zero) noexcept {
+#if defined(__linux__)
+    if (bytes >= kHugeBlock) {
+        bool reused = false;
+        void* p = huge_block(bytes, reused);
+        zero = !reused;
+        return p;
+    }
+#endif
+    zero = true;
+    return allocate(bytes, true);
 }
 
 void* allocate_sparse(std::size_t bytes) noexcept {

@@ -42,6 +42,11 @@ inline constexpr std::size_t kMaxSpareBytes = std::size_t(256) << 20;
 // `bytes` of memory reading as zero (`zeroed`), or of any content, aligned to 64 bytes; null when
 // the memory is not available.
 void* allocate(std::size_t bytes, bool zeroed) noexcept;
+// As allocate(bytes, false), and says in `zero` whether the memory reads as zero: true for a new
+// block, false for a released one taken again (its content is then whatever it held), which the
+// caller clears where and when it likes (render_map: band by band on its workers). release() takes
+// it as any other block.
+void* allocate_uncleared(std::size_t bytes, bool& zero) noexcept;
 void release(void* p, std::size_t bytes) noexcept;
 // `bytes` of memory of any content, null when not available.
 void* allocate_sparse(std::size_t bytes) noexcept;

@@ -12,6 +12,7 @@
 #include "map/draw_map.hpp"
 #include "map/feature_paths.hpp"
 #include "map/simplify_map.hpp"
+#include "paint/pixmap_memory.hpp"
 
 namespace casteljau {
 
@@ -211,9 +212,12 @@ void render_simplified_map(const MapData& data, const SimplifiedMap& simplified,
 
 Pixmap render_map(const MapData& data, const MapProjection& proj, const MapStyle& style, const MapOptions& opts) {
     const MapFrame fr = fit_map(data, proj, opts);
-    Pixmap pm(fr.width, fr.height);
+    // The memory of a released image of this size is cleared by draw_map, band by band on its
+    // workers, rather than here on one thread.
+    bool zero = false;
+    Pixmap pm = PixmapMemory::uncleared(fr.width, fr.height, zero);
     map_detail::KeptMap* cache = opts.cache ? &map_detail::MapCacheAccess::bind(*opts.cache, data, proj) : nullptr;
-    map_detail::draw_map(data, nullptr, proj, fr, style, opts, pm, true, cache);
+    map_detail::draw_map(data, nullptr, proj, fr, style, opts, pm, zero, cache);
     return pm;
 }
 

@@ -9,8 +9,9 @@
 #include "casteljau/error.hpp"
 #include "casteljau/limits.hpp"
 #include "casteljau/paint.hpp"
-#include "paint/pixel_math.hpp"
 #include "core/pixel_memory.hpp"
+#include "paint/pixel_math.hpp"
+#include "paint/pixmap_memory.hpp"
 
 namespace casteljau {
 
@@ -51,16 +52,24 @@ void check_canvas_size(double width, double height) {
 }
 
 Pixmap::Pixmap(int width, int height) {
+    bool zero = false;
+    *this = PixmapMemory::uncleared(width, height, zero);
+    if (!zero) std::memset(pixels_, 0, stride_ * static_cast<std::size_t>(height_));
+}
+
+Pixmap PixmapMemory::uncleared(int width, int height, bool& zero) {
     if (width < 1 || height < 1) throw Error(ErrorKind::InvalidArgument, "a Pixmap needs at least 1x1 pixels");
     check_canvas_size(width, height);
-    width_ = width;
-    height_ = height;
-    stride_ = static_cast<std::size_t>(width) * 4;
-    const std::size_t bytes = stride_ * static_cast<std::size_t>(height);
-    storage_ =
-        std::unique_ptr<std::uint8_t[], Free>(static_cast<std::uint8_t*>(platform::allocate(bytes, true)), Free{bytes});
-    if (!storage_) throw std::bad_alloc();
-    pixels_ = storage_.get();
+    Pixmap p;
+    p.width_ = width;
+    p.height_ = height;
+    p.stride_ = static_cast<std::size_t>(width) * 4;
+    const std::size_t bytes = p.stride_ * static_cast<std::size_t>(height);
+    p.storage_ = std::unique_ptr<std::uint8_t[], Pixmap::Free>(
+        static_cast<std::uint8_t*>(platform::allocate_uncleared(bytes, zero)), Pixmap::Free{bytes});
+    if (!p.storage_) throw std::bad_alloc();
+    p.pixels_ = p.storage_.get();
+    return p;
 }
 
 void Pixmap::Free::operator()(std::uint8_t* p) const noexcept { platform::release(p, bytes); }

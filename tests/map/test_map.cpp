@@ -682,6 +682,34 @@ TEST_CASE("render_map onto a drawn pixmap replaces every pixel with the backgrou
     }
 }
 
+TEST_CASE("render_map into the memory of a released image of its size clears it first", "[map]") {
+    // An image of 2 MiB and more takes the memory of a released one of its size (its pixels still
+    // there); render_map clears it band by band. Each image is compared with the same map drawn
+    // into a pixmap made (zero) while the reused one is alive, so in other memory.
+    const MapData world = test::load_world();
+    MapStyle red;
+    red.background = Color::rgba(255, 0, 0);
+    MapStyle clear_style;  // transparent background, black fill
+    for (int threads : {1, 2}) {
+        MapOptions o = world_options(1024, 512, true);
+        o.threads = threads;
+        (void)render_map(world, MapProjection{}, red, o);  // released: its red memory waits
+        const Pixmap reused = render_map(world, MapProjection{}, clear_style, o);
+        Pixmap want(reused.width(), reused.height());
+        render_map(world, MapProjection{}, fit_map(world, MapProjection{}, o), clear_style, o, want);
+        std::size_t differ = 0, red_left = 0;
+        for (int y = 0; y < want.height(); ++y)
+            for (int x = 0; x < want.width(); ++x) {
+                differ += !(reused.pixel(x, y) == want.pixel(x, y));
+                red_left += reused.pixel(x, y) == PremulPixel{255, 0, 0, 255};
+            }
+        INFO("threads " << threads);
+        CHECK(differ == 0);
+        CHECK(red_left == 0);
+        CHECK(reused.pixel(10, 10) == PremulPixel{0, 0, 0, 0});  // ocean
+    }
+}
+
 TEST_CASE("Seamless: a compositor writing into a transparent target gives the pixels of a layer composited onto it",
           "[map][seamless]") {
     // Fills overlapping across two bands, translucent and opaque, sharing an edge at a fractional x.
