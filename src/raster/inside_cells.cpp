@@ -81,18 +81,19 @@ void InsideCells::reset(std::span<const CutCapsule> capsules, int ox, int oy, in
         const Capsule& c = cc.capsule;
         if (!(c.radius >= kHalfDiagonal) || !std::isfinite(c.radius) || !c.a.is_finite() || !c.b.is_finite()) continue;
         if (cc.cut_count < 0 || cc.cut_count > 2) continue;
-        Item it{cc, 0, 0};
+        Item it{cc, 0, 0, 0, 0};
         it.cap.capsule.a = c.a - origin;
         it.cap.capsule.b = c.b - origin;
         for (int k = 0; k < cc.cut_count; ++k) it.cap.cuts[k].at = cc.cuts[k].at - origin;
         const Capsule& t = it.cap.capsule;
         it.top = std::min(t.a.y, t.b.y) - c.radius;
         it.bottom = std::max(t.a.y, t.b.y) + c.radius;
-        const double left = std::min(t.a.x, t.b.x) - c.radius, right = std::max(t.a.x, t.b.x) + c.radius;
+        it.left = std::min(t.a.x, t.b.x) - c.radius;
+        it.right = std::max(t.a.x, t.b.x) + c.radius;
         // The first row whose cells can lie inside: the box must reach from the row's top to its
         // bottom, within the engine's rows.
         const double first = std::max(0.0, std::ceil(it.top));
-        if (first + 1 > it.bottom || first >= h || right - left < 1 || right <= 0 || left >= w) continue;
+        if (first + 1 > it.bottom || first >= h || it.right - it.left < 1 || it.right <= 0 || it.left >= w) continue;
         it.top = first;
         items_.push_back(it);
     }
@@ -131,6 +132,27 @@ void InsideCells::enter_row(int row) {
     for (std::size_t k = row_start_[static_cast<std::size_t>(next_row_)]; k < row_start_[last]; ++k)
         if (items_[order_[k]].bottom >= row + 1) active_.push_back(order_[k]);
     next_row_ = row + 1;
+    row_ = row;
+    row_scans_ = 0;
+    runs_ready_ = false;
+}
+
+bool InsideCells::scan(int col, int row) {
+    const double x0 = col, x1 = col + 1.0;
+    for (std::size_t i : active_) {
+        // kScansPerCapsule visits cost the budget one unit, as one run does.
+        if (++row_scans_ % kScansPerCapsule == 0) {
+            if (budget_ == 0) return false;
+            --budget_;
+        }
+        const Item& it = items_[i];
+        if (it.left > x0 || it.right < x1) continue;
+        if (holds_cell(it.cap, col, row)) return true;
+    }
+    return false;
+}
+
+void InsideCells::make_runs(int row) {
     runs_.clear();
     for (std::size_t i : active_) {
         if (budget_ == 0) break;
@@ -139,18 +161,13 @@ void InsideCells::enter_row(int row) {
         if (run_of(items_[i].cap, row, run)) runs_.push_back(run);
     }
     std::sort(runs_.begin(), runs_.end(), [](const Run& a, const Run& b) { return a.first < b.first; });
-    row_ = row;
+    runs_ready_ = true;
     next_run_ = 0;
     reach_ = -1;
     last_col_ = -1;
 }
 
-bool InsideCells::covers(int col, int row) {
-    if (items_.empty() || row < 0 || row >= h_) return false;
-    if (row != row_) {
-        if (row < next_row_ || budget_ == 0) return false;
-        enter_row(row);
-    }
+bool InsideCells::from_runs(int col) {
     if (budget_ == 0) return false;
     --budget_;
     if (col < last_col_) {  // asked out of order: scan the runs again
@@ -161,6 +178,19 @@ bool InsideCells::covers(int col, int row) {
     while (next_run_ < runs_.size() && runs_[next_run_].first <= col)
         reach_ = std::max(reach_, runs_[next_run_++].last);
     return col <= reach_;
+}
+
+bool InsideCells::covers(int col, int row) {
+    if (items_.empty() || row < 0 || row >= h_ || budget_ == 0) return false;
+    if (row != row_) {
+        if (row < next_row_) return false;
+        enter_row(row);
+    }
+    if (!runs_ready_) {
+        if (row_scans_ < kScansPerCapsule * active_.size()) return scan(col, row);
+        make_runs(row);
+    }
+    return from_runs(col);
 }
 
 }  // namespace casteljau::raster

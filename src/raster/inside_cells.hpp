@@ -3,13 +3,18 @@
 //
 // The capsules (possibly cut by lines) that can hold a unit square (radius at least sqrt(1/2)) and
 // reach the engine's box are kept in cell coordinates, bucketed by the first row their boxes span
-// whole. A sweep down the rows keeps the ones whose box spans the current row. A cut capsule is
-// convex, so the cells of one row it holds whole are a run of consecutive cells: the first row a
-// question is asked in, each active capsule gives its run (from its chords along the row's top
-// and bottom, its two end cells checked corner by corner), and the runs, sorted by first cell,
-// answer the row's questions in one pass. Work: one run per active capsule and row asked, within
-// a budget of kWorkPerItem per capsule and per question; past it every cell gets "no", which only
-// sends it to the exact computation.
+// whole. A sweep down the rows keeps the ones whose box spans the current row. A row's first
+// questions are answered by scanning those capsules, box first, corners second, stopping at the
+// first that holds the cell: a few questions in a row (the corners of a thin stroke) cost a few
+// scans. Once the scans of a row have cost kScansPerCapsule visits per capsule spanning it (a
+// wide stroke whose thousands of capsules span each row), the rest of the row is answered from
+// runs: a cut capsule is convex, so the cells of one row it holds whole are a run of consecutive
+// cells, each capsule gives its run (from its chords along the row's top and bottom, its two end
+// cells checked corner by corner), and the runs, sorted by first cell, answer the row's remaining
+// questions in one pass. Either way a cell is "yes" only when a capsule holds its four corners.
+// Work: at most kScansPerCapsule visits and one run per capsule and row asked, within a budget of
+// kWorkPerItem per capsule and per question; past it every cell gets "no", which only sends it to
+// the exact computation.
 #pragma once
 
 #include <cstddef>
@@ -31,25 +36,33 @@ public:
 
 private:
     struct Item {
-        CutCapsule cap;      // cell coordinates
-        double top, bottom;  // top: the first row whose cells may lie inside
+        CutCapsule cap;                   // cell coordinates
+        double top, bottom, left, right;  // top: the first row whose cells may lie inside
     };
     struct Run {
         int first, last;  // cells first .. last of the row lie inside
     };
     void enter_row(int row);
+    // Whether one of the active capsules holds the cell, capsule after capsule.
+    bool scan(int col, int row);
+    // The row's runs, sorted, for from_runs().
+    void make_runs(int row);
+    bool from_runs(int col);
     bool run_of(const CutCapsule& c, int row, Run& out) const;
 
     static constexpr std::size_t kWorkPerItem = 8;
+    static constexpr std::size_t kScansPerCapsule = 16;
     int w_ = 0, h_ = 0;
     std::vector<Item> items_;
     std::vector<std::size_t> row_start_;  // per row: where its bucket starts in order_ (h + 1 entries)
     std::vector<std::size_t> fill_;
     std::vector<std::size_t> order_;  // items by first row
     std::vector<std::size_t> active_;
-    int next_row_ = 0;       // rows before it have been swept
-    std::vector<Run> runs_;  // the current row's, by first cell
-    int row_ = -1;           // the row runs_ belongs to
+    int next_row_ = 0;           // rows before it have been swept
+    int row_ = -1;               // the row asked last
+    std::size_t row_scans_ = 0;  // capsules visited by scan() in row_
+    bool runs_ready_ = false;    // runs_ holds row_'s runs
+    std::vector<Run> runs_;      // row_'s, by first cell
     std::size_t next_run_ = 0;
     int reach_ = -1;     // the farthest last cell of runs_[0 .. next_run_)
     int last_col_ = -1;  // the column asked last in row_
