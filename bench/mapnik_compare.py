@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """bench/mapnik_compare.py: `casteljau map` and `casteljau tiles` side by side with Mapnik.
 
-The same maps, drawn by both: a fill (#dddddd) and a 0.8 px stroke (#333333, round joins and
-caps) of every country over a white background, equirectangular (Mapnik: +proj=longlat), the
+The same maps, drawn by both: a fill (#dddddd) and a 0.8 px stroke (#333333, round joins and caps;
+another width with --stroke-width) of every country over a white background, equirectangular
+(Mapnik: +proj=longlat), the
 extent -180,-90,180,90 mapped onto W x W/2 pixels, at 4096 x 2048, 1024 x 512 and 256 x 128, for
 countries-land-10km (GeoJSON) and Natural Earth 10m (world-atlas countries-10m.json, its
 "countries" object; Mapnik's TopoJSON reader gets a copy holding that object only). Then a z0-z5
@@ -31,6 +32,8 @@ always 0: where a fill runs out of the rasterizer's exact-work budget, the whole
 approximated there. It takes minutes (the reference is drawn window by window).
 
 Usage: python3 bench/mapnik_compare.py [--rounds N] [--accuracy] [--only land|ne10m|tiles] [--casteljau BIN]
+                                      [--stroke-width PX]   (default 0.8; wider strokes take the
+                                      capsule and cell work that thin ones do not)
 Needs bench/data (bench/setup_map_data.sh). Without the mapnik module (Debian: python3-mapnik,
 for /usr/bin/python3) it prints why and exits 0.
 """
@@ -72,11 +75,12 @@ def best(rounds, cmd):
     return min(r[0] for r in results), max(r[1] for r in results), min(printed) if printed else None
 
 
-# Both Mapnik programs' style: the fill and the round-joined, round-capped stroke, in `s`.
+# Both Mapnik programs' style: the fill and the round-joined, round-capped stroke, in `s`; the
+# stroke width comes in as `stroke_width`.
 MAPNIK_STYLE = "; ".join([
     "s = mapnik.Style()", "r = mapnik.Rule()",
     "poly = mapnik.PolygonSymbolizer()", "poly.fill = mapnik.Color(%r)" % FILL, "r.symbols.append(poly)",
-    "line = mapnik.LineSymbolizer()", "line.stroke = mapnik.Color(%r)" % STROKE, "line.stroke_width = %r" % WIDTH,
+    "line = mapnik.LineSymbolizer()", "line.stroke = mapnik.Color(%r)" % STROKE, "line.stroke_width = stroke_width",
     "line.stroke_linejoin = mapnik.stroke_linejoin.ROUND_JOIN",
     "line.stroke_linecap = mapnik.stroke_linecap.ROUND_CAP", "r.symbols.append(line)", "s.rules.append(r)"])
 
@@ -84,7 +88,7 @@ MAPNIK_STYLE = "; ".join([
 # is the point), from this program's text.
 MAPNIK_MAP = textwrap.dedent("""
     import sys, time, mapnik
-    kind, path, width, out = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
+    kind, path, width, out, stroke_width = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4], float(sys.argv[5])
     m = mapnik.Map(width, width // 2, "%(longlat)s")
     m.background = mapnik.Color("%(background)s")
     %(style)s
@@ -106,6 +110,7 @@ MAPNIK_MAP = textwrap.dedent("""
 MAPNIK_TILES = textwrap.dedent("""
     import os, sys, time, mapnik
     kind, path, outdir, z0, z1, tile, meta, buf = sys.argv[1], sys.argv[2], sys.argv[3], *map(int, sys.argv[4:9])
+    stroke_width = float(sys.argv[9])
     half = %(half)r
     %(style)s
     layer = mapnik.Layer("countries", "%(longlat)s")
@@ -156,7 +161,7 @@ def casteljau_style(simplify, draw=True):
 def accuracy(binary, path, layer, width):
     """map_accuracy's rows: {(picture, simplify text): (mean, max)} for the whole-image renders, with
     simplify 0 (before) and the default (after), against the exact rendering of the original."""
-    cmd = [binary, path, "--width", str(width), "--window", str(32 if width <= 256 else 256)]
+    cmd = [binary, path, "--width", str(width), "--window", str(32 if width <= 256 else 256), "--stroke-width", str(WIDTH)]
     if layer:
         cmd += ["--layer", layer]
     out = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
@@ -169,12 +174,15 @@ def accuracy(binary, path, layer, width):
 
 
 def main():
+    global WIDTH
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--accuracy", action="store_true")
     ap.add_argument("--only", choices=["land", "ne10m", "tiles"])
     ap.add_argument("--casteljau", default=os.path.join(ROOT, "build", "casteljau"))
+    ap.add_argument("--stroke-width", type=float, default=WIDTH, help="stroke width in pixels (default 0.8)")
     args = ap.parse_args()
+    WIDTH = args.stroke_width
     if not have_mapnik():
         print("mapnik_compare: skipped: the mapnik Python module is not installed for /usr/bin/python3 "
               "(Debian: apt-get install python3-mapnik)")
@@ -216,7 +224,7 @@ def main():
                 base = [args.casteljau, "map", path, "-o", out, "--width", str(w), "--height", str(w // 2),
                         "--bbox", "-180,-90,180,90"] + (["--layer", layer] if layer else [])
                 t_mapnik_whole, _, t_mapnik = best(args.rounds, ["/usr/bin/python3", "-c", MAPNIK_MAP, kind, mapnik_path,
-                                                                 str(w), os.path.join(work, "m.png")])
+                                                                 str(w), os.path.join(work, "m.png"), str(WIDTH)])
                 acc = accuracy(acc_bin, path, layer, w) if args.accuracy else {}
                 for label, simplify in (("before", 0), ("after", None)):
                     t_whole, rss, _ = best(args.rounds, base + casteljau_style(simplify))
@@ -238,7 +246,7 @@ def tiles_rows(args, work, land):
     """The z0-z5 pyramid of countries-land-10km: both renderers, 1365 tiles each."""
     z = "%d-%d" % ZOOMS
     t_mapnik_whole, _, out = run(["/usr/bin/python3", "-c", MAPNIK_TILES, "geojson", land, os.path.join(work, "mt"),
-                                  str(ZOOMS[0]), str(ZOOMS[1]), str(TILE), str(METATILE), str(BUFFER)])
+                                  str(ZOOMS[0]), str(ZOOMS[1]), str(TILE), str(METATILE), str(BUFFER), str(WIDTH)])
     t_mapnik, n_tiles = float(out.split()[0]), int(out.split()[1])
     for label, simplify in (("before", 0), ("after", None)):
         def cmd(draw, d):
