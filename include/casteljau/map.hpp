@@ -175,11 +175,12 @@ struct MapOptions {
     // Earth 10m) and still exact for valid polygons (simple rings, holes inside their exterior),
     // whose winding numbers stay within 0..1. Strokes are always exact (their outlines overlap).
     bool exact_overlaps = true;
-    // Strokes at most 2 px wide with round joins and caps: drawn from their segments as the union of
-    // capsules (casteljau/round_stroke.hpp), whose cost grows with the pixels they cover, within that
-    // header's bound of the exact union (1/128 per horizontal border through a pixel; measured in
-    // BENCHMARKS.md). False: through their outlines, exact to rounding, at a cost that grows with
-    // how often the outline folds inside a pixel (thousands of times on a small world map).
+    // Strokes at most 64 px wide with round joins and caps: drawn from their segments as the union
+    // of capsules (casteljau/round_stroke.hpp), whose cost grows with the pixels they cover, within
+    // that header's bound of the exact union (1/64 per horizontal border through a pixel; measured
+    // in BENCHMARKS.md). False: through their outlines, exact to rounding, at a cost that grows with
+    // how often the outline folds inside a pixel (thousands of times on a small world map) and with
+    // its overlaps' exact cells.
     bool sampled_strokes = true;
     // Threads that project and draw (0: all of the pool, casteljau/threads.hpp; more than the
     // pool's size get the pool's size; at most 256). The image is cut into horizontal

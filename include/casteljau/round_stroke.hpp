@@ -1,4 +1,4 @@
-// casteljau/round_stroke.hpp: coverage of thin round strokes, in time that grows with the pixels
+// casteljau/round_stroke.hpp: coverage of round strokes, in time that grows with the pixels
 // they cover.
 //
 // The stroke of a polyline with round joins and round caps is the set of points within half the

@@ -114,8 +114,8 @@ void add_map_style_options(CLI::App* cmd, MapCliStyle& o) {
     cmd->add_flag("--no-exact-overlaps", o.no_exact,
                   "Fills by plain accumulation (about 3x faster on dense data; exact for valid polygons)");
     cmd->add_flag("--exact-strokes", o.exact_strokes,
-                  "Thin round strokes through their outlines, exact (default: the union of their segments' "
-                  "capsules, within 2/255 per horizontal border; faster on small maps)");
+                  "Round strokes up to 64 px wide through their outlines, exact (default: the union of their "
+                  "segments' capsules, within 4/255 per horizontal border; far faster on dense maps)");
     cmd->add_option("--tolerance", o.tolerance, "Flattening tolerance in pixels")
         ->check(CLI::Range(1e-4, 10.0))
         ->capture_default_str();

@@ -45,27 +45,34 @@ TEST_CASE("map CLI renders the world TopoJSON with a choropleth and strokes", "[
     CHECK(pm.pixel(5, pm.height() / 2) == casteljau::premultiply(casteljau::parse_color("#dde8f0")));
 }
 
-TEST_CASE("map CLI --exact-strokes draws thin round strokes through their outlines", "[map][cli]") {
-    // The world at 256 px with a 0.8 px stroke: sampled (default) and exact agree within the
-    // sampled strokes' bound, and differ somewhere (each option is really taken).
+TEST_CASE("map CLI --exact-strokes draws round strokes through their outlines", "[map][cli]") {
+    // The world at 256 px with round strokes up to 64 px wide: sampled (default) and exact agree
+    // within the sampled strokes' bound, and differ somewhere (each option is really taken). Wider
+    // ones go through their outlines either way: the same pixels.
     const fs::path dir = casteljau::test::scratch_dir("map_cli_exact_strokes");
-    const std::string base = "map " + shell_quote(kWorld) + " --width 256 --layer countries --fill none" +
-                             " --stroke black --stroke-width 0.8 -o ";
-    const std::string a = (dir / "sampled.png").string(), b = (dir / "exact.png").string();
-    REQUIRE(run_cli(base + shell_quote(a)).status == 0);
-    REQUIRE(run_cli(base + shell_quote(b) + " --exact-strokes").status == 0);
-    const casteljau::Pixmap pa = casteljau::read_png(a), pb = casteljau::read_png(b);
-    REQUIRE(pa.width() == pb.width());
-    REQUIRE(pa.height() == pb.height());
-    int worst = 0, differ = 0;
-    for (int y = 0; y < pa.height(); ++y)
-        for (int x = 0; x < pa.width(); ++x) {
-            const int d = std::abs(pa.pixel(x, y).a - pb.pixel(x, y).a);
-            worst = std::max(worst, d);
-            differ += d != 0;
-        }
-    CHECK(worst <= 8);
-    CHECK(differ > 0);
+    for (const char* width : {"0.8", "3", "40", "70"}) {
+        const std::string base = "map " + shell_quote(kWorld) + " --width 256 --layer countries --fill none" +
+                                 " --stroke black --stroke-width " + width + " -o ";
+        const std::string a = (dir / "sampled.png").string(), b = (dir / "exact.png").string();
+        REQUIRE(run_cli(base + shell_quote(a)).status == 0);
+        REQUIRE(run_cli(base + shell_quote(b) + " --exact-strokes").status == 0);
+        const casteljau::Pixmap pa = casteljau::read_png(a), pb = casteljau::read_png(b);
+        REQUIRE(pa.width() == pb.width());
+        REQUIRE(pa.height() == pb.height());
+        int worst = 0, differ = 0;
+        for (int y = 0; y < pa.height(); ++y)
+            for (int x = 0; x < pa.width(); ++x) {
+                const int d = std::abs(pa.pixel(x, y).a - pb.pixel(x, y).a);
+                worst = std::max(worst, d);
+                differ += d != 0;
+            }
+        INFO("stroke width " << width);
+        CHECK(worst <= 8);
+        if (std::string(width) == "70")
+            CHECK(differ == 0);
+        else
+            CHECK(differ > 0);
+    }
 }
 
 TEST_CASE("map CLI reads GeoJSON lines, standard input and the bbox", "[map][cli]") {
