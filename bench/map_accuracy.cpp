@@ -10,7 +10,7 @@
 //   so that no fill runs out of the rasterizer's exact-work budget (past it dense cells are
 //   approximated, see casteljau/raster.hpp) and strokes go through their outlines
 //   (MapOptions::sampled_strokes off) flattened within 0.001 px: the exact union.
-//   Output: render_map of the whole image with simplify E, as `casteljau map` draws it (thin round
+//   Output: render_map of the whole image with simplify E, as `casteljau map` draws it (round
 //   strokes sampled, casteljau/round_stroke.hpp).
 // Prints per width, picture and E: mean and max of |output - reference| over all pixels, in 1/255 of
 // coverage, and how many pixels differ; then the same for the simplified geometry drawn window by
