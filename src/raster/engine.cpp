@@ -62,8 +62,6 @@ constexpr double kExactWorkPerSegment = 2000;
 // every piece of a shape through hundreds of cells.
 constexpr double kExactWorkCeiling = 2;
 
-inline bool monotone(std::uint8_t d) { return (d & 3) != 3 || (d & 12) != 12; }
-
 // Position of a point on the boundary of the unit cell (local coordinates) as a parameter in
 // [0, 4) going around it; -1 when the point is not on the boundary.
 double boundary_param(double x, double y) {
@@ -300,12 +298,13 @@ void Engine::contour_end() {
             first.dirs |= last.dirs;
             last.merged_away = true;
             // Entering the cell again made it a candidate; when these two parts are its only
-            // visits, it is a one-visit cell after all (classify() still checks that run).
+            // visits, it is a one-visit cell after all, unless the joined run is not monotone.
             if (!cands_.empty() && cands_.back() == last.cell &&
                 last.next == static_cast<std::int32_t>(contour_visit_) && first.next < 0) {
                 cand_[last.cell] = 0;
                 cands_.pop_back();
             }
+            if (!monotone(first.dirs)) add_cand(first.cell);
         }
     }
     contour_visit_ = visits_.size();
@@ -604,15 +603,8 @@ std::size_t Engine::classify(int ox, int oy, const PixelSet* hidden) {
         return hidden && hidden->contains(ox + static_cast<int>(cell % stride_), oy + static_cast<int>(cell / stride_));
     };
     std::size_t hidden_cells = 0;
-    // Whether each run is simple, decided once: a candidate cell asks again for each of its runs.
-    simple_.resize(visits_.size());
-    for (std::size_t i = 0; i < visits_.size(); ++i) {
-        const Visit& v = visits_[i];
-        if (v.merged_away) continue;
-        simple_[i] = monotone(v.dirs) || is_hidden(v.cell) || simple_run(v);
-        if (!simple_[i]) add_cand(v.cell);
-    }
-    // Decide each candidate (cands_ holds each cell once, in no particular order) ...
+    // Decide each candidate (cands_ holds each cell once, in no particular order: the cells with
+    // two visits or more, and those with a run that is not monotone, made candidates by the walk) ...
     for (std::uint32_t cell : cands_) {
         if (is_hidden(cell)) {
             ++hidden_cells;
@@ -627,7 +619,7 @@ std::size_t Engine::classify(int ox, int oy, const PixelSet* hidden) {
             if (v.merged_away) continue;
             if (++n > kMaxRuns) break;  // computed exactly whatever its runs are
             runs[n - 1] = &v;
-            all_simple = all_simple && simple_[static_cast<std::size_t>(i)];
+            all_simple = all_simple && (monotone(v.dirs) || simple_run(v));
         }
         if (all_simple && n == 1) continue;
         if (all_simple && n == 2 && harmless_two(*runs[0], *runs[1], col, row)) continue;

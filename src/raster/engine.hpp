@@ -89,6 +89,9 @@ private:
     // Lists the cells to compute exactly; returns how many candidates `hidden` left out.
     std::size_t classify(int ox, int oy, const PixelSet* hidden);
     bool simple_run(const Visit& v) const;
+    // Whether a run with these directions (Visit::dirs) is monotone in x or in y, so that it
+    // cannot cross itself (a run of one edge always is).
+    static bool monotone(std::uint8_t dirs) { return (dirs & 3) != 3 || (dirs & 12) != 12; }
     bool closed_run(const Visit& v) const;
     // Longer runs are not checked for simplicity: exact. The pairwise check of 32 edges costs less
     // than an exact cell of as many (a map's coasts at small sizes wind through one pixel in 17 to
@@ -149,8 +152,7 @@ private:
     std::size_t max_edges_ = 0;  // Limits::flattened_segments, read by begin()
     double exact_base_ = 0;      // Limits::exact_work, read by begin()
     AppendList<Visit> visits_;
-    std::vector<std::uint8_t> simple_;  // per visit: its run is simple (set by classify)
-    std::vector<std::uint32_t> cands_;  // cells with two or more visits, or a non-simple one (each once)
+    std::vector<std::uint32_t> cands_;  // cells with two or more visits, or a run not monotone (each once)
     void add_cand(std::uint32_t cell) {
         if (!cand_[cell]) {
             cand_[cell] = 1;
@@ -185,6 +187,7 @@ private:
         Visit& v = visits_[static_cast<std::size_t>(cur_visit_)];
         v.s1 = sid;
         v.dirs |= bits;
+        if (!monotone(v.dirs)) add_cand(cell);  // a run that may cross itself: checked by classify()
         return;
     }
     cur_cell_ = cell;
