@@ -619,7 +619,7 @@ std::size_t Engine::classify(int ox, int oy, const PixelSet* hidden) {
             if (v.merged_away) continue;
             if (++n > kMaxRuns) break;  // computed exactly whatever its runs are
             runs[n - 1] = &v;
-            all_simple = all_simple && (monotone(v.dirs) || simple_run(v));
+            all_simple = all_simple && simple_run(v);
         }
         if (all_simple && n == 1) continue;
         if (all_simple && n == 2 && harmless_two(*runs[0], *runs[1], col, row)) continue;
