@@ -26,7 +26,11 @@
 //     take two values at most (for two runs: entries and exits alternate, as in a stem with one
 //     edge up and one down), accumulation is exact. Common cases are decided in closed form (two
 //     single edges: which side of each other they lie on) or from where the runs enter and leave
-//     (runs whose edges meet nowhere), without clipping every piece.
+//     (runs whose edges meet nowhere), without clipping every piece. The commonest, a contour
+//     that leaves the cell and comes back one vertex later (on a world map at 4096 px, 13,400 of
+//     28,000 cells with more than one run or a run that is not monotone), is decided by the walk
+//     as the second visit starts, while both edges are in cache; the cell is checked after all
+//     if a third visit comes or the second run grows.
 //   - A closed run with every vertex inside the cell (a small island or lake of a map) is a loop:
 //     simple when its edges meet only consecutively, it adds its orientation to the winding of
 //     the region around it, read by crossing the other runs from its first vertex to the cell's
@@ -79,6 +83,22 @@ double boundary_param(double x, double y) {
 inline bool passes_through(const Edge& e, int col, int row) {
     auto inside = [&](double x, double y) { return x > col && x < col + 1 && y > row && y < row + 1; };
     return !inside(e.x0, e.y0) && !inside(e.x1, e.y1);
+}
+
+// Edges `first` and `second`, consecutive along a contour (first ends where second starts, at V),
+// both passing through the cell (col, row) (passes_through): whether the contour leaves the cell
+// and comes back one vertex later with V outside the closed cell. Lines from V meet only at V
+// unless they leave it along one ray, which clearly non-parallel or opposite directions rule out.
+// The part of the cell between the two edges is then the cone at V cut by the cell, whose boundary
+// arc nearer V joins the first edge's exit to the second's entry, so entries and exits alternate
+// around the cell: accumulation is exact there.
+bool leaves_and_returns(const Edge& first, const Edge& second, int col, int row) {
+    const double vx = first.x1, vy = first.y1;
+    const bool v_outside = vx < col || vx > col + 1 || vy < row || vy > row + 1;
+    const double ux = first.x0 - vx, uy = first.y0 - vy, wx = second.x1 - vx, wy = second.y1 - vy;
+    const double cross = ux * wy - uy * wx, dot = ux * wx + uy * wy;
+    const double scale = (std::fabs(ux) + std::fabs(uy)) * (std::fabs(wx) + std::fabs(wy));
+    return v_outside && (std::fabs(cross) > 1e-9 * scale || dot < 0);
 }
 
 // Two runs that do not meet, entering at ta0, tb0 and leaving at ta1, tb1 (boundary parameters;
@@ -329,6 +349,17 @@ void Engine::gather(const Visit& v, int col, int row, std::vector<ExactScratch::
     add(v);
 }
 
+bool Engine::returns_harmlessly(std::int32_t before, std::uint32_t sid, std::uint32_t cell) const {
+    const Visit& p = visits_[static_cast<std::size_t>(before)];
+    if (p.next >= 0 || p.pre >= 0 || p.s0 != p.s1 || p.s1 + 1 != sid) return false;
+    const Edge& a = segs_[p.s0];
+    const Edge& b = segs_[sid];
+    // A contour of these two edges alone: harmless_two may take its other vertex as V.
+    if (!(a.x1 == b.x0 && a.y1 == b.y0) || (b.x1 == a.x0 && b.y1 == a.y0)) return false;
+    const int row = static_cast<int>(cell / stride_), col = static_cast<int>(cell % stride_);
+    return passes_through(a, col, row) && passes_through(b, col, row) && leaves_and_returns(a, b, col, row);
+}
+
 // Two monotone runs in one cell: harmless when they do not meet and the end of one is next to the
 // start of the other around the cell's boundary (see the top of the file).
 bool Engine::harmless_two(const Visit& a, const Visit& b, int col, int row) {
@@ -347,23 +378,11 @@ bool Engine::harmless_two(const Visit& a, const Visit& b, int col, int row) {
             const double a0 = bx * (A.y0 - B.y0) - by * (A.x0 - B.x0), a1 = bx * (A.y1 - B.y0) - by * (A.x1 - B.x0);
             if ((b0 > 0 && b1 > 0) || (b0 < 0 && b1 < 0))
                 if ((a0 > 0 && a1 > 0) || (a0 < 0 && a1 < 0)) return (b0 > 0) == (a0 > 0);
-            // Consecutive along the contour (it leaves the cell and comes back one vertex V later),
-            // V outside the closed cell: lines from V meet only at V unless they leave it along one
-            // ray, which clearly non-parallel or opposite directions rule out. The part of the cell
-            // between them is then the cone at V cut by the cell, whose boundary arc nearer V joins
-            // the first edge's exit to the second's entry, so entries and exits alternate around
-            // the cell: accumulation is exact.
             const Edge* first = &A;
             const Edge* second = &B;
             if (!(first->x1 == second->x0 && first->y1 == second->y0)) std::swap(first, second);
-            if (first->x1 == second->x0 && first->y1 == second->y0) {
-                const double vx = first->x1, vy = first->y1;
-                const bool v_outside = vx < col || vx > col + 1 || vy < row || vy > row + 1;
-                const double ux = first->x0 - vx, uy = first->y0 - vy, wx = second->x1 - vx, wy = second->y1 - vy;
-                const double cross = ux * wy - uy * wx, dot = ux * wx + uy * wy;
-                const double scale = (std::fabs(ux) + std::fabs(uy)) * (std::fabs(wx) + std::fabs(wy));
-                if (v_outside && (std::fabs(cross) > 1e-9 * scale || dot < 0)) return true;
-            }
+            if (first->x1 == second->x0 && first->y1 == second->y0 && leaves_and_returns(*first, *second, col, row))
+                return true;
         }
     }
     // Multi-edge runs: when no edge of one meets an edge of the other anywhere, they cannot meet

@@ -83,6 +83,12 @@ private:
     void push_rows(const double* xy, std::size_t n, double rows);
     inline bool admit(double x0, double& y0, double x1, double& y1);
     inline void touch(std::uint32_t cell, std::uint32_t sid, std::uint8_t bits);
+    // Whether edge `sid`, entering `cell` whose only visit so far is `before`, makes a pair that
+    // classify() would find harmless by harmless_two's closed form for a contour that leaves the
+    // cell and comes back one vertex later: both single edges passing through, consecutive, their
+    // shared vertex outside the cell. Such a cell needs no candidate unless its runs change later
+    // (a third visit, or this visit's run growing: touch() makes it one then).
+    bool returns_harmlessly(std::int32_t before, std::uint32_t sid, std::uint32_t cell) const;
     bool harmless_two(const Visit& a, const Visit& b, int col, int row);
     bool run_ends(const Visit& v, int col, int row, double& t0, double& t1) const;
     void gather(const Visit& v, int col, int row, std::vector<ExactScratch::Piece>& out) const;
@@ -187,7 +193,9 @@ private:
         Visit& v = visits_[static_cast<std::size_t>(cur_visit_)];
         v.s1 = sid;
         v.dirs |= bits;
-        if (!monotone(v.dirs)) add_cand(cell);  // a run that may cross itself: checked by classify()
+        // A run that may cross itself, or one growing in a cell visited before (whose pair of
+        // runs returns_harmlessly may have let pass): checked by classify().
+        if (!monotone(v.dirs) || v.next >= 0) add_cand(cell);
         return;
     }
     cur_cell_ = cell;
@@ -195,7 +203,7 @@ private:
     cur_visit_ = static_cast<std::int32_t>(visits_.size());
     visits_.push({cell, h - 1, sid, sid, -1, bits, false});
     head_[cell] = cur_visit_ + 1;
-    if (h != 0) add_cand(cell);
+    if (h != 0 && !returns_harmlessly(h - 1, sid, cell)) add_cand(cell);
 }
 
 // floor and ceil for the walk's coordinates, which lie in [0, w] x [0, h] up to rounding (push()):

@@ -145,6 +145,28 @@ TEST_CASE("accuracy: two edges from one vertex outside a pixel, crossing it", "[
     }
 }
 
+TEST_CASE("accuracy: a contour that comes back into a pixel and crosses itself there", "[accuracy]") {
+    // Edge A crosses the pixel [10, 11] x [10, 11] to a vertex V right of it, edge B comes back
+    // from V and ends on the pixel's bottom side, and edge C goes on from there up through the
+    // pixel, crossing A inside it. A and B alone are the pair the walk lets pass without a check
+    // (Engine::returns_harmlessly); C continues B's run in the same pixel, which must bring the
+    // pixel back to the overlap check, since accumulation is wrong where C crosses A.
+    Rasterizer r;
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> j(-0.08, 0.08);
+    for (int i = 0; i < 100; ++i) {
+        const Point p{8.5 + j(rng), 10.3 + j(rng)}, v{12.5 + j(rng), 10.7 + j(rng)};
+        const Point w{10.5 + j(rng), 11.0}, q{10.1 + j(rng), 9.5 + j(rng)};
+        for (const Contour& c : {Contour{p, v, w, q}, Contour{q, w, v, p}})
+            for (FillRule rule : kRules) {
+                FillOptions o;
+                o.rule = rule;
+                o.topology = Topology::Overlapping;
+                check_polygons(r, {c}, Affine::identity(), o, {0, 0, 24, 20}, "comes back " + std::to_string(i));
+            }
+    }
+}
+
 TEST_CASE("accuracy: three runs in a pixel that meet only outside it", "[accuracy]") {
     // A triangle round the pixel [20, 21] x [20, 21] with its vertex V just above it and p, q on
     // either side: all three sides cross the pixel, and each two meet at a vertex outside it. Their
