@@ -93,6 +93,31 @@ namespace {
 
 using pixel::mul_div255;
 
+// A colour's pixels at every coverage, for pixels no fill has taken yet: scaled[a] is
+// mul_div255(a, c) per channel. Such a pixel's layer value is zero (the layer is cleared with the
+// coverage, and reset_into requires a transparent target), so it becomes exactly scaled[a].
+struct ScaledColour {
+    std::uint32_t scaled[256];
+    std::uint8_t colour8[32];  // the colour eight times
+};
+
+// The table of colour c. A map fills hundreds of features in one colour, and making the table
+// costs more than a small fill's pixels, so each thread keeps the last one it made.
+const ScaledColour& scaled_colour(PremulPixel c) {
+    thread_local ScaledColour t;
+    thread_local PremulPixel made{};
+    thread_local bool any = false;
+    if (any && made.r == c.r && made.g == c.g && made.b == c.b && made.a == c.a) return t;
+    made = c;
+    any = true;
+    for (int k = 0; k < 8; ++k) std::memcpy(t.colour8 + 4 * k, &c, 4);
+    for (unsigned a = 0; a < 256; ++a) {
+        const std::uint8_t px[4] = {mul_div255(a, c.r), mul_div255(a, c.g), mul_div255(a, c.b), mul_div255(a, c.a)};
+        std::memcpy(&t.scaled[a], px, 4);
+    }
+    return t;
+}
+
 struct SeamlessSink final : SpanSink {
     std::uint8_t* layer;  // the layer's pixel at the region's origin
     std::size_t layer_stride;
@@ -101,18 +126,15 @@ struct SeamlessSink final : SpanSink {
     int* hi;
     int width, x0, y0;  // the region's width and origin
     PremulPixel c;
-    // scaled[a]: the colour taken at coverage a by a pixel no fill has taken yet, mul_div255(a, c)
-    // per channel. Such a pixel's layer value is zero (the layer is cleared with the coverage, and
-    // reset_into requires a transparent target), so it becomes exactly scaled[a].
+    // scaled_colour(c), copied: the sink's own arrays are read without reloading a pointer after
+    // every store into the layer.
     std::uint32_t scaled[256];
-    std::uint8_t colour8[32];  // the colour eight times
+    std::uint8_t colour8[32];
     void set_colour(PremulPixel colour) {
         c = colour;
-        for (int k = 0; k < 8; ++k) std::memcpy(colour8 + 4 * k, &c, 4);
-        for (unsigned a = 0; a < 256; ++a) {
-            const std::uint8_t px[4] = {mul_div255(a, c.r), mul_div255(a, c.g), mul_div255(a, c.b), mul_div255(a, c.a)};
-            std::memcpy(&scaled[a], px, 4);
-        }
+        const ScaledColour& t = scaled_colour(colour);
+        std::memcpy(scaled, t.scaled, sizeof scaled);
+        std::memcpy(colour8, t.colour8, sizeof colour8);
     }
     void row(int y, int x, int length, const std::uint8_t* coverage) override {
         if (length <= 0) return;
