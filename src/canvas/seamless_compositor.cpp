@@ -97,6 +97,8 @@ using pixel::mul_div255;
 // mul_div255(a, c) per channel. Such a pixel's layer value is zero (the layer is cleared with the
 // coverage, and reset_into requires a transparent target), so it becomes exactly scaled[a].
 struct ScaledColour {
+    PremulPixel c{};
+    bool made = false;
     std::uint32_t scaled[256];
     std::uint8_t colour8[32];  // the colour eight times
 };
@@ -105,11 +107,9 @@ struct ScaledColour {
 // costs more than a small fill's pixels, so each thread keeps the last one it made.
 const ScaledColour& scaled_colour(PremulPixel c) {
     thread_local ScaledColour t;
-    thread_local PremulPixel made{};
-    thread_local bool any = false;
-    if (any && made.r == c.r && made.g == c.g && made.b == c.b && made.a == c.a) return t;
-    made = c;
-    any = true;
+    if (t.made && t.c == c) return t;
+    t.c = c;
+    t.made = true;
     for (int k = 0; k < 8; ++k) std::memcpy(t.colour8 + 4 * k, &c, 4);
     for (unsigned a = 0; a < 256; ++a) {
         const std::uint8_t px[4] = {mul_div255(a, c.r), mul_div255(a, c.g), mul_div255(a, c.b), mul_div255(a, c.a)};
@@ -125,17 +125,10 @@ struct SeamlessSink final : SpanSink {
     int* lo;
     int* hi;
     int width, x0, y0;  // the region's width and origin
-    PremulPixel c;
-    // scaled_colour(c), copied: the sink's own arrays are read without reloading a pointer after
-    // every store into the layer.
-    std::uint32_t scaled[256];
-    std::uint8_t colour8[32];
-    void set_colour(PremulPixel colour) {
-        c = colour;
-        const ScaledColour& t = scaled_colour(colour);
-        std::memcpy(scaled, t.scaled, sizeof scaled);
-        std::memcpy(colour8, t.colour8, sizeof colour8);
-    }
+    // scaled_colour() of the fill's colour, copied: the sink's own arrays are read without
+    // reloading a pointer after every store into the layer.
+    ScaledColour table;
+    void set_colour(PremulPixel colour) { table = scaled_colour(colour); }
     void row(int y, int x, int length, const std::uint8_t* coverage) override {
         if (length <= 0) return;
         const std::size_t at =
@@ -160,9 +153,9 @@ struct SeamlessSink final : SpanSink {
                 std::memcpy(C + i, &a8, 8);
                 std::uint8_t* const out = L + 4 * static_cast<std::size_t>(i);
                 if (a8 == kFull)
-                    std::memcpy(out, colour8, 32);
+                    std::memcpy(out, table.colour8, 32);
                 else
-                    for (int k = 0; k < 8; ++k) std::memcpy(out + 4 * k, &scaled[coverage[i + k]], 4);
+                    for (int k = 0; k < 8; ++k) std::memcpy(out + 4 * k, &table.scaled[coverage[i + k]], 4);
                 continue;
             }
             for (int k = i; k < i + 8; ++k) pixel(coverage[k], C[k], L + 4 * static_cast<std::size_t>(k));
@@ -175,7 +168,7 @@ struct SeamlessSink final : SpanSink {
         const unsigned total = t;
         if (total == 0) {  // first to cover: the layer is zero here
             t = static_cast<std::uint8_t>(a);
-            std::memcpy(l, &scaled[a], 4);
+            std::memcpy(l, &table.scaled[a], 4);
             return;
         }
         const unsigned rem = 255u - total;
@@ -184,10 +177,10 @@ struct SeamlessSink final : SpanSink {
         // Two fills meeting at an edge whose rounded coverages fall one short of full.
         if (take + 1 == rem) take = rem;
         t = static_cast<std::uint8_t>(total + take);
-        const unsigned na = std::min(255u, unsigned(l[3]) + mul_div255(take, c.a));
-        l[0] = static_cast<std::uint8_t>(std::min(na, unsigned(l[0]) + mul_div255(take, c.r)));
-        l[1] = static_cast<std::uint8_t>(std::min(na, unsigned(l[1]) + mul_div255(take, c.g)));
-        l[2] = static_cast<std::uint8_t>(std::min(na, unsigned(l[2]) + mul_div255(take, c.b)));
+        const unsigned na = std::min(255u, unsigned(l[3]) + mul_div255(take, table.c.a));
+        l[0] = static_cast<std::uint8_t>(std::min(na, unsigned(l[0]) + mul_div255(take, table.c.r)));
+        l[1] = static_cast<std::uint8_t>(std::min(na, unsigned(l[1]) + mul_div255(take, table.c.g)));
+        l[2] = static_cast<std::uint8_t>(std::min(na, unsigned(l[2]) + mul_div255(take, table.c.b)));
         l[3] = static_cast<std::uint8_t>(na);
     }
 };
